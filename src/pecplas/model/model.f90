@@ -1,0 +1,29 @@
+!> The whole problem read from a deck: mesh, materials, supports, load patterns, steps
+!> and options. Built by the deck reader, read (intent(in)) by assembly and the driver.
+module pecplas_model
+   use pecplas_model_mesh, only: mesh_t
+   use pecplas_model_loads, only: load_pattern_t, step_t, support_t
+   use pecplas_model_options, only: analysis_t, solver_options_t, output_options_t
+   use pecplas_massif_materials_type, only: material_box_t
+   implicit none (type, external)
+   private
+
+   public :: model_t
+
+   type :: model_t
+      character(len=:), allocatable :: title
+      !> Free-text units note (e.g. "kN, m, kPa"); printed and stored, never used to convert.
+      character(len=:), allocatable :: units
+      !> Path of the main deck and the full deck text (includes expanded) for provenance.
+      character(len=:), allocatable :: deck_file, deck_text
+      type(analysis_t) :: analysis
+      type(mesh_t) :: mesh
+      type(material_box_t), allocatable :: materials(:)
+      type(support_t) :: supports
+      type(load_pattern_t), allocatable :: patterns(:)
+      type(step_t), allocatable :: steps(:)
+      type(solver_options_t) :: solver
+      type(output_options_t) :: output
+   end type model_t
+
+end module pecplas_model

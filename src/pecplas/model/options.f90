@@ -1,0 +1,43 @@
+!> Analysis, solver and output options of a model, with their defaults.
+module pecplas_model_options
+   use pecplas_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: analysis_t, solver_options_t, output_options_t
+   public :: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, NONLINEAR_METHODS
+
+   integer, parameter :: PLANE_STRAIN = 1, AXISYMMETRIC = 2
+
+   !> Linear solver names: AUTO picks CHOLMOD for symmetric positive definite systems.
+   character(len=*), parameter :: LINEAR_SOLVERS(3) = [character(len=8) :: 'AUTO', 'CHOLMOD', &
+      'UMFPACK']
+   character(len=*), parameter :: NONLINEAR_METHODS(2) = [character(len=16) :: &
+      'MODIFIED_NEWTON', 'NEWTON']
+
+   type :: analysis_t
+      !> PLANE_STRAIN or AXISYMMETRIC.
+      integer :: kind = PLANE_STRAIN
+      !> Out-of-plane thickness in plane strain.
+      real(wp) :: thickness = 1.0_wp
+   end type analysis_t
+
+   type :: solver_options_t
+      character(len=:), allocatable :: linear
+      character(len=:), allocatable :: method
+      !> Residual-force criterion ||FR|| <= tol ||F|| (thesis default 1e-4).
+      real(wp) :: tolerance = 1.0e-4_wp
+      integer :: max_iterations = 50
+      !> Number of times an increment may be halved before the run stops.
+      integer :: max_cuts = 5
+   end type solver_options_t
+
+   type :: output_options_t
+      !> Results file; empty means output/<deck>.h5.
+      character(len=:), allocatable :: file
+      !> Write fields every `every` increments (and always the last of each step).
+      integer :: every = 1
+      logical :: stresses = .true., strains = .true., reactions = .true.
+   end type output_options_t
+
+end module pecplas_model_options
