@@ -36,7 +36,7 @@ contains
       if (k > 0) then
          this%values(k) = value
       else
-         this%keys = [this%keys, upper(key)]
+         this%keys = [character(len=32) :: this%keys, upper(key)]
          this%values = [this%values, value]
       end if
    end subroutine params_add
