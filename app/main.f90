@@ -1,6 +1,20 @@
+!> pecplas DECK [-o FILE.h5] [--quiet] — see pecplas_cli.
 program main
-   use pecplas_model, only: model_t
+   use pecplas_cli, only: pecplas_main
    implicit none (type, external)
-   type(model_t) :: model
-   print *, allocated(model%title)
+   character(len=:), allocatable :: args(:)
+   integer :: i, n, length, code
+
+   n = command_argument_count()
+   length = 1
+   do i = 1, n
+      call get_command_argument(i, length=code)
+      length = max(length, code)
+   end do
+   allocate (character(len=length) :: args(n))
+   do i = 1, n
+      call get_command_argument(i, args(i))
+   end do
+   code = pecplas_main(args)
+   if (code /= 0) call exit(code)
 end program main

@@ -1,0 +1,172 @@
+!> The batch command `pecplas DECK [-o FILE] [--quiet]`: reads the deck, sets the problem
+!> up, factorises, runs the steps and writes the results. Returns the exit code
+!> (0 done, 2 input error, 3 run stopped early, 1 internal error) so tests can call it.
+module pecplas_cli
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL
+   use pecplas_version, only: PROGRAM_NAME, VERSION
+   use pecplas_files, only: make_directories, path_stem, path_dir
+   use pecplas_model, only: model_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_model_mesh_tools, only: orient_edge_sets
+   use pecplas_driver_problem, only: problem_t, setup_problem
+   use pecplas_driver_stiffness, only: factorise_stiffness, linear_solver_name
+   use pecplas_driver_increments, only: run_increments
+   use pecplas_driver_gauss, only: gauss_coordinates
+   use pecplas_io_results_file, only: results_file_t
+   implicit none (type, external)
+   private
+
+   public :: pecplas_main, run_deck
+
+   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet]'
+
+contains
+
+   !> Runs the program for the command-line words `args`; returns the exit code.
+   integer function pecplas_main(args) result(code)
+      character(len=*), intent(in) :: args(:)
+      character(len=:), allocatable :: deck, outfile
+      logical :: quiet
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: i
+
+      quiet = .false.
+      deck = ''
+      outfile = ''
+      i = 0
+      do while (i < size(args))
+         i = i + 1
+         select case (trim(args(i)))
+         case ('--quiet', '-q')
+            quiet = .true.
+         case ('-o', '--output')
+            if (i == size(args)) then
+               code = fail(EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
+               return
+            end if
+            i = i + 1
+            outfile = trim(args(i))
+         case ('--help', '-h')
+            write (*, '(a)') USAGE
+            write (*, '(a)') '  Runs the keyword deck DECK and writes HDF5 results (default '// &
+               'output/<deck>.h5) with an XDMF sidecar.'
+            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early.'
+            code = EXIT_OK
+            return
+         case ('--version')
+            write (*, '(a)') PROGRAM_NAME//' '//VERSION
+            code = EXIT_OK
+            return
+         case default
+            if (args(i)(1:1) == '-') then
+               code = fail(EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
+               return
+            end if
+            if (len(deck) > 0) then
+               code = fail(EXIT_INPUT, 'only one deck may be given. '//USAGE)
+               return
+            end if
+            deck = trim(args(i))
+         end select
+      end do
+      if (len(deck) == 0) then
+         code = fail(EXIT_INPUT, 'no deck given. '//USAGE)
+         return
+      end if
+      code = run_deck(deck, outfile, quiet, model, problem)
+   end function pecplas_main
+
+   !> Runs `deck`, writing `outfile` (empty: the deck's *OUTPUT file or output/<deck>.h5).
+   !> Returns the exit code; `model` and `problem` hold the final state (for tests).
+   integer function run_deck(deck, outfile_in, quiet, model, problem) result(code)
+      character(len=*), intent(in) :: deck, outfile_in
+      logical, intent(in) :: quiet
+      type(model_t), intent(out) :: model
+      type(problem_t), intent(out) :: problem
+      type(results_file_t) :: results
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: status, message, outfile
+      real(wp) :: t0, t1
+
+      call cpu_time(t0)
+      ! Everything that can be checked is checked before a results file exists.
+      call read_deck(deck, model, error)
+      if (.not. allocated(error)) call orient_edge_sets(model%mesh, error)
+      if (.not. allocated(error)) call setup_problem(model, problem, error)
+      if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
+      if (allocated(error)) then
+         code = fail(error%exit_code(), error%text())
+         return
+      end if
+      outfile = outfile_in
+      if (len(outfile) == 0) then
+         if (allocated(model%output%file)) then
+            outfile = model%output%file
+         else
+            outfile = 'output/'//path_stem(deck)//'.h5'
+         end if
+      end if
+      call make_directories(path_dir(outfile))
+      if (.not. quiet) call banner(model, problem, deck, outfile)
+
+      call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error)
+      if (allocated(error)) then
+         code = fail(EXIT_INPUT, 'cannot write results: '//error%text())
+         return
+      end if
+      call run_increments(model, problem, results, quiet, status, message, error)
+      if (allocated(error)) then
+         status = 'failed'
+         message = error%text()
+      end if
+      call results%finish(status, message, error)
+      if (allocated(error)) then
+         code = fail(EXIT_INTERNAL, 'cannot finish results file: '//error%text())
+         return
+      end if
+      call cpu_time(t1)
+      call summary(problem, status, message, outfile, t1 - t0, quiet)
+      code = EXIT_OK
+      if (status /= 'completed') code = EXIT_STOPPED
+      if (status == 'failed') code = EXIT_INTERNAL
+   end function run_deck
+
+   integer function fail(code, text)
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: text
+      write (0, '(a)') 'pecplas: error: '//text
+      fail = code
+   end function fail
+
+   subroutine banner(model, problem, deck, outfile)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      character(len=*), intent(in) :: deck, outfile
+      character(len=:), allocatable :: title, units
+      title = '(untitled)'
+      if (allocated(model%title)) title = model%title
+      units = '(not stated)'
+      if (allocated(model%units)) units = model%units
+      write (*, '(a)') PROGRAM_NAME//' '//VERSION//'  deck '//deck//'  ->  '//outfile
+      write (*, '(a)') ' title: '//title//'   units: '//units
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
+         model%mesh%nelem(), '  equations ', problem%dofs%neq, '  steps ', size(model%steps), &
+         '  solver ', linear_solver_name(model), ' / ', model%solver%method
+   end subroutine banner
+
+   subroutine summary(problem, status, message, outfile, cpu, quiet)
+      type(problem_t), intent(in) :: problem
+      character(len=*), intent(in) :: status, message, outfile
+      real(wp), intent(in) :: cpu
+      logical, intent(in) :: quiet
+      if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
+      if (quiet .and. status == 'completed') return
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,f0.2,a)') ' summary: ', problem%increments, &
+         ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
+         problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', cpu, ' s CPU'
+      write (*, '(a)') ' status: '//status//'  results: '//outfile
+   end subroutine summary
+
+end module pecplas_cli

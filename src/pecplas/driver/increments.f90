@@ -1,0 +1,178 @@
+!> The incremental–iterative solution (Annex A): load steps split into increments, each
+!> solved by modified Newton (stiffness factorised once, residual forces re-applied, as in
+!> the thesis) or full Newton (consistent tangent re-factorised every iteration).
+!> An increment that does not converge is halved; after `max_cuts` halvings the run stops.
+module pecplas_driver_increments
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, fatal_error, run_error, ERR_SINGULAR, ERR_RUN
+   use pecplas_model, only: model_t
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_driver_stiffness, only: factorise_stiffness
+   use pecplas_driver_output, only: write_increment, progress_line
+   use pecplas_fe_assembly, only: internal_forces
+   use pecplas_io_results_file, only: results_file_t
+   implicit none (type, external)
+   private
+
+   public :: run_increments
+
+contains
+
+   !> Runs every step. `status` is 'completed', 'diverged' or 'failed'; `message` says why
+   !> a run stopped. Converged increments are written to `results` as they come.
+   subroutine run_increments(model, problem, results, quiet, status, message, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      logical, intent(in) :: quiet
+      character(len=:), allocatable, intent(out) :: status, message
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: f0(:), ftarget(:), factors(:), fint_conv(:, :), u(:, :)
+      real(wp), allocatable :: fint(:, :), reaction(:, :)
+      real(wp) :: tau, dt, dt0, residual, t_start, t_now
+      integer :: istep, inc_in_step, iters, level
+      logical :: converged, last
+      character(len=160) :: buf
+
+      call cpu_time(t_start)
+      status = 'completed'; message = 'all steps completed'
+      allocate (fint_conv(2, model%mesh%nnode()), source=0.0_wp)
+      do istep = 1, size(model%steps)
+         associate (step => model%steps(istep))
+            f0 = problem%state%factors
+            ftarget = f0
+            ftarget(step%pattern) = step%target
+            dt0 = 1.0_wp/step%increments
+            dt = dt0; tau = 0.0_wp; level = 0; inc_in_step = 0
+            do while (tau < 1.0_wp - 1.0e-12_wp)
+               dt = min(dt, 1.0_wp - tau)
+               factors = f0 + (ftarget - f0)*(tau + dt)
+               call solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
+                  converged, iters, residual, error)
+               if (allocated(error)) then
+                  if (error%kind /= ERR_RUN) return
+                  deallocate (error)
+                  converged = .false.
+               end if
+               problem%iterations = problem%iterations + iters
+               if (.not. converged) then
+                  call problem%state%rollback()
+                  if (level >= model%solver%max_cuts) then
+                     status = 'diverged'
+                     write (buf, '(a,i0,a,a,a,f0.4,a,i0,a)') 'step ', istep, ' (', step%name, &
+                        ') did not converge at step fraction ', tau + dt, ' after ', level, &
+                        ' increment cuts; last converged state kept in the results file'
+                     message = trim(buf)
+                     return
+                  end if
+                  level = level + 1
+                  problem%cuts = problem%cuts + 1
+                  dt = 0.5_wp*dt
+                  if (.not. quiet) write (*, '(a,es9.2,a)') '   no convergence: increment cut to ', &
+                     dt, ' of the step'
+                  cycle
+               end if
+               tau = tau + dt
+               inc_in_step = inc_in_step + 1
+               problem%increments = problem%increments + 1
+               call problem%state%commit()
+               problem%state%u = u
+               problem%state%factors = factors
+               fint_conv = fint
+               last = tau >= 1.0_wp - 1.0e-12_wp
+               call cpu_time(t_now)
+               call write_increment(model, problem, results, istep, inc_in_step, &
+                  real(istep - 1, wp) + tau, iters, residual, t_now - t_start, reaction, last, error)
+               if (allocated(error)) return
+               if (.not. quiet) call progress_line(model, problem, istep, inc_in_step, tau, iters, &
+                  residual)
+               if (level > 0) then
+                  level = level - 1
+                  dt = min(dt0, 2.0_wp*dt)
+               end if
+            end do
+         end associate
+      end do
+   end subroutine run_increments
+
+   !> One increment to the pattern `factors`: imposes the displacement patterns, iterates
+   !> on the free equations until ||FR|| <= tol * max(||F_ext||, ||reactions||).
+   subroutine solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
+         converged, iters, residual, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      real(wp), intent(in) :: factors(:), fint_conv(:, :)
+      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
+      logical, intent(out) :: converged
+      integer, intent(out) :: iters
+      real(wp), intent(out) :: residual
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: fext(:, :), up(:, :), r(:), du(:)
+      real(wp) :: rnorm, ref
+      integer :: p, i, d, k
+      logical :: newton
+
+      newton = model%solver%method == 'NEWTON'
+      allocate (fext(2, size(fint_conv, 2)), up(2, size(fint_conv, 2)), source=0.0_wp)
+      do p = 1, size(factors)
+         fext = fext + factors(p)*problem%pattern_force(:, :, p)
+         up = up + factors(p)*problem%pattern_disp(:, :, p)
+      end do
+      u = problem%state%u
+      where (problem%dofs%eq == 0) u = up
+      if (any(u /= problem%state%u)) then
+         allocate (fint, mold=fint_conv)
+         call internal_forces(model, problem%elems, u, problem%state, fint, error)
+         if (allocated(error)) call as_run_error(error)
+         if (allocated(error)) return
+      else
+         fint = fint_conv
+      end if
+      allocate (r(problem%dofs%neq), du(problem%dofs%neq), reaction(2, size(u, 2)))
+      converged = .false.
+      iters = 0
+      do
+         reaction = fint - fext
+         do i = 1, size(u, 2)
+            do d = 1, 2
+               k = problem%dofs%eq(d, i)
+               if (k > 0) then
+                  r(k) = fext(d, i) - fint(d, i)
+                  reaction(d, i) = 0.0_wp
+               end if
+            end do
+         end do
+         rnorm = norm2(r)
+         ref = max(norm2(pack(fext, problem%dofs%eq > 0)), norm2(reaction))
+         residual = 0.0_wp
+         if (ref > 0.0_wp) residual = rnorm/ref
+         if (rnorm <= model%solver%tolerance*ref .or. rnorm == 0.0_wp) then
+            converged = .true.
+            return
+         end if
+         if (iters >= model%solver%max_iterations .or. .not. (rnorm < huge(1.0_wp))) return
+         if (newton .and. iters > 0) then
+            call factorise_stiffness(model, problem, .true., error)
+            if (allocated(error)) return
+         end if
+         call problem%solver%solve(r, du, error)
+         if (allocated(error)) return
+         problem%solves = problem%solves + 1
+         iters = iters + 1
+         do k = 1, problem%dofs%neq
+            u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) = &
+               u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + du(k)
+         end do
+         call internal_forces(model, problem%elems, u, problem%state, fint, error)
+         if (allocated(error)) call as_run_error(error)
+         if (allocated(error)) return
+      end do
+   end subroutine solve_increment
+
+   !> A material that cannot return (e.g. a failed local iteration) cuts the increment.
+   subroutine as_run_error(error)
+      type(error_t), allocatable, intent(inout) :: error
+      if (error%kind /= ERR_SINGULAR) error%kind = ERR_RUN
+   end subroutine as_run_error
+
+end module pecplas_driver_increments

@@ -1,0 +1,73 @@
+!> Everything a run needs besides the model: element objects, equation numbering,
+!> integration-point state, pattern vectors, the linear solver and its matrix, counters.
+module pecplas_driver_problem
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t
+   use pecplas_model, only: model_t
+   use pecplas_fe_dofs, only: dofs_t, new_dofs
+   use pecplas_fe_state, only: fe_state_t
+   use pecplas_fe_loads, only: pattern_vectors
+   use pecplas_massif_elements_type, only: massif_element_box_t
+   use pecplas_massif_elements_factory, only: new_massif_element
+   use pecplas_massif_materials_type, only: NCOMP
+   use pecplas_linalg_sparse, only: csc_t
+   use pecplas_linalg_solver, only: linear_solver_t
+   implicit none (type, external)
+   private
+
+   public :: problem_t, setup_problem
+
+   type :: problem_t
+      type(massif_element_box_t), allocatable :: elems(:)
+      type(dofs_t) :: dofs
+      type(fe_state_t) :: state
+      !> Pattern vectors at factor 1: forces and imposed displacements (2, nnode, npattern).
+      real(wp), allocatable :: pattern_force(:, :, :), pattern_disp(:, :, :)
+      class(linear_solver_t), allocatable :: solver
+      type(csc_t) :: k
+      !> Counters for the summary.
+      integer :: increments = 0, iterations = 0, cuts = 0, factorisations = 0, solves = 0
+   end type problem_t
+
+contains
+
+   !> Builds elements, equations, zero initial state and pattern vectors.
+   subroutine setup_problem(model, problem, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(out) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: d(NCOMP, NCOMP)
+      integer :: s, nel, ng, nst, nnode, npat
+
+      nnode = model%mesh%nnode()
+      allocate (problem%elems(size(model%mesh%esets)))
+      allocate (problem%state%sets(size(model%mesh%esets)))
+      do s = 1, size(model%mesh%esets)
+         call new_massif_element(model%mesh%esets(s)%etype, problem%elems(s)%e, error)
+         if (allocated(error)) return
+         associate (st => problem%state%sets(s))
+            call problem%elems(s)%e%gauss(st%xi, st%w)
+            ng = size(st%w)
+            st%ngauss = ng
+            nel = size(model%mesh%esets(s)%conn, 2)
+            nst = model%materials(model%mesh%esets(s)%material_index)%m%nstate()
+            allocate (st%stress(NCOMP, ng, nel), st%strain(NCOMP, ng, nel), source=0.0_wp)
+            allocate (st%hist(nst, ng, nel), source=0.0_wp)
+            allocate (st%stress_trial, st%strain_trial, source=st%stress)
+            allocate (st%hist_trial, source=st%hist)
+            allocate (st%tangent(NCOMP, NCOMP, ng, nel))
+            call model%materials(model%mesh%esets(s)%material_index)%m%elastic_tangent(d)
+            st%tangent = spread(spread(d, 3, ng), 4, nel)
+         end associate
+      end do
+      npat = 0
+      if (allocated(model%patterns)) npat = size(model%patterns)
+      allocate (problem%state%u(2, nnode), source=0.0_wp)
+      allocate (problem%state%factors(npat), source=0.0_wp)
+      call new_dofs(model, problem%dofs, error)
+      if (allocated(error)) return
+      call pattern_vectors(model, problem%elems, problem%state, problem%pattern_force, &
+         problem%pattern_disp, error)
+   end subroutine setup_problem
+
+end module pecplas_driver_problem

@@ -1,0 +1,55 @@
+!> Assembles and factorises the global stiffness; picks the linear solver on first use
+!> (AUTO: CHOLMOD for the symmetric positive definite stiffness, UMFPACK otherwise) and
+!> turns a singular factorisation into a message naming the free node and direction.
+module pecplas_driver_stiffness
+   use pecplas_error, only: error_t, ERR_SINGULAR
+   use pecplas_model, only: model_t
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_fe_assembly, only: assemble_stiffness
+   use pecplas_linalg_solver, only: new_linear_solver
+   implicit none (type, external)
+   private
+
+   public :: factorise_stiffness, linear_solver_name
+
+contains
+
+   !> Name of the linear solver a run uses.
+   function linear_solver_name(model) result(name)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: name
+      name = model%solver%linear
+      ! Massif materials of this version give a symmetric tangent: CHOLMOD applies.
+      if (name == 'AUTO') name = 'CHOLMOD'
+   end function linear_solver_name
+
+   !> `tangent`: consistent tangents (full Newton) instead of elastic stiffness.
+   subroutine factorise_stiffness(model, problem, tangent, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: tangent
+      type(error_t), allocatable, intent(out) :: error
+
+      call assemble_stiffness(model, problem%dofs, problem%elems, problem%state, tangent, &
+         problem%k, error)
+      if (allocated(error)) return
+      if (.not. allocated(problem%solver)) then
+         call new_linear_solver(linear_solver_name(model), problem%solver, error)
+         if (allocated(error)) return
+         call problem%solver%analyse(problem%k, error)
+         if (allocated(error)) return
+      end if
+      call problem%solver%factorise(problem%k, error)
+      if (allocated(error)) then
+         if (error%kind == ERR_SINGULAR) then
+            error%message = 'the stiffness matrix is singular: '// &
+               problem%dofs%describe(model, problem%solver%bad_equation)// &
+               ' can move without resistance (a mechanism: missing supports in *BOUNDARY?). '// &
+               'Solver said: '//error%message
+         end if
+         return
+      end if
+      problem%factorisations = problem%factorisations + 1
+   end subroutine factorise_stiffness
+
+end module pecplas_driver_stiffness

@@ -1,0 +1,133 @@
+!> Assembly of the massif elements: stiffness (COO → CSC), internal forces with the material
+!> update at every integration point, external forces of the load patterns.
+module pecplas_fe_assembly
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, fatal_error
+   use pecplas_model, only: model_t
+   use pecplas_fe_dofs, only: dofs_t
+   use pecplas_fe_state, only: fe_state_t
+   use pecplas_massif_elements_type, only: massif_element_box_t
+   use pecplas_massif_materials_type, only: NCOMP
+   use pecplas_massif_kinematics, only: point_kinematics
+   use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
+   implicit none (type, external)
+   private
+
+   public :: assemble_stiffness, internal_forces
+
+contains
+
+   !> Global stiffness on the free equations. `tangent`: consistent tangents stored in the
+   !> state (full Newton); otherwise the elastic tangent of each material (modified Newton).
+   subroutine assemble_stiffness(model, dofs, elems, state, tangent, k, error)
+      type(model_t), intent(in) :: model
+      type(dofs_t), intent(in) :: dofs
+      type(massif_element_box_t), intent(in) :: elems(:)
+      type(fe_state_t), intent(in) :: state
+      logical, intent(in) :: tangent
+      type(csc_t), intent(out) :: k
+      type(error_t), allocatable, intent(out) :: error
+      type(coo_t) :: coo
+      real(wp), allocatable :: xe(:, :), n(:), b(:, :), ke(:, :), db(:, :)
+      real(wp) :: d(NCOMP, NCOMP), dvol, x(2)
+      integer, allocatable :: idx(:)
+      integer :: s, e, g, nn, nd, capacity
+
+      capacity = 0
+      do s = 1, size(elems)
+         nd = 2*elems(s)%e%nnode()
+         capacity = capacity + nd*nd*size(model%mesh%esets(s)%conn, 2)
+      end do
+      call coo%init(dofs%neq, capacity)
+      do s = 1, size(elems)
+         associate (set => model%mesh%esets(s), st => state%sets(s), &
+                    mat => model%materials(model%mesh%esets(s)%material_index)%m)
+            nn = elems(s)%e%nnode(); nd = 2*nn
+            allocate (xe(2, nn), n(nn), b(NCOMP, nd), ke(nd, nd), db(NCOMP, nd), idx(nd))
+            if (.not. tangent) call mat%elastic_tangent(d)
+            do e = 1, size(set%conn, 2)
+               xe = model%mesh%x(:, set%conn(:, e))
+               idx(1:nd:2) = dofs%eq(1, set%conn(:, e))
+               idx(2:nd:2) = dofs%eq(2, set%conn(:, e))
+               ke = 0.0_wp
+               do g = 1, st%ngauss
+                  call point_kinematics(elems(s)%e, model%analysis, xe, st%xi(:, g), st%w(g), &
+                     n, b, dvol, x, error)
+                  if (allocated(error)) then
+                     call element_context(error, set%name, set%ids(e))
+                     return
+                  end if
+                  if (tangent) d = st%tangent(:, :, g, e)
+                  db = matmul(d, b)*dvol
+                  ke = ke + matmul(transpose(b), db)
+               end do
+               call coo%add_block(idx, ke)
+            end do
+            deallocate (xe, n, b, ke, db, idx)
+         end associate
+      end do
+      call coo_to_csc(coo, k)
+   end subroutine assemble_stiffness
+
+   !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
+   !> updating trial stresses, strains, history and tangents from the converged state.
+   subroutine internal_forces(model, elems, u, state, fint, error)
+      type(model_t), intent(in) :: model
+      type(massif_element_box_t), intent(in) :: elems(:)
+      real(wp), intent(in) :: u(:, :)
+      type(fe_state_t), intent(inout) :: state
+      real(wp), intent(out) :: fint(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: xe(:, :), ue(:), n(:), b(:, :), fe(:)
+      real(wp) :: dvol, x(2), eps(NCOMP), deps(NCOMP)
+      integer :: s, e, g, nn, nd, j
+
+      fint = 0.0_wp
+      do s = 1, size(elems)
+         associate (set => model%mesh%esets(s), st => state%sets(s), &
+                    mat => model%materials(model%mesh%esets(s)%material_index)%m)
+            nn = elems(s)%e%nnode(); nd = 2*nn
+            allocate (xe(2, nn), ue(nd), n(nn), b(NCOMP, nd), fe(nd))
+            do e = 1, size(set%conn, 2)
+               xe = model%mesh%x(:, set%conn(:, e))
+               ue = reshape(u(:, set%conn(:, e)), [nd])
+               fe = 0.0_wp
+               do g = 1, st%ngauss
+                  call point_kinematics(elems(s)%e, model%analysis, xe, st%xi(:, g), st%w(g), &
+                     n, b, dvol, x, error)
+                  if (allocated(error)) then
+                     call element_context(error, set%name, set%ids(e))
+                     return
+                  end if
+                  eps = matmul(b, ue)
+                  deps = eps - st%strain(:, g, e)
+                  st%hist_trial(:, g, e) = st%hist(:, g, e)
+                  call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                     st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
+                  if (allocated(error)) then
+                     call element_context(error, set%name, set%ids(e))
+                     return
+                  end if
+                  st%strain_trial(:, g, e) = eps
+                  fe = fe + matmul(transpose(b), st%stress_trial(:, g, e))*dvol
+               end do
+               do j = 1, nn
+                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j)
+               end do
+            end do
+            deallocate (xe, ue, n, b, fe)
+         end associate
+      end do
+   end subroutine internal_forces
+
+   !> Prefixes an element-level error with the element set and user id.
+   subroutine element_context(error, set_name, id)
+      type(error_t), allocatable, intent(inout) :: error
+      character(len=*), intent(in) :: set_name
+      integer, intent(in) :: id
+      character(len=32) :: buf
+      write (buf, '(i0)') id
+      error%message = 'element '//trim(buf)//' of set '//set_name//': '//error%message
+   end subroutine element_context
+
+end module pecplas_fe_assembly

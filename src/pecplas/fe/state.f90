@@ -1,0 +1,61 @@
+!> Integration-point state of the massif elements: converged values (end of the last
+!> converged increment) and trial values (current iterate). Kept apart from the model so
+!> the model stays intent(in).
+module pecplas_fe_state
+   use pecplas_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: set_state_t, fe_state_t
+
+   !> Per element set: arrays (component, gauss point, element).
+   type :: set_state_t
+      integer :: ngauss = 0
+      !> Integration rule of the set (reference coordinates and weights).
+      real(wp), allocatable :: xi(:, :), w(:)
+      real(wp), allocatable :: stress(:, :, :), strain(:, :, :), hist(:, :, :)
+      real(wp), allocatable :: stress_trial(:, :, :), strain_trial(:, :, :), hist_trial(:, :, :)
+      !> Consistent tangent at each point from the last trial update (4, 4, ngauss, nel).
+      real(wp), allocatable :: tangent(:, :, :, :)
+   end type set_state_t
+
+   type :: fe_state_t
+      !> Converged nodal displacements (2, nnode).
+      real(wp), allocatable :: u(:, :)
+      !> Factors of the load patterns at the converged state.
+      real(wp), allocatable :: factors(:)
+      type(set_state_t), allocatable :: sets(:)
+   contains
+      procedure :: commit => state_commit
+      procedure :: rollback => state_rollback
+   end type fe_state_t
+
+contains
+
+   !> Accepts the trial values of every point (end of a converged increment).
+   subroutine state_commit(this)
+      class(fe_state_t), intent(inout) :: this
+      integer :: s
+      do s = 1, size(this%sets)
+         associate (st => this%sets(s))
+            st%stress = st%stress_trial
+            st%strain = st%strain_trial
+            st%hist = st%hist_trial
+         end associate
+      end do
+   end subroutine state_commit
+
+   !> Discards the trial values (an increment that is cut).
+   subroutine state_rollback(this)
+      class(fe_state_t), intent(inout) :: this
+      integer :: s
+      do s = 1, size(this%sets)
+         associate (st => this%sets(s))
+            st%stress_trial = st%stress
+            st%strain_trial = st%strain
+            st%hist_trial = st%hist
+         end associate
+      end do
+   end subroutine state_rollback
+
+end module pecplas_fe_state
