@@ -1,0 +1,60 @@
+# PECPLAS/PECJOIN: on a fresh Debian 12 machine `make run` and `make test` are all it takes;
+# both first run tools/install_deps.sh (installs as root, else says what to install).
+# See doc/build.md. `make help` lists the targets.
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := help
+
+PYTHON ?= python3
+# `pip install fpm` puts fpm in the interpreter's scripts dir (or the user base); pyenv's
+# shims only know it after a rehash. Look in both, so a just-installed fpm is found.
+PY_SCRIPTS := $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("scripts"))' 2>/dev/null)
+PY_USERBASE := $(shell $(PYTHON) -m site --user-base 2>/dev/null)
+export PATH := $(if $(PY_SCRIPTS),$(PY_SCRIPTS):)$(PATH)$(if $(PY_USERBASE),:$(PY_USERBASE)/bin)
+export PYTHON
+
+FPM ?= fpm
+DECK ?= input/default.inp
+OUT ?= output/$(basename $(notdir $(DECK))).h5
+CMAKE_DIR ?= build/cmake
+JOBS ?= 2
+export FPM CMAKE_DIR JOBS
+
+.PHONY: help deps build run test bench clean
+
+help:
+	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
+	@echo "  make run      install what is missing, build (release) and run $(DECK) -> $(OUT)"
+	@echo "                DECK=path/to/deck.inp [OUT=path/to/results.h5] to choose"
+	@echo "  make test     fpm test (debug) + CMake build and ctest (release) + pytest test/python"
+	@echo "  make build    fpm build --profile release"
+	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
+	@echo "  make bench    speed benchmarks (tools/bench.sh)"
+	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
+	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
+
+deps:
+	@bash tools/install_deps.sh
+
+build: deps
+	$(FPM) build --profile release
+
+run: build
+	@test -f "$(DECK)" || { echo "make run: no deck $(DECK) (choose one with DECK=path/to/deck.inp)" >&2; exit 1; }
+	@mkdir -p "$(dir $(OUT))"
+	@rm -f "$(OUT)"
+	$(FPM) run --profile release --target pecplas -- "$(DECK)" "$(OUT)"
+	@test -f "$(OUT)" || { echo "make run: pecplas wrote no $(OUT)" >&2; exit 1; }
+	@echo "make run: results of $(DECK) written to $(OUT)"
+
+test: deps
+	@bash tools/test_all.sh
+
+bench:
+	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
+	else echo "make bench: benchmarks arrive with issue 2's speed report"; fi
+
+clean:
+	rm -rf build .pytest_cache
+	find . -name __pycache__ -type d -prune -exec rm -rf {} +

@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# Everything `make test` runs, in order, each stage going on even when an earlier one failed
+# so that one run shows every problem:
+#   1. fpm test   (debug profile with -fcheck=all: every suite of test/main.f90)
+#   2. CMake      (release build in $CMAKE_DIR, one CTest test per suite)
+#   3. pytest     (test/python, the result checker's tests), when present
+# then one closing line "total: N passed, M failed" counting distinct tests (the Fortran
+# tests once, from stage 1; CTest runs the same suites in another build) plus the Python ones.
+# Exits non-zero when any stage failed. The Makefile sets FPM, PYTHON, CMAKE_DIR and JOBS.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+
+FPM=${FPM:-fpm}
+PYTHON=${PYTHON:-python3}
+CMAKE_DIR=${CMAKE_DIR:-build/cmake}
+JOBS=${JOBS:-2}
+FPM_TEST_FLAGS=${FPM_TEST_FLAGS:--fcheck=all}
+logdir=build/test-logs
+mkdir -p "$logdir"
+
+passed=0
+failed=0
+summary=()
+status=0
+
+stage() { printf '\n==== %s\n' "$*"; }
+note() {  # note OK|FAIL TEXT: one line of the final summary
+  summary+=("$(printf '  %-4s %s' "$1" "$2")")
+  [[ $1 == ok ]] || status=1
+}
+
+# ---- 1. fpm test ----
+stage "fpm test --profile debug --flag '$FPM_TEST_FLAGS'"
+"$FPM" test --profile debug --flag "$FPM_TEST_FLAGS" 2>&1 | tee "$logdir/fpm.log"
+rc=${PIPESTATUS[0]}
+line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$logdir/fpm.log" | tail -n 1)
+if [[ -n $line ]]; then
+  read -r np _ nf _ <<<"${line//,/}"
+  passed=$((passed + np))
+  failed=$((failed + nf))
+fi
+if ((rc == 0)) && [[ -n $line ]]; then
+  note ok "fpm test (debug, -fcheck=all): $line"
+elif [[ -n $line ]]; then
+  note FAIL "fpm test (debug, -fcheck=all): $line"
+else
+  failed=$((failed + 1))
+  note FAIL "fpm test: did not build or did not finish (exit $rc), see $logdir/fpm.log"
+fi
+
+# ---- 2. CMake route ----
+stage "cmake -B $CMAKE_DIR -DCMAKE_BUILD_TYPE=Release && cmake --build $CMAKE_DIR -j$JOBS"
+ctest_args=(--test-dir "$CMAKE_DIR" --output-on-failure)
+# pytest runs below on its own; CTest's python_results test would only repeat it.
+[[ -d test/python ]] && ctest_args+=(--label-exclude python)
+# Run from `make`, the inner make of `cmake --build` would print every directory change.
+unset MAKEFLAGS MFLAGS MAKELEVEL
+cmake -B "$CMAKE_DIR" -DCMAKE_BUILD_TYPE=Release 2>&1 | tee "$logdir/cmake-configure.log"
+rc=${PIPESTATUS[0]}
+if ((rc == 0)); then
+  cmake --build "$CMAKE_DIR" -j"$JOBS" 2>&1 | tee "$logdir/cmake-build.log"
+  rc=${PIPESTATUS[0]}
+  if ((rc == 0)); then
+    stage "ctest ${ctest_args[*]}"
+    ctest "${ctest_args[@]}" 2>&1 | tee "$logdir/ctest.log"
+    rc=${PIPESTATUS[0]}
+    line=$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$logdir/ctest.log" | tail -n 1)
+    if ((rc == 0)) && [[ -n $line ]]; then
+      note ok "ctest (CMake release build): $line"
+    else
+      failed=$((failed + 1))
+      note FAIL "ctest (CMake release build): ${line:-exit $rc}, see $logdir/ctest.log"
+    fi
+  else
+    failed=$((failed + 1))
+    note FAIL "cmake --build failed (exit $rc), see $logdir/cmake-build.log"
+  fi
+else
+  failed=$((failed + 1))
+  note FAIL "cmake configure failed (exit $rc), see $logdir/cmake-configure.log"
+fi
+
+# ---- 3. pytest ----
+if compgen -G 'test/python/test_*.py' >/dev/null; then
+  stage "$PYTHON -m pytest test/python"
+  export PECPLAS_BIN=$PWD/$CMAKE_DIR/pecplas
+  "$PYTHON" -m pytest -q -p no:cacheprovider test/python 2>&1 | tee "$logdir/pytest.log"
+  rc=${PIPESTATUS[0]}
+  line=$(grep -E '[0-9]+ (passed|failed|errors?)( |,|$)' "$logdir/pytest.log" | tail -n 1)
+  np=0 nf=0
+  [[ $line =~ ([0-9]+)\ passed ]] && np=${BASH_REMATCH[1]}
+  [[ $line =~ ([0-9]+)\ failed ]] && nf=${BASH_REMATCH[1]}
+  [[ $line =~ ([0-9]+)\ errors? ]] && nf=$((nf + BASH_REMATCH[1]))
+  passed=$((passed + np))
+  if ((rc == 0)); then
+    note ok "pytest test/python: $np passed"
+  elif ((rc == 5)); then
+    note ok "pytest test/python: no tests collected"
+  else
+    ((nf > 0)) || nf=1
+    failed=$((failed + nf))
+    note FAIL "pytest test/python: exit $rc, ${line:-no summary}"
+  fi
+else
+  note ok "pytest: no test/python/test_*.py yet"
+fi
+
+stage "summary"
+printf '%s\n' "${summary[@]}"
+if ((status != 0)); then
+  echo "make test: FAILED (logs in $logdir)"
+fi
+echo "total: $passed passed, $failed failed"
+exit "$status"
