@@ -3,6 +3,8 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_model_mesh_tools, only: collect_model_mesh_tools
+   use test_io_gmsh, only: collect_io_gmsh
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -10,7 +12,9 @@ program tester
    logical :: found
 
    suites = [ &
-      new_testsuite('model_params', collect_model_params) &
+      new_testsuite('model_params', collect_model_params), &
+      new_testsuite('model_mesh_tools', collect_model_mesh_tools), &
+      new_testsuite('io_gmsh', collect_io_gmsh) &
       ]
 
    nargs = command_argument_count()
