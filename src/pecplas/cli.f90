@@ -8,7 +8,7 @@ module pecplas_cli
    use pecplas_files, only: make_directories, path_stem, path_dir
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_model_mesh_tools, only: orient_edge_sets
+   use pecplas_model_mesh_tools, only: orient_edge_sets, check_elements
    use pecplas_driver_problem, only: problem_t, setup_problem
    use pecplas_driver_stiffness, only: factorise_stiffness, linear_solver_name
    use pecplas_driver_increments, only: run_increments
@@ -89,10 +89,12 @@ contains
       type(error_t), allocatable :: error
       character(len=:), allocatable :: status, message, outfile
       real(wp) :: t0, t1
+      integer :: nflipped
 
       call cpu_time(t0)
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
+      if (.not. allocated(error)) call check_elements(model%mesh, nflipped, error)
       if (.not. allocated(error)) call orient_edge_sets(model%mesh, error)
       if (.not. allocated(error)) call setup_problem(model, problem, error)
       if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
@@ -110,6 +112,8 @@ contains
       end if
       call make_directories(path_dir(outfile))
       if (.not. quiet) call banner(model, problem, deck, outfile)
+      if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
+         ' clockwise elements renumbered counter-clockwise'
 
       call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error)
       if (allocated(error)) then

@@ -31,7 +31,11 @@ contains
       integer :: i, k, n, d
 
       n = model%mesh%nnode()
-      allocate (fixed(2, n), source=.false.)
+      ! Nodes of no element carry no stiffness: they are not unknowns (and not a mechanism).
+      allocate (fixed(2, n), source=.true.)
+      do i = 1, size(model%mesh%esets)
+         fixed(:, pack(model%mesh%esets(i)%conn, .true.)) = .false.
+      end do
       if (allocated(model%supports%node)) then
          do k = 1, size(model%supports%node)
             fixed(model%supports%dof(k), model%supports%node(k)) = .true.
