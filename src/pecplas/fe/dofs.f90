@@ -34,7 +34,13 @@ contains
       ! Nodes of no element carry no stiffness: they are not unknowns (and not a mechanism).
       allocate (fixed(2, n), source=.true.)
       do i = 1, size(model%mesh%esets)
-         fixed(:, pack(model%mesh%esets(i)%conn, .true.)) = .false.
+         associate (conn => model%mesh%esets(i)%conn)
+            do k = 1, size(conn, 2)
+               do d = 1, size(conn, 1)
+                  fixed(:, conn(d, k)) = .false.
+               end do
+            end do
+         end associate
       end do
       if (allocated(model%supports%node)) then
          do k = 1, size(model%supports%node)
