@@ -12,7 +12,7 @@ module fixtures_massif
    private
 
    public :: sample_xe, hooke, dense_solve, sym_eigenvalues
-   public :: patch_t, build_patch, assemble_stiffness, element_dofs
+   public :: patch_t, build_patch, assemble_stiffness, element_dofs, linear_field
 
    !> Patch of elements covering [x0, x0+1] x [0, 1].
    type :: patch_t
@@ -158,6 +158,16 @@ contains
          node = k
       end subroutine midside
    end subroutine build_patch
+
+   !> Nodal values of the linear field u = A x + c (DOF order u1, v1, ...).
+   pure function linear_field(xe, a, c) result(ue)
+      real(wp), intent(in) :: xe(:, :), a(2, 2), c(2)
+      real(wp) :: ue(2*size(xe, 2))
+      integer :: k
+      do k = 1, size(xe, 2)
+         ue(2*k - 1:2*k) = matmul(a, xe(:, k)) + c
+      end do
+   end function linear_field
 
    !> DOF numbers (u1, v1, u2, v2, ...) of element nodes `nodes`.
    pure function element_dofs(nodes) result(dofs)

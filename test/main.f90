@@ -4,6 +4,7 @@ program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
    use test_massif_elements, only: collect_massif_elements
+   use test_massif_patch, only: collect_massif_patch
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -12,7 +13,8 @@ program tester
 
    suites = [ &
       new_testsuite('model_params', collect_model_params), &
-      new_testsuite('massif_elements', collect_massif_elements) &
+      new_testsuite('massif_elements', collect_massif_elements), &
+      new_testsuite('massif_patch', collect_massif_patch) &
       ]
 
    nargs = command_argument_count()

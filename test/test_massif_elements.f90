@@ -12,7 +12,7 @@ module test_massif_elements
       new_massif_rule
    use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use fixtures_massif, only: sample_xe, hooke, sym_eigenvalues
+   use fixtures_massif, only: sample_xe, hooke, sym_eigenvalues, linear_field
    implicit none (type, external)
    private
    public :: collect_massif_elements
@@ -235,16 +235,6 @@ contains
       call check(error, index(e%text(), 'Q9') > 0 .and. index(e%text(), 'T3 T6 Q4 Q8') > 0, &
          'message names the type and lists the known ones: '//e%text())
    end subroutine test_factory
-
-   !> Nodal values of the linear field u = A x + c (DOF order u1, v1, ...).
-   pure function linear_field(xe, a, c) result(ue)
-      real(wp), intent(in) :: xe(:, :), a(2, 2), c(2)
-      real(wp) :: ue(2*size(xe, 2))
-      integer :: k
-      do k = 1, size(xe, 2)
-         ue(2*k - 1:2*k) = matmul(a, xe(:, k)) + c
-      end do
-   end function linear_field
 
    !> Plane strain: B of a linear field on a distorted (curved for T6/Q8) element gives
    !> the exact constant strain at Gauss and other points (isoparametric completeness).
