@@ -11,7 +11,7 @@ module fixtures_massif
    implicit none (type, external)
    private
 
-   public :: sample_xe, hooke, dense_solve, sym_eigenvalues
+   public :: sample_xe, sample_points, hooke, dense_solve, sym_eigenvalues
    public :: patch_t, build_patch, assemble_stiffness, element_dofs, linear_field
 
    !> Patch of elements covering [x0, x0+1] x [0, 1].
@@ -73,6 +73,18 @@ contains
       end function mid
    end function sample_xe
 
+   !> Sample points inside the reference element (not Gauss points).
+   function sample_points(name) result(p)
+      character(len=2), intent(in) :: name
+      real(wp) :: p(2, 3)
+      if (name(1:1) == 'T') then
+         p = reshape([0.2_wp, 0.3_wp, 0.6_wp, 0.1_wp, 0.05_wp, 0.85_wp], [2, 3])
+      else
+         p = reshape([0.3_wp, -0.7_wp, -0.5_wp, 0.2_wp, 0.9_wp, 0.95_wp], [2, 3])
+      end if
+   end function sample_points
+
+
    !> Isotropic Hooke matrix from the project's elastic material.
    function hooke(young, poisson) result(d)
       real(wp), intent(in) :: young, poisson
@@ -117,7 +129,7 @@ contains
       integer :: e, k, nc, i, j
       real(wp) :: x(2, 64), tol
       if (name(1:1) == 'Q') then
-         lin = QUADS
+         allocate (lin, source=QUADS)
       else
          allocate (lin(3, 10))
          do e = 1, 5

@@ -3,8 +3,10 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_massif_shapes, only: collect_massif_shapes
    use test_massif_elements, only: collect_massif_elements
    use test_massif_patch, only: collect_massif_patch
+   use test_massif_edge_load, only: collect_massif_edge_load
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -13,8 +15,10 @@ program tester
 
    suites = [ &
       new_testsuite('model_params', collect_model_params), &
+      new_testsuite('massif_shapes', collect_massif_shapes), &
       new_testsuite('massif_elements', collect_massif_elements), &
-      new_testsuite('massif_patch', collect_massif_patch) &
+      new_testsuite('massif_patch', collect_massif_patch), &
+      new_testsuite('massif_edge_load', collect_massif_edge_load) &
       ]
 
    nargs = command_argument_count()

@@ -100,7 +100,7 @@ contains
       allocate (f(size(ue)), source=0.0_wp)
       d = hooke(YOUNG, NU)
       tau = d(4, 4)*eps_exact(4)
-      if (kind == AXISYMMETRIC .and. tau /= 0.0_wp) then
+      if (kind == AXISYMMETRIC .and. abs(tau) > 0.0_wp) then
          allocate (fe(2*rule%nnode))
          do e = 1, size(patch%conn, 2)
             call massif_body_force(rule, PLANE_STRAIN, TWO_PI, patch%x(:, patch%conn(:, e)), &
@@ -194,7 +194,7 @@ contains
       if (allocated(error)) return
       allocate (f(size(k, 1)), source=0.0_wp)
       allocate (fixed(size(f)), source=.false.)
-      ed = elem%edges()
+      allocate (ed, source=elem%edges())
       do e = 1, size(patch%conn, 2)
          do j = 1, size(ed, 2)
             nodes = patch%conn(ed(:, j), e)
