@@ -5,17 +5,25 @@ program tester
    use test_model_params, only: collect_model_params
    use test_model_mesh_tools, only: collect_model_mesh_tools
    use test_io_gmsh, only: collect_io_gmsh
+   use test_massif_shapes, only: collect_massif_shapes
+   use test_massif_elements, only: collect_massif_elements
+   use test_massif_patch, only: collect_massif_patch
+   use test_massif_edge_load, only: collect_massif_edge_load
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
    integer :: i, npass, nfail, nargs
    logical :: found
 
-   suites = [ &
-      new_testsuite('model_params', collect_model_params), &
-      new_testsuite('model_mesh_tools', collect_model_mesh_tools), &
-      new_testsuite('io_gmsh', collect_io_gmsh) &
-      ]
+   ! One line per suite (appending keeps merges of new suites conflict-free).
+   allocate (suites(0))
+   suites = [suites, new_testsuite('model_params', collect_model_params)]
+   suites = [suites, new_testsuite('model_mesh_tools', collect_model_mesh_tools)]
+   suites = [suites, new_testsuite('io_gmsh', collect_io_gmsh)]
+   suites = [suites, new_testsuite('massif_shapes', collect_massif_shapes)]
+   suites = [suites, new_testsuite('massif_elements', collect_massif_elements)]
+   suites = [suites, new_testsuite('massif_patch', collect_massif_patch)]
+   suites = [suites, new_testsuite('massif_edge_load', collect_massif_edge_load)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

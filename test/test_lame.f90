@@ -9,7 +9,7 @@ module test_lame
    use pecplas_files, only: make_directories
    use pecplas_driver_problem, only: problem_t
    use pecplas_massif_materials_type, only: NCOMP
-   use pecplas_massif_kinematics, only: point_kinematics
+   use pecplas_massif_kinematics, only: massif_point_t, massif_gauss_point
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use lame_mesh, only: write_lame_deck, lame_exact, A, B
    implicit none (type, external)
@@ -45,7 +45,8 @@ contains
       type(problem_t) :: problem
       character(len=:), allocatable :: deck
       character(len=16) :: tag
-      real(wp), allocatable :: xe(:, :), ue(:, :), nn(:), bb(:, :)
+      real(wp), allocatable :: xe(:, :), ue(:, :)
+      type(massif_point_t) :: pt
       real(wp) :: dvol, x(2), r, ur, hoop, uex(2), uh(2), num, den, s(NCOMP), c, sn, h
       integer :: code, i, e, g, nen
 
@@ -73,14 +74,15 @@ contains
       num = 0.0_wp; den = 0.0_wp; err_hoop = 0.0_wp
       associate (set => model%mesh%esets(1), st => problem%state%sets(1))
          nen = problem%elems(1)%e%nnode()
-         allocate (xe(2, nen), ue(2, nen), nn(nen), bb(NCOMP, 2*nen))
+         allocate (xe(2, nen), ue(2, nen))
          do e = 1, size(set%conn, 2)
             xe = model%mesh%x(:, set%conn(:, e))
             ue = problem%state%u(:, set%conn(:, e))
             do g = 1, st%ngauss
-               call point_kinematics(problem%elems(1)%e, model%analysis, xe, st%xi(:, g), &
-                  st%w(g), nn, bb, dvol, x, error)
+               call massif_gauss_point(problem%rules(1), g, model%analysis%kind, &
+                  model%analysis%thickness, xe, pt, error)
                if (allocated(error)) return
+               x = pt%x; dvol = pt%dvol
                r = merge(x(1), norm2(x), axi)
                call lame_exact(r, ur, hoop)
                c = x(1)/r; sn = x(2)/r
@@ -89,7 +91,7 @@ contains
                else
                   uex = ur*[c, sn]
                end if
-               uh = matmul(ue, nn)
+               uh = matmul(ue, pt%n(1:nen))
                num = num + sum((uh - uex)**2)*dvol
                den = den + sum(uex**2)*dvol
                s = st%stress(:, g, e)

@@ -122,7 +122,7 @@ contains
       where (problem%dofs%eq == 0) u = up
       if (any(u /= problem%state%u)) then
          allocate (fint, mold=fint_conv)
-         call internal_forces(model, problem%elems, u, problem%state, fint, error)
+         call internal_forces(model, problem%rules, u, problem%state, fint, error)
          if (allocated(error)) call as_run_error(error)
          if (allocated(error)) return
       else
@@ -163,7 +163,7 @@ contains
             u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) = &
                u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + du(k)
          end do
-         call internal_forces(model, problem%elems, u, problem%state, fint, error)
+         call internal_forces(model, problem%rules, u, problem%state, fint, error)
          if (allocated(error)) call as_run_error(error)
          if (allocated(error)) return
       end do

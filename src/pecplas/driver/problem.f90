@@ -9,6 +9,7 @@ module pecplas_driver_problem
    use pecplas_fe_loads, only: pattern_vectors
    use pecplas_massif_elements_type, only: massif_element_box_t
    use pecplas_massif_elements_factory, only: new_massif_element
+   use pecplas_massif_kinematics, only: massif_rule_t, new_massif_rule
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_solver, only: linear_solver_t
@@ -19,6 +20,8 @@ module pecplas_driver_problem
 
    type :: problem_t
       type(massif_element_box_t), allocatable :: elems(:)
+      !> Integration rule with tabulated shape functions, per element set.
+      type(massif_rule_t), allocatable :: rules(:)
       type(dofs_t) :: dofs
       type(fe_state_t) :: state
       !> Pattern vectors at factor 1: forces and imposed displacements (2, nnode, npattern).
@@ -40,13 +43,15 @@ contains
       integer :: s, nel, ng, nst, nnode, npat
 
       nnode = model%mesh%nnode()
-      allocate (problem%elems(size(model%mesh%esets)))
+      allocate (problem%elems(size(model%mesh%esets)), problem%rules(size(model%mesh%esets)))
       allocate (problem%state%sets(size(model%mesh%esets)))
       do s = 1, size(model%mesh%esets)
          call new_massif_element(model%mesh%esets(s)%etype, problem%elems(s)%e, error)
          if (allocated(error)) return
          associate (st => problem%state%sets(s))
-            call problem%elems(s)%e%gauss(st%xi, st%w)
+            call new_massif_rule(problem%rules(s), problem%elems(s)%e)
+            st%xi = problem%rules(s)%xi
+            st%w = problem%rules(s)%w
             ng = size(st%w)
             st%ngauss = ng
             nel = size(model%mesh%esets(s)%conn, 2)
@@ -66,7 +71,7 @@ contains
       allocate (problem%state%factors(npat), source=0.0_wp)
       call new_dofs(model, problem%dofs, error)
       if (allocated(error)) return
-      call pattern_vectors(model, problem%elems, problem%state, problem%pattern_force, &
+      call pattern_vectors(model, problem%rules, problem%pattern_force, &
          problem%pattern_disp, error)
    end subroutine setup_problem
 

@@ -30,7 +30,7 @@ contains
       logical, intent(in) :: tangent
       type(error_t), allocatable, intent(out) :: error
 
-      call assemble_stiffness(model, problem%dofs, problem%elems, problem%state, tangent, &
+      call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
          problem%k, error)
       if (allocated(error)) return
       if (.not. allocated(problem%solver)) then

@@ -6,9 +6,9 @@ module pecplas_fe_assembly
    use pecplas_model, only: model_t
    use pecplas_fe_dofs, only: dofs_t
    use pecplas_fe_state, only: fe_state_t
-   use pecplas_massif_elements_type, only: massif_element_box_t
+   use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
+   use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_massif_materials_type, only: NCOMP
-   use pecplas_massif_kinematics, only: point_kinematics
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
    implicit none (type, external)
    private
@@ -19,51 +19,49 @@ contains
 
    !> Global stiffness on the free equations. `tangent`: consistent tangents stored in the
    !> state (full Newton); otherwise the elastic tangent of each material (modified Newton).
-   subroutine assemble_stiffness(model, dofs, elems, state, tangent, k, error)
+   subroutine assemble_stiffness(model, dofs, rules, state, tangent, k, error)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
-      type(massif_element_box_t), intent(in) :: elems(:)
+      type(massif_rule_t), intent(in) :: rules(:)
       type(fe_state_t), intent(in) :: state
       logical, intent(in) :: tangent
       type(csc_t), intent(out) :: k
       type(error_t), allocatable, intent(out) :: error
       type(coo_t) :: coo
-      real(wp), allocatable :: xe(:, :), n(:), b(:, :), ke(:, :), db(:, :)
-      real(wp) :: d(NCOMP, NCOMP), dvol, x(2)
+      real(wp), allocatable :: xe(:, :), ke(:, :), d(:, :, :)
+      real(wp) :: delastic(NCOMP, NCOMP)
       integer, allocatable :: idx(:)
-      integer :: s, e, g, nn, nd, capacity
+      integer :: s, e, nn, nd, capacity
 
       capacity = 0
-      do s = 1, size(elems)
-         nd = 2*elems(s)%e%nnode()
+      do s = 1, size(rules)
+         nd = 2*rules(s)%nnode
          capacity = capacity + nd*nd*size(model%mesh%esets(s)%conn, 2)
       end do
       call coo%init(dofs%neq, capacity)
-      do s = 1, size(elems)
+      do s = 1, size(rules)
          associate (set => model%mesh%esets(s), st => state%sets(s), &
                     mat => model%materials(model%mesh%esets(s)%material_index)%m)
-            nn = elems(s)%e%nnode(); nd = 2*nn
-            allocate (xe(2, nn), n(nn), b(NCOMP, nd), ke(nd, nd), db(NCOMP, nd), idx(nd))
-            if (.not. tangent) call mat%elastic_tangent(d)
+            nn = rules(s)%nnode; nd = 2*nn
+            allocate (xe(2, nn), ke(nd, nd), idx(nd), d(NCOMP, NCOMP, st%ngauss))
+            if (.not. tangent) then
+               call mat%elastic_tangent(delastic)
+               d = spread(delastic, 3, st%ngauss)
+            end if
             do e = 1, size(set%conn, 2)
                xe = model%mesh%x(:, set%conn(:, e))
                idx(1:nd:2) = dofs%eq(1, set%conn(:, e))
                idx(2:nd:2) = dofs%eq(2, set%conn(:, e))
-               ke = 0.0_wp
-               do g = 1, st%ngauss
-                  call point_kinematics(elems(s)%e, model%analysis, xe, st%xi(:, g), st%w(g), &
-                     n, b, dvol, x, error)
-                  if (allocated(error)) then
-                     call element_context(error, set%name, set%ids(e))
-                     return
-                  end if
-                  if (tangent) d = st%tangent(:, :, g, e)
-                  db = matmul(d, b)*dvol
-                  ke = ke + matmul(transpose(b), db)
-               end do
+               if (tangent) d = st%tangent(:, :, :, e)
+               call massif_stiffness(rules(s), model%analysis%kind, model%analysis%thickness, &
+                  xe, d, ke, error)
+               if (allocated(error)) then
+                  call element_context(error, set%name, set%ids(e))
+                  return
+               end if
                call coo%add_block(idx, ke)
             end do
-            deallocate (xe, n, b, ke, db, idx)
+            deallocate (xe, ke, idx, d)
          end associate
       end do
       call coo_to_csc(coo, k)
@@ -71,35 +69,36 @@ contains
 
    !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
    !> updating trial stresses, strains, history and tangents from the converged state.
-   subroutine internal_forces(model, elems, u, state, fint, error)
+   subroutine internal_forces(model, rules, u, state, fint, error)
       type(model_t), intent(in) :: model
-      type(massif_element_box_t), intent(in) :: elems(:)
+      type(massif_rule_t), intent(in) :: rules(:)
       real(wp), intent(in) :: u(:, :)
       type(fe_state_t), intent(inout) :: state
       real(wp), intent(out) :: fint(:, :)
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: xe(:, :), ue(:), n(:), b(:, :), fe(:)
-      real(wp) :: dvol, x(2), eps(NCOMP), deps(NCOMP)
+      real(wp), allocatable :: xe(:, :), ue(:), fe(:)
+      type(massif_point_t) :: pt
+      real(wp) :: eps(NCOMP), deps(NCOMP)
       integer :: s, e, g, nn, nd, j
 
       fint = 0.0_wp
-      do s = 1, size(elems)
+      do s = 1, size(rules)
          associate (set => model%mesh%esets(s), st => state%sets(s), &
                     mat => model%materials(model%mesh%esets(s)%material_index)%m)
-            nn = elems(s)%e%nnode(); nd = 2*nn
-            allocate (xe(2, nn), ue(nd), n(nn), b(NCOMP, nd), fe(nd))
+            nn = rules(s)%nnode; nd = 2*nn
+            allocate (xe(2, nn), ue(nd), fe(nd))
             do e = 1, size(set%conn, 2)
                xe = model%mesh%x(:, set%conn(:, e))
                ue = reshape(u(:, set%conn(:, e)), [nd])
                fe = 0.0_wp
                do g = 1, st%ngauss
-                  call point_kinematics(elems(s)%e, model%analysis, xe, st%xi(:, g), st%w(g), &
-                     n, b, dvol, x, error)
+                  call massif_gauss_point(rules(s), g, model%analysis%kind, &
+                     model%analysis%thickness, xe, pt, error)
                   if (allocated(error)) then
                      call element_context(error, set%name, set%ids(e))
                      return
                   end if
-                  eps = matmul(b, ue)
+                  eps = matmul(pt%b(:, 1:nd), ue)
                   deps = eps - st%strain(:, g, e)
                   st%hist_trial(:, g, e) = st%hist(:, g, e)
                   call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
@@ -109,13 +108,13 @@ contains
                      return
                   end if
                   st%strain_trial(:, g, e) = eps
-                  fe = fe + matmul(transpose(b), st%stress_trial(:, g, e))*dvol
+                  fe = fe + matmul(st%stress_trial(:, g, e), pt%b(:, 1:nd))*pt%dvol
                end do
                do j = 1, nn
                   fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j)
                end do
             end do
-            deallocate (xe, ue, n, b, fe)
+            deallocate (xe, ue, fe)
          end associate
       end do
    end subroutine internal_forces

@@ -4,11 +4,9 @@ module pecplas_fe_loads
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_model, only: model_t
-   use pecplas_fe_state, only: fe_state_t
-   use pecplas_massif_elements_type, only: massif_element_box_t
-   use pecplas_massif_materials_type, only: NCOMP
-   use pecplas_massif_kinematics, only: point_kinematics
-   use pecplas_massif_edge_load, only: edge_pressure_load
+   use pecplas_massif_kinematics, only: massif_rule_t
+   use pecplas_massif_element_matrices, only: massif_body_force
+   use pecplas_massif_edge_load, only: edge_pressure_forces
    implicit none (type, external)
    private
 
@@ -17,10 +15,9 @@ module pecplas_fe_loads
 contains
 
    !> force(2, nnode, npattern) and displacement(2, nnode, npattern) of every pattern.
-   subroutine pattern_vectors(model, elems, state, force, displacement, error)
+   subroutine pattern_vectors(model, rules, force, displacement, error)
       type(model_t), intent(in) :: model
-      type(massif_element_box_t), intent(in) :: elems(:)
-      type(fe_state_t), intent(in) :: state
+      type(massif_rule_t), intent(in) :: rules(:)
       real(wp), allocatable, intent(out) :: force(:, :, :), displacement(:, :, :)
       type(error_t), allocatable, intent(out) :: error
       integer :: p, k, nnode, npat, nen
@@ -44,15 +41,15 @@ contains
             case ('PRESSURE')
                do k = 1, size(pat%pressure)
                   nen = merge(3, 2, pat%edge(3, k) > 0)
-                  call edge_pressure_load(model%analysis, model%mesh%x(:, pat%edge(1:nen, k)), &
-                     pat%pressure(k), fe(1:2*nen), error)
+                  call edge_pressure_forces(model%analysis%kind, model%analysis%thickness, &
+                     model%mesh%x(:, pat%edge(1:nen, k)), pat%pressure(k), fe(1:2*nen), error)
                   if (allocated(error)) return
                   force(:, pat%edge(1:nen, k), p) = force(:, pat%edge(1:nen, k), p) + &
                      reshape(fe(1:2*nen), [2, nen])
                end do
             case ('BODY_FORCE', 'GRAVITY')
                do k = 1, size(pat%eset)
-                  call add_body_force(model, elems, state, pat%eset(k), pat%vector(:, k), &
+                  call add_body_force(model, rules, pat%eset(k), pat%vector(:, k), &
                      pat%kind == 'GRAVITY', force(:, :, p), error)
                   if (allocated(error)) return
                end do
@@ -63,33 +60,30 @@ contains
 
    !> Consistent nodal forces of a body force per unit volume `vec` (or, for gravity, of
    !> the material unit weight times the direction `vec`) over element set `s`.
-   subroutine add_body_force(model, elems, state, s, vec, gravity, force, error)
+   subroutine add_body_force(model, rules, s, vec, gravity, force, error)
       type(model_t), intent(in) :: model
-      type(massif_element_box_t), intent(in) :: elems(:)
-      type(fe_state_t), intent(in) :: state
+      type(massif_rule_t), intent(in) :: rules(:)
       integer, intent(in) :: s
       real(wp), intent(in) :: vec(2)
       logical, intent(in) :: gravity
       real(wp), intent(inout) :: force(:, :)
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: xe(:, :), n(:), b(:, :)
-      real(wp) :: bf(2), dvol, x(2)
-      integer :: e, g, j, nn
+      real(wp), allocatable :: xe(:, :), fe(:)
+      real(wp) :: bf(2)
+      integer :: e, j, nn
 
-      associate (set => model%mesh%esets(s), st => state%sets(s))
+      associate (set => model%mesh%esets(s))
          bf = vec
          if (gravity) bf = vec*model%materials(set%material_index)%m%unit_weight
-         nn = elems(s)%e%nnode()
-         allocate (xe(2, nn), n(nn), b(NCOMP, 2*nn))
+         nn = rules(s)%nnode
+         allocate (xe(2, nn), fe(2*nn))
          do e = 1, size(set%conn, 2)
             xe = model%mesh%x(:, set%conn(:, e))
-            do g = 1, st%ngauss
-               call point_kinematics(elems(s)%e, model%analysis, xe, st%xi(:, g), st%w(g), &
-                  n, b, dvol, x, error)
-               if (allocated(error)) return
-               do j = 1, nn
-                  force(:, set%conn(j, e)) = force(:, set%conn(j, e)) + n(j)*bf*dvol
-               end do
+            call massif_body_force(rules(s), model%analysis%kind, model%analysis%thickness, &
+               xe, bf, fe, error)
+            if (allocated(error)) return
+            do j = 1, nn
+               force(:, set%conn(j, e)) = force(:, set%conn(j, e)) + fe(2*j - 1:2*j)
             end do
          end do
       end associate

@@ -1,0 +1,141 @@
+!> Element-level integrals of a massif element over its integration rule: stiffness,
+!> internal force, strains, body force, integration-point coordinates. Nodal vectors use
+!> the DOF order u1, v1, u2, v2, ...; point quantities are indexed by the rule's points.
+!> Nothing here allocates: the benchmark assembles some 1e5 elements.
+module pecplas_massif_element_matrices
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, fatal_error
+   use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_point_t, &
+      massif_gauss_point
+   implicit none (type, external)
+   private
+
+   public :: massif_stiffness, massif_internal_force, massif_strains, massif_body_force
+   public :: massif_gauss_coordinates
+
+contains
+
+   !> ke(2*nnode, 2*nnode) = sum_g B^T D_g B dvol for tangents d(4, 4, ngauss); D need
+   !> not be symmetric (non-associated plasticity), and ke is then not symmetric either.
+   subroutine massif_stiffness(rule, analysis_kind, thickness, xe, d, ke, error)
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: analysis_kind
+      real(wp), intent(in) :: thickness, xe(:, :), d(:, :, :)
+      real(wp), intent(out) :: ke(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(massif_point_t) :: pt
+      real(wp) :: db(4, 2*MAX_NODES)
+      integer :: ig, i, j, ndof
+      ndof = 2*rule%nnode
+      call check_shapes(rule, xe, ndof, size(ke, 1), 'massif_stiffness', error)
+      if (allocated(error)) return
+      if (size(ke, 2) /= ndof .or. any(shape(d) /= [4, 4, rule%ngauss])) then
+         call fatal_error(error, 'massif_stiffness: ke must be (ndof, ndof), d (4, 4, ngauss)')
+         return
+      end if
+      ke = 0.0_wp
+      do ig = 1, rule%ngauss
+         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         if (allocated(error)) return
+         db(:, 1:ndof) = matmul(d(:, :, ig), pt%b(:, 1:ndof))*pt%dvol
+         do j = 1, ndof
+            do i = 1, ndof
+               ke(i, j) = ke(i, j) + dot_product(pt%b(:, i), db(:, j))
+            end do
+         end do
+      end do
+   end subroutine massif_stiffness
+
+   !> fe(2*nnode) = sum_g B^T sigma_g dvol for stresses sigma(4, ngauss).
+   subroutine massif_internal_force(rule, analysis_kind, thickness, xe, sigma, fe, error)
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: analysis_kind
+      real(wp), intent(in) :: thickness, xe(:, :), sigma(:, :)
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(massif_point_t) :: pt
+      integer :: ig, ndof
+      ndof = 2*rule%nnode
+      call check_shapes(rule, xe, ndof, size(fe), 'massif_internal_force', error)
+      if (allocated(error)) return
+      if (any(shape(sigma) /= [4, rule%ngauss])) then
+         call fatal_error(error, 'massif_internal_force: sigma must be (4, ngauss)')
+         return
+      end if
+      fe = 0.0_wp
+      do ig = 1, rule%ngauss
+         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         if (allocated(error)) return
+         fe = fe + matmul(sigma(:, ig), pt%b(:, 1:ndof))*pt%dvol
+      end do
+   end subroutine massif_internal_force
+
+   !> Strains eps(4, ngauss) = B ue at the integration points for nodal displacements
+   !> ue(2*nnode) (or their increments).
+   subroutine massif_strains(rule, analysis_kind, thickness, xe, ue, eps, error)
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: analysis_kind
+      real(wp), intent(in) :: thickness, xe(:, :), ue(:)
+      real(wp), intent(out) :: eps(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(massif_point_t) :: pt
+      integer :: ig, ndof
+      ndof = 2*rule%nnode
+      call check_shapes(rule, xe, ndof, size(ue), 'massif_strains', error)
+      if (allocated(error)) return
+      if (any(shape(eps) /= [4, rule%ngauss])) then
+         call fatal_error(error, 'massif_strains: eps must be (4, ngauss)')
+         return
+      end if
+      do ig = 1, rule%ngauss
+         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         if (allocated(error)) return
+         eps(:, ig) = matmul(pt%b(:, 1:ndof), ue)
+      end do
+   end subroutine massif_strains
+
+   !> Consistent nodal forces fe(2*nnode) = sum_g N^T b dvol of a uniform body force
+   !> b(2) per unit volume (gravity: b = (0, -gamma)).
+   subroutine massif_body_force(rule, analysis_kind, thickness, xe, b, fe, error)
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: analysis_kind
+      real(wp), intent(in) :: thickness, xe(:, :), b(2)
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(massif_point_t) :: pt
+      integer :: ig, k, ndof
+      ndof = 2*rule%nnode
+      call check_shapes(rule, xe, ndof, size(fe), 'massif_body_force', error)
+      if (allocated(error)) return
+      fe = 0.0_wp
+      do ig = 1, rule%ngauss
+         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         if (allocated(error)) return
+         do k = 1, rule%nnode
+            fe(2*k - 1:2*k) = fe(2*k - 1:2*k) + pt%n(k)*b*pt%dvol
+         end do
+      end do
+   end subroutine massif_body_force
+
+   !> Physical coordinates xg(2, ngauss) of the integration points.
+   pure subroutine massif_gauss_coordinates(rule, xe, xg)
+      type(massif_rule_t), intent(in) :: rule
+      real(wp), intent(in) :: xe(:, :)
+      real(wp), intent(out) :: xg(:, :)
+      xg = matmul(xe, rule%n)
+   end subroutine massif_gauss_coordinates
+
+   subroutine check_shapes(rule, xe, ndof, nvec, where, error)
+      type(massif_rule_t), intent(in) :: rule
+      real(wp), intent(in) :: xe(:, :)
+      integer, intent(in) :: ndof, nvec
+      character(len=*), intent(in) :: where
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. allocated(rule%n)) then
+         call fatal_error(error, where//': integration rule not built (new_massif_rule)')
+      else if (size(xe, 1) /= 2 .or. size(xe, 2) /= rule%nnode .or. nvec /= ndof) then
+         call fatal_error(error, where//': xe must be (2, nnode) and vectors 2*nnode long')
+      end if
+   end subroutine check_shapes
+
+end module pecplas_massif_element_matrices

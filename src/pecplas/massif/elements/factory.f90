@@ -1,0 +1,73 @@
+!> Maps deck element names to massif element types.
+module pecplas_massif_elements_factory
+   use pecplas_error, only: error_t, input_error
+   use pecplas_massif_elements_type, only: massif_element_t
+   use pecplas_massif_elements_t3, only: t3_element_t
+   use pecplas_massif_elements_t6, only: t6_element_t
+   use pecplas_massif_elements_q4, only: q4_element_t
+   use pecplas_massif_elements_q8, only: q8_element_t
+   implicit none (type, external)
+   private
+
+   public :: new_massif_element, massif_element_nnode, KNOWN_MASSIF_ELEMENTS
+
+   !> Deck names of the massif elements, in the order listed in error messages.
+   character(len=2), parameter :: KNOWN_MASSIF_ELEMENTS(4) = ['T3', 'T6', 'Q4', 'Q8']
+
+contains
+
+   !> Allocates the element type called `name` (case-insensitive, surrounding blanks
+   !> ignored); an unknown name is an input error that lists the known names.
+   subroutine new_massif_element(name, elem, error)
+      character(len=*), intent(in) :: name
+      class(massif_element_t), allocatable, intent(out) :: elem
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: known
+      integer :: i
+      select case (upper(trim(adjustl(name))))
+      case ('T3')
+         allocate (t3_element_t :: elem)
+      case ('T6')
+         allocate (t6_element_t :: elem)
+      case ('Q4')
+         allocate (q4_element_t :: elem)
+      case ('Q8')
+         allocate (q8_element_t :: elem)
+      case default
+         known = ''
+         do i = 1, size(KNOWN_MASSIF_ELEMENTS)
+            known = known//' '//KNOWN_MASSIF_ELEMENTS(i)
+         end do
+         call input_error(error, 'unknown massif element type "'//trim(adjustl(name))// &
+            '"; known types:'//known)
+      end select
+   end subroutine new_massif_element
+
+   !> Nodes per element of the type called `name` (case-insensitive); 0 when unknown.
+   pure integer function massif_element_nnode(name) result(nnode)
+      character(len=*), intent(in) :: name
+      select case (upper(trim(adjustl(name))))
+      case ('T3')
+         nnode = 3
+      case ('T6')
+         nnode = 6
+      case ('Q4')
+         nnode = 4
+      case ('Q8')
+         nnode = 8
+      case default
+         nnode = 0
+      end select
+   end function massif_element_nnode
+
+   pure function upper(s) result(u)
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: u
+      integer :: i
+      u = s
+      do i = 1, len(s)
+         if (s(i:i) >= 'a' .and. s(i:i) <= 'z') u(i:i) = achar(iachar(s(i:i)) - 32)
+      end do
+   end function upper
+
+end module pecplas_massif_elements_factory
