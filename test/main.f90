@@ -3,6 +3,7 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_io_results, only: collect_io_results
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -10,7 +11,8 @@ program tester
    logical :: found
 
    suites = [ &
-      new_testsuite('model_params', collect_model_params) &
+      new_testsuite('model_params', collect_model_params), &
+      new_testsuite('io_results', collect_io_results) &
       ]
 
    nargs = command_argument_count()
