@@ -26,7 +26,8 @@ contains
                new_unittest('crash_keeps_increments', test_crash), &
                new_unittest('limit_load_not_complete', test_limit_load), &
                new_unittest('refuses_bad_input', test_refuses), &
-               new_unittest('finaliser_keeps_running', test_finaliser)]
+               new_unittest('finaliser_keeps_running', test_finaliser), &
+               new_unittest('no_load_pattern', test_no_pattern)]
    end subroutine collect_io_results
 
    !> Creates `name` in OUT_DIR and writes global increments first..last with fields.
@@ -350,5 +351,39 @@ contains
       if (allocated(error)) return
       call rf%free()
    end subroutine test_finaliser
+
+   !> A model without load patterns (an empty pattern_factors column set) and a writer
+   !> object reused for a second file.
+   subroutine test_no_pattern(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(results_file_t) :: rf
+      type(results_reader_t) :: rd
+      type(model_t) :: model
+      type(increment_result_t) :: inc
+      real(wp), allocatable :: factors(:, :)
+      integer :: n
+      call write_sample(rf, 'io_results_scratch.h5', 1, 1, error)
+      if (allocated(error)) return
+      call rf%free()
+      model = sample_model()
+      deallocate (model%patterns)
+      call rf%create(OUT_DIR//'/io_results_nopattern.h5', model, '0.1.0-test', sample_gauss(), &
+         error)
+      if (allocated(error)) return
+      inc = sample_increment(1)
+      deallocate (inc%pattern_factors)
+      call rf%write_increment(inc, error); if (allocated(error)) return
+      inc = sample_increment(2)
+      deallocate (inc%pattern_factors)
+      call rf%write_increment(inc, error); if (allocated(error)) return
+      call rf%finish('completed', '', error); if (allocated(error)) return
+      call rd%open(OUT_DIR//'/io_results_nopattern.h5', error); if (allocated(error)) return
+      call rd%dataset('/history/pattern_factors', factors, error); if (allocated(error)) return
+      call check(error, size(factors, 1) == 0 .and. size(factors, 2) == 2, &
+         'pattern_factors of shape (0, 2)')
+      if (allocated(error)) return
+      call rd%attribute('/', 'complete', n, error); if (allocated(error)) return
+      call check(error, n == 1, 'completed without patterns')
+   end subroutine test_no_pattern
 
 end module test_io_results

@@ -122,8 +122,9 @@ contains
       this%nrows = 0
       this%written = [integer ::]
       this%written_time = [real(wp) ::]
-      allocate (this%ngauss(nset))
+      if (allocated(this%ngauss)) deallocate (this%ngauss)
       if (allocated(this%layout%sets)) deallocate (this%layout%sets)
+      allocate (this%ngauss(nset))
       allocate (this%layout%sets(nset))
       do i = 1, nset
          associate (set => model%mesh%esets(i), s => this%layout%sets(i))
@@ -279,6 +280,7 @@ contains
       call this%free()
    end subroutine results_finish
 
+   !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)
       class(results_file_t), intent(in) :: this
       results_is_open = this%file > 0

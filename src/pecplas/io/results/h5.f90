@@ -98,6 +98,7 @@ contains
       if (err /= 0) call fatal_error(error, 'HDF5: cannot create group '//name)
    end subroutine h5_group
 
+   !> Closes a group opened by h5_group (no-op when gid is not valid); sets gid = -1.
    subroutine h5_close_group(gid)
       integer(hid_t), intent(inout) :: gid
       integer :: err

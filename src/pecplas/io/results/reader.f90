@@ -24,7 +24,6 @@ module pecplas_io_results_reader
    contains
       procedure :: open => reader_open
       procedure :: close => reader_close
-      !> True when every component of `path` exists (a group or dataset).
       procedure :: exists => reader_exists
       procedure :: has_attribute => reader_has_attribute
       procedure, private :: attr_string, attr_int, attr_real
@@ -65,6 +64,7 @@ contains
       end if
    end subroutine reader_open
 
+   !> Closes the file (no-op when not open); also done by the finaliser.
    subroutine reader_close(this)
       class(results_reader_t), intent(inout) :: this
       integer :: err
@@ -77,6 +77,7 @@ contains
       call this%close()
    end subroutine reader_final
 
+   !> True when every component of `path` exists.
    logical function reader_exists(this, path) result(found)
       class(results_reader_t), intent(in) :: this
       character(len=*), intent(in) :: path
@@ -105,6 +106,7 @@ contains
       end do
    end function reader_exists
 
+   !> True when object (a path, '/' for the root) exists and has attribute `name`.
    logical function reader_has_attribute(this, object, name) result(found)
       class(results_reader_t), intent(in) :: this
       character(len=*), intent(in) :: object, name
