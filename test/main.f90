@@ -9,6 +9,7 @@ program tester
    use test_massif_elements, only: collect_massif_elements
    use test_massif_patch, only: collect_massif_patch
    use test_massif_edge_load, only: collect_massif_edge_load
+   use test_io_results, only: collect_io_results
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -24,6 +25,7 @@ program tester
    suites = [suites, new_testsuite('massif_elements', collect_massif_elements)]
    suites = [suites, new_testsuite('massif_patch', collect_massif_patch)]
    suites = [suites, new_testsuite('massif_edge_load', collect_massif_edge_load)]
+   suites = [suites, new_testsuite('io_results', collect_io_results)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

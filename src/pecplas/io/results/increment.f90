@@ -1,0 +1,44 @@
+!> What the solver hands to the results file for one converged increment: plain data,
+!> filled by the driver and written by `results_file_t%write_increment`.
+module pecplas_io_results_increment
+   use pecplas_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: increment_result_t, set_fields_t, gauss_coordinates_t
+
+   !> Gauss-point fields of one element set, components (xx, yy, zz, xy) as in the
+   !> massif materials (xy strain is engineering shear).
+   type :: set_fields_t
+      !> stress(4, ngauss, nel), strain(4, ngauss, nel).
+      real(wp), allocatable :: stress(:, :, :), strain(:, :, :)
+   end type set_fields_t
+
+   !> Coordinates of the Gauss points of one element set, xy(2, ngauss, nel); given once to
+   !> `create` so that post-processing can place Gauss-point values without the elements.
+   type :: gauss_coordinates_t
+      real(wp), allocatable :: xy(:, :, :)
+   end type gauss_coordinates_t
+
+   type :: increment_result_t
+      !> Step number (1-based), increment within the step, global increment number.
+      integer :: step = 0, increment = 0, global_increment = 0
+      !> Cumulative pseudo-time: the end of step k is k.
+      real(wp) :: time = 0.0_wp
+      !> Factor of each load pattern (model%patterns order) at the end of the increment.
+      real(wp), allocatable :: pattern_factors(:)
+      !> Newton iterations and final relative residual ||FR|| / ||F||.
+      integer :: iterations = 0
+      real(wp) :: residual = 0.0_wp
+      !> CPU seconds since the start of the run.
+      real(wp) :: cpu_time = 0.0_wp
+      !> False: only the history row is written (output every n increments).
+      logical :: write_fields = .true.
+      !> displacement(2, nnode), reaction(2, nnode) (reaction needed only when the model
+      !> asks for reactions).
+      real(wp), allocatable :: displacement(:, :), reaction(:, :)
+      !> One entry per element set, in model%mesh%esets order.
+      type(set_fields_t), allocatable :: set_fields(:)
+   end type increment_result_t
+
+end module pecplas_io_results_increment

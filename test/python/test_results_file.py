@@ -1,0 +1,115 @@
+"""Runs the files written by the Fortran suite `io_results` through tools/check_results.py,
+and checks that the checker itself catches broken files.
+
+Run from the project root:
+    python3 -m pytest test/python/test_results_file.py
+This first runs `fpm test -- io_results` (which writes output/test/io_results_*.h5); set
+PECPLAS_NO_FPM=1 to use the files already there.
+"""
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+OUT = ROOT / "output" / "test"
+CHECKER = ROOT / "tools" / "check_results.py"
+
+# file written by the Fortran test -> status it must carry
+EXPECTED = {
+    "io_results_completed.h5": "completed",
+    "io_results_running.h5": "running",
+    "crash/io_results_running.h5": "running",
+    "io_results_limit.h5": "limit load",
+    "io_results_failed.h5": "failed",
+    "io_results_final.h5": "running",
+    "io_results_nopattern.h5": "completed",
+}
+
+
+@pytest.fixture(scope="session", autouse=True)
+def fortran_output():
+    """Writes the files with the Fortran test suite (unless PECPLAS_NO_FPM is set)."""
+    if not os.environ.get("PECPLAS_NO_FPM") and shutil.which("fpm"):
+        run = subprocess.run(["fpm", "test", "--", "io_results"], cwd=ROOT,
+                             capture_output=True, text=True)
+        assert run.returncode == 0, "fpm test -- io_results failed:\n" + run.stdout + run.stderr
+    missing = [name for name in EXPECTED if not (OUT / name).exists()]
+    if missing:
+        pytest.skip("run `fpm test -- io_results` first; missing " + ", ".join(missing))
+
+
+def run_checker(*args):
+    return subprocess.run([sys.executable, str(CHECKER), *map(str, args)],
+                          capture_output=True, text=True)
+
+
+@pytest.mark.parametrize("name,status", sorted(EXPECTED.items()))
+def test_fortran_files_pass_checker(name, status):
+    run = run_checker(OUT / name, "--expect-status", status)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert run.stdout.startswith("OK")
+
+
+def test_completed_file_contents():
+    """Independent reading with h5py: shapes as documented, strings as str."""
+    with h5py.File(OUT / "io_results_completed.h5", "r") as f:
+        assert f.attrs["status"] == "completed" and int(f.attrs["complete"]) == 1
+        assert isinstance(f.attrs["deck_text"], str) and "résultats" in f.attrs["deck_text"]
+        assert f["mesh/coordinates"].shape == (7, 2)
+        assert f["mesh/sets/SOIL/connectivity"][...].tolist() == [[0, 1, 4, 3], [1, 2, 5, 4]]
+        assert list(f["history"].attrs["patterns"]) == ["WEIGHT", "HEAD_LOAD"]
+        assert f["history/time"][...].tolist() == [0.5, 1.0, 1.5]
+        u3 = f["increments/000002/displacement3"][...]
+        assert np.array_equal(u3[:, :2], f["increments/000002/displacement"][...])
+        assert not u3[:, 2].any()
+        stress = f["increments/000003/sets/SOIL/stress"][...]  # (nel, ngauss, 4)
+        mean = f["increments/000003/sets/SOIL/stress_mean"][...]
+        # mean over 4 Gauss points: a few roundings
+        assert np.allclose(mean, stress.mean(axis=1), rtol=4 * np.finfo(float).eps, atol=0)
+
+
+@pytest.fixture
+def broken(tmp_path):
+    """A copy of the completed file and its .xmf, to be damaged by a test."""
+    for ext in (".h5", ".xmf"):
+        shutil.copy(OUT / ("io_results_completed" + ext), tmp_path / ("io_results_completed" + ext))
+    return tmp_path / "io_results_completed.h5"
+
+
+def test_checker_catches_nan(broken):
+    with h5py.File(broken, "r+") as f:
+        f["increments/000002/sets/SOIL/strain"][0, 0, 0] = np.nan
+    run = run_checker(broken)
+    assert run.returncode == 1 and "non-finite" in run.stdout
+
+
+def test_checker_catches_unequal_history(broken):
+    with h5py.File(broken, "r+") as f:
+        f["history/residual"].resize((2,))
+    run = run_checker(broken)
+    assert run.returncode == 1 and "differ in length" in run.stdout
+
+
+def test_checker_catches_bad_xdmf_reference(broken):
+    xmf = broken.with_suffix(".xmf")
+    text = xmf.read_text()
+    xmf.write_text(text.replace("/increments/000003/reaction3", "/increments/000003/nothing", 1)
+                   .replace('Dimensions="2 4"', 'Dimensions="4 2"', 1))
+    run = run_checker(broken)
+    assert run.returncode == 1
+    assert "no dataset /increments/000003/nothing" in run.stdout
+    assert "Dimensions (4, 2)" in run.stdout
+
+
+def test_checker_catches_false_completion(broken):
+    with h5py.File(broken, "r+") as f:
+        f.attrs["status"] = "diverged"
+    run = run_checker(broken)
+    assert run.returncode == 1 and "contradicts" in run.stdout

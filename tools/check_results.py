@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""Check a PECPLAS results file (HDF5) and its XDMF sidecar.
+
+Usage:
+    python3 tools/check_results.py RESULTS.h5 [--expect-status STATUS] [--xmf FILE | --no-xdmf]
+
+Checks that the required attributes, groups and datasets exist, that every /history
+dataset has the same number of rows, that no float dataset or attribute holds NaN or Inf,
+that the status attribute is a known value consistent with `complete`, that each history
+row flagged with fields has its /increments group, and that the .xmf parses as XML and each
+"file.h5:/path" DataItem names an existing dataset of the declared dimensions.
+Exit status 0 when everything holds, 1 otherwise (each problem is printed).
+"""
+
+import argparse
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+
+ROOT_ATTRS = ["program", "version", "title", "units", "deck_file", "deck_text", "analysis",
+              "created", "status", "complete", "status_message"]
+STATUSES = ["running", "completed", "limit load", "diverged", "failed"]
+HISTORY_1D = ["step", "increment", "global_increment", "time", "iterations", "residual",
+              "cpu_time", "fields"]
+SET_DATASETS = ["connectivity", "element_ids", "gauss_coordinates"]
+
+
+def as_text(value):
+    """Attribute value as str (h5py gives str for variable-length strings)."""
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
+    if isinstance(value, np.ndarray) and value.shape == ():
+        return as_text(value[()])
+    return value
+
+
+def check_structure(f, problems):
+    for name in ROOT_ATTRS:
+        if name not in f.attrs:
+            problems.append(f"missing root attribute '{name}'")
+    if f.attrs.get("program") is not None and as_text(f.attrs["program"]) != "PECPLAS":
+        problems.append(f"program attribute is {f.attrs['program']!r}, not 'PECPLAS'")
+    for path in ["mesh/coordinates", "mesh/node_ids", "mesh/sets", "mesh/node_sets",
+                 "mesh/edge_sets", "history", "increments"]:
+        if path not in f:
+            problems.append(f"missing /{path}")
+    if "mesh/sets" in f:
+        if len(f["mesh/sets"]) == 0:
+            problems.append("/mesh/sets holds no element set")
+        nnode = f["mesh/coordinates"].shape[0] if "mesh/coordinates" in f else None
+        for name, group in f["mesh/sets"].items():
+            for ds in SET_DATASETS:
+                if ds not in group:
+                    problems.append(f"missing /mesh/sets/{name}/{ds}")
+            for attr in ["etype", "material"]:
+                if attr not in group.attrs:
+                    problems.append(f"missing attribute '{attr}' of /mesh/sets/{name}")
+            if "connectivity" in group and nnode is not None:
+                conn = group["connectivity"][...]
+                if conn.size and (conn.min() < 0 or conn.max() >= nnode):
+                    problems.append(f"/mesh/sets/{name}/connectivity outside 0..{nnode - 1}")
+
+
+def check_history(f, problems):
+    """Equal lengths; returns the global increments whose row says fields were written."""
+    if "history" not in f:
+        return []
+    h = f["history"]
+    lengths = {}
+    for name in HISTORY_1D:
+        if name not in h:
+            problems.append(f"missing /history/{name}")
+        else:
+            lengths[name] = h[name].shape[0]
+    if "pattern_factors" not in h:
+        problems.append("missing /history/pattern_factors")
+    else:
+        pf = h["pattern_factors"]
+        lengths["pattern_factors"] = pf.shape[0]
+        names = h.attrs.get("patterns")
+        if names is None:
+            problems.append("missing attribute 'patterns' of /history")
+        elif len(names) != pf.shape[1]:
+            problems.append(f"/history has {len(names)} pattern names for "
+                            f"{pf.shape[1]} pattern_factors columns")
+    if len(set(lengths.values())) > 1:
+        problems.append("history datasets differ in length: "
+                        + ", ".join(f"{k}={v}" for k, v in lengths.items()))
+        return []
+    if "fields" in h and "global_increment" in h:
+        fields = h["fields"][...]
+        glob = h["global_increment"][...]
+        return [int(g) for g, flag in zip(glob, fields) if flag == 1]
+    return []
+
+
+def check_increments(f, with_fields, problems):
+    if "increments" not in f:
+        return
+    present = set(f["increments"].keys())
+    expected = {f"{g:06d}" for g in with_fields}
+    for name in sorted(expected - present):
+        problems.append(f"history row of increment {name} has fields but no /increments/{name}")
+    for name in sorted(present - expected):
+        problems.append(f"/increments/{name} has no history row flagged with fields")
+    for name in sorted(present):
+        group = f["increments"][name]
+        for ds in ["displacement", "displacement3"]:
+            if ds not in group:
+                problems.append(f"missing /increments/{name}/{ds}")
+
+
+def check_finite(f, problems):
+    def visit(name, obj):
+        for key, value in obj.attrs.items():
+            arr = np.asarray(value)
+            if arr.dtype.kind == "f" and not np.all(np.isfinite(arr)):
+                problems.append(f"non-finite value in attribute '{key}' of /{name}")
+        if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f":
+            if not np.all(np.isfinite(obj[...])):
+                problems.append(f"non-finite value (NaN/Inf) in /{name}")
+    visit("", f)
+    f.visititems(visit)
+
+
+def check_status(f, expect, problems):
+    if "status" not in f.attrs or "complete" not in f.attrs:
+        return
+    status = as_text(f.attrs["status"])
+    complete = int(f.attrs["complete"])
+    if status not in STATUSES:
+        problems.append(f"unknown status {status!r} (known: {', '.join(STATUSES)})")
+    if complete not in (0, 1):
+        problems.append(f"complete is {complete}, not 0 or 1")
+    if (complete == 1) != (status == "completed"):
+        problems.append(f"complete = {complete} contradicts status {status!r}")
+    if expect is not None and status != expect:
+        problems.append(f"status is {status!r}, expected {expect!r}")
+
+
+def check_xdmf(h5_path, xmf_path, f, problems):
+    """Every DataItem 'file.h5:/path' names a dataset of the file with those dimensions."""
+    if not os.path.exists(xmf_path):
+        problems.append(f"no XDMF file {xmf_path}")
+        return 0
+    try:
+        tree = ET.parse(xmf_path)
+    except ET.ParseError as err:
+        problems.append(f"{xmf_path} is not valid XML: {err}")
+        return 0
+    root = tree.getroot()
+    if root.tag != "Xdmf":
+        problems.append(f"{xmf_path}: root element is <{root.tag}>, not <Xdmf>")
+    h5_real = os.path.realpath(h5_path)
+    items = [d for d in root.iter("DataItem") if d.get("Format", "XML") == "HDF"]
+    if not items:
+        problems.append(f"{xmf_path} references no HDF5 dataset")
+    for item in items:
+        text = (item.text or "").strip()
+        if ":" not in text:
+            problems.append(f"DataItem {text!r} is not of the form file.h5:/path")
+            continue
+        fname, path = text.rsplit(":", 1)
+        target = os.path.realpath(os.path.join(os.path.dirname(xmf_path) or ".", fname))
+        if target != h5_real:
+            problems.append(f"DataItem {text!r} points to {fname}, not to this results file")
+            continue
+        if path not in f or not isinstance(f[path], h5py.Dataset):
+            problems.append(f"DataItem {text!r}: no dataset {path}")
+            continue
+        dims = tuple(int(x) for x in item.get("Dimensions", "").split())
+        if dims != f[path].shape:
+            problems.append(f"DataItem {text!r}: Dimensions {dims} but dataset shape "
+                            f"{f[path].shape}")
+    return len(items)
+
+
+def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):
+    """Returns (problems, summary)."""
+    problems = []
+    try:
+        f = h5py.File(h5_path, "r")
+    except OSError as err:
+        return [f"cannot open {h5_path} as HDF5: {err}"], ""
+    with f:
+        check_structure(f, problems)
+        with_fields = check_history(f, problems)
+        check_increments(f, with_fields, problems)
+        check_finite(f, problems)
+        check_status(f, expect_status, problems)
+        nitems = 0
+        if xdmf:
+            if xmf_path is None:
+                base, ext = os.path.splitext(h5_path)
+                xmf_path = (base if ext in (".h5", ".hdf5") else h5_path) + ".xmf"
+            nitems = check_xdmf(h5_path, xmf_path, f, problems)
+        nrows = f["history/time"].shape[0] if "history/time" in f else 0
+        summary = (f"status {as_text(f.attrs.get('status', '?'))!r}, {nrows} history rows, "
+                   f"{len(with_fields)} field increments, {nitems} XDMF data items")
+    return problems, summary
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description="Check a PECPLAS results file and its XDMF.")
+    parser.add_argument("results", help="results file (.h5)")
+    parser.add_argument("--expect-status", choices=STATUSES,
+                        help="fail unless the status attribute has this value")
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("--xmf", help="XDMF file (default: the .h5 path with .xmf)")
+    group.add_argument("--no-xdmf", action="store_true", help="do not check the XDMF file")
+    args = parser.parse_args(argv)
+    problems, summary = check(args.results, args.expect_status, args.xmf, not args.no_xdmf)
+    if problems:
+        print(f"FAIL {args.results}: {len(problems)} problem(s)")
+        for p in problems:
+            print(f"  - {p}")
+        return 1
+    print(f"OK {args.results}: {summary}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
