@@ -4,7 +4,7 @@ module pecplas_driver_gauss
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
-   use pecplas_io_results_file, only: gauss_points_t
+   use pecplas_io_results_increment, only: gauss_coordinates_t
    implicit none (type, external)
    private
 
@@ -15,7 +15,7 @@ contains
    function gauss_coordinates(model, problem) result(gxy)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
-      type(gauss_points_t), allocatable :: gxy(:)
+      type(gauss_coordinates_t), allocatable :: gxy(:)
       real(wp), allocatable :: xe(:, :)
       integer :: s, e, nn
 
