@@ -14,6 +14,7 @@ module pecplas_cli
    use pecplas_driver_increments, only: run_increments
    use pecplas_driver_gauss, only: gauss_coordinates
    use pecplas_io_results_file, only: results_file_t
+   use pecplas_driver_timers, only: wall_time
    implicit none (type, external)
    private
 
@@ -88,10 +89,11 @@ contains
       type(results_file_t) :: results
       type(error_t), allocatable :: error
       character(len=:), allocatable :: status, message, outfile
-      real(wp) :: t0, t1
+      real(wp) :: t0, t1, w0
       integer :: nflipped
 
       call cpu_time(t0)
+      w0 = wall_time()
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
       if (.not. allocated(error)) call check_elements(model%mesh, nflipped, error)
@@ -102,6 +104,7 @@ contains
          code = fail(error%exit_code(), error%text())
          return
       end if
+      problem%time%setup = wall_time() - w0 - problem%time%assembly - problem%time%factorisation
       outfile = outfile_in
       if (len(outfile) == 0) then
          if (allocated(model%output%file)) then
@@ -131,7 +134,7 @@ contains
          return
       end if
       call cpu_time(t1)
-      call summary(problem, status, message, outfile, t1 - t0, quiet)
+      call summary(problem, status, message, outfile, t1 - t0, wall_time() - w0, quiet)
       code = EXIT_OK
       if (status /= 'completed') code = EXIT_STOPPED
       if (status == 'failed') code = EXIT_INTERNAL
@@ -160,16 +163,21 @@ contains
          '  solver ', linear_solver_name(model), ' / ', model%solver%method
    end subroutine banner
 
-   subroutine summary(problem, status, message, outfile, cpu, quiet)
+   subroutine summary(problem, status, message, outfile, cpu, wall, quiet)
       type(problem_t), intent(in) :: problem
       character(len=*), intent(in) :: status, message, outfile
-      real(wp), intent(in) :: cpu
+      real(wp), intent(in) :: cpu, wall
       logical, intent(in) :: quiet
       if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
       if (quiet .and. status == 'completed') return
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,f0.2,a)') ' summary: ', problem%increments, &
          ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
          problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', cpu, ' s CPU'
+      associate (t => problem%time)
+         write (*, '(a,7(a,f0.3))') ' wall time [s]:', ' read+setup ', t%setup, '  assembly ', &
+            t%assembly, '  factorisation ', t%factorisation, '  solve ', t%solve, '  residual ', &
+            t%residual, '  output ', t%output, '  total ', wall
+      end associate
       write (*, '(a)') ' status: '//status//'  results: '//outfile
    end subroutine summary
 

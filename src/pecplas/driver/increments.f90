@@ -11,6 +11,7 @@ module pecplas_driver_increments
    use pecplas_driver_output, only: write_increment, progress_line
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_io_results_file, only: results_file_t
+   use pecplas_driver_timers, only: wall_time
    implicit none (type, external)
    private
 
@@ -29,7 +30,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: f0(:), ftarget(:), factors(:), fint_conv(:, :), u(:, :)
       real(wp), allocatable :: fint(:, :), reaction(:, :)
-      real(wp) :: tau, dt, dt0, residual, t_start, t_now
+      real(wp) :: tau, dt, dt0, residual, t_start, t_now, t_out
       integer :: istep, inc_in_step, iters, level
       logical :: converged, last
       character(len=160) :: buf
@@ -81,8 +82,10 @@ contains
                fint_conv = fint
                last = tau >= 1.0_wp - 1.0e-12_wp
                call cpu_time(t_now)
+               t_out = wall_time()
                call write_increment(model, problem, results, istep, inc_in_step, &
                   real(istep - 1, wp) + tau, iters, residual, t_now - t_start, reaction, last, error)
+               problem%time%output = problem%time%output + (wall_time() - t_out)
                if (allocated(error)) return
                if (.not. quiet) call progress_line(model, problem, istep, inc_in_step, tau, iters, &
                   residual)
@@ -108,7 +111,7 @@ contains
       real(wp), intent(out) :: residual
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: fext(:, :), up(:, :), r(:), du(:)
-      real(wp) :: rnorm, ref
+      real(wp) :: rnorm, ref, t0
       integer :: p, i, d, k
       logical :: newton
 
@@ -155,7 +158,9 @@ contains
             call factorise_stiffness(model, problem, .true., error)
             if (allocated(error)) return
          end if
+         t0 = wall_time()
          call problem%solver%solve(r, du, error)
+         problem%time%solve = problem%time%solve + (wall_time() - t0)
          if (allocated(error)) return
          problem%solves = problem%solves + 1
          iters = iters + 1
@@ -163,7 +168,9 @@ contains
             u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) = &
                u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + du(k)
          end do
+         t0 = wall_time()
          call internal_forces(model, problem%rules, u, problem%state, fint, error)
+         problem%time%residual = problem%time%residual + (wall_time() - t0)
          if (allocated(error)) call as_run_error(error)
          if (allocated(error)) return
       end do

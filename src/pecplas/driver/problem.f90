@@ -12,7 +12,8 @@ module pecplas_driver_problem
    use pecplas_massif_kinematics, only: massif_rule_t, new_massif_rule
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_linalg_sparse, only: csc_t
-   use pecplas_linalg_solver, only: linear_solver_t
+   use pecplas_linalg_solver_type, only: linear_solver_t
+   use pecplas_driver_timers, only: timers_t
    implicit none (type, external)
    private
 
@@ -30,6 +31,7 @@ module pecplas_driver_problem
       type(csc_t) :: k
       !> Counters for the summary.
       integer :: increments = 0, iterations = 0, cuts = 0, factorisations = 0, solves = 0
+      type(timers_t) :: time
    end type problem_t
 
 contains

@@ -2,11 +2,13 @@
 !> (AUTO: CHOLMOD for the symmetric positive definite stiffness, UMFPACK otherwise) and
 !> turns a singular factorisation into a message naming the free node and direction.
 module pecplas_driver_stiffness
+   use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, ERR_SINGULAR
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
+   use pecplas_driver_timers, only: wall_time
    implicit none (type, external)
    private
 
@@ -29,10 +31,14 @@ contains
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: tangent
       type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
 
+      t0 = wall_time()
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
          problem%k, error)
       if (allocated(error)) return
+      problem%time%assembly = problem%time%assembly + (wall_time() - t0)
+      t0 = wall_time()
       if (.not. allocated(problem%solver)) then
          call new_linear_solver(linear_solver_name(model), problem%solver, error)
          if (allocated(error)) return
@@ -50,6 +56,7 @@ contains
          return
       end if
       problem%factorisations = problem%factorisations + 1
+      problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
    end subroutine factorise_stiffness
 
 end module pecplas_driver_stiffness

@@ -1,0 +1,23 @@
+!> Wall-clock time spent in each phase of a run, for the summary and the benchmarks.
+module pecplas_driver_timers
+   use pecplas_kinds, only: wp, ik8
+   implicit none (type, external)
+   private
+
+   public :: timers_t, wall_time
+
+   type :: timers_t
+      real(wp) :: assembly = 0.0_wp, factorisation = 0.0_wp, solve = 0.0_wp
+      real(wp) :: residual = 0.0_wp, output = 0.0_wp, setup = 0.0_wp
+   end type timers_t
+
+contains
+
+   !> Seconds from an arbitrary origin (system_clock, 64-bit).
+   real(wp) function wall_time()
+      integer(ik8) :: count, rate
+      call system_clock(count, rate)
+      wall_time = real(count, wp)/real(rate, wp)
+   end function wall_time
+
+end module pecplas_driver_timers
