@@ -3,6 +3,8 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_linalg_sparse, only: collect_linalg_sparse
+   use test_linalg_solvers, only: collect_linalg_solvers
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -10,7 +12,9 @@ program tester
    logical :: found
 
    suites = [ &
-      new_testsuite('model_params', collect_model_params) &
+      new_testsuite('model_params', collect_model_params), &
+      new_testsuite('linalg_sparse', collect_linalg_sparse), &
+      new_testsuite('linalg_solvers', collect_linalg_solvers) &
       ]
 
    nargs = command_argument_count()
