@@ -5,6 +5,9 @@ module test_linalg_solvers
    use pecplas_error, only: error_t, ERR_SINGULAR, ERR_INPUT
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver
+   use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &
+      pecplas_cholmod_analyse, pecplas_cholmod_factorise
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int
    use pecplas_linalg_lapack, only: solve_dense, dgemm, dgemv, dsyev, dpotrf, dpotrs, dgetrf, dgetrs
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_linalg, only: laplacian, convection_diffusion, elastic_square, det_vector, &
@@ -24,6 +27,7 @@ contains
                new_unittest('umfpack_nonsymmetric', test_nonsymmetric), &
                new_unittest('singular_floating', test_floating), &
                new_unittest('singular_part_supported', test_partly_supported), &
+               new_unittest('singular_tiny_springs', test_tiny_springs), &
                new_unittest('unconnected_dof', test_unconnected), &
                new_unittest('well_posed_not_flagged', test_well_posed), &
                new_unittest('cholmod_indefinite', test_indefinite), &
@@ -205,6 +209,45 @@ contains
       call expect_singular(c, [(k > na, k = 1, c%n)], 'a free sub-body', error)
    end subroutine test_partly_supported
 
+   !> Adds springs of `ratio` times the diagonal on equations first..last.
+   subroutine add_springs(a, first, last, ratio)
+      type(csc_t), intent(inout) :: a
+      integer, intent(in) :: first, last
+      real(wp), intent(in) :: ratio
+      integer :: j, p
+      do j = first, last
+         p = a%locate(j, j)
+         a%values(p) = a%values(p)*(1.0_wp + ratio)
+      end do
+   end subroutine add_springs
+
+   !> A free sub-body held by springs of 1e-12 times its stiffness is positive definite, so
+   !> LL' succeeds (checked below): the scaled pivot ratio (~ n * 1e-12) must catch it.
+   subroutine test_tiny_springs(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(csc_t) :: a, b, c
+      type(c_ptr) :: h
+      integer(c_int) :: status
+      integer :: na, k
+      call laplacian(10, .true., a, error)
+      if (allocated(error)) return
+      call laplacian(7, .false., b, error)
+      if (allocated(error)) return
+      na = a%n
+      c%n = a%n + b%n
+      c%colptr = [a%colptr, b%colptr(2:) + a%nnz()]
+      c%rowind = [a%rowind, b%rowind + na]
+      c%values = [a%values, b%values]
+      call add_springs(c, na + 1, c%n, 1.0e-12_wp)
+      h = pecplas_cholmod_new(0_c_int)
+      status = pecplas_cholmod_analyse(h, c%n, c%colptr, c%rowind)
+      if (status == 0) status = pecplas_cholmod_factorise(h, c%n, c%colptr, c%rowind, c%values)
+      call pecplas_cholmod_delete(h)
+      call check(error, status == 0, 'bare CHOLMOD LL'' succeeds on the weakly held body')
+      if (allocated(error)) return
+      call expect_singular(c, [(k > na, k = 1, c%n)], 'a sub-body on 1e-12 springs', error)
+   end subroutine test_tiny_springs
+
    subroutine test_unconnected(error)
       type(error_t), allocatable, intent(out) :: error
       type(csc_t) :: a, c
@@ -226,7 +269,7 @@ contains
       logical, allocatable :: is_x(:)
       integer :: k, m
       do k = 1, 2
-         do m = 1, 3
+         do m = 1, 4
             select case (m)
             case (1) ! clamped elastic square, uniform
                call elastic_square(16, SUPPORT_FIXED, a, is_x, error)
@@ -234,6 +277,9 @@ contains
                call elastic_square(16, SUPPORT_FIXED, a, is_x, error, contrast=1.0e8_wp)
             case (3) ! Laplacian with conductivity contrast 1e10
                call laplacian(30, .true., a, error, contrast=1.0e10_wp)
+            case (4) ! free body on soft springs (1e-6 of the diagonal): cond ~ 1e6, legitimate
+               call laplacian(30, .false., a, error)
+               call add_springs(a, 1, a%n, 1.0e-6_wp)
             end select
             if (allocated(error)) return
             call setup(BOTH(k), a, s, error)

@@ -4,12 +4,14 @@
 !> Singularity (method): the pivots d_k of P A P' = L L' are compared with the diagonal of A,
 !> r = min_k d_k / a_(p(k),p(k)). This is cholmod_rcond of the Jacobi-scaled matrix
 !> D^-1/2 A D^-1/2 (its largest pivot is 1), so stiffness contrasts between materials do not
-!> change it, while a mechanism leaves a roundoff pivot (a few hundred epsilon at most).
+!> change it, while a mechanism leaves a roundoff pivot (measured <= 3e-11 up to 1e6
+!> equations; see RCOND_TOL_DEFAULT).
 !> r < rcond_tol is singular, and bad_equation = p(k_min): the vector y with L' y = e_k is
 !> then a near null vector of A whose entry at p(k_min) is 1, i.e. that equation moves freely.
 !> When LL' stops on a non-positive pivot (roundoff may make a zero pivot slightly negative),
 !> a simplicial LDL' without pivoting tells a singular matrix (a tiny |D| at the mechanism)
-!> from an indefinite one (negative pivots of normal size), for which UMFPACK is suggested.
+!> from an indefinite one (negative pivots of normal size), for which UMFPACK is suggested;
+!> LDL' without any negative pivot means LL' tripped on roundoff: singular too.
 module pecplas_linalg_cholmod
    use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_int, c_double, c_associated
    use pecplas_kinds, only: wp, ik4, ik8
@@ -216,8 +218,8 @@ contains
    end subroutine cholmod_factorise
 
    !> LL' met a non-positive pivot: refactorise as simplicial LDL' (no pivoting) and look at
-   !> D. A scaled |D| below rcond_tol (or an exact zero) is a mechanism; otherwise some D is
-   !> negative and the matrix is indefinite.
+   !> D. A scaled |D| below rcond_tol, an exact zero, or no negative D at all (LL' stopped on
+   !> a roundoff pivot) is a mechanism; otherwise some D is negative: indefinite.
    subroutine diagnose_not_posdef(this, a, diag, error)
       class(cholmod_solver_t), intent(inout) :: this
       type(csc_t), intent(in) :: a
@@ -250,9 +252,10 @@ contains
       else
          kmin = scaled_min_pivot(abs(d), perm, diag)
       end if
-      nneg = count(d(1:kmin - 1) < 0.0_wp) + count(d(kmin + 1:) < 0.0_wp)
+      nneg = count(d < 0.0_wp)
       call pecplas_cholmod_delete(ldl)
-      if (status == CHOLMOD_NOT_POSDEF .or. abs(d(kmin))/diag(perm(kmin) + 1) < this%rcond_tol) then
+      if (status == CHOLMOD_NOT_POSDEF .or. nneg == 0 .or. &
+          abs(d(kmin))/diag(perm(kmin) + 1) < this%rcond_tol) then
          this%bad_equation = perm(kmin) + 1
          write (buf, '(a,es9.2,a,i0)') 'pivot ratio ', abs(d(kmin))/diag(perm(kmin) + 1), &
             ' at equation ', this%bad_equation
