@@ -289,6 +289,9 @@ contains
             if (allocated(error)) return
             call check(error, s%bad_equation == 0, s%name()//' no bad equation when well posed')
             if (allocated(error)) return
+            ! scaled pivot ratios are O(0.1) here: 3 decades of margin to the threshold at least
+            call check(error, s%rcond > 1.0e3_wp*s%rcond_tol, s%name()//' rcond far from the threshold')
+            if (allocated(error)) return
             call s%free()
          end do
       end do

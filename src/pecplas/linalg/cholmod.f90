@@ -199,17 +199,17 @@ contains
          call fatal_error(error, 'CHOLMOD factorisation failed: '//status_text(status))
          return
       end if
-      this%rcond = pecplas_cholmod_rcond(this%handle)
       if (pecplas_cholmod_pivots(this%handle, piv) /= 0 .or. &
           pecplas_cholmod_perm(this%handle, perm) /= 0) then
          call fatal_error(error, 'CHOLMOD: cannot read the factor')
          return
       end if
       kmin = scaled_min_pivot(piv, perm, diag)
-      if (piv(kmin)/diag(perm(kmin) + 1) < this%rcond_tol) then
+      this%rcond = piv(kmin)/diag(perm(kmin) + 1)
+      if (this%rcond < this%rcond_tol) then
          this%bad_equation = perm(kmin) + 1
-         write (buf, '(a,es9.2,a,i0)') 'pivot ratio ', piv(kmin)/diag(perm(kmin) + 1), &
-            ' at equation ', this%bad_equation
+         write (buf, '(a,es9.2,a,i0)') 'pivot ratio ', this%rcond, ' at equation ', &
+            this%bad_equation
          call singular_error(error, 'CHOLMOD: singular matrix (free mechanism or missing '// &
             'support), '//trim(buf))
          return
@@ -233,6 +233,10 @@ contains
       character(len=160) :: buf
       allocate (d(a%n), perm(a%n))
       ldl = pecplas_cholmod_new(1_c_int)
+      if (.not. c_associated(ldl)) then
+         call fatal_error(error, 'CHOLMOD: matrix not positive definite (no memory to check why)')
+         return
+      end if
       status = pecplas_cholmod_analyse(ldl, a%n, a%colptr, a%rowind)
       if (status == CHOLMOD_OK) &
          status = pecplas_cholmod_factorise(ldl, a%n, a%colptr, a%rowind, a%values)
@@ -284,7 +288,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(c_int) :: status
       status = pecplas_cholmod_solve(this%handle, n, nrhs, b, x)
-      if (status /= CHOLMOD_OK) then
+      if (status < CHOLMOD_OK) then
          call fatal_error(error, 'CHOLMOD solve failed: '//status_text(status))
          return
       end if

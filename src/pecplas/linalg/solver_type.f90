@@ -33,7 +33,8 @@ module pecplas_linalg_solver_type
       !> Nonzeros in the factor(s), flop count of one factorisation, peak memory in bytes.
       integer(ik8) :: nnz_factor = 0
       real(wp) :: flops = 0.0_wp, peak_memory = 0.0_wp
-      !> Reciprocal condition estimate of the last factorisation (the solver's own measure).
+      !> Scaled pivot ratio of the last factorisation, the value compared with rcond_tol
+      !> (CHOLMOD: min pivot / diagonal; UMFPACK: its Info[UMFPACK_RCOND]).
       real(wp) :: rcond = 0.0_wp
       !> Fill-reducing ordering used by the last analysis.
       character(len=:), allocatable :: ordering

@@ -4,7 +4,7 @@
 !>
 !> Singularity (method): UMFPACK factorises R A (R: row scaling by the row sums, its
 !> default), so Info[UMFPACK_RCOND] = min|U(k,k)| / max|U(k,k)| is a scaled pivot ratio.
-!> rcond < rcond_tol, or an exact zero pivot (status UMFPACK_WARNING_singular_matrix), is
+!> rcond < rcond_tol (1e-8 by default, see RCOND_TOL_DEFAULT), or an exact zero pivot (status UMFPACK_WARNING_singular_matrix), is
 !> singular. The mechanism is then found with a probe: solve A x = r for a fixed positive
 !> pseudo-random r; x is dominated by the near-null vector, so bad_equation = argmax |x|
 !> (a non-finite x_i, which only the unknowns hanging on an exact zero pivot get, wins).
