@@ -10,6 +10,8 @@ program tester
    use test_massif_patch, only: collect_massif_patch
    use test_massif_edge_load, only: collect_massif_edge_load
    use test_io_results, only: collect_io_results
+   use test_linalg_sparse, only: collect_linalg_sparse
+   use test_linalg_solvers, only: collect_linalg_solvers
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -26,6 +28,8 @@ program tester
    suites = [suites, new_testsuite('massif_patch', collect_massif_patch)]
    suites = [suites, new_testsuite('massif_edge_load', collect_massif_edge_load)]
    suites = [suites, new_testsuite('io_results', collect_io_results)]
+   suites = [suites, new_testsuite('linalg_sparse', collect_linalg_sparse)]
+   suites = [suites, new_testsuite('linalg_solvers', collect_linalg_solvers)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

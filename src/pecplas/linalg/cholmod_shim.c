@@ -1,0 +1,162 @@
+/* Thin C99 shim around CHOLMOD's int interface for pecplas_linalg_cholmod.
+ *
+ * cholmod_common is a large C struct whose layout Fortran cannot reproduce portably, so it
+ * lives in an opaque handle allocated here. The matrix is never copied: a cholmod_sparse
+ * header is laid over the caller's CSC arrays (0-based int, rows sorted, stype = 1 so only
+ * the upper triangle is read, whether the full matrix or only its upper part is stored).
+ * No logic beyond binding: every decision is made on the Fortran side.
+ */
+#include <stdlib.h>
+#include <string.h>
+#if defined(__has_include)
+#if __has_include(<suitesparse/cholmod.h>)
+#include <suitesparse/cholmod.h>
+#else
+#include <cholmod.h>
+#endif
+#else
+#include <cholmod.h>
+#endif
+
+typedef struct {
+    cholmod_common c;
+    cholmod_factor *L;
+    cholmod_dense *X, *Y, *E; /* solve workspaces kept between solves */
+} pecplas_cholmod;
+
+/* Header over caller-owned CSC arrays (values may be NULL for a pattern). */
+static cholmod_sparse wrap(int n, const int *colptr, const int *rowind, const double *x) {
+    cholmod_sparse a;
+    memset(&a, 0, sizeof a);
+    a.nrow = (size_t)n;
+    a.ncol = (size_t)n;
+    a.nzmax = (size_t)colptr[n];
+    a.p = (void *)colptr;
+    a.i = (void *)rowind;
+    a.x = (void *)x;
+    a.stype = 1;
+    a.itype = CHOLMOD_INT;
+    a.xtype = x ? CHOLMOD_REAL : CHOLMOD_PATTERN;
+    a.dtype = CHOLMOD_DOUBLE;
+    a.sorted = 1;
+    a.packed = 1;
+    return a;
+}
+
+/* New handle. ldl = 0: supernodal LL' (production); ldl = 1: simplicial LDL' (used to tell
+ * a singular matrix from an indefinite one). Default fill-reducing ordering (AMD, METIS
+ * tried when AMD fills badly); the one chosen is read back with pecplas_cholmod_ordering. */
+void *pecplas_cholmod_new(int ldl) {
+    pecplas_cholmod *h = calloc(1, sizeof *h);
+    if (!h) return NULL;
+    cholmod_start(&h->c);
+    h->c.print = 0; /* errors are reported by the caller from the status */
+    h->c.supernodal = ldl ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
+    h->c.final_ll = ldl ? 0 : 1;
+    return h;
+}
+
+void pecplas_cholmod_delete(void *handle) {
+    pecplas_cholmod *h = handle;
+    if (!h) return;
+    cholmod_free_factor(&h->L, &h->c);
+    cholmod_free_dense(&h->X, &h->c);
+    cholmod_free_dense(&h->Y, &h->c);
+    cholmod_free_dense(&h->E, &h->c);
+    cholmod_finish(&h->c);
+    free(h);
+}
+
+/* Symbolic analysis (ordering + supernodes) of the pattern; replaces any earlier one. */
+int pecplas_cholmod_analyse(void *handle, int n, const int *colptr, const int *rowind) {
+    pecplas_cholmod *h = handle;
+    cholmod_sparse a = wrap(n, colptr, rowind, NULL);
+    cholmod_free_factor(&h->L, &h->c);
+    h->L = cholmod_analyze(&a, &h->c);
+    return h->L ? h->c.status : (h->c.status < 0 ? h->c.status : CHOLMOD_INVALID);
+}
+
+/* Numeric factorisation on the analysed pattern. Returns Common->status
+ * (CHOLMOD_NOT_POSDEF = 1 when a pivot is not positive; see pecplas_cholmod_minor). */
+int pecplas_cholmod_factorise(void *handle, int n, const int *colptr, const int *rowind,
+                              const double *x) {
+    pecplas_cholmod *h = handle;
+    if (!h->L) return CHOLMOD_INVALID;
+    cholmod_sparse a = wrap(n, colptr, rowind, x);
+    cholmod_factorize(&a, h->L, &h->c);
+    return h->c.status;
+}
+
+/* Solves A X = B for nrhs columns stored one after another (leading dimension n). */
+int pecplas_cholmod_solve(void *handle, int n, int nrhs, const double *b, double *x) {
+    pecplas_cholmod *h = handle;
+    if (!h->L) return CHOLMOD_INVALID;
+    cholmod_dense bd;
+    memset(&bd, 0, sizeof bd);
+    bd.nrow = (size_t)n;
+    bd.ncol = (size_t)nrhs;
+    bd.nzmax = (size_t)n * (size_t)nrhs;
+    bd.d = (size_t)n;
+    bd.x = (void *)b;
+    bd.xtype = CHOLMOD_REAL;
+    bd.dtype = CHOLMOD_DOUBLE;
+    if (!cholmod_solve2(CHOLMOD_A, h->L, &bd, NULL, &h->X, NULL, &h->Y, &h->E, &h->c))
+        return h->c.status < 0 ? h->c.status : CHOLMOD_INVALID;
+    memcpy(x, h->X->x, sizeof(double) * (size_t)n * (size_t)nrhs);
+    return h->c.status;
+}
+
+/* Pivots in factor order: D(k,k) for LDL', L(k,k)^2 for LL'. Returns 0 on success. */
+int pecplas_cholmod_pivots(void *handle, double *d) {
+    pecplas_cholmod *h = handle;
+    cholmod_factor *L = h->L;
+    if (!L || L->xtype == CHOLMOD_PATTERN) return -1;
+    const double *x = L->x;
+    if (L->is_super) {
+        const int *super = L->super, *pi = L->pi, *px = L->px;
+        for (size_t s = 0; s < L->nsuper; s++) {
+            int k1 = super[s], nrow = pi[s + 1] - pi[s];
+            for (int j = k1; j < super[s + 1]; j++) {
+                double l = x[px[s] + (j - k1) + (size_t)(j - k1) * nrow];
+                d[j] = l * l;
+            }
+        }
+    } else {
+        const int *p = L->p;
+        for (size_t j = 0; j < L->n; j++) {
+            double l = x[p[j]];
+            d[j] = L->is_ll ? l * l : l;
+        }
+    }
+    return 0;
+}
+
+/* Fill-reducing permutation, 0-based: factor column k is equation perm[k]. */
+int pecplas_cholmod_perm(void *handle, int *perm) {
+    pecplas_cholmod *h = handle;
+    if (!h->L || !h->L->Perm) return -1;
+    memcpy(perm, h->L->Perm, sizeof(int) * h->L->n);
+    return 0;
+}
+
+double pecplas_cholmod_rcond(void *handle) {
+    pecplas_cholmod *h = handle;
+    return h->L ? cholmod_rcond(h->L, &h->c) : 0.0;
+}
+int pecplas_cholmod_status(void *handle) { return ((pecplas_cholmod *)handle)->c.status; }
+/* Factor column (0-based, permuted order) where factorisation stopped; n when it did not. */
+int pecplas_cholmod_minor(void *handle) {
+    pecplas_cholmod *h = handle;
+    return h->L ? (int)h->L->minor : -1;
+}
+/* CHOLMOD_NATURAL 0, GIVEN 1, AMD 2, METIS 3, NESDIS 4, COLAMD 5, POSTORDERED 6. */
+int pecplas_cholmod_ordering(void *handle) {
+    pecplas_cholmod *h = handle;
+    return h->L ? h->L->ordering : -1;
+}
+/* nnz(L) and flop count of the last analysis; peak memory (bytes) since start. */
+double pecplas_cholmod_lnz(void *handle) { return ((pecplas_cholmod *)handle)->c.lnz; }
+double pecplas_cholmod_flops(void *handle) { return ((pecplas_cholmod *)handle)->c.fl; }
+double pecplas_cholmod_peak_memory(void *handle) {
+    return (double)((pecplas_cholmod *)handle)->c.memory_usage;
+}
