@@ -64,7 +64,7 @@ contains
             deallocate (xe, ke, idx, d)
          end associate
       end do
-      call coo_to_csc(coo, k)
+      call coo_to_csc(coo, k, error)
    end subroutine assemble_stiffness
 
    !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
