@@ -3,6 +3,10 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_io_deck_fields, only: collect_io_deck_fields
+   use test_io_deck, only: collect_io_deck
+   use test_io_deck_errors, only: collect_io_deck_errors
+   use test_massif_materials_factory, only: collect_massif_materials_factory
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -10,7 +14,11 @@ program tester
    logical :: found
 
    suites = [ &
-      new_testsuite('model_params', collect_model_params) &
+      new_testsuite('model_params', collect_model_params), &
+      new_testsuite('io_deck_fields', collect_io_deck_fields), &
+      new_testsuite('io_deck', collect_io_deck), &
+      new_testsuite('io_deck_errors', collect_io_deck_errors), &
+      new_testsuite('massif_materials_factory', collect_massif_materials_factory) &
       ]
 
    nargs = command_argument_count()
