@@ -3,6 +3,8 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_model_mesh_tools, only: collect_model_mesh_tools
+   use test_io_gmsh, only: collect_io_gmsh
    use test_io_deck_fields, only: collect_io_deck_fields
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
@@ -15,6 +17,8 @@ program tester
 
    suites = [ &
       new_testsuite('model_params', collect_model_params), &
+      new_testsuite('model_mesh_tools', collect_model_mesh_tools), &
+      new_testsuite('io_gmsh', collect_io_gmsh), &
       new_testsuite('io_deck_fields', collect_io_deck_fields), &
       new_testsuite('io_deck', collect_io_deck), &
       new_testsuite('io_deck_errors', collect_io_deck_errors), &
