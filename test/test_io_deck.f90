@@ -27,7 +27,8 @@ contains
                new_unittest('block_q4_steps_options', test_block_steps), &
                new_unittest('t6_includes', test_t6), &
                new_unittest('axisym_patterns', test_axisym_patterns), &
-               new_unittest('axisym_options', test_axisym_options)]
+               new_unittest('axisym_options', test_axisym_options), &
+               new_unittest('gmsh_mesh_and_deck', test_mesh)]
    end subroutine collect_io_deck
 
    subroutine load(name, model, error)
@@ -275,5 +276,40 @@ contains
          all(model%steps(2)%pattern == [1, 2, 4]) .and. &
          all(model%steps(2)%target == [0.0_wp, 1.0_wp, 1.0_wp]), 'step unload')
    end subroutine test_axisym_options
+
+   subroutine test_mesh(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      integer :: k
+      call load('good_mesh.inp', model, error)
+      if (allocated(error)) return
+      ! deck nodes first (101..104), then the 13 nodes of q8.msh
+      call check(error, model%mesh%nnode() == 17 .and. all(model%mesh%node_id(1:5) == &
+         [101, 102, 103, 104, 1]), 'deck nodes, then mesh nodes')
+      if (allocated(error)) return
+      call check(error, size(model%mesh%esets) == 2 .and. model%mesh%esets(1)%name == 'wall' &
+         .and. model%mesh%esets(2)%name == 'cap', 'mesh set wall, then deck set cap')
+      if (allocated(error)) return
+      call check(error, model%mesh%esets(1)%etype == 'Q8' .and. &
+         size(model%mesh%esets(1)%conn, 2) == 2 .and. all(model%mesh%esets(1)%ids == [5, 6]), &
+         'two Q8 from Gmsh with their tags as ids')
+      if (allocated(error)) return
+      ! the clockwise deck element is kept as written (check_elements renumbers it later)
+      call check(error, all(ids(model, model%mesh%esets(2)%conn(:, 1)) == [101, 104, 103, 102]), &
+         'clockwise Q4 kept')
+      if (allocated(error)) return
+      call check(error, all(model%mesh%esets(:)%material_index == 1), 'sections on both sets')
+      if (allocated(error)) return
+      ! base: the 5 nodes of the bottom curve (2 three-node lines) + node 101, xy: 12 dofs
+      call check(error, size(model%supports%node) == 12, 'supports on a Gmsh node set')
+      if (allocated(error)) return
+      k = model%mesh%find_edge_set('top')
+      call check(error, k > 0 .and. size(model%patterns(1)%edge, 2) == 2 .and. &
+         all(model%patterns(1)%edge(3, :) > 0), 'pressure on the 3-node Gmsh edges of top')
+      if (allocated(error)) return
+      call check(error, all(ids(model, model%patterns(2)%node) == [3]) .and. &
+         all(model%mesh%x(:, model%patterns(2)%node(1)) == [2.0_wp, 1.0_wp]), &
+         'node id 3 of the .msh file is found by the deck')
+   end subroutine test_mesh
 
 end module test_io_deck

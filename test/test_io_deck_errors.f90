@@ -136,8 +136,9 @@ contains
          bad('duplicate_element', 11, '*ELEMENTS', 'duplicate element id 1', &
          'bad_duplicate_element.inp:10'), &
          bad('mixed_types', 9, '*ELEMENTS', 'already holds Q4 elements', 'cannot add T3'), &
-         bad('clockwise_element', 8, '*ELEMENTS', 'element 1 has a negative or zero area', &
-         'counter-clockwise')], error)
+         bad('degenerate_element', 10, '*ELEMENTS', 'element 1 is degenerate', 'zero area'), &
+         bad('missing_mesh', 7, '*MESH', 'cannot read mesh file', 'nowhere.msh'), &
+         bad('mesh_node_clash', 7, '*MESH', 'node id 1 is defined twice')], error)
    end subroutine test_mesh
 
    subroutine test_references(error)

@@ -1,12 +1,12 @@
 !> Deck building blocks: strict number parsing (what Fortran writes is accepted, anything
-!> else refused), keyword lines, data fields, include path folding and the id lookup.
+!> else refused), keyword lines, data fields, include path folding and repeated ids.
 module test_io_deck_fields
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, field_t, parse_keyword_line, &
       split_fields, parse_real, parse_int
    use pecplas_io_deck_lines, only: join_path
-   use pecplas_io_deck_lookup, only: id_lookup_t, new_id_lookup
+   use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
@@ -22,7 +22,7 @@ contains
                new_unittest('keyword_line', test_keyword_line), &
                new_unittest('data_fields', test_fields), &
                new_unittest('include_paths', test_paths), &
-               new_unittest('id_lookup', test_lookup)]
+               new_unittest('first_repeat', test_repeat)]
    end subroutine collect_io_deck_fields
 
    subroutine test_numbers_ok(error)
@@ -134,24 +134,17 @@ contains
       call check(error, join_path('d//', 'e/./f.inp') == 'd/e/f.inp', 'repeated / folded')
    end subroutine test_paths
 
-   subroutine test_lookup(error)
+   subroutine test_repeat(error)
       type(error_t), allocatable, intent(out) :: error
-      type(id_lookup_t) :: lookup
-      integer :: dup(2), i
-      integer, parameter :: ids(7) = [40, 7, 12, 3, 99, 8, 1]
-      call new_id_lookup(lookup, ids, dup)
-      call check(error, all(dup == 0), 'distinct ids')
+      call check(error, all(first_repeat([40, 7, 12, 3, 99, 8, 1]) == 0), 'distinct ids')
       if (allocated(error)) return
-      do i = 1, size(ids)
-         call check(error, lookup%find(ids(i)) == i, 'position of every id')
-         if (allocated(error)) return
-      end do
-      call check(error, lookup%find(5) == 0 .and. lookup%find(100) == 0 .and. &
-         lookup%find(0) == 0, 'absent ids')
+      call check(error, all(first_repeat([integer ::]) == 0), 'no ids')
       if (allocated(error)) return
       ! 7 repeats at 5, 3 repeats at 4: the repeat met first in reading order is reported
-      call new_id_lookup(lookup, [7, 3, 9, 3, 7], dup)
-      call check(error, all(dup == [2, 4]), 'first repeat in reading order')
-   end subroutine test_lookup
+      call check(error, all(first_repeat([7, 3, 9, 3, 7]) == [2, 4]), &
+         'first repeat in reading order')
+      if (allocated(error)) return
+      call check(error, all(first_repeat([5, 5, 5]) == [1, 2]), 'triple: first two')
+   end subroutine test_repeat
 
 end module test_io_deck_fields

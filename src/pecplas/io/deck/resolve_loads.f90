@@ -27,7 +27,7 @@ contains
       logical :: is_id
       call parse_int(item%target, id, is_id)
       if (is_id) then
-         k = state%node_lookup%find(id)
+         k = state%node_lookup%index(id)
          if (k == 0) then
             call line_error(state, item%at, 'undefined node '//item%target// &
                ': no *NODES line defines it', error)

@@ -6,7 +6,7 @@ module pecplas_io_deck_resolve_mesh
    use pecplas_error, only: error_t, deck_error
    use pecplas_io_deck_fields, only: itoa, same_name
    use pecplas_io_deck_state, only: deck_state_t, line_error, where_text
-   use pecplas_io_deck_lookup, only: id_lookup_t, new_id_lookup
+   use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_io_deck_reader_mesh, only: element_nodes
    use pecplas_io_deck_mesh_import, only: append_imported
    use pecplas_model, only: model_t
@@ -42,13 +42,15 @@ contains
                'no nodes: the deck defines no *NODES (and no *MESH)')
             return
          end if
-         call new_id_lookup(state%node_lookup, mesh%node_id, dup)
+         dup = first_repeat(mesh%node_id)
          if (dup(2) > 0) then
             call line_error(state, state%mesh_node_at(dup(2)), 'duplicate node id '// &
                itoa(mesh%node_id(dup(2)))//' (first defined at '// &
                where_text(state, state%mesh_node_at(dup(1)))//')', error)
             return
          end if
+         call state%node_lookup%build(mesh, error)
+         if (allocated(error)) return
       end associate
       if (model%analysis%kind == AXISYMMETRIC) then
          call check_radius(state, model%mesh, error)
@@ -111,7 +113,7 @@ contains
             es%ids = raw%ids(1:raw%n)
             do e = 1, raw%n
                do j = 1, nen
-                  es%conn(j, e) = state%node_lookup%find(raw%conn(j, e))
+                  es%conn(j, e) = state%node_lookup%index(raw%conn(j, e))
                   if (es%conn(j, e) == 0) then
                      call line_error(state, raw%where(e), 'undefined node '// &
                         itoa(raw%conn(j, e))//' in element '//itoa(raw%ids(e))// &
@@ -124,10 +126,9 @@ contains
                      return
                   end if
                end do
-               if (.not. (corner_area(model%mesh%x, es%conn(:, e)) > 0.0_wp)) then
+               if (degenerate(model%mesh%x, es%conn(:, e))) then
                   call line_error(state, raw%where(e), 'element '//itoa(raw%ids(e))// &
-                     ' has a negative or zero area: list its corner nodes counter-clockwise', &
-                     error)
+                     ' is degenerate (zero area): its corner nodes are on one line', error)
                   return
                end if
             end do
@@ -137,20 +138,24 @@ contains
       end do
    end subroutine add_element_sets
 
-   !> Signed area of the corner polygon (the first 3 or 4 nodes).
-   pure real(wp) function corner_area(x, conn) result(area)
+   !> Zero area of the corner polygon (the first 3 or 4 nodes), relative to its size.
+   !> Clockwise elements are not an error: check_elements (mesh tools) renumbers them.
+   pure logical function degenerate(x, conn)
       real(wp), intent(in) :: x(:, :)
       integer, intent(in) :: conn(:)
+      real(wp) :: area, size2
       integer :: nc, i, j
       nc = 3
       if (size(conn) == 4 .or. size(conn) == 8) nc = 4
       area = 0.0_wp
+      size2 = 0.0_wp
       do i = 1, nc
          j = mod(i, nc) + 1
          area = area + x(1, conn(i))*x(2, conn(j)) - x(1, conn(j))*x(2, conn(i))
+         size2 = max(size2, sum((x(:, conn(j)) - x(:, conn(i)))**2))
       end do
-      area = 0.5_wp*area
-   end function corner_area
+      degenerate = abs(0.5_wp*area) <= 1.0e-12_wp*size2
+   end function degenerate
 
    !> Element ids are unique over the model (all sets, deck and *MESH).
    subroutine check_element_ids(state, mesh, error)
@@ -158,7 +163,6 @@ contains
       type(mesh_t), intent(in) :: mesh
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: ids(:), at(:)
-      type(id_lookup_t) :: lookup
       integer :: i, k, dup(2)
       allocate (ids(0), at(0))
       do i = 1, size(mesh%esets)
@@ -175,7 +179,7 @@ contains
             at = [at, spread(state%mesh_eset_at(i), 1, size(mesh%esets(i)%ids))]
          end if
       end do
-      call new_id_lookup(lookup, ids, dup)
+      dup = first_repeat(ids)
       if (dup(2) > 0) call line_error(state, at(dup(2)), 'duplicate element id '// &
          itoa(ids(dup(2)))//' (first defined at '//where_text(state, at(dup(1)))//')', error)
    end subroutine check_element_ids
@@ -202,7 +206,7 @@ contains
             n = 0
             seen = .false.
             do j = 1, raw%n
-               node = state%node_lookup%find(raw%ids(j))
+               node = state%node_lookup%index(raw%ids(j))
                if (node == 0) then
                   call line_error(state, raw%where(j), 'undefined node '//itoa(raw%ids(j))// &
                      " in node set '"//raw%name//"': no *NODES line defines it", error)
@@ -240,7 +244,7 @@ contains
             do j = 1, raw%n
                do k = 1, 3
                   if (raw%nodes(k, j) == 0) cycle
-                  es%nodes(k, j) = state%node_lookup%find(raw%nodes(k, j))
+                  es%nodes(k, j) = state%node_lookup%index(raw%nodes(k, j))
                   if (es%nodes(k, j) == 0) then
                      call line_error(state, raw%where(j), 'undefined node '// &
                         itoa(raw%nodes(k, j))//" in edge set '"//raw%name// &

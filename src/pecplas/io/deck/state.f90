@@ -8,7 +8,7 @@ module pecplas_io_deck_state
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, itoa
    use pecplas_model_mesh, only: mesh_t
    use pecplas_massif_materials_factory, only: material_registry_t
-   use pecplas_io_deck_lookup, only: id_lookup_t
+   use pecplas_model_node_lookup, only: node_lookup_t
    implicit none (type, external)
    private
 
@@ -92,7 +92,7 @@ module pecplas_io_deck_state
       integer, allocatable :: mesh_node_at(:)
       !> Line that defined each element set of the built mesh (*ELEMENTS or *MESH).
       integer, allocatable :: mesh_eset_at(:)
-      type(id_lookup_t) :: node_lookup
+      type(node_lookup_t) :: node_lookup
       type(material_registry_t) :: registry
    end type deck_state_t
 
