@@ -28,7 +28,8 @@ contains
                new_unittest('t6_includes', test_t6), &
                new_unittest('axisym_patterns', test_axisym_patterns), &
                new_unittest('axisym_options', test_axisym_options), &
-               new_unittest('gmsh_mesh_and_deck', test_mesh)]
+               new_unittest('gmsh_mesh_and_deck', test_mesh), &
+               new_unittest('default_deck', test_default)]
    end subroutine collect_io_deck
 
    subroutine load(name, model, error)
@@ -311,5 +312,32 @@ contains
          all(model%mesh%x(:, model%patterns(2)%node(1)) == [2.0_wp, 1.0_wp]), &
          'node id 3 of the .msh file is found by the deck')
    end subroutine test_mesh
+
+   !> input/default.inp (what `make run` runs): 4 x 2 Q8 on [0, 4] x [-2, 0].
+   subroutine test_default(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(error_t), allocatable :: e
+      call read_deck('input/default.inp', model, e)
+      call check(error, .not. allocated(e), 'input/default.inp must read')
+      if (allocated(error)) then
+         error%message = error%message//': '//e%text()
+         return
+      end if
+      ! (2*4 + 1)*(2*2 + 1) grid points less the 8 element centres
+      call check(error, model%mesh%nnode() == 37 .and. model%mesh%nelem() == 8 .and. &
+         model%mesh%esets(1)%etype == 'Q8', '37 nodes, 8 Q8')
+      if (allocated(error)) return
+      call check(error, model%patterns(1)%kind == 'GRAVITY' .and. &
+         model%patterns(2)%kind == 'PRESSURE' .and. size(model%steps) == 2, &
+         'gravity step, then pressure step')
+      if (allocated(error)) return
+      ! the footing edge runs from (1, 0) to (0, 0), mid-node at (0.5, 0)
+      associate (edge => model%patterns(2)%edge(:, 1), x => model%mesh%x)
+         call check(error, all(x(:, edge(1)) == [1.0_wp, 0.0_wp]) .and. &
+            all(x(:, edge(2)) == [0.0_wp, 0.0_wp]) .and. &
+            all(x(:, edge(3)) == [0.5_wp, 0.0_wp]), 'footing edge')
+      end associate
+   end subroutine test_default
 
 end module test_io_deck

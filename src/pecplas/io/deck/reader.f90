@@ -5,9 +5,8 @@
 !> error still names the line of the reference.
 module pecplas_io_deck_reader
    use pecplas_error, only: error_t, deck_error
-   use pecplas_io_deck_fields, only: add_name
+   use pecplas_io_deck_fields, only: add_name, parse_keyword_line
    use pecplas_io_deck_lines, only: read_deck_lines
-   use pecplas_io_deck_fields, only: parse_keyword_line
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error
    use pecplas_io_deck_reader_mesh, only: read_nodes, read_elements, read_nset, read_edges
    use pecplas_io_deck_mesh_import, only: read_mesh

@@ -3,7 +3,7 @@
 module pecplas_io_deck_reader_options
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: keyword_line_t, field_t, split_fields, field_real, &
+   use pecplas_io_deck_fields, only: field_t, split_fields, field_real, &
       check_count, parse_real, parse_int, same_name, upper, add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
       line_error, where_text, push_item

@@ -2,13 +2,12 @@
 !> node sets become (node, dof) lists, edge sets become edges, element set names become
 !> indices, pattern names in steps become pattern indices.
 module pecplas_io_deck_resolve_loads
-   use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: parse_int, same_name, upper, add_name, itoa
+   use pecplas_io_deck_fields, only: parse_int, same_name, upper, add_name
    use pecplas_io_deck_state, only: deck_state_t, raw_item_t, line_error
    use pecplas_model, only: model_t
    use pecplas_model_mesh, only: mesh_t
-   use pecplas_model_loads, only: load_pattern_t, step_t
+   use pecplas_model_loads, only: load_pattern_t
    implicit none (type, external)
    private
 
