@@ -138,7 +138,10 @@ contains
          bad('mixed_types', 9, '*ELEMENTS', 'already holds Q4 elements', 'cannot add T3'), &
          bad('degenerate_element', 10, '*ELEMENTS', 'element 1 is degenerate', 'zero area'), &
          bad('missing_mesh', 7, '*MESH', 'cannot read mesh file', 'nowhere.msh'), &
-         bad('mesh_node_clash', 7, '*MESH', 'node id 1 is defined twice')], error)
+         bad('mesh_node_clash', 7, '*MESH', 'node id 1 is defined twice'), &
+         bad('edge_not_a_side', 14, '*EDGES', "edge set 'diag'", 'not a side of any element'), &
+         bad('mixed_edges', 16, '*EDGES', "edge set 'lid' mixes 2-node and 3-node edges")], &
+         error)
    end subroutine test_mesh
 
    subroutine test_references(error)

@@ -55,18 +55,19 @@ contains
       state%imported_at = [state%imported_at, block%at]
    end subroutine read_mesh
 
-   !> Appends the meshes read by *MESH to `mesh`; state%mesh_eset_at and
-   !> state%mesh_node_at get the *MESH line of each element set and node added.
+   !> Appends the meshes read by *MESH to `mesh`; state%mesh_node_at, mesh_eset_at and
+   !> mesh_edge_set_at get the *MESH line of each node, element set and edge set added.
    subroutine append_imported(state, mesh, error)
       type(deck_state_t), intent(inout) :: state
       type(mesh_t), intent(inout) :: mesh
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: message
-      integer :: i, nnode, neset
+      integer :: i, nnode, neset, nedge
       if (.not. allocated(state%imported)) return
       do i = 1, size(state%imported)
          nnode = mesh%nnode()
          neset = size(mesh%esets)
+         nedge = size(mesh%edge_sets)
          call append_mesh(mesh, state%imported(i), error)
          if (allocated(error)) then
             message = error%message
@@ -77,6 +78,8 @@ contains
             spread(state%imported_at(i), 1, mesh%nnode() - nnode)]
          state%mesh_eset_at = [state%mesh_eset_at, &
             spread(state%imported_at(i), 1, size(mesh%esets) - neset)]
+         state%mesh_edge_set_at = [state%mesh_edge_set_at, &
+            spread(state%imported_at(i), 1, size(mesh%edge_sets) - nedge)]
       end do
    end subroutine append_imported
 

@@ -262,6 +262,13 @@ contains
             call split_fields(state%lines(i)%text, f)
             call check_count(state%lines(i), f, 2, 3, 'n1, n2[, n3] (end, end, mid)', error)
             if (allocated(error)) return
+            if (es%nen == 0) es%nen = size(f)
+            if (size(f) /= es%nen) then
+               call line_error(state, i, "edge set '"//es%name//"' mixes "//itoa(es%nen)// &
+                  '-node and '//itoa(size(f))//'-node edges: one kind per set (linear or '// &
+                  'quadratic element sides)', error)
+               return
+            end if
             es%n = es%n + 1
             call grow_int2(es%nodes, 3, es%n)
             call grow_int(es%where, es%n)

@@ -97,7 +97,7 @@ contains
       type(raw_item_t), intent(in) :: item
       type(load_pattern_t), intent(inout) :: pat
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: nodes(:), sets(:)
+      integer, allocatable :: nodes(:), sets(:), edges(:, :)
       integer :: k, n
       select case (kind)
       case ('FORCE', 'DISPLACEMENT')
@@ -114,8 +114,14 @@ contains
                "'; known edge sets:"//edge_set_names(mesh), error)
             return
          end if
-         n = size(mesh%edge_sets(k)%nodes, 2)
-         pat%edge = reshape([pat%edge, mesh%edge_sets(k)%nodes], [3, size(pat%edge, 2) + n])
+         ! pattern edges are (3, n), third node 0 on linear sides
+         associate (en => mesh%edge_sets(k)%nodes)
+            n = size(en, 2)
+            allocate (edges(3, n))
+            edges = 0
+            edges(1:size(en, 1), :) = en
+         end associate
+         pat%edge = reshape([pat%edge, edges], [3, size(pat%edge, 2) + n])
          pat%pressure = [pat%pressure, spread(item%value(1), 1, n)]
       case default
          if (upper(item%target) == 'ALL') then

@@ -12,6 +12,7 @@ module pecplas_io_deck_resolve_mesh
    use pecplas_model, only: model_t
    use pecplas_model_mesh, only: mesh_t, element_set_t, node_set_t, edge_set_t
    use pecplas_model_options, only: AXISYMMETRIC
+   use pecplas_model_mesh_tools, only: orient_edge_sets
    implicit none (type, external)
    private
 
@@ -27,7 +28,7 @@ contains
 
       associate (mesh => model%mesh, n => state%nnode)
          allocate (mesh%x(2, n), mesh%node_id(n), mesh%esets(0), mesh%nsets(0), &
-            mesh%edge_sets(0), state%mesh_eset_at(0))
+            mesh%edge_sets(0), state%mesh_eset_at(0), state%mesh_edge_set_at(0))
          if (n > 0) then
             mesh%x = state%x(:, 1:n)
             mesh%node_id = state%node_ids(1:n)
@@ -63,7 +64,39 @@ contains
       call add_node_sets(state, model%mesh, error)
       if (allocated(error)) return
       call add_edge_sets(state, model%mesh, error)
+      if (allocated(error)) return
+      call orient_edges(state, model%mesh, error)
    end subroutine build_mesh
+
+   !> Orders every edge so that the body lies on its left (pressures are copied from the
+   !> edge sets into the load patterns, so this must happen before). An edge that is no
+   !> element side is reported at the line that defined its set.
+   subroutine orient_edges(state, mesh, error)
+      type(deck_state_t), intent(in) :: state
+      type(mesh_t), intent(inout) :: mesh
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      type(mesh_t) :: one
+      character(len=:), allocatable :: message
+      integer :: k
+      call orient_edge_sets(mesh, error)
+      if (.not. allocated(error)) return
+      message = error%message
+      ! find the set at fault (error path only: one set at a time)
+      do k = 1, size(mesh%edge_sets)
+         one%x = mesh%x
+         one%node_id = mesh%node_id
+         one%esets = mesh%esets
+         if (allocated(one%edge_sets)) deallocate (one%edge_sets)
+         allocate (one%edge_sets(1))
+         one%edge_sets(1) = mesh%edge_sets(k)
+         call orient_edge_sets(one, e)
+         if (allocated(e)) then
+            call line_error(state, state%mesh_edge_set_at(k), message, error)
+            return
+         end if
+      end do
+   end subroutine orient_edges
 
    !> Axisymmetric: x is the radius and must not be negative (rounding from a mesher
    !> tolerated up to 1e-9 of the model size).
@@ -224,7 +257,7 @@ contains
    end subroutine add_node_sets
 
    subroutine add_edge_sets(state, mesh, error)
-      type(deck_state_t), intent(in) :: state
+      type(deck_state_t), intent(inout) :: state
       type(mesh_t), intent(inout) :: mesh
       type(error_t), allocatable, intent(out) :: error
       type(edge_set_t) :: es
@@ -239,11 +272,9 @@ contains
             end if
             es%name = raw%name
             if (allocated(es%nodes)) deallocate (es%nodes)
-            allocate (es%nodes(3, raw%n))
-            es%nodes = 0
+            allocate (es%nodes(raw%nen, raw%n))
             do j = 1, raw%n
-               do k = 1, 3
-                  if (raw%nodes(k, j) == 0) cycle
+               do k = 1, raw%nen
                   es%nodes(k, j) = state%node_lookup%index(raw%nodes(k, j))
                   if (es%nodes(k, j) == 0) then
                      call line_error(state, raw%where(j), 'undefined node '// &
@@ -259,6 +290,7 @@ contains
                end do
             end do
             call append_edge_set(mesh, es)
+            state%mesh_edge_set_at = [state%mesh_edge_set_at, raw%at]
          end associate
       end do
    end subroutine add_edge_sets

@@ -35,10 +35,11 @@ module pecplas_io_deck_state
       integer, allocatable :: ids(:), where(:)
    end type raw_nset_t
 
-   !> Edges as node ids (3, n), third id 0 for 2-node edges.
+   !> Edges as node ids (3, n); nen = 2 or 3 nodes per edge, the same for the whole set
+   !> (third id 0 for 2-node edges).
    type :: raw_edge_set_t
       character(len=:), allocatable :: name
-      integer :: at = 0, n = 0
+      integer :: at = 0, n = 0, nen = 0
       integer, allocatable :: nodes(:, :), where(:)
    end type raw_edge_set_t
 
@@ -92,6 +93,8 @@ module pecplas_io_deck_state
       integer, allocatable :: mesh_node_at(:)
       !> Line that defined each element set of the built mesh (*ELEMENTS or *MESH).
       integer, allocatable :: mesh_eset_at(:)
+      !> Line that defined each edge set of the built mesh (*EDGES or *MESH).
+      integer, allocatable :: mesh_edge_set_at(:)
       type(node_lookup_t) :: node_lookup
       type(material_registry_t) :: registry
    end type deck_state_t
