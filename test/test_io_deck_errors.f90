@@ -188,6 +188,7 @@ contains
    subroutine test_includes(error)
       type(error_t), allocatable, intent(out) :: error
       call run_cases([ &
+         bad('missing_file', 14, '*INCLUDE', 'missing required parameter FILE='), &
          bad('missing_include', 8, '*INCLUDE', 'cannot read include file', &
          'inc/nowhere.inp'), &
          bad('recursive_include', 4, '*INCLUDE', 'recursive include', 'inc/rec_a.inp', &

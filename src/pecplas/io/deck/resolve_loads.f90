@@ -67,6 +67,8 @@ contains
       model%supports%dof = pack(spread([1, 2], 2, size(fixed, 2)), fixed)
    end subroutine resolve_supports
 
+   !> model%patterns from the *LOAD blocks: node sets expanded to (node, dof) entries,
+   !> edge sets to edges (3, n), element set names (or ALL) to indices.
    subroutine resolve_patterns(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -143,6 +145,7 @@ contains
       end select
    end subroutine add_item
 
+   !> model%steps from the *STEP blocks: pattern names to indices, each at most once.
    subroutine resolve_steps(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model

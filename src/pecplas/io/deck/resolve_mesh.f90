@@ -20,6 +20,7 @@ module pecplas_io_deck_resolve_mesh
 
 contains
 
+   !> Fills model%mesh; afterwards state%node_lookup maps user node ids to internal numbers.
    subroutine build_mesh(state, model, error)
       type(deck_state_t), intent(inout) :: state
       type(model_t), intent(inout) :: model

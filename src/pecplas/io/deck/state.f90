@@ -29,6 +29,7 @@ module pecplas_io_deck_state
       integer, allocatable :: ids(:), conn(:, :), where(:)
    end type raw_eset_t
 
+   !> Node ids of one set, where(k) = line of id k.
    type :: raw_nset_t
       character(len=:), allocatable :: name
       integer :: at = 0, n = 0
@@ -43,6 +44,7 @@ module pecplas_io_deck_state
       integer, allocatable :: nodes(:, :), where(:)
    end type raw_edge_set_t
 
+   !> *SECTION: element set and material names as written.
    type :: raw_section_t
       character(len=:), allocatable :: set, material
       integer :: at = 0
@@ -57,18 +59,21 @@ module pecplas_io_deck_state
       integer :: at = 0
    end type raw_item_t
 
+   !> One *LOAD block: its data lines as items.
    type :: raw_pattern_t
       character(len=:), allocatable :: name, kind
       integer :: at = 0, n = 0
       type(raw_item_t), allocatable :: items(:)
    end type raw_pattern_t
 
+   !> One *STEP block: items hold (pattern name, target factor).
    type :: raw_step_t
       character(len=:), allocatable :: name
       integer :: increments = 1, at = 0, n = 0
       type(raw_item_t), allocatable :: items(:)
    end type raw_step_t
 
+   !> Everything collected while reading, before references are resolved.
    type :: deck_state_t
       type(deck_line_t), allocatable :: lines(:)
       !> Nodes of *NODES: user ids, coordinates (2, n), line of each.
@@ -88,14 +93,15 @@ module pecplas_io_deck_state
       !> Meshes read by *MESH and the line of each.
       type(mesh_t), allocatable :: imported(:)
       integer, allocatable :: imported_at(:)
-      !> Line of every node of the built mesh (the *MESH line for imported nodes) and the
-      !> user id -> internal number lookup, set when the mesh is built.
+      !> Line of every node of the built mesh (the *MESH line for imported nodes).
       integer, allocatable :: mesh_node_at(:)
       !> Line that defined each element set of the built mesh (*ELEMENTS or *MESH).
       integer, allocatable :: mesh_eset_at(:)
       !> Line that defined each edge set of the built mesh (*EDGES or *MESH).
       integer, allocatable :: mesh_edge_set_at(:)
+      !> User node id -> internal number, set when the mesh is built.
       type(node_lookup_t) :: node_lookup
+      !> Material types known to *MATERIAL.
       type(material_registry_t) :: registry
    end type deck_state_t
 
@@ -133,6 +139,7 @@ contains
       call move_alloc(tmp, a)
    end subroutine grow_int
 
+   !> Makes room for at least n columns.
    pure subroutine grow_int2(a, rows, n)
       integer, allocatable, intent(inout) :: a(:, :)
       integer, intent(in) :: rows, n
@@ -145,6 +152,7 @@ contains
       call move_alloc(tmp, a)
    end subroutine grow_int2
 
+   !> Makes room for at least n columns.
    pure subroutine grow_real2(a, rows, n)
       real(wp), allocatable, intent(inout) :: a(:, :)
       integer, intent(in) :: rows, n

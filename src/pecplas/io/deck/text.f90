@@ -75,6 +75,7 @@ contains
       ok = ios == 0
    end subroutine parse_int
 
+   !> Upper-case copy without trailing blanks.
    pure function upper(s) result(u)
       character(len=*), intent(in) :: s
       character(len=len_trim(s)) :: u
@@ -100,6 +101,7 @@ contains
       list = list//' '//name
    end subroutine add_name
 
+   !> Integer as text (messages).
    pure function itoa(i) result(s)
       integer, intent(in) :: i
       character(len=:), allocatable :: s
