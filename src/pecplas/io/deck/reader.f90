@@ -146,6 +146,8 @@ contains
          do i = 1, size(KNOWN_KEYWORDS)
             call add_name(list, trim(KNOWN_KEYWORDS(i)))
          end do
+         if (index(block%kw%name, '=') > 0) list = list// &
+            ' (parameters follow the keyword after commas: *KEYWORD, KEY=value)'
          call line_error(state, block%at, "unknown keyword '"//block%kw%name// &
             "'; known keywords:"//list, error)
       end select
