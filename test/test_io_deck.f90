@@ -313,8 +313,8 @@ contains
       if (allocated(error)) return
       call check(error, all(model%mesh%esets(:)%material_index == 1), 'sections on both sets')
       if (allocated(error)) return
-      ! base: the 5 nodes of the bottom curve (2 three-node lines) + node 101, xy: 12 dofs
-      call check(error, size(model%supports%node) == 12, 'supports on a Gmsh node set')
+      ! base: the 5 nodes of the bottom curve (2 three-node lines) + node 101, xy; 102, y: 13
+      call check(error, size(model%supports%node) == 13, 'supports on a Gmsh node set')
       if (allocated(error)) return
       k = model%mesh%find_edge_set('top')
       call check(error, k > 0 .and. size(model%patterns(1)%edge, 2) == 2 .and. &
