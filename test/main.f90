@@ -13,6 +13,10 @@ program tester
    use test_io_results, only: collect_io_results
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_solvers, only: collect_linalg_solvers
+   use test_io_deck_fields, only: collect_io_deck_fields
+   use test_io_deck, only: collect_io_deck
+   use test_io_deck_errors, only: collect_io_deck_errors
+   use test_massif_materials_factory, only: collect_massif_materials_factory
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -32,6 +36,10 @@ program tester
    suites = [suites, new_testsuite('io_results', collect_io_results)]
    suites = [suites, new_testsuite('linalg_sparse', collect_linalg_sparse)]
    suites = [suites, new_testsuite('linalg_solvers', collect_linalg_solvers)]
+   suites = [suites, new_testsuite('io_deck_fields', collect_io_deck_fields)]
+   suites = [suites, new_testsuite('io_deck', collect_io_deck)]
+   suites = [suites, new_testsuite('io_deck_errors', collect_io_deck_errors)]
+   suites = [suites, new_testsuite('massif_materials_factory', collect_massif_materials_factory)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -1,0 +1,262 @@
+!> Deck handlers for the keywords that set a value right away: *TITLE, *UNITS,
+!> *ANALYSIS, *SOLVER, *OUTPUT, and *STEP (whose pattern names are resolved later).
+module pecplas_io_deck_reader_options
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t
+   use pecplas_io_deck_fields, only: field_t, split_fields, field_real, &
+      check_count, parse_real, parse_int, same_name, upper, add_name, itoa
+   use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
+      line_error, where_text, push_item
+   use pecplas_model, only: model_t
+   use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
+      NONLINEAR_METHODS
+   implicit none (type, external)
+   private
+
+   public :: read_text, read_analysis, read_solver, read_output, read_step
+
+contains
+
+   !> *TITLE / *UNITS -- exactly one data line, kept as written.
+   subroutine read_text(state, block, text, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      character(len=:), allocatable, intent(out) :: text
+      type(error_t), allocatable, intent(out) :: error
+      call block%kw%check_keys(state%lines(block%at), [character(len=1) ::], error)
+      if (allocated(error)) return
+      if (block%last /= block%first) then
+         call line_error(state, block%at, 'expected exactly one data line after '// &
+            block%kw%name//', found '//itoa(block%last - block%first + 1), error)
+         return
+      end if
+      text = state%lines(block%first)%text
+   end subroutine read_text
+
+   !> *ANALYSIS, TYPE=PLANE_STRAIN|AXISYMMETRIC [, THICKNESS=t] (thickness: plane strain)
+   subroutine read_analysis(state, model, block, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: kind
+      logical :: found
+      associate (kwline => state%lines(block%at), kw => block%kw)
+         call kw%check_keys(kwline, [character(len=9) :: 'TYPE', 'THICKNESS'], error)
+         if (allocated(error)) return
+         call kw%require(kwline, 'TYPE', kind, error)
+         if (allocated(error)) return
+         select case (upper(kind))
+         case ('PLANE_STRAIN')
+            model%analysis%kind = PLANE_STRAIN
+         case ('AXISYMMETRIC')
+            model%analysis%kind = AXISYMMETRIC
+            if (kw%has('THICKNESS')) then
+               call line_error(state, block%at, 'THICKNESS is only for PLANE_STRAIN; an '// &
+                  'AXISYMMETRIC model is computed over the full circle (2*pi*r)', error)
+               return
+            end if
+         case default
+            call line_error(state, block%at, "unknown analysis type '"//kind// &
+               "'; known types: PLANE_STRAIN AXISYMMETRIC", error)
+            return
+         end select
+         call param_real(state, block, 'THICKNESS', model%analysis%thickness, found, error)
+         if (allocated(error)) return
+         if (found .and. .not. (model%analysis%thickness > 0.0_wp)) then
+            call line_error(state, block%at, 'THICKNESS must be positive', error)
+            return
+         end if
+      end associate
+   end subroutine read_analysis
+
+   !> *SOLVER [, LINEAR=..] [, METHOD=..] [, TOLERANCE=..] [, MAX_ITERATIONS=..] [, MAX_CUTS=..]
+   subroutine read_solver(state, model, block, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      logical :: found
+      call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'LINEAR', 'METHOD', &
+         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS'], error)
+      if (allocated(error)) return
+      call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
+      if (allocated(error)) return
+      call param_choice(state, block, 'METHOD', NONLINEAR_METHODS, model%solver%method, error)
+      if (allocated(error)) return
+      call param_real(state, block, 'TOLERANCE', model%solver%tolerance, found, error)
+      if (allocated(error)) return
+      if (found .and. .not. (model%solver%tolerance > 0.0_wp .and. &
+         model%solver%tolerance < 1.0_wp)) then
+         call line_error(state, block%at, 'TOLERANCE must be between 0 and 1', error)
+         return
+      end if
+      call param_int(state, block, 'MAX_ITERATIONS', 1, model%solver%max_iterations, error)
+      if (allocated(error)) return
+      call param_int(state, block, 'MAX_CUTS', 0, model%solver%max_cuts, error)
+   end subroutine read_solver
+
+   !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]
+   subroutine read_output(state, model, block, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: file
+      logical :: found
+      call block%kw%check_keys(state%lines(block%at), [character(len=9) :: 'FILE', 'EVERY', &
+         'STRESSES', 'STRAINS', 'REACTIONS'], error)
+      if (allocated(error)) return
+      call block%kw%get('FILE', file, found)
+      if (found) model%output%file = file
+      call param_int(state, block, 'EVERY', 1, model%output%every, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'STRESSES', model%output%stresses, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'STRAINS', model%output%strains, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'REACTIONS', model%output%reactions, error)
+   end subroutine read_output
+
+   !> *STEP [, NAME=name] [, INCREMENTS=n] -- data: pattern, target_factor
+   subroutine read_step(state, block, error)
+      type(deck_state_t), intent(inout) :: state
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      type(raw_step_t) :: step
+      type(raw_step_t), allocatable :: tmp(:)
+      type(field_t), allocatable :: f(:)
+      type(raw_item_t) :: item
+      logical :: found
+      integer :: i, n
+      call block%kw%check_keys(state%lines(block%at), [character(len=10) :: 'NAME', &
+         'INCREMENTS'], error)
+      if (allocated(error)) return
+      if (.not. allocated(state%steps)) allocate (state%steps(0))
+      n = size(state%steps)
+      call block%kw%get('NAME', step%name, found)
+      if (.not. found) step%name = 'Step-'//itoa(n + 1)
+      do i = 1, n
+         if (same_name(state%steps(i)%name, step%name)) then
+            call line_error(state, block%at, "step '"//step%name//"' is defined twice "// &
+               '(first at '//where_text(state, state%steps(i)%at)//')', error)
+            return
+         end if
+      end do
+      call param_int(state, block, 'INCREMENTS', 1, step%increments, error)
+      if (allocated(error)) return
+      step%at = block%at
+      if (block%last < block%first) then
+         call line_error(state, block%at, "empty step '"//step%name//"': expected lines "// &
+            '"pattern, target_factor" after *STEP', error)
+         return
+      end if
+      do i = block%first, block%last
+         call split_fields(state%lines(i)%text, f)
+         call check_count(state%lines(i), f, 2, 2, 'pattern, target_factor', error)
+         if (allocated(error)) return
+         item%target = f(1)%s
+         item%at = i
+         call field_real(state%lines(i), f, 2, 'target factor', item%value(1), error)
+         if (allocated(error)) return
+         call push_item(step%items, step%n, item)
+      end do
+      allocate (tmp(n + 1))
+      tmp(1:n) = state%steps
+      tmp(n + 1) = step
+      call move_alloc(tmp, state%steps)
+   end subroutine read_step
+
+   subroutine param_real(state, block, key, value, found, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      character(len=*), intent(in) :: key
+      real(wp), intent(inout) :: value
+      logical, intent(out) :: found
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      real(wp) :: v
+      logical :: ok
+      call block%kw%get(key, text, found)
+      if (.not. found) return
+      call parse_real(text, v, ok)
+      if (.not. ok) then
+         call line_error(state, block%at, 'expected '//key//"=<number>, found '"//text// &
+            "'", error)
+         return
+      end if
+      value = v
+   end subroutine param_real
+
+   !> Integer parameter, kept unchanged when absent; error below `minimum`.
+   subroutine param_int(state, block, key, minimum, value, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      character(len=*), intent(in) :: key
+      integer, intent(in) :: minimum
+      integer, intent(inout) :: value
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      integer :: v
+      logical :: ok, found
+      call block%kw%get(key, text, found)
+      if (.not. found) return
+      call parse_int(text, v, ok)
+      if (.not. ok) then
+         call line_error(state, block%at, 'expected '//key//"=<integer>, found '"//text// &
+            "'", error)
+         return
+      end if
+      if (v < minimum) then
+         call line_error(state, block%at, key//' must be >= '//itoa(minimum)//', found '// &
+            itoa(v), error)
+         return
+      end if
+      value = v
+   end subroutine param_int
+
+   subroutine param_choice(state, block, key, choices, value, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      character(len=*), intent(in) :: key, choices(:)
+      character(len=:), allocatable, intent(inout) :: value
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text, list
+      logical :: found
+      integer :: i
+      call block%kw%get(key, text, found)
+      if (.not. found) return
+      if (any(choices == upper(text))) then
+         value = upper(text)
+         return
+      end if
+      list = ''
+      do i = 1, size(choices)
+         call add_name(list, trim(choices(i)))
+      end do
+      call line_error(state, block%at, 'bad value '//key//'='//text//'; expected one of:'// &
+         list, error)
+   end subroutine param_choice
+
+   subroutine param_yes_no(state, block, key, value, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      character(len=*), intent(in) :: key
+      logical, intent(inout) :: value
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      logical :: found
+      call block%kw%get(key, text, found)
+      if (.not. found) return
+      select case (upper(text))
+      case ('YES')
+         value = .true.
+      case ('NO')
+         value = .false.
+      case default
+         call line_error(state, block%at, 'bad value '//key//'='//text// &
+            '; expected YES or NO', error)
+      end select
+   end subroutine param_yes_no
+
+end module pecplas_io_deck_reader_options

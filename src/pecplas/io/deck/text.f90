@@ -1,0 +1,118 @@
+!> Text helpers of the deck reader: strict number parsing (the Fortran forms 1e5, 1.0d-3,
+!> -2., .5 and nothing else), case folding and name lists for messages.
+module pecplas_io_deck_text
+   use pecplas_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: parse_real, parse_int, upper, same_name, add_name, itoa
+
+contains
+
+   !> Strict Fortran real: [sign] digits[.digits] | .digits, optional exponent e/E/d/D.
+   pure subroutine parse_real(s, value, ok)
+      character(len=*), intent(in) :: s
+      real(wp), intent(out) :: value
+      logical, intent(out) :: ok
+      integer :: i, n, ndig, nexp, ios
+      value = 0.0_wp
+      ok = .false.
+      n = len_trim(s)
+      if (n == 0) return
+      i = 1
+      if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+      ndig = 0
+      do while (i <= n)
+         if (.not. is_digit(s(i:i))) exit
+         ndig = ndig + 1; i = i + 1
+      end do
+      if (i <= n) then
+         if (s(i:i) == '.') then
+            i = i + 1
+            do while (i <= n)
+               if (.not. is_digit(s(i:i))) exit
+               ndig = ndig + 1; i = i + 1
+            end do
+         end if
+      end if
+      if (ndig == 0) return
+      if (i <= n) then
+         if (index('eEdD', s(i:i)) == 0) return
+         i = i + 1
+         if (i <= n) then
+            if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+         end if
+         nexp = 0
+         do while (i <= n)
+            if (.not. is_digit(s(i:i))) return
+            nexp = nexp + 1; i = i + 1
+         end do
+         if (nexp == 0) return
+      end if
+      read (s(1:n), *, iostat=ios) value
+      ok = ios == 0
+      if (ok) ok = abs(value) <= huge(value)
+   end subroutine parse_real
+
+   !> Strict integer: [sign] digits, within the default integer range.
+   pure subroutine parse_int(s, value, ok)
+      character(len=*), intent(in) :: s
+      integer, intent(out) :: value
+      logical, intent(out) :: ok
+      integer :: i, n, i0, ios
+      value = 0
+      ok = .false.
+      n = len_trim(s)
+      if (n == 0) return
+      i0 = 1
+      if (s(1:1) == '+' .or. s(1:1) == '-') i0 = 2
+      if (i0 > n) return
+      do i = i0, n
+         if (.not. is_digit(s(i:i))) return
+      end do
+      if (n - i0 + 1 > 9) return
+      read (s(1:n), *, iostat=ios) value
+      ok = ios == 0
+   end subroutine parse_int
+
+   !> Upper-case copy without trailing blanks.
+   pure function upper(s) result(u)
+      character(len=*), intent(in) :: s
+      character(len=len_trim(s)) :: u
+      integer :: i, c
+      u = s(1:len_trim(s))
+      do i = 1, len(u)
+         c = iachar(u(i:i))
+         if (c >= 97 .and. c <= 122) u(i:i) = achar(c - 32)
+      end do
+   end function upper
+
+   !> Case-insensitive name comparison (set, material and pattern names).
+   pure logical function same_name(a, b)
+      character(len=*), intent(in) :: a, b
+      same_name = upper(a) == upper(b)
+   end function same_name
+
+   !> Appends ' name' to a blank-separated list used in messages.
+   pure subroutine add_name(list, name)
+      character(len=:), allocatable, intent(inout) :: list
+      character(len=*), intent(in) :: name
+      if (.not. allocated(list)) list = ''
+      list = list//' '//name
+   end subroutine add_name
+
+   !> Integer as text (messages).
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=12) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function itoa
+
+   pure logical function is_digit(c)
+      character(len=1), intent(in) :: c
+      is_digit = c >= '0' .and. c <= '9'
+   end function is_digit
+
+end module pecplas_io_deck_text

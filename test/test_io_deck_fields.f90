@@ -1,0 +1,151 @@
+!> Deck building blocks: strict number parsing (what Fortran writes is accepted, anything
+!> else refused), keyword lines, data fields, include path folding and repeated ids.
+module test_io_deck_fields
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t
+   use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, field_t, parse_keyword_line, &
+      split_fields, parse_real, parse_int
+   use pecplas_io_deck_lines, only: join_path
+   use pecplas_io_deck_repeats, only: first_repeat
+   use pecplas_testing, only: unittest_t, new_unittest, check
+   implicit none (type, external)
+   private
+   public :: collect_io_deck_fields
+
+contains
+
+   subroutine collect_io_deck_fields(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('numbers_accepted', test_numbers_ok), &
+               new_unittest('numbers_refused', test_numbers_bad), &
+               new_unittest('integers', test_integers), &
+               new_unittest('keyword_line', test_keyword_line), &
+               new_unittest('data_fields', test_fields), &
+               new_unittest('include_paths', test_paths), &
+               new_unittest('first_repeat', test_repeat)]
+   end subroutine collect_io_deck_fields
+
+   subroutine test_numbers_ok(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=8), parameter :: text(8) = [character(len=8) :: '1e5', '1.0d-3', '-2.', &
+         '.5', '+3', '2.5E+2', '0', '-0.125D1']
+      real(wp), parameter :: expected(8) = [1.0e5_wp, 1.0e-3_wp, -2.0_wp, 0.5_wp, 3.0_wp, &
+         250.0_wp, 0.0_wp, -1.25_wp]
+      real(wp) :: v
+      logical :: ok
+      integer :: i
+      do i = 1, size(text)
+         call parse_real(text(i), v, ok)
+         ! decimal text of a representable value reads back exactly, others to rounding
+         call check(error, ok .and. abs(v - expected(i)) <= 1.0e-15_wp*abs(expected(i)), &
+            'should read '//trim(text(i)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_numbers_ok
+
+   subroutine test_numbers_bad(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=8), parameter :: text(12) = [character(len=8) :: '2.0e', 'abc', '1.2.3', &
+         '', 'e5', '1e', '1+5', 'nan', 'inf', '.', '-', '1,0']
+      real(wp) :: v
+      logical :: ok
+      integer :: i
+      do i = 1, size(text)
+         call parse_real(text(i), v, ok)
+         call check(error, .not. ok, "should refuse '"//trim(text(i))//"'")
+         if (allocated(error)) return
+      end do
+   end subroutine test_numbers_bad
+
+   subroutine test_integers(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: v
+      logical :: ok
+      call parse_int('-42', v, ok)
+      call check(error, ok .and. v == -42, '-42')
+      if (allocated(error)) return
+      call parse_int('123456789', v, ok)
+      call check(error, ok .and. v == 123456789, 'nine digits')
+      if (allocated(error)) return
+      call parse_int('1.0', v, ok)
+      call check(error, .not. ok, 'a real is not an integer')
+      if (allocated(error)) return
+      call parse_int('12345678901', v, ok)
+      call check(error, .not. ok, 'out of range')
+   end subroutine test_integers
+
+   subroutine test_keyword_line(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      type(keyword_line_t) :: kw
+      type(deck_line_t) :: line
+      character(len=:), allocatable :: v
+      logical :: found
+      line = deck_line_t(file='x.inp', line=3, keyword='', &
+         text='*elements ,  type = q4, Set=My_Soil, generate')
+      call parse_keyword_line(line, kw, e)
+      call check(error, .not. allocated(e), 'valid keyword line')
+      if (allocated(error)) return
+      call check(error, kw%name == '*ELEMENTS' .and. size(kw%params) == 3, 'name and 3 params')
+      if (allocated(error)) return
+      call kw%get('set', v, found)
+      call check(error, found .and. v == 'My_Soil', 'value keeps its spelling')
+      if (allocated(error)) return
+      call check(error, kw%has('GENERATE') .and. .not. kw%params(3)%has_value, 'flag')
+      if (allocated(error)) return
+      line%text = '*end   step'
+      call parse_keyword_line(line, kw, e)
+      call check(error, kw%name == '*END STEP', 'inner blanks folded: '//kw%name)
+      if (allocated(error)) return
+      line%text = '*STEP, NAME=a b=c'
+      call parse_keyword_line(line, kw, e)
+      call check(error, .not. allocated(e), 'value may hold blanks and =')
+      if (allocated(error)) return
+      line%text = '*STEP, MY KEY=3'
+      call parse_keyword_line(line, kw, e)
+      call check(error, allocated(e), 'blank inside a key is an error')
+      if (allocated(error)) return
+      call check(error, index(e%text(), 'x.inp:3') > 0, 'error names file:line')
+   end subroutine test_keyword_line
+
+   subroutine test_fields(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(field_t), allocatable :: f(:)
+      allocate (f(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
+      call split_fields('1,2  3 ,, 4,', f)
+      call check(error, size(f) == 4, 'commas and blanks separate, runs count once')
+      if (allocated(error)) return
+      call check(error, f(3)%s == '3' .and. f(4)%s == '4', 'field text')
+      if (allocated(error)) return
+      call split_fields('E=2e4, NU = 0.3', f)
+      call check(error, size(f) == 6 .and. f(2)%s == '=' .and. f(5)%s == '=', '= is a field')
+   end subroutine test_fields
+
+   subroutine test_paths(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check(error, join_path('a/b/', '../c.inp') == 'a/c.inp', '..: '// &
+         join_path('a/b/', '../c.inp'))
+      if (allocated(error)) return
+      call check(error, join_path('', './x.inp') == 'x.inp', '.')
+      if (allocated(error)) return
+      call check(error, join_path('a/', '/abs/y.inp') == '/abs/y.inp', 'absolute kept')
+      if (allocated(error)) return
+      call check(error, join_path('', '../up.inp') == '../up.inp', 'leading .. kept')
+      if (allocated(error)) return
+      call check(error, join_path('d//', 'e/./f.inp') == 'd/e/f.inp', 'repeated / folded')
+   end subroutine test_paths
+
+   subroutine test_repeat(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check(error, all(first_repeat([40, 7, 12, 3, 99, 8, 1]) == 0), 'distinct ids')
+      if (allocated(error)) return
+      call check(error, all(first_repeat([integer ::]) == 0), 'no ids')
+      if (allocated(error)) return
+      ! 7 repeats at 5, 3 repeats at 4: the repeat met first in reading order is reported
+      call check(error, all(first_repeat([7, 3, 9, 3, 7]) == [2, 4]), &
+         'first repeat in reading order')
+      if (allocated(error)) return
+      call check(error, all(first_repeat([5, 5, 5]) == [1, 2]), 'triple: first two')
+   end subroutine test_repeat
+
+end module test_io_deck_fields
