@@ -61,6 +61,8 @@ contains
       end if
       err_u = 0.0_wp
       do i = 1, model%mesh%nnode()
+         ! the centre nodes of the quadratic grid belong to no Q8: not part of the solution
+         if (all(problem%dofs%eq(:, i) == 0)) cycle
          r = norm2(model%mesh%x(:, i))
          if (axi) r = model%mesh%x(1, i)
          call lame_exact(r, ur, hoop)
@@ -120,17 +122,21 @@ contains
       call check_close(error, eh, 0.0_wp, 0.0_wp, etype//' hoop relative error <= 0.5%', atol=5.0e-3_wp)
    end subroutine check_accuracy
 
-   !> Observed order log2(e_h / e_h/2) on meshes 4, 8, 16 within [lo, hi] for both halvings.
-   subroutine check_order(etype, axi, lo, hi, error)
+   !> Observed order log2(e_h / e_h/2) on meshes n0, 2 n0, 4 n0 (n0 = 4 unless given)
+   !> within [lo, hi] for both halvings.
+   subroutine check_order(etype, axi, lo, hi, error, n0)
       character(len=*), intent(in) :: etype
       logical, intent(in) :: axi
       real(wp), intent(in) :: lo, hi
+      integer, intent(in), optional :: n0
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: l2(3), eu, eh, rate(2)
-      integer :: k
+      integer :: k, n
       character(len=120) :: buf
+      n = 4
+      if (present(n0)) n = n0
       do k = 1, 3
-         call solve_lame(etype, axi, 2**(k + 1), l2(k), eu, eh, error)
+         call solve_lame(etype, axi, n*2**(k - 1), l2(k), eu, eh, error)
          if (allocated(error)) return
       end do
       rate = log(l2(1:2)/l2(2:3))/log(2.0_wp)
@@ -178,7 +184,9 @@ contains
 
    subroutine test_order_t6(error)
       type(error_t), allocatable, intent(out) :: error
-      call check_order('T6', .false., 2.7_wp, 3.3_wp, error)
+      ! T6 approaches order 3 from above (3.45, 3.31 from n = 4, 3.31, 3.13 from n = 8):
+      ! start in the asymptotic range
+      call check_order('T6', .false., 2.7_wp, 3.3_wp, error, n0=16)
    end subroutine test_order_t6
 
    subroutine test_order_q4_axi(error)
