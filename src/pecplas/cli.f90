@@ -170,15 +170,24 @@ contains
       logical, intent(in) :: quiet
       if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
       if (quiet .and. status == 'completed') return
-      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,f0.2,a)') ' summary: ', problem%increments, &
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%increments, &
          ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
-         problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', cpu, ' s CPU'
+         problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', sec(cpu), ' s CPU'
       associate (t => problem%time)
-         write (*, '(a,7(a,f0.3))') ' wall time [s]:', ' read+setup ', t%setup, '  assembly ', &
-            t%assembly, '  factorisation ', t%factorisation, '  solve ', t%solve, '  residual ', &
-            t%residual, '  output ', t%output, '  total ', wall
+         write (*, '(a,7(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
+            sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
+            '  residual ', sec(t%residual), '  output ', sec(t%output), '  total ', sec(wall)
       end associate
       write (*, '(a)') ' status: '//status//'  results: '//outfile
    end subroutine summary
+
+   !> Seconds with 3 decimals and a leading zero ("0.012").
+   function sec(t) result(s)
+      real(wp), intent(in) :: t
+      character(len=:), allocatable :: s
+      character(len=24) :: buf
+      write (buf, '(f12.3)') t
+      s = trim(adjustl(buf))
+   end function sec
 
 end module pecplas_cli

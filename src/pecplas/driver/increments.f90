@@ -60,7 +60,7 @@ contains
                   call problem%state%rollback()
                   if (level >= model%solver%max_cuts) then
                      status = 'diverged'
-                     write (buf, '(a,i0,a,a,a,f0.4,a,i0,a)') 'step ', istep, ' (', step%name, &
+                     write (buf, '(a,i0,a,a,a,f6.4,a,i0,a)') 'step ', istep, ' (', step%name, &
                         ') did not converge at step fraction ', tau + dt, ' after ', level, &
                         ' increment cuts; last converged state kept in the results file'
                      message = trim(buf)
