@@ -169,7 +169,7 @@ contains
       real(wp), intent(in) :: cpu, wall
       logical, intent(in) :: quiet
       if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
-      if (quiet .and. status == 'completed') return
+      if (quiet) return
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%increments, &
          ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
          problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', sec(cpu), ' s CPU'
