@@ -5,6 +5,8 @@ module pecplas_model
    use pecplas_model_loads, only: load_pattern_t, step_t, support_t
    use pecplas_model_options, only: analysis_t, solver_options_t, output_options_t
    use pecplas_massif_materials_type, only: material_box_t
+   use pecplas_model_joints, only: joint_set_t
+   use pecjoin_laws_type, only: interface_law_box_t
    implicit none (type, external)
    private
 
@@ -19,6 +21,9 @@ module pecplas_model
       type(analysis_t) :: analysis
       type(mesh_t) :: mesh
       type(material_box_t), allocatable :: materials(:)
+      !> Interface laws (*INTERFACE_LAW) and joint element sets (*JOINTS).
+      type(interface_law_box_t), allocatable :: laws(:)
+      type(joint_set_t), allocatable :: joint_sets(:)
       type(support_t) :: supports
       type(load_pattern_t), allocatable :: patterns(:)
       type(step_t), allocatable :: steps(:)
