@@ -20,9 +20,25 @@ contains
    function linear_solver_name(model) result(name)
       type(model_t), intent(in) :: model
       character(len=:), allocatable :: name
+      integer :: i
+      logical :: symmetric
       name = model%solver%linear
-      ! Massif materials of this version give a symmetric tangent: CHOLMOD applies.
-      if (name == 'AUTO') name = 'CHOLMOD'
+      if (name /= 'AUTO') return
+      ! The elastic stiffness of modified Newton is symmetric positive definite: CHOLMOD.
+      ! Full Newton with a non-symmetric consistent tangent (non-associated plasticity,
+      ! frictional interfaces) needs LU: UMFPACK.
+      symmetric = .true.
+      if (model%solver%method == 'NEWTON') then
+         do i = 1, size(model%materials)
+            symmetric = symmetric .and. model%materials(i)%m%symmetric_tangent()
+         end do
+         if (allocated(model%laws)) then
+            do i = 1, size(model%laws)
+               symmetric = symmetric .and. model%laws(i)%law%symmetric_tangent()
+            end do
+         end if
+      end if
+      name = merge('CHOLMOD', 'UMFPACK', symmetric)
    end function linear_solver_name
 
    !> `tangent`: consistent tangents (full Newton) instead of elastic stiffness.

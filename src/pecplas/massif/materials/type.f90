@@ -25,6 +25,9 @@ module pecplas_massif_materials_type
       procedure(elastic_ifc), deferred :: elastic_tangent
       !> Stress update from a strain increment; tangent is consistent with the update.
       procedure(update_ifc), deferred :: update
+      !> False when the consistent tangent can be non-symmetric (non-associated flow):
+      !> full Newton then factorises with UMFPACK instead of CHOLMOD.
+      procedure :: symmetric_tangent => material_symmetric_tangent
    end type material_t
 
    !> Holder so that arrays of polymorphic materials can be built.
@@ -54,5 +57,12 @@ module pecplas_massif_materials_type
          type(error_t), allocatable, intent(out) :: error
       end subroutine update_ifc
    end interface
+
+contains
+
+   pure logical function material_symmetric_tangent(this)
+      class(material_t), intent(in) :: this
+      material_symmetric_tangent = .true.
+   end function material_symmetric_tangent
 
 end module pecplas_massif_materials_type
