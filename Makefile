@@ -51,7 +51,7 @@ run: build
 test: deps
 	@bash tools/test_all.sh
 
-bench:
+bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
 	else echo "make bench: benchmarks arrive with issue 2's speed report"; fi
 

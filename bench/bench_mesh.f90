@@ -1,0 +1,99 @@
+!> Structured square meshes for the benchmarks, written as Gmsh 4.1 files (physical groups
+!> base, top, sides, soil) with a deck that loads the top by a pressure.
+module bench_mesh
+   use pecplas_kinds, only: wp
+   implicit none (type, external)
+   private
+   public :: write_square_msh, write_square_deck
+
+contains
+
+   !> n x n elements of type Q4 or Q8 on the unit square (10 m side).
+   subroutine write_square_msh(path, etype, n)
+      character(len=*), intent(in) :: path, etype
+      integer, intent(in) :: n
+      integer :: u, i, j, m, nnode, tag, k
+      real(wp) :: h
+      logical :: quad
+      quad = etype == 'Q8'
+      m = merge(2*n, n, quad)        ! grid intervals per side
+      h = 10.0_wp/m
+      nnode = (m + 1)**2
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') '$MeshFormat', '4.1 0 8', '$EndMeshFormat'
+      write (u, '(a)') '$PhysicalNames', '4', '1 1 "base"', '1 2 "top"', '1 3 "sides"', &
+         '2 4 "soil"', '$EndPhysicalNames'
+      write (u, '(a)') '$Entities', '0 3 1 0'
+      write (u, '(a)') '1 0 0 0 10 0 0 1 1 0', '2 0 10 0 10 10 0 1 2 0', '3 0 0 0 10 10 0 1 3 0'
+      write (u, '(a)') '1 0 0 0 10 10 0 1 4 3 1 2 3', '$EndEntities'
+      ! all nodes in one block (centre nodes of the quadratic grid are simply unused)
+      write (u, '(a)') '$Nodes'
+      write (u, '(i0,1x,i0,1x,i0,1x,i0)') 1, nnode, 1, nnode
+      write (u, '(i0,1x,i0,1x,i0,1x,i0)') 2, 1, 0, nnode
+      write (u, '(i0)') (k, k=1, nnode)
+      do j = 0, m
+         do i = 0, m
+            write (u, '(es23.16,1x,es23.16,a)') i*h, j*h, ' 0'
+         end do
+      end do
+      write (u, '(a)') '$EndNodes', '$Elements'
+      write (u, '(i0,1x,i0,1x,i0,1x,i0)') 4, 4*n + n*n, 1, 4*n + n*n
+      tag = 0
+      call line_block(1, [(node(i, 0), i=0, m)])
+      call line_block(2, [(node(i, m), i=0, m)])
+      ! sides: left (upwards) then right
+      write (u, '(a,i0)') '1 3 '//merge('8 ', '1 ', quad), 2*n
+      call line_nodes([(node(0, j), j=0, m)])
+      call line_nodes([(node(m, j), j=0, m)])
+      write (u, '(a,i0)') '2 1 '//merge('16 ', '3  ', quad), n*n
+      do j = 0, m - 1, merge(2, 1, quad)
+         do i = 0, m - 1, merge(2, 1, quad)
+            tag = tag + 1
+            if (quad) then
+               write (u, '(*(i0,:,1x))') tag, node(i, j), node(i + 2, j), node(i + 2, j + 2), &
+                  node(i, j + 2), node(i + 1, j), node(i + 2, j + 1), node(i + 1, j + 2), &
+                  node(i, j + 1)
+            else
+               write (u, '(*(i0,:,1x))') tag, node(i, j), node(i + 1, j), node(i + 1, j + 1), &
+                  node(i, j + 1)
+            end if
+         end do
+      end do
+      write (u, '(a)') '$EndElements'
+      close (u)
+   contains
+      integer function node(ii, jj)
+         integer, intent(in) :: ii, jj
+         node = 1 + ii + jj*(m + 1)
+      end function node
+      subroutine line_block(curve, nodes)
+         integer, intent(in) :: curve, nodes(:)
+         write (u, '(a,i0,a,i0)') '1 ', curve, ' '//merge('8 ', '1 ', quad), n
+         call line_nodes(nodes)
+      end subroutine line_block
+      subroutine line_nodes(nodes)
+         integer, intent(in) :: nodes(:)
+         integer :: e
+         do e = 1, n
+            tag = tag + 1
+            if (quad) then
+               write (u, '(*(i0,:,1x))') tag, nodes(2*e - 1), nodes(2*e + 1), nodes(2*e)
+            else
+               write (u, '(*(i0,:,1x))') tag, nodes(e), nodes(e + 1)
+            end if
+         end do
+      end subroutine line_nodes
+   end subroutine write_square_msh
+
+   subroutine write_square_deck(path, msh)
+      character(len=*), intent(in) :: path, msh
+      integer :: u
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'benchmark: elastic square under a top pressure', &
+         '*MESH, FILE='//msh, '*MATERIAL, NAME=soil', 'E = 1e5, NU = 0.3', &
+         '*SECTION, SET=soil, MATERIAL=soil', '*BOUNDARY', 'base, XY', 'sides, X', &
+         '*LOAD, NAME=p, TYPE=PRESSURE', 'top, 100', '*STEP, NAME=load, INCREMENTS=1', 'p, 1'
+      close (u)
+   end subroutine write_square_deck
+
+end module bench_mesh
