@@ -46,7 +46,8 @@ run: build
 	@rm -f "$(OUT)"
 	$(FPM) run --profile release --target pecplas -- "$(DECK)" -o "$(OUT)"
 	@test -f "$(OUT)" || { echo "make run: pecplas wrote no $(OUT)" >&2; exit 1; }
-	@echo "make run: results of $(DECK) written to $(OUT)"
+	@$(PYTHON) tools/plot_results.py "$(OUT)" -o "$(basename $(OUT)).png" || echo "make run: no picture (matplotlib missing?)"
+	@echo "make run: results of $(DECK) written to $(OUT) (+ $(basename $(OUT)).xmf for ParaView, $(basename $(OUT)).png)"
 
 test: deps
 	@bash tools/test_all.sh
