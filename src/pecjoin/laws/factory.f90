@@ -8,6 +8,7 @@ module pecjoin_laws_factory
    use pecplas_model_params, only: params_t
    use pecjoin_laws_type, only: interface_law_t
    use pecjoin_laws_elastic, only: build_elastic_law
+   use pecplas_strings, only: upper
    implicit none (type, external)
    private
 
@@ -106,16 +107,5 @@ contains
          list = list//' '//this%entries(i)%name
       end do
    end function registry_names
-
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s
-      character(len=len_trim(adjustl(s))) :: u
-      integer :: i, c
-      u = trim(adjustl(s))
-      do i = 1, len(u)
-         c = iachar(u(i:i))
-         if (c >= 97 .and. c <= 122) u(i:i) = achar(c - 32)
-      end do
-   end function upper
 
 end module pecjoin_laws_factory

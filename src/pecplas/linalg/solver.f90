@@ -4,6 +4,7 @@ module pecplas_linalg_solver
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_linalg_cholmod, only: cholmod_solver_t
    use pecplas_linalg_umfpack, only: umfpack_solver_t
+   use pecplas_strings, only: upper
    implicit none (type, external)
    private
 
@@ -38,15 +39,5 @@ contains
          call input_error(error, 'unknown linear solver '''//trim(name)//'''; known solvers:'//list)
       end select
    end subroutine new_linear_solver
-
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: u
-      integer :: i
-      u = s
-      do i = 1, len(s)
-         if (s(i:i) >= 'a' .and. s(i:i) <= 'z') u(i:i) = achar(iachar(s(i:i)) - 32)
-      end do
-   end function upper
 
 end module pecplas_linalg_solver

@@ -2,6 +2,7 @@
 !> Internal node and element numbers are dense (1..n); user ids are kept for messages.
 module pecplas_model_mesh
    use pecplas_kinds, only: wp
+   use pecplas_strings, only: same_name
    implicit none (type, external)
    private
 
@@ -104,19 +105,5 @@ contains
          if (same_name(this%edge_sets(i)%name, name)) k = i
       end do
    end function mesh_find_edge_set
-
-   pure logical function same_name(a, b)
-      character(len=*), intent(in) :: a, b
-      integer :: i, ca, cb
-      same_name = .false.
-      if (len_trim(a) /= len_trim(b)) return
-      do i = 1, len_trim(a)
-         ca = iachar(a(i:i)); cb = iachar(b(i:i))
-         if (ca >= 97 .and. ca <= 122) ca = ca - 32
-         if (cb >= 97 .and. cb <= 122) cb = cb - 32
-         if (ca /= cb) return
-      end do
-      same_name = .true.
-   end function same_name
 
 end module pecplas_model_mesh

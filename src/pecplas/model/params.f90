@@ -3,6 +3,7 @@
 module pecplas_model_params
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error
+   use pecplas_strings, only: upper
    implicit none (type, external)
    private
 
@@ -103,16 +104,5 @@ contains
          if (trim(this%keys(i)) == upper(key)) k = i
       end do
    end function find
-
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s
-      character(len=len_trim(s)) :: u
-      integer :: i, c
-      u = s(1:len_trim(s))
-      do i = 1, len(u)
-         c = iachar(u(i:i))
-         if (c >= 97 .and. c <= 122) u(i:i) = achar(c - 32)
-      end do
-   end function upper
 
 end module pecplas_model_params

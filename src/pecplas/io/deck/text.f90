@@ -2,6 +2,7 @@
 !> -2., .5 and nothing else), case folding and name lists for messages.
 module pecplas_io_deck_text
    use pecplas_kinds, only: wp
+   use pecplas_strings, only: upper, same_name
    implicit none (type, external)
    private
 
@@ -74,24 +75,6 @@ contains
       read (s(1:n), *, iostat=ios) value
       ok = ios == 0
    end subroutine parse_int
-
-   !> Upper-case copy without trailing blanks.
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s
-      character(len=len_trim(s)) :: u
-      integer :: i, c
-      u = s(1:len_trim(s))
-      do i = 1, len(u)
-         c = iachar(u(i:i))
-         if (c >= 97 .and. c <= 122) u(i:i) = achar(c - 32)
-      end do
-   end function upper
-
-   !> Case-insensitive name comparison (set, material and pattern names).
-   pure logical function same_name(a, b)
-      character(len=*), intent(in) :: a, b
-      same_name = upper(a) == upper(b)
-   end function same_name
 
    !> Appends ' name' to a blank-separated list used in messages.
    pure subroutine add_name(list, name)

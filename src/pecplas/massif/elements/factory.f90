@@ -6,6 +6,7 @@ module pecplas_massif_elements_factory
    use pecplas_massif_elements_t6, only: t6_element_t
    use pecplas_massif_elements_q4, only: q4_element_t
    use pecplas_massif_elements_q8, only: q8_element_t
+   use pecplas_strings, only: upper
    implicit none (type, external)
    private
 
@@ -59,15 +60,5 @@ contains
          nnode = 0
       end select
    end function massif_element_nnode
-
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: u
-      integer :: i
-      u = s
-      do i = 1, len(s)
-         if (s(i:i) >= 'a' .and. s(i:i) <= 'z') u(i:i) = achar(iachar(s(i:i)) - 32)
-      end do
-   end function upper
 
 end module pecplas_massif_elements_factory

@@ -9,6 +9,7 @@ module pecplas_massif_materials_factory
    use pecplas_model_params, only: params_t
    use pecplas_massif_materials_type, only: material_t
    use pecplas_massif_materials_elastic, only: elastic_t, new_elastic
+   use pecplas_strings, only: upper
    implicit none (type, external)
    private
 
@@ -154,16 +155,5 @@ contains
          if (registry%entries(i)%name == upper(name)) k = i
       end do
    end function find
-
-   pure function upper(s) result(u)
-      character(len=*), intent(in) :: s
-      character(len=len_trim(adjustl(s))) :: u
-      integer :: i, c
-      u = trim(adjustl(s))
-      do i = 1, len(u)
-         c = iachar(u(i:i))
-         if (c >= 97 .and. c <= 122) u(i:i) = achar(c - 32)
-      end do
-   end function upper
 
 end module pecplas_massif_materials_factory
