@@ -38,6 +38,7 @@ deps:
 	@bash tools/install_deps.sh
 
 build: deps
+	@rm -f build/gfortran_*/app/*   # fpm 0.12 may skip a relink when only library objects changed
 	$(FPM) build --profile release
 
 run: build

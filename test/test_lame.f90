@@ -117,6 +117,8 @@ contains
       real(wp) :: l2, eu, eh
       call solve_lame(etype, axi, 8, l2, eu, eh, error)
       if (allocated(error)) return
+      write (*, '(a,2es10.3)') '        '//etype//merge(' axi  ', ' plane', axi)// &
+         ' 8x8: max relative error u_r, hoop', eu, eh
       call check_close(error, eu, 0.0_wp, 0.0_wp, etype//' u_r relative error <= 0.5%', atol=5.0e-3_wp)
       if (allocated(error)) return
       call check_close(error, eh, 0.0_wp, 0.0_wp, etype//' hoop relative error <= 0.5%', atol=5.0e-3_wp)
