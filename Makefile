@@ -38,7 +38,7 @@ deps:
 	@bash tools/install_deps.sh
 
 build: deps
-	@rm -f build/gfortran_*/app/*   # fpm 0.12 may skip a relink when only library objects changed
+	@bash tools/fpm_fresh.sh
 	$(FPM) build --profile release
 
 run: build

@@ -31,9 +31,7 @@ note() {  # note OK|FAIL TEXT: one line of the final summary
 
 # ---- 1. fpm test ----
 stage "fpm test --profile debug --flag '$FPM_TEST_FLAGS'"
-# fpm 0.12 can skip relinking an executable whose objects changed while its main file did
-# not: remove the linked programs so they are always relinked from the current objects.
-rm -f build/gfortran_*/test/* build/gfortran_*/app/*
+bash tools/fpm_fresh.sh
 "$FPM" test --profile debug --flag "$FPM_TEST_FLAGS" 2>&1 | tee "$logdir/fpm.log"
 rc=${PIPESTATUS[0]}
 line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$logdir/fpm.log" | tail -n 1)
