@@ -6,6 +6,7 @@ module pecplas_driver_increments
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error, run_error, ERR_SINGULAR, ERR_RUN
    use pecplas_model, only: model_t
+   use pecplas_model_loads, only: step_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_stiffness, only: factorise_stiffness
    use pecplas_driver_output, only: write_increment, progress_line
@@ -31,13 +32,18 @@ contains
       real(wp), allocatable :: f0(:), ftarget(:), factors(:), fint_conv(:, :), u(:, :)
       real(wp), allocatable :: fint(:, :), reaction(:, :)
       real(wp) :: tau, dt, dt0, residual, t_start, t_now, t_out
+      !> Secant stiffness of the first loaded increment, the last converged and the last
+      !> failed one (current stiffness parameter = k / k_first, Bergan).
+      real(wp) :: k_first, k_conv, k_fail
       integer :: istep, inc_in_step, iters, level
-      logical :: converged, last
+      logical :: converged, last, blowup
       character(len=160) :: buf
 
       call cpu_time(t_start)
       status = 'completed'; message = 'all steps completed'
-      allocate (fint_conv(2, model%mesh%nnode()), source=0.0_wp)
+      k_first = 0.0_wp; k_conv = 0.0_wp
+      ! the initial stresses are in equilibrium with their own nodal forces
+      fint_conv = problem%initial_force
       do istep = 1, size(model%steps)
          associate (step => model%steps(istep))
             f0 = problem%state%factors
@@ -49,7 +55,7 @@ contains
                dt = min(dt, 1.0_wp - tau)
                factors = f0 + (ftarget - f0)*(tau + dt)
                call solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
-                  converged, iters, residual, error)
+                  converged, blowup, iters, residual, error)
                if (allocated(error)) then
                   if (error%kind /= ERR_RUN) return
                   deallocate (error)
@@ -57,13 +63,11 @@ contains
                end if
                problem%iterations = problem%iterations + iters
                if (.not. converged) then
+                  k_fail = secant_stiffness(problem, problem%state%factors, factors, u)
                   call problem%state%rollback()
                   if (level >= model%solver%max_cuts) then
-                     status = 'diverged'
-                     write (buf, '(a,i0,a,a,a,f6.4,a,i0,a)') 'step ', istep, ' (', step%name, &
-                        ') did not converge at step fraction ', tau + dt, ' after ', level, &
-                        ' increment cuts; last converged state kept in the results file'
-                     message = trim(buf)
+                     call stop_reason(model, step, istep, f0, ftarget, tau, tau + dt, level, &
+                        blowup, stiffness_ratio(k_first, k_conv, k_fail), status, message)
                      return
                   end if
                   level = level + 1
@@ -73,6 +77,8 @@ contains
                      dt, ' of the step'
                   cycle
                end if
+               k_conv = secant_stiffness(problem, problem%state%factors, factors, u)
+               if (k_first == 0.0_wp) k_first = k_conv
                tau = tau + dt
                inc_in_step = inc_in_step + 1
                problem%increments = problem%increments + 1
@@ -101,12 +107,13 @@ contains
    !> One increment to the pattern `factors`: imposes the displacement patterns, iterates
    !> on the free equations until ||FR|| <= tol * max(||F_ext||, ||reactions||).
    subroutine solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
-         converged, iters, residual, error)
+         converged, blowup, iters, residual, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       real(wp), intent(in) :: factors(:), fint_conv(:, :)
       real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
-      logical, intent(out) :: converged
+      !> converged: equilibrium found; blowup: the residual became non-finite.
+      logical, intent(out) :: converged, blowup
       integer, intent(out) :: iters
       real(wp), intent(out) :: residual
       type(error_t), allocatable, intent(out) :: error
@@ -116,7 +123,8 @@ contains
       logical :: newton
 
       newton = model%solver%method == 'NEWTON'
-      allocate (fext(2, size(fint_conv, 2)), up(2, size(fint_conv, 2)), source=0.0_wp)
+      fext = problem%initial_force
+      allocate (up(2, size(fint_conv, 2)), source=0.0_wp)
       do p = 1, size(factors)
          fext = fext + factors(p)*problem%pattern_force(:, :, p)
          up = up + factors(p)*problem%pattern_disp(:, :, p)
@@ -133,6 +141,7 @@ contains
       end if
       allocate (r(problem%dofs%neq), du(problem%dofs%neq), reaction(2, size(u, 2)))
       converged = .false.
+      blowup = .false.
       iters = 0
       do
          reaction = fint - fext
@@ -146,14 +155,18 @@ contains
             end do
          end do
          rnorm = norm2(r)
-         ref = max(norm2(pack(fext, problem%dofs%eq > 0)), norm2(reaction))
+         ! reference: the applied loads and reactions (not the initial-stress forces, which
+         ! would loosen the criterion); those only when nothing else acts
+         ref = max(norm2(pack(fext - problem%initial_force, problem%dofs%eq > 0)), norm2(reaction))
+         if (ref == 0.0_wp) ref = norm2(pack(problem%initial_force, problem%dofs%eq > 0))
          residual = 0.0_wp
          if (ref > 0.0_wp) residual = rnorm/ref
          if (rnorm <= model%solver%tolerance*ref .or. rnorm == 0.0_wp) then
             converged = .true.
             return
          end if
-         if (iters >= model%solver%max_iterations .or. .not. (rnorm < huge(1.0_wp))) return
+         blowup = .not. (rnorm < huge(1.0_wp))
+         if (iters >= model%solver%max_iterations .or. blowup) return
          if (newton .and. iters > 0) then
             call factorise_stiffness(model, problem, .true., error)
             if (allocated(error)) return
@@ -175,6 +188,79 @@ contains
          if (allocated(error)) return
       end do
    end subroutine solve_increment
+
+   !> Why a step stopped. Under force control (no imposed displacement changes in the step)
+   !> an increment that finds no equilibrium however small it is cut means the structure
+   !> cannot carry more load: a limit load, reported with the last converged load factors.
+   !> Under displacement control, or when the residual blows up, the run has diverged.
+   !> The stiffness must also have dropped: current stiffness parameter `sp` < 0.5 (an elastic
+   !> structure that fails to converge for another reason has sp = 1 and is 'diverged').
+   subroutine stop_reason(model, step, istep, f0, ftarget, tau_ok, tau_failed, cuts, blowup, &
+         sp, status, message)
+      type(model_t), intent(in) :: model
+      type(step_t), intent(in) :: step
+      integer, intent(in) :: istep, cuts
+      real(wp), intent(in) :: f0(:), ftarget(:), tau_ok, tau_failed, sp
+      logical, intent(in) :: blowup
+      character(len=:), allocatable, intent(out) :: status, message
+      character(len=400) :: buf
+      logical :: force_control
+      integer :: p
+      force_control = .true.
+      do p = 1, size(f0)
+         if (model%patterns(p)%kind == 'DISPLACEMENT' .and. ftarget(p) /= f0(p)) &
+            force_control = .false.
+      end do
+      if (force_control .and. .not. blowup .and. sp < 0.5_wp) then
+         status = 'limit load'
+         write (buf, '(a,i0,a,a,a,f6.4,a,f6.4,a,i0,a,es9.2,a)') 'limit load in step ', istep, &
+            ' (', step%name, '): equilibrium holds up to step fraction ', tau_ok, &
+            ' but not at ', tau_failed, ' (', cuts, ' increment cuts, current stiffness '// &
+            'parameter ', sp, '); load factors at the limit:'
+         message = trim(buf)
+         do p = 1, size(f0)
+            if (ftarget(p) == f0(p)) cycle
+            write (buf, '(a,a,a,g0.6)') ' ', model%patterns(p)%name, ' = ', &
+               f0(p) + (ftarget(p) - f0(p))*tau_ok
+            message = message//trim(buf)
+         end do
+      else
+         status = 'diverged'
+         write (buf, '(a,i0,a,a,a,f6.4,a,i0,a,es9.2,a)') 'step ', istep, ' (', step%name, &
+            ') did not converge at step fraction ', tau_failed, ' after ', cuts, &
+            ' increment cuts (current stiffness parameter ', sp, ')'
+         message = trim(buf)
+         if (blowup) message = message//' (the residual became infinite or NaN)'
+      end if
+      message = message//'; last converged state kept in the results file'
+   end subroutine stop_reason
+
+   !> Secant stiffness |df|^2 / (df . du) of an increment from factors `fa` to `fb` with
+   !> trial displacements `u` (free equations, force patterns); 0 when no force changes.
+   real(wp) function secant_stiffness(problem, fa, fb, u) result(k)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: fa(:), fb(:), u(:, :)
+      real(wp) :: df(2, size(u, 2)), num, den
+      integer :: p
+      df = 0.0_wp
+      do p = 1, size(fa)
+         if (fb(p) /= fa(p)) df = df + (fb(p) - fa(p))*problem%pattern_force(:, :, p)
+      end do
+      where (problem%dofs%eq == 0) df = 0.0_wp
+      num = sum(df**2)
+      den = sum(df*(u - problem%state%u))
+      k = 0.0_wp
+      if (num > 0.0_wp) k = num/max(den, tiny(1.0_wp))
+   end function secant_stiffness
+
+   !> Current stiffness parameter min(k_conv, k_fail) / k_first (1 when unknown).
+   pure real(wp) function stiffness_ratio(k_first, k_conv, k_fail) result(sp)
+      real(wp), intent(in) :: k_first, k_conv, k_fail
+      sp = 1.0_wp
+      if (k_first <= 0.0_wp) return
+      if (k_conv > 0.0_wp) sp = min(sp, k_conv/k_first)
+      if (k_fail > 0.0_wp) sp = min(sp, k_fail/k_first)
+   end function stiffness_ratio
 
    !> A material that cannot return (e.g. a failed local iteration) cuts the increment.
    subroutine as_run_error(error)

@@ -6,6 +6,7 @@ module pecplas_model
    use pecplas_model_options, only: analysis_t, solver_options_t, output_options_t
    use pecplas_massif_materials_type, only: material_box_t
    use pecplas_model_joints, only: joint_set_t
+   use pecplas_model_initial, only: initial_stress_t
    use pecjoin_laws_type, only: interface_law_box_t
    implicit none (type, external)
    private
@@ -25,6 +26,8 @@ module pecplas_model
       type(interface_law_box_t), allocatable :: laws(:)
       type(joint_set_t), allocatable :: joint_sets(:)
       type(support_t) :: supports
+      !> Initial stresses (*INITIAL_STRESS), applied in order (later entries overwrite).
+      type(initial_stress_t), allocatable :: initial_stresses(:)
       type(load_pattern_t), allocatable :: patterns(:)
       type(step_t), allocatable :: steps(:)
       type(solver_options_t) :: solver

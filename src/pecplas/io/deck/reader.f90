@@ -15,6 +15,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_reader_options, only: read_text, read_analysis, read_solver, &
       read_output, read_step
    use pecplas_io_deck_resolve_mesh, only: build_mesh
+   use pecplas_io_deck_reader_initial, only: read_initial_stress, resolve_initial_stress
    use pecplas_io_deck_resolve_loads, only: resolve_supports, resolve_patterns, resolve_steps
    use pecplas_massif_materials_factory, only: material_registry_t, default_material_registry
    use pecplas_model, only: model_t
@@ -24,9 +25,10 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(17) = [character(len=10) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(18) = [character(len=15) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
-      '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT']
+      '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
+      '*INITIAL_STRESS']
 
 contains
 
@@ -91,6 +93,8 @@ contains
       call resolve_patterns(state, model, error)
       if (allocated(error)) return
       call resolve_steps(state, model, error)
+      if (allocated(error)) return
+      call resolve_initial_stress(state, model, error)
    end subroutine read_deck_with
 
    !> Hands one keyword block to its handler.
@@ -141,6 +145,8 @@ contains
       case ('*OUTPUT')
          call no_data(state, block, error)
          if (.not. allocated(error)) call read_output(state, model, block, error)
+      case ('*INITIAL_STRESS')
+         call read_initial_stress(state, model, block, error)
       case default
          list = ''
          do i = 1, size(KNOWN_KEYWORDS)
