@@ -3,7 +3,7 @@
 !> a linear flow direction and a brittle tension cut-off, integrated exactly in one step.
 !>
 !>     f(sigma) = |tau| - sigma_n mu_f - c              (I.11 with mu_f = tan(phi))
-!>     d eps^p = dlambda m,  m = (-mu_g, sign(tau))       (g = |tau| - sigma_n mu_g, mu_g = tan(psi))
+!>     d eps^p = dlambda m,  m = (-mu_g, sign(tau))    (g = |tau| - sigma_n mu_g, mu_g = tan(psi))
 !>
 !> Signs (pecjoin_laws_type): eps_n closure positive, sigma_n compression positive, so the
 !> plastic normal displacement d eps_n^p = -mu_g dlambda <= 0 is a dilation and, with
@@ -35,7 +35,7 @@ module pecjoin_laws_coulomb
    implicit none (type, external)
    private
 
-   public :: coulomb_law_t, coulomb_update
+   public :: coulomb_law_t, coulomb_update, plastic_slip
    public :: ST_SLIP, ST_OPEN, ST_GAP, ST_BROKEN, ST_EPS_NP, ST_EPS_TP, NSTATE_COULOMB
    public :: COULOMB_STATE_NAMES
 
@@ -137,6 +137,18 @@ contains
       call contact_step(this, s0, de, state, sigma, local, mode)
       tangent = matmul(local, jac)
    end subroutine coulomb_update
+
+   !> Accumulated plastic slip sum |d eps_t^p| of a point with history `state` (what the
+   !> results report): state(ST_SLIP) for the Coulomb-family laws, 0 for laws without one.
+   pure real(wp) function plastic_slip(law, state) result(slip)
+      class(interface_law_t), intent(in) :: law
+      real(wp), intent(in) :: state(:)
+      slip = 0.0_wp
+      select type (law)
+      class is (coulomb_law_t)
+         slip = state(ST_SLIP)
+      end select
+   end function plastic_slip
 
    !> Elastic trial, exact return on the cone side, separation check (module header).
    subroutine contact_step(this, s0, de, state, sigma, tangent, mode)

@@ -13,12 +13,12 @@ module pecjoin_path_driver
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, run_error
    use pecjoin_laws_type, only: interface_law_t, MODE_STICK
-   use pecjoin_laws_coulomb, only: coulomb_law_t, ST_SLIP
+   use pecjoin_laws_coulomb, only: plastic_slip
    use pecjoin_path_deck, only: PATH_CNL, PATH_CND, PATH_CNS, PATH_NAMES
    implicit none (type, external)
    private
 
-   public :: path_result_t, run_path, path_increment, plastic_slip
+   public :: path_result_t, run_path, path_increment
 
    !> Relative tolerance of the normal condition and the iteration limit.
    real(wp), parameter :: TOL = 1.0e-10_wp
@@ -116,18 +116,6 @@ contains
       end if
       state = trial_state
    end subroutine path_increment
-
-   !> Accumulated plastic slip of a point: state(ST_SLIP) of the Coulomb-family laws, 0 for
-   !> laws without one (elastic).
-   pure real(wp) function plastic_slip(law, state) result(slip)
-      class(interface_law_t), intent(in) :: law
-      real(wp), intent(in) :: state(:)
-      slip = 0.0_wp
-      select type (law)
-      class is (coulomb_law_t)
-         slip = state(ST_SLIP)
-      end select
-   end function plastic_slip
 
    subroutine record(res, k, eps, sigma, mode, slip)
       type(path_result_t), intent(inout) :: res
