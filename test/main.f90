@@ -19,6 +19,10 @@ program tester
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
    use test_massif_materials_factory, only: collect_massif_materials_factory
+   use test_pecjoin_laws, only: collect_pecjoin_laws
+   use test_pecjoin_laws_mc, only: collect_pecjoin_laws_mc
+   use test_pecjoin_laws_tangent, only: collect_pecjoin_laws_tangent
+   use test_pecjoin_path, only: collect_pecjoin_path
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -44,6 +48,10 @@ program tester
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]
    suites = [suites, new_testsuite('io_deck_errors', collect_io_deck_errors)]
    suites = [suites, new_testsuite('massif_materials_factory', collect_massif_materials_factory)]
+   suites = [suites, new_testsuite('pecjoin_laws', collect_pecjoin_laws)]
+   suites = [suites, new_testsuite('pecjoin_laws_mc', collect_pecjoin_laws_mc)]
+   suites = [suites, new_testsuite('pecjoin_laws_tangent', collect_pecjoin_laws_tangent)]
+   suites = [suites, new_testsuite('pecjoin_path', collect_pecjoin_path)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
