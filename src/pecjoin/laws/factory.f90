@@ -8,14 +8,11 @@ module pecjoin_laws_factory
    use pecplas_model_params, only: params_t
    use pecjoin_laws_type, only: interface_law_t
    use pecjoin_laws_elastic, only: build_elastic_law
-<<<<<<< HEAD
    use pecplas_strings, only: upper
-=======
    use pecjoin_laws_goodman, only: build_goodman_law
    use pecjoin_laws_spring, only: build_spring_law
    use pecjoin_laws_ghaboussi, only: build_ghaboussi_law
    use pecjoin_laws_mohr_coulomb, only: build_mohr_coulomb_law
->>>>>>> laws
    implicit none (type, external)
    private
 
