@@ -45,19 +45,48 @@ contains
             r%set_fields(s)%stress = problem%state%sets(s)%stress
             r%set_fields(s)%strain = problem%state%sets(s)%strain
          end do
+         call joint_fields(problem, r)
       end if
       call results%write_increment(r, error)
    end subroutine write_increment
 
-   !> One line per converged increment: step, increment, step fraction, iterations, residual.
+   !> Converged joint fields of every joint set.
+   subroutine joint_fields(problem, r)
+      type(problem_t), intent(in) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s
+      associate (js => problem%state%joints)
+         if (.not. allocated(js%sets)) return
+         allocate (r%joint_fields(size(js%sets)))
+         do s = 1, size(js%sets)
+            r%joint_fields(s)%eps = js%sets(s)%eps
+            r%joint_fields(s)%sigma = js%sets(s)%sigma
+            r%joint_fields(s)%slip = js%sets(s)%slip
+            r%joint_fields(s)%mode = js%sets(s)%mode
+            r%joint_fields(s)%state = js%sets(s)%hist
+         end do
+      end associate
+   end subroutine joint_fields
+
+   !> One line per converged increment: step, increment, step fraction, iterations, residual
+   !> (and, with joints, the number of joint points in slip and in separation).
    subroutine progress_line(model, problem, istep, inc, tau, iters, residual)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       integer, intent(in) :: istep, inc, iters
       real(wp), intent(in) :: tau, residual
-      write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3)') ' step', istep, &
+      character(len=40) :: joints
+      integer :: nslip, nopen
+      joints = ''
+      if (allocated(model%joint_sets)) then
+         if (size(model%joint_sets) > 0) then
+            call problem%state%joints%count_modes(nslip, nopen)
+            write (joints, '(a,i0,a,i0)') '  slip ', nslip, ' open ', nopen
+         end if
+      end if
+      write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
-         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u))
+         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)
    end subroutine progress_line
 
 end module pecplas_driver_output

@@ -17,6 +17,9 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_resolve_mesh, only: build_mesh
    use pecplas_io_deck_resolve_loads, only: resolve_supports, resolve_patterns, resolve_steps
    use pecplas_massif_materials_factory, only: material_registry_t, default_material_registry
+   use pecplas_io_deck_reader_joints, only: read_interface_law, read_joints
+   use pecplas_io_deck_resolve_joints, only: resolve_joints
+   use pecjoin_laws_factory, only: law_registry_t, default_law_registry
    use pecplas_model, only: model_t
    implicit none (type, external)
    private
@@ -24,9 +27,10 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(17) = [character(len=10) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(19) = [character(len=15) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
-      '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT']
+      '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
+      '*INTERFACE_LAW', '*JOINTS']
 
 contains
 
@@ -38,17 +42,24 @@ contains
       call read_deck_with(path, default_material_registry(), model, error)
    end subroutine read_deck
 
-   !> Same as read_deck, with the material types of `registry` (user materials).
-   subroutine read_deck_with(path, registry, model, error)
+   !> Same as read_deck, with the material types of `registry` (user materials) and the
+   !> interface law types of `laws` (user laws; default: the built-in ones).
+   subroutine read_deck_with(path, registry, model, error, laws)
       character(len=*), intent(in) :: path
       type(material_registry_t), intent(in) :: registry
       type(model_t), intent(out) :: model
       type(error_t), allocatable, intent(out) :: error
+      type(law_registry_t), intent(in), optional :: laws
       type(deck_state_t) :: state
       type(deck_block_t) :: block
       integer :: i, j, n
 
       state%registry = registry
+      if (present(laws)) then
+         state%laws = laws
+      else
+         state%laws = default_law_registry()
+      end if
       model%deck_file = path
       model%solver%linear = 'AUTO'
       model%solver%method = 'MODIFIED_NEWTON'
@@ -91,6 +102,9 @@ contains
       call resolve_patterns(state, model, error)
       if (allocated(error)) return
       call resolve_steps(state, model, error)
+      if (allocated(error)) return
+      ! last: splitting nodes for generated joints extends supports and patterns
+      call resolve_joints(state, model, error)
    end subroutine read_deck_with
 
    !> Hands one keyword block to its handler.
@@ -141,6 +155,10 @@ contains
       case ('*OUTPUT')
          call no_data(state, block, error)
          if (.not. allocated(error)) call read_output(state, model, block, error)
+      case ('*INTERFACE_LAW')
+         call read_interface_law(state, model, block, error)
+      case ('*JOINTS')
+         call read_joints(state, block, error)
       case default
          list = ''
          do i = 1, size(KNOWN_KEYWORDS)
