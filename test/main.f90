@@ -18,6 +18,9 @@ program tester
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
    use test_massif_materials_factory, only: collect_massif_materials_factory
+   use test_pecjoin_elements, only: collect_pecjoin_elements
+   use test_pecjoin_patch, only: collect_pecjoin_patch
+   use test_pecjoin_split, only: collect_pecjoin_split
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -42,6 +45,9 @@ program tester
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]
    suites = [suites, new_testsuite('io_deck_errors', collect_io_deck_errors)]
    suites = [suites, new_testsuite('massif_materials_factory', collect_massif_materials_factory)]
+   suites = [suites, new_testsuite('pecjoin_elements', collect_pecjoin_elements)]
+   suites = [suites, new_testsuite('pecjoin_patch', collect_pecjoin_patch)]
+   suites = [suites, new_testsuite('pecjoin_split', collect_pecjoin_split)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

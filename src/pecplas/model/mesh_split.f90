@@ -81,18 +81,19 @@ contains
          end do
       end associate
 
-      ! one duplicate per node that both bodies still share
+      ! one duplicate per node that both bodies still share, numbered in node order
       allocate (dupof(nn), source=0)
       maxid = maxval(mesh%node_id)
-      nnew = 0
       do f = 1, ne
          do k = 1, nen
-            v = face1(k, f)
-            if (face2(k, f) == v .and. dupof(v) == 0) then
-               nnew = nnew + 1
-               dupof(v) = nn + nnew
-            end if
+            if (face2(k, f) == face1(k, f)) dupof(face1(k, f)) = 1
          end do
+      end do
+      nnew = 0
+      do v = 1, nn
+         if (dupof(v) == 0) cycle
+         nnew = nnew + 1
+         dupof(v) = nn + nnew
       end do
       allocate (x(2, nn + nnew))
       x(:, 1:nn) = mesh%x
