@@ -21,6 +21,7 @@ program tester
    use test_pecjoin_elements, only: collect_pecjoin_elements
    use test_pecjoin_patch, only: collect_pecjoin_patch
    use test_pecjoin_split, only: collect_pecjoin_split
+   use test_pecjoin_deck, only: collect_pecjoin_deck
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -48,6 +49,7 @@ program tester
    suites = [suites, new_testsuite('pecjoin_elements', collect_pecjoin_elements)]
    suites = [suites, new_testsuite('pecjoin_patch', collect_pecjoin_patch)]
    suites = [suites, new_testsuite('pecjoin_split', collect_pecjoin_split)]
+   suites = [suites, new_testsuite('pecjoin_deck', collect_pecjoin_deck)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
