@@ -14,6 +14,7 @@ module test_pecjoin_patch
    use pecplas_driver_problem, only: problem_t
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check
+   use pecjoin_initial, only: initial_joint_stress
    implicit none (type, external)
    private
    public :: collect_pecjoin_patch, run_patch
@@ -35,6 +36,7 @@ contains
                new_unittest('lobatto_plane', test_lobatto), &
                new_unittest('inclined_30', test_inclined), &
                new_unittest('full_newton', test_newton), &
+               new_unittest('initial_stress_projection', test_initial), &
                new_unittest('results_file', test_results)]
    end subroutine collect_pecjoin_patch
 
@@ -136,6 +138,41 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call run_patch('patch_goodman6_newton.inp', P, 0.0_wp, error)
    end subroutine test_newton
+
+   !> Uniaxial massif stress sigma_yy = -P (what the patch test computes in both blocks).
+   function uniaxial(x) result(stress)
+      real(wp), intent(in) :: x(2)
+      real(wp) :: stress(4)
+      stress = [0.0_wp, -P, 0.0_wp, 0.0_wp] + 0.0_wp*x(1)
+   end function uniaxial
+
+   !> The initial-stress projection sigma_n = -n.sigma.n, tau = t.sigma.n of the massif
+   !> stress gives, at every point of the inclined joints, the stress the finite elements
+   !> compute in equilibrium with that massif stress (sign conventions agree).
+   subroutine test_initial(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), allocatable :: computed(:, :, :)
+      character(len=*), parameter :: types(4) = [character(len=10) :: 'spring', 'goodman4', &
+         'goodman6', 'thin_layer']
+      integer :: k, code
+      call make_directories(DIR)
+      do k = 1, 4
+         code = run_deck(DATA//'patch_'//trim(types(k))//'_inclined.inp', DIR//'/init.h5', &
+            .true., model, problem)
+         call check(error, code == 0, trim(types(k))//' inclined runs')
+         if (allocated(error)) return
+         computed = problem%state%joints%sets(1)%sigma
+         call initial_joint_stress(model, problem%state%joints, uniaxial, error)
+         if (allocated(error)) return
+         call check(error, maxval(abs(problem%state%joints%sets(1)%sigma - computed)) <= &
+            RTOL*P .and. all(problem%state%joints%sets(1)%sigma_trial == &
+            problem%state%joints%sets(1)%sigma), trim(types(k))// &
+            ': projected initial stress = computed joint stress')
+         if (allocated(error)) return
+      end do
+   end subroutine test_initial
 
    !> The joint datasets of the results file equal the final state; the checker passes.
    subroutine test_results(error)
