@@ -22,6 +22,10 @@ program tester
    use test_pecjoin_patch, only: collect_pecjoin_patch
    use test_pecjoin_split, only: collect_pecjoin_split
    use test_pecjoin_deck, only: collect_pecjoin_deck
+   use test_pecjoin_laws, only: collect_pecjoin_laws
+   use test_pecjoin_laws_mc, only: collect_pecjoin_laws_mc
+   use test_pecjoin_laws_tangent, only: collect_pecjoin_laws_tangent
+   use test_pecjoin_path, only: collect_pecjoin_path
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -50,6 +54,10 @@ program tester
    suites = [suites, new_testsuite('pecjoin_patch', collect_pecjoin_patch)]
    suites = [suites, new_testsuite('pecjoin_split', collect_pecjoin_split)]
    suites = [suites, new_testsuite('pecjoin_deck', collect_pecjoin_deck)]
+   suites = [suites, new_testsuite('pecjoin_laws', collect_pecjoin_laws)]
+   suites = [suites, new_testsuite('pecjoin_laws_mc', collect_pecjoin_laws_mc)]
+   suites = [suites, new_testsuite('pecjoin_laws_tangent', collect_pecjoin_laws_tangent)]
+   suites = [suites, new_testsuite('pecjoin_path', collect_pecjoin_path)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -8,6 +8,10 @@ module pecjoin_laws_factory
    use pecplas_model_params, only: params_t
    use pecjoin_laws_type, only: interface_law_t
    use pecjoin_laws_elastic, only: build_elastic_law
+   use pecjoin_laws_goodman, only: build_goodman_law
+   use pecjoin_laws_spring, only: build_spring_law
+   use pecjoin_laws_ghaboussi, only: build_ghaboussi_law
+   use pecjoin_laws_mohr_coulomb, only: build_mohr_coulomb_law
    implicit none (type, external)
    private
 
@@ -44,6 +48,10 @@ contains
       type(law_registry_t) :: registry
       allocate (registry%entries(0))
       call registry%register('ELASTIC', build_elastic_law)
+      call registry%register('GOODMAN', build_goodman_law)
+      call registry%register('SPRING', build_spring_law)
+      call registry%register('GHABOUSSI', build_ghaboussi_law)
+      call registry%register('MOHR_COULOMB', build_mohr_coulomb_law)
    end function default_law_registry
 
    subroutine register_law(registry, name, builder)

@@ -1,0 +1,147 @@
+!> The command `pecplas-path DECK [-o BASE] [--quiet]`: reads a path deck, runs the law on
+!> the path and writes BASE.csv and BASE.h5 (default: the deck's *OUTPUT file, else
+!> output/<deck>). Exit codes as `pecplas`: 0 done, 2 input error (file:line message),
+!> 3 path stopped early (the converged rows are written), 1 internal error.
+module pecjoin_path_cli
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL
+   use pecplas_version, only: VERSION
+   use pecplas_files, only: make_directories, path_stem, path_dir
+   use pecjoin_laws_type, only: MODE_NAMES
+   use pecjoin_path_deck, only: path_deck_t, read_path_deck, PATH_NAMES
+   use pecjoin_path_driver, only: path_result_t, run_path
+   use pecjoin_path_writers, only: write_path_csv, write_path_h5
+   implicit none (type, external)
+   private
+
+   public :: path_main, run_path_deck
+
+   character(len=*), parameter :: USAGE = 'usage: pecplas-path DECK [-o BASE] [--quiet]'
+
+contains
+
+   !> Runs the command for the words `args`; returns the exit code.
+   integer function path_main(args) result(code)
+      character(len=*), intent(in) :: args(:)
+      character(len=:), allocatable :: deck, base
+      type(path_result_t) :: res
+      logical :: quiet
+      integer :: i
+      quiet = .false.
+      deck = ''
+      base = ''
+      i = 0
+      do while (i < size(args))
+         i = i + 1
+         select case (trim(args(i)))
+         case ('--quiet', '-q')
+            quiet = .true.
+         case ('-o', '--output')
+            if (i == size(args)) then
+               code = fail(EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
+               return
+            end if
+            i = i + 1
+            base = trim(args(i))
+         case ('--help', '-h')
+            write (*, '(a)') USAGE
+            write (*, '(a)') '  Integrates one interface law on a CNL/CND/CNS path and '// &
+               'writes BASE.csv and BASE.h5'
+            write (*, '(a)') '  (default: the *OUTPUT file of the deck, else output/<deck>).'
+            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 path stopped early.'
+            code = EXIT_OK
+            return
+         case ('--version')
+            write (*, '(a)') 'pecplas-path '//VERSION
+            code = EXIT_OK
+            return
+         case default
+            if (args(i)(1:1) == '-') then
+               code = fail(EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
+               return
+            end if
+            if (len(deck) > 0) then
+               code = fail(EXIT_INPUT, 'only one deck may be given. '//USAGE)
+               return
+            end if
+            deck = trim(args(i))
+         end select
+      end do
+      if (len(deck) == 0) then
+         code = fail(EXIT_INPUT, 'no deck given. '//USAGE)
+         return
+      end if
+      code = run_path_deck(deck, base, quiet, res)
+   end function path_main
+
+   !> Runs the path deck `deck`, writing `base_in`.csv/.h5 (empty: *OUTPUT or
+   !> output/<deck>); returns the exit code and the rows computed (for tests).
+   integer function run_path_deck(deck, base_in, quiet, res) result(code)
+      character(len=*), intent(in) :: deck, base_in
+      logical, intent(in) :: quiet
+      type(path_result_t), intent(out) :: res
+      type(path_deck_t) :: d
+      type(error_t), allocatable :: error, run_err
+      character(len=:), allocatable :: base
+      integer :: n
+
+      call read_path_deck(deck, d, error)
+      if (allocated(error)) then
+         code = fail(error%exit_code(), error%text())
+         return
+      end if
+      base = base_in
+      if (len(base) == 0) base = d%output
+      if (len(base) == 0) base = 'output/'//path_stem(deck)
+      call make_directories(path_dir(base))
+      if (.not. quiet) write (*, '(a)') 'pecplas-path '//VERSION//'  deck '//deck//'  ->  '// &
+         base//'.csv, '//base//'.h5'
+      if (.not. quiet) write (*, '(a,i0,a,i0,a)') ' law '//d%law%name//' ('//d%law_type// &
+         ')   path '//PATH_NAMES(d%control)//'  sigma_n0 '//num(d%sigma_n0)//'  targets ', &
+         size(d%targets), '  x ', d%steps, ' increments'
+
+      call run_path(d%law, d%control, [d%sigma_n0, d%tau0], d%ks, d%targets, d%steps, res, &
+         run_err)
+      call write_path_csv(base//'.csv', res, error)
+      if (.not. allocated(error)) call write_path_h5(base//'.h5', d, res, VERSION, error)
+      if (allocated(error)) then
+         code = fail(EXIT_INTERNAL, 'cannot write results: '//error%text())
+         return
+      end if
+      n = ubound(res%step, 1)
+      if (allocated(run_err)) then
+         code = fail(EXIT_STOPPED, 'path stopped after increment '//itoa(n)//': '// &
+            run_err%text())
+         return
+      end if
+      if (.not. quiet) write (*, '(a)') ' done: '//itoa(n)//' increments, '// &
+         itoa(res%iterations)//' law updates; final sigma_n '//num(res%sigma_n(n))// &
+         '  tau '//num(res%tau(n))//'  eps_n '//num(res%eps_n(n))//'  mode '// &
+         trim(MODE_NAMES(res%mode(n)))
+      code = EXIT_OK
+   end function run_path_deck
+
+   integer function fail(code, text)
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: text
+      write (0, '(a)') 'pecplas-path: error: '//text
+      fail = code
+   end function fail
+
+   function num(x) result(s)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+      write (buf, '(g0.8)') x
+      s = trim(adjustl(buf))
+   end function num
+
+   function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function itoa
+
+end module pecjoin_path_cli
