@@ -47,7 +47,7 @@ contains
                st%npoint = np
                st%nstate = ns
                allocate (st%eps(2, np, nel), st%sigma(2, np, nel), source=0.0_wp)
-               allocate (st%hist(ns, np, nel), st%slip(np, nel), source=0.0_wp)
+               allocate (st%hist(ns, np, nel), source=0.0_wp)
                allocate (st%mode(np, nel), source=MODE_STICK)
                do e = 1, nel
                   do ip = 1, np
@@ -57,7 +57,6 @@ contains
                allocate (st%eps_trial, source=st%eps)
                allocate (st%sigma_trial, source=st%sigma)
                allocate (st%hist_trial, source=st%hist)
-               allocate (st%slip_trial, source=st%slip)
                allocate (st%mode_trial, source=st%mode)
                allocate (st%tangent(2, 2, np, nel))
             end associate
@@ -130,8 +129,8 @@ contains
    end subroutine add_joint_stiffness
 
    !> Adds the joint internal forces for the trial displacements `u` to fint(2, nnode),
-   !> updating the trial stress, strain, history, mode, slip and tangent of every point
-   !> from the converged state.
+   !> updating the trial stress, strain, history, mode and tangent of every point from the
+   !> converged state.
    subroutine add_joint_forces(model, u, jstate, fint, error)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: u(:, :)
@@ -141,7 +140,7 @@ contains
       class(joint_element_t), allocatable :: elem
       type(joint_point_t), allocatable :: pts(:)
       real(wp), allocatable :: ue(:), fe(:)
-      real(wp) :: eps(2), deps(2), ce(2, 2)
+      real(wp) :: eps(2), deps(2)
       integer :: s, e, ip, nd, j
       if (.not. allocated(model%joint_sets)) return
       do s = 1, size(model%joint_sets)
@@ -168,11 +167,6 @@ contains
                      return
                   end if
                   st%eps_trial(:, ip, e) = eps
-                  ! irreversible tangential displacement: what the elastic part does not hold
-                  call law%elastic_tangent(st%hist(:, ip, e), ce)
-                  st%slip_trial(ip, e) = st%slip(ip, e)
-                  if (ce(2, 2) > 0.0_wp) st%slip_trial(ip, e) = st%slip(ip, e) + deps(2) - &
-                     (st%sigma_trial(2, ip, e) - st%sigma(2, ip, e))/ce(2, 2)
                   call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
                end do
                do j = 1, size(set%conn, 1)

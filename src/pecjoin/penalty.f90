@@ -1,8 +1,8 @@
 !> Default penalty stiffness of the laws that enforce continuity with springs (Frank,
-!> SPEC §4.2): K = 1e5 E_ryg R_max, R_max the largest diagonal term of the massif stiffness
-!> (a force per displacement). Laws take stiffness per unit area (they map a relative
-!> displacement to a stress), so K is divided by the mean measure (tributary) of the joint
-!> points that use the law.
+!> SPEC §4.2, (I.10)): K = 1e5 E_ryg R_max, R_max the largest diagonal term of the massif
+!> stiffness (a force per displacement). Laws take stiffness per unit measure (they map a
+!> relative displacement to a stress, the element multiplies by the tributary measure), so
+!> K is divided by the mean measure of the joint points that use the law.
 module pecjoin_penalty
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
@@ -14,34 +14,44 @@ module pecjoin_penalty
    use pecjoin_points, only: joint_set_element, joint_element_points
    use pecjoin_state, only: joint_state_t
    use pecjoin_assembly, only: reset_joint_tangents
+   use pecjoin_laws_spring, only: spring_law_t
    implicit none (type, external)
    private
 
-   public :: set_default_penalties, massif_rmax, mean_point_measure, PENALTY_FACTOR
-
-   !> Frank's factor: K = PENALTY_FACTOR * E_ryg * R_max.
-   real(wp), parameter :: PENALTY_FACTOR = 1.0e5_wp
+   public :: set_default_penalties, massif_rmax, mean_point_measure
 
 contains
 
-   !> Gives every law that asks for a default penalty its stiffness, then refreshes the
-   !> stored joint tangents. Called once after set-up, before the first factorisation.
+   !> Gives every law that asks for a default penalty (the spring / Frank law without KN or
+   !> KT) K = default_penalty(R_max) / mean measure of its points, then refreshes the stored
+   !> joint tangents. Called once after set-up, before the first factorisation. A law used by
+   !> no joint set keeps asking (it is never updated).
    subroutine set_default_penalties(model, rules, jstate, error)
       type(model_t), intent(inout) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       type(joint_state_t), intent(inout) :: jstate
       type(error_t), allocatable, intent(out) :: error
-      logical :: any_penalty
-      if (.not. allocated(model%laws)) return
-      ! Hook: the laws of the PECJOIN family that need a penalty (spring / Frank) say so
-      ! with `needs_penalty()` and take it with `set_penalty(kn, kt)`; until they are
-      ! merged no law asks, and nothing changes. With them, for each law i:
-      !    if (model%laws(i)%law%needs_penalty()) then
-      !       k = PENALTY_FACTOR*E_ryg*rmax/mean_point_measure(model, i)
-      !       call model%laws(i)%law%set_penalty(k, k)
-      any_penalty = .false.
-      if (.not. any_penalty) return
-      call reset_joint_tangents(model, jstate)
+      real(wp) :: rmax, mean, k
+      logical :: done
+      integer :: i
+      if (.not. (allocated(model%laws) .and. allocated(model%joint_sets))) return
+      done = .false.
+      rmax = -1.0_wp
+      do i = 1, size(model%laws)
+         select type (law => model%laws(i)%law)
+         class is (spring_law_t)
+            if (.not. law%needs_penalty) cycle
+            if (.not. any(model%joint_sets%law_index == i)) cycle
+            if (rmax < 0.0_wp) call massif_rmax(model, rules, rmax, error)
+            if (allocated(error)) return
+            call mean_point_measure(model, i, mean, error)
+            if (allocated(error)) return
+            k = law%default_penalty(rmax)/mean
+            call law%set_penalty(k, k)
+            done = .true.
+         end select
+      end do
+      if (done) call reset_joint_tangents(model, jstate)
    end subroutine set_default_penalties
 
    !> Largest diagonal term of the assembled elastic massif stiffness, over all dofs.

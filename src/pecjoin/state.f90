@@ -14,13 +14,11 @@ module pecjoin_state
    type :: joint_set_state_t
       integer :: npoint = 0, nstate = 0
       !> Converged law strain eps(2, np, nel), stress sigma(2, np, nel), history
-      !> hist(nstate, np, nel), contact mode(np, nel) and irreversible tangential
-      !> displacement slip(np, nel) (sum of d eps_t - d tau / K_t, K_t the elastic one).
-      real(wp), allocatable :: eps(:, :, :), sigma(:, :, :), hist(:, :, :), slip(:, :)
+      !> hist(nstate, np, nel) and contact mode(np, nel).
+      real(wp), allocatable :: eps(:, :, :), sigma(:, :, :), hist(:, :, :)
       integer, allocatable :: mode(:, :)
       !> Trial values of the current iterate.
       real(wp), allocatable :: eps_trial(:, :, :), sigma_trial(:, :, :), hist_trial(:, :, :)
-      real(wp), allocatable :: slip_trial(:, :)
       integer, allocatable :: mode_trial(:, :)
       !> Consistent tangent d sigma / d eps of the last trial update (2, 2, np, nel).
       real(wp), allocatable :: tangent(:, :, :, :)
@@ -47,7 +45,6 @@ contains
             st%eps = st%eps_trial
             st%sigma = st%sigma_trial
             st%hist = st%hist_trial
-            st%slip = st%slip_trial
             st%mode = st%mode_trial
          end associate
       end do
@@ -63,7 +60,6 @@ contains
             st%eps_trial = st%eps
             st%sigma_trial = st%sigma
             st%hist_trial = st%hist
-            st%slip_trial = st%slip
             st%mode_trial = st%mode
          end associate
       end do

@@ -6,6 +6,7 @@ module pecplas_driver_output
    use pecplas_driver_problem, only: problem_t
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: increment_result_t
+   use pecjoin_laws_coulomb, only: plastic_slip
    implicit none (type, external)
    private
 
@@ -45,25 +46,35 @@ contains
             r%set_fields(s)%stress = problem%state%sets(s)%stress
             r%set_fields(s)%strain = problem%state%sets(s)%strain
          end do
-         call joint_fields(problem, r)
+         call joint_fields(model, problem, r)
       end if
       call results%write_increment(r, error)
    end subroutine write_increment
 
-   !> Converged joint fields of every joint set.
-   subroutine joint_fields(problem, r)
+   !> Converged joint fields of every joint set; the plastic slip is the law's own
+   !> (pecjoin_laws_coulomb: plastic_slip, 0 for a law without one).
+   subroutine joint_fields(model, problem, r)
+      type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       type(increment_result_t), intent(inout) :: r
-      integer :: s
+      integer :: s, e, ip
       associate (js => problem%state%joints)
          if (.not. allocated(js%sets)) return
          allocate (r%joint_fields(size(js%sets)))
          do s = 1, size(js%sets)
-            r%joint_fields(s)%eps = js%sets(s)%eps
-            r%joint_fields(s)%sigma = js%sets(s)%sigma
-            r%joint_fields(s)%slip = js%sets(s)%slip
-            r%joint_fields(s)%mode = js%sets(s)%mode
-            r%joint_fields(s)%state = js%sets(s)%hist
+            associate (st => js%sets(s), f => r%joint_fields(s), &
+                       law => model%laws(model%joint_sets(s)%law_index)%law)
+               f%eps = st%eps
+               f%sigma = st%sigma
+               f%mode = st%mode
+               f%state = st%hist
+               allocate (f%slip(size(st%mode, 1), size(st%mode, 2)))
+               do e = 1, size(st%mode, 2)
+                  do ip = 1, size(st%mode, 1)
+                     f%slip(ip, e) = plastic_slip(law, st%hist(:, ip, e))
+                  end do
+               end do
+            end associate
          end do
       end associate
    end subroutine joint_fields

@@ -1,5 +1,6 @@
 !> Joint sets in the results file (PECJOIN):
-!>   /mesh/joint_sets/<set>  attributes name, etype, law, integration, thickness, mode_names
+!>   /mesh/joint_sets/<set>  attributes name, etype, law, integration, thickness, mode_names,
+!>        state_names (the law's history variables, when the law names them)
 !>        connectivity (npe, nel) 0-based in (B.8) order, element_ids (nel),
 !>        point_coordinates (2, np, nel), point_tangents (2, np, nel) (n = (-t_y, t_x)),
 !>        tributary (nel, springs only)
@@ -8,7 +9,7 @@
 !>                                            (strains, i.e. / thickness, for THIN_LAYER)
 !>        stress (2, np, nel)                 sigma_n (compression positive), tau
 !>        mode (np, nel)                      1 stick, 2 slip, 3 open
-!>        plastic_slip (np, nel)              irreversible tangential displacement
+!>        plastic_slip (np, nel)              the law's accumulated plastic slip (0 if none)
 !>        state (nstate, np, nel)             law history variables (when the law has any)
 !> Shapes are Fortran order (h5py sees them reversed).
 module pecplas_io_results_joints
@@ -20,6 +21,7 @@ module pecplas_io_results_joints
    use pecplas_io_results_increment, only: joint_fields_t, joint_points_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, safe_name, &
       increment_group
+   use pecjoin_laws_coulomb, only: coulomb_law_t, COULOMB_STATE_NAMES
    implicit none (type, external)
    private
 
@@ -101,6 +103,11 @@ contains
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
                call h5_write(g, 'tributary', set%tributary, error)
+            select type (law => model%laws(set%law_index)%law)
+            class is (coulomb_law_t)
+               if (.not. allocated(error)) call h5_attr(g, 'state_names', COULOMB_STATE_NAMES, &
+                  error)
+            end select
             call h5_close_group(g)
             if (allocated(error)) exit
          end associate
