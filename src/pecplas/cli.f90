@@ -159,6 +159,7 @@ contains
       type(problem_t), intent(in) :: problem
       character(len=*), intent(in) :: deck, outfile
       character(len=:), allocatable :: title, units
+      integer :: i
       title = '(untitled)'
       if (allocated(model%title)) title = model%title
       units = '(not stated)'
@@ -168,6 +169,13 @@ contains
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
          model%mesh%nelem(), '  equations ', problem%dofs%neq, '  steps ', size(model%steps), &
          '  solver ', linear_solver_name(model), ' / ', model%solver%method
+      if (.not. allocated(model%joint_sets)) return
+      do i = 1, size(model%joint_sets)
+         associate (js => model%joint_sets(i))
+            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%etype// &
+               ', law '//js%law
+         end associate
+      end do
    end subroutine banner
 
    subroutine summary(problem, status, message, outfile, cpu, wall, quiet)

@@ -59,7 +59,8 @@ def elements(order, ids, ncol=2):
     return out
 
 
-def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None, method=None):
+def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None, method=None,
+         law=None, extra="", note=None):
     x0, width = (1.0, 1.0) if axi else (0.0, 2.0)
     xc = x0 + 0.5 * width
     tan = math.tan(math.radians(angle))
@@ -92,8 +93,10 @@ def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None
         title += ", generated doublets"
     if angle:
         title += f", joint inclined at {angle:g} deg"
-    lines = ["** Written by make_patch_decks.py (see its docstring for the exact solution).",
-             "*TITLE", title, "*UNITS", "kN, m, kPa"]
+    lines = ["** Written by make_patch_decks.py (see its docstring for the exact solution)."]
+    if note:
+        lines += ["** " + note]
+    lines += ["*TITLE", title, "*UNITS", "kN, m, kPa"]
     if axi:
         lines += ["*ANALYSIS, TYPE=AXISYMMETRIC"]
     lines += ["*NODES"] + [f"{i}, {x:.15g}, {y:.15g}" for i, (x, y) in nodes]
@@ -104,8 +107,8 @@ def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None
     lines += ["*MATERIAL, NAME=soil", f"E = {E:g}, NU = {NU:g}",
               "*SECTION, SET=lower, MATERIAL=soil", "*SECTION, SET=upper, MATERIAL=soil"]
     kn, kt = (KN * THICK, KT * THICK) if jtype == "THIN_LAYER" else (KN, KT)
-    lines += ["*INTERFACE_LAW, NAME=contact, TYPE=ELASTIC", f"KN = {kn:g}, KT = {kt:g}"]
-    opts = f"*JOINTS, TYPE={jtype}, SET=joint, LAW=contact"
+    lines += law or ["*INTERFACE_LAW, NAME=contact, TYPE=ELASTIC", f"KN = {kn:g}, KT = {kt:g}"]
+    opts = f"*JOINTS, TYPE={jtype}, SET=joint, LAW=contact" + extra
     if integration:
         opts += f", INTEGRATION={integration}"
     if jtype == "THIN_LAYER":
@@ -175,6 +178,13 @@ def main():
         cases.append((f"patch_{jtype.lower()}_inclined.inp", deck(jtype, order=order, angle=30.0)))
     cases.append(("patch_goodman6_newton.inp", deck("GOODMAN6", generated=True, order=2,
                                                     method="NEWTON")))
+    cases.append(("patch_spring_inclined_angle.inp", deck(
+        "SPRING", angle=30.0, extra=", ANGLE=30",
+        note="Spring direction given (ANGLE=30) instead of taken from the joint edges.")))
+    cases.append(("penalty_spring_plane.inp", deck(
+        "SPRING", law=["*INTERFACE_LAW, NAME=contact, TYPE=SPRING", "PHI = 30, E_RYG = 0.5"],
+        note="Spring (Frank) law without KN, KT: default penalty 1e5 E_RYG R_max / (mean "
+             "tributary) at set-up, R_max = 2 (D11 + G) / 3 here.")))
     for name, text in cases:
         (HERE / name).write_text(text)
         print("wrote", name)
