@@ -222,10 +222,12 @@ contains
       end do
       if (n2 == 0) then
          call input_error(error, 'is not a side of an element of the SIDE body')
+      else if (n2 > 1) then
+         call input_error(error, 'lies inside the SIDE body (two of its elements share it)')
       else if (n1 == 0) then
          call input_error(error, 'has no element of another set on its other side: '// &
             'nothing to join')
-      else if (n1 > 1 .or. n2 > 1) then
+      else if (n1 > 1) then
          call input_error(error, 'is a side of more than two elements')
       end if
    end subroutine match_edge
