@@ -19,6 +19,11 @@ program tester
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
    use test_massif_materials_factory, only: collect_massif_materials_factory
+   use test_pecjoin_elements, only: collect_pecjoin_elements
+   use test_pecjoin_patch, only: collect_pecjoin_patch
+   use test_pecjoin_split, only: collect_pecjoin_split
+   use test_pecjoin_deck, only: collect_pecjoin_deck
+   use test_pecjoin_solver, only: collect_pecjoin_solver
    use test_pecjoin_laws, only: collect_pecjoin_laws
    use test_pecjoin_laws_mc, only: collect_pecjoin_laws_mc
    use test_pecjoin_laws_tangent, only: collect_pecjoin_laws_tangent
@@ -48,6 +53,11 @@ program tester
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]
    suites = [suites, new_testsuite('io_deck_errors', collect_io_deck_errors)]
    suites = [suites, new_testsuite('massif_materials_factory', collect_massif_materials_factory)]
+   suites = [suites, new_testsuite('pecjoin_elements', collect_pecjoin_elements)]
+   suites = [suites, new_testsuite('pecjoin_patch', collect_pecjoin_patch)]
+   suites = [suites, new_testsuite('pecjoin_split', collect_pecjoin_split)]
+   suites = [suites, new_testsuite('pecjoin_deck', collect_pecjoin_deck)]
+   suites = [suites, new_testsuite('pecjoin_solver', collect_pecjoin_solver)]
    suites = [suites, new_testsuite('pecjoin_laws', collect_pecjoin_laws)]
    suites = [suites, new_testsuite('pecjoin_laws_mc', collect_pecjoin_laws_mc)]
    suites = [suites, new_testsuite('pecjoin_laws_tangent', collect_pecjoin_laws_tangent)]

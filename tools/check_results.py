@@ -7,7 +7,9 @@ Usage:
 Checks that the required attributes, groups and datasets exist, that every /history
 dataset has the same number of rows, that no float dataset or attribute holds NaN or Inf,
 that the status attribute is a known value consistent with `complete`, that each history
-row flagged with fields has its /increments group, and that the .xmf parses as XML and each
+row flagged with fields has its /increments group, that joint sets (/mesh/joint_sets, when
+present) have their datasets and, in every field increment, joint fields of matching shapes
+with modes 1 (stick), 2 (slip) or 3 (open), and that the .xmf parses as XML and each
 "file.h5:/path" DataItem names an existing dataset of the declared dimensions.
 Exit status 0 when everything holds, 1 otherwise (each problem is printed).
 """
@@ -26,6 +28,8 @@ STATUSES = ["running", "completed", "limit load", "diverged", "failed"]
 HISTORY_1D = ["step", "increment", "global_increment", "time", "iterations", "residual",
               "cpu_time", "fields"]
 SET_DATASETS = ["connectivity", "element_ids", "gauss_coordinates"]
+JOINT_SET_DATASETS = ["connectivity", "element_ids", "point_coordinates", "point_tangents"]
+JOINT_FIELDS = ["relative_displacement", "stress", "mode", "plastic_slip"]
 
 
 def as_text(value):
@@ -62,6 +66,70 @@ def check_structure(f, problems):
                 conn = group["connectivity"][...]
                 if conn.size and (conn.min() < 0 or conn.max() >= nnode):
                     problems.append(f"/mesh/sets/{name}/connectivity outside 0..{nnode - 1}")
+
+
+def joint_shapes(f, problems):
+    """{set: (nel, npoint)} of /mesh/joint_sets, checking each set's datasets."""
+    shapes = {}
+    if "mesh/joint_sets" not in f:
+        return shapes
+    nnode = f["mesh/coordinates"].shape[0] if "mesh/coordinates" in f else None
+    for name, group in f["mesh/joint_sets"].items():
+        where = f"/mesh/joint_sets/{name}"
+        missing = [ds for ds in JOINT_SET_DATASETS if ds not in group]
+        for ds in missing:
+            problems.append(f"missing {where}/{ds}")
+        for attr in ["etype", "law"]:
+            if attr not in group.attrs:
+                problems.append(f"missing attribute '{attr}' of {where}")
+        if missing:
+            continue
+        conn = group["connectivity"][...]
+        if conn.size and nnode is not None and (conn.min() < 0 or conn.max() >= nnode):
+            problems.append(f"{where}/connectivity outside 0..{nnode - 1}")
+        xy = group["point_coordinates"]
+        nel = conn.shape[0]
+        if len(xy.shape) != 3 or xy.shape[0] != nel or xy.shape[2] != 2:
+            problems.append(f"{where}/point_coordinates has shape {xy.shape}, expected "
+                            f"({nel}, npoint, 2)")
+            continue
+        if group["point_tangents"].shape != xy.shape:
+            problems.append(f"{where}/point_tangents has shape {group['point_tangents'].shape}"
+                            f", not that of point_coordinates {xy.shape}")
+        if group["element_ids"].shape != (nel,):
+            problems.append(f"{where}/element_ids has shape {group['element_ids'].shape}, "
+                            f"expected ({nel},)")
+        shapes[name] = (nel, xy.shape[1])
+    return shapes
+
+
+def check_joint_fields(f, increment, shapes, problems):
+    """Joint fields of one field increment against the joint sets of /mesh."""
+    if not shapes:
+        return
+    base = f"increments/{increment}/joints"
+    for name, (nel, npoint) in shapes.items():
+        where = f"/{base}/{name}"
+        if f"{base}/{name}" not in f:
+            problems.append(f"missing {where}")
+            continue
+        group = f[f"{base}/{name}"]
+        expected = {"relative_displacement": (nel, npoint, 2), "stress": (nel, npoint, 2),
+                    "mode": (nel, npoint), "plastic_slip": (nel, npoint)}
+        for ds in JOINT_FIELDS:
+            if ds not in group:
+                problems.append(f"missing {where}/{ds}")
+            elif group[ds].shape != expected[ds]:
+                problems.append(f"{where}/{ds} has shape {group[ds].shape}, expected "
+                                f"{expected[ds]}")
+        if "mode" in group and group["mode"].size:
+            mode = group["mode"][...]
+            if not np.all(np.isin(mode, [1, 2, 3])):
+                problems.append(f"{where}/mode holds values other than 1 (stick), 2 (slip), "
+                                f"3 (open)")
+        if "state" in group and group["state"].shape[:2] != (nel, npoint):
+            problems.append(f"{where}/state has shape {group['state'].shape}, expected "
+                            f"({nel}, {npoint}, nstate)")
 
 
 def check_history(f, problems):
@@ -106,11 +174,13 @@ def check_increments(f, with_fields, problems):
         problems.append(f"history row of increment {name} has fields but no /increments/{name}")
     for name in sorted(present - expected):
         problems.append(f"/increments/{name} has no history row flagged with fields")
+    shapes = joint_shapes(f, problems)
     for name in sorted(present):
         group = f["increments"][name]
         for ds in ["displacement", "displacement3"]:
             if ds not in group:
                 problems.append(f"missing /increments/{name}/{ds}")
+        check_joint_fields(f, name, shapes, problems)
 
 
 def check_finite(f, problems):
@@ -198,8 +268,10 @@ def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):
                 xmf_path = (base if ext in (".h5", ".hdf5") else h5_path) + ".xmf"
             nitems = check_xdmf(h5_path, xmf_path, f, problems)
         nrows = f["history/time"].shape[0] if "history/time" in f else 0
+        njoint = len(f["mesh/joint_sets"]) if "mesh/joint_sets" in f else 0
         summary = (f"status {as_text(f.attrs.get('status', '?'))!r}, {nrows} history rows, "
-                   f"{len(with_fields)} field increments, {nitems} XDMF data items")
+                   f"{len(with_fields)} field increments, {njoint} joint sets, "
+                   f"{nitems} XDMF data items")
     return problems, summary
 
 

@@ -12,7 +12,9 @@ module pecplas_cli
    use pecplas_driver_problem, only: problem_t, setup_problem
    use pecplas_driver_stiffness, only: factorise_stiffness, linear_solver_name
    use pecplas_driver_increments, only: run_increments
-   use pecplas_driver_gauss, only: gauss_coordinates
+   use pecplas_driver_gauss, only: gauss_coordinates, joint_points
+   use pecplas_io_results_increment, only: joint_points_t
+   use pecjoin_penalty, only: set_default_penalties
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
    implicit none (type, external)
@@ -87,6 +89,7 @@ contains
       type(model_t), intent(out) :: model
       type(problem_t), intent(out) :: problem
       type(results_file_t) :: results
+      type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
       character(len=:), allocatable :: status, message, outfile
       real(wp) :: t0, t1, w0
@@ -99,7 +102,10 @@ contains
       if (.not. allocated(error)) call check_elements(model%mesh, nflipped, error)
       if (.not. allocated(error)) call orient_edge_sets(model%mesh, error)
       if (.not. allocated(error)) call setup_problem(model, problem, error)
+      if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &
+         problem%state%joints, error)
       if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
+      if (.not. allocated(error)) call joint_points(model, jpoints, error)
       if (allocated(error)) then
          code = fail(error%exit_code(), error%text())
          return
@@ -118,7 +124,8 @@ contains
       if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
          ' clockwise elements renumbered counter-clockwise'
 
-      call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error)
+      call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error, &
+         jpoints)
       if (allocated(error)) then
          code = fail(EXIT_INPUT, 'cannot write results: '//error%text())
          return
@@ -152,6 +159,7 @@ contains
       type(problem_t), intent(in) :: problem
       character(len=*), intent(in) :: deck, outfile
       character(len=:), allocatable :: title, units
+      integer :: i
       title = '(untitled)'
       if (allocated(model%title)) title = model%title
       units = '(not stated)'
@@ -161,6 +169,13 @@ contains
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
          model%mesh%nelem(), '  equations ', problem%dofs%neq, '  steps ', size(model%steps), &
          '  solver ', linear_solver_name(model), ' / ', model%solver%method
+      if (.not. allocated(model%joint_sets)) return
+      do i = 1, size(model%joint_sets)
+         associate (js => model%joint_sets(i))
+            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%etype// &
+               ', law '//js%law
+         end associate
+      end do
    end subroutine banner
 
    subroutine summary(problem, status, message, outfile, cpu, wall, quiet)

@@ -1,14 +1,17 @@
-!> Physical coordinates of the integration points, per element set, for the results file.
+!> Physical coordinates of the integration points, per element set and per joint set, for
+!> the results file.
 module pecplas_driver_gauss
    use pecplas_kinds, only: wp
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
-   use pecplas_io_results_increment, only: gauss_coordinates_t
+   use pecplas_io_results_increment, only: gauss_coordinates_t, joint_points_t
+   use pecplas_error, only: error_t
+   use pecjoin_points, only: joint_point_geometry
    implicit none (type, external)
    private
 
-   public :: gauss_coordinates
+   public :: gauss_coordinates, joint_points
 
 contains
 
@@ -33,5 +36,21 @@ contains
          end associate
       end do
    end function gauss_coordinates
+
+   !> Coordinates and tangents of the points of every joint set.
+   subroutine joint_points(model, points, error)
+      type(model_t), intent(in) :: model
+      type(joint_points_t), allocatable, intent(out) :: points(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: s
+      allocate (points(0))
+      if (.not. allocated(model%joint_sets)) return
+      deallocate (points)
+      allocate (points(size(model%joint_sets)))
+      do s = 1, size(model%joint_sets)
+         call joint_point_geometry(model, s, points(s)%xy, points(s)%tangent, error)
+         if (allocated(error)) return
+      end do
+   end subroutine joint_points
 
 end module pecplas_driver_gauss

@@ -6,6 +6,7 @@ module pecplas_driver_output
    use pecplas_driver_problem, only: problem_t
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: increment_result_t
+   use pecjoin_laws_coulomb, only: plastic_slip
    implicit none (type, external)
    private
 
@@ -45,19 +46,58 @@ contains
             r%set_fields(s)%stress = problem%state%sets(s)%stress
             r%set_fields(s)%strain = problem%state%sets(s)%strain
          end do
+         call joint_fields(model, problem, r)
       end if
       call results%write_increment(r, error)
    end subroutine write_increment
 
-   !> One line per converged increment: step, increment, step fraction, iterations, residual.
+   !> Converged joint fields of every joint set; the plastic slip is the law's own
+   !> (pecjoin_laws_coulomb: plastic_slip, 0 for a law without one).
+   subroutine joint_fields(model, problem, r)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s, e, ip
+      associate (js => problem%state%joints)
+         if (.not. allocated(js%sets)) return
+         allocate (r%joint_fields(size(js%sets)))
+         do s = 1, size(js%sets)
+            associate (st => js%sets(s), f => r%joint_fields(s), &
+                       law => model%laws(model%joint_sets(s)%law_index)%law)
+               f%eps = st%eps
+               f%sigma = st%sigma
+               f%mode = st%mode
+               f%state = st%hist
+               allocate (f%slip(size(st%mode, 1), size(st%mode, 2)))
+               do e = 1, size(st%mode, 2)
+                  do ip = 1, size(st%mode, 1)
+                     f%slip(ip, e) = plastic_slip(law, st%hist(:, ip, e))
+                  end do
+               end do
+            end associate
+         end do
+      end associate
+   end subroutine joint_fields
+
+   !> One line per converged increment: step, increment, step fraction, iterations, residual
+   !> (and, with joints, the number of joint points in slip and in separation).
    subroutine progress_line(model, problem, istep, inc, tau, iters, residual)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       integer, intent(in) :: istep, inc, iters
       real(wp), intent(in) :: tau, residual
-      write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3)') ' step', istep, &
+      character(len=40) :: joints
+      integer :: nslip, nopen
+      joints = ''
+      if (allocated(model%joint_sets)) then
+         if (size(model%joint_sets) > 0) then
+            call problem%state%joints%count_modes(nslip, nopen)
+            write (joints, '(a,i0,a,i0)') '  slip ', nslip, ' open ', nopen
+         end if
+      end if
+      write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
-         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u))
+         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)
    end subroutine progress_line
 
 end module pecplas_driver_output

@@ -17,6 +17,7 @@ module pecplas_driver_problem
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_driver_timers, only: timers_t
+   use pecjoin_assembly, only: setup_joint_state
    implicit none (type, external)
    private
 
@@ -27,6 +28,7 @@ module pecplas_driver_problem
       !> Integration rule with tabulated shape functions, per element set.
       type(massif_rule_t), allocatable :: rules(:)
       type(dofs_t) :: dofs
+      !> Integration-point state, the joints' in state%joints.
       type(fe_state_t) :: state
       !> Pattern vectors at factor 1: forces and imposed displacements (2, nnode, npattern).
       real(wp), allocatable :: pattern_force(:, :, :), pattern_disp(:, :, :)
@@ -42,7 +44,7 @@ module pecplas_driver_problem
 
 contains
 
-   !> Builds elements, equations, zero initial state and pattern vectors.
+   !> Builds elements, equations, zero initial state (massif and joints) and pattern vectors.
    subroutine setup_problem(model, problem, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(out) :: problem
@@ -73,6 +75,8 @@ contains
             st%tangent = spread(spread(d, 3, ng), 4, nel)
          end associate
       end do
+      call setup_joint_state(model, problem%state%joints, error)
+      if (allocated(error)) return
       npat = 0
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (problem%state%u(2, nnode), source=0.0_wp)

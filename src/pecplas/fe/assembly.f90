@@ -1,5 +1,6 @@
 !> Assembly of the massif elements: stiffness (COO → CSC), internal forces with the material
-!> update at every integration point, external forces of the load patterns.
+!> update at every integration point, external forces of the load patterns. The joint
+!> elements (PECJOIN) add their blocks and forces through pecjoin_assembly.
 module pecplas_fe_assembly
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
@@ -10,6 +11,7 @@ module pecplas_fe_assembly
    use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
+   use pecjoin_assembly, only: add_joint_stiffness, add_joint_forces
    implicit none (type, external)
    private
 
@@ -64,6 +66,8 @@ contains
             deallocate (xe, ke, idx, d)
          end associate
       end do
+      call add_joint_stiffness(model, dofs, state%joints, tangent, coo, error)
+      if (allocated(error)) return
       call coo_to_csc(coo, k, error)
    end subroutine assemble_stiffness
 
@@ -117,6 +121,7 @@ contains
             deallocate (xe, ue, fe)
          end associate
       end do
+      call add_joint_forces(model, u, state%joints, fint, error)
    end subroutine internal_forces
 
    !> Prefixes an element-level error with the element set and user id.

@@ -42,6 +42,14 @@ contains
             end do
          end associate
       end do
+      ! joint nodes are unknowns too (a joint face may carry no massif element)
+      if (allocated(model%joint_sets)) then
+         do i = 1, size(model%joint_sets)
+            do k = 1, size(model%joint_sets(i)%conn, 2)
+               fixed(:, model%joint_sets(i)%conn(:, k)) = .false.
+            end do
+         end do
+      end if
       if (allocated(model%supports%node)) then
          do k = 1, size(model%supports%node)
             fixed(model%supports%dof(k), model%supports%node(k)) = .true.

@@ -3,6 +3,7 @@
 !> the model stays intent(in).
 module pecplas_fe_state
    use pecplas_kinds, only: wp
+   use pecjoin_state, only: joint_state_t
    implicit none (type, external)
    private
 
@@ -25,6 +26,8 @@ module pecplas_fe_state
       !> Factors of the load patterns at the converged state.
       real(wp), allocatable :: factors(:)
       type(set_state_t), allocatable :: sets(:)
+      !> Joint sets (PECJOIN), committed and rolled back with the massif.
+      type(joint_state_t) :: joints
    contains
       procedure :: commit => state_commit
       procedure :: rollback => state_rollback
@@ -43,6 +46,7 @@ contains
             st%hist = st%hist_trial
          end associate
       end do
+      call this%joints%commit()
    end subroutine state_commit
 
    !> Discards the trial values (an increment that is cut).
@@ -56,6 +60,7 @@ contains
             st%hist_trial = st%hist
          end associate
       end do
+      call this%joints%rollback()
    end subroutine state_rollback
 
 end module pecplas_fe_state

@@ -18,6 +18,9 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_reader_initial, only: read_initial_stress, resolve_initial_stress
    use pecplas_io_deck_resolve_loads, only: resolve_supports, resolve_patterns, resolve_steps
    use pecplas_massif_materials_factory, only: material_registry_t, default_material_registry
+   use pecplas_io_deck_reader_joints, only: read_interface_law, read_joints
+   use pecplas_io_deck_resolve_joints, only: resolve_joints
+   use pecjoin_laws_factory, only: law_registry_t, default_law_registry
    use pecplas_model, only: model_t
    implicit none (type, external)
    private
@@ -25,10 +28,10 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(18) = [character(len=15) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(20) = [character(len=15) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
-      '*INITIAL_STRESS']
+      '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS']
 
 contains
 
@@ -40,17 +43,24 @@ contains
       call read_deck_with(path, default_material_registry(), model, error)
    end subroutine read_deck
 
-   !> Same as read_deck, with the material types of `registry` (user materials).
-   subroutine read_deck_with(path, registry, model, error)
+   !> Same as read_deck, with the material types of `registry` (user materials) and the
+   !> interface law types of `laws` (user laws; default: the built-in ones).
+   subroutine read_deck_with(path, registry, model, error, laws)
       character(len=*), intent(in) :: path
       type(material_registry_t), intent(in) :: registry
       type(model_t), intent(out) :: model
       type(error_t), allocatable, intent(out) :: error
+      type(law_registry_t), intent(in), optional :: laws
       type(deck_state_t) :: state
       type(deck_block_t) :: block
       integer :: i, j, n
 
       state%registry = registry
+      if (present(laws)) then
+         state%laws = laws
+      else
+         state%laws = default_law_registry()
+      end if
       model%deck_file = path
       model%solver%linear = 'AUTO'
       model%solver%method = 'MODIFIED_NEWTON'
@@ -95,6 +105,9 @@ contains
       call resolve_steps(state, model, error)
       if (allocated(error)) return
       call resolve_initial_stress(state, model, error)
+      if (allocated(error)) return
+      ! last: splitting nodes for generated joints extends supports and patterns
+      call resolve_joints(state, model, error)
    end subroutine read_deck_with
 
    !> Hands one keyword block to its handler.
@@ -147,6 +160,10 @@ contains
          if (.not. allocated(error)) call read_output(state, model, block, error)
       case ('*INITIAL_STRESS')
          call read_initial_stress(state, model, block, error)
+      case ('*INTERFACE_LAW')
+         call read_interface_law(state, model, block, error)
+      case ('*JOINTS')
+         call read_joints(state, block, error)
       case default
          list = ''
          do i = 1, size(KNOWN_KEYWORDS)

@@ -14,7 +14,7 @@ module pecplas_io_deck_reader_materials
    implicit none (type, external)
    private
 
-   public :: read_material, read_section, resolve_sections
+   public :: read_material, read_section, resolve_sections, read_pairs
 
 contains
 
@@ -78,7 +78,7 @@ contains
       state%material_at = [state%material_at, block%at]
    end subroutine read_material
 
-   !> One data line of `KEY = value` pairs.
+   !> One data line of `KEY = value` pairs (also used by *INTERFACE_LAW).
    subroutine read_pairs(state, at, params, error)
       type(deck_state_t), intent(in) :: state
       integer, intent(in) :: at

@@ -9,6 +9,8 @@ module pecplas_io_deck_state
    use pecplas_model_mesh, only: mesh_t
    use pecplas_massif_materials_factory, only: material_registry_t
    use pecplas_model_node_lookup, only: node_lookup_t
+   use pecplas_io_deck_raw_joints, only: raw_joint_set_t
+   use pecjoin_laws_factory, only: law_registry_t
    implicit none (type, external)
    private
 
@@ -103,6 +105,11 @@ module pecplas_io_deck_state
       type(node_lookup_t) :: node_lookup
       !> Material types known to *MATERIAL.
       type(material_registry_t) :: registry
+      !> Interface law types known to *INTERFACE_LAW, the line of each law of model%laws,
+      !> and the *JOINTS blocks.
+      type(law_registry_t) :: laws
+      integer, allocatable :: law_at(:)
+      type(raw_joint_set_t), allocatable :: joint_sets(:)
    end type deck_state_t
 
 contains

@@ -8,7 +8,8 @@
 !>                pattern_factors (npattern, nrow); attribute `patterns` (names)
 !>   /increments/<NNNNNN>  fields of global increment NNNNNN: displacement (2, nnode),
 !>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
-!>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)}
+!>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
+!>                joints/<set>/... (see pecplas_io_results_joints)
 !> Every increment is flushed, so a run that crashes leaves a readable file whose status
 !> is still 'running' and complete = 0; only finish('completed') sets complete = 1.
 module pecplas_io_results_file
@@ -18,12 +19,15 @@ module pecplas_io_results_file
    use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
-   use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t
+   use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
+      joint_points_t
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
       h5_history_dataset, safe_name
    use pecplas_io_results_mesh, only: write_mesh
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
+   use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
+      check_joint_fields, write_joint_fields
    implicit none (type, external)
    private
 
@@ -42,6 +46,8 @@ module pecplas_io_results_file
       integer :: npattern = 0, nrows = 0
       !> Gauss points per element of each set.
       integer, allocatable :: ngauss(:)
+      !> Joint sets (PECJOIN): points, elements and history size of each.
+      type(joint_layout_t), allocatable :: joints(:)
       logical :: strains = .true.
       !> Global numbers and times of the increments with fields (for the XDMF).
       integer, allocatable :: written(:)
@@ -58,19 +64,29 @@ module pecplas_io_results_file
 contains
 
    !> Creates (truncates) `path` with the run's provenance, the mesh and an empty history,
-   !> and writes the XDMF sidecar. gauss_xy(i)%xy(2, ngauss, nel) per element set.
-   subroutine results_create(this, path, model, version, gauss_xy, error)
+   !> and writes the XDMF sidecar. gauss_xy(i)%xy(2, ngauss, nel) per element set;
+   !> joint_points (one per joint set) is required when the model has joints.
+   subroutine results_create(this, path, model, version, gauss_xy, error, joint_points)
       class(results_file_t), intent(inout) :: this
       character(len=*), intent(in) :: path, version
       type(model_t), intent(in) :: model
       type(gauss_coordinates_t), intent(in) :: gauss_xy(:)
       type(error_t), allocatable, intent(out) :: error
+      type(joint_points_t), intent(in), optional :: joint_points(:)
+      type(joint_points_t), allocatable :: points(:)
       integer :: err
       if (this%file > 0) then
          call fatal_error(error, 'results file '//this%path//' is already open')
          return
       end if
       call plan(this, model, gauss_xy, error)
+      if (allocated(error)) return
+      if (present(joint_points)) then
+         points = joint_points
+      else
+         allocate (points(0))
+      end if
+      call plan_joints(model, points, this%joints, error)
       if (allocated(error)) return
       call h5_init(error)
       if (allocated(error)) return
@@ -87,6 +103,8 @@ contains
       call write_root(this%file, model, version, error)
       if (allocated(error)) return
       call write_mesh(this%file, model%mesh, gauss_xy, error)
+      if (allocated(error)) return
+      call write_joint_mesh(this%file, model, points, error)
       if (allocated(error)) return
       call create_history(this%file, model, error)
       if (allocated(error)) return
@@ -238,7 +256,12 @@ contains
       call check_increment(inc, this%layout, this%ngauss, this%npattern, this%strains, error)
       if (allocated(error)) return
       if (inc%write_fields) then
+         call check_joint_fields(inc%joint_fields, this%joints, 'results file: ', error)
+         if (allocated(error)) return
          call write_fields(this%file, inc, this%layout, this%strains, error)
+         if (allocated(error)) return
+         if (size(this%joints) > 0) call write_joint_fields(this%file, inc%global_increment, &
+            inc%joint_fields, this%joints, error)
          if (allocated(error)) return
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]

@@ -5,7 +5,8 @@ module pecplas_io_results_increment
    implicit none (type, external)
    private
 
-   public :: increment_result_t, set_fields_t, gauss_coordinates_t
+   public :: increment_result_t, set_fields_t, gauss_coordinates_t, joint_fields_t, &
+      joint_points_t
 
    !> Gauss-point fields of one element set, components (xx, yy, zz, xy) as in the
    !> massif materials (xy strain is engineering shear).
@@ -19,6 +20,21 @@ module pecplas_io_results_increment
    type :: gauss_coordinates_t
       real(wp), allocatable :: xy(:, :, :)
    end type gauss_coordinates_t
+
+   !> Point fields of one joint set (PECJOIN), law conventions: eps(2, np, nel) =
+   !> (eps_n closure positive, eps_t) relative displacements (strains for a thin layer),
+   !> sigma(2, np, nel) = (sigma_n compression positive, tau), mode(np, nel) = 1 stick,
+   !> 2 slip, 3 open, slip(np, nel) irreversible tangential displacement, state(nstate, np,
+   !> nel) the law's history variables.
+   type :: joint_fields_t
+      real(wp), allocatable :: eps(:, :, :), sigma(:, :, :), slip(:, :), state(:, :, :)
+      integer, allocatable :: mode(:, :)
+   end type joint_fields_t
+
+   !> Coordinates and unit tangents (2, np, nel) of the points of one joint set.
+   type :: joint_points_t
+      real(wp), allocatable :: xy(:, :, :), tangent(:, :, :)
+   end type joint_points_t
 
    type :: increment_result_t
       !> Step number (1-based), increment within the step, global increment number.
@@ -39,6 +55,8 @@ module pecplas_io_results_increment
       real(wp), allocatable :: displacement(:, :), reaction(:, :)
       !> One entry per element set, in model%mesh%esets order.
       type(set_fields_t), allocatable :: set_fields(:)
+      !> One entry per joint set, in model%joint_sets order (absent: no joints).
+      type(joint_fields_t), allocatable :: joint_fields(:)
    end type increment_result_t
 
 end module pecplas_io_results_increment

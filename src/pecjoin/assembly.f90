@@ -1,0 +1,181 @@
+!> Joint contributions to the global problem: state set-up, stiffness blocks (elastic
+!> tangent of the law for modified Newton, consistent tangent for full Newton) and internal
+!> forces with the law update at every joint point. Called by the massif assembly
+!> (pecplas_fe_assembly), which owns the global matrix and vectors.
+module pecjoin_assembly
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, fatal_error
+   use pecplas_model, only: model_t
+   use pecplas_fe_dofs, only: dofs_t
+   use pecplas_linalg_sparse, only: coo_t
+   use pecjoin_laws_type, only: MODE_STICK
+   use pecjoin_elements_type, only: joint_element_t, joint_point_t, joint_strain, &
+      joint_force, joint_stiffness
+   use pecjoin_state, only: joint_state_t
+   use pecjoin_points, only: joint_set_element, joint_element_points, element_context
+   implicit none (type, external)
+   private
+
+   public :: setup_joint_state, reset_joint_tangents, add_joint_stiffness, add_joint_forces
+
+contains
+
+   !> Allocates the state of every joint set: zero stress and strain, the law history from
+   !> zero initial stress, mode stick, tangents = elastic tangents.
+   subroutine setup_joint_state(model, jstate, error)
+      type(model_t), intent(in) :: model
+      type(joint_state_t), intent(out) :: jstate
+      type(error_t), allocatable, intent(out) :: error
+      class(joint_element_t), allocatable :: elem
+      integer :: s, np, nel, ns, ip, e
+      allocate (jstate%sets(0))
+      if (.not. allocated(model%joint_sets)) return
+      deallocate (jstate%sets)
+      allocate (jstate%sets(size(model%joint_sets)))
+      do s = 1, size(model%joint_sets)
+         associate (set => model%joint_sets(s), st => jstate%sets(s))
+            if (set%law_index < 1 .or. set%law_index > size(model%laws)) then
+               call fatal_error(error, 'joint set '//set%name//' has no interface law')
+               return
+            end if
+            call joint_set_element(set, elem, error)
+            if (allocated(error)) return
+            associate (law => model%laws(set%law_index)%law)
+               np = elem%npoint()
+               nel = size(set%conn, 2)
+               ns = law%nstate()
+               st%npoint = np
+               st%nstate = ns
+               allocate (st%eps(2, np, nel), st%sigma(2, np, nel), source=0.0_wp)
+               allocate (st%hist(ns, np, nel), source=0.0_wp)
+               allocate (st%mode(np, nel), source=MODE_STICK)
+               do e = 1, nel
+                  do ip = 1, np
+                     call law%init_state(st%sigma(:, ip, e), st%hist(:, ip, e))
+                  end do
+               end do
+               allocate (st%eps_trial, source=st%eps)
+               allocate (st%sigma_trial, source=st%sigma)
+               allocate (st%hist_trial, source=st%hist)
+               allocate (st%mode_trial, source=st%mode)
+               allocate (st%tangent(2, 2, np, nel))
+            end associate
+         end associate
+      end do
+      call reset_joint_tangents(model, jstate)
+   end subroutine setup_joint_state
+
+   !> Sets every stored tangent to the law's elastic tangent of the converged state (after
+   !> set-up, or after a law changed, e.g. a default penalty stiffness was given).
+   subroutine reset_joint_tangents(model, jstate)
+      type(model_t), intent(in) :: model
+      type(joint_state_t), intent(inout) :: jstate
+      integer :: s, e, ip
+      if (.not. allocated(jstate%sets)) return
+      do s = 1, size(jstate%sets)
+         associate (st => jstate%sets(s), law => model%laws(model%joint_sets(s)%law_index)%law)
+            do e = 1, size(st%tangent, 4)
+               do ip = 1, st%npoint
+                  call law%elastic_tangent(st%hist(:, ip, e), st%tangent(:, :, ip, e))
+               end do
+            end do
+         end associate
+      end do
+   end subroutine reset_joint_tangents
+
+   !> Adds the joint stiffness blocks to `coo` (free equations of `dofs`). `tangent`: the
+   !> consistent tangents of the last update (full Newton); otherwise the elastic tangent
+   !> of each point's converged state (modified Newton).
+   subroutine add_joint_stiffness(model, dofs, jstate, tangent, coo, error)
+      type(model_t), intent(in) :: model
+      type(dofs_t), intent(in) :: dofs
+      type(joint_state_t), intent(in) :: jstate
+      logical, intent(in) :: tangent
+      type(coo_t), intent(inout) :: coo
+      type(error_t), allocatable, intent(out) :: error
+      class(joint_element_t), allocatable :: elem
+      type(joint_point_t), allocatable :: pts(:)
+      real(wp), allocatable :: ke(:, :)
+      integer, allocatable :: idx(:)
+      real(wp) :: c(2, 2)
+      integer :: s, e, ip, nd
+      if (.not. allocated(model%joint_sets)) return
+      do s = 1, size(model%joint_sets)
+         associate (set => model%joint_sets(s), st => jstate%sets(s), &
+                    law => model%laws(model%joint_sets(s)%law_index)%law)
+            call joint_set_element(set, elem, error)
+            if (allocated(error)) return
+            nd = 2*elem%nnode()
+            allocate (pts(elem%npoint()), ke(nd, nd), idx(nd))
+            do e = 1, size(set%conn, 2)
+               call joint_element_points(model, set, elem, e, pts, error)
+               if (allocated(error)) return
+               ke = 0.0_wp
+               do ip = 1, size(pts)
+                  if (tangent) then
+                     c = st%tangent(:, :, ip, e)
+                  else
+                     call law%elastic_tangent(st%hist(:, ip, e), c)
+                  end if
+                  call joint_stiffness(pts(ip), c, ke)
+               end do
+               idx(1:nd:2) = dofs%eq(1, set%conn(:, e))
+               idx(2:nd:2) = dofs%eq(2, set%conn(:, e))
+               call coo%add_block(idx, ke)
+            end do
+            deallocate (pts, ke, idx)
+         end associate
+      end do
+   end subroutine add_joint_stiffness
+
+   !> Adds the joint internal forces for the trial displacements `u` to fint(2, nnode),
+   !> updating the trial stress, strain, history, mode and tangent of every point from the
+   !> converged state.
+   subroutine add_joint_forces(model, u, jstate, fint, error)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: u(:, :)
+      type(joint_state_t), intent(inout) :: jstate
+      real(wp), intent(inout) :: fint(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      class(joint_element_t), allocatable :: elem
+      type(joint_point_t), allocatable :: pts(:)
+      real(wp), allocatable :: ue(:), fe(:)
+      real(wp) :: eps(2), deps(2)
+      integer :: s, e, ip, nd, j
+      if (.not. allocated(model%joint_sets)) return
+      do s = 1, size(model%joint_sets)
+         associate (set => model%joint_sets(s), st => jstate%sets(s), &
+                    law => model%laws(model%joint_sets(s)%law_index)%law)
+            call joint_set_element(set, elem, error)
+            if (allocated(error)) return
+            nd = 2*elem%nnode()
+            allocate (pts(elem%npoint()), ue(nd), fe(nd))
+            do e = 1, size(set%conn, 2)
+               call joint_element_points(model, set, elem, e, pts, error)
+               if (allocated(error)) return
+               ue = reshape(u(:, set%conn(:, e)), [nd])
+               fe = 0.0_wp
+               do ip = 1, size(pts)
+                  eps = joint_strain(pts(ip), ue)
+                  deps = eps - st%eps(:, ip, e)
+                  st%hist_trial(:, ip, e) = st%hist(:, ip, e)
+                  call law%update(st%sigma(:, ip, e), deps, st%hist_trial(:, ip, e), &
+                     st%sigma_trial(:, ip, e), st%tangent(:, :, ip, e), st%mode_trial(ip, e), &
+                     error)
+                  if (allocated(error)) then
+                     call element_context(error, set, e)
+                     return
+                  end if
+                  st%eps_trial(:, ip, e) = eps
+                  call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
+               end do
+               do j = 1, size(set%conn, 1)
+                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j)
+               end do
+            end do
+            deallocate (pts, ue, fe)
+         end associate
+      end do
+   end subroutine add_joint_forces
+
+end module pecjoin_assembly

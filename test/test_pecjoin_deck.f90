@@ -1,0 +1,184 @@
+!> Deck input of joints and interface laws: the good decks give the expected model (laws,
+!> joint sets, integration, thickness); every bad deck of test/data/joints/bad_*.inp fails
+!> with an input error naming its file, line and keyword and the key words of the message,
+!> and through `run_deck` it exits with code 2 and writes no results file.
+module test_pecjoin_deck
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, fatal_error, ERR_INPUT
+   use pecplas_model, only: model_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_cli, only: run_deck
+   use pecplas_files, only: make_directories
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_testing, only: unittest_t, new_unittest, check
+   implicit none (type, external)
+   private
+   public :: collect_pecjoin_deck
+
+   character(len=*), parameter :: DATA = 'test/data/joints/'
+   character(len=*), parameter :: DIR = 'build/test_out/pecjoin'
+
+   !> One bad deck: the line and keyword of its error and up to three words it must hold.
+   type :: bad_case_t
+      character(len=40) :: deck = '', keyword = ''
+      integer :: line = 0
+      character(len=48) :: words(3) = ''
+   end type bad_case_t
+
+contains
+
+   subroutine collect_pecjoin_deck(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('good_decks', test_good), &
+               new_unittest('bad_laws', test_bad_laws), &
+               new_unittest('bad_explicit_joints', test_bad_explicit), &
+               new_unittest('bad_generated_joints', test_bad_generated), &
+               new_unittest('bad_decks_exit_2_no_file', test_exit_codes)]
+   end subroutine collect_pecjoin_deck
+
+   pure function bad(deck, line, keyword, w1, w2, w3) result(c)
+      character(len=*), intent(in) :: deck, keyword, w1
+      integer, intent(in) :: line
+      character(len=*), intent(in), optional :: w2, w3
+      type(bad_case_t) :: c
+      c%deck = 'bad_'//deck//'.inp'
+      c%line = line
+      c%keyword = keyword
+      c%words(1) = w1
+      if (present(w2)) c%words(2) = w2
+      if (present(w3)) c%words(3) = w3
+   end function bad
+
+   subroutine run_cases(cases, error)
+      type(bad_case_t), intent(in) :: cases(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      type(model_t) :: model
+      character(len=16) :: buf
+      integer :: i, j
+      do i = 1, size(cases)
+         associate (c => cases(i), what => trim(cases(i)%deck)//': ')
+            call read_deck(DATA//trim(c%deck), model, e)
+            call check(error, allocated(e), what//'no error reported')
+            if (allocated(error)) return
+            write (buf, '(i0)') c%line
+            call check(error, e%kind == ERR_INPUT .and. allocated(e%file) .and. &
+               e%line == c%line .and. index(e%text(), trim(c%deck)//':'//trim(buf)//': ') > 0, &
+               what//'input error at line '//trim(buf)//' expected: '//e%text())
+            if (allocated(error)) return
+            call check(error, e%keyword == trim(c%keyword), what//'keyword should be '// &
+               trim(c%keyword)//': '//e%text())
+            if (allocated(error)) return
+            do j = 1, 3
+               if (len_trim(c%words(j)) == 0) cycle
+               call check(error, index(e%text(), trim(c%words(j))) > 0, what//'message lacks "' &
+                  //trim(c%words(j))//'": '//e%text())
+               if (allocated(error)) return
+            end do
+            deallocate (e)
+         end associate
+      end do
+   end subroutine run_cases
+
+   !> A generated deck: law, set, type, integration, thickness as written.
+   subroutine test_good(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      call read_deck(DATA//'patch_thin_layer_plane_gen.inp', model, error)
+      if (allocated(error)) return
+      call check(error, size(model%laws) == 1 .and. size(model%joint_sets) == 1, &
+         'one law, one joint set')
+      if (allocated(error)) return
+      associate (js => model%joint_sets(1))
+         call check(error, model%laws(1)%law%name == 'contact' .and. js%law_index == 1 .and. &
+            js%etype == 'THIN_LAYER' .and. js%integration == 'GAUSS' .and. &
+            abs(js%thickness - 0.01_wp) < 1.0e-15_wp .and. size(js%conn, 1) == 6 .and. &
+            size(js%conn, 2) == 2, 'THIN_LAYER on quadratic edges: 2 joints of 6 nodes, e = 0.01')
+         if (allocated(error)) return
+      end associate
+      call read_deck(DATA//'patch_goodman6_plane_lobatto.inp', model, error)
+      if (allocated(error)) return
+      call check(error, model%joint_sets(1)%integration == 'LOBATTO' .and. &
+         all(model%joint_sets(1)%ids == [101, 102]), 'LOBATTO, explicit ids 101, 102')
+   end subroutine test_good
+
+   subroutine test_bad_laws(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_cases([ &
+         bad('unknown_law_type', 3, '*INTERFACE_LAW', "unknown interface law type 'COULOMB'", &
+             'known types:', 'ELASTIC'), &
+         bad('undefined_law', 5, '*JOINTS', "undefined interface law 'friction'", &
+             'known laws: contact'), &
+         bad('law_parameter', 4, '*INTERFACE_LAW', 'KN and KT must be positive'), &
+         bad('law_unknown_parameter', 4, '*INTERFACE_LAW', 'unknown parameter KX', 'KN KT'), &
+         bad('duplicate_law', 5, '*INTERFACE_LAW', "'Contact' is defined twice", &
+             'bad_duplicate_law.inp:3')], error)
+   end subroutine test_bad_laws
+
+   subroutine test_bad_explicit(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_cases([ &
+         bad('non_coincident', 9, '*JOINTS', 'joint on non-coincident nodes', 'joint 102', &
+             'nodes 6 and 13'), &
+         bad('unknown_joint_type', 5, '*JOINTS', "unknown joint type 'GOODMAN8'", &
+             'SPRING GOODMAN4 GOODMAN6 THIN_LAYER'), &
+         bad('joint_node_count', 7, '*JOINTS', 'wrong number of nodes for a GOODMAN4', &
+             'found 6 node'), &
+         bad('joint_inverted', 7, '*JOINTS', 'joint 102 is inverted', 'id, n2, n1, n4, n3'), &
+         bad('joint_undefined_node', 7, '*JOINTS', 'undefined node 99 in joint 102'), &
+         bad('duplicate_joint_id', 7, '*JOINTS', 'duplicate element id 3'), &
+         bad('thin_layer_thickness', 5, '*JOINTS', 'THICKNESS=e is required')], error)
+   end subroutine test_bad_explicit
+
+   subroutine test_bad_generated(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_cases([ &
+         bad('edges_not_side', 5, '*JOINTS', "edge (1 2) of edge set 'bottom'", &
+             'not a side of an element of the SIDE body', "SIDE='upper'"), &
+         bad('edges_nothing_to_join', 5, '*JOINTS', "edge set 'top'", 'nothing to join'), &
+         bad('side_undefined', 5, '*JOINTS', "undefined element set 'pile' in SIDE=", &
+             'lower upper'), &
+         bad('edges_undefined', 5, '*JOINTS', "undefined edge set 'shaft' in EDGES=", &
+             'interface bottom top'), &
+         bad('edges_without_side', 5, '*JOINTS', 'EDGES=edge_set and SIDE=element_set go '// &
+             'together'), &
+         bad('goodman6_linear_edges', 5, '*JOINTS', 'GOODMAN6 joints need 3-node', &
+             'use GOODMAN4'), &
+         bad('edges_twice', 6, '*JOINTS', 'is already split')], error)
+   end subroutine test_bad_generated
+
+   !> Every bad_*.inp of test/data/joints: exit code 2, no results file.
+   subroutine test_exit_codes(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      character(len=256) :: name
+      character(len=:), allocatable :: out
+      logical :: there
+      integer :: u, ios, code, count
+      call make_directories(DIR)
+      call execute_command_line('ls '//DATA//'bad_*.inp > '//DIR//'/bad_list.txt', exitstat=code)
+      call check(error, code == 0, 'listing the bad joint decks')
+      if (allocated(error)) return
+      out = DIR//'/bad.h5'
+      count = 0
+      open (newunit=u, file=DIR//'/bad_list.txt', status='old', action='read')
+      do
+         read (u, '(a)', iostat=ios) name
+         if (ios /= 0) exit
+         open (newunit=code, file=out, status='replace')
+         close (code, status='delete')
+         code = run_deck(trim(name), out, .true., model, problem)
+         inquire (file=out, exist=there)
+         if (code /= 2 .or. there) then
+            call fatal_error(error, trim(name)//': expected exit 2 and no results file')
+            close (u)
+            return
+         end if
+         count = count + 1
+      end do
+      close (u)
+      call check(error, count >= 19, 'the 19 bad joint decks were run')
+   end subroutine test_exit_codes
+
+end module test_pecjoin_deck
