@@ -18,6 +18,9 @@ program tester
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
    use test_massif_materials_factory, only: collect_massif_materials_factory
+   use test_massif_plasticity, only: collect_massif_plasticity
+   use test_massif_plasticity_dp, only: collect_massif_plasticity_dp
+   use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -42,6 +45,9 @@ program tester
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]
    suites = [suites, new_testsuite('io_deck_errors', collect_io_deck_errors)]
    suites = [suites, new_testsuite('massif_materials_factory', collect_massif_materials_factory)]
+   suites = [suites, new_testsuite('massif_plasticity', collect_massif_plasticity)]
+   suites = [suites, new_testsuite('massif_plasticity_dp', collect_massif_plasticity_dp)]
+   suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
