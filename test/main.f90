@@ -21,6 +21,7 @@ program tester
    use test_massif_plasticity, only: collect_massif_plasticity
    use test_massif_plasticity_dp, only: collect_massif_plasticity_dp
    use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
+   use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -48,6 +49,7 @@ program tester
    suites = [suites, new_testsuite('massif_plasticity', collect_massif_plasticity)]
    suites = [suites, new_testsuite('massif_plasticity_dp', collect_massif_plasticity_dp)]
    suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
+   suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
