@@ -9,8 +9,7 @@ module test_massif_plasticity
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_massif_materials_elastic, only: elastic_t, new_elastic
    use pecplas_massif_materials_mohr_coulomb, only: mohr_coulomb_t
-   use pecplas_massif_materials_soil, only: RETURN_ELASTIC, RETURN_SMOOTH, RETURN_EDGE, &
-      RETURN_APEX
+   use pecplas_massif_materials_soil, only: RETURN_SMOOTH, RETURN_EDGE, RETURN_APEX
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_plasticity, only: E, NU, COH, mc, rotated_stress, rotated_strain, &
       compliance, fd_tangent, rel_diff, principal2d, PI
