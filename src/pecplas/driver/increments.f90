@@ -169,7 +169,14 @@ contains
          if (iters >= model%solver%max_iterations .or. blowup) return
          if (newton .and. iters > 0) then
             call factorise_stiffness(model, problem, .true., error)
-            if (allocated(error)) return
+            if (allocated(error)) then
+               ! A singular consistent tangent (perfectly plastic zones near a limit load)
+               ! is no mechanism of the model: this iteration uses the elastic stiffness.
+               if (error%kind /= ERR_SINGULAR) return
+               deallocate (error)
+               call factorise_stiffness(model, problem, .false., error)
+               if (allocated(error)) return
+            end if
          end if
          t0 = wall_time()
          call problem%solver%solve(r, du, error)

@@ -10,8 +10,7 @@ module pecplas_driver_problem
    use pecplas_massif_elements_type, only: massif_element_box_t
    use pecplas_massif_elements_factory, only: new_massif_element
    use pecplas_massif_kinematics, only: massif_rule_t, new_massif_rule
-   use pecplas_massif_element_matrices, only: massif_gauss_coordinates
-   use pecplas_model_initial, only: geostatic_stress
+   use pecplas_driver_initial, only: apply_initial_stresses
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_linalg_sparse, only: csc_t
@@ -83,9 +82,10 @@ contains
       allocate (problem%state%factors(npat), source=0.0_wp)
       call new_dofs(model, problem%dofs, error)
       if (allocated(error)) return
-      call apply_initial_stresses(model, problem)
       allocate (problem%initial_force(2, nnode), source=0.0_wp)
       if (allocated(model%initial_stresses)) then
+         call apply_initial_stresses(model, problem%rules, problem%state, error)
+         if (allocated(error)) return
          call internal_forces(model, problem%rules, problem%state%u, problem%state, &
             problem%initial_force, error)
          if (allocated(error)) return
@@ -94,38 +94,5 @@ contains
       call pattern_vectors(model, problem%rules, problem%pattern_force, &
          problem%pattern_disp, error)
    end subroutine setup_problem
-
-   !> Sets the converged (and trial) stresses of the massif points from *INITIAL_STRESS.
-   subroutine apply_initial_stresses(model, problem)
-      type(model_t), intent(in) :: model
-      type(problem_t), intent(inout) :: problem
-      real(wp), allocatable :: xg(:, :)
-      integer :: i, s, e, g
-      if (.not. allocated(model%initial_stresses)) return
-      do i = 1, size(model%initial_stresses)
-         associate (init => model%initial_stresses(i))
-            do s = 1, size(model%mesh%esets)
-               if (init%eset /= 0 .and. init%eset /= s) cycle
-               associate (set => model%mesh%esets(s), st => problem%state%sets(s))
-                  allocate (xg(2, st%ngauss))
-                  do e = 1, size(set%conn, 2)
-                     call massif_gauss_coordinates(problem%rules(s), &
-                        model%mesh%x(:, set%conn(:, e)), xg)
-                     do g = 1, st%ngauss
-                        if (init%kind == 'GEOSTATIC') then
-                           st%stress(:, g, e) = geostatic_stress(init, &
-                              model%materials(set%material_index)%m%unit_weight, xg(2, g))
-                        else
-                           st%stress(:, g, e) = init%stress
-                        end if
-                     end do
-                  end do
-                  st%stress_trial = st%stress
-                  deallocate (xg)
-               end associate
-            end do
-         end associate
-      end do
-   end subroutine apply_initial_stresses
 
 end module pecplas_driver_problem

@@ -10,6 +10,8 @@ module pecplas_massif_materials_factory
    use pecplas_massif_materials_type, only: material_t
    use pecplas_massif_materials_elastic, only: elastic_t, new_elastic
    use pecplas_strings, only: upper
+   use pecplas_massif_materials_mohr_coulomb, only: mohr_coulomb_t, new_mohr_coulomb
+   use pecplas_massif_materials_drucker_prager, only: drucker_prager_t, new_drucker_prager
    implicit none (type, external)
    private
 
@@ -17,7 +19,8 @@ module pecplas_massif_materials_factory
    public :: register_material, new_material, KNOWN_MATERIALS
 
    !> Built-in material type names, as in the deck; the default registry holds exactly these.
-   character(len=*), parameter :: KNOWN_MATERIALS(1) = [character(len=16) :: 'ELASTIC']
+   character(len=*), parameter :: KNOWN_MATERIALS(3) = [character(len=16) :: 'ELASTIC', &
+      'MOHR_COULOMB', 'DRUCKER_PRAGER']
 
    abstract interface
       !> Builds material `name` from its deck parameters (checking them).
@@ -53,6 +56,8 @@ contains
       type(material_registry_t) :: registry
       allocate (registry%entries(0))
       call registry%register('ELASTIC', build_elastic)
+      call registry%register('MOHR_COULOMB', build_mohr_coulomb)
+      call registry%register('DRUCKER_PRAGER', build_drucker_prager)
    end function default_material_registry
 
    !> Adds (or replaces) the builder of type `name` (case-insensitive).
@@ -144,6 +149,30 @@ contains
       if (allocated(error)) return
       call move_alloc(elastic, mat)
    end subroutine build_elastic
+
+   subroutine build_mohr_coulomb(name, params, mat, error)
+      character(len=*), intent(in) :: name
+      type(params_t), intent(in) :: params
+      class(material_t), allocatable, intent(out) :: mat
+      type(error_t), allocatable, intent(out) :: error
+      type(mohr_coulomb_t), allocatable :: mc
+      allocate (mc)
+      call new_mohr_coulomb(mc, name, params, error)
+      if (allocated(error)) return
+      call move_alloc(mc, mat)
+   end subroutine build_mohr_coulomb
+
+   subroutine build_drucker_prager(name, params, mat, error)
+      character(len=*), intent(in) :: name
+      type(params_t), intent(in) :: params
+      class(material_t), allocatable, intent(out) :: mat
+      type(error_t), allocatable, intent(out) :: error
+      type(drucker_prager_t), allocatable :: dp
+      allocate (dp)
+      call new_drucker_prager(dp, name, params, error)
+      if (allocated(error)) return
+      call move_alloc(dp, mat)
+   end subroutine build_drucker_prager
 
    integer function find(registry, name) result(k)
       type(material_registry_t), intent(in) :: registry
