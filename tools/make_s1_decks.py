@@ -80,15 +80,31 @@ def main():
         "Expected: joint shear plateau at c = 1 kPa; force control stops at the limit load "
         "(factor 1).", mc(5e6, 1, 0, 0), SHEAR,
         ["*STEP, NAME=shear, INCREMENTS=30", "shear, 1.5"])
+    files["s1_cohesive_disp.inp"] = deck(
+        "pure shear under displacement control, cohesive joint (c = 1 kPa, phi = psi = 0)",
+        "The upper block's top moves 5 mm horizontally (guided vertically). Expected: every "
+        "joint point slips at tau = c = 1 kPa.", mc(5e6, 1, 0, 0),
+        ["*LOAD, NAME=slide, TYPE=DISPLACEMENT", "top, 1, 0.001"],
+        ["*STEP, NAME=shear, INCREMENTS=50", "slide, 5"])
+    files["s1_friction_force.inp"] = deck(
+        "pure shear under force control, frictional joint (phi = 30, c = 0, psi = 0)",
+        "Expected: every point slips at tau = sigma_n tan(phi); force control stops at the "
+        "limit load.", mc(5e6, 0, 30, 0), SHEAR,
+        ["*STEP, NAME=shear, INCREMENTS=40", "shear, 2.0"], solver="*SOLVER, MAX_CUTS=4")
     for kn in (5e6, 5000):
         for psi in (0, 3, 30):
             files[f"s1_friction_psi{psi}_kn{tag(kn)}.inp"] = deck(
                 f"pure shear, frictional joint (phi = 30, c = 0, psi = {psi}, K_n = {kn:g})",
-                "Expected: plateau sigma_n tan(phi) = 0.7506 kPa for psi = 0; with dilatancy the "
-                "constrained block raises sigma_n and the shear keeps rising, much less with "
-                "K_n = 5000.", mc(kn, 0, 30, psi), SHEAR,
-                ["*STEP, NAME=shear, INCREMENTS=40", "shear, 2.0"], kn=kn,
-                solver="*SOLVER, MAX_CUTS=4")
+                "Displacement control (SPEC: to trace the full response): the upper block's top "
+                "moves 5 mm horizontally, its vertical displacement held (guided). Expected: "
+                "plateau tau = sigma_n tan(phi) for psi = 0; with dilatancy the normal stress "
+                "rises with slip and so does the shear, much more with K_n = 5e6 than 5000. "
+                "Full Newton (UMFPACK: non-symmetric tangent): with psi > 0 the dilatant coupling "
+                "K_n tan(psi) dwarfs K_t and modified Newton stalls (see doc/validation.md).",
+                mc(kn, 0, 30, psi),
+                ["*LOAD, NAME=slide, TYPE=DISPLACEMENT", "top, 1, 0.001"],
+                ["*STEP, NAME=shear, INCREMENTS=50", "slide, 5"], kn=kn,
+                solver="*SOLVER, METHOD=NEWTON, MAX_CUTS=6")
     # compression - opening - closing, imposed vertical displacement of the upper block top
     for kn in (1e5, 1e8):
         files[f"s1_open_close_kn{tag(kn)}.inp"] = deck(
