@@ -1,0 +1,56 @@
+"""S1 opening-closing through the results file: compressed, then open with zero stress at
+the end of the lift, then closed and compressed again; never a NaN. Uses the file written by
+the Fortran suite `s1` (build/test_out/s1/), or runs the deck itself."""
+
+import os
+import subprocess
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+H5 = ROOT / "build" / "test_out" / "s1" / "s1_open_close_kn1e5.h5"
+
+
+@pytest.fixture(scope="module")
+def results(tmp_path_factory):
+    path = H5
+    if not path.exists():
+        exe = os.environ.get("PECPLAS_BIN")
+        cmd = [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
+        path = tmp_path_factory.mktemp("s1") / "oc.h5"
+        run = subprocess.run([*cmd, "input/s1/s1_open_close_kn1e5.inp", "-o", str(path),
+                              "--quiet"], cwd=ROOT, capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+    with h5py.File(path) as f:
+        steps = f["history/step"][:]
+        rows = {}
+        for key in f["increments"]:
+            g = f["increments"][key]
+            j = g["joints/joint"]
+            rows[int(key)] = (int(g.attrs["step"]), j["stress"][:].reshape(-1, 2),
+                              j["mode"][:].ravel(), j["relative_displacement"][:].reshape(-1, 2))
+        yield steps, rows
+
+
+def last_of_step(rows, step):
+    return rows[max(k for k, r in rows.items() if r[0] == step)]
+
+
+def test_compressed_open_closed(results):
+    steps, rows = results
+    # each row: (step, stress (sigma_n, tau), mode, relative displacement (eps_n, eps_t))
+    comp, lift, close = (last_of_step(rows, s) for s in (1, 2, 3))
+    assert np.all(comp[2] == 1) and np.all(comp[1][:, 0] > 1.3)     # stick, compressed
+    assert np.all(lift[2] == 3)                                        # open
+    assert np.all(lift[1] == 0.0)                                      # zero stress exactly
+    assert np.all(lift[3][:, 0] < 0.0)    # eps_n = -g_n < 0: a real gap, no interpenetration
+    assert np.all(close[2] != 3) and np.all(close[1][:, 0] > 0.0)     # re-contact
+
+
+def test_no_nan(results):
+    _, rows = results
+    for _, s, _, e in rows.values():
+        assert np.isfinite(s).all() and np.isfinite(e).all()
