@@ -21,7 +21,7 @@ CMAKE_DIR ?= build/cmake
 JOBS ?= 2
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean
+.PHONY: help deps build run test bench clean s1
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -30,6 +30,7 @@ help:
 	@echo "  make test     fpm test (debug) + CMake build and ctest (release) + pytest test/python"
 	@echo "  make build    fpm build --profile release"
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
+	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
 	@echo "  make bench    speed benchmarks (tools/bench.sh)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
@@ -52,6 +53,16 @@ run: build
 
 test: deps
 	@bash tools/test_all.sh
+
+s1: build
+	@mkdir -p output/s1
+	@for d in input/s1/*.inp; do \
+	  n=$$(basename $$d .inp); \
+	  $(FPM) run --profile release --target pecplas -- $$d -o output/s1/$$n.h5 --quiet \
+	    2>/dev/null && rc=0 || rc=$$?; \
+	  echo "make s1: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
+	done
+	@$(PYTHON) tools/plot_s1.py output/s1
 
 bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
