@@ -45,6 +45,7 @@ contains
          do s = 1, size(problem%state%sets)
             r%set_fields(s)%stress = problem%state%sets(s)%stress
             r%set_fields(s)%strain = problem%state%sets(s)%strain
+            r%set_fields(s)%state = problem%state%sets(s)%hist
          end do
          call joint_fields(model, problem, r)
       end if

@@ -77,6 +77,13 @@ contains
                   where//'strain of set '//name, error)
                if (allocated(error)) return
             end if
+            if (allocated(f%state)) then
+               if (size(f%state) > 0) then
+                  call check_array3(f%state, [size(f%state, 1), ngauss(s), &
+                     layout%sets(s)%nel], where//'material state of set '//name, error)
+                  if (allocated(error)) return
+               end if
+            end if
          end associate
       end do
    end subroutine check_increment
@@ -175,6 +182,9 @@ contains
                      call h5_write(gs, 'stress_mean', stress_mean(f%stress), error)
                end if
                if (strains .and. .not. allocated(error)) call h5_write(gs, 'strain', f%strain, error)
+               if (allocated(f%state) .and. .not. allocated(error)) then
+                  if (size(f%state) > 0) call h5_write(gs, 'state', f%state, error)
+               end if
             end associate
             call h5_close_group(gs)
             if (allocated(error)) exit

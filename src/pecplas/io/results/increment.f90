@@ -13,6 +13,9 @@ module pecplas_io_results_increment
    type :: set_fields_t
       !> stress(4, ngauss, nel), strain(4, ngauss, nel).
       real(wp), allocatable :: stress(:, :, :), strain(:, :, :)
+      !> Material history state(nstate, ngauss, nel) (e.g. plastic strains); unallocated or
+      !> empty when the material has none.
+      real(wp), allocatable :: state(:, :, :)
    end type set_fields_t
 
    !> Coordinates of the Gauss points of one element set, xy(2, ngauss, nel); given once to
