@@ -9,7 +9,7 @@ module pecplas_cli
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_mesh_tools, only: orient_edge_sets, check_elements
-   use pecplas_driver_problem, only: problem_t, setup_problem
+   use pecplas_driver_problem, only: problem_t, setup_problem, initialise_stresses
    use pecplas_driver_stiffness, only: factorise_stiffness, linear_solver_name
    use pecplas_driver_increments, only: run_increments
    use pecplas_driver_gauss, only: gauss_coordinates, joint_points
@@ -104,6 +104,7 @@ contains
       if (.not. allocated(error)) call setup_problem(model, problem, error)
       if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &
          problem%state%joints, error)
+      if (.not. allocated(error)) call initialise_stresses(model, problem, error)
       if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
       if (.not. allocated(error)) call joint_points(model, jpoints, error)
       if (allocated(error)) then

@@ -196,8 +196,8 @@ contains
       end do
    end subroutine solve_increment
 
-   !> Why a step stopped. Under force control (no imposed displacement changes in the step)
-   !> an increment that finds no equilibrium however small it is cut means the structure
+   !> Why a step stopped. Under increasing force control (no imposed displacement changes in
+   !> the step, some load grows) an increment that finds no equilibrium however small it is cut means the structure
    !> cannot carry more load: a limit load, reported with the last converged load factors.
    !> Under displacement control, or when the residual blows up, the run has diverged.
    !> The stiffness must also have dropped: current stiffness parameter `sp` < 0.5 (an elastic
@@ -213,10 +213,18 @@ contains
       character(len=400) :: buf
       logical :: force_control
       integer :: p
-      force_control = .true.
+      ! a limit load needs a load that grows: some force pattern increasing in magnitude and
+      ! no imposed displacement changing (unloading that fails is a divergence)
+      force_control = .false.
       do p = 1, size(f0)
-         if (model%patterns(p)%kind == 'DISPLACEMENT' .and. ftarget(p) /= f0(p)) &
-            force_control = .false.
+         if (model%patterns(p)%kind == 'DISPLACEMENT') then
+            if (ftarget(p) /= f0(p)) then
+               force_control = .false.
+               exit
+            end if
+         else if (abs(ftarget(p)) > abs(f0(p))) then
+            force_control = .true.
+         end if
       end do
       if (force_control .and. .not. blowup .and. sp < 0.5_wp) then
          status = 'limit load'

@@ -20,7 +20,7 @@ module pecplas_driver_problem
    implicit none (type, external)
    private
 
-   public :: problem_t, setup_problem
+   public :: problem_t, setup_problem, initialise_stresses
 
    type :: problem_t
       type(massif_element_box_t), allocatable :: elems(:)
@@ -83,16 +83,24 @@ contains
       call new_dofs(model, problem%dofs, error)
       if (allocated(error)) return
       allocate (problem%initial_force(2, nnode), source=0.0_wp)
-      if (allocated(model%initial_stresses)) then
-         call apply_initial_stresses(model, problem%rules, problem%state, error)
-         if (allocated(error)) return
-         call internal_forces(model, problem%rules, problem%state%u, problem%state, &
-            problem%initial_force, error)
-         if (allocated(error)) return
-         call problem%state%commit()
-      end if
       call pattern_vectors(model, problem%rules, problem%pattern_force, &
          problem%pattern_disp, error)
    end subroutine setup_problem
+
+   !> Puts the *INITIAL_STRESS state into the integration points and computes its nodal
+   !> forces, held as a constant load (the initial state is in equilibrium). Call after
+   !> setup_problem and after the default penalties are set (joint laws are evaluated).
+   subroutine initialise_stresses(model, problem, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. allocated(model%initial_stresses)) return
+      call apply_initial_stresses(model, problem%rules, problem%state, error)
+      if (allocated(error)) return
+      call internal_forces(model, problem%rules, problem%state%u, problem%state, &
+         problem%initial_force, error)
+      if (allocated(error)) return
+      call problem%state%commit()
+   end subroutine initialise_stresses
 
 end module pecplas_driver_problem
