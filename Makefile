@@ -21,7 +21,7 @@ CMAKE_DIR ?= build/cmake
 JOBS ?= 2
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1
+.PHONY: help deps build run test bench clean s1 s2 s3
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -31,6 +31,7 @@ help:
 	@echo "  make build    fpm build --profile release"
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
 	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
+	@echo "  make s2, s3   scenes S2 (pile, interface models) and S3 (dilatancy), PNGs in output/"
 	@echo "  make bench    speed benchmarks (tools/bench.sh)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
@@ -63,6 +64,16 @@ s1: build
 	  echo "make s1: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
 	@$(PYTHON) tools/plot_s1.py output/s1
+
+s2 s3: build
+	@mkdir -p output/$@
+	@for d in input/$@/*.inp; do \
+	  n=$$(basename $$d .inp); \
+	  $(FPM) run --profile release --target pecplas -- $$d -o output/$@/$$n.h5 --quiet \
+	    2>/dev/null && rc=0 || rc=$$?; \
+	  echo "make $@: $$n exit $$rc"; \
+	done
+	@$(PYTHON) tools/plot_s2.py output
 
 bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
