@@ -82,3 +82,26 @@ def test_s3_capacity_rises_with_psi(runs):
     loads = [np.interp(target, np.r_[0.0, c[1][:20]], np.r_[0.0, c[0][:20]])
              for c in curves.values()]
     assert all(b > a for a, b in zip(loads, loads[1:])), loads
+
+
+def test_s2_goodman_mesh_convergence(tmp_path):
+    """Head settlement at 2000 kN (Goodman joints) on refinements 1, 2, 4: the differences
+    shrink with an observed order (Richardson) near 2, as for linear elements."""
+    exe = os.environ.get("PECPLAS_BIN")
+    cmd = [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
+    s = []
+    for r in (1, 2, 4):
+        subprocess.run([sys.executable, str(ROOT / "tools" / "make_s2_decks.py"), "--refine",
+                        str(r), "--out", str(tmp_path)], check=True, capture_output=True)
+        tag = "" if r == 1 else f"_r{r}"
+        deck = tmp_path / "s2" / f"s2_goodman{tag}.inp"
+        h5 = tmp_path / f"g{r}.h5"
+        run = subprocess.run([*cmd, str(deck), "-o", str(h5), "--quiet"], cwd=ROOT,
+                             capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        s.append(head_curve(h5)[1][19])
+    order = math.log2(abs((s[1] - s[0]) / (s[2] - s[1])))
+    print(f"S2 Goodman head settlement at 2000 kN, refine 1/2/4: "
+          f"{s[0] * 1e3:.2f} / {s[1] * 1e3:.2f} / {s[2] * 1e3:.2f} mm, observed order {order:.2f}")
+    assert abs(s[2] - s[1]) < abs(s[1] - s[0])
+    assert 1.5 < order < 3.0
