@@ -6,10 +6,10 @@ module test_pecjoin_modjoin
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t, MODE_SLIP
+   use pecjoin_laws_type, only: interface_law_t, MODE_SLIP, MODE_OPEN, MODE_STICK
    use pecjoin_laws_modjoin, only: modjoin_law_t
    use pecjoin_laws_modjoin_step, only: MJ_K, MJ_MECH
-   use pecjoin_laws_modjoin_kernel, only: mj_hardening, mj_hardening_slope, mj_gmod
+   use pecjoin_laws_modjoin_kernel, only: mj_hardening, mj_hardening_slope, mj_gmod, mj_psi
    use pecjoin_path_driver, only: path_result_t, path_increment
    use pecjoin_path_deck, only: PATH_CNL, PATH_CND
    use fixtures_pecjoin, only: fd_tangent, max_rel_diff, make_law
@@ -37,6 +37,7 @@ contains
                new_unittest('tangent_improved', test_tangent_improved), &
                new_unittest('tangent_cyclic', test_tangent_cyclic), &
                new_unittest('units_mm_to_m', test_units), &
+               new_unittest('opening_and_recontact', test_opening), &
                new_unittest('deck_errors', test_deck_errors), &
                new_unittest('example_path_deck', test_example)]
    end subroutine collect_pecjoin_modjoin
@@ -334,6 +335,41 @@ contains
             'the summary line states the conversion')
       end select
    end subroutine test_units
+
+   !> No tensile strength: opening by 2.5 mm from 56 kPa (improved version: the elastic
+   !> closure from 0 to 56 kPa is Psi(56) - Psi(0) = 1.75 mm) separates the point (zero
+   !> stress and tangent) with the opening beyond zero stress, 2.5 - (Psi(56) - Psi(0)),
+   !> Psi the exact elastic compliance potential (III.15); closing it plus 0.1 mm re-contacts
+   !> and loads the point from zero stress, to Psi(s) = Psi(0) + 0.1 (round-off of the
+   !> potential differences, 1e-10).
+   subroutine test_opening(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(interface_law_t), allocatable :: law
+      real(wp), allocatable :: state(:)
+      real(wp) :: sigma(2), t(2, 2), gap
+      integer :: mode
+      call table_law('III.2', law, error)
+      if (allocated(error)) return
+      select type (law)
+      type is (modjoin_law_t)
+         allocate (state(law%nstate()))
+         call law%init_state([56.0_wp, 0.0_wp], state)
+         call law%update([56.0_wp, 0.0_wp], [-2.5_wp, 0.0_wp], state, sigma, t, mode, error)
+         if (allocated(error)) return
+         call check(error, mode == MODE_OPEN .and. all(sigma == 0.0_wp) .and. all(t == 0.0_wp), &
+            'opening: mode open, zero stress and tangent')
+         if (allocated(error)) return
+         gap = 2.5_wp - (mj_psi(law%p%el, 56.0_wp) - mj_psi(law%p%el, 0.0_wp))
+         call check_close(error, state(3), gap, 1.0e-12_wp, 'opening beyond zero stress')
+         if (allocated(error)) return
+         call law%update(sigma, [gap + 0.1_wp, 0.0_wp], state, sigma, t, mode, error)
+         if (allocated(error)) return
+         call check(error, mode == MODE_STICK, 're-contact')
+         if (allocated(error)) return
+         call check_close(error, mj_psi(law%p%el, sigma(1)) - mj_psi(law%p%el, 0.0_wp), &
+            0.1_wp, 1.0e-10_wp, 'loaded from zero stress by the closure after contact')
+      end select
+   end subroutine test_opening
 
    !> Units are never guessed; parameters out of range name the key.
    subroutine test_deck_errors(error)
