@@ -346,7 +346,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       class(interface_law_t), allocatable :: law
       real(wp), allocatable :: state(:)
-      real(wp) :: sigma(2), t(2, 2), gap
+      real(wp) :: sigma(2), s0(2), t(2, 2), gap
       integer :: mode
       call table_law('III.2', law, error)
       if (allocated(error)) return
@@ -362,7 +362,8 @@ contains
          gap = 2.5_wp - (mj_psi(law%p%el, 56.0_wp) - mj_psi(law%p%el, 0.0_wp))
          call check_close(error, state(3), gap, 1.0e-12_wp, 'opening beyond zero stress')
          if (allocated(error)) return
-         call law%update(sigma, [gap + 0.1_wp, 0.0_wp], state, sigma, t, mode, error)
+         s0 = sigma
+         call law%update(s0, [gap + 0.1_wp, 0.0_wp], state, sigma, t, mode, error)
          if (allocated(error)) return
          call check(error, mode == MODE_STICK, 're-contact')
          if (allocated(error)) return

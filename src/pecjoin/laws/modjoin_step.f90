@@ -32,7 +32,7 @@ module pecjoin_laws_modjoin_step
       MJ_MECH, MJ_KC, MJ_RI, MJ_NC, MJ_BETAC, MJ_PREV, NSTATE_MJ, NSTATE_MJ_CYCLIC, MJ_STATE_NAMES
 
    integer, parameter :: MJ_INITIAL = 1, MJ_IMPROVED = 2, MJ_CYCLIC = 3
-   character(len=*), parameter :: MJ_VERSION_NAMES(3) = [character(len=14) :: &
+   character(len=*), parameter :: MJ_VERSION_NAMES(3) = [character(len=15) :: &
       'MODJOIN_INITIAL', 'MODJOIN', 'MODJOIN_CYCLIC']
 
    !> History: accumulated plastic slip (= eps_bar), open flag, opening, plastic normal and
