@@ -13,8 +13,7 @@
 !> the thesis tables read K0 = 80 (printed "80 MPa" = kPa/mm) and BETA = 1.5 (printed 0.0015,
 !> in metres). The law works in MODEL_UNIT, the length unit of the model's displacements
 !> (default: LENGTH_UNIT; the model-deck reader requires it): the conversion is applied here,
-!> once, and the summary line that
-!> the programs print shows the converted values. Stresses (C, PA, SIGMA_MIN) are in the
+!> once, and the summary line that the programs print shows the converted values. Stresses (C, PA, SIGMA_MIN) are in the
 !> deck's stress unit; PA = 100 is P_a in kPa. The readers pass LENGTH_UNIT and MODEL_UNIT as
 !> the size of the unit in metres (1e-3 for MM, 1 for M).
 module pecjoin_laws_modjoin_build
