@@ -1,6 +1,7 @@
 !> Joint sets in the results file (PECJOIN):
 !>   /mesh/joint_sets/<set>  attributes name, etype, law, integration, thickness, mode_names,
-!>        state_names (the law's history variables, when the law names them)
+!>        state_names (the law's history variables, when the law names them),
+!>        law_description (the law's own summary, e.g. MODJOIN's unit conversion, if any)
 !>        connectivity (npe, nel) 0-based in (B.8) order, element_ids (nel),
 !>        point_coordinates (2, np, nel), point_tangents (2, np, nel) (n = (-t_y, t_x)),
 !>        tributary (nel, springs only)
@@ -21,7 +22,6 @@ module pecplas_io_results_joints
    use pecplas_io_results_increment, only: joint_fields_t, joint_points_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, safe_name, &
       increment_group
-   use pecjoin_laws_coulomb, only: coulomb_law_t, COULOMB_STATE_NAMES
    implicit none (type, external)
    private
 
@@ -79,6 +79,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: gall, g
       integer, allocatable :: conn0(:, :), ids(:)
+      character(len=16), allocatable :: names(:)
       integer :: s
       call h5_group(file, '/mesh/joint_sets', gall, error)
       if (allocated(error)) return
@@ -103,11 +104,12 @@ contains
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
                call h5_write(g, 'tributary', set%tributary, error)
-            select type (law => model%laws(set%law_index)%law)
-            class is (coulomb_law_t)
-               if (.not. allocated(error)) call h5_attr(g, 'state_names', COULOMB_STATE_NAMES, &
-                  error)
-            end select
+            if (.not. allocated(error) .and. &
+                len(model%laws(set%law_index)%law%describe()) > 0) call h5_attr(g, &
+               'law_description', model%laws(set%law_index)%law%describe(), error)
+            call model%laws(set%law_index)%law%state_names(names)
+            if (.not. allocated(error) .and. size(names) > 0) &
+               call h5_attr(g, 'state_names', names, error)
             call h5_close_group(g)
             if (allocated(error)) exit
          end associate
