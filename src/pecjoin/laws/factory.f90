@@ -13,6 +13,7 @@ module pecjoin_laws_factory
    use pecjoin_laws_spring, only: build_spring_law
    use pecjoin_laws_ghaboussi, only: build_ghaboussi_law
    use pecjoin_laws_mohr_coulomb, only: build_mohr_coulomb_law
+   use pecjoin_laws_katona, only: build_katona_law
    implicit none (type, external)
    private
 
@@ -53,6 +54,7 @@ contains
       call registry%register('SPRING', build_spring_law)
       call registry%register('GHABOUSSI', build_ghaboussi_law)
       call registry%register('MOHR_COULOMB', build_mohr_coulomb_law)
+      call registry%register('KATONA', build_katona_law)
    end function default_law_registry
 
    subroutine register_law(registry, name, builder)

@@ -17,6 +17,8 @@ module pecplas_driver_problem
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_driver_timers, only: timers_t
    use pecjoin_assembly, only: setup_joint_state
+   use pecjoin_katona_type, only: katona_t
+   use pecjoin_katona_doublets, only: setup_katona
    implicit none (type, external)
    private
 
@@ -36,6 +38,8 @@ module pecplas_driver_problem
       real(wp), allocatable :: initial_force(:, :)
       class(linear_solver_t), allocatable :: solver
       type(csc_t) :: k
+      !> Katona contact doublets (inactive when no joint set has a KATONA law).
+      type(katona_t) :: katona
       !> Counters for the summary.
       integer :: increments = 0, iterations = 0, cuts = 0, factorisations = 0, solves = 0
       type(timers_t) :: time
@@ -91,6 +95,9 @@ contains
          if (allocated(error)) return
          call problem%state%commit()
       end if
+      call setup_katona(model, problem%state%joints, problem%katona, problem%initial_force, &
+         error)
+      if (allocated(error)) return
       call pattern_vectors(model, problem%rules, problem%pattern_force, &
          problem%pattern_disp, error)
    end subroutine setup_problem
