@@ -91,6 +91,7 @@ contains
       class(joint_element_t), allocatable :: elem
       type(joint_point_t), allocatable :: pts(:)
       integer, allocatable :: of_node(:)
+      real(wp), allocatable :: tplain(:, :)
       real(wp) :: wgt(3)
       integer :: e, ip, j, k, k0, npair, pairs(2, 3)
       associate (set => model%joint_sets(s), st => jstate%sets(s))
@@ -107,6 +108,7 @@ contains
          if (allocated(error)) return
          allocate (pts(elem%npoint()))
          allocate (of_node(model%mesh%nnode()), source=0)
+         allocate (tplain(2, 0))
          pairs = reshape([1, 4, 2, 3, 5, 6], [2, 3])
          npair = size(set%conn, 1)/2
          do e = 1, size(set%conn, 2)
@@ -122,6 +124,7 @@ contains
                   kt%area = [kt%area, 0.0_wp]
                   kt%set_of = [kt%set_of, s]
                   s0 = reshape([s0, 0.0_wp, 0.0_wp], [2, k])
+                  tplain = reshape([tplain, 0.0_wp, 0.0_wp], [2, k - k0])
                else if (kt%node(2, k) /= set%conn(pairs(2, j), e)) then
                   call input_error(error, 'joint set '//set%name//': a face-1 node faces two '// &
                      'different face-2 nodes; Katona doublets need one partner per node')
@@ -132,17 +135,22 @@ contains
                   kt%area(k) = kt%area(k) + wgt(j)*pts(ip)%da
                   kt%t(:, k) = kt%t(:, k) + wgt(j)*pts(ip)%da*pts(ip)%t
                   s0(:, k) = s0(:, k) + wgt(j)*pts(ip)%da*st%sigma(:, ip, e)
+                  tplain(:, k - k0) = tplain(:, k - k0) + pts(ip)%t
                end do
             end do
          end do
          do k = k0 + 1, size(kt%area)
-            if (.not. (kt%area(k) > 0.0_wp .and. norm2(kt%t(:, k)) > 0.0_wp)) then
-               call input_error(error, 'joint set '//set%name//': a Katona doublet has a '// &
-                  'zero tributary measure (a node on the axis of an axisymmetric model?)')
+            ! A corner node on the axis of a quadratic axisymmetric edge has a zero measure
+            ! (int N_1 2 pi r ds = 0): it stays a constraint, with the plain mean tangent.
+            if (.not. (norm2(kt%t(:, k)) > 1.0e-12_wp*kt%area(k) .and. kt%area(k) > 0.0_wp)) &
+               kt%t(:, k) = tplain(:, k - k0)
+            if (.not. (norm2(kt%t(:, k)) > 0.0_wp)) then
+               call input_error(error, 'joint set '//set%name//': a Katona doublet has no '// &
+                  'tangent (its joint edges turn back on each other)')
                return
             end if
             kt%t(:, k) = kt%t(:, k)/norm2(kt%t(:, k))
-            s0(:, k) = s0(:, k)/kt%area(k)
+            if (kt%area(k) > 0.0_wp) s0(:, k) = s0(:, k)/kt%area(k)
          end do
       end associate
    end subroutine set_doublets

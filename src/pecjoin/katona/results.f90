@@ -38,7 +38,8 @@ contains
       if (kt%nd == 0) return
       allocate (sig(2, kt%nd), of_node(model%mesh%nnode()))
       do k = 1, kt%nd
-         sig(:, k) = kt%f_trial(:, k)/kt%area(k)
+         sig(:, k) = 0.0_wp
+         if (kt%area(k) > 0.0_wp) sig(:, k) = kt%f_trial(:, k)/kt%area(k)
       end do
       do s = 1, size(model%joint_sets)
          if (.not. any(kt%set_of == s)) cycle
@@ -66,8 +67,12 @@ contains
                call joint_element_points(model, set, elem, e, pts, error)
                if (allocated(error)) return
                do ip = 1, size(pts)
-                  ! normalised: a thin layer's D holds N / thickness
+                  ! normalised (a thin layer's D holds N / thickness), over the doublets of
+                  ! non-zero measure (an axis node of a quadratic axisymmetric edge has none)
                   wgt = doublet_weights(pts(ip), npair)
+                  do j = 1, npair
+                     if (kt%area(of_node(set%conn(face1(j), e))) <= 0.0_wp) wgt(j) = 0.0_wp
+                  end do
                   wgt = wgt/sum(wgt(1:npair))
                   st%sigma_trial(:, ip, e) = 0.0_wp
                   do j = 1, npair

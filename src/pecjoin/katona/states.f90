@@ -15,7 +15,8 @@
 !> states (a body sliding away under force control), reported as a run error so the
 !> increment is cut. States are then checked: stick -> open when N < -T_ten, stick -> slip
 !> when |T| > c A + mu N, slip -> open likewise, slip -> stick when the slip since the anchor
-!> reverses, open -> stick when the doublet interpenetrates. A doublet that has changed state
+!> reverses (its sign only, when the strength c A + mu N is nil), open -> stick when the
+!> doublet interpenetrates. A doublet that has changed state
 !> MAX_FLIPS times in the increment is frozen (chattering guard) and counted. A doublet row
 !> on supported dofs only (G(i, i) = 0) has a zero multiplier: its supports carry the force.
 module pecjoin_katona_states
@@ -200,7 +201,13 @@ contains
                new_mode = MODE_OPEN
             else if (real(kt%sgn_trial(k), wp)*(kt%z_trial(2, k) - kt%anchor_trial(k)) &
                      < -gtol) then
-               new_mode = MODE_STICK
+               if (limit <= ftol) then
+                  ! no strength (frictionless, or N = 0): T = 0 either way, the sign is moot
+                  kt%sgn_trial(k) = -kt%sgn_trial(k)
+                  new_sgn = kt%sgn_trial(k)
+               else
+                  new_mode = MODE_STICK
+               end if
             end if
          case default
             if (kt%z_trial(1, k) - kt%gap0(k) > gtol) then
