@@ -34,6 +34,8 @@ program tester
    use test_massif_plasticity_dp, only: collect_massif_plasticity_dp
    use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
    use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
+   use test_pecjoin_katona, only: collect_pecjoin_katona
+   use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -74,6 +76,8 @@ program tester
    suites = [suites, new_testsuite('massif_plasticity_dp', collect_massif_plasticity_dp)]
    suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
    suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]
+   suites = [suites, new_testsuite('pecjoin_katona', collect_pecjoin_katona)]
+   suites = [suites, new_testsuite('pecjoin_katona_friction', collect_pecjoin_katona_friction)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -64,7 +64,6 @@ contains
                end if
                if (allocated(error)) then
                   if (error%kind /= ERR_RUN) return
-                  if (.not. quiet) write (*, "(a)") "   DEBUG: "//error%message
                   deallocate (error)
                   converged = .false.
                end if
