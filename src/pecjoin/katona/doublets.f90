@@ -78,6 +78,7 @@ contains
       ! with zero relative displacement a stick doublet is anchored at eps_t = 0
       call kt%begin_increment()
       call add_contact_forces(kt, kt%f, initial_force)
+
    end subroutine setup_katona
 
    !> Doublets of joint set s appended to kt (node, set_of, t, area) and s0 (initial stress).

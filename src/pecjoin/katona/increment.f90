@@ -63,7 +63,9 @@ contains
          u = problem%state%u
          where (dofs%eq == 0) u = up
          allocate (fint, mold=fint_conv)
-         if (any(u /= problem%state%u)) then
+         ! before the first converged increment the driver's fint_conv is the initial-stress
+         ! load, which holds the initial contact forces too: the massif's own is needed here
+         if (any(u /= problem%state%u) .or. problem%increments == 0) then
             call internal_forces(model, problem%rules, u, problem%state, fint, error)
             if (allocated(error)) call as_run_error(error)
             if (allocated(error)) return
