@@ -68,7 +68,7 @@ program bench_katona
       do r = 1, 2
          ! a row on supported dofs only is no constraint (the solver gives it lambda = 0)
          if (all(problem%dofs%eq(:, problem%katona%node(:, k)) == 0 .or. &
-                 c(r, :, :) == 0.0_wp)) call coo%add(n + 2*k - 2 + r, n + 2*k - 2 + r, 1.0_wp)
+                 transpose(c(r, :, :)) == 0.0_wp)) call coo%add(n + 2*k - 2 + r, n + 2*k - 2 + r, 1.0_wp)
          do a = 1, 2
             do d = 1, 2
                q = problem%dofs%eq(d, problem%katona%node(a, k))
