@@ -1,9 +1,9 @@
 !> The constraint operator D of the Katona doublets (one 2 x 4 block per doublet k):
 !>     z_k = (eps_n, eps_t) = ( n.(u_1 - u_2), t.(u_2 - u_1) )
-!> (eps_n = -g_n closure positive, faces 1 and 2), its transpose (nodal forces of the
-!> contact forces f_k = (N, T): -N n - T t on face 1... with the signs of D^T), the
-!> augmentation alpha D^T D of a singular stiffness, and the flexibility G = D R^-1 D^T
-!> built with multi-right-hand-side solves on the factorised R.
+!> (eps_n = -g_n closure positive, faces 1 and 2), its transpose (the nodal forces D^T f of
+!> the contact forces f_k = (N, T), as a joint's internal force), the augmentation
+!> alpha D^T D of a singular stiffness, and the flexibility G = D R^-1 D^T built with
+!> multi-right-hand-side solves on the factorised R.
 module pecjoin_katona_operator
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
