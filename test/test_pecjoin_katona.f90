@@ -1,10 +1,11 @@
 !> Katona contact (Lagrange multipliers on node doublets) through the whole program:
 !> joint patch tests with an exact uniform pressure and zero interpenetration (springs,
 !> Goodman 4/6 doublets, plane strain and axisymmetric, regular and floating bodies), the
-!> Hertz line contact against the closed form (SPEC §8), and the S1 opening-closing cycle.
+!> Hertz line contact against the closed form (SPEC §8), the S1 opening-closing cycle, and
+!> separation at the tensile strength.
 module test_pecjoin_katona
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
    use pecplas_cli, only: run_deck
    use pecplas_files, only: make_directories
@@ -32,7 +33,8 @@ contains
                new_unittest('floating_spring_plane', test_float_spring), &
                new_unittest('floating_goodman6_axi', test_float_goodman6), &
                new_unittest('hertz_line_contact', test_hertz), &
-               new_unittest('s1_open_close', test_s1_open_close)]
+               new_unittest('s1_open_close', test_s1_open_close), &
+               new_unittest('tensile_strength', test_tension)]
    end subroutine collect_pecjoin_katona
 
    subroutine run(name, model, problem, code)
@@ -211,5 +213,82 @@ contains
          call check(error, kt%max_state_iterations <= 5, '<= 5 state iterations per increment')
       end associate
    end subroutine test_s1_open_close
+
+
+   !> Tensile strength: the frictionless patch (disp_spring_plane) pulled apart by DELTA, so
+   !> that the bond would carry sigma_n = -p. TENSION = 20 > p: bonded, sigma_n = -p at every
+   !> doublet (1e-9). TENSION = 5 < p: every doublet separates (N = T = 0, gap opening > 0).
+   subroutine test_tension(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp) :: p
+      integer :: code, k
+      p = patch_pressure(.false.)
+      call pulled('20', model, problem, code, error)
+      if (allocated(error)) return
+      call check(error, code == 0, 'pulled, TENSION = 20 completes')
+      if (allocated(error)) return
+      associate (kt => problem%katona)
+         call check(error, all(kt%mode /= MODE_OPEN), 'TENSION = 20 > p: the bond holds')
+         if (allocated(error)) return
+         do k = 1, kt%nd
+            call check_close(error, kt%f(1, k)/kt%area(k), -p, 1.0e-9_wp, 'sigma_n = -p')
+            if (allocated(error)) return
+         end do
+      end associate
+      call pulled('5', model, problem, code, error)
+      if (allocated(error)) return
+      call check(error, code == 0, 'pulled, TENSION = 5 completes')
+      if (allocated(error)) return
+      associate (kt => problem%katona)
+         call check(error, all(kt%mode == MODE_OPEN) .and. all(kt%f == 0.0_wp), &
+            'TENSION = 5 < p: every doublet separates, no force')
+         if (allocated(error)) return
+         call check(error, all(kt%z(1, :) < 0.0_wp) .and. all(kt%broken), &
+            'the doublets open (eps_n < 0) and the bond is broken')
+      end associate
+   end subroutine test_tension
+
+   !> Runs disp_spring_plane.inp pulled up by DELTA with TENSION = `tension`.
+   subroutine pulled(tension, model, problem, code, error)
+      character(len=*), intent(in) :: tension
+      type(model_t), intent(out) :: model
+      type(problem_t), intent(out) :: problem
+      integer, intent(out) :: code
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      integer :: u, n
+      call make_directories(DIR)
+      open (newunit=u, file=DATA//'disp_spring_plane.inp', access='stream', &
+         form='unformatted', status='old', action='read')
+      inquire (unit=u, size=n)
+      allocate (character(len=n) :: text)
+      read (u) text
+      close (u)
+      call replace(text, 'MU = 0', 'MU = 0, TENSION = '//tension, error)
+      if (allocated(error)) return
+      call replace(text, 'top, Y, -0.001', 'top, Y, 0.001', error)
+      if (allocated(error)) return
+      open (newunit=u, file=DIR//'/pulled_'//tension//'.inp', access='stream', &
+         form='unformatted', status='replace', action='write')
+      write (u) text
+      close (u)
+      code = run_deck(DIR//'/pulled_'//tension//'.inp', DIR//'/pulled_'//tension//'.h5', &
+         .true., model, problem)
+   end subroutine pulled
+
+   subroutine replace(text, old, new, error)
+      character(len=:), allocatable, intent(inout) :: text
+      character(len=*), intent(in) :: old, new
+      type(error_t), allocatable, intent(out) :: error
+      integer :: at
+      at = index(text, old)
+      if (at == 0) then
+         call fatal_error(error, 'deck text not found: '//old)
+         return
+      end if
+      text = text(:at - 1)//new//text(at + len(old):)
+   end subroutine replace
 
 end module test_pecjoin_katona

@@ -103,11 +103,12 @@ contains
             residual = 0.0_wp
             if (ref > 0.0_wp) residual = rnorm/ref
             ! at least one solve: the states must be checked against the new loads. A state of
-            ! nil load and reactions (a joint passing through zero stress under displacement
-            ! control) has ref ~ roundoff: its residual is then measured against the internal
-            ! forces, at roundoff level (ROUNDOFF_FLOOR)
+            ! nil load and reactions (a joint passing through zero stress, or bodies apart,
+            ! under displacement control) has ref ~ roundoff: its residual is then measured
+            ! against the internal forces and the forces of the run so far (ROUNDOFF_FLOOR)
             if (iters > 0 .and. (rnorm <= model%solver%tolerance*ref .or. rnorm == 0.0_wp .or. &
-                rnorm <= ROUNDOFF_FLOOR*norm2(pack(fint, dofs%eq > 0)))) then
+                rnorm <= ROUNDOFF_FLOOR*max(norm2(pack(fint, dofs%eq > 0)), kt%force_scale))) then
+               kt%force_scale = max(kt%force_scale, ref, norm2(fc))
                converged = .true.
                exit
             end if

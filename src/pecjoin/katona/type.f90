@@ -48,6 +48,9 @@ module pecjoin_katona_type
       !> Largest interpenetration (eps_n - gap0 of a doublet in contact) over converged
       !> increments, and the largest over open doublets (should be <= 0).
       real(wp) :: max_penetration = 0.0_wp
+      !> Largest force reference of the converged increments (loads, reactions, contact
+      !> forces): the scale of the roundoff floor of the residual.
+      real(wp) :: force_scale = 0.0_wp
       !> Wall time spent building G and in the state iterations (dense solves).
       real(wp) :: time_flexibility = 0.0_wp, time_states = 0.0_wp
    contains
