@@ -37,6 +37,8 @@ program tester
    use test_pecjoin_modjoin, only: collect_pecjoin_modjoin
    use test_pecjoin_modjoin_paths, only: collect_pecjoin_modjoin_paths
    use test_pecjoin_modjoin_fe, only: collect_pecjoin_modjoin_fe
+   use test_pecjoin_katona, only: collect_pecjoin_katona
+   use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -80,6 +82,8 @@ program tester
    suites = [suites, new_testsuite('pecjoin_modjoin', collect_pecjoin_modjoin)]
    suites = [suites, new_testsuite('pecjoin_modjoin_paths', collect_pecjoin_modjoin_paths)]
    suites = [suites, new_testsuite('pecjoin_modjoin_fe', collect_pecjoin_modjoin_fe)]
+   suites = [suites, new_testsuite('pecjoin_katona', collect_pecjoin_katona)]
+   suites = [suites, new_testsuite('pecjoin_katona_friction', collect_pecjoin_katona_friction)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

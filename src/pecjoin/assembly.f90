@@ -13,6 +13,7 @@ module pecjoin_assembly
       joint_force, joint_stiffness
    use pecjoin_state, only: joint_state_t
    use pecjoin_points, only: joint_set_element, joint_element_points, element_context
+   use pecjoin_laws_katona, only: is_katona
    implicit none (type, external)
    private
 
@@ -103,6 +104,8 @@ contains
       do s = 1, size(model%joint_sets)
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
                     law => model%laws(model%joint_sets(s)%law_index)%law)
+            ! Katona sets add zero blocks (their law has no stiffness): the pattern keeps the
+            ! doublet couplings that the augmented form of a singular R needs
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()
@@ -146,6 +149,8 @@ contains
       do s = 1, size(model%joint_sets)
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
                     law => model%laws(model%joint_sets(s)%law_index)%law)
+            ! Katona sets: their multipliers are added by pecjoin_katona_increment
+            if (is_katona(law)) cycle
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()

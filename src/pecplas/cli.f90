@@ -200,6 +200,16 @@ contains
             sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
             '  residual ', sec(t%residual), '  output ', sec(t%output), '  total ', sec(wall)
       end associate
+      if (problem%katona%active) then
+         associate (k => problem%katona)
+            write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &
+               ' doublets, ', k%state_iterations, ' state iterations (max ', &
+               k%max_state_iterations, ' per increment), ', k%g_builds, ' flexibility builds, ', &
+               k%frozen, ' frozen doublets, max penetration ', k%max_penetration, &
+               ', augmentation ', k%alpha, ', time flexibility ', sec(k%time_flexibility), &
+               ' s, states ', sec(k%time_states)//' s'
+         end associate
+      end if
       write (*, '(a)') ' status: '//status//'  results: '//outfile
    end subroutine summary
 

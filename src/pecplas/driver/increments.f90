@@ -13,6 +13,7 @@ module pecplas_driver_increments
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
+   use pecjoin_katona_increment, only: katona_increment
    implicit none (type, external)
    private
 
@@ -54,8 +55,13 @@ contains
             do while (tau < 1.0_wp - 1.0e-12_wp)
                dt = min(dt, 1.0_wp - tau)
                factors = f0 + (ftarget - f0)*(tau + dt)
-               call solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
-                  converged, blowup, iters, residual, error)
+               if (problem%katona%active) then
+                  call katona_increment(model, problem, factors, fint_conv, u, fint, reaction, &
+                     converged, blowup, iters, residual, error)
+               else
+                  call solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
+                     converged, blowup, iters, residual, error)
+               end if
                if (allocated(error)) then
                   if (error%kind /= ERR_RUN) return
                   deallocate (error)

@@ -87,7 +87,7 @@ contains
       type(problem_t), intent(in) :: problem
       integer, intent(in) :: istep, inc, iters
       real(wp), intent(in) :: tau, residual
-      character(len=40) :: joints
+      character(len=120) :: joints
       integer :: nslip, nopen
       joints = ''
       if (allocated(model%joint_sets)) then
@@ -96,6 +96,9 @@ contains
             write (joints, '(a,i0,a,i0)') '  slip ', nslip, ' open ', nopen
          end if
       end if
+      ! Katona contact: state iterations of the increment, numeric factorisations so far
+      if (problem%katona%active) write (joints, '(a,a,i0,a,i0)') trim(joints), '  states ', &
+         problem%katona%last_state_iterations, ' factorisations ', problem%factorisations
       write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
          '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)

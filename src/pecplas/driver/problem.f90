@@ -17,6 +17,8 @@ module pecplas_driver_problem
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_driver_timers, only: timers_t
    use pecjoin_assembly, only: setup_joint_state
+   use pecjoin_katona_type, only: katona_t
+   use pecjoin_katona_doublets, only: setup_katona
    implicit none (type, external)
    private
 
@@ -36,6 +38,8 @@ module pecplas_driver_problem
       real(wp), allocatable :: initial_force(:, :)
       class(linear_solver_t), allocatable :: solver
       type(csc_t) :: k
+      !> Katona contact doublets (inactive when no joint set has a KATONA law).
+      type(katona_t) :: katona
       !> Counters for the summary.
       integer :: increments = 0, iterations = 0, cuts = 0, factorisations = 0, solves = 0
       type(timers_t) :: time
@@ -88,19 +92,25 @@ contains
    end subroutine setup_problem
 
    !> Puts the *INITIAL_STRESS state into the integration points and computes its nodal
-   !> forces, held as a constant load (the initial state is in equilibrium). Call after
-   !> setup_problem and after the default penalties are set (joint laws are evaluated).
+   !> forces, held as a constant load (the initial state is in equilibrium), and sets up the
+   !> Katona doublets. Call after setup_problem and after the default penalties are set
+   !> (joint laws are evaluated).
    subroutine initialise_stresses(model, problem, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
-      if (.not. allocated(model%initial_stresses)) return
-      call apply_initial_stresses(model, problem%rules, problem%state, error)
-      if (allocated(error)) return
-      call internal_forces(model, problem%rules, problem%state%u, problem%state, &
-         problem%initial_force, error)
-      if (allocated(error)) return
-      call problem%state%commit()
+      if (allocated(model%initial_stresses)) then
+         call apply_initial_stresses(model, problem%rules, problem%state, error)
+         if (allocated(error)) return
+         call internal_forces(model, problem%rules, problem%state%u, problem%state, &
+            problem%initial_force, error)
+         if (allocated(error)) return
+         call problem%state%commit()
+      end if
+      ! Katona doublets start from the projected joint stresses; their forces join the
+      ! initial load so that the start is in equilibrium
+      call setup_katona(model, problem%state%joints, problem%katona, problem%initial_force, &
+         error)
    end subroutine initialise_stresses
 
 end module pecplas_driver_problem

@@ -9,6 +9,7 @@ module pecplas_driver_stiffness
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
    use pecplas_driver_timers, only: wall_time
+   use pecjoin_katona_operator, only: add_augmentation
    implicit none (type, external)
    private
 
@@ -53,6 +54,10 @@ contains
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
          problem%k, error)
       if (allocated(error)) return
+      if (problem%katona%alpha > 0.0_wp) then
+         call add_augmentation(problem%katona, problem%dofs, problem%k, error)
+         if (allocated(error)) return
+      end if
       problem%time%assembly = problem%time%assembly + (wall_time() - t0)
       t0 = wall_time()
       if (.not. allocated(problem%solver)) then
@@ -62,6 +67,7 @@ contains
          if (allocated(error)) return
       end if
       call problem%solver%factorise(problem%k, error)
+      if (allocated(error)) call katona_augment(problem, error)
       if (allocated(error)) then
          if (error%kind == ERR_SINGULAR) then
             error%message = 'the stiffness matrix is singular: '// &
@@ -74,5 +80,24 @@ contains
       problem%factorisations = problem%factorisations + 1
       problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
    end subroutine factorise_stiffness
+
+   !> A singular R with Katona contact (a body held only by its contacts): factorises
+   !> R_a = R + alpha D^T D instead, alpha = largest diagonal term of R. The Katona solve is
+   !> written in unknowns that make its solution independent of alpha (pecjoin_katona_states);
+   !> from then on every factorisation of the run is augmented.
+   subroutine katona_augment(problem, error)
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(inout) :: error
+      real(wp), allocatable :: diag(:)
+      if (error%kind /= ERR_SINGULAR .or. .not. problem%katona%active) return
+      if (problem%katona%alpha > 0.0_wp) return
+      deallocate (error)
+      allocate (diag(problem%k%n))
+      call problem%k%diagonal(diag)
+      problem%katona%alpha = maxval(diag)
+      call add_augmentation(problem%katona, problem%dofs, problem%k, error)
+      if (allocated(error)) return
+      call problem%solver%factorise(problem%k, error)
+   end subroutine katona_augment
 
 end module pecplas_driver_stiffness

@@ -21,13 +21,16 @@ module pecplas_io_deck_resolve_explicit
 contains
 
    !> Explicit joints: node ids, distinct and coincident doublets, orientation.
-   subroutine explicit_joints(state, model, raw, set, edges, error)
+   !> `allow_gap`: doublets may be apart (Katona node-to-node contact with an initial gap,
+   !> checked by pecjoin_katona_doublets).
+   subroutine explicit_joints(state, model, raw, set, edges, error, allow_gap)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(in) :: model
       type(raw_joint_set_t), intent(in) :: raw
       type(joint_set_t), intent(inout) :: set
       integer, allocatable, intent(out) :: edges(:, :)
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: allow_gap
       type(side_table_t) :: table
       integer :: e, j, nen, npair
       integer :: pairs(2, 3)
@@ -59,7 +62,7 @@ contains
          do j = 1, npair
             dist = norm2(model%mesh%x(:, set%conn(pairs(1, j), e)) - &
                model%mesh%x(:, set%conn(pairs(2, j), e)))
-            if (dist > tol) then
+            if (dist > tol .and. .not. optval(allow_gap)) then
                write (b1, '(es10.3)') dist
                write (b2, '(es10.3)') tol
                call line_error(state, raw%where(e), 'joint on non-coincident nodes: joint '// &
@@ -161,5 +164,11 @@ contains
       end do
       call move_alloc(found, edges)
    end subroutine spring_edges
+
+   pure logical function optval(flag)
+      logical, intent(in), optional :: flag
+      optval = .false.
+      if (present(flag)) optval = flag
+   end function optval
 
 end module pecplas_io_deck_resolve_explicit

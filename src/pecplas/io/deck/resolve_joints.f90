@@ -19,6 +19,7 @@ module pecplas_io_deck_resolve_joints
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
    use pecjoin_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
+   use pecjoin_laws_katona, only: is_katona
    implicit none (type, external)
    private
 
@@ -108,7 +109,9 @@ contains
       if (len(raw%edges) > 0) then
          call generated(state, model, raw, origin, next_id, set, edges, error)
       else
-         call explicit_joints(state, model, raw, set, edges, error)
+         ! Katona doublets may start apart (node-to-node contact with an initial gap)
+         call explicit_joints(state, model, raw, set, edges, error, &
+            allow_gap=is_katona(model%laws(set%law_index)%law))
       end if
       if (allocated(error)) return
       if (set%etype /= 'SPRING') return
