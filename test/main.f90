@@ -34,6 +34,7 @@ program tester
    use test_massif_plasticity_dp, only: collect_massif_plasticity_dp
    use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
    use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
+   use test_pecjoin_identify, only: collect_pecjoin_identify
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -74,6 +75,7 @@ program tester
    suites = [suites, new_testsuite('massif_plasticity_dp', collect_massif_plasticity_dp)]
    suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
    suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]
+   suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
