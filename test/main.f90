@@ -35,6 +35,7 @@ program tester
    use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
    use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
    use test_pecjoin_identify, only: collect_pecjoin_identify
+   use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -76,6 +77,7 @@ program tester
    suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
    suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
+   suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
