@@ -169,6 +169,12 @@ contains
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
          model%mesh%nelem(), '  equations ', problem%dofs%neq, '  steps ', size(model%steps), &
          '  solver ', linear_solver_name(model), ' / ', model%solver%method
+      if (allocated(model%laws)) then
+         do i = 1, size(model%laws)
+            if (len(model%laws(i)%law%describe()) > 0) write (*, '(a)') ' law '// &
+               model%laws(i)%law%describe()
+         end do
+      end if
       if (.not. allocated(model%joint_sets)) return
       do i = 1, size(model%joint_sets)
          associate (js => model%joint_sets(i))

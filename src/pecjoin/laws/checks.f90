@@ -7,9 +7,15 @@ module pecjoin_laws_checks
    implicit none (type, external)
    private
 
-   public :: get_param, param_error, tan_deg, num
+   public :: get_param, param_error, tan_deg, num, length_unit_metres, LENGTH_UNIT_KEYS
 
    real(wp), parameter :: PI = acos(-1.0_wp)
+
+   !> Keyword-line options of *INTERFACE_LAW giving the unit of the law's length parameters
+   !> and of the model's displacements; the readers pass them to the law as parameters of
+   !> the same names whose value is the size of the unit in metres.
+   character(len=*), parameter :: LENGTH_UNIT_KEYS(2) = [character(len=11) :: 'LENGTH_UNIT', &
+      'MODEL_UNIT']
 
 contains
 
@@ -49,6 +55,23 @@ contains
       if (.not. ok) call param_error(params, key//' = '//num(value)//' is out of range: '// &
          'expected '//key//expected, error)
    end subroutine get_param
+
+   !> Size in metres of a length unit named in a deck: MM (1e-3) or M (1); ok = .false. else.
+   pure subroutine length_unit_metres(text, metres, ok)
+      character(len=*), intent(in) :: text
+      real(wp), intent(out) :: metres
+      logical, intent(out) :: ok
+      ok = .true.
+      select case (trim(adjustl(text)))
+      case ('MM', 'mm', 'Mm', 'mM')
+         metres = 1.0e-3_wp
+      case ('M', 'm')
+         metres = 1.0_wp
+      case default
+         metres = 0.0_wp
+         ok = .false.
+      end select
+   end subroutine length_unit_metres
 
    !> Deck error at the parameters' position.
    subroutine param_error(params, message, error)

@@ -64,6 +64,8 @@ module pecjoin_laws_coulomb
       procedure :: elastic_tangent => coulomb_elastic_tangent
       procedure :: update => coulomb_update
       procedure :: symmetric_tangent => coulomb_symmetric_tangent
+      procedure :: plastic_slip => coulomb_plastic_slip
+      procedure :: state_names => coulomb_history_names
       !> Current tensile strength T_eff of a point with history `state`.
       procedure :: tensile_limit => coulomb_tensile_limit
    end type coulomb_law_t
@@ -139,16 +141,26 @@ contains
    end subroutine coulomb_update
 
    !> Accumulated plastic slip sum |d eps_t^p| of a point with history `state` (what the
-   !> results report): state(ST_SLIP) for the Coulomb-family laws, 0 for laws without one.
+   !> results report): the law's own plastic_slip (state(ST_SLIP) for the Coulomb family,
+   !> state(1) for MODJOIN, 0 for laws without one).
    pure real(wp) function plastic_slip(law, state) result(slip)
       class(interface_law_t), intent(in) :: law
       real(wp), intent(in) :: state(:)
-      slip = 0.0_wp
-      select type (law)
-      class is (coulomb_law_t)
-         slip = state(ST_SLIP)
-      end select
+      slip = law%plastic_slip(state)
    end function plastic_slip
+
+   pure real(wp) function coulomb_plastic_slip(this, state) result(slip)
+      class(coulomb_law_t), intent(in) :: this
+      real(wp), intent(in) :: state(:)
+      slip = state(ST_SLIP)
+   end function coulomb_plastic_slip
+
+   pure subroutine coulomb_history_names(this, names)
+      class(coulomb_law_t), intent(in) :: this
+      character(len=16), allocatable, intent(out) :: names(:)
+      allocate (names(NSTATE_COULOMB))
+      names = COULOMB_STATE_NAMES
+   end subroutine coulomb_history_names
 
    !> Elastic trial, exact return on the cone side, separation check (module header).
    subroutine contact_step(this, s0, de, state, sigma, tangent, mode)

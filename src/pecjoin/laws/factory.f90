@@ -13,6 +13,8 @@ module pecjoin_laws_factory
    use pecjoin_laws_spring, only: build_spring_law
    use pecjoin_laws_ghaboussi, only: build_ghaboussi_law
    use pecjoin_laws_mohr_coulomb, only: build_mohr_coulomb_law
+   use pecjoin_laws_modjoin_build, only: build_modjoin_initial_law, build_modjoin_law, &
+      build_modjoin_cyclic_law
    implicit none (type, external)
    private
 
@@ -53,6 +55,9 @@ contains
       call registry%register('SPRING', build_spring_law)
       call registry%register('GHABOUSSI', build_ghaboussi_law)
       call registry%register('MOHR_COULOMB', build_mohr_coulomb_law)
+      call registry%register('MODJOIN_INITIAL', build_modjoin_initial_law)
+      call registry%register('MODJOIN', build_modjoin_law)
+      call registry%register('MODJOIN_CYCLIC', build_modjoin_cyclic_law)
    end function default_law_registry
 
    subroutine register_law(registry, name, builder)

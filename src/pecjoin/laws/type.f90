@@ -35,6 +35,13 @@ module pecjoin_laws_type
       procedure(update_ifc), deferred :: update
       !> False when the tangent can be non-symmetric (the solver then uses UMFPACK).
       procedure :: symmetric_tangent => law_symmetric_tangent
+      !> Accumulated plastic slip sum |d eps_t^p| of a point with history `state` (for the
+      !> results; 0 for a law without one).
+      procedure :: plastic_slip => law_plastic_slip
+      !> Names of the history variables (for the results file; none by default).
+      procedure :: state_names => law_state_names
+      !> One line describing the law as built (e.g. unit conversions); '' by default.
+      procedure :: describe => law_describe
    end type interface_law_t
 
    type :: interface_law_box_t
@@ -80,5 +87,23 @@ contains
       class(interface_law_t), intent(in) :: this
       law_symmetric_tangent = .true.
    end function law_symmetric_tangent
+
+   pure real(wp) function law_plastic_slip(this, state) result(slip)
+      class(interface_law_t), intent(in) :: this
+      real(wp), intent(in) :: state(:)
+      slip = 0.0_wp
+   end function law_plastic_slip
+
+   pure subroutine law_state_names(this, names)
+      class(interface_law_t), intent(in) :: this
+      character(len=16), allocatable, intent(out) :: names(:)
+      allocate (names(0))
+   end subroutine law_state_names
+
+   function law_describe(this) result(text)
+      class(interface_law_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = ''
+   end function law_describe
 
 end module pecjoin_laws_type

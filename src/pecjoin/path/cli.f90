@@ -99,6 +99,7 @@ contains
       if (.not. quiet) write (*, '(a,i0,a,i0,a)') ' law '//d%law%name//' ('//d%law_type// &
          ')   path '//PATH_NAMES(d%control)//'  sigma_n0 '//num(d%sigma_n0)//'  targets ', &
          size(d%targets), '  x ', d%steps, ' increments'
+      if (.not. quiet .and. len(d%law%describe()) > 0) write (*, '(a)') ' '//d%law%describe()
 
       call run_path(d%law, d%control, [d%sigma_n0, d%tau0], d%ks, d%targets, d%steps, res, &
          run_err)

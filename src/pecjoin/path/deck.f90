@@ -18,6 +18,7 @@ module pecjoin_path_deck
       split_fields, field_real, parse_real, parse_int, upper, itoa
    use pecjoin_laws_type, only: interface_law_t, MODE_OPEN
    use pecjoin_laws_factory, only: law_registry_t, default_law_registry
+   use pecjoin_laws_checks, only: length_unit_metres, LENGTH_UNIT_KEYS
    implicit none (type, external)
    private
 
@@ -136,9 +137,12 @@ contains
       type(path_deck_t), intent(inout) :: deck
       type(error_t), allocatable, intent(out) :: error
       type(law_registry_t), intent(in), optional :: registry
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, text
       integer :: i, pos
-      call kw%check_keys(lines(at), [character(len=4) :: 'NAME', 'TYPE'], error)
+      real(wp) :: metres
+      logical :: found, ok
+      call kw%check_keys(lines(at), [character(len=11) :: 'NAME', 'TYPE', LENGTH_UNIT_KEYS], &
+         error)
       if (allocated(error)) return
       call kw%require(lines(at), 'NAME', name, error)
       if (allocated(error)) return
@@ -151,6 +155,18 @@ contains
       deck%params%line = lines(pos)%line
       deck%params%keyword = '*INTERFACE_LAW'
       allocate (deck%params%keys(0), deck%params%values(0))
+      ! LENGTH_UNIT=MM|M, MODEL_UNIT=MM|M: passed to the law as the unit's size in metres
+      do i = 1, size(LENGTH_UNIT_KEYS)
+         call kw%get(trim(LENGTH_UNIT_KEYS(i)), text, found)
+         if (.not. found) cycle
+         call length_unit_metres(upper(text), metres, ok)
+         if (.not. ok) then
+            call deck_error(error, lines(at)%file, lines(at)%line, lines(at)%keyword, &
+               trim(LENGTH_UNIT_KEYS(i))//"='"//text//"' is not a length unit: use MM or M")
+            return
+         end if
+         call deck%params%add(trim(LENGTH_UNIT_KEYS(i)), metres)
+      end do
       do i = first, last
          call read_pairs(lines(i), deck%params, error)
          if (allocated(error)) return

@@ -19,6 +19,7 @@ module pecplas_io_deck_reader_joints
    use pecplas_model_params, only: params_t
    use pecplas_model_joints, only: JOINT_TYPES
    use pecjoin_laws_type, only: interface_law_t, interface_law_box_t
+   use pecjoin_laws_checks, only: length_unit_metres, LENGTH_UNIT_KEYS
    implicit none (type, external)
    private
 
@@ -33,13 +34,16 @@ contains
       type(model_t), intent(inout) :: model
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: name, ltype
+      character(len=:), allocatable :: name, ltype, text
       type(params_t) :: params
       class(interface_law_t), allocatable :: law
       type(interface_law_box_t), allocatable :: tmp(:)
       integer :: i, n, at
+      real(wp) :: metres
+      logical :: found, ok
       associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
+         call block%kw%check_keys(kwline, [character(len=11) :: 'NAME', 'TYPE', &
+            LENGTH_UNIT_KEYS], error)
          if (allocated(error)) return
          call block%kw%require(kwline, 'NAME', name, error)
          if (allocated(error)) return
@@ -70,6 +74,18 @@ contains
       params%line = state%lines(at)%line
       params%keyword = '*INTERFACE_LAW'
       allocate (params%keys(0), params%values(0))
+      ! LENGTH_UNIT=MM|M, MODEL_UNIT=MM|M: passed to the law as the unit's size in metres
+      do i = 1, size(LENGTH_UNIT_KEYS)
+         call block%kw%get(trim(LENGTH_UNIT_KEYS(i)), text, found)
+         if (.not. found) cycle
+         call length_unit_metres(upper(text), metres, ok)
+         if (.not. ok) then
+            call line_error(state, block%at, trim(LENGTH_UNIT_KEYS(i))//"='"//text// &
+               "' is not a length unit: use MM or M", error)
+            return
+         end if
+         call params%add(trim(LENGTH_UNIT_KEYS(i)), metres)
+      end do
       do i = block%first, block%last
          call read_pairs(state, i, params, error)
          if (allocated(error)) return

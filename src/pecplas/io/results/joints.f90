@@ -21,7 +21,6 @@ module pecplas_io_results_joints
    use pecplas_io_results_increment, only: joint_fields_t, joint_points_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, safe_name, &
       increment_group
-   use pecjoin_laws_coulomb, only: coulomb_law_t, COULOMB_STATE_NAMES
    implicit none (type, external)
    private
 
@@ -79,6 +78,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: gall, g
       integer, allocatable :: conn0(:, :), ids(:)
+      character(len=16), allocatable :: names(:)
       integer :: s
       call h5_group(file, '/mesh/joint_sets', gall, error)
       if (allocated(error)) return
@@ -103,11 +103,9 @@ contains
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
                call h5_write(g, 'tributary', set%tributary, error)
-            select type (law => model%laws(set%law_index)%law)
-            class is (coulomb_law_t)
-               if (.not. allocated(error)) call h5_attr(g, 'state_names', COULOMB_STATE_NAMES, &
-                  error)
-            end select
+            call model%laws(set%law_index)%law%state_names(names)
+            if (.not. allocated(error) .and. size(names) > 0) &
+               call h5_attr(g, 'state_names', names, error)
             call h5_close_group(g)
             if (allocated(error)) exit
          end associate
