@@ -36,6 +36,7 @@ program tester
    use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
    use test_pecjoin_identify, only: collect_pecjoin_identify
    use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
+   use test_pecjoin_identify_roundtrip, only: collect_pecjoin_identify_roundtrip
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -78,6 +79,7 @@ program tester
    suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
    suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
+   suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

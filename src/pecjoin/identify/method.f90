@@ -113,8 +113,9 @@ contains
          end associate
       end do
 
-      sig = res%tests%sigma_n0
-      tpk = res%tests%tau_peak
+      ! explicit constructors: a component array of a derived type would be copied anyway
+      sig = [(res%tests(i)%sigma_n0, i=1, n)]
+      tpk = [(res%tests(i)%tau_peak, i=1, n)]
       if (n >= 2 .and. .not. opt%zero_cohesion .and. maxval(sig) > minval(sig)) then
          call line_fit(sig, tpk, tan_phi, res%c)
       else
@@ -128,7 +129,7 @@ contains
       end if
       res%phi = atan(tan_phi)*DEG
       c_term = res%c/tan_phi
-      tan_psi = origin_fit(sig, res%tests%tau_turn)
+      tan_psi = origin_fit(sig, [(res%tests(i)%tau_turn, i=1, n)])
       res%psi = atan(tan_psi)*DEG
 
       do i = 1, n
@@ -141,14 +142,14 @@ contains
          end associate
       end do
 
-      res%g0 = mean(res%tests%g0)
+      res%g0 = mean([(res%tests(i)%g0, i=1, n)])
       res%k0_modulus = 2.0_wp*res%g0
-      res%alpha = mean(res%tests%alpha)
-      res%beta = mean(res%tests%beta)
-      res%r0 = mean(res%tests%r0)
-      res%a = mean(res%tests%a)
-      res%b = mean(res%tests%b)
-      res%a_g = mean(res%tests%a_g)
+      res%alpha = mean([(res%tests(i)%alpha, i=1, n)])
+      res%beta = mean([(res%tests(i)%beta, i=1, n)])
+      res%r0 = mean([(res%tests(i)%r0, i=1, n)])
+      res%a = mean([(res%tests(i)%a, i=1, n)])
+      res%b = mean([(res%tests(i)%b, i=1, n)])
+      res%a_g = mean([(res%tests(i)%a_g, i=1, n)])
    end subroutine identify
 
    !> alpha, beta, R0, k0, gamma, A, B of one test (see the module header).
