@@ -1,7 +1,7 @@
 !> MODJOIN identification, the closed forms and the tools: (III.20) makes R_m(gamma) = 1 and
 !> dR_m/dk(gamma) = 0 to 1e-12; (III.18) gives the thesis's beta = 1.52 / 1.81 / 1.26 mm
 !> for tables III.2 / III.5 / III.6; k0 from R_m(k0) = R0; least-squares line and cubic
-!> extremum exact on exact data; CSV curves in the point driver's and a comment form, and
+!> extremum and hyperbola exact on exact data; CSV curves in the point driver's and a comment form, and
 !> their errors (file:line).
 module test_pecjoin_identify
    use pecplas_kinds, only: wp
@@ -10,7 +10,8 @@ module test_pecjoin_identify
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use pecjoin_identify_closed_forms, only: rm_value, rm_slope, beta_from_slope, ab_from_peak, &
       k0_from_r0
-   use pecjoin_identify_fits, only: line_fit, smooth_max, origin_slope_upto, end_value
+   use pecjoin_identify_fits, only: line_fit, smooth_max, origin_slope_upto, end_value, &
+      hyperbola_fit
    use pecjoin_identify_curves, only: test_curve_t, read_test_curve
    implicit none (type, external)
    private
@@ -126,11 +127,13 @@ contains
 
    !> A line is fitted exactly; the secant of a straight start is its slope; the cubic
    !> extremum finds the maximum of y = 5 - (x - 1.234)^2 (1 + 0.3 (x - 1.234)) (an
-   !> asymmetric peak, exactly a cubic) to 1e-10; the end value of a line is exact.
+   !> asymmetric peak, exactly a cubic) to 1e-10; the end value of a line is exact; the
+   !> hyperbola 48.7 (x + 0.4)/(x + 1.3) is fitted to 1e-9.
    subroutine test_fits(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: x(401), y(401), slope, intercept, xm, ym
+      real(wp) :: x(401), y(401), slope, intercept, xm, ym, t, x0, sh
       integer :: i, imax
+      logical :: ok
       x = [(0.01_wp*i, i=0, 400)]
       y = 3.0_wp*x - 2.0_wp
       call line_fit(x, y, slope, intercept)
@@ -148,6 +151,11 @@ contains
       call check_close(error, xm, 1.234_wp, 1.0e-10_wp, 'cubic peak position')
       if (allocated(error)) return
       call check_close(error, ym, 5.0_wp, 1.0e-12_wp, 'cubic peak value')
+      if (allocated(error)) return
+      y = 48.7_wp*(x + 0.4_wp)/(x + 1.3_wp)
+      call hyperbola_fit(x, y, t, x0, sh, ok)
+      call check(error, ok .and. abs(t - 48.7_wp) < 1.0e-9_wp .and. abs(x0 - 0.4_wp) < &
+         1.0e-10_wp .and. abs(sh - 1.3_wp) < 1.0e-10_wp, 'hyperbola fit exact')
    end subroutine test_fits
 
    !> The point driver's CSV (sigma_n0 from the first row's sigma_n, the text column `mode`

@@ -15,6 +15,8 @@ module test_pecjoin_sensitivity
    use pecjoin_sensitivity_thesis, only: THESIS_KEYS, FRACTIONS_III4, CURVE_LABELS, &
       thesis_curves, table_iii2_params, THESIS_SIGMA_N0, THESIS_EPS_T
    use pecjoin_sensitivity_report, only: print_sensitivity, ranking
+   use pecjoin_sensitivity_cli, only: sensitivity_main
+   use pecplas_files, only: make_directories
    use fixtures_pecjoin, only: law_params
    implicit none (type, external)
    private
@@ -32,7 +34,8 @@ contains
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('q_ratio_linear', test_linear), &
                new_unittest('no_influence_mc', test_mc), &
-               new_unittest('modjoin_table_iii4', test_modjoin)]
+               new_unittest('modjoin_table_iii4', test_modjoin), &
+               new_unittest('command_line', test_command)]
    end subroutine collect_pecjoin_sensitivity
 
    subroutine linear_run(this, params, control, sigma_n0, targets, steps, res, error)
@@ -160,6 +163,37 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_modjoin
+
+   !> `pecplas-sensitivity`: a Mohr–Coulomb path deck with added perturbations exits 0 and
+   !> writes one CSV row per parameter (PHI, PSI of the table, then KN); a perturbation of a
+   !> parameter the law lacks, or a bad value, exits 2.
+   subroutine test_command(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: DIR = 'build/test_out/sensitivity'
+      character(len=256) :: line
+      integer :: u, n, ios
+      call make_directories(DIR)
+      call check(error, sensitivity_main([character(len=64) :: &
+         'input/paths/cnl_mohr_coulomb.inp', '--perturb', 'KN=30', '--steps', '60', &
+         '--quiet', '-o', DIR//'/mc.csv']) == 0, 'exit 0')
+      if (allocated(error)) return
+      open (newunit=u, file=DIR//'/mc.csv', status='old', action='read')
+      n = 0
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         n = n + 1
+         if (n == 2) call check(error, line(1:4) == 'PHI,', 'first row PHI')
+         if (allocated(error)) exit
+      end do
+      close (u)
+      if (allocated(error)) return
+      call check(error, n == 4 .and. line(1:3) == 'KN,', 'rows PHI, PSI, KN')
+      if (allocated(error)) return
+      call check(error, sensitivity_main([character(len=40) :: &
+         'input/paths/cnl_mohr_coulomb.inp', '--perturb', 'XX=3', '--quiet']) == 2 .and. &
+         sensitivity_main([character(len=40) :: '--steps', 'many']) == 2, 'input errors exit 2')
+   end subroutine test_command
 
    pure logical function same_set(a, b)
       character(len=*), intent(in) :: a(:), b(:)

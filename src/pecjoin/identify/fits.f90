@@ -8,6 +8,7 @@ module pecjoin_identify_fits
    private
 
    public :: line_fit, origin_fit, smooth_max, interpolate, end_value, origin_slope_upto
+   public :: hyperbola_fit
 
 contains
 
@@ -91,6 +92,35 @@ contains
       xm = x(imax) + t*window
       ym = c(1) + c(2)*t + c(3)*t*t + c(4)*t**3
    end subroutine smooth_max
+
+   !> Hyperbola y = t (x + x0) / (x + s) by least squares on its linear form
+   !> y x = t x + (t x0) - s y (exact for exact data): the asymptote t, the shift x0 and s.
+   !> `ok` is false when the normal equations are singular or t <= 0.
+   pure subroutine hyperbola_fit(x, y, t, x0, s, ok)
+      real(wp), intent(in) :: x(:), y(:)
+      real(wp), intent(out) :: t, x0, s
+      logical, intent(out) :: ok
+      real(wp) :: m(3, 3), r(3), c(3), v(3), scale
+      integer :: i
+      t = 0.0_wp
+      x0 = 0.0_wp
+      s = 0.0_wp
+      m = 0.0_wp
+      r = 0.0_wp
+      scale = maxval(abs(y))
+      do i = 1, size(x)
+         v = [x(i), 1.0_wp, -y(i)/scale]
+         m = m + spread(v, 2, 3)*spread(v, 1, 3)
+         r = r + y(i)*x(i)*v
+      end do
+      call solve_small(m, r, c, ok)
+      if (.not. ok) return
+      t = c(1)
+      ok = t > 0.0_wp
+      if (.not. ok) return
+      x0 = c(2)/t
+      s = c(3)/scale
+   end subroutine hyperbola_fit
 
    !> y at x0 by linear interpolation (x increasing; clamped at the ends).
    pure real(wp) function interpolate(x, y, x0) result(y0)

@@ -8,6 +8,8 @@
 !> - peak (eps_peak, tau_peak): vertex of a parabola fitted around the largest tau;
 !>   phi, c: least-squares line tau_peak = c + sigma_n0 tan(phi) over the tests (or through
 !>   the origin with `zero_cohesion`, or with one test);
+!>   (initial version, no peak: tau_peak = the asymptote of a hyperbola fitted to the curve,
+!>   which also gives beta);
 !> - alpha = tau_lim / tau_peak (III.17), tau_lim from a line over the last 10 % of the curve;
 !> - beta from (III.18); R0 = tau_y / ((sigma_n0 + C) tan(phi)), tau_y the end of the
 !>   straight start (deviation from the secant line <= r0_tol), unless given;
@@ -16,7 +18,7 @@
 !>   R_m(k0) = R0; `total_gamma` takes the thesis's literal gamma = eps_peak (elastic part
 !>   neglected); `refine_alpha` corrects (III.17) for the hyperbola not yet at alpha at the end;
 !> - psi: tau/sigma_n at the turn of eps_n (contraction -> dilation, the characteristic
-!>   state), regression through the origin over the tests;
+!>   state), regression through the origin over the tests where eps_n turns;
 !> - a_g: least-squares fit of eps_n (pecjoin_identify_dilatancy).
 module pecjoin_identify_method
    use pecplas_kinds, only: wp
@@ -24,7 +26,7 @@ module pecjoin_identify_method
    use pecjoin_identify_closed_forms, only: PA, beta_from_slope, ab_from_peak, k0_from_r0
    use pecjoin_identify_curves, only: test_curve_t
    use pecjoin_identify_fits, only: line_fit, origin_fit, smooth_max, interpolate, end_value, &
-      origin_slope_upto
+      origin_slope_upto, hyperbola_fit
    use pecjoin_identify_dilatancy, only: fit_a_g
    implicit none (type, external)
    private
@@ -54,6 +56,12 @@ module pecjoin_identify_method
       real(wp) :: sigma_n0 = 0, g_secant = 0, g0 = 0, eps_peak = 0, tau_peak = 0, phi = 0
       real(wp) :: tau_lim = 0, alpha = 1, beta = 0, r0 = 0, k0 = 0, gamma = 0, a = 0, b = 0
       real(wp) :: eps_turn = 0, tau_turn = 0, psi = 0, a_g = 0, ag_rms = 0
+      !> eps_n turns (contraction -> dilation) on this curve: it then enters psi's regression.
+      logical :: turns = .false.
+      !> Initial version, tau still rising at the end: tau_peak is the asymptote of the
+      !> hyperbola fitted to the plastic part, and beta that hyperbola's.
+      logical :: asymptote = .false.
+      real(wp) :: beta_fit = 0
    end type test_values_t
 
    !> Per-test values and the averaged/regressed parameter set.
@@ -102,14 +110,16 @@ contains
                return
             end if
             t%tau_lim = end_value(cv%eps_t, cv%tau, opt%lim_fraction)
-            call smooth_max(cv%eps_t, cv%eps_n, opt%window, t%eps_turn, en_turn, imax)
-            if (imax == 1 .or. imax == size(cv%eps_n)) then
-               call input_error(error, cv%file//': eps_n does not turn from contraction '// &
-                  'to dilation (closure-positive eps_n has no interior maximum): psi needs it')
-               return
+            if (opt%version == VERSION_INITIAL .and. imax == size(cv%tau)) then
+               call asymptote(cv, t, error)
+               if (allocated(error)) return
             end if
-            t%tau_turn = interpolate(cv%eps_t, cv%tau, t%eps_turn)
-            t%psi = atan(t%tau_turn/cv%sigma_n0)*DEG
+            call smooth_max(cv%eps_t, cv%eps_n, opt%window, t%eps_turn, en_turn, imax)
+            t%turns = imax > 1 .and. imax < size(cv%eps_n)
+            if (t%turns) then
+               t%tau_turn = interpolate(cv%eps_t, cv%tau, t%eps_turn)
+               t%psi = atan(t%tau_turn/cv%sigma_n0)*DEG
+            end if
          end associate
       end do
 
@@ -129,7 +139,13 @@ contains
       end if
       res%phi = atan(tan_phi)*DEG
       c_term = res%c/tan_phi
-      tan_psi = origin_fit(sig, [(res%tests(i)%tau_turn, i=1, n)])
+      if (.not. any([(res%tests(i)%turns, i=1, n)])) then
+         call input_error(error, 'eps_n turns from contraction to dilation on none of the '// &
+            'curves (closure-positive eps_n has no interior maximum): psi needs one')
+         return
+      end if
+      tan_psi = origin_fit(pack(sig, [(res%tests(i)%turns, i=1, n)]), &
+         pack([(res%tests(i)%tau_turn, i=1, n)], [(res%tests(i)%turns, i=1, n)]))
       res%psi = atan(tan_psi)*DEG
 
       do i = 1, n
@@ -169,6 +185,7 @@ contains
       t%alpha = 1.0_wp
       if (opt%version == VERSION_IMPROVED) t%alpha = ratio
       t%beta = beta_from_slope(t%alpha, tan_phi, t%g0, t%sigma_n0, c_term)
+      if (t%asymptote) t%beta = t%beta_fit
       s = t%beta*t%sigma_n0/PA
       t%a = 0.0_wp
       t%b = 0.0_wp
@@ -204,6 +221,33 @@ contains
       end do
       if (allocated(error)) error%message = cv%file//': '//error%message
    end subroutine hardening
+
+   !> Initial version without a peak: on CNL, tau = T k/(s + k) with k = k0 + p and
+   !> p = eps_t - tau/G the plastic displacement, i.e. the hyperbola tau = T (p + k0)/(p + s +
+   !> k0), fitted on the clearly plastic points (p > 5 % of its largest value). Its asymptote
+   !> T = tan(phi)(sigma_n0 + C) stands for tau_peak (the curve has not reached it) and
+   !> s = beta sigma_n0/P_a gives beta: the thesis's own beta of table III.1 (9 mm) is not the
+   !> (III.18) value (2.2 mm), so it was fitted too.
+   subroutine asymptote(cv, t, error)
+      type(test_curve_t), intent(in) :: cv
+      type(test_values_t), intent(inout) :: t
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: p(size(cv%eps_t)), tt, k0, s1
+      logical :: use(size(cv%eps_t)), ok
+      p = cv%eps_t - cv%tau/t%g_secant
+      use = p > 0.05_wp*maxval(p) .and. cv%tau > 0.0_wp
+      ok = count(use) >= 5
+      if (ok) call hyperbola_fit(pack(p, use), pack(cv%tau, use), tt, k0, s1, ok)
+      if (ok) ok = s1 > k0 .and. k0 >= 0.0_wp .and. tt > t%tau_peak
+      if (.not. ok) then
+         call input_error(error, cv%file//': tau still rises at the end of the curve and '// &
+            'no hyperbola tau = T k/(s + k) fits it: cannot place the strength')
+         return
+      end if
+      t%asymptote = .true.
+      t%tau_peak = tt
+      t%beta_fit = (s1 - k0)*PA/t%sigma_n0
+   end subroutine asymptote
 
    !> tau at the end of the straight start of the curve (the yield point of R0). The
    !> relative deviation from the secant line, d = 1 - tau/(G eps_t) = eps_p/eps_t, is 0 on

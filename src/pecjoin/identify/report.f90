@@ -21,6 +21,8 @@ contains
    subroutine print_identification(unit, res)
       integer, intent(in) :: unit
       type(identification_t), intent(in) :: res
+      character(len=160) :: line
+      character(len=32) :: tail
       integer :: i
       write (unit, '(a,i0,a)') 'MODJOIN identification ('//trim(VERSION_NAMES(res%version))// &
          ' version) from ', size(res%tests), ' CNL test(s); kPa, mm, degrees'
@@ -31,11 +33,21 @@ contains
          '   beta     R0     k0  gamma       A      B  eps_tn  tau_tn  psi_i    a_g  rms(eps_n)'
       do i = 1, size(res%tests)
          associate (t => res%tests(i))
-            write (unit, '(f9.2,f7.2,f7.2,f8.3,f8.2,f7.2,f9.2,f7.3,f7.3,f7.3,f7.3,f7.3,f8.4,'// &
-               'f7.3,f8.3,f8.2,f7.2,f7.3,es11.2)') t%sigma_n0, t%g_secant, t%g0, t%eps_peak, &
-               t%tau_peak, t%phi, t%tau_lim, t%alpha, t%beta, t%r0, t%k0, t%gamma, t%a, t%b, &
-               t%eps_turn, t%tau_turn, t%psi, t%a_g, t%ag_rms
-            write (unit, '(a)') '          ('//t%file//')'
+            write (line, '(f9.2,f7.2,f7.2,f8.3,f8.2,f7.2,f9.2,f7.3,f7.3,f7.3,f7.3,f7.3,f8.4,'// &
+               'f7.3)') t%sigma_n0, t%g_secant, t%g0, t%eps_peak, t%tau_peak, t%phi, t%tau_lim, &
+               t%alpha, t%beta, t%r0, t%k0, t%gamma, t%a, t%b
+            if (t%turns) then
+               write (tail, '(f8.3,f8.2,f7.2)') t%eps_turn, t%tau_turn, t%psi
+            else
+               tail = '       -       -      -'
+            end if
+            write (unit, '(a,f7.3,es11.2)') trim(line)//tail(1:23), t%a_g, t%ag_rms
+            if (t%asymptote) then
+               write (unit, '(a)') '          ('//t%file//'; no peak: tau_pk = asymptote '// &
+                  'of the fitted hyperbola, beta = its beta)'
+            else
+               write (unit, '(a)') '          ('//t%file//')'
+            end if
          end associate
       end do
       write (unit, '(a)') repeat('-', 132)
@@ -60,6 +72,7 @@ contains
       character(len=*), intent(in) :: path
       type(identification_t), intent(in) :: res
       type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: turn
       integer :: u, ios, i
       open (newunit=u, file=path, status='replace', action='write', iostat=ios)
       if (ios /= 0) then
@@ -69,9 +82,14 @@ contains
       write (u, '(a)') CSV_COLUMNS
       do i = 1, size(res%tests)
          associate (t => res%tests(i))
+            if (t%turns) then
+               turn = cells([t%eps_turn, t%tau_turn, t%psi])
+            else
+               turn = ',,,'
+            end if
             write (u, '(a)') csv_name(t%file)//cells([t%sigma_n0, t%g_secant, t%g0, &
                2.0_wp*t%g0, t%eps_peak, t%tau_peak, t%phi, res%c, t%tau_lim, t%alpha, t%beta, &
-               t%r0, t%k0, t%gamma, t%a, t%b, t%eps_turn, t%tau_turn, t%psi, t%a_g, t%ag_rms])
+               t%r0, t%k0, t%gamma, t%a, t%b])//turn//cells([t%a_g, t%ag_rms])
          end associate
       end do
       write (u, '(a)') 'mean,,'//cells([res%g0, res%k0_modulus])//',,'// &
