@@ -34,6 +34,9 @@ program tester
    use test_massif_plasticity_dp, only: collect_massif_plasticity_dp
    use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
    use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
+   use test_pecjoin_modjoin, only: collect_pecjoin_modjoin
+   use test_pecjoin_modjoin_paths, only: collect_pecjoin_modjoin_paths
+   use test_pecjoin_modjoin_fe, only: collect_pecjoin_modjoin_fe
    use test_pecjoin_identify, only: collect_pecjoin_identify
    use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
    use test_pecjoin_identify_roundtrip, only: collect_pecjoin_identify_roundtrip
@@ -77,6 +80,9 @@ program tester
    suites = [suites, new_testsuite('massif_plasticity_dp', collect_massif_plasticity_dp)]
    suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
    suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]
+   suites = [suites, new_testsuite('pecjoin_modjoin', collect_pecjoin_modjoin)]
+   suites = [suites, new_testsuite('pecjoin_modjoin_paths', collect_pecjoin_modjoin_paths)]
+   suites = [suites, new_testsuite('pecjoin_modjoin_fe', collect_pecjoin_modjoin_fe)]
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
    suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
    suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]

@@ -8,7 +8,9 @@
 !>
 !> For CNL and CNS the normal increment d eps_n solves r(d eps_n) = 0 by Newton with the
 !> law's tangent, d r / d(d eps_n) = C(1,1) + KS, every iteration re-calling `update` from the
-!> converged state of the previous increment, until |r| <= 1e-10 max(|sigma|).
+!> converged state of the previous increment, until |r| <= 1e-10 max(|sigma|); one more
+!> Newton step then polishes the root (Newton converges quadratically, so the normal
+!> condition then holds to round-off and does not drift over thousands of increments).
 module pecjoin_path_driver
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, run_error
@@ -86,19 +88,25 @@ contains
       real(wp), intent(out) :: deps_n, sigma(2)
       integer, intent(out) :: mode, iterations
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: trial_state(size(state)), tangent(2, 2), r, slope, kc
+      real(wp) :: trial_state(size(state)), tangent(2, 2), r, slope, kc, scale
       character(len=16) :: buf
+      logical :: polished
 
       kc = 0.0_wp
       if (control == PATH_CNS) kc = ks
       deps_n = 0.0_wp
+      polished = .false.
       do iterations = 1, MAX_ITER
          trial_state = state
          call law%update(sigma_old, [deps_n, deps_t], trial_state, sigma, tangent, mode, error)
          if (allocated(error)) return
          if (control == PATH_CND) exit
          r = sigma(1) - sigma_old(1) + kc*deps_n
-         if (abs(r) <= TOL*max(abs(sigma_old(1)), abs(sigma(1)), abs(sigma(2)))) exit
+         scale = max(abs(sigma_old(1)), abs(sigma(1)), abs(sigma(2)))
+         if (abs(r) <= TOL*scale) then
+            if (polished .or. abs(r) <= 1.0e-15_wp*scale) exit
+            polished = .true.
+         end if
          slope = tangent(1, 1) + kc
          if (.not. slope > 0.0_wp) then
             call run_error(error, PATH_NAMES(control)//' path: the normal stiffness of law '// &

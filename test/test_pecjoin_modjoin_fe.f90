@@ -1,0 +1,135 @@
+!> MODJOIN in the finite-element solver: one GOODMAN4 joint between two stiff blocks
+!> (test/data/modjoin/) under a constant normal load, sheared monotonically (improved
+!> version, table III.2) and cyclically (cyclic version, table III.6 Dr = 80 %), with the
+!> parameters in mm and the model in metres. The joint points must follow the point
+!> driver's CNL curve on the same eps_t path within 0.5 % (the blocks deform by ~1e-6 of
+!> the joint displacement; the law is step-size independent to ~1e-5), and the full Newton
+!> iteration with the law's tangent must converge quadratically (<= 3 iterations).
+module test_pecjoin_modjoin_fe
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t
+   use pecplas_model, only: model_t
+   use pecplas_cli, only: run_deck
+   use pecplas_files, only: make_directories
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_io_results_reader, only: results_reader_t
+   use pecplas_io_results_h5, only: increment_group
+   use pecplas_testing, only: unittest_t, new_unittest, check
+   use pecjoin_laws_type, only: interface_law_t
+   use pecjoin_path_driver, only: path_result_t
+   use pecjoin_path_deck, only: PATH_CNL
+   use fixtures_modjoin, only: table_law, run_table_path
+   implicit none (type, external)
+   private
+   public :: collect_pecjoin_modjoin_fe
+
+   character(len=*), parameter :: DIR = 'build/test_out/modjoin', DATA = 'test/data/modjoin/'
+   !> Point-driver increments per mm of eps_t (0.001 mm).
+   integer, parameter :: PER_MM = 1000
+
+contains
+
+   subroutine collect_pecjoin_modjoin_fe(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('fe_cnl_equals_point_driver', test_cnl), &
+               new_unittest('fe_cyclic_equals_point_driver', test_cyclic)]
+   end subroutine collect_pecjoin_modjoin_fe
+
+   subroutine test_cnl(error)
+      type(error_t), allocatable, intent(out) :: error
+      call compare('fe_cnl', 'III.2', 56.0_wp, [6.0_wp], error)
+   end subroutine test_cnl
+
+   subroutine test_cyclic(error)
+      type(error_t), allocatable, intent(out) :: error
+      call compare('fe_cyclic', 'III.6D', 100.0_wp, [2.0_wp, -2.0_wp, 2.0_wp, -2.0_wp, 2.0_wp], &
+         error)
+   end subroutine test_cyclic
+
+   !> Runs deck `name`, reads (eps, sigma) of both joint points at every increment and
+   !> compares them with the point driver on the targets (mm) at the same eps_t.
+   subroutine compare(name, table, sigma_n0, targets, error)
+      character(len=*), intent(in) :: name, table
+      real(wp), intent(in) :: sigma_n0, targets(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(results_reader_t) :: rd
+      class(interface_law_t), allocatable :: law
+      type(path_result_t) :: pd
+      real(wp), allocatable :: eps(:, :, :), sig(:, :, :)
+      real(wp) :: e_t, tau_ref, en_ref, dtau, den, dsn, prev
+      integer :: code, n, k, ip, seg, nseg
+      call make_directories(DIR)
+      code = run_deck(DATA//name//'.inp', DIR//'/'//name//'.h5', .true., model, problem)
+      call check(error, code == 0, name//': the run completes')
+      if (allocated(error)) return
+      call check(error, problem%iterations <= 3*problem%increments, name// &
+         ': full Newton with the law tangent, at most 3 iterations per increment on average')
+      if (allocated(error)) return
+      ! every segment gets the increments of the longest one (0.001 mm there)
+      nseg = nint(max(abs(targets(1)), maxval(abs(targets(2:) - targets(:size(targets) - 1)), &
+         mask=size(targets) > 1))*PER_MM)
+      call table_law(table, law, error)
+      if (.not. allocated(error)) call run_table_path(law, PATH_CNL, sigma_n0, targets, nseg, &
+         pd, error)
+      if (allocated(error)) return
+      call rd%open(DIR//'/'//name//'.h5', error)
+      if (allocated(error)) return
+      call rd%history_length(n, error)
+      if (allocated(error)) return
+      dtau = 0.0_wp
+      den = 0.0_wp
+      dsn = 0.0_wp
+      seg = 1
+      prev = 0.0_wp
+      do k = 1, n
+         ! the segment of the FE row: the next target once the previous row reached one
+         if (seg < size(targets)) then
+            if (abs(prev - targets(seg)) < 1.0e-3_wp) seg = seg + 1
+         end if
+         call rd%dataset(increment_group(k)//'/joints/joint/relative_displacement', eps, error)
+         if (.not. allocated(error)) call rd%dataset(increment_group(k)// &
+            '/joints/joint/stress', sig, error)
+         if (allocated(error)) return
+         do ip = 1, size(eps, 2)
+            e_t = 1.0e3_wp*eps(2, ip, 1)
+            call driver_at(pd, targets, nseg, seg, e_t, tau_ref, en_ref)
+            dtau = max(dtau, abs(sig(2, ip, 1) - tau_ref))
+            den = max(den, abs(1.0e3_wp*eps(1, ip, 1) - en_ref))
+            dsn = max(dsn, abs(sig(1, ip, 1) - sigma_n0))
+         end do
+         prev = 1.0e3_wp*eps(2, 1, 1)
+      end do
+      call rd%close()
+      call check(error, dtau <= 5.0e-3_wp*maxval(abs(pd%tau)), name// &
+         ': tau = point driver within 0.5 %')
+      if (allocated(error)) return
+      call check(error, den <= 5.0e-3_wp*maxval(abs(pd%eps_n)), name// &
+         ': eps_n = point driver within 0.5 %')
+      if (allocated(error)) return
+      call check(error, dsn <= 5.0e-3_wp*sigma_n0, name//': sigma_n = sigma_n0 within 0.5 %')
+   end subroutine compare
+
+   !> tau and eps_n of the point driver at eps_t = e on segment `seg` (linear between rows;
+   !> the first segment has nseg rows per |targets(2) - targets(1)| scaled to its length).
+   subroutine driver_at(pd, targets, nseg, seg, e, tau, en)
+      type(path_result_t), intent(in) :: pd
+      real(wp), intent(in) :: targets(:), e
+      integer, intent(in) :: nseg, seg
+      real(wp), intent(out) :: tau, en
+      real(wp) :: start, x, t
+      integer :: row0, i
+      start = 0.0_wp
+      if (seg > 1) start = targets(seg - 1)
+      row0 = (seg - 1)*nseg
+      ! rows of a segment are equally spaced between its start and its target
+      x = (e - start)/(targets(seg) - start)*nseg
+      x = min(max(x, 0.0_wp), real(nseg, wp))
+      i = min(int(x), nseg - 1)
+      t = x - i
+      tau = (1.0_wp - t)*pd%tau(row0 + i) + t*pd%tau(row0 + i + 1)
+      en = (1.0_wp - t)*pd%eps_n(row0 + i) + t*pd%eps_n(row0 + i + 1)
+   end subroutine driver_at
+
+end module test_pecjoin_modjoin_fe
