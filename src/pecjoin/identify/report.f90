@@ -60,6 +60,8 @@ contains
       if (res%version == VERSION_IMPROVED) then
          write (unit, '(a)') '  thesis table III.2 (dense, improved): K0 = 80  G0 = 40  '// &
             'phi = 41  c = 0  R0 = 0.3  beta = 1.5  alpha = 0.7  A = 0.6  B = 0.96  psi = 27  a_g = 0.4'
+         write (unit, '(a)') '  thesis table III.5 (medium, improved): K0 = 70  G0 = 35  '// &
+            'phi = 37  c = 0  R0 = 0.2  beta = 1.8  alpha = 0.84  A = 0.15  B = 0.7  psi = 30  a_g = 0.4'
       else
          write (unit, '(a)') '  thesis table III.1 (dense, initial): K = 80  G = 40  '// &
             'phi = 41  c = 0  R0 = 0.3  beta = 9.0  psi = 27  a_g = 0.5'
