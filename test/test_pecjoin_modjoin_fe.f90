@@ -1,7 +1,8 @@
 !> MODJOIN in the finite-element solver: one GOODMAN4 joint between two stiff blocks
 !> (test/data/modjoin/) under a constant normal load, sheared monotonically (improved
-!> version, table III.2) and cyclically (cyclic version, table III.6 Dr = 80 %), with the
-!> parameters in mm and the model in metres. The joint points must follow the point
+!> version, table III.2; also with a GOODMAN6 joint and with two spring doublets) and
+!> cyclically (cyclic version, table III.6 Dr = 80 %), with the parameters in mm and the
+!> model in metres. The joint points must follow the point
 !> driver's CNL curve on the same eps_t path within 0.5 % (the blocks deform by ~1e-6 of
 !> the joint displacement; the law is step-size independent to ~1e-5), and the full Newton
 !> iteration with the law's tangent must converge quadratically (<= 3 iterations).
@@ -32,6 +33,8 @@ contains
    subroutine collect_pecjoin_modjoin_fe(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('fe_cnl_equals_point_driver', test_cnl), &
+               new_unittest('fe_cnl_goodman6', test_cnl_goodman6), &
+               new_unittest('fe_cnl_spring', test_cnl_spring), &
                new_unittest('fe_cyclic_equals_point_driver', test_cyclic)]
    end subroutine collect_pecjoin_modjoin_fe
 
@@ -39,6 +42,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call compare('fe_cnl', 'III.2', 56.0_wp, [6.0_wp], error)
    end subroutine test_cnl
+
+   !> The same with Q8 blocks and a GOODMAN6 joint (3 Gauss points).
+   subroutine test_cnl_goodman6(error)
+      type(error_t), allocatable, intent(out) :: error
+      call compare('fe_cnl_goodman6', 'III.2', 56.0_wp, [6.0_wp], error)
+   end subroutine test_cnl_goodman6
+
+   !> The same with two spring doublets (the law works on force per tributary length).
+   subroutine test_cnl_spring(error)
+      type(error_t), allocatable, intent(out) :: error
+      call compare('fe_cnl_spring', 'III.2', 56.0_wp, [6.0_wp], error)
+   end subroutine test_cnl_spring
 
    subroutine test_cyclic(error)
       type(error_t), allocatable, intent(out) :: error
@@ -59,7 +74,7 @@ contains
       type(path_result_t) :: pd
       real(wp), allocatable :: eps(:, :, :), sig(:, :, :)
       real(wp) :: e_t, tau_ref, en_ref, dtau, den, dsn, prev
-      integer :: code, n, k, ip, seg, nseg
+      integer :: code, n, k, ip, e, seg, nseg
       call make_directories(DIR)
       code = run_deck(DATA//name//'.inp', DIR//'/'//name//'.h5', .true., model, problem)
       call check(error, code == 0, name//': the run completes')
@@ -92,12 +107,14 @@ contains
          if (.not. allocated(error)) call rd%dataset(increment_group(k)// &
             '/joints/joint/stress', sig, error)
          if (allocated(error)) return
-         do ip = 1, size(eps, 2)
-            e_t = 1.0e3_wp*eps(2, ip, 1)
-            call driver_at(pd, targets, nseg, seg, e_t, tau_ref, en_ref)
-            dtau = max(dtau, abs(sig(2, ip, 1) - tau_ref))
-            den = max(den, abs(1.0e3_wp*eps(1, ip, 1) - en_ref))
-            dsn = max(dsn, abs(sig(1, ip, 1) - sigma_n0))
+         do e = 1, size(eps, 3)
+            do ip = 1, size(eps, 2)
+               e_t = 1.0e3_wp*eps(2, ip, e)
+               call driver_at(pd, targets, nseg, seg, e_t, tau_ref, en_ref)
+               dtau = max(dtau, abs(sig(2, ip, e) - tau_ref))
+               den = max(den, abs(1.0e3_wp*eps(1, ip, e) - en_ref))
+               dsn = max(dsn, abs(sig(1, ip, e) - sigma_n0))
+            end do
          end do
          prev = 1.0e3_wp*eps(2, 1, 1)
       end do

@@ -151,17 +151,17 @@ contains
          ip = maxloc(r%tau, dim=1) - 1
          select type (law)
          type is (modjoin_law_t)
-            bp = law%betap(law%beta, SIGMAS(i))
-            rmax = scan_max(bp, law%alpha, law%a, law%b)
+            bp = law%betap(law%p%beta, SIGMAS(i))
+            rmax = scan_max(bp, law%p%alpha, law%p%a, law%p%b)
             k_end = law%initial_k(SIGMAS(i)) + r%slip(n)
             ratio = r%tau(n)/r%tau(ip)
             call check(error, ip < n .and. r%tau(n) < 0.95_wp*r%tau(ip), trim(what)// &
                ': a peak, then tau falls by more than 5 %')
             if (allocated(error)) return
-            call check_close(error, ratio, mj_hardening(k_end, bp, law%alpha, law%a, law%b)/ &
+            call check_close(error, ratio, mj_hardening(k_end, bp, law%p%alpha, law%p%a, law%p%b)/ &
                rmax, 1.0e-4_wp, trim(what)//': tau_end/tau_peak = R_m(k_end)/R_max')
             if (allocated(error)) return
-            call check(error, ratio < law%alpha/rmax .and. ratio > 0.8_wp*law%alpha/rmax, &
+            call check(error, ratio < law%p%alpha/rmax .and. ratio > 0.8_wp*law%p%alpha/rmax, &
                trim(what)//': tau_end/tau_peak within 20 % below its limit alpha/R_max')
             if (allocated(error)) return
          end select

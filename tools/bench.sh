@@ -4,11 +4,15 @@
 # of the whole program (read+setup, assembly incl. COO->CSC, factorisation incl. analysis,
 # solve, residual, output), its total, a bare CHOLMOD analyse+factorise+solve of the SAME
 # matrix measured in the same run, their ratio, and peak resident memory.
-# SIZES=small skips the 1e6 cases (a minute each).
+# SIZES=small skips the 1e6 cases (a minute each). First: the MODJOIN law speed
+# (bench/laws/bench_laws.f90).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 FPM=${FPM:-fpm}
 $FPM build --profile release >/dev/null
+# interface-law speed (MODJOIN: updates/s incl. tangent, 8000-increment CNL path), seconds
+$FPM run --profile release --target pecplas-bench-laws 2>/dev/null
+echo
 exe=$($FPM run --profile release --target pecplas-bench --runner echo 2>/dev/null | tail -n 1)
 cases=("Q4 70" "Q8 41" "Q4 223" "Q8 129")
 [[ ${SIZES:-all} == small ]] || cases+=("Q4 707" "Q8 408")

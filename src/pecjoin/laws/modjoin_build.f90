@@ -22,8 +22,8 @@ module pecjoin_laws_modjoin_build
    use pecplas_model_params, only: params_t
    use pecjoin_laws_type, only: interface_law_t
    use pecjoin_laws_checks, only: get_param, param_error, tan_deg, num
-   use pecjoin_laws_modjoin, only: modjoin_law_t, MJ_INITIAL, MJ_IMPROVED, MJ_CYCLIC, &
-      MJ_VERSION_NAMES
+   use pecjoin_laws_modjoin, only: modjoin_law_t
+   use pecjoin_laws_modjoin_step, only: MJ_INITIAL, MJ_IMPROVED, MJ_CYCLIC, MJ_VERSION_NAMES
    implicit none (type, external)
    private
 
@@ -82,7 +82,7 @@ contains
          return
       end if
       m%name = name
-      m%version = version
+      m%p%version = version
       call get_param(params, 'LENGTH_UNIT', lu, error, gt=0.0_wp)
       if (allocated(error)) return
       call get_param(params, 'MODEL_UNIT', mu, error, default=lu, gt=0.0_wp)
@@ -99,23 +99,23 @@ contains
       if (.not. allocated(error)) call get_param(params, 'PSI', psi, error, ge=0.0_wp, &
          lt=90.0_wp)
       if (.not. allocated(error)) call get_param(params, 'A_G', a_g, error, ge=0.0_wp)
-      if (.not. allocated(error)) call get_param(params, 'PA', m%el%pa, error, &
+      if (.not. allocated(error)) call get_param(params, 'PA', m%p%el%pa, error, &
          default=100.0_wp, gt=0.0_wp)
       if (allocated(error)) return
-      call get_param(params, 'SIGMA_MIN', m%el%smin, error, default=0.01_wp*m%el%pa, &
-         gt=0.0_wp, lt=m%el%pa)
+      call get_param(params, 'SIGMA_MIN', m%p%el%smin, error, default=0.01_wp*m%p%el%pa, &
+         gt=0.0_wp, lt=m%p%el%pa)
       if (.not. allocated(error)) call get_param(params, 'SUBSTEP', h, error, &
          default=SUBSTEP_M/lu, gt=0.0_wp)
       if (allocated(error)) return
       a = 0.0_wp
       b = 0.0_wp
       b_cyc = 0.0_wp
-      m%alpha = 1.0_wp
+      m%p%alpha = 1.0_wp
       if (version == MJ_IMPROVED) then
-         call get_param(params, 'ALPHA', m%alpha, error, gt=0.0_wp)
+         call get_param(params, 'ALPHA', m%p%alpha, error, gt=0.0_wp)
          if (.not. allocated(error)) call get_param(params, 'A', a, error, ge=0.0_wp)
       else if (version == MJ_CYCLIC) then
-         call get_param(params, 'ALPHA', m%alpha, error, default=1.0_wp, gt=0.0_wp)
+         call get_param(params, 'ALPHA', m%p%alpha, error, default=1.0_wp, gt=0.0_wp)
          if (.not. allocated(error)) call get_param(params, 'A', a, error, default=0.0_wp, &
             ge=0.0_wp)
          if (.not. allocated(error)) call get_param(params, 'B_CYC', b_cyc, error, gt=0.0_wp)
@@ -128,32 +128,32 @@ contains
       end if
       if (allocated(error)) return
       if (version == MJ_INITIAL) then
-         call get_param(params, 'R0', m%r0, error, gt=0.0_wp, lt=1.0_wp)
+         call get_param(params, 'R0', m%p%r0, error, gt=0.0_wp, lt=1.0_wp)
       else
-         call get_param(params, 'R0', m%r0, error, gt=0.0_wp, lt=m%alpha)
+         call get_param(params, 'R0', m%p%r0, error, gt=0.0_wp, lt=m%p%alpha)
       end if
       if (allocated(error)) return
 
-      m%el%nonlinear = version /= MJ_INITIAL
-      m%el%k0 = k0/f
-      m%el%g0 = g0/f
-      m%mu_f = tan_deg(phi)
-      m%cc = c/m%mu_f
-      m%mu_g = tan_deg(psi)
-      m%a_g = a_g/f
-      m%beta = beta*f
-      m%a = a/f**2
-      m%b = b/f
-      m%b_cyc = b_cyc*f
-      m%substep = h*f
+      m%p%el%nonlinear = version /= MJ_INITIAL
+      m%p%el%k0 = k0/f
+      m%p%el%g0 = g0/f
+      m%p%mu_f = tan_deg(phi)
+      m%p%cc = c/m%p%mu_f
+      m%p%mu_g = tan_deg(psi)
+      m%p%a_g = a_g/f
+      m%p%beta = beta*f
+      m%p%a = a/f**2
+      m%p%b = b/f
+      m%p%b_cyc = b_cyc*f
+      m%p%substep = h*f
       m%summary = vname//' '//name//': parameters in '//unit_name(lu)//', model in '// &
-         unit_name(mu)//' (x'//num(f)//'); in model units K0 = '//num(m%el%k0)//', G0 = '// &
-         num(m%el%g0)//', BETA = '//num(m%beta)//', A = '//num(m%a)//', B = '//num(m%b)// &
-         ', A_G = '//num(m%a_g)
-      if (version == MJ_CYCLIC) m%summary = m%summary//', B_CYC = '//num(m%b_cyc)
-      m%summary = m%summary//', SUBSTEP = '//num(m%substep)//'; P_a = '//num(m%el%pa)// &
-         ', SIGMA_MIN = '//num(m%el%smin)//'; (III.18) alpha tan(phi) P_a/G0 = '// &
-         num(m%alpha*m%mu_f*m%el%pa/m%el%g0)//' vs BETA'
+         unit_name(mu)//' (x'//num(f)//'); in model units K0 = '//num(m%p%el%k0)//', G0 = '// &
+         num(m%p%el%g0)//', BETA = '//num(m%p%beta)//', A = '//num(m%p%a)//', B = '//num(m%p%b)// &
+         ', A_G = '//num(m%p%a_g)
+      if (version == MJ_CYCLIC) m%summary = m%summary//', B_CYC = '//num(m%p%b_cyc)
+      m%summary = m%summary//', SUBSTEP = '//num(m%p%substep)//'; P_a = '//num(m%p%el%pa)// &
+         ', SIGMA_MIN = '//num(m%p%el%smin)//'; (III.18) alpha tan(phi) P_a/G0 = '// &
+         num(m%p%alpha*m%p%mu_f*m%p%el%pa/m%p%el%g0)//' vs BETA'
       allocate (law, source=m)
    end subroutine build
 
