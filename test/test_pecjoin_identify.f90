@@ -1,8 +1,8 @@
 !> MODJOIN identification, the closed forms and the tools: (III.20) makes R_m(gamma) = 1 and
 !> dR_m/dk(gamma) = 0 to 1e-12; (III.18) gives the thesis's beta = 1.52 / 1.81 / 1.26 mm
 !> for tables III.2 / III.5 / III.6; k0 from R_m(k0) = R0; least-squares line and cubic
-!> extremum and hyperbola exact on exact data; CSV curves in the point driver's and a comment form, and
-!> their errors (file:line).
+!> extremum and hyperbola exact on exact data; CSV curves in the point driver's and a comment
+!> form, and their errors (file:line).
 module test_pecjoin_identify
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
@@ -33,8 +33,8 @@ contains
    end subroutine collect_pecjoin_identify
 
    !> Over alpha in {0.5, 0.7, 0.84, 1}, s in {0.3, 0.84, 2} mm and gamma in {1, 2.4, 4} mm
-   !> (the hyperbola alone is below 1 there since alpha <= 1), (III.20)'s A, B satisfy both conditions of
-   !> (III.19, corrected) to 1e-12, and B gamma > 2 (A > 0). The thesis's example
+   !> (the hyperbola alone is below 1 there since alpha <= 1), (III.20)'s A, B satisfy both
+   !> conditions of (III.19, corrected) to 1e-12, and B gamma > 2 (A > 0). The thesis's example
    !> (alpha 0.7, beta 1.5 mm, sigma_n0 56 kPa, gamma 2.4 mm) gives B = 0.95 mm^-1 (SPEC §4;
    !> table III.2 prints the three-test mean 0.96).
    subroutine test_ab(error)

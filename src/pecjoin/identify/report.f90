@@ -53,15 +53,18 @@ contains
       write (unit, '(a)') repeat('-', 132)
       write (unit, '(a)') 'Identified set (phi, c: regression of tau_peak on sigma_n0; psi: '// &
          'regression through the origin; the rest averaged; K0 = 2 G0 as the thesis):'
-      write (unit, '(a,f0.2,a,f0.3,a,f0.3,a,f0.3,a,f0.3,a,f0.3,a,f0.4,a,f0.4,a,f0.3,a,f0.3,a,f0.3)') &
-         '  K0 = ', res%k0_modulus, '  G0 = ', res%g0, '  phi = ', res%phi, '  c = ', res%c, &
-         '  R0 = ', res%r0, '  beta = ', res%beta, '  alpha = ', res%alpha, '  A = ', res%a, &
-         '  B = ', res%b, '  psi = ', res%psi, '  a_g = ', res%a_g
+      write (unit, '(a)') '  K0 = '//num(res%k0_modulus, 2)//'  G0 = '//num(res%g0, 3)// &
+         '  phi = '//num(res%phi, 3)//'  c = '//num(res%c, 3)//'  R0 = '//num(res%r0, 3)// &
+         '  beta = '//num(res%beta, 3)//'  alpha = '//num(res%alpha, 4)//'  A = '// &
+         num(res%a, 4)//'  B = '//num(res%b, 3)//'  psi = '//num(res%psi, 3)//'  a_g = '// &
+         num(res%a_g, 3)
       if (res%version == VERSION_IMPROVED) then
          write (unit, '(a)') '  thesis table III.2 (dense, improved): K0 = 80  G0 = 40  '// &
-            'phi = 41  c = 0  R0 = 0.3  beta = 1.5  alpha = 0.7  A = 0.6  B = 0.96  psi = 27  a_g = 0.4'
+            'phi = 41  c = 0  R0 = 0.3  beta = 1.5  alpha = 0.7  A = 0.6  B = 0.96  '// &
+            'psi = 27  a_g = 0.4'
          write (unit, '(a)') '  thesis table III.5 (medium, improved): K0 = 70  G0 = 35  '// &
-            'phi = 37  c = 0  R0 = 0.2  beta = 1.8  alpha = 0.84  A = 0.15  B = 0.7  psi = 30  a_g = 0.4'
+            'phi = 37  c = 0  R0 = 0.2  beta = 1.8  alpha = 0.84  A = 0.15  B = 0.7  '// &
+            'psi = 30  a_g = 0.4'
       else
          write (unit, '(a)') '  thesis table III.1 (dense, initial): K = 80  G = 40  '// &
             'phi = 41  c = 0  R0 = 0.3  beta = 9.0  psi = 27  a_g = 0.5'
@@ -99,6 +102,18 @@ contains
          cells([res%a, res%b])//',,'//cells([res%psi, res%a_g])//','
       close (u)
    end subroutine write_identification_csv
+
+   !> x with d decimals, no blanks (0.313, not .313).
+   pure function num(x, d) result(s)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: d
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+      character(len=12) :: f
+      write (f, '(a,i0,a)') '(f24.', d, ')'
+      write (buf, f) x
+      s = trim(adjustl(buf))
+   end function num
 
    !> ',v1,v2,...' with full precision.
    pure function cells(v) result(s)
