@@ -35,7 +35,8 @@ contains
       tests = [new_unittest('fe_cnl_equals_point_driver', test_cnl), &
                new_unittest('fe_cnl_goodman6', test_cnl_goodman6), &
                new_unittest('fe_cnl_spring', test_cnl_spring), &
-               new_unittest('fe_cyclic_equals_point_driver', test_cyclic)]
+               new_unittest('fe_cyclic_equals_point_driver', test_cyclic), &
+               new_unittest('fe_model_unit_required', test_model_unit)]
    end subroutine collect_pecjoin_modjoin_fe
 
    subroutine test_cnl(error)
@@ -60,6 +61,20 @@ contains
       call compare('fe_cyclic', 'III.6D', 100.0_wp, [2.0_wp, -2.0_wp, 2.0_wp, -2.0_wp, 2.0_wp], &
          error)
    end subroutine test_cyclic
+
+   !> LENGTH_UNIT without MODEL_UNIT in a model deck: input error, no results file.
+   subroutine test_model_unit(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: code
+      logical :: exists
+      call make_directories(DIR)
+      code = run_deck(DATA//'bad_no_model_unit.inp', DIR//'/bad_no_model_unit.h5', .true., &
+         model, problem)
+      inquire (file=DIR//'/bad_no_model_unit.h5', exist=exists)
+      call check(error, code == 2 .and. .not. exists, 'exit code 2 and no results file')
+   end subroutine test_model_unit
 
    !> Runs deck `name`, reads (eps, sigma) of both joint points at every increment and
    !> compares them with the point driver on the targets (mm) at the same eps_t.

@@ -10,7 +10,7 @@ module test_pecjoin_modjoin_paths
    use pecjoin_laws_type, only: interface_law_t
    use pecjoin_laws_modjoin, only: modjoin_law_t
    use pecjoin_laws_modjoin_kernel, only: mj_hardening
-   use pecjoin_path_driver, only: path_result_t
+   use pecjoin_path_driver, only: path_result_t, path_increment
    use pecjoin_path_deck, only: PATH_CNL, PATH_CND
    use fixtures_modjoin, only: table_law, run_table_path, rel_curve_diff
    implicit none (type, external)
@@ -32,7 +32,8 @@ contains
                new_unittest('improved_cnl_peak_plateau', test_peak_plateau), &
                new_unittest('improved_cnl_contraction_dilation', test_contraction), &
                new_unittest('improved_cnd_normal_stress_dip', test_cnd_dip), &
-               new_unittest('cyclic_hardening_and_contraction', test_cyclic)]
+               new_unittest('cyclic_hardening_and_contraction', test_cyclic), &
+               new_unittest('cyclic_memory_unload_reload', test_memory)]
    end subroutine collect_pecjoin_modjoin_paths
 
    !> tau, sigma_n and eps_n with increments of 0.1 mm and of 0.001 mm differ by less than
@@ -283,6 +284,64 @@ contains
       if (allocated(error)) return
       call check(error, ed(NCYC) < el(NCYC), 'dense contracts less than loose')
    end subroutine test_cyclic
+
+   !> Discrete memory: a small elastic unload-reload leaves no trace. CNL at 100 kPa, table
+   !> III.6 Dr = 80 %: (a) on the primary surface, 0 -> 2 -> 1.95 -> 3 mm ends where 0 -> 3
+   !> does; (b) on a kinematic branch, 0 -> 2 -> 0.5 -> 0.55 -> -0.5 ends where 0 -> 2 -> -0.5
+   !> does (the unloading registers a reversal, the reload through that reversal point
+   !> restores the branch kept before it). Same increment size (0.005 mm) on both paths:
+   !> the end stresses and eps_n agree to 1e-6 of their scale (increments end at different
+   !> points of the curves, hence not round-off).
+   subroutine test_memory(error)
+      type(error_t), allocatable, intent(out) :: error
+      call same_end([2.0_wp, 1.95_wp, 3.0_wp], [3.0_wp], [400, 10, 210], [600], error)
+      if (allocated(error)) return
+      call same_end([2.0_wp, 0.5_wp, 0.55_wp, -0.5_wp], [2.0_wp, -0.5_wp], [400, 300, 10, 210], &
+         [400, 500], error)
+   end subroutine test_memory
+
+   subroutine same_end(ta, tb, na, nb, error)
+      real(wp), intent(in) :: ta(:), tb(:)
+      integer, intent(in) :: na(:), nb(:)
+      type(error_t), allocatable, intent(out) :: error
+      class(interface_law_t), allocatable :: law
+      real(wp) :: sa(2), sb(2), ea, eb
+      call table_law('III.6D', law, error)
+      if (.not. allocated(error)) call walk(law, ta, na, sa, ea, error)
+      if (.not. allocated(error)) call walk(law, tb, nb, sb, eb, error)
+      if (allocated(error)) return
+      call check(error, abs(sa(2) - sb(2)) < 1.0e-6_wp*abs(sb(2)) .and. &
+         abs(ea - eb) < 1.0e-6_wp*max(abs(eb), 1.0e-3_wp), &
+         'an elastic unload-reload leaves no trace (tau, eps_n at the end)')
+   end subroutine same_end
+
+   !> CNL at 100 kPa through targets(i) in n(i) increments; end stress and eps_n.
+   subroutine walk(law, targets, n, sigma, eps_n, error)
+      class(interface_law_t), intent(in) :: law
+      real(wp), intent(in) :: targets(:)
+      integer, intent(in) :: n(:)
+      real(wp), intent(out) :: sigma(2), eps_n
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: state(:)
+      real(wp) :: e, d, dn, s_new(2)
+      integer :: seg, i, mode, iters
+      allocate (state(law%nstate()))
+      sigma = [100.0_wp, 0.0_wp]
+      call law%init_state(sigma, state)
+      e = 0.0_wp
+      eps_n = 0.0_wp
+      do seg = 1, size(targets)
+         d = (targets(seg) - e)/n(seg)
+         do i = 1, n(seg)
+            call path_increment(law, PATH_CNL, 0.0_wp, sigma, state, d, dn, s_new, mode, &
+               iters, error)
+            if (allocated(error)) return
+            sigma = s_new
+            eps_n = eps_n + dn
+         end do
+         e = targets(seg)
+      end do
+   end subroutine walk
 
    subroutine cycle_ends(table, tc, ec, error)
       character(len=*), intent(in) :: table

@@ -12,8 +12,8 @@
 !> stress/LENGTH_UNIT, A in LENGTH_UNIT^-2, B and A_G in LENGTH_UNIT^-1. With LENGTH_UNIT=MM
 !> the thesis tables read K0 = 80 (printed "80 MPa" = kPa/mm) and BETA = 1.5 (printed 0.0015,
 !> in metres). The law works in MODEL_UNIT, the length unit of the model's displacements
-!> (default: LENGTH_UNIT): the conversion is applied here, once, and the summary line that
-!> the programs print shows the converted values. Stresses (C, PA, SIGMA_MIN) are in the
+!> (default: LENGTH_UNIT; the model-deck reader requires it): the conversion is applied here,
+!> once, and the summary line that the programs print shows the converted values. Stresses (C, PA, SIGMA_MIN) are in the
 !> deck's stress unit; PA = 100 is P_a in kPa. The readers pass LENGTH_UNIT and MODEL_UNIT as
 !> the size of the unit in metres (1e-3 for MM, 1 for M).
 module pecjoin_laws_modjoin_build
@@ -21,7 +21,7 @@ module pecjoin_laws_modjoin_build
    use pecplas_error, only: error_t
    use pecplas_model_params, only: params_t
    use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_laws_checks, only: get_param, param_error, tan_deg, num
+   use pecjoin_laws_checks, only: get_param, param_error, tan_deg
    use pecjoin_laws_modjoin, only: modjoin_law_t
    use pecjoin_laws_modjoin_step, only: MJ_INITIAL, MJ_IMPROVED, MJ_CYCLIC, MJ_VERSION_NAMES
    implicit none (type, external)
@@ -156,6 +156,44 @@ contains
          num(m%p%alpha*m%p%mu_f*m%p%el%pa/m%p%el%g0)//' vs BETA'
       allocate (law, source=m)
    end subroutine build
+
+   !> Six significant digits, without trailing zeros: 0.0015, 80000, 1.52125, 6e-07.
+   function num(x) result(s)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=40) :: buf
+      integer :: e, i, d
+      if (x == 0.0_wp) then
+         s = '0'
+         return
+      end if
+      e = floor(log10(abs(x)))
+      if (e >= -4 .and. e <= 6) then
+         d = max(0, 5 - e)
+         write (buf, '(f0.'//achar(48 + d/10)//achar(48 + mod(d, 10))//')') x
+         s = trim(adjustl(buf))
+         if (index(s, '.') > 0) then
+            i = len(s)
+            do while (s(i:i) == '0')
+               i = i - 1
+            end do
+            if (s(i:i) == '.') i = i - 1
+            s = s(1:i)
+         end if
+         if (s(1:1) == '.') s = '0'//s
+         if (s(1:2) == '-.') s = '-0'//s(2:)
+      else
+         write (buf, '(es12.5e2)') x
+         s = trim(adjustl(buf))
+         i = index(s, 'E')
+         d = i - 1
+         do while (s(d:d) == '0')
+            d = d - 1
+         end do
+         if (s(d:d) == '.') d = d - 1
+         s = s(1:d)//'e'//s(i + 1:)
+      end if
+   end function num
 
    !> 'mm' / 'm' / '<x> m'.
    function unit_name(metres) result(s)

@@ -106,12 +106,13 @@ contains
       end if
       saved = state
       ! the slack keeps n the same when the units are scaled (0.02/0.001 vs 2e-5/1e-6)
-      n = max(1, ceiling(maxval(abs(de))/this%substep*(1.0_wp - 1.0e-10_wp)))
+      ! (capped: an absurd increment must not overflow the count)
+      n = max(1, ceiling(min(maxval(abs(de))/this%substep*(1.0_wp - 1.0e-10_wp), 1.0e7_wp)))
       do attempt = 1, 4
          call substeps(this, s0, de, n, state, sigma, tangent, mode, ok)
          if (ok) return
          state = saved
-         n = 8*n
+         n = min(8*n, 80000000)
       end do
    end subroutine mj_integrate
 

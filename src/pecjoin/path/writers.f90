@@ -100,6 +100,10 @@ contains
          if (allocated(error)) exit body
          call h5_attr(law, 'type', deck%law_type, error)
          if (allocated(error)) exit body
+         ! what the law made of its parameters (e.g. MODJOIN's unit conversion)
+         if (len(deck%law%describe()) > 0) call h5_attr(law, 'description', &
+            deck%law%describe(), error)
+         if (allocated(error)) exit body
          do i = 1, size(deck%params%keys)
             call h5_attr(law, trim(deck%params%keys(i)), deck%params%values(i), error)
             if (allocated(error)) exit

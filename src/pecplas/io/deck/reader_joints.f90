@@ -74,7 +74,15 @@ contains
       params%line = state%lines(at)%line
       params%keyword = '*INTERFACE_LAW'
       allocate (params%keys(0), params%values(0))
-      ! LENGTH_UNIT=MM|M, MODEL_UNIT=MM|M: passed to the law as the unit's size in metres
+      ! LENGTH_UNIT=MM|M, MODEL_UNIT=MM|M: passed to the law as the unit's size in metres.
+      ! In a model deck the mesh's length unit is never assumed: MODEL_UNIT must be stated.
+      if (block%kw%has('LENGTH_UNIT') .and. .not. block%kw%has('MODEL_UNIT')) then
+         call line_error(state, block%at, 'LENGTH_UNIT gives the unit of the law''s '// &
+            'parameters; also state the length unit of the mesh with MODEL_UNIT=MM|M '// &
+            '(e.g. LENGTH_UNIT=MM, MODEL_UNIT=M for thesis parameters in a model in metres)', &
+            error)
+         return
+      end if
       do i = 1, size(LENGTH_UNIT_KEYS)
          call block%kw%get(trim(LENGTH_UNIT_KEYS(i)), text, found)
          if (.not. found) cycle

@@ -1,6 +1,7 @@
 !> Joint sets in the results file (PECJOIN):
 !>   /mesh/joint_sets/<set>  attributes name, etype, law, integration, thickness, mode_names,
-!>        state_names (the law's history variables, when the law names them)
+!>        state_names (the law's history variables, when the law names them),
+!>        law_description (the law's own summary, e.g. MODJOIN's unit conversion, if any)
 !>        connectivity (npe, nel) 0-based in (B.8) order, element_ids (nel),
 !>        point_coordinates (2, np, nel), point_tangents (2, np, nel) (n = (-t_y, t_x)),
 !>        tributary (nel, springs only)
@@ -103,6 +104,9 @@ contains
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
                call h5_write(g, 'tributary', set%tributary, error)
+            if (.not. allocated(error) .and. &
+                len(model%laws(set%law_index)%law%describe()) > 0) call h5_attr(g, &
+               'law_description', model%laws(set%law_index)%law%describe(), error)
             call model%laws(set%law_index)%law%state_names(names)
             if (.not. allocated(error) .and. size(names) > 0) &
                call h5_attr(g, 'state_names', names, error)
