@@ -111,7 +111,8 @@ contains
       character(len=32) :: buf
       character(len=12) :: f
       write (f, '(a,i0,a)') '(f24.', d, ')'
-      write (buf, f) x
+      ! no '-0.000' for a value that rounds to zero
+      write (buf, f) merge(0.0_wp, x, abs(x) < 0.5_wp*10.0_wp**(-d))
       s = trim(adjustl(buf))
    end function num
 
