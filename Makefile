@@ -21,7 +21,7 @@ CMAKE_DIR ?= build/cmake
 JOBS ?= 2
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1 s2 s3
+.PHONY: help deps build run test bench clean s1 s2 s3 s4
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -32,6 +32,8 @@ help:
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
 	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
 	@echo "  make s2, s3   scenes S2 (pile, interface models) and S3 (dilatancy), PNGs in output/"
+	@echo "  make s4       scene S4 (MODJOIN on homogeneous paths): input/s4 with pecplas-path,"
+	@echo "                identification and sensitivity tables, PNGs in output/s4"
 	@echo "  make bench    speed benchmarks (tools/bench.sh)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
@@ -74,6 +76,25 @@ s2 s3: build
 	  echo "make $@: $$n exit $$rc"; \
 	done
 	@$(PYTHON) tools/plot_s2.py output
+# S4: every path deck, then the identification of the CNL curves (thesis III.17-III.20) and
+# the sensitivity table (III.4), then the figures. The tables are also kept as .txt files.
+S4_RUN = $(FPM) run --profile release --target
+s4: build
+	@mkdir -p output/s4
+	@for d in input/s4/*.inp; do \
+	  n=$$(basename $$d .inp); \
+	  $(S4_RUN) pecplas-path -- $$d -o output/s4/$$n --quiet 2>/dev/null && rc=0 || rc=$$?; \
+	  echo "make s4: $$n exit $$rc (0 completed, 3 stopped early)"; \
+	done
+	@for t in iii1 iii2 iii5; do \
+	  v=improved; [[ $$t == iii1 ]] && v=initial; \
+	  $(S4_RUN) pecplas-identify -- --version $$v output/s4/s4_$${t}_cnl_{31,56,122}.csv \
+	    -o output/s4/identification_$$t.csv 2>&1 | tee output/s4/identification_$$t.txt \
+	    || echo "make s4: identification of $$t failed"; \
+	done
+	@$(S4_RUN) pecplas-sensitivity -- -o output/s4/sensitivity.csv 2>&1 \
+	  | tee output/s4/sensitivity.txt
+	@$(PYTHON) tools/plot_s4.py output/s4
 
 bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \

@@ -39,6 +39,9 @@ program tester
    use test_pecjoin_modjoin_fe, only: collect_pecjoin_modjoin_fe
    use test_pecjoin_katona, only: collect_pecjoin_katona
    use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
+   use test_pecjoin_identify, only: collect_pecjoin_identify
+   use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
+   use test_pecjoin_identify_roundtrip, only: collect_pecjoin_identify_roundtrip
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -84,6 +87,9 @@ program tester
    suites = [suites, new_testsuite('pecjoin_modjoin_fe', collect_pecjoin_modjoin_fe)]
    suites = [suites, new_testsuite('pecjoin_katona', collect_pecjoin_katona)]
    suites = [suites, new_testsuite('pecjoin_katona_friction', collect_pecjoin_katona_friction)]
+   suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
+   suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
+   suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
