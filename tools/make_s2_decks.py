@@ -9,7 +9,8 @@ Assumed (SPEC): soil E = 2e4 kPa, nu = 0.3, gamma = 18 kN/m3, K0 = 0.5 (geostati
 stress); pile E = 2e7 kPa, nu = 0.2; domain radius 10 m, depth 20 m, bottom fixed, outer side
 radially fixed; head load 0 -> 2000 kN in 20 increments, back to 0 in 20. Further assumed here:
 the pile starts from the same geostatic stress as the soil (gamma = 18, K0 = 0.5, so the
-initial state is continuous across the interface); thin layer thickness 0.01 m (its unit
+initial state is continuous across the interface); Katona contact on the node doublets
+(springs' doublets) without the column-soil doublet at the tip corner; thin layer thickness 0.01 m (its unit
 stiffnesses are K e); springs carry the same K_n, K_t per unit area (times their tributary
 area) — with Frank's default penalty 1e5 E_ryg R_max instead, full Newton cycles between stick
 and slip on unloading (doc/validation.md). Full Newton: the frictional tangent is
@@ -29,7 +30,7 @@ ROOT = Path(__file__).resolve().parents[1]
 A, L, H, R = 0.5, 10.0, 20.0, 10.0
 E_SOIL, E_PILE = 2.0e4, 2.0e7
 THIN = 0.01
-MODELS = ("goodman", "ghaboussi", "spring", "mohr_coulomb")
+MODELS = ("goodman", "ghaboussi", "spring", "mohr_coulomb", "katona")
 
 
 def graded(x0, x1, n, ratio):
@@ -94,6 +95,8 @@ def law_lines(model, psi=0.0):
     if model == "spring":
         return ["*INTERFACE_LAW, NAME=iface, TYPE=SPRING",
                 f"KN = {E_PILE:g}, KT = {E_SOIL:g}, PHI = 30, C = 0"]
+    if model == "katona":
+        return ["*INTERFACE_LAW, NAME=iface, TYPE=KATONA", "PHI = 30, C = 0"]
     return ["*INTERFACE_LAW, NAME=iface, TYPE=MOHR_COULOMB",
             f"KN = {E_PILE:g}, KT = {E_SOIL:g}, PHI = 30, C = 0, PSI = {psi:g}"]
 
@@ -101,8 +104,13 @@ def law_lines(model, psi=0.0):
 def joint_lines(m, model):
     out, jid = [], 10 * m.eid
     for name, pairs in interfaces(m):
-        if model == "spring":
+        if model in ("spring", "katona"):
             out.append(f"*JOINTS, TYPE=SPRING, SET={name}, LAW=iface")
+            if model == "katona" and name == "below":
+                # the corner doublet column-soil would close a loop of three bonded
+                # constraints (pile-soil, column-pile, column-soil): linearly dependent
+                # multipliers; the column meets the soil there through the pile
+                pairs = pairs[1:]
             for a, b in pairs:
                 jid += 1
                 out.append(f"{jid}, {a}, {b}")
