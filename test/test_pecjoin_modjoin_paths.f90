@@ -198,12 +198,17 @@ contains
 
    !> Table III.2, CNL: eps_n (closure positive) first contracts (max > 0), then dilates past
    !> its start (eps_n < 0 at the end) and stabilises (its slope at 8 mm < 5 % of the
-   !> steepest dilation slope, since A_g = exp(-a_g k) -> 0); the contraction grows with
-   !> sigma_n0 (31 < 56 < 122 kPa).
+   !> steepest dilation slope, since A_g = exp(-a_g (k - k0)) -> 0). Tables III.2 and III.1:
+   !> the largest contraction grows with sigma_n0 (31 < 56 < 122 kPa; fig. III.9b, III.11b:
+   !> A_g counts the plastic slip from the start of loading, so a larger sigma_n0, which
+   !> spreads the hardening over a longer slip, contracts more): each by > 10 % (GROW; the
+   !> law gives +18 %, +27 % for III.2 and +41 %, +34 % for III.1), far above the 1e-4
+   !> step-size error of eps_n.
    subroutine test_contraction(error)
       type(error_t), allocatable, intent(out) :: error
       class(interface_law_t), allocatable :: law
       type(path_result_t) :: r
+      real(wp), parameter :: GROW = 1.1_wp
       real(wp) :: cmax(3), s_end, s_max
       integer :: i, n
       character(len=32) :: what
@@ -226,8 +231,18 @@ contains
             ': eps_n stabilises')
          if (allocated(error)) return
       end do
-      call check(error, cmax(1) < cmax(2) .and. cmax(2) < cmax(3), &
-         'the contraction grows with sigma_n0')
+      call check(error, cmax(2) > GROW*cmax(1) .and. cmax(3) > GROW*cmax(2), &
+         'III.2: the contraction grows with sigma_n0')
+      if (allocated(error)) return
+      call table_law('III.1', law, error)
+      if (allocated(error)) return
+      do i = 1, size(SIGMAS)
+         call run_table_path(law, PATH_CNL, SIGMAS(i), [8.0_wp], 800, r, error)
+         if (allocated(error)) return
+         cmax(i) = maxval(r%eps_n)
+      end do
+      call check(error, cmax(1) > 0.0_wp .and. cmax(2) > GROW*cmax(1) .and. &
+         cmax(3) > GROW*cmax(2), 'III.1: the contraction grows with sigma_n0')
    end subroutine test_contraction
 
    !> Table III.2, CND at 56 kPa: sigma_n first falls (contraction at fixed eps_n unloads the
@@ -254,9 +269,11 @@ contains
    !> Loose set (Dr 15 %): tau_c grows at every cycle and its growth slows down (each gain
    !> smaller than the one before). Both sets: the contraction accumulates, e_c grows at
    !> every cycle by less each time. Dense set (Dr 80 %): it hardens too (tau_c(10) > tau_c(0))
-   !> but less than the loose set (tau_c(10)/tau_c(0)), and contracts less (e_c(10)); its
-   !> cycles reach the primary surface past its peak (III.16 softens), so its tau_c is
-   !> capped by the primary plateau alpha M_f sigma_n and need not grow at every cycle.
+   !> but less than the loose set (tau_c(10)/tau_c(0)), and contracts less (e_c(10)). Every
+   !> half-cycle of both sets ends on the primary surface (the kinematic branch meets f_m
+   !> first), so tau_c = M_f sigma_n R_m(k) with k accumulated over the cycles: for the dense
+   !> set k passes the peak of R_m (k = 3.6 mm) at cycle 2 and tau_c need not grow at every
+   !> cycle (doc/validation.md, S4 cyclic paths).
    subroutine test_cyclic(error)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: tl(0:NCYC), el(0:NCYC), td(0:NCYC), ed(0:NCYC)

@@ -5,7 +5,7 @@
 !> tau = tan(phi) (sigma_n0 + C) R_m(k), with dk = d eps_t^p, so that
 !>
 !>     eps_t(k) = tau(k)/G + k - k0,
-!>     eps_n(k) = int_k0^k (tan(psi) - tau(k')/sigma_n0) exp(-a_g k') dk'   (III.9–III.11),
+!>     eps_n(k) = int_k0^k (tan(psi) - tau(k')/sigma_n0) exp(-a_g (k' - k0)) dk'   (III.9–III.11),
 !>
 !> eps_n closure positive (dilation < 0). Each eps_t is inverted for k by bisection (the path
 !> is monotonic in k while 1 + tan(phi)(sigma_n0 + C) R_m'(k)/G > 0: no snap-back), and
@@ -85,7 +85,7 @@ contains
          do j = 1, 5
             kk = 0.5_wp*(k + k_old) + h*XG(j)
             eps_n(i) = eps_n(i) + h*WG(j)*(tan(p%psi*RAD) - &
-               tmf*rm_value(kk, p%alpha, s, p%a, p%b)/sigma_n0)*exp(-p%a_g*kk)
+               tmf*rm_value(kk, p%alpha, s, p%a, p%b)/sigma_n0)*exp(-p%a_g*(kk - k0))
          end do
          k_old = k
       end do

@@ -1,11 +1,12 @@
 !> Fit of MODJOIN's a_g on a CNL curve (thesis §III.3.1: a_g "obtained by successive
 !> approximations" after the other parameters). Under constant sigma_n the normal
-!> displacement is plastic only and the flow rule (III.9–III.11) gives, with dk = d eps_t^p,
+!> displacement is plastic only and the flow rule (III.9–III.11) gives, with dp = d eps_t^p,
 !>
-!>     d eps_n / dk = (tan(psi) - |tau| / sigma_n) exp(-a_g k),
+!>     d eps_n / dp = (tan(psi) - |tau| / sigma_n) exp(-a_g p),
 !>
-!> so the measured tau(eps_t) and k = k0 + eps_t - tau/G (the plastic part of eps_t plus the
-!> hardening variable's start) predict eps_n for any a_g by quadrature, without the law:
+!> where p = eps_t - tau/G is the plastic slip since the start of loading (= k - k0, the law's
+!> damping variable, doc/theory.md §6.4), so the measured tau(eps_t) predicts eps_n for any
+!> a_g by quadrature, without the law:
 !> a_g minimises the squared misfit to the measured eps_n (a scan, then golden section).
 module pecjoin_identify_dilatancy
    use pecplas_kinds, only: wp
@@ -22,8 +23,8 @@ contains
    !> eps_n(eps_t) predicted on a CNL curve by the flow rule (trapezoidal in k; the plastic
    !> displacement p = eps_t - tau/G is kept non-decreasing, so noise in the elastic range
    !> adds no spurious flow).
-   pure subroutine predicted_eps_n(eps_t, tau, sigma_n0, g, k0, tan_psi, a_g, eps_n)
-      real(wp), intent(in) :: eps_t(:), tau(:), sigma_n0, g, k0, tan_psi, a_g
+   pure subroutine predicted_eps_n(eps_t, tau, sigma_n0, g, tan_psi, a_g, eps_n)
+      real(wp), intent(in) :: eps_t(:), tau(:), sigma_n0, g, tan_psi, a_g
       real(wp), intent(out) :: eps_n(:)
       real(wp) :: p_old, p, f_old, f
       integer :: i
@@ -40,14 +41,14 @@ contains
    contains
       pure real(wp) function rate(t, pl)
          real(wp), intent(in) :: t, pl
-         rate = (tan_psi - abs(t)/sigma_n0)*exp(-a_g*(k0 + pl))
+         rate = (tan_psi - abs(t)/sigma_n0)*exp(-a_g*pl)
       end function rate
    end subroutine predicted_eps_n
 
    !> a_g in [0, AG_MAX] minimising sum (predicted - measured eps_n)^2; `rms` = the root
    !> mean square misfit at the optimum (mm). eps_n is measured from the first point.
-   pure subroutine fit_a_g(eps_t, tau, eps_n, sigma_n0, g, k0, tan_psi, a_g, rms)
-      real(wp), intent(in) :: eps_t(:), tau(:), eps_n(:), sigma_n0, g, k0, tan_psi
+   pure subroutine fit_a_g(eps_t, tau, eps_n, sigma_n0, g, tan_psi, a_g, rms)
+      real(wp), intent(in) :: eps_t(:), tau(:), eps_n(:), sigma_n0, g, tan_psi
       real(wp), intent(out) :: a_g, rms
       real(wp), parameter :: GOLD = 0.6180339887498949_wp
       real(wp) :: lo, hi, x1, x2, f1, f2, best, fbest, x
@@ -92,7 +93,7 @@ contains
       pure real(wp) function misfit(ag)
          real(wp), intent(in) :: ag
          real(wp) :: pred(size(eps_t))
-         call predicted_eps_n(eps_t, tau, sigma_n0, g, k0, tan_psi, ag, pred)
+         call predicted_eps_n(eps_t, tau, sigma_n0, g, tan_psi, ag, pred)
          misfit = sum((pred - (eps_n - eps_n(1)))**2)
       end function misfit
    end subroutine fit_a_g

@@ -154,7 +154,7 @@ contains
          if (allocated(error)) return
          associate (t => res%tests(i))
             call fit_a_g(curves(i)%eps_t, curves(i)%tau, curves(i)%eps_n, t%sigma_n0, &
-               t%g_secant, t%k0, tan_psi, t%a_g, t%ag_rms)
+               t%g_secant, tan_psi, t%a_g, t%ag_rms)
          end associate
       end do
 

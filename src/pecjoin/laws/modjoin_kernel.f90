@@ -16,7 +16,8 @@
 !>     r1 = Psi(s_n) - Psi(s_n,old) - d eps_n + dlambda m_n(s_n, tau, kappa)
 !>     r2 = tau - tau_old - Gbar (d eps_t - dlambda s)
 !>     r3 = s tau - M_f (s_n + C) (shift + factor R(kappa))
-!> with m_n = (M_g - |tau|/max(s_n, s_min)) exp(-a_g kappa) (III.9–III.11). The primary
+!> with m_n = (M_g - |tau|/max(s_n, s_min)) exp(-a_g (kappa - k_ref)) (III.9–III.11; k_ref =
+!> the start of kappa, so A_g = 1 when the mechanism starts to flow). The primary
 !> surface (III.4) is shift = 0, factor = 1; the active side of the kinematic surface
 !> (III.22–III.24 as corrected in SPEC §10) is shift = s R_i, factor = 2.
 module pecjoin_laws_modjoin_kernel
@@ -43,6 +44,9 @@ module pecjoin_laws_modjoin_kernel
       real(wp) :: betap = 1.0_wp, alpha = 1.0_wp, a = 0.0_wp, b = 0.0_wp
       !> Flow direction s and surface R_tot = shift + factor R(kappa).
       real(wp) :: s = 1.0_wp, shift = 0.0_wp, factor = 1.0_wp
+      !> Start of the mechanism's hardening variable (k0, or kappa_c0 at the last reversal):
+      !> the flow damping A_g = exp(-a_g (kappa - k_ref)) counts the plastic slip produced.
+      real(wp) :: k_ref = 0.0_wp
    end type mj_mech_t
 
    integer, parameter :: MAX_ITER = 40
@@ -189,7 +193,7 @@ contains
       sref = max(abs(so(1)), abs(so(2)), abs(trial(1)), abs(trial(2)), el%smin)
       do it = 1, MAX_ITER
          kappa = kappa_o + x(3)
-         ag = exp(-mc%a_g*kappa)
+         ag = exp(-mc%a_g*(kappa - mc%k_ref))
          sh = max(x(1), el%smin)
          ratio = abs(x(2))/sh
          mn = (mc%mu_g - ratio)*ag

@@ -275,6 +275,10 @@ contains
          mc%shift = s*state(MJ_RI)
          mc%factor = 2.0_wp
       end if
+      ! A_g counts the plastic slip of this mechanism (kappa - kappa at its start), so the
+      ! flow starts undamped whatever sigma_n0: the contraction then grows with sigma_n0 as
+      ! the thesis reports (fig. III.9b, III.11b; doc/theory.md §6.4)
+      mc%k_ref = mj_initial_k(this%r0, mc%betap, this%alpha, this%a, this%b)
    end function mechanism
 
    !> d <- A d + B / n for a substep Jacobian jac(3, 5) whose hardening variable is y(ik).
