@@ -106,11 +106,6 @@ def joint_lines(m, model):
     for name, pairs in interfaces(m):
         if model in ("spring", "katona"):
             out.append(f"*JOINTS, TYPE=SPRING, SET={name}, LAW=iface")
-            if model == "katona" and name == "below":
-                # the corner doublet column-soil would close a loop of three bonded
-                # constraints (pile-soil, column-pile, column-soil): linearly dependent
-                # multipliers; the column meets the soil there through the pile
-                pairs = pairs[1:]
             for a, b in pairs:
                 jid += 1
                 out.append(f"{jid}, {a}, {b}")

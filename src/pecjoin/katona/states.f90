@@ -48,6 +48,18 @@ module pecjoin_katona_states
          real(wp), intent(out) :: rcond, work(*)
          integer, intent(out) :: iwork(*), info
       end subroutine dgecon
+
+      !> Minimum-norm least-squares solution with a rank-revealing QR (complete orthogonal
+      !> factorisation).
+      subroutine dgelsy(m, n, nrhs, a, lda, b, ldb, jpvt, rcond, rank, work, lwork, info)
+         import :: wp
+         integer, intent(in) :: m, n, nrhs, lda, ldb, lwork
+         real(wp), intent(inout) :: a(lda, *), b(ldb, *)
+         integer, intent(inout) :: jpvt(*)
+         real(wp), intent(in) :: rcond
+         integer, intent(out) :: rank, info
+         real(wp), intent(out) :: work(*)
+      end subroutine dgelsy
    end interface
 
 contains
@@ -143,8 +155,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: work(:)
       integer, allocatable :: ipiv(:), iwork(:)
+      real(wp), allocatable :: a0(:, :), b0(:)
       real(wp) :: scale, anorm, rcond
       integer :: n, i, info
+      logical :: consistent
       character(len=80) :: buf
       n = size(a, 1)
       do i = 1, n
@@ -158,11 +172,19 @@ contains
          b(i) = b(i)/scale
       end do
       anorm = maxval(sum(abs(a), dim=1))
+      a0 = a
+      b0 = b
       allocate (ipiv(n), work(4*n), iwork(n))
       call dgetrf(n, n, a, n, ipiv, info)
       rcond = 0.0_wp
       if (info == 0) call dgecon('1', n, a, n, anorm, rcond, work, iwork, info)
       if (info /= 0 .or. .not. (rcond >= RCOND_MIN)) then
+         ! Singular: either redundant constraints (e.g. three bonded doublets closing a loop
+         ! where interfaces meet), a consistent system whose minimum-norm solution is a valid
+         ! set of contact forces, or a mechanism, which has no solution: tell them apart by
+         ! the residual of the rank-revealing least-squares solution.
+         call consistent_solution(a0, b0, b, consistent)
+         if (consistent) return
          write (buf, '(a,es9.2,a)') ' (rcond ', rcond, ')'
          call run_error(error, 'Katona contact: the constrained system is singular under '// &
             'the current contact states: a body can move freely (sliding away)'//trim(buf))
@@ -170,6 +192,27 @@ contains
       end if
       call dgetrs('N', n, 1, a, n, ipiv, b, n, info)
    end subroutine solve_dense_checked
+
+   !> Minimum-norm solution x of the (row-equilibrated) singular system a x = b by dgelsy;
+   !> consistent when its residual is at round-off level, ||a x - b|| <= 1e-9 ||b||.
+   subroutine consistent_solution(a, b, x, consistent)
+      real(wp), intent(in) :: a(:, :), b(:)
+      real(wp), intent(out) :: x(:)
+      logical, intent(out) :: consistent
+      real(wp), allocatable :: aw(:, :), bw(:, :), work(:)
+      integer, allocatable :: jpvt(:)
+      integer :: n, rank, info
+      n = size(a, 1)
+      aw = a
+      allocate (bw(n, 1), jpvt(n), work(max(1, 4*n + 64*n)))
+      bw(:, 1) = b
+      jpvt = 0
+      call dgelsy(n, n, 1, aw, n, bw, n, jpvt, 1.0e-12_wp, rank, work, size(work), info)
+      x = bw(:, 1)
+      consistent = info == 0 .and. rank < n .and. &
+         norm2(matmul(a, x) - b) <= 1.0e-9_wp*max(norm2(b), tiny(1.0_wp))
+      if (.not. consistent) x = b
+   end subroutine consistent_solution
 
    !> Applies the state checks of the module header; `changed` counts the doublets changed.
    subroutine update_states(kt, ftol, gtol, flips, changed)
