@@ -21,7 +21,7 @@ CMAKE_DIR ?= build/cmake
 JOBS ?= 2
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1 s2 s3 s4
+.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -34,6 +34,8 @@ help:
 	@echo "  make s2, s3   scenes S2 (pile, interface models) and S3 (dilatancy), PNGs in output/"
 	@echo "  make s4       scene S4 (MODJOIN on homogeneous paths): input/s4 with pecplas-path,"
 	@echo "                identification and sensitivity tables, PNGs in output/s4"
+	@echo "  make s5       scene S5 (FE shear box, MODJOIN cyclic) and its point-driver check,"
+	@echo "                PNGs in output/s5"
 	@echo "  make bench    speed benchmarks (tools/bench.sh)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
@@ -95,6 +97,13 @@ s4: build
 	@$(S4_RUN) pecplas-sensitivity -- -o output/s4/sensitivity.csv 2>&1 \
 	  | tee output/s4/sensitivity.txt
 	@$(PYTHON) tools/plot_s4.py output/s4
+
+# S5: the FE shear box, then the figures (plot_s5.py runs pecplas-path on the mid-interface path).
+s5: build
+	@mkdir -p output/s5
+	@$(FPM) run --profile release --target pecplas -- input/s5/s5_shear_box.inp \
+	  -o output/s5/s5_shear_box.h5 --quiet && echo "make s5: s5_shear_box completed"
+	@$(PYTHON) tools/plot_s5.py output/s5
 
 bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
