@@ -21,7 +21,7 @@ CMAKE_DIR ?= build/cmake
 JOBS ?= 2
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1 s2 s3 s4
+.PHONY: help deps build run test bench clean s1 s2 s3 s4 s6
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -34,6 +34,8 @@ help:
 	@echo "  make s2, s3   scenes S2 (pile, interface models) and S3 (dilatancy), PNGs in output/"
 	@echo "  make s4       scene S4 (MODJOIN on homogeneous paths): input/s4 with pecplas-path,"
 	@echo "                identification and sensitivity tables, PNGs in output/s4"
+	@echo "  make s6       scene S6 (pile pull-out, MODJOIN and Mohr-Coulomb, table IV.1 variants),"
+	@echo "                PNGs in output/s6"
 	@echo "  make bench    speed benchmarks (tools/bench.sh)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
@@ -95,6 +97,16 @@ s4: build
 	@$(S4_RUN) pecplas-sensitivity -- -o output/s4/sensitivity.csv 2>&1 \
 	  | tee output/s4/sensitivity.txt
 	@$(PYTHON) tools/plot_s4.py output/s4
+
+s6: build
+	@mkdir -p output/s6
+	@for d in input/s6/*.inp; do \
+	  n=$$(basename $$d .inp); \
+	  $(FPM) run --profile release --target pecplas -- $$d -o output/s6/$$n.h5 --quiet \
+	    2>/dev/null && rc=0 || rc=$$?; \
+	  echo "make s6: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
+	done
+	@$(PYTHON) tools/plot_s6.py output/s6
 
 bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
