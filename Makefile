@@ -21,7 +21,7 @@ CMAKE_DIR ?= build/cmake
 JOBS ?= 2
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5
+.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5 s6
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -36,6 +36,8 @@ help:
 	@echo "                identification and sensitivity tables, PNGs in output/s4"
 	@echo "  make s5       scene S5 (FE shear box, MODJOIN cyclic) and its point-driver check,"
 	@echo "                PNGs in output/s5"
+	@echo "  make s6       scene S6 (pile pull-out, MODJOIN and Mohr-Coulomb, table IV.1 variants),"
+	@echo "                PNGs in output/s6"
 	@echo "  make bench    speed benchmarks (tools/bench.sh)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
@@ -104,6 +106,16 @@ s5: build
 	@$(FPM) run --profile release --target pecplas -- input/s5/s5_shear_box.inp \
 	  -o output/s5/s5_shear_box.h5 --quiet && echo "make s5: s5_shear_box completed"
 	@$(PYTHON) tools/plot_s5.py output/s5
+
+s6: build
+	@mkdir -p output/s6
+	@for d in input/s6/*.inp; do \
+	  n=$$(basename $$d .inp); \
+	  $(FPM) run --profile release --target pecplas -- $$d -o output/s6/$$n.h5 --quiet \
+	    2>/dev/null && rc=0 || rc=$$?; \
+	  echo "make s6: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
+	done
+	@$(PYTHON) tools/plot_s6.py output/s6
 
 bench: deps
 	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \

@@ -229,7 +229,16 @@ contains
          end if
          call mj_plastic_step(this%el, mc, y(1:2), y(ik), des, trial, snew, kappa, dlam, mn, &
             jac, ok)
-         if (.not. ok) return
+         if (.not. ok) then
+            ! contraction at a vanishing normal stress (|tau|/sigma_n -> infinity in m_n):
+            ! no return with sigma_n > 0 exists, the point loses contact (S6 near the surface)
+            if (y(1) <= 2.0_wp*this%el%smin) then
+               call open_point(this, y(1), des(1)*real(n - j + 1, wp), state, sigma, tangent, &
+                  mode)
+               ok = .true.
+            end if
+            return
+         end if
          if (snew(1) < 0.0_wp) then
             call open_point(this, snew(1), des(1)*real(n - j, wp), state, sigma, tangent, mode)
             return

@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""Scene S6 (thesis figs IV.4-IV.10, table IV.1): pull-out of a model pile in dense dry Hostun
+sand, axisymmetric, MODJOIN (initial version, table III.1) or Mohr-Coulomb on the shaft.
+
+Given (SPEC §7 S6): pile diameter 5.5 cm, embedded length 1.62 m (points of interest at depths
+0.525, 1.016, 1.581 m); sand gamma = 17 kN/m3; sand and steel elastic; interface MODJOIN
+initial version with table III.1 (K0 = 80 kPa/mm, G0 = 40 kPa/mm, phi = 41, c = 0, R0 = 0.3,
+beta = 9 mm, psi = 27, a_g = 0.5 /mm), and Mohr-Coulomb with the same K, G, phi and psi = 6;
+23 equal increments of axial pull; table IV.1 study: G0, K0, beta, a_g each +50 %.
+Assumed (SPEC): tank radius 1.0 m, depth 2.0 m, rigid walls and base (outer side radially
+fixed, base fixed); sand E = 3.0e4 kPa, nu = 0.3, K0 = 0.5 (geostatic initial stress, the
+joints get sigma_n0 projected from it); steel E = 2.1e8 kPa, nu = 0.3; pull 0 -> 6.28 kN
+(the thesis's last cycle peak) or the limit load. Further assumed here: the pile head at the
+sand surface; the pile starts from the same geostatic state as the sand (GAMMA = 17 in the
+steel, so the initial state is continuous across the joints; the pile's own weight, 0.3 kN,
+is not modelled); the pull is a uniform upward traction on the head; the same law on the
+shaft and under the tip (the tip opens at once under the pull); MODJOIN "K0" is the law's
+normal stiffness, not the earth pressure coefficient.
+
+Two bodies with their own nodes (pile, sand), joined by explicit joint elements: GOODMAN4
+with Lobatto integration along the shaft, Gauss under the tip. The reference mesh
+(--refine 1) has 176 Q4; --refine n multiplies the element counts in each direction by n.
+
+    python3 tools/make_s6_decks.py [--refine N] [--out DIR]
+"""
+import argparse
+import math
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+A, L, H, R = 0.0275, 1.62, 2.0, 1.0
+E_SAND, E_STEEL, GAMMA = 3.0e4, 2.1e8, 17.0
+Q_END = 6.28        # kN, the head pull at the end of loading (factor 1)
+INCREMENTS = 23
+# table III.1 (kPa and mm): the initial MODJOIN set of dense Hostun sand on steel (Plytas)
+III1 = dict(K0=80.0, G0=40.0, PHI=41.0, C=0.0, R0=0.3, BETA=9.0, PSI=27.0, A_G=0.5)
+# table IV.1: one parameter +50 % at a time
+VARIANTS = {"": {}, "_g0": {"G0": 1.5}, "_k0": {"K0": 1.5}, "_beta": {"BETA": 1.5},
+            "_ag": {"A_G": 1.5}}
+
+
+def graded(x0, x1, n, ratio):
+    """n intervals from x0 to x1, each `ratio` times the previous one."""
+    w = [ratio**i for i in range(n)]
+    s = sum(w)
+    xs, x = [x0], x0
+    for wi in w:
+        x += (x1 - x0) * wi / s
+        xs.append(x)
+    xs[-1] = x1
+    return xs
+
+
+class Mesh:
+    """Pile block (r in [0, A], z in [-L, 0]) and an L-shaped sand body around and under it."""
+
+    def __init__(self, n):
+        self.nodes, self.elements, self.nid, self.eid = [], [], 0, 0
+        self.r_pile = graded(0.0, A, n, 1.0)
+        self.r_out = graded(A, R, 10 * n, 1.35 ** (1.0 / n))
+        self.z_pile = graded(0.0, -L, 12 * n, 1.0)
+        self.z_below = graded(-L, -H, 4 * n, 1.0)
+        self.r_all = self.r_pile + self.r_out[1:]
+        self.z_all = self.z_pile + self.z_below[1:]
+        self.P = self.grid(self.r_pile, self.z_pile, lambda i, j: True)
+        npz, npr = len(self.z_pile), len(self.r_pile)
+        # sand: every (r, z) except the pile's inside (r < A above the tip)
+        self.S = self.grid(self.r_all, self.z_all,
+                           lambda i, j: not (i < npr - 1 and j < npz - 1))
+        self.block(self.P, self.r_pile, self.z_pile, "pile", lambda i, j: True)
+        self.block(self.S, self.r_all, self.z_all, "sand",
+                   lambda i, j: not (i < npr - 1 and j < npz - 1))
+
+    def grid(self, rs, zs, keep):
+        ids = {}
+        for j, z in enumerate(zs):
+            for i, r in enumerate(rs):
+                if keep(i, j):
+                    self.nid += 1
+                    ids[i, j] = self.nid
+                    self.nodes.append((self.nid, r, z))
+        return ids
+
+    def block(self, ids, rs, zs, name, keep):
+        for j in range(len(zs) - 1):
+            for i in range(len(rs) - 1):
+                if keep(i, j):
+                    self.eid += 1   # counter-clockwise in (r, z): z decreases with j
+                    self.elements.append((name, self.eid, ids[i, j + 1], ids[i + 1, j + 1],
+                                          ids[i + 1, j], ids[i, j]))
+
+
+def interfaces(m):
+    """(name, (pile node, sand node) pairs in the order of the joint tangent)."""
+    npz, npr = len(m.z_pile), len(m.r_pile)
+    shaft = [(m.P[npr - 1, j], m.S[npr - 1, j]) for j in range(npz)]   # t = -z, n = +r
+    tip = [(m.S[i, npz - 1], m.P[i, npz - 1]) for i in range(npr)]     # t = +r, n = +z
+    return [("shaft", shaft), ("tip", tip)]
+
+
+def law_lines(model, factors):
+    if model == "modjoin":
+        p = {k: v * factors.get(k, 1.0) for k, v in III1.items()}
+        # SUBSTEP 0.01 mm (default 0.001): 6x faster, limit load within 0.5 %
+        items = [f"{k} = {v:g}" for k, v in p.items()] + ["SUBSTEP = 0.01"]
+        return ["*INTERFACE_LAW, NAME=iface, TYPE=MODJOIN_INITIAL, LENGTH_UNIT=MM, MODEL_UNIT=M",
+                ", ".join(items[:4]), ", ".join(items[4:])]
+    # same K, G (kPa/mm -> kPa/m), phi; psi = 6
+    return ["*INTERFACE_LAW, NAME=iface, TYPE=MOHR_COULOMB",
+            f"KN = {III1['K0'] * 1e3:g}, KT = {III1['G0'] * 1e3:g}, PHI = {III1['PHI']:g}, "
+            "C = 0, PSI = 6"]
+
+
+def joint_lines(m):
+    out, jid = [], 10 * m.eid
+    for name, pairs in interfaces(m):
+        # Lobatto on the vertical shaft (r constant: exact, no traction oscillation), Gauss
+        # under the tip where the 2 pi r weight varies along the joint
+        rule = "GAUSS" if name == "tip" else "LOBATTO"
+        out.append(f"*JOINTS, TYPE=GOODMAN4, SET={name}, LAW=iface, INTEGRATION={rule}")
+        for (a1, b1), (a2, b2) in zip(pairs[:-1], pairs[1:]):
+            jid += 1
+            out.append(f"{jid}, {a1}, {a2}, {b2}, {b1}")
+    return out
+
+
+def deck(m, model, refine, variant=""):
+    nr, nall, nz = len(m.r_pile), len(m.r_all), len(m.z_all)
+    npz = len(m.z_pile)
+    head = [m.P[i, 0] for i in range(nr)]
+    axis = [m.P[0, j] for j in range(npz)] + [m.S[0, j] for j in range(npz - 1, nz)]
+    bottom = [m.S[i, nz - 1] for i in range(nall)]
+    outer = [m.S[nall - 1, j] for j in range(nz)]
+    what = model + (f", table IV.1 variant {variant[1:]} +50 %" if variant else "")
+    L_ = [f"** S6 model pile pull-out, interface: {what}, refinement {refine}",
+          *("** " + line for line in __doc__.strip().splitlines()[2:22]),
+          "** Generated by tools/make_s6_decks.py.",
+          "*TITLE", f"S6 pile pull-out, {what}, refine {refine}", "*UNITS",
+          "kN, m, kPa", "*ANALYSIS, TYPE=AXISYMMETRIC", "*NODES"]
+    L_ += [f"{k}, {r:.12g}, {z:.12g}" for k, r, z in m.nodes]
+    for name in ("pile", "sand"):
+        L_.append(f"*ELEMENTS, TYPE=Q4, SET={name}")
+        L_ += [", ".join(map(str, e[1:])) for e in m.elements if e[0] == name]
+    L_ += ["*MATERIAL, NAME=steel", f"E = {E_STEEL:g}, NU = 0.3, GAMMA = {GAMMA:g}",
+           "*MATERIAL, NAME=sand", f"E = {E_SAND:g}, NU = 0.3, GAMMA = {GAMMA:g}",
+           "*SECTION, SET=pile, MATERIAL=steel", "*SECTION, SET=sand, MATERIAL=sand"]
+    L_ += law_lines(model, VARIANTS[variant]) + joint_lines(m)
+    L_ += ["*NSET, NAME=axis", ", ".join(map(str, axis)),
+           "*NSET, NAME=bottom", ", ".join(map(str, bottom)),
+           "*NSET, NAME=outer", ", ".join(map(str, outer)),
+           "*BOUNDARY", "axis, R", "outer, R", "bottom, XY", "*EDGES, NAME=head"]
+    L_ += [f"{head[i + 1]}, {head[i]}" for i in range(nr - 1)]
+    L_ += ["*INITIAL_STRESS, TYPE=GEOSTATIC", "ALL, 0.0, 0.5",
+           f"** {Q_END:g} kN upward on the head (total over pi a^2; negative pressure pulls)",
+           "*LOAD, NAME=pull, TYPE=PRESSURE", f"head, {-Q_END / (math.pi * A * A):.12g}",
+           f"*STEP, NAME=pull, INCREMENTS={INCREMENTS}", "pull, 1",
+           "*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=25, MAX_CUTS=5", "*OUTPUT, EVERY=1"]
+    return "\n".join(L_) + "\n"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--refine", type=int, default=1)
+    ap.add_argument("--out", default=str(ROOT / "input"))
+    a = ap.parse_args()
+    m = Mesh(a.refine)
+    tag = "" if a.refine == 1 else f"_r{a.refine}"
+    out = Path(a.out) / "s6"
+    out.mkdir(parents=True, exist_ok=True)
+    for variant in VARIANTS:
+        p = out / f"s6_modjoin{variant}{tag}.inp"
+        p.write_text(deck(m, "modjoin", a.refine, variant))
+        print(p)
+    p = out / f"s6_mohr_coulomb{tag}.inp"
+    p.write_text(deck(m, "mohr_coulomb", a.refine))
+    print(p)
+    print(f"{len(m.elements)} Q4, {len(m.nodes)} nodes")
+
+
+if __name__ == "__main__":
+    main()
