@@ -17,8 +17,12 @@ module pecplas_cli
    use pecjoin_penalty, only: set_default_penalties
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
+   use pecplas_command, only: command_error
    implicit none (type, external)
    private
+
+   !> Program name in error messages.
+   character(len=*), parameter :: COMMAND = 'pecplas'
 
    public :: pecplas_main, run_deck
 
@@ -46,7 +50,7 @@ contains
             quiet = .true.
          case ('-o', '--output')
             if (i == size(args)) then
-               code = fail(EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
                return
             end if
             i = i + 1
@@ -64,18 +68,18 @@ contains
             return
          case default
             if (args(i)(1:1) == '-') then
-               code = fail(EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
                return
             end if
             if (len(deck) > 0) then
-               code = fail(EXIT_INPUT, 'only one deck may be given. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'only one deck may be given. '//USAGE)
                return
             end if
             deck = trim(args(i))
          end select
       end do
       if (len(deck) == 0) then
-         code = fail(EXIT_INPUT, 'no deck given. '//USAGE)
+         code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
          return
       end if
       code = run_deck(deck, outfile, quiet, model, problem)
@@ -108,7 +112,7 @@ contains
       if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
       if (.not. allocated(error)) call joint_points(model, jpoints, error)
       if (allocated(error)) then
-         code = fail(error%exit_code(), error%text())
+         code = command_error(COMMAND, error%exit_code(), error%text())
          return
       end if
       problem%time%setup = wall_time() - w0 - problem%time%assembly - problem%time%factorisation
@@ -128,7 +132,7 @@ contains
       call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
       if (allocated(error)) then
-         code = fail(EXIT_INPUT, 'cannot write results: '//error%text())
+         code = command_error(COMMAND, EXIT_INPUT, 'cannot write results: '//error%text())
          return
       end if
       call run_increments(model, problem, results, quiet, status, message, error)
@@ -138,7 +142,7 @@ contains
       end if
       call results%finish(status, message, error)
       if (allocated(error)) then
-         code = fail(EXIT_INTERNAL, 'cannot finish results file: '//error%text())
+         code = command_error(COMMAND, EXIT_INTERNAL, 'cannot finish results file: '//error%text())
          return
       end if
       call cpu_time(t1)
@@ -147,13 +151,6 @@ contains
       if (status /= 'completed') code = EXIT_STOPPED
       if (status == 'failed') code = EXIT_INTERNAL
    end function run_deck
-
-   integer function fail(code, text)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: text
-      write (0, '(a)') 'pecplas: error: '//text
-      fail = code
-   end function fail
 
    subroutine banner(model, problem, deck, outfile)
       type(model_t), intent(in) :: model

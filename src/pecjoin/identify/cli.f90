@@ -11,8 +11,12 @@ module pecjoin_identify_cli
    use pecjoin_identify_method, only: identify_options_t, identification_t, identify, &
       VERSION_INITIAL, VERSION_IMPROVED
    use pecjoin_identify_report, only: print_identification, write_identification_csv
+   use pecplas_command, only: command_error
    implicit none (type, external)
    private
+
+   !> Program name in error messages.
+   character(len=*), parameter :: COMMAND = 'pecplas-identify'
 
    public :: identify_main
 
@@ -56,7 +60,7 @@ contains
             opt%refine_alpha = .true.
          case ('--version', '--secant', '--window', '--r0', '-o', '--output')
             if (i == size(args)) then
-               code = fail(EXIT_INPUT, 'option '//word//' needs a value. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//word//' needs a value. '//USAGE)
                return
             end if
             i = i + 1
@@ -68,7 +72,7 @@ contains
                case ('improved', 'cyclic')
                   opt%version = VERSION_IMPROVED
                case default
-                  code = fail(EXIT_INPUT, "--version must be 'initial' or 'improved', found '"// &
+                  code = command_error(COMMAND, EXIT_INPUT, "--version must be 'initial' or 'improved', found '"// &
                      trim(args(i))//"'")
                   return
                end select
@@ -83,31 +87,31 @@ contains
             end select
          case default
             if (word(1:1) == '-') then
-               code = fail(EXIT_INPUT, 'unknown option '//word//'. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//word//'. '//USAGE)
                return
             end if
             call read_test_curve(word, curve, error)
             if (allocated(error)) then
-               code = fail(error%exit_code(), error%text())
+               code = command_error(COMMAND, error%exit_code(), error%text())
                return
             end if
             curves = [curves, curve]
          end select
       end do
       if (size(curves) == 0) then
-         code = fail(EXIT_INPUT, 'no test curve given. '//USAGE)
+         code = command_error(COMMAND, EXIT_INPUT, 'no test curve given. '//USAGE)
          return
       end if
       call identify(curves, opt, res, error)
       if (allocated(error)) then
-         code = fail(error%exit_code(), error%text())
+         code = command_error(COMMAND, error%exit_code(), error%text())
          return
       end if
       if (.not. quiet) call print_identification(6, res)
       call make_directories(path_dir(out))
       call write_identification_csv(out, res, error)
       if (allocated(error)) then
-         code = fail(EXIT_INTERNAL, error%text())
+         code = command_error(COMMAND, EXIT_INTERNAL, error%text())
          return
       end if
       if (.not. quiet) write (*, '(a)') 'written: '//out
@@ -144,14 +148,7 @@ contains
       integer, intent(out) :: code
       call parse_real(trim(text), value, ok)
       code = EXIT_OK
-      if (.not. ok) code = fail(EXIT_INPUT, "expected a number, found '"//trim(text)//"'")
+      if (.not. ok) code = command_error(COMMAND, EXIT_INPUT, "expected a number, found '"//trim(text)//"'")
    end function number
-
-   integer function fail(code, text)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: text
-      write (0, '(a)') 'pecplas-identify: error: '//text
-      fail = code
-   end function fail
 
 end module pecjoin_identify_cli

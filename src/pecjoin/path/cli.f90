@@ -11,8 +11,12 @@ module pecjoin_path_cli
    use pecjoin_path_deck, only: path_deck_t, read_path_deck, PATH_NAMES
    use pecjoin_path_driver, only: path_result_t, run_path
    use pecjoin_path_writers, only: write_path_csv, write_path_h5
+   use pecplas_command, only: command_error
    implicit none (type, external)
    private
+
+   !> Program name in error messages.
+   character(len=*), parameter :: COMMAND = 'pecplas-path'
 
    public :: path_main, run_path_deck
 
@@ -38,7 +42,7 @@ contains
             quiet = .true.
          case ('-o', '--output')
             if (i == size(args)) then
-               code = fail(EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
                return
             end if
             i = i + 1
@@ -57,18 +61,18 @@ contains
             return
          case default
             if (args(i)(1:1) == '-') then
-               code = fail(EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
                return
             end if
             if (len(deck) > 0) then
-               code = fail(EXIT_INPUT, 'only one deck may be given. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'only one deck may be given. '//USAGE)
                return
             end if
             deck = trim(args(i))
          end select
       end do
       if (len(deck) == 0) then
-         code = fail(EXIT_INPUT, 'no deck given. '//USAGE)
+         code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
          return
       end if
       code = run_path_deck(deck, base, quiet, res)
@@ -87,7 +91,7 @@ contains
 
       call read_path_deck(deck, d, error)
       if (allocated(error)) then
-         code = fail(error%exit_code(), error%text())
+         code = command_error(COMMAND, error%exit_code(), error%text())
          return
       end if
       base = base_in
@@ -106,12 +110,12 @@ contains
       call write_path_csv(base//'.csv', res, error)
       if (.not. allocated(error)) call write_path_h5(base//'.h5', d, res, VERSION, error)
       if (allocated(error)) then
-         code = fail(EXIT_INTERNAL, 'cannot write results: '//error%text())
+         code = command_error(COMMAND, EXIT_INTERNAL, 'cannot write results: '//error%text())
          return
       end if
       n = ubound(res%step, 1)
       if (allocated(run_err)) then
-         code = fail(EXIT_STOPPED, 'path stopped after increment '//itoa(n)//': '// &
+         code = command_error(COMMAND, EXIT_STOPPED, 'path stopped after increment '//itoa(n)//': '// &
             run_err%text())
          return
       end if
@@ -121,13 +125,6 @@ contains
          trim(MODE_NAMES(res%mode(n)))
       code = EXIT_OK
    end function run_path_deck
-
-   integer function fail(code, text)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: text
-      write (0, '(a)') 'pecplas-path: error: '//text
-      fail = code
-   end function fail
 
    function num(x) result(s)
       real(wp), intent(in) :: x

@@ -16,8 +16,12 @@ module pecjoin_sensitivity_cli
    use pecjoin_sensitivity_thesis, only: THESIS_KEYS, FRACTIONS_III3, FRACTIONS_III4, &
       CURVE_LABELS, thesis_curves, table_iii2_params, THESIS_SIGMA_N0, THESIS_EPS_T
    use pecjoin_sensitivity_report, only: print_sensitivity, write_sensitivity_csv
+   use pecplas_command, only: command_error
    implicit none (type, external)
    private
+
+   !> Program name in error messages.
+   character(len=*), parameter :: COMMAND = 'pecplas-sensitivity'
 
    public :: sensitivity_main
 
@@ -63,7 +67,7 @@ contains
             quiet = .true.
          case ('--sigma-n0', '--to', '--steps', '--table', '--perturb', '-o', '--output')
             if (i == size(args)) then
-               code = fail(EXIT_INPUT, 'option '//word//' needs a value. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//word//' needs a value. '//USAGE)
                return
             end if
             i = i + 1
@@ -105,17 +109,17 @@ contains
                ok = .true.
             end select
             if (.not. ok) then
-               code = fail(EXIT_INPUT, 'bad value '''//trim(args(i))//''' for '//word//'. '// &
+               code = command_error(COMMAND, EXIT_INPUT, 'bad value '''//trim(args(i))//''' for '//word//'. '// &
                   USAGE)
                return
             end if
          case default
             if (word(1:1) == '-') then
-               code = fail(EXIT_INPUT, 'unknown option '//word//'. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//word//'. '//USAGE)
                return
             end if
             if (len(deck_file) > 0) then
-               code = fail(EXIT_INPUT, 'only one deck may be given. '//USAGE)
+               code = command_error(COMMAND, EXIT_INPUT, 'only one deck may be given. '//USAGE)
                return
             end if
             deck_file = word
@@ -126,7 +130,7 @@ contains
       if (len(deck_file) > 0) then
          call read_path_deck(deck_file, deck, error)
          if (allocated(error)) then
-            code = fail(error%exit_code(), error%text())
+            code = command_error(COMMAND, error%exit_code(), error%text())
             return
          end if
          runner%law_type = deck%law_type
@@ -139,7 +143,7 @@ contains
       do k = size(keys), 1, -1
          if (base%has(keys(k))) cycle
          if (k > size(THESIS_KEYS)) then
-            code = fail(EXIT_INPUT, '--perturb '//trim(keys(k))//': the law '// &
+            code = command_error(COMMAND, EXIT_INPUT, '--perturb '//trim(keys(k))//': the law '// &
                runner%law_type//' has no parameter '//trim(keys(k)))
             return
          end if
@@ -150,7 +154,7 @@ contains
       call sensitivity_study(runner, base, keys, fractions, thesis_curves(), sigma_n0, &
          [eps_max], steps, res, error)
       if (allocated(error)) then
-         code = fail(error%exit_code(), error%text())
+         code = command_error(COMMAND, error%exit_code(), error%text())
          return
       end if
       word = 'table III.2'
@@ -161,7 +165,7 @@ contains
       call make_directories(path_dir(out))
       call write_sensitivity_csv(out, res, CURVE_LABELS, with_thesis, error)
       if (allocated(error)) then
-         code = fail(EXIT_INTERNAL, error%text())
+         code = command_error(COMMAND, EXIT_INTERNAL, error%text())
          return
       end if
       if (.not. quiet) write (*, '(a)') 'written: '//out
@@ -200,12 +204,5 @@ contains
       if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
       if (s(1:1) == '.') s = '0'//s
    end function num
-
-   integer function fail(code, text)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: text
-      write (0, '(a)') 'pecplas-sensitivity: error: '//text
-      fail = code
-   end function fail
 
 end module pecjoin_sensitivity_cli
