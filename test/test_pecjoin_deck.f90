@@ -4,13 +4,14 @@
 !> and through `run_deck` it exits with code 2 and writes no results file.
 module test_pecjoin_deck
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error, ERR_INPUT
+   use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_cli, only: run_deck
    use pecplas_files, only: make_directories
    use pecplas_driver_problem, only: problem_t
    use pecplas_testing, only: unittest_t, new_unittest, check
+   use fixtures_bad_decks, only: bad_case_t, bad, run_bad_cases
    implicit none (type, external)
    private
    public :: collect_pecjoin_deck
@@ -19,11 +20,6 @@ module test_pecjoin_deck
    character(len=*), parameter :: DIR = 'build/test_out/pecjoin'
 
    !> One bad deck: the line and keyword of its error and up to three words it must hold.
-   type :: bad_case_t
-      character(len=40) :: deck = '', keyword = ''
-      integer :: line = 0
-      character(len=48) :: words(3) = ''
-   end type bad_case_t
 
 contains
 
@@ -35,50 +31,6 @@ contains
                new_unittest('bad_generated_joints', test_bad_generated), &
                new_unittest('bad_decks_exit_2_no_file', test_exit_codes)]
    end subroutine collect_pecjoin_deck
-
-   pure function bad(deck, line, keyword, w1, w2, w3) result(c)
-      character(len=*), intent(in) :: deck, keyword, w1
-      integer, intent(in) :: line
-      character(len=*), intent(in), optional :: w2, w3
-      type(bad_case_t) :: c
-      c%deck = 'bad_'//deck//'.inp'
-      c%line = line
-      c%keyword = keyword
-      c%words(1) = w1
-      if (present(w2)) c%words(2) = w2
-      if (present(w3)) c%words(3) = w3
-   end function bad
-
-   subroutine run_cases(cases, error)
-      type(bad_case_t), intent(in) :: cases(:)
-      type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: e
-      type(model_t) :: model
-      character(len=16) :: buf
-      integer :: i, j
-      do i = 1, size(cases)
-         associate (c => cases(i), what => trim(cases(i)%deck)//': ')
-            call read_deck(DATA//trim(c%deck), model, e)
-            call check(error, allocated(e), what//'no error reported')
-            if (allocated(error)) return
-            write (buf, '(i0)') c%line
-            call check(error, e%kind == ERR_INPUT .and. allocated(e%file) .and. &
-               e%line == c%line .and. index(e%text(), trim(c%deck)//':'//trim(buf)//': ') > 0, &
-               what//'input error at line '//trim(buf)//' expected: '//e%text())
-            if (allocated(error)) return
-            call check(error, e%keyword == trim(c%keyword), what//'keyword should be '// &
-               trim(c%keyword)//': '//e%text())
-            if (allocated(error)) return
-            do j = 1, 3
-               if (len_trim(c%words(j)) == 0) cycle
-               call check(error, index(e%text(), trim(c%words(j))) > 0, what//'message lacks "' &
-                  //trim(c%words(j))//'": '//e%text())
-               if (allocated(error)) return
-            end do
-            deallocate (e)
-         end associate
-      end do
-   end subroutine run_cases
 
    !> A generated deck: law, set, type, integration, thickness as written.
    subroutine test_good(error)
@@ -104,7 +56,7 @@ contains
 
    subroutine test_bad_laws(error)
       type(error_t), allocatable, intent(out) :: error
-      call run_cases([ &
+      call run_bad_cases(DATA, [ &
          bad('unknown_law_type', 3, '*INTERFACE_LAW', "unknown interface law type 'COULOMB'", &
              'known types:', 'ELASTIC'), &
          bad('undefined_law', 5, '*JOINTS', "undefined interface law 'friction'", &
@@ -117,7 +69,7 @@ contains
 
    subroutine test_bad_explicit(error)
       type(error_t), allocatable, intent(out) :: error
-      call run_cases([ &
+      call run_bad_cases(DATA, [ &
          bad('non_coincident', 9, '*JOINTS', 'joint on non-coincident nodes', 'joint 102', &
              'nodes 6 and 13'), &
          bad('unknown_joint_type', 5, '*JOINTS', "unknown joint type 'GOODMAN8'", &
@@ -132,7 +84,7 @@ contains
 
    subroutine test_bad_generated(error)
       type(error_t), allocatable, intent(out) :: error
-      call run_cases([ &
+      call run_bad_cases(DATA, [ &
          bad('edges_not_side', 5, '*JOINTS', "edge (1 2) of edge set 'bottom'", &
              'not a side of an element of the SIDE body', "SIDE='upper'"), &
          bad('edges_nothing_to_join', 5, '*JOINTS', "edge set 'top'", 'nothing to join'), &

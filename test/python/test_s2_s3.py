@@ -41,10 +41,6 @@ def runs(tmp_path_factory):
     return files
 
 
-def test_hand_capacity():
-    assert QS == pytest.approx(816.2, abs=0.05)
-
-
 @pytest.mark.parametrize("model", MODELS)
 def test_s2_full_slip_and_capacity(runs, model):
     h5 = runs[f"s2_{model}"]
