@@ -1,0 +1,96 @@
+"""Shared pieces of the `make bench` scripts (tools/bench_*.py).
+
+Every benchmark CSV records where its numbers come from: `write_csv` appends the columns
+`commit` and `machine` to every row. Every timing comes from a run made by the script that
+writes the chart (`run_timed`), never from a stored number.
+
+    from bench_common import ROOT, BENCH_DIR, executable, run_timed, write_csv, provenance
+"""
+import csv
+import os
+import platform
+import subprocess
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+BENCH_DIR = ROOT / "doc" / "bench"
+
+
+def executable(target="pecplas"):
+    """Path of a release executable (builds it if needed)."""
+    r = subprocess.run(["fpm", "run", "--profile", "release", "--target", target,
+                        "--runner", "echo"], cwd=ROOT, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise RuntimeError(f"fpm could not build {target}:\n{r.stderr}")
+    return r.stdout.split()[-1]
+
+
+def provenance():
+    """{'commit': short hash (+'-dirty'), 'machine': host, CPU model, cores, 'date': UTC}."""
+    def git(*args):
+        return subprocess.run(["git", *args], cwd=ROOT, capture_output=True,
+                              text=True).stdout.strip()
+    commit = git("rev-parse", "--short", "HEAD") or "unknown"
+    if git("status", "--porcelain", "--untracked-files=no"):
+        commit += "-dirty"
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    machine = f"{platform.node()} {cpu} x{os.cpu_count()} {platform.system()}"
+    return {"commit": commit, "machine": machine,
+            "date": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+
+
+def run_timed(cmd, cwd=None, timeout=None):
+    """Run one command; returns dict(wall [s], rc, stdout, stderr, peak_mb) where peak_mb is
+    the peak resident memory of that process alone (os.wait4). A timeout kills the process
+    and returns rc = None."""
+    import tempfile
+    with tempfile.TemporaryFile("w+") as fo, tempfile.TemporaryFile("w+") as fe:
+        t0 = time.perf_counter()
+        p = subprocess.Popen([str(c) for c in cmd], cwd=cwd, stdout=fo, stderr=fe, text=True)
+        rc = None
+        while True:
+            pid, status, ru = os.wait4(p.pid, os.WNOHANG)
+            if pid != 0:
+                rc = os.waitstatus_to_exitcode(status)
+                break
+            if timeout is not None and time.perf_counter() - t0 > timeout:
+                p.kill()
+                pid, status, ru = os.wait4(p.pid, 0)
+                break
+            time.sleep(0.005)
+        p.returncode = rc if rc is not None else -9
+        wall = time.perf_counter() - t0
+        fo.seek(0)
+        fe.seek(0)
+        return {"wall": wall, "rc": rc, "stdout": fo.read(), "stderr": fe.read(),
+                "peak_mb": ru.ru_maxrss / 1024.0}
+
+
+def write_csv(path, header, rows):
+    """Write rows (sequences matching header) with commit and machine columns appended."""
+    prov = provenance()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(list(header) + ["commit", "machine", "date"])
+        for r in rows:
+            w.writerow(list(r) + [prov["commit"], prov["machine"], prov["date"]])
+    return path
+
+
+def write_fragment(name, text):
+    """A markdown section of the benchmark summary: doc/bench/<name>.md (collected by
+    tools/bench_summary.py into doc/bench/README.md)."""
+    BENCH_DIR.mkdir(parents=True, exist_ok=True)
+    p = BENCH_DIR / f"{name}.md"
+    p.write_text(text.rstrip() + "\n")
+    return p
