@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""Benchmark of the program's own overhead and of the interface-law speed (make bench).
+
+1. pecplas-bench-laws: MODJOIN updates per second (one law call incl. tangent) and the wall
+   time of an 8000-step CNL path, single core.
+2. pecplas-bench: elastic plane-strain squares (Q4, Q8) at about 1e4, 1e5 (and 1e6 in full
+   mode) equations, one process per case: phase times of the whole program and a bare
+   CHOLMOD analyse + factorise + solve of the SAME matrix in the same process; the ratio
+   total / bare is the price of everything that is not the sparse factorisation.
+
+Writes doc/bench/solver.csv, doc/bench/laws.csv and the fragments solver.md, laws.md.
+
+    python3 tools/bench_solver.py [--quick]
+"""
+import argparse
+import re
+import tempfile
+
+from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment
+
+COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
+           "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",
+           "peak_mb", "nnz_L"]
+
+
+def laws():
+    r = run_timed([executable("pecplas-bench-laws")])
+    rows = []
+    for line in r["stdout"].splitlines():
+        m = re.match(r"\s*(MODJOIN\w*)\s+([-+.\dEe]+)\s+([-+.\dEe]+)\s+([-+.\dEe]+)\s", line)
+        if m:
+            rows.append([m.group(1), float(m.group(2)), float(m.group(3)), float(m.group(4))])
+    write_csv(BENCH_DIR / "laws.csv", ["version", "updates_per_s_0.001mm",
+                                       "updates_per_s_0.1mm", "cnl_8000_steps_s"], rows)
+    md = ["## Interface-law speed (MODJOIN, single core)", "",
+          "One update = one law call including the consistent tangent, on a CNL path "
+          "(substeps of at most 0.001 mm, so a 0.1 mm increment costs ~100 substeps).", "",
+          "| version | updates/s (0.001 mm) | updates/s (0.1 mm) | 8000-step CNL path [s] |",
+          "|---|---|---|---|"]
+    md += [f"| {v} | {a:.3g} | {b:.3g} | {c:.4f} |" for v, a, b, c in rows]
+    write_fragment("laws", "\n".join(md))
+    return rows
+
+
+def solver(quick):
+    exe = executable("pecplas-bench")
+    cases = [("Q4", 70), ("Q8", 41), ("Q4", 223), ("Q8", 129)]
+    if not quick:
+        cases += [("Q4", 707), ("Q8", 408)]
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for el, n in cases:
+            r = run_timed([exe, el, n, tmp])
+            f = r["stdout"].split()
+            if r["rc"] != 0 or len(f) < len(COLUMNS):
+                raise RuntimeError(f"pecplas-bench {el} {n} failed:\n{r['stdout']}{r['stderr']}")
+            rows.append([f[0], int(f[1]), int(f[2])] + [float(x) for x in f[3:len(COLUMNS)]])
+            print(" ".join(str(x) for x in rows[-1]), flush=True)
+    write_csv(BENCH_DIR / "solver.csv", COLUMNS, rows)
+    md = ["## Program overhead against a bare CHOLMOD solve", "",
+          "Elastic plane-strain squares, one process per case. `total` is the whole program "
+          "(read + setup, assembly incl. COO→CSC, factorisation incl. analysis, solve, "
+          "residual, HDF5 output); `bare` is CHOLMOD analyse + factorise + solve of the same "
+          "matrix in the same process. Times in seconds (wall).", "",
+          "| element | equations | read+setup | assembly | factorisation | solve | output "
+          "| total | bare CHOLMOD | ratio | peak MB |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        d = dict(zip(COLUMNS, r))
+        md.append(f"| {d['element']} | {d['equations']} | {d['read_setup_s']:.3f} | "
+                  f"{d['assembly_s']:.3f} | {d['factorisation_s']:.3f} | {d['solve_s']:.3f} | "
+                  f"{d['output_s']:.3f} | {d['total_s']:.3f} | {d['bare_cholmod_s']:.3f} | "
+                  f"{d['ratio']:.2f} | {d['peak_mb']:.0f} |")
+    write_fragment("solver", "\n".join(md))
+    return rows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="skip the 1e6-equation cases")
+    a = ap.parse_args()
+    for v, up, up1, t in laws():
+        print(f"{v}: {up:.3g} updates/s, 8000-step CNL {t:.4f} s", flush=True)
+    solver(a.quick)
+
+
+if __name__ == "__main__":
+    main()
