@@ -32,6 +32,7 @@ module pecplas_driver_advise
 
    public :: advise_row_t, advise_deck, advise_main, ADVISE_METHODS, ADVISE_FACTORS
 
+   !> Nonlinear methods tried (model%solver%method).
    character(len=*), parameter :: ADVISE_METHODS(2) = [character(len=15) :: 'MODIFIED_NEWTON', &
       'NEWTON']
    !> Factors on the number of increments of every step (at least one increment).
