@@ -20,6 +20,7 @@ module test_pecjoin_modjoin_fe
    use pecjoin_path_driver, only: path_result_t
    use pecjoin_path_deck, only: PATH_CNL
    use fixtures_modjoin, only: table_law, run_table_path
+   use fixtures_bad_decks, only: bad, run_bad_cases
    implicit none (type, external)
    private
    public :: collect_pecjoin_modjoin_fe
@@ -36,7 +37,8 @@ contains
                new_unittest('fe_cnl_goodman6', test_cnl_goodman6), &
                new_unittest('fe_cnl_spring', test_cnl_spring), &
                new_unittest('fe_cyclic_equals_point_driver', test_cyclic), &
-               new_unittest('fe_model_unit_required', test_model_unit)]
+               new_unittest('fe_model_unit_required', test_model_unit), &
+               new_unittest('fe_thin_layer_refused', test_thin_layer)]
    end subroutine collect_pecjoin_modjoin_fe
 
    subroutine test_cnl(error)
@@ -75,6 +77,15 @@ contains
       inquire (file=DIR//'/bad_no_model_unit.h5', exist=exists)
       call check(error, code == 2 .and. .not. exists, 'exit code 2 and no results file')
    end subroutine test_model_unit
+
+   !> MODJOIN on a THIN_LAYER joint: the layer hands its law strains (jump / THICKNESS),
+   !> MODJOIN's parameters are per length of relative displacement, so the deck is refused
+   !> (input error at the *JOINTS line, naming both and the joint types that work).
+   subroutine test_thin_layer(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_bad_cases(DATA, [bad('thin_layer', 13, '*JOINTS', 'THIN_LAYER', 'MODJOIN', &
+         'GOODMAN4')], error)
+   end subroutine test_thin_layer
 
    !> Runs deck `name`, reads (eps, sigma) of both joint points at every increment and
    !> compares them with the point driver on the targets (mm) at the same eps_t.

@@ -1,8 +1,8 @@
 !> MODJOIN on the homogeneous paths of scene S4 (SPEC §7) with the point driver: the
 !> response does not depend on the increment size, and the computed curves have the shapes
 !> the thesis reports (improved version: peak then plateau, contraction then dilation,
-!> normal stress dip under constant normal displacement; cyclic version: cyclic hardening
-!> that slows down, accumulated contraction, less of both for the dense set).
+!> normal stress dip under constant normal displacement; cyclic version: discrete memory).
+!> The cyclic hardening over 10 cycles: test_pecjoin_modjoin_cyclic.
 module test_pecjoin_modjoin_paths
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
@@ -18,8 +18,6 @@ module test_pecjoin_modjoin_paths
    public :: collect_pecjoin_modjoin_paths
 
    real(wp), parameter :: SIGMAS(3) = [31.0_wp, 56.0_wp, 122.0_wp]
-   !> Cyclic paths (SPEC S4 assumptions): +-2 mm, 10 cycles after the first loading.
-   integer, parameter :: NCYC = 10
 
 contains
 
@@ -32,7 +30,6 @@ contains
                new_unittest('improved_cnl_peak_plateau', test_peak_plateau), &
                new_unittest('improved_cnl_contraction_dilation', test_contraction), &
                new_unittest('improved_cnd_normal_stress_dip', test_cnd_dip), &
-               new_unittest('cyclic_hardening_and_contraction', test_cyclic), &
                new_unittest('cyclic_memory_unload_reload', test_memory)]
    end subroutine collect_pecjoin_modjoin_paths
 
@@ -264,44 +261,6 @@ contains
       call check(error, r%sigma_n(n) > r%sigma_n(imin) + 1.0_wp, 'then rises again')
    end subroutine test_cnd_dip
 
-   !> Table III.6, CNL at 100 kPa, 10 cycles of +-2 mm after the first loading to 2 mm.
-   !> tau_c(i) = tau at +2 mm at the end of cycle i (i = 0: first loading), e_c(i) = eps_n.
-   !> Loose set (Dr 15 %): tau_c grows at every cycle and its growth slows down (each gain
-   !> smaller than the one before). Both sets: the contraction accumulates, e_c grows at
-   !> every cycle by less each time. Dense set (Dr 80 %): it hardens too (tau_c(10) > tau_c(0))
-   !> but less than the loose set (tau_c(10)/tau_c(0)), and contracts less (e_c(10)). Every
-   !> half-cycle of both sets ends on the primary surface (the kinematic branch meets f_m
-   !> first), so tau_c = M_f sigma_n R_m(k) with k accumulated over the cycles: for the dense
-   !> set k passes the peak of R_m (k = 3.6 mm) at cycle 2 and tau_c need not grow at every
-   !> cycle (doc/validation.md, S4 cyclic paths).
-   subroutine test_cyclic(error)
-      type(error_t), allocatable, intent(out) :: error
-      real(wp) :: tl(0:NCYC), el(0:NCYC), td(0:NCYC), ed(0:NCYC)
-      integer :: i
-      call cycle_ends('III.6L', tl, el, error)
-      if (.not. allocated(error)) call cycle_ends('III.6D', td, ed, error)
-      if (allocated(error)) return
-      do i = 1, NCYC
-         call check(error, tl(i) > tl(i - 1), 'loose: tau at the end of a cycle grows')
-         if (allocated(error)) return
-         call check(error, el(i) > el(i - 1) .and. ed(i) > ed(i - 1), &
-            'both: the contraction accumulates')
-         if (allocated(error)) return
-         if (i < 2) cycle
-         call check(error, tl(i) - tl(i - 1) < tl(i - 1) - tl(i - 2), &
-            'loose: the cyclic hardening slows down')
-         if (allocated(error)) return
-         call check(error, el(i) - el(i - 1) < el(i - 1) - el(i - 2) .and. &
-            ed(i) - ed(i - 1) < ed(i - 1) - ed(i - 2), 'both: the contraction slows down')
-         if (allocated(error)) return
-      end do
-      call check(error, td(NCYC) > td(0), 'dense: hardens over the cycles')
-      if (allocated(error)) return
-      call check(error, td(NCYC)/td(0) < tl(NCYC)/tl(0), 'dense hardens less than loose')
-      if (allocated(error)) return
-      call check(error, ed(NCYC) < el(NCYC), 'dense contracts less than loose')
-   end subroutine test_cyclic
-
    !> Discrete memory: a small elastic unload-reload leaves no trace. CNL at 100 kPa, table
    !> III.6 Dr = 80 %: (a) on the primary surface, 0 -> 2 -> 1.95 -> 3 mm ends where 0 -> 3
    !> does; (b) on a kinematic branch, 0 -> 2 -> 0.5 -> 0.55 -> -0.5 ends where 0 -> 2 -> -0.5
@@ -359,28 +318,5 @@ contains
          e = targets(seg)
       end do
    end subroutine walk
-
-   subroutine cycle_ends(table, tc, ec, error)
-      character(len=*), intent(in) :: table
-      real(wp), intent(out) :: tc(0:NCYC), ec(0:NCYC)
-      type(error_t), allocatable, intent(out) :: error
-      class(interface_law_t), allocatable :: law
-      type(path_result_t) :: r
-      real(wp) :: targets(2*NCYC + 1)
-      integer :: i
-      targets(1) = 2.0_wp
-      do i = 1, NCYC
-         targets(2*i) = -2.0_wp
-         targets(2*i + 1) = 2.0_wp
-      end do
-      call table_law(table, law, error)
-      if (.not. allocated(error)) call run_table_path(law, PATH_CNL, 100.0_wp, targets, 100, &
-         r, error)
-      if (allocated(error)) return
-      do i = 0, NCYC
-         tc(i) = r%tau(100 + 200*i)
-         ec(i) = r%eps_n(100 + 200*i)
-      end do
-   end subroutine cycle_ends
 
 end module test_pecjoin_modjoin_paths

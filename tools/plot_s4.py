@@ -3,7 +3,8 @@
 III.9 / III.11 / III.24 (CNL and CND at sigma_n0 = 31, 56, 122 kPa with tables III.1, III.2,
 III.5: shear curve tau-eps_t, normal behaviour eps_n-eps_t or sigma_n-eps_t, stress path
 tau-sigma_n), III.12 (initial vs improved version at 56 kPa), III.29-III.30 (cyclic CNL, one
-and ten cycles, both III.6 sets), III.31 (cyclic CND at 193 kPa), and table III.4 as bars
+and ten cycles, both III.6 sets, at +/-2 mm and +/-1 mm, with the end-of-cycle envelope as
+fig. III.26), III.31 (cyclic CND at 193 kPa), and table III.4 as bars
 (when output/s4/sensitivity.csv exists), from the CSVs written by `make s4`.
 
     python3 tools/plot_s4.py [DIR]          # default output/s4; writes PNGs there
@@ -103,19 +104,29 @@ def versions(d):
     plt.close(fig)
 
 
-def cyclic(d, key, fig_ref, what):
-    """Cyclic CNL at 100 kPa: one cycle, ten cycles, the tenth cycle (figs III.29-III.30)."""
-    one = read(d / f"s4_{key}_cyclic_cnl_1.csv")
-    ten = read(d / f"s4_{key}_cyclic_cnl_10.csv")
+STEPS_CYC = 200  # increments per segment of the cyclic decks (tools/make_s4_decks.py)
+
+
+def cycle_ends(r):
+    """tau and eps_n at +amplitude at the end of each cycle (0 = end of the primary loading)."""
+    idx = np.arange(STEPS_CYC, len(r["tau"]), 2 * STEPS_CYC)
+    return r["tau"][idx], r["eps_n"][idx]
+
+
+def cyclic(d, key, fig_ref, what, suffix, amp):
+    """Cyclic CNL at 100 kPa: one cycle, ten cycles, the tenth cycle (figs III.29-III.30),
+    and the end-of-cycle envelope against the cycle number (as fig. III.26)."""
+    one = read(d / f"s4_{key}_cyclic_cnl_1{suffix}.csv")
+    ten = read(d / f"s4_{key}_cyclic_cnl_10{suffix}.csv")
     if one is None or ten is None:
         return
-    fig, ax = plt.subplots(2, 3, figsize=(14, 8))
+    fig, ax = plt.subplots(2, 4, figsize=(18, 8))
     ax[0, 0].plot(one["eps_t"], one["tau"])
     ax[1, 0].plot(one["eps_t"], one["eps_n"])
     ax[0, 1].plot(ten["eps_t"], ten["tau"], lw=0.8)
     ax[1, 1].plot(ten["eps_t"], ten["eps_n"], lw=0.8)
-    # the tenth cycle: the last two segments (+2 -> -2 -> +2), 200 increments each
-    last = slice(len(ten["eps_t"]) - 401, None)
+    # the tenth cycle: the last two segments (+a -> -a -> +a)
+    last = slice(len(ten["eps_t"]) - 2 * STEPS_CYC - 1, None)
     ax[0, 2].plot(ten["eps_t"][last], ten["tau"][last])
     ax[1, 2].plot(ten["eps_t"][last], ten["eps_n"][last])
     titles = ("one cycle after the primary loading", "ten cycles", "the tenth cycle")
@@ -123,10 +134,50 @@ def cyclic(d, key, fig_ref, what):
         label_axes(ax[0, j], "eps_t [mm]", "tau [kPa]", f"({'ace'[j]}) {t}: shear")
         label_axes(ax[1, j], "eps_t [mm]", "eps_n [mm] (closure +)",
                    f"({'bdf'[j]}) {t}: normal displacement")
-    fig.suptitle(f"S4, cyclic CNL at 100 kPa, +/-2 mm, MODJOIN cyclic, {what} "
+    tc, ec = cycle_ends(ten)
+    n = np.arange(len(tc))
+    ax[0, 3].plot(n, tc, "o-")
+    ax[1, 3].plot(n, ec, "o-")
+    label_axes(ax[0, 3], "cycle number", f"tau at +{amp:g} mm [kPa]",
+               "(g) end-of-cycle shear (as fig. III.26)")
+    label_axes(ax[1, 3], "cycle number", f"eps_n at +{amp:g} mm [mm]",
+               "(h) accumulated contraction")
+    fig.suptitle(f"S4, cyclic CNL at 100 kPa, +/-{amp:g} mm, MODJOIN cyclic, {what} "
                  f"(thesis {fig_ref})", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / f"s4_{key}_cyclic_cnl.png", dpi=110)
+    fig.savefig(d / f"s4_{key}_cyclic_cnl{suffix}.png", dpi=110)
+    plt.close(fig)
+
+
+def envelopes(d):
+    """End-of-cycle shear (absolute and relative to cycle 0) and contraction against the cycle
+    number, both III.6 sets at +/-1 and +/-2 mm (fig. III.26 style)."""
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
+    drawn = False
+    for key, lab in (("iii6_dr80", "Dr 80 %"), ("iii6_dr15", "Dr 15 %")):
+        for suffix, amp, style in (("_a1", 1, "o-"), ("", 2, "s--")):
+            r = read(d / f"s4_{key}_cyclic_cnl_10{suffix}.csv")
+            if r is None:
+                continue
+            drawn = True
+            tc, ec = cycle_ends(r)
+            n = np.arange(len(tc))
+            name = f"{lab}, +/-{amp} mm"
+            ax[0].plot(n, tc, style, label=name)
+            ax[1].plot(n, tc / tc[0], style, label=name)
+            ax[2].plot(n, ec - ec[0], style, label=name)
+    if not drawn:
+        plt.close(fig)
+        return
+    label_axes(ax[0], "cycle number", "tau at +a [kPa]", "(a) end-of-cycle shear")
+    label_axes(ax[1], "cycle number", "tau_c / tau_c(0)", "(b) relative cyclic hardening")
+    label_axes(ax[2], "cycle number", "eps_n - eps_n(0) [mm]", "(c) accumulated contraction")
+    for a in ax:
+        a.legend(fontsize=7)
+    fig.suptitle("S4, cyclic CNL at 100 kPa, table III.6: end of each cycle (thesis fig. III.26 "
+                 "style)", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(d / "s4_iii6_cyclic_envelopes.png", dpi=110)
     plt.close(fig)
 
 
@@ -186,8 +237,10 @@ def main():
     for key in TABLES:
         monotonic(d, key)
     versions(d)
-    cyclic(d, "iii6_dr80", "fig. III.30", "table III.6 Dr = 80 %")
-    cyclic(d, "iii6_dr15", "fig. III.29", "table III.6 Dr = 15 %")
+    for suffix, amp in (("", 2), ("_a1", 1)):
+        cyclic(d, "iii6_dr80", "fig. III.30", "table III.6 Dr = 80 %", suffix, amp)
+        cyclic(d, "iii6_dr15", "fig. III.29", "table III.6 Dr = 15 %", suffix, amp)
+    envelopes(d)
     cyclic_cnd(d)
     sensitivity(d)
     print(f"plot_s4: figures in {d}")

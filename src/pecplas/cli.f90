@@ -8,13 +8,13 @@ module pecplas_cli
    use pecplas_files, only: make_directories, path_stem, path_dir
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_model_mesh_tools, only: orient_edge_sets, check_elements
-   use pecplas_driver_problem, only: problem_t, setup_problem, initialise_stresses
-   use pecplas_driver_stiffness, only: factorise_stiffness, linear_solver_name
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_driver_prepare, only: prepare_run
+   use pecplas_driver_stiffness, only: linear_solver_name
    use pecplas_driver_increments, only: run_increments
-   use pecplas_driver_gauss, only: gauss_coordinates, joint_points
+   use pecplas_driver_gauss, only: gauss_coordinates
    use pecplas_io_results_increment, only: joint_points_t
-   use pecjoin_penalty, only: set_default_penalties
+   use pecplas_driver_advise, only: advise_main
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
    use pecplas_command, only: command_error
@@ -26,7 +26,8 @@ module pecplas_cli
 
    public :: pecplas_main, run_deck
 
-   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet]'
+   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] | '// &
+      'pecplas --advise DECK [--advise-node N]'
 
 contains
 
@@ -34,11 +35,13 @@ contains
    integer function pecplas_main(args) result(code)
       character(len=*), intent(in) :: args(:)
       character(len=:), allocatable :: deck, outfile
-      logical :: quiet
+      logical :: quiet, advise
       type(model_t) :: model
       type(problem_t) :: problem
-      integer :: i
+      integer :: i, node, ios
 
+      advise = .false.
+      node = 0
       quiet = .false.
       deck = ''
       outfile = ''
@@ -48,6 +51,17 @@ contains
          select case (trim(args(i)))
          case ('--quiet', '-q')
             quiet = .true.
+         case ('--advise')
+            advise = .true.
+         case ('--advise-node')
+            ios = 1
+            if (i < size(args)) read (args(i + 1), *, iostat=ios) node
+            if (ios /= 0 .or. node <= 0) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --advise-node needs a node '// &
+                  'id > 0. '//USAGE)
+               return
+            end if
+            i = i + 1
          case ('-o', '--output')
             if (i == size(args)) then
                code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
@@ -60,6 +74,9 @@ contains
             write (*, '(a)') '  Runs the keyword deck DECK and writes HDF5 results (default '// &
                'output/<deck>.h5) with an XDMF sidecar.'
             write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early.'
+            write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
+               'x1/2, x1, x2 increments, prints their cost and error (reference NEWTON x2) '// &
+               'and the cheapest within 1 % and 5 %; writes no results.'
             code = EXIT_OK
             return
          case ('--version')
@@ -80,6 +97,10 @@ contains
       end do
       if (len(deck) == 0) then
          code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
+         return
+      end if
+      if (advise) then
+         code = advise_main(deck, node)
          return
       end if
       code = run_deck(deck, outfile, quiet, model, problem)
@@ -103,14 +124,7 @@ contains
       w0 = wall_time()
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
-      if (.not. allocated(error)) call check_elements(model%mesh, nflipped, error)
-      if (.not. allocated(error)) call orient_edge_sets(model%mesh, error)
-      if (.not. allocated(error)) call setup_problem(model, problem, error)
-      if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &
-         problem%state%joints, error)
-      if (.not. allocated(error)) call initialise_stresses(model, problem, error)
-      if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
-      if (.not. allocated(error)) call joint_points(model, jpoints, error)
+      if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
       if (allocated(error)) then
          code = command_error(COMMAND, error%exit_code(), error%text())
          return

@@ -20,6 +20,7 @@ module pecplas_io_deck_resolve_joints
    use pecjoin_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
    use pecjoin_laws_katona, only: is_katona
+   use pecjoin_laws_modjoin, only: modjoin_law_t
    implicit none (type, external)
    private
 
@@ -105,6 +106,18 @@ contains
          call line_error(state, raw%at, "undefined interface law '"//raw%law// &
             "'; known laws:"//law_names(model), error)
          return
+      end if
+      ! A thin layer hands its law strains (jump / THICKNESS); MODJOIN's parameters are per
+      ! length of relative displacement (K0, G0, BETA, A, B, A_G, B_CYC): no consistent reading.
+      if (set%etype == 'THIN_LAYER') then
+         select type (law => model%laws(set%law_index)%law)
+         type is (modjoin_law_t)
+            call line_error(state, raw%at, "joint set '"//set%name//"': a THIN_LAYER joint "// &
+               "passes strains (jump / THICKNESS) to its law, but MODJOIN law '"//raw%law// &
+               "' works on displacement jumps (its stiffnesses and lengths are per length of "// &
+               "relative displacement): use GOODMAN4, GOODMAN6 or SPRING joints", error)
+            return
+         end select
       end if
       if (len(raw%edges) > 0) then
          call generated(state, model, raw, origin, next_id, set, edges, error)

@@ -1,0 +1,293 @@
+!> Advice mode (`pecplas --advise DECK`, issue 7): a quick study of a deck's first loading
+!> step under cheaper and finer configurations, run in-process, and the cheapest one whose
+!> error is below 1 % and below 5 %.
+!>
+!> Variants: the nonlinear method (MODIFIED_NEWTON, NEWTON; Katona decks run their contact
+!> iteration inside either) times the number of increments of every step (x1/2, x1, x2),
+!> run up to the end of the first loading step (the first one that applies more than gravity).
+!> The reference is the finest, NEWTON with x2 increments. The error of a variant is
+!> |u - u_ref| / |u_ref| at the monitored node, at the end of the first step: the node with the
+!> largest free (not imposed) displacement of the reference, or a node given by id; only the
+!> free components of its displacement count (an imposed one is the same in every run). Mesh levels are not
+!> varied: the code has no uniform refiner. Each run writes a scratch results file (the
+!> driver writes as it goes) that is deleted afterwards; its writing time is not counted.
+module pecplas_driver_advise
+   use pecplas_kinds, only: wp, ik8
+   use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT
+   use pecplas_version, only: VERSION
+   use pecplas_model, only: model_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_driver_prepare, only: prepare_run
+   use pecplas_driver_increments, only: run_increments
+   use pecplas_driver_gauss, only: gauss_coordinates
+   use pecplas_io_results_increment, only: joint_points_t
+   use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_xdmf, only: xdmf_path
+   use pecplas_driver_timers, only: wall_time
+   use pecplas_files, only: path_stem
+   use pecplas_command, only: command_error
+   implicit none (type, external)
+   private
+
+   public :: advise_row_t, advise_deck, advise_main, ADVISE_METHODS, ADVISE_FACTORS
+
+   !> Nonlinear methods tried (model%solver%method).
+   character(len=*), parameter :: ADVISE_METHODS(2) = [character(len=15) :: 'MODIFIED_NEWTON', &
+      'NEWTON']
+   !> Factors on the number of increments of every step (at least one increment).
+   real(wp), parameter :: ADVISE_FACTORS(3) = [0.5_wp, 1.0_wp, 2.0_wp]
+
+   !> One configuration and what it gave.
+   type :: advise_row_t
+      character(len=15) :: method = ''
+      real(wp) :: factor = 1.0_wp
+      !> Increments of the first step, wall time [s] without result writing, relative error.
+      integer :: increments = 0
+      real(wp) :: wall = 0.0_wp, err = huge(1.0_wp)
+      !> The run completed its first step.
+      logical :: ok = .false.
+      character(len=:), allocatable :: status
+   end type advise_row_t
+
+contains
+
+   !> Runs the variants of `deck`; `node_id` > 0 monitors that node, else the node of largest
+   !> reference displacement (`monitored` returns its id). `ref` is the reference row, `best`
+   !> the cheapest row within 1 % and within 5 % (0 when none).
+   subroutine advise_deck(deck, node_id, rows, ref, best, monitored, error)
+      character(len=*), intent(in) :: deck
+      integer, intent(in) :: node_id
+      type(advise_row_t), allocatable, intent(out) :: rows(:)
+      integer, intent(out) :: ref, best(2), monitored
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: u(:, :, :)
+      logical, allocatable :: free(:, :)
+      type(model_t) :: model
+      integer :: m, f, i, n, inode
+      real(wp) :: uref(2)
+      real(wp), parameter :: TOL(2) = [0.01_wp, 0.05_wp]
+
+      allocate (rows(size(ADVISE_METHODS)*size(ADVISE_FACTORS)))
+      n = 0
+      do m = 1, size(ADVISE_METHODS)
+         do f = 1, size(ADVISE_FACTORS)
+            n = n + 1
+            rows(n)%method = ADVISE_METHODS(m)
+            rows(n)%factor = ADVISE_FACTORS(f)
+         end do
+      end do
+      ref = n
+      ! the reference first: it fixes the monitored node
+      call one_run(deck, n, n, rows(ref), model, u, error, free)
+      if (allocated(error)) return
+      if (.not. rows(ref)%ok) then
+         call input_error(error, 'advise: the reference run (NEWTON, x2 increments) did not '// &
+            'complete its first step ('//rows(ref)%status//'): no advice')
+         return
+      end if
+      if (node_id > 0) then
+         inode = findloc(model%mesh%node_id, node_id, dim=1)
+         if (inode == 0) then
+            call input_error(error, 'advise: --advise-node: no node '//itoa(node_id)// &
+               ' in the mesh')
+            return
+         end if
+      else
+         ! imposed displacements say nothing of the accuracy: the free components count
+         if (.not. any(free .and. u(:, :, ref) /= 0.0_wp)) free = .true.
+         inode = maxloc(norm2(merge(u(:, :, ref), 0.0_wp, free), dim=1), dim=1)
+      end if
+      if (.not. any(free(:, inode))) free(:, inode) = .true.
+      monitored = model%mesh%node_id(inode)
+      uref = merge(u(:, inode, ref), 0.0_wp, free(:, inode))
+      do i = 1, n - 1
+         call one_run(deck, i, n, rows(i), model, u, error)
+         if (allocated(error)) return
+      end do
+      do i = 1, n
+         if (.not. rows(i)%ok) cycle
+         rows(i)%err = norm2(merge(u(:, inode, i), 0.0_wp, free(:, inode)) - uref)/ &
+            max(norm2(uref), tiny(1.0_wp))
+      end do
+      rows(ref)%err = 0.0_wp
+      do m = 1, 2
+         best(m) = 0
+         do i = 1, n
+            if (.not. rows(i)%ok .or. .not. rows(i)%err < TOL(m)) cycle
+            if (best(m) == 0) then
+               best(m) = i
+            else if (rows(i)%wall < rows(best(m))%wall) then
+               best(m) = i
+            end if
+         end do
+      end do
+   end subroutine advise_deck
+
+   !> Reads `deck` afresh, keeps its steps up to the first loading step, applies the configuration of `row` and runs
+   !> it quietly to a scratch results file (deleted); u(:, :, i) = the displacements at the end
+   !> (u allocated for `nvar` variants by the first run).
+   subroutine one_run(deck, i, nvar, row, model, u, error, free)
+      character(len=*), intent(in) :: deck
+      integer, intent(in) :: i, nvar
+      type(advise_row_t), intent(inout) :: row
+      type(model_t), intent(out) :: model
+      real(wp), allocatable, intent(inout) :: u(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      !> The free displacement components (not supported nor imposed).
+      logical, allocatable, intent(out), optional :: free(:, :)
+      type(problem_t) :: problem
+      type(results_file_t) :: results
+      type(joint_points_t), allocatable :: jpoints(:)
+      type(error_t), allocatable :: run_err
+      character(len=:), allocatable :: status, message, scratch
+      real(wp) :: w0
+      integer :: nflipped, last, s
+
+      call read_deck(deck, model, error)
+      if (allocated(error)) return
+      if (size(model%steps) < 1) then
+         call input_error(error, 'advise: the deck has no *STEP')
+         return
+      end if
+      last = first_loading_step(model)
+      model%steps = model%steps(1:last)
+      do s = 1, last
+         model%steps(s)%increments = max(1, nint(row%factor*model%steps(s)%increments))
+      end do
+      row%increments = model%steps(last)%increments
+      model%solver%method = trim(row%method)
+      model%output%every = huge(1)
+      w0 = wall_time()
+      call prepare_run(model, problem, nflipped, jpoints, error)
+      if (allocated(error)) return
+      if (.not. allocated(u)) allocate (u(2, size(problem%state%u, 2), nvar), source=0.0_wp)
+      scratch = scratch_name(deck, i)
+      call results%create(scratch, model, VERSION, gauss_coordinates(model, problem), error, &
+         jpoints)
+      if (allocated(error)) then
+         call input_error(error, 'advise: cannot write the scratch file '//scratch//': '// &
+            error%text())
+         return
+      end if
+      call run_increments(model, problem, results, .true., status, message, run_err)
+      row%wall = wall_time() - w0 - problem%time%output
+      if (allocated(run_err)) status = 'failed'
+      call results%free()
+      call delete_file(scratch)
+      call delete_file(xdmf_path(scratch))
+      row%status = status
+      row%ok = status == 'completed'
+      if (row%ok) u(:, :, i) = problem%state%u
+      if (present(free)) free = problem%dofs%eq > 0
+   end subroutine one_run
+
+   !> The first step that applies something else than gravity (a geostatic step only sets the
+   !> initial state up); the last step when every step is gravity only.
+   integer function first_loading_step(model) result(s)
+      type(model_t), intent(in) :: model
+      integer :: j
+      do s = 1, size(model%steps)
+         associate (st => model%steps(s))
+            do j = 1, size(st%pattern)
+               if (model%patterns(st%pattern(j))%kind /= 'GRAVITY') return
+            end do
+         end associate
+      end do
+      s = size(model%steps)
+   end function first_loading_step
+
+   !> `pecplas --advise DECK [--advise-node N]`: prints the table and the two advice lines;
+   !> exit code 0, or 2 when the deck or the reference run fails.
+   integer function advise_main(deck, node_id) result(code)
+      character(len=*), intent(in) :: deck
+      integer, intent(in) :: node_id
+      type(advise_row_t), allocatable :: rows(:)
+      type(error_t), allocatable :: error
+      integer :: ref, best(2), monitored, i
+      character(len=*), parameter :: FMT = '(2x,a15,2x,a5,2x,i10,2x,f10.4,2x,a12,2x,a)'
+      call advise_deck(deck, node_id, rows, ref, best, monitored, error)
+      if (allocated(error)) then
+         code = command_error('pecplas', error%exit_code(), error%text())
+         return
+      end if
+      write (*, '(a)') 'pecplas --advise '//deck//': first loading step, monitored node '// &
+         itoa(monitored)//', reference NEWTON x2 increments'
+      write (*, '(2x,a15,2x,a5,2x,a10,2x,a10,2x,a12,2x,a)') 'method', 'incr.', 'increments', &
+         'wall [s]', 'error', 'status'
+      do i = 1, size(rows)
+         write (*, FMT) rows(i)%method, factor_text(rows(i)%factor), rows(i)%increments, &
+            rows(i)%wall, err_text(rows(i)), rows(i)%status
+      end do
+      write (*, '(a)') advice_line('1 %', rows, best(1))
+      write (*, '(a)') advice_line('5 %', rows, best(2))
+      code = EXIT_OK
+   end function advise_main
+
+   function advice_line(what, rows, b) result(line)
+      character(len=*), intent(in) :: what
+      type(advise_row_t), intent(in) :: rows(:)
+      integer, intent(in) :: b
+      character(len=:), allocatable :: line
+      if (b == 0) then
+         line = 'advice (error < '//what//'): none of the configurations'
+         return
+      end if
+      line = 'advice (error < '//what//'): METHOD='//trim(rows(b)%method)//', INCREMENTS='// &
+         itoa(rows(b)%increments)//' in the first loading step (x'//factor_text(rows(b)%factor)// &
+         '), error '//err_text(rows(b))
+   end function advice_line
+
+   function factor_text(f) result(s)
+      real(wp), intent(in) :: f
+      character(len=:), allocatable :: s
+      character(len=8) :: buf
+      write (buf, '(g0.2)') f
+      s = trim(adjustl(buf))
+      if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+      if (s(1:1) == '.') s = '0'//s
+   end function factor_text
+
+   function err_text(row) result(s)
+      type(advise_row_t), intent(in) :: row
+      character(len=:), allocatable :: s
+      character(len=12) :: buf
+      if (.not. row%ok) then
+         s = '-'
+         return
+      end if
+      write (buf, '(es10.3)') row%err
+      s = trim(adjustl(buf))
+   end function err_text
+
+   !> A scratch results path unique to this run (TMPDIR or /tmp, deck stem, clock, variant).
+   function scratch_name(deck, i) result(path)
+      character(len=*), intent(in) :: deck
+      integer, intent(in) :: i
+      character(len=:), allocatable :: path
+      character(len=512) :: dir
+      integer(ik8) :: count
+      integer :: n, stat
+      call get_environment_variable('TMPDIR', dir, n, stat)
+      if (stat /= 0 .or. n == 0) dir = '/tmp'
+      call system_clock(count)
+      path = trim(dir)//'/pecplas_advise_'//path_stem(deck)//'_'//itoa(int(mod(count, &
+         1000000000_ik8)))//'_'//itoa(i)//'.h5'
+   end function scratch_name
+
+   subroutine delete_file(path)
+      character(len=*), intent(in) :: path
+      integer :: unit, ios
+      open (newunit=unit, file=path, status='old', iostat=ios)
+      if (ios == 0) close (unit, status='delete')
+   end subroutine delete_file
+
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function itoa
+
+end module pecplas_driver_advise

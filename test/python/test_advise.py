@@ -1,0 +1,61 @@
+"""`pecplas --advise DECK` (issue 7) through the real executable: exit code 0, one table row
+per configuration, two advice lines whose error is below their threshold, and no results
+file written.
+
+Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
+
+import os
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="session")
+def pecplas():
+    exe = os.environ.get("PECPLAS_BIN")
+    if exe and Path(exe).exists():
+        return [exe]
+    return ["fpm", "run", "--target", "pecplas", "--"]
+
+
+def run(pecplas, *args, cwd=ROOT):
+    return subprocess.run([*pecplas, *map(str, args)], cwd=cwd, capture_output=True, text=True)
+
+
+def test_advise_prints_table_and_advice_writes_nothing(pecplas, tmp_path):
+    # a copy of the S3 deck whose *OUTPUT would land in tmp_path: nothing may appear there
+    deck = tmp_path / "s3_psi5.inp"
+    text = (ROOT / "input/s3/s3_psi5.inp").read_text()
+    text = re.sub(r"(?im)^\*OUTPUT.*$", "*OUTPUT, FILE=" + str(tmp_path / "never.h5"), text)
+    deck.write_text(text)
+    before = set(tmp_path.iterdir())
+    r = run(pecplas, "--advise", deck)
+    assert r.returncode == 0, r.stdout + r.stderr
+    rows = [ln.split() for ln in r.stdout.splitlines()
+            if ln.strip().startswith(("MODIFIED_NEWTON", "NEWTON"))]
+    assert len(rows) == 6, r.stdout
+    # the reference (NEWTON x2) has error 0
+    ref = [x for x in rows if x[0] == "NEWTON" and float(x[1]) == 2.0]
+    assert len(ref) == 1 and float(ref[0][4]) == 0.0, r.stdout
+    for thr, lab in ((0.01, "1 %"), (0.05, "5 %")):
+        line = [ln for ln in r.stdout.splitlines() if ln.startswith(f"advice (error < {lab})")]
+        assert len(line) == 1, r.stdout
+        m = re.search(r"error ([0-9.E+-]+)$", line[0])
+        assert m and float(m.group(1)) < thr, line[0]
+    assert set(tmp_path.iterdir()) == before, "advice mode wrote files"
+
+
+def test_advise_bad_node_is_input_error(pecplas):
+    r = run(pecplas, "--advise", "input/default.inp", "--advise-node", "999999")
+    assert r.returncode == 2
+    assert "no node 999999" in r.stderr
+
+
+def test_advise_node_needs_a_number(pecplas):
+    r = run(pecplas, "--advise", "input/default.inp", "--advise-node", "x")
+    assert r.returncode == 2
+    assert "--advise-node" in r.stderr
