@@ -9,7 +9,8 @@ mid-interface value, tau and tau/sigma_n within 2 % of theirs (measured 0.2 %, 1
 over the middle 60 % 0.05 %, 0.3 %, 0.3 %); (2) the top pressure is a dead load, so
 mid-interface sigma_n stays at 100 kPa within 2 % (CNL) and (3) the mid-interface tau equals the
 point driver's (pecplas-path, same law, CNL 100 kPa) on the same slip path within 2 % of the peak
-|tau|; eps_n within 5 %."""
+|tau|; eps_n within 5 %. Stored regression values with their checks: test/reference/s5_s6.json."""
+import json
 import os
 import subprocess
 import sys
@@ -63,3 +64,18 @@ def test_mid_interface_equals_point_driver(run):
     assert np.abs(sn - SIGMA_N0).max() <= 0.02 * SIGMA_N0
     assert np.abs(tau - tau_pd).max() <= 0.02 * np.abs(pd[3]).max()
     assert np.abs(en - en_pd).max() <= 0.05 * np.abs(pd[1]).max()
+
+
+def test_regression_values(run):
+    """Stored values (test/reference/s5_s6.json, with the physics check each passed) at the
+    reversal points of the mid-interface history."""
+    h5, _ = run
+    ref = json.loads((ROOT / "test/reference/s5_s6.json").read_text())["s5"]
+    et, en, sn, tau = mid_history(h5)
+    keys, _ = keys_and_steps(h5)
+    rows = [keys.index(k) + 1 for k in step_ends(h5)]
+    for name, got in (("mid_tau_at_reversals_kPa", tau[rows]),
+                      ("mid_eps_n_at_reversals_mm", en[rows] * 1e3),
+                      ("mid_sigma_n_at_reversals_kPa", sn[rows])):
+        r = ref[name]
+        assert got == pytest.approx(np.array(r["value"]), rel=r["tol"]), name
