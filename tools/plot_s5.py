@@ -37,8 +37,9 @@ def main():
             ax.plot(x, v, ".-", ms=3, label=label)
     for ax, name in zip(axes, ("sigma_n [kPa]", "tau [kPa]", "tau / sigma_n")):
         ax.set_ylabel(name)
-        ax.axvspan(0.2 * L, 0.8 * L, color="0.92", zorder=0)
-    axes[-1].set_xlabel("x along the interface [m] (shaded: middle 60 %)")
+        ax.axvspan(0.0, 0.02, color="0.92", zorder=0)
+        ax.axvspan(L - 0.02, L, color="0.92", zorder=0)
+    axes[-1].set_xlabel("x along the interface [m] (shaded: within 0.02 m of a wall)")
     axes[0].set_title("S5: stresses along the interface (fig. IV.2 style)", fontsize=10)
     axes[1].legend(fontsize=7)
     fig.tight_layout()

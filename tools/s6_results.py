@@ -6,22 +6,43 @@ import numpy as np
 Q_END = 6.28   # kN at pattern factor 1 (tools/make_s6_decks.py)
 
 
+def _head_nodes(x):
+    """The pile head's nodes: at z = 0 with r <= the pile radius (the sand's node at r = a is
+    free, its reaction zero)."""
+    return np.nonzero((np.abs(x[:, 1]) < 1e-9) & (x[:, 0] <= 0.0275 + 1e-9))[0]
+
+
 def head_curve(path):
-    """(head pull [kN], head uplift [m, upwards +]) for every written increment, from 0."""
+    """(head pull [kN], head uplift [m, upwards +]) for every written increment, from 0. The
+    pull is the head reaction when the uplift is imposed (MODJOIN decks), else the pressure
+    pattern's factor times Q_END (Mohr-Coulomb deck)."""
     with h5py.File(path) as f:
         x = f["mesh/coordinates"][:]
         centre = np.nonzero((np.abs(x[:, 0]) < 1e-9) & (np.abs(x[:, 1]) < 1e-9))[0][0]
+        head = _head_nodes(x)
         rows = np.nonzero(f["history/fields"][:])[0]
-        load = f["history/pattern_factors"][:, 0][rows] * Q_END
         keys = sorted(f["increments"].keys())
         u = np.array([f["increments"][k]["displacement"][centre, 1] for k in keys])
+        react = np.array([f["increments"][k]["reaction"][head, 1].sum() for k in keys])
+        imposed = "TYPE=DISPLACEMENT" in str(f.attrs["deck_text"])
+        load = react if imposed else f["history/pattern_factors"][:, 0][rows] * Q_END
     return np.r_[0.0, load], np.r_[0.0, u]
 
 
 def uplift_at(path, q):
-    """Head uplift [m] at the pull q [kN] (linear between increments); nan beyond the curve."""
+    """Head uplift [m] at the pull q [kN] on the last rising branch of the curve (past the early
+    local peak of MODJOIN's imposed-uplift runs, linear between increments); nan if the run
+    never carries q."""
     load, u = head_curve(path)
-    return float(np.interp(q, load, u)) if q <= load[-1] + 1e-12 else float("nan")
+    if q > load.max() + 1e-12:
+        return float("nan")
+    i = len(load) - 1 - int(np.argmax(load[::-1] < q))   # last increment below q
+    if load[i] >= q:
+        return float(np.interp(q, load, u))
+    if i == len(load) - 1:
+        return float("nan")   # the curve ends below q, on a falling branch
+    j = i + 1
+    return float(u[i] + (u[j] - u[i]) * (q - load[i]) / (load[j] - load[i]))
 
 
 def shaft(path, key):
@@ -33,7 +54,7 @@ def shaft(path, key):
 
 
 def keys_and_loads(path):
+    """Increment keys and the head pull [kN] at each."""
     with h5py.File(path) as f:
         keys = sorted(f["increments"].keys())
-        rows = np.nonzero(f["history/fields"][:])[0]
-        return keys, f["history/pattern_factors"][:, 0][rows] * Q_END
+    return keys, head_curve(path)[0][1:]

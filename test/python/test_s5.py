@@ -1,13 +1,16 @@
 """Scene S5 (SPEC §7, thesis figs IV.1-IV.3): FE interface shear box, MODJOIN cyclic III.6
 Dr 80 %, one cycle of +-2 mm of the plate under sigma_n0 = 100 kPa, through the real programs.
 
-Physics asserted: (1) the interface stresses are nearly uniform over the middle 60 % of the
-joint at the reversal points (deviation from the mid-interface value: sigma_n <= 3 % of
-sigma_n0, tau <= 5 %, tau/sigma_n <= 2.5 % -- measured 2.9 %, 4.1 %, 2.2 %: the sand shears
-unevenly between the walls, so the brief's 2 % holds only for tau/sigma_n); (2) the top pressure
-is a dead load, so mid-interface sigma_n stays at 100 kPa within 2 % (CNL, measured 1.0 %) and
-(3) the mid-interface tau equals the point driver's (pecplas-path, same law, CNL 100 kPa) on
-the same slip path within 2 % of the peak |tau| (measured 0.5 %); eps_n within 5 % (2.4 %)."""
+Physics asserted: (1) the interface stresses are uniform within 2 % away from the ends at the
+reversal points: beyond END = 0.02 m from each wall (one wall thickness, a fifth of the sample
+height: the sand is bonded to the walls, so the slip there is the plate's whole displacement and
+falls to the mid value over a few centimetres) sigma_n stays within 2 % of sigma_n0 of the
+mid-interface value, tau and tau/sigma_n within 2 % of theirs (measured 0.2 %, 1.6 %, 1.6 %;
+over the middle 60 % 0.05 %, 0.3 %, 0.3 %); (2) the top pressure is a dead load, so
+mid-interface sigma_n stays at 100 kPa within 2 % (CNL) and (3) the mid-interface tau equals the
+point driver's (pecplas-path, same law, CNL 100 kPa) on the same slip path within 2 % of the peak
+|tau|; eps_n within 5 %. Stored regression values with their checks: test/reference/s5_s6.json."""
+import json
 import os
 import subprocess
 import sys
@@ -20,6 +23,8 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 from s5_results import (L, SIGMA_N0, compare, interface, keys_and_steps,  # noqa: E402
                         mid_history, point_driver, step_ends)
+
+END = 0.02    # m: 'away from the ends' = beyond one wall thickness (H / 5) from each wall
 
 
 @pytest.fixture(scope="module")
@@ -39,12 +44,12 @@ def test_uniform_stresses(run):
     for k in step_ends(h5):
         x, sn, tau, _, _ = interface(h5, k)
         i = int(np.argmin(np.abs(x - L / 2)))
-        m = np.abs(x - L / 2) <= 0.3 * L + 1e-9
+        m = (x >= END - 1e-9) & (x <= L - END + 1e-9)
         assert abs(tau[i]) > 0.4 * SIGMA_N0, "the reversal points are well into the mechanism"
-        assert np.abs(sn[m] - sn[i]).max() <= 0.03 * SIGMA_N0
-        assert np.abs(tau[m] - tau[i]).max() <= 0.05 * abs(tau[i])
+        assert np.abs(sn[m] - sn[i]).max() <= 0.02 * SIGMA_N0
+        assert np.abs(tau[m] - tau[i]).max() <= 0.02 * abs(tau[i])
         r = tau / sn
-        assert np.abs(r[m] - r[i]).max() <= 0.025 * abs(r[i])
+        assert np.abs(r[m] - r[i]).max() <= 0.02 * abs(r[i])
 
 
 def test_mid_interface_equals_point_driver(run):
@@ -59,3 +64,18 @@ def test_mid_interface_equals_point_driver(run):
     assert np.abs(sn - SIGMA_N0).max() <= 0.02 * SIGMA_N0
     assert np.abs(tau - tau_pd).max() <= 0.02 * np.abs(pd[3]).max()
     assert np.abs(en - en_pd).max() <= 0.05 * np.abs(pd[1]).max()
+
+
+def test_regression_values(run):
+    """Stored values (test/reference/s5_s6.json, with the physics check each passed) at the
+    reversal points of the mid-interface history."""
+    h5, _ = run
+    ref = json.loads((ROOT / "test/reference/s5_s6.json").read_text())["s5"]
+    et, en, sn, tau = mid_history(h5)
+    keys, _ = keys_and_steps(h5)
+    rows = [keys.index(k) + 1 for k in step_ends(h5)]
+    for name, got in (("mid_tau_at_reversals_kPa", tau[rows]),
+                      ("mid_eps_n_at_reversals_mm", en[rows] * 1e3),
+                      ("mid_sigma_n_at_reversals_kPa", sn[rows])):
+        r = ref[name]
+        assert got == pytest.approx(np.array(r["value"]), rel=r["tol"]), name
