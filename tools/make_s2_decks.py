@@ -18,9 +18,12 @@ non-symmetric (UMFPACK); modified Newton needs hundreds of iterations per increm
 
 Three bodies with their own nodes (pile P, soil column under the tip C, surrounding soil O),
 joined by explicit joint elements. The reference mesh (--refine 1) has 54 Q4 (the thesis used
-50); --refine n multiplies the element counts in each direction by n.
+50); --refine n multiplies the element counts in each direction by n. At refinement 1 the
+generator also writes DIR/default.inp, the deck `make run` runs: the Goodman deck under a
+header saying so (kept in sync with input/s2/s2_goodman.inp by construction, and checked by
+test/python/test_s2_s3.py).
 
-    python3 tools/make_s2_decks.py [--refine N] [--out DIR] [--tag TAG]
+    python3 tools/make_s2_decks.py [--refine N] [--out DIR]
 """
 import argparse
 import math
@@ -159,6 +162,18 @@ def deck(m, model, refine, psi=0.0, title=None):
     return "\n".join(L_) + "\n"
 
 
+def default_deck(m):
+    """The Goodman deck at refinement 1 with a header naming it `make run`'s default."""
+    head = ["** input/default.inp: the deck `make run` runs (-> output/default.h5, .xmf and the",
+            "** head load-settlement picture output/default.png). It is scene S2 (SPEC §7) with the",
+            "** Goodman interface at refinement 1, identical to input/s2/s2_goodman.inp below this",
+            "** header: a 1 m pile, 10 m long, loaded 0 -> 2000 kN -> 0; runs in about a second.",
+            "** Written by tools/make_s2_decks.py (do not edit: regenerate). Other decks:",
+            "** input/examples/ (strip footing), input/s1 ... input/s6 (the thesis scenes).",
+            "**"]
+    return "\n".join(head) + "\n" + deck(m, "goodman", 1)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--refine", type=int, default=1)
@@ -177,6 +192,10 @@ def main():
         p = s3 / f"s3_psi{psi}{tag}.inp"
         p.write_text(deck(m, "mohr_coulomb", a.refine, psi,
                           f"S3 pile, Mohr-Coulomb interface, psi = {psi}, refine {a.refine}"))
+        print(p)
+    if a.refine == 1:
+        p = Path(a.out) / "default.inp"
+        p.write_text(default_deck(m))
         print(p)
     print(f"{len(m.elements)} Q4, {len(m.nodes)} nodes")
 

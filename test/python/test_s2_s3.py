@@ -101,3 +101,16 @@ def test_s2_goodman_mesh_convergence(tmp_path):
           f"{s[0] * 1e3:.2f} / {s[1] * 1e3:.2f} / {s[2] * 1e3:.2f} mm, observed order {order:.2f}")
     assert abs(s[2] - s[1]) < abs(s[1] - s[0])
     assert 1.5 < order < 3.0
+
+
+def test_committed_decks_match_the_generator(tmp_path):
+    """input/s2, input/s3 and input/default.inp (what `make run` runs) are what
+    tools/make_s2_decks.py writes; default.inp is the Goodman deck under its own header."""
+    subprocess.run([sys.executable, str(ROOT / "tools" / "make_s2_decks.py"), "--out",
+                    str(tmp_path)], check=True, capture_output=True)
+    for new in [*tmp_path.glob("s2/*.inp"), *tmp_path.glob("s3/*.inp")]:
+        old = ROOT / "input" / new.parent.name / new.name
+        assert old.read_text() == new.read_text(), f"{old} is stale: rerun make_s2_decks.py"
+    default = (ROOT / "input" / "default.inp").read_text()
+    assert default == (tmp_path / "default.inp").read_text()
+    assert default.endswith((ROOT / "input" / "s2" / "s2_goodman.inp").read_text())
