@@ -167,10 +167,11 @@ def deck(m, model, refine, psi=0.0, title=None, kt=E_SOIL, unload=True):
 
 def default_deck(m):
     """The Goodman deck at refinement 1 with a header naming it `make run`'s default."""
-    head = ["** input/default.inp: the deck `make run` runs (-> output/default.h5, .xmf and the",
-            "** head load-settlement picture output/default.png). It is scene S2 (SPEC §7) with the",
-            "** Goodman interface at refinement 1, identical to input/s2/s2_goodman.inp below this",
-            "** header: a 1 m pile, 10 m long, loaded 0 -> 2000 kN -> 0; runs in about a second.",
+    head = ["** input/default.inp: the deck `make run` runs (-> output/default.h5, .xmf and",
+            "** the head load-settlement picture output/default.png). It is scene S2 (SPEC §7)",
+            "** with the Goodman interface at refinement 1, identical to input/s2/s2_goodman.inp",
+            "** below this header: a 1 m pile, 10 m long, loaded 0 -> 2000 kN -> 0; runs in about",
+            "** a second.",
             "** Written by tools/make_s2_decks.py (do not edit: regenerate). Other decks:",
             "** input/examples/ (strip footing), input/s1 ... input/s6 (the thesis scenes).",
             "**"]
