@@ -37,7 +37,7 @@ contains
                new_unittest('axisym_patterns', test_axisym_patterns), &
                new_unittest('axisym_options', test_axisym_options), &
                new_unittest('gmsh_mesh_and_deck', test_mesh), &
-               new_unittest('default_deck', test_default)]
+               new_unittest('strip_footing_example', test_strip_footing)]
    end subroutine collect_io_deck
 
    subroutine load(name, model, error)
@@ -325,13 +325,13 @@ contains
          'node id 3 of the .msh file is found by the deck')
    end subroutine test_mesh
 
-   !> input/default.inp (what `make run` runs): 4 x 2 Q8 on [0, 4] x [-2, 0].
-   subroutine test_default(error)
+   !> input/examples/strip_footing.inp (make_default_deck.py): 4 x 2 Q8 on [0, 4] x [-2, 0].
+   subroutine test_strip_footing(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       type(error_t), allocatable :: e
-      call read_deck('input/default.inp', model, e)
-      call check(error, .not. allocated(e), 'input/default.inp must read')
+      call read_deck('input/examples/strip_footing.inp', model, e)
+      call check(error, .not. allocated(e), 'input/examples/strip_footing.inp must read')
       if (allocated(error)) then
          error%message = error%message//': '//e%text()
          return
@@ -350,6 +350,6 @@ contains
             all(near(x(:, edge(2)), [0.0_wp, 0.0_wp])) .and. &
             all(near(x(:, edge(3)), [0.5_wp, 0.0_wp])), 'footing edge')
       end associate
-   end subroutine test_default
+   end subroutine test_strip_footing
 
 end module test_io_deck

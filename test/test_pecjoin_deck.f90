@@ -79,7 +79,9 @@ contains
          bad('joint_inverted', 7, '*JOINTS', 'joint 102 is inverted', 'id, n2, n1, n4, n3'), &
          bad('joint_undefined_node', 7, '*JOINTS', 'undefined node 99 in joint 102'), &
          bad('duplicate_joint_id', 7, '*JOINTS', 'duplicate element id 3'), &
-         bad('thin_layer_thickness', 5, '*JOINTS', 'THICKNESS=e is required')], error)
+         bad('thin_layer_thickness', 5, '*JOINTS', 'THICKNESS=e is required'), &
+         bad('spring_alone', 6, '*JOINTS', "joint set 'joint', spring 101 at node 5", &
+             'no adjacent joint edge')], error)
    end subroutine test_bad_explicit
 
    subroutine test_bad_generated(error)

@@ -9,8 +9,8 @@ Assumed (SPEC): soil E = 2e4 kPa, nu = 0.3, gamma = 18 kN/m3, K0 = 0.5 (geostati
 stress); pile E = 2e7 kPa, nu = 0.2; domain radius 10 m, depth 20 m, bottom fixed, outer side
 radially fixed; head load 0 -> 2000 kN in 20 increments, back to 0 in 20. Further assumed here:
 the pile starts from the same geostatic stress as the soil (gamma = 18, K0 = 0.5, so the
-initial state is continuous across the interface); Katona contact on the node doublets
-(springs' doublets) without the column-soil doublet at the tip corner; thin layer thickness 0.01 m (its unit
+initial state is continuous across the interface); Katona contact on all the springs' node
+doublets (at the tip corner three close a loop: doc/validation.md); thin layer e = 0.01 m (its unit
 stiffnesses are K e); springs carry the same K_n, K_t per unit area (times their tributary
 area) — with Frank's default penalty 1e5 E_ryg R_max instead, full Newton cycles between stick
 and slip on unloading (doc/validation.md). Full Newton: the frictional tangent is
@@ -18,9 +18,12 @@ non-symmetric (UMFPACK); modified Newton needs hundreds of iterations per increm
 
 Three bodies with their own nodes (pile P, soil column under the tip C, surrounding soil O),
 joined by explicit joint elements. The reference mesh (--refine 1) has 54 Q4 (the thesis used
-50); --refine n multiplies the element counts in each direction by n.
+50); --refine n multiplies the element counts in each direction by n. At refinement 1 the
+generator also writes DIR/default.inp, the deck `make run` runs: the Goodman deck under a
+header saying so (kept in sync with input/s2/s2_goodman.inp by construction, and checked by
+test/python/test_s2_s3.py).
 
-    python3 tools/make_s2_decks.py [--refine N] [--out DIR] [--tag TAG]
+    python3 tools/make_s2_decks.py [--refine N] [--out DIR]
 """
 import argparse
 import math
@@ -85,20 +88,22 @@ def interfaces(m):
     return [("shaft", shaft), ("tip", tip), ("below", below)]
 
 
-def law_lines(model, psi=0.0):
+def law_lines(model, psi=0.0, kt=E_SOIL):
+    """The interface law; `kt` (default E_soil, SPEC) is changed only by the tests that
+    take penalty joints to their stiff limit (test_s2_s3.py)."""
     if model == "goodman":
         return ["*INTERFACE_LAW, NAME=iface, TYPE=GOODMAN",
-                f"KN = {E_PILE:g}, KT = {E_SOIL:g}, PHI = 30, C = 0"]
+                f"KN = {E_PILE:g}, KT = {kt:g}, PHI = 30, C = 0"]
     if model == "ghaboussi":
         return ["*INTERFACE_LAW, NAME=iface, TYPE=GHABOUSSI",
-                f"KN = {E_PILE * THIN:g}, KT = {E_SOIL * THIN:g}, PHI = 30, C = 0"]
+                f"KN = {E_PILE * THIN:g}, KT = {kt * THIN:g}, PHI = 30, C = 0"]
     if model == "spring":
         return ["*INTERFACE_LAW, NAME=iface, TYPE=SPRING",
-                f"KN = {E_PILE:g}, KT = {E_SOIL:g}, PHI = 30, C = 0"]
+                f"KN = {E_PILE:g}, KT = {kt:g}, PHI = 30, C = 0"]
     if model == "katona":
         return ["*INTERFACE_LAW, NAME=iface, TYPE=KATONA", "PHI = 30, C = 0"]
     return ["*INTERFACE_LAW, NAME=iface, TYPE=MOHR_COULOMB",
-            f"KN = {E_PILE:g}, KT = {E_SOIL:g}, PHI = 30, C = 0, PSI = {psi:g}"]
+            f"KN = {E_PILE:g}, KT = {kt:g}, PHI = 30, C = 0, PSI = {psi:g}"]
 
 
 def joint_lines(m, model):
@@ -123,7 +128,8 @@ def joint_lines(m, model):
     return out
 
 
-def deck(m, model, refine, psi=0.0, title=None):
+def deck(m, model, refine, psi=0.0, title=None, kt=E_SOIL, unload=True):
+    """Deck text of `model` on mesh m; unload=False keeps the loading step only."""
     nz, nzb, nr, nrs = len(m.z_pile), len(m.z_below), len(m.r_pile), len(m.r_soil)
     head = [m.P[i, 0] for i in range(nr)]
     axis = [m.P[0, j] for j in range(nz)] + [m.C[0, j] for j in range(nzb)]
@@ -143,7 +149,7 @@ def deck(m, model, refine, psi=0.0, title=None):
            "*MATERIAL, NAME=sand", f"E = {E_SOIL:g}, NU = 0.3, GAMMA = 18",
            "*SECTION, SET=pile, MATERIAL=concrete", "*SECTION, SET=column, MATERIAL=sand",
            "*SECTION, SET=soil, MATERIAL=sand"]
-    L_ += law_lines(model, psi) + joint_lines(m, model)
+    L_ += law_lines(model, psi, kt) + joint_lines(m, model)
     L_ += ["*NSET, NAME=axis", ", ".join(map(str, axis)),
            "*NSET, NAME=bottom", ", ".join(map(str, bottom)),
            "*NSET, NAME=outer", ", ".join(map(str, outer)),
@@ -154,9 +160,22 @@ def deck(m, model, refine, psi=0.0, title=None):
            "** 2000 kN on the head (ring total over pi a^2)",
            "*LOAD, NAME=head, TYPE=PRESSURE", f"head, {2000.0 / (math.pi * A * A):.12g}",
            "*STEP, NAME=load, INCREMENTS=20", "head, 1",
-           "*STEP, NAME=unload, INCREMENTS=20", "head, 0",
+           *(["*STEP, NAME=unload, INCREMENTS=20", "head, 0"] if unload else []),
            "*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=50, MAX_CUTS=6", "*OUTPUT, EVERY=1"]
     return "\n".join(L_) + "\n"
+
+
+def default_deck(m):
+    """The Goodman deck at refinement 1 with a header naming it `make run`'s default."""
+    head = ["** input/default.inp: the deck `make run` runs (-> output/default.h5, .xmf and",
+            "** the head load-settlement picture output/default.png). It is scene S2 (SPEC §7)",
+            "** with the Goodman interface at refinement 1, identical to input/s2/s2_goodman.inp",
+            "** below this header: a 1 m pile, 10 m long, loaded 0 -> 2000 kN -> 0; runs in about",
+            "** a second.",
+            "** Written by tools/make_s2_decks.py (do not edit: regenerate). Other decks:",
+            "** input/examples/ (strip footing), input/s1 ... input/s6 (the thesis scenes).",
+            "**"]
+    return "\n".join(head) + "\n" + deck(m, "goodman", 1)
 
 
 def main():
@@ -177,6 +196,10 @@ def main():
         p = s3 / f"s3_psi{psi}{tag}.inp"
         p.write_text(deck(m, "mohr_coulomb", a.refine, psi,
                           f"S3 pile, Mohr-Coulomb interface, psi = {psi}, refine {a.refine}"))
+        print(p)
+    if a.refine == 1:
+        p = Path(a.out) / "default.inp"
+        p.write_text(default_deck(m))
         print(p)
     print(f"{len(m.elements)} Q4, {len(m.nodes)} nodes")
 

@@ -1,10 +1,19 @@
 #!/usr/bin/env python3
 """Picture of a PECPLAS results file: the deformed mesh (magnified) coloured by a stress
-component at the last written increment (element average of the Gauss-point values).
+component at the last written increment (element average of the Gauss-point values) and,
+when a load pattern acts on an edge or node set of its own name (e.g. the pile head `head`
+of the default deck), the load-displacement curve of its loaded node beside it.
 
     python3 tools/plot_results.py output/default.h5 [-o out.png] [--component yy]
                                   [--increment N] [--scale S]
-Components: xx, yy, zz, xy (tension positive)."""
+Components: xx, yy, zz, xy (tension positive).
+
+The load of a pattern is its resultant, taken from the support reactions: by equilibrium the
+sum of the reactions is the initial part plus sum_k F_k f_k (pattern resultant F_k times its
+factor f_k), so a least-squares fit over the written increments gives F_k without knowing how
+the pattern was defined. The loaded node is the node of the set that moves most at the
+largest load factor (the pile head's axis node in the default deck). In axisymmetry only
+the axial reactions add up to a force (radial ones are balanced by the hoop stresses)."""
 
 import argparse
 import sys
@@ -22,6 +31,48 @@ COMPONENTS = {"xx": 0, "yy": 1, "zz": 2, "xy": 3}
 # corner nodes in boundary order; quadratic elements walk corner, mid, corner, ...
 OUTLINE = {"T3": [0, 1, 2], "Q4": [0, 1, 2, 3], "T6": [0, 3, 1, 4, 2, 5],
            "Q8": [0, 4, 1, 5, 2, 6, 3, 7]}
+
+
+def load_curve(f):
+    """(label, load [force units], displacement of the loaded node along the load [length])
+    for the first pattern acting on an edge or node set of its own name, else None."""
+    if "history" not in f or "patterns" not in f["history"].attrs:
+        return None
+    names = [n.decode() if isinstance(n, bytes) else str(n)
+             for n in f["history"].attrs["patterns"]]
+    sets = {**dict(f["mesh"].get("edge_sets", {}).items()),
+            **dict(f["mesh"].get("node_sets", {}).items())}
+    hit = [k for k, n in enumerate(names) if n in sets]
+    if not hit:
+        return None
+    k = hit[0]
+    rows = np.nonzero(f["history/fields"][:])[0]
+    factors = f["history/pattern_factors"][:][rows]
+    keys = sorted(f["increments"].keys())
+    if len(keys) != len(rows) or len(keys) < 2:
+        return None
+    reac = np.array([f["increments"][key]["reaction"][:].sum(axis=0) for key in keys])
+    analysis = f["/"].attrs.get("analysis", "")
+    if (analysis.decode() if isinstance(analysis, bytes) else str(analysis)) == "axisymmetric":
+        reac[:, 0] = 0.0      # radial reactions of rings do not add up to a force
+    design = np.column_stack([np.ones(len(keys)), factors])
+    coef = np.linalg.lstsq(design, reac, rcond=None)[0]        # (1 + npattern, 2)
+    resultant = coef[1 + k]                                    # reaction of pattern k at f = 1
+    if np.linalg.norm(resultant) < 1e-300:
+        return None
+    direction = -resultant / np.linalg.norm(resultant)         # the load opposes its reactions
+    nodes = np.unique(sets[names[k]]["nodes"][:].ravel())
+    peak = keys[int(np.argmax(np.abs(factors[:, k])))]
+    u_peak = f["increments"][peak]["displacement"][:][nodes] @ direction
+    node = nodes[int(np.argmax(np.abs(u_peak)))]
+    u = np.array([f["increments"][key]["displacement"][node] @ direction for key in keys])
+    load = factors[:, k] * np.linalg.norm(resultant)
+    units = f["/"].attrs.get("units", "")
+    units = units.decode() if isinstance(units, bytes) else str(units)
+    force, length = (units.split(",")[:2] + ["", ""])[:2] if units else ("", "")
+    label = (f"'{names[k]}' (node {int(f['mesh/node_ids'][node])})",
+             force.strip(), length.strip())
+    return label, np.r_[0.0, load], np.r_[0.0, u]
 
 
 def main():
@@ -55,7 +106,18 @@ def main():
                 values.append(stress[e, COMPONENTS[a.component]] if stress is not None else 0)
         title = f["/"].attrs.get("title", "")
         time = g.attrs.get("time", 0.0)
-    fig, ax = plt.subplots(figsize=(7, 5))
+        curve = load_curve(f)
+    if curve:
+        fig, (ax, axc) = plt.subplots(1, 2, figsize=(12, 5),
+                                      gridspec_kw={"width_ratios": [1.4, 1]})
+        (name, force, length), load, u = curve
+        axc.plot(u, load, "o-", ms=3)
+        axc.set_xlabel(f"displacement of the loaded node along the load [{length}]")
+        axc.set_ylabel(f"resultant of load {name.split()[0]} [{force}]")
+        axc.set_title(f"load-displacement of {name}", fontsize=10)
+        axc.grid(alpha=0.3)
+    else:
+        fig, ax = plt.subplots(figsize=(7, 5))
     pc = PolyCollection(polys, array=np.asarray(values), cmap="viridis", edgecolors="k",
                         linewidths=0.4)
     ax.add_collection(pc)

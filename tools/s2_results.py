@@ -46,3 +46,34 @@ def last_key(path, step):
     with h5py.File(path) as f:
         keys = sorted(f["increments"].keys())
         return max(k for k in keys if int(f["increments"][k].attrs["step"]) == step)
+
+
+def settlement_at(path, load):
+    """Head settlement [m] at `load` [kN] on the loading branch (step 1), interpolated."""
+    q, s, steps = head_curve(path)
+    m = steps == 1
+    return float(np.interp(load, np.r_[0.0, q[m]], np.r_[0.0, s[m]]))
+
+
+def load_at(path, settlement):
+    """Head load [kN] at head settlement `settlement` [m] on the loading branch."""
+    q, s, steps = head_curve(path)
+    m = steps == 1
+    return float(np.interp(settlement, np.r_[0.0, s[m]], np.r_[0.0, q[m]]))
+
+
+CAPACITY_SETTLEMENT = 0.015   # m: S3 capacity = head load at this settlement (all psi reach it)
+
+
+def scene_values(path):
+    """The stored regression values of an S2/S3 run (test/reference/s2_s3.json): head
+    settlement at 1000 and 2000 kN and after unloading [mm], peak shaft sigma_n and shaft
+    shear resultant at the end of loading [kPa, kN], head load at 15 mm settlement [kN]."""
+    _, s, _ = head_curve(path)
+    _, sig, _, q = shaft(path, last_key(path, 1))
+    return {"settlement_1000": settlement_at(path, 1000.0) * 1e3,
+            "settlement_2000": settlement_at(path, 2000.0) * 1e3,
+            "permanent_settlement": float(s[-1]) * 1e3,
+            "peak_sigma_n": float(sig[:, 0].max()),
+            "shaft_resultant": abs(q),
+            "capacity_15mm": load_at(path, CAPACITY_SETTLEMENT)}

@@ -12,7 +12,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECKER = ROOT / "tools" / "check_results.py"
-SOURCES = ["input/default.inp", "input/s1/s1_friction_psi3_kn5e6.inp",
+SOURCES = ["input/examples/strip_footing.inp", "input/s1/s1_friction_psi3_kn5e6.inp",
            "test/data/cli/oedometer.inp", "test/data/initial/geostatic_column.inp"]
 GARBAGE = ["abc", "1e999", "-1e999", "nan", "0", "-0", "1e-320", "*", ",", "", "9" * 40,
            "-7", "3.5.1", "*NODES", "1, 2", "ALL"]

@@ -1,5 +1,7 @@
 """The real `pecplas` executable, as a user or a batch script runs it: exit codes, the
-results file and its XDMF sidecar, and the physics of the default deck's geostatic step.
+results file and its XDMF sidecar, and the physics of the strip-footing example's geostatic
+step (input/examples/strip_footing.inp; `make run`'s own deck, the S2 pile, is checked by
+test_s2_s3.py).
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
@@ -29,9 +31,9 @@ def run(pecplas, *args):
                           text=True)
 
 
-def test_default_deck_runs_and_geostatic_settlement_is_exact(pecplas, tmp_path):
-    out = tmp_path / "default.h5"
-    r = run(pecplas, "input/default.inp", "-o", out)
+def test_strip_footing_runs_and_geostatic_settlement_is_exact(pecplas, tmp_path):
+    out = tmp_path / "strip_footing.h5"
+    r = run(pecplas, "input/examples/strip_footing.inp", "-o", out)
     assert r.returncode == 0, r.stdout + r.stderr
     # one progress line per increment: 1 geostatic + 5 loading
     assert sum(" inc " in line for line in r.stdout.splitlines()) == 6

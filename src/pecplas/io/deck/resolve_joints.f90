@@ -93,6 +93,7 @@ contains
       type(joint_set_t), intent(out) :: set
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: edges(:, :)
+      character(len=:), allocatable :: msg
       integer :: i, bad
       set%name = raw%name
       set%etype = raw%etype
@@ -132,9 +133,10 @@ contains
       call spring_tributaries(model%mesh%x, model%analysis%kind, model%analysis%thickness, &
          set%conn(1, :), edges, set%tributary, set%tangent, bad, error)
       if (allocated(error)) then
-         call line_error(state, spring_line(raw, bad), "joint set '"//set%name// &
-            "', spring "//itoa(set%ids(bad))//' at node '// &
-            itoa(model%mesh%node_id(set%conn(1, bad)))//': '//error%message, error)
+         ! the message is copied first: line_error's intent(out) error is freed on entry
+         msg = "joint set '"//set%name//"', spring "//itoa(set%ids(bad))//' at node '// &
+            itoa(model%mesh%node_id(set%conn(1, bad)))//': '//error%message
+         call line_error(state, spring_line(raw, bad), msg, error)
          return
       end if
       if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
