@@ -29,15 +29,15 @@ contains
       call check_advice('input/s3/s3_psi5.inp', error)
    end subroutine test_s3
 
-   !> The same on the default deck; the increments reported are those of its loading step
+   !> The same on the strip-footing example deck; the increments reported are those of its loading step
    !> (5 in the deck: 3, 5, 10 for x1/2, x1, x2), not of its one-increment geostatic step.
    subroutine test_default(error)
       type(error_t), allocatable, intent(out) :: error
       type(advise_row_t), allocatable :: rows(:)
       integer :: ref, best(2), node
-      call check_advice('input/default.inp', error)
+      call check_advice('input/examples/strip_footing.inp', error)
       if (allocated(error)) return
-      call advise_deck('input/default.inp', 0, rows, ref, best, node, error)
+      call advise_deck('input/examples/strip_footing.inp', 0, rows, ref, best, node, error)
       if (allocated(error)) return
       call check(error, all(rows(1:3)%increments == [3, 5, 10]), &
          'increments of the loading step: 3, 5, 10')
@@ -49,7 +49,7 @@ contains
       type(advise_row_t), allocatable :: rows(:)
       type(error_t), allocatable :: e
       integer :: ref, best(2), node
-      call advise_deck('input/default.inp', 999999, rows, ref, best, node, e)
+      call advise_deck('input/examples/strip_footing.inp', 999999, rows, ref, best, node, e)
       call check(error, allocated(e), 'an unknown node is reported')
       if (allocated(error)) return
       call check(error, e%kind == ERR_INPUT, 'as an input error')

@@ -50,12 +50,12 @@ def test_advise_prints_table_and_advice_writes_nothing(pecplas, tmp_path):
 
 
 def test_advise_bad_node_is_input_error(pecplas):
-    r = run(pecplas, "--advise", "input/default.inp", "--advise-node", "999999")
+    r = run(pecplas, "--advise", "input/examples/strip_footing.inp", "--advise-node", "999999")
     assert r.returncode == 2
     assert "no node 999999" in r.stderr
 
 
 def test_advise_node_needs_a_number(pecplas):
-    r = run(pecplas, "--advise", "input/default.inp", "--advise-node", "x")
+    r = run(pecplas, "--advise", "input/examples/strip_footing.inp", "--advise-node", "x")
     assert r.returncode == 2
     assert "--advise-node" in r.stderr
