@@ -114,11 +114,16 @@ def convergence(tmp_path, model):
 
 
 def test_s2_goodman_mesh_convergence(tmp_path):
-    """Head settlement at 2000 kN (Goodman joints) on refinements 1, 2, 4: the differences
-    shrink with an observed order (Richardson) near 2, as for linear elements."""
+    """Head settlement at 2000 kN (Goodman joints) on refinements 1, 2, 4 (78.28 / 86.36 /
+    88.08 mm): monotone, with shrinking differences; the observed order (printed) is 2.2 on
+    this triple, but it is pre-asymptotic: refine 8 gives 89.41 mm, an order of only ~0.4 on
+    2/4/8, because the tip corner (a stress singularity where shaft, base and column joints
+    meet) dominates the error on fine meshes. So the test asserts convergence (differences
+    shrink by a factor > 1.2, i.e. order > 0.26), not a rate."""
     s, order = convergence(tmp_path, "goodman")
-    assert abs(s[2] - s[1]) < abs(s[1] - s[0])
-    assert 1.5 < order < 3.0
+    assert s[0] < s[1] < s[2], "monotone convergence from below"
+    assert abs(s[2] - s[1]) < abs(s[1] - s[0]) / 1.2
+    assert order > 0.26
 
 
 def test_s2_katona_mesh_convergence(tmp_path):
