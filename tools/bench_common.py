@@ -49,14 +49,30 @@ def provenance():
 
 def run_timed(cmd, cwd=None, timeout=None):
     """Run one command; returns dict(wall [s], rc, stdout, stderr, peak_mb) where peak_mb is
-    the peak resident memory of that process alone (os.wait4). A timeout kills the process
-    and returns rc = None."""
+    the peak resident memory of that program. A timeout kills the process and returns
+    rc = None.
+
+    peak_mb is the last VmHWM read from /proc/PID/status while the program runs (polled every
+    5 ms; the high-water mark belongs to the exec'd program's address space, so the Python
+    parent's size, which the forked child carries until exec, does not count). wait4's
+    ru_maxrss would include that pre-exec size; it is only the fallback for runs too short
+    to be sampled."""
     import tempfile
     with tempfile.TemporaryFile("w+") as fo, tempfile.TemporaryFile("w+") as fe:
         t0 = time.perf_counter()
         p = subprocess.Popen([str(c) for c in cmd], cwd=cwd, stdout=fo, stderr=fe, text=True)
         rc = None
+        hwm = None
+        status_file = f"/proc/{p.pid}/status"
         while True:
+            try:
+                with open(status_file) as st:
+                    for line in st:
+                        if line.startswith("VmHWM:"):
+                            hwm = float(line.split()[1]) / 1024.0
+                            break
+            except OSError:
+                pass
             pid, status, ru = os.wait4(p.pid, os.WNOHANG)
             if pid != 0:
                 rc = os.waitstatus_to_exitcode(status)
@@ -71,7 +87,7 @@ def run_timed(cmd, cwd=None, timeout=None):
         fo.seek(0)
         fe.seek(0)
         return {"wall": wall, "rc": rc, "stdout": fo.read(), "stderr": fe.read(),
-                "peak_mb": ru.ru_maxrss / 1024.0}
+                "peak_mb": hwm if hwm is not None else ru.ru_maxrss / 1024.0}
 
 
 def write_csv(path, header, rows):
