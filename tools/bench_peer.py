@@ -1,0 +1,282 @@
+#!/usr/bin/env python3
+"""A peer side by side (issue 7): our code and CalculiX (ccx) on the same meshes.
+
+1. The S2 frictional pile (tools/make_s2_decks.py, axisymmetric): ours with the Mohr-Coulomb
+   penalty joints and with Katona contact, CalculiX with face-to-face penalty contact and
+   Coulomb friction on the deck exported by tools/export_abaqus.py (same K_n, K_t as ours).
+2. The CGS-4 inclined-plane block (plane strain, test/data/joints/inclined_plane.inp): slip
+   limit F/G against (tan a + mu)/(1 - mu tan a) = 0.412371.
+
+Every code runs one thread (OMP_NUM_THREADS=1), timed by bench_common.run_timed in this run.
+Writes doc/bench/peer.csv, doc/bench/peer_pile.png, doc/bench/peer_block.png, doc/bench/peer.md.
+
+    python3 tools/bench_peer.py [--quick] [--keep DIR]
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_common as bc  # noqa: E402
+import export_abaqus as ex  # noqa: E402
+
+ROOT = bc.ROOT
+HEAD_LOAD = 2000.0
+A, L, GAMMA, K0, PHI = 0.5, 10.0, 18.0, 0.5, 30.0
+Q_SHAFT = K0 * GAMMA * L**2 / 2 * math.tan(math.radians(PHI)) * math.pi * 2 * A  # 816.2 kN
+CGS_DECK = ROOT / "test" / "data" / "joints" / "inclined_plane.inp"
+CGS_KATONA = ROOT / "test" / "data" / "katona" / "inclined_plane.inp"
+TAN_A, MU = 0.1, 0.3
+FG_EXACT = (TAN_A + MU) / (1 - MU * TAN_A)
+
+
+def find_node(m, x, y):
+    return min(m["nodes"], key=lambda k: (m["nodes"][k][0] - x)**2 + (m["nodes"][k][1] - y)**2)
+
+
+# ---------------------------------------------------------------- our code
+def ours_curve(h5, node, comp, pattern):
+    """(pattern factor, displacement component of `node`) for every written increment, with
+    the starting point (0, 0)."""
+    with h5py.File(h5) as f:
+        rows = np.nonzero(f["history/fields"][:])[0]
+        fac = f["history/pattern_factors"][:, pattern][rows]
+        keys = sorted(f["increments"].keys())
+        u = np.array([f["increments"][k]["displacement"][node - 1, comp] for k in keys])
+        steps = f["history/step"][:][rows]
+    return np.r_[0.0, fac], np.r_[0.0, u], np.r_[1, steps]
+
+
+def run_ours(exe, deck, h5):
+    r = bc.run_timed([exe, deck, "-o", h5, "--quiet"], timeout=600)
+    return r
+
+
+# ---------------------------------------------------------------- CalculiX
+def run_ccx(deck, work, name, print_nodes, contact_print=False):
+    """Export `deck` to work/name.inp and run ccx there; returns (run_timed dict, model)."""
+    m = ex.parse_deck(deck)
+    m["nsets"]["PRINT_NODES"] = print_nodes
+    warnings = []
+    ex.export(m, work / f"{name}.inp", warn=warnings.append)
+    if contact_print:
+        _add_contact_print(work / f"{name}.inp")
+    r = bc.run_timed(["ccx", "-i", name], cwd=work, timeout=600)
+    r["warnings"] = warnings
+    r["increments"] = len(re.findall(r"increment\s+\d+ attempt", r["stdout"]))
+    r["iterations"] = len(re.findall(r"iteration\s+\d+", r["stdout"]))
+    return r, m
+
+
+def _add_contact_print(inp):
+    """Print the contact stresses (CSTR) in every increment of every step."""
+    text = inp.read_text().replace("*NODE FILE\nU\n*END STEP",
+                                   "*NODE FILE\nU\n*CONTACT PRINT\nCSTR\n*END STEP")
+    inp.write_text(text)
+
+
+def ccx_nodes(dat, node, comp):
+    """(total time, displacement component) of `node` for every printed increment."""
+    out, t = [], None
+    lines = Path(dat).read_text().splitlines()
+    for i, line in enumerate(lines):
+        if line.strip().startswith("displacements (vx,vy,vz)"):
+            t = float(line.split()[-1])
+        elif t is not None and line.strip() and line.split()[0] == str(node) and len(line.split()) == 4:
+            out.append((t, float(line.split()[1 + comp])))
+            t = None
+    return np.array(out)
+
+
+def ccx_shaft(dat, m, time, faces):
+    """Shaft shear resultant [kN] from CalculiX's contact stresses at `time`: for every slave
+    face of the shaft, the mean |tau| over its integration points times the face's full ring
+    area 2 pi r h (the face-to-face rule's weights are not printed: equal weights assumed)."""
+    per, on = {}, False
+    for line in Path(dat).read_text().splitlines():
+        if "contact stress" in line:
+            on = abs(float(line.split()[-1]) - time) < 1e-9
+            continue
+        s = line.split()
+        if on and len(s) == 5:
+            per.setdefault(int(s[0]), []).append(math.hypot(float(s[3]), float(s[4])))
+        elif on and s:
+            on = False
+    total = 0.0
+    for eid, taus in per.items():
+        if eid in faces:
+            ys = [m["nodes"][n][1] for n in next(e[3] for e in m["elements"] if e[0] == eid)]
+            total += np.mean(taus) * 2 * math.pi * A * (max(ys) - min(ys))
+    return total
+
+
+# ---------------------------------------------------------------- scenes
+def pile(exe, work, refine, rows, md):
+    d = work / f"s2_r{refine}"
+    subprocess.run([sys.executable, str(ROOT / "tools" / "make_s2_decks.py"), "--refine",
+                    str(refine), "--out", str(d)], check=True, capture_output=True)
+    tag = "" if refine == 1 else f"_r{refine}"
+    mc, ka = d / "s2" / f"s2_mohr_coulomb{tag}.inp", d / "s2" / f"s2_katona{tag}.inp"
+    m = ex.parse_deck(mc)
+    head = find_node(m, 0.0, 0.0)
+    shaft_joint = next(j for j in m["joints"] if j["set"] == "shaft")
+    faces = {ex.edge_face(m, a, b)[0] for side in ex.joint_sides(shaft_joint)[:2]
+             for a, b in side}
+    tied = d / "s2" / f"s2_mc_tied_tip{tag}.inp"
+    tied.write_text(tied_tip(mc.read_text()))
+    curves, runs = {}, {}
+    for label, deck in (("ours, Mohr-Coulomb penalty", mc), (TIED, tied), ("ours, Katona", ka)):
+        h5 = d / (deck.stem + ".h5")
+        r = run_ours(exe, deck, h5)
+        runs[label] = r
+        if r["rc"] == 0:
+            fac, u, _ = ours_curve(h5, head, 1, 0)
+            curves[label] = (fac * HEAD_LOAD, -u * 1e3)
+            q = _ours_shaft(h5)
+            r["shaft"] = abs(q)
+    r, _ = run_ccx(mc, d, "s2_ccx", [head], contact_print=True)
+    runs["CalculiX"] = r
+    tu = ccx_nodes(d / "s2_ccx.dat", head, 1)
+    t = tu[:, 0]
+    load = np.where(t <= 1.0, 0.0, np.where(t <= 2.0, (t - 1.0), 3.0 - t)) * HEAD_LOAD
+    curves["CalculiX"] = (np.r_[0.0, load], np.r_[0.0, -tu[:, 1] * 1e3])
+    r["shaft"] = ccx_shaft(d / "s2_ccx.dat", m, 2.0, faces)
+    neq = 2 * len(m["nodes"])
+    for label, r in runs.items():
+        lo, s = curves.get(label, (np.array([0.0]), np.array([np.nan])))
+        rows.append([f"S2 pile r{refine}", label, len(m["elements"]), neq, f"{r['wall']:.3f}",
+                     f"{r['peak_mb']:.1f}", r["rc"], _at(lo, s, 100.0, first=True),
+                     _at(lo, s, HEAD_LOAD), f"{s[-1]:.2f}", f"{r.get('shaft', float('nan')):.0f}"])
+    return curves, runs, m
+
+
+TIED = "ours, Mohr-Coulomb penalty, tip tied"
+
+
+def tied_tip(text):
+    """Our Mohr-Coulomb S2 deck with the tip joint made bonded and stiff (K_t = K_n, huge
+    cohesion), as CalculiX has it: its contact cannot use the tip faces, which touch the axis."""
+    law = ("*INTERFACE_LAW, NAME=tied, TYPE=MOHR_COULOMB\n"
+           "KN = 2e7, KT = 2e7, PHI = 30, C = 1e9, PSI = 0\n")
+    old = "*JOINTS, TYPE=GOODMAN4, SET=tip, LAW=iface"
+    assert old in text
+    return text.replace(old, law + old.replace("LAW=iface", "LAW=tied"))
+
+
+def _ours_shaft(h5):
+    from s2_results import last_key, shaft
+    try:
+        return shaft(h5, last_key(h5, 1))[3]
+    except Exception:          # a joint kind without tributary data: leave it out
+        return float("nan")
+
+
+def _at(load, s, target, first=False):
+    idx = [i for i, x in enumerate(load) if abs(x - target) < 1e-6]
+    if not idx:
+        return "nan"
+    return f"{s[idx[0] if first else idx[-1]]:.3f}"
+
+
+def block(exe, work, rows):
+    d = work / "cgs4"
+    d.mkdir(parents=True, exist_ok=True)
+    m = ex.parse_deck(CGS_DECK)
+    pad = find_node(m, *m["nodes"][9])      # the pad's joint-face node 9 (push point)
+    pad = 9 if 9 in m["nodes"] else pad
+    curves, runs, limits = {}, {}, {}
+    for label, deck in (("ours, Mohr-Coulomb penalty", CGS_DECK), ("ours, Katona", CGS_KATONA)):
+        h5 = d / (deck.parent.name + ".h5")
+        r = run_ours(exe, deck, h5)
+        runs[label] = r
+        fac, u, steps = ours_curve(h5, pad, 0, 1)
+        sel = steps == 2
+        curves[label] = (fac[sel], u[sel] * 1e6)
+        limits[label] = float(fac[-1])
+    r, _ = run_ccx(CGS_DECK, d, "cgs_ccx", [pad])
+    runs["CalculiX"] = r
+    tu = ccx_nodes(d / "cgs_ccx.dat", pad, 0)
+    tu = tu[tu[:, 0] > 1.0]
+    fac = 0.5 * (tu[:, 0] - 1.0)        # push pattern: 10 kN x factor, target 0.5
+    curves["CalculiX"] = (fac, tu[:, 1] * 1e6)
+    limits["CalculiX"] = float(fac[-1])
+    for label, r in runs.items():
+        rows.append(["CGS-4 block", label, len(m["elements"]), 2 * len(m["nodes"]),
+                     f"{r['wall']:.3f}", f"{r['peak_mb']:.1f}", r["rc"], "", "",
+                     f"{limits[label]:.6f}", ""])
+    return curves, runs, limits
+
+
+# ---------------------------------------------------------------- output
+def plot(curves_by_mesh, path, xlabel, ylabel, title, swap=False):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 5))
+    styles = {"ours, Mohr-Coulomb penalty": ("C0", "-"), "ours, Katona": ("C2", "-"), TIED: ("C1", "-"),
+              "CalculiX": ("C3", "--")}
+    for mesh, curves in curves_by_mesh.items():
+        for label, (lo, s) in curves.items():
+            c, ls = styles[label]
+            x, y = (s, lo) if not swap else (lo, s)
+            ax.plot(x, y, color=c, ls=ls if mesh.endswith("r1") or "r" not in mesh else ":",
+                    marker="o" if label == "CalculiX" else None, ms=3,
+                    label=f"{label} ({mesh})")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="reference pile mesh only")
+    ap.add_argument("--keep", help="keep the decks, results and ccx files in this directory")
+    a = ap.parse_args()
+    if shutil.which("ccx") is None:
+        sys.exit("bench_peer: ccx is not on the PATH (apt-get install calculix-ccx)")
+    os.environ["OMP_NUM_THREADS"] = "1"
+    os.environ["OPENBLAS_NUM_THREADS"] = "1"
+    os.environ["CCX_NPROC_EQUATION_SOLVER"] = "1"
+    exe = bc.executable("pecplas")
+    work = Path(a.keep) if a.keep else Path(tempfile.mkdtemp(prefix="bench_peer_"))
+    work.mkdir(parents=True, exist_ok=True)
+    rows, pile_curves, pile_runs = [], {}, {}
+    for refine in ((1,) if a.quick else (1, 4)):
+        c, r, _ = pile(exe, work, refine, rows, None)
+        pile_curves[f"r{refine}"], pile_runs[refine] = c, r
+    bcurves, bruns, limits = block(exe, work, rows)
+    header = ["scene", "code", "elements", "dofs_2d", "wall_s", "peak_mb", "rc",
+              "settlement_100kN_mm", "settlement_2000kN_mm", "final_or_limit",
+              "shaft_resultant_kN"]
+    bc.write_csv(bc.BENCH_DIR / "peer.csv", header, rows)
+    plot(pile_curves, bc.BENCH_DIR / "peer_pile.png", "head settlement [mm]",
+         "head load [kN]", "S2 pile: ours vs CalculiX (same mesh, same K_n, K_t)")
+    plot({"": bcurves}, bc.BENCH_DIR / "peer_block.png", "pad displacement along x [µm]",
+         "push F/G", f"CGS-4 block: slip limit {FG_EXACT:.6f}")
+    bc.write_fragment("peer", fragment(rows, pile_runs, limits, bruns))
+    for r in rows:
+        print(" | ".join(map(str, r)))
+    if not a.keep:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def fragment(rows, pile_runs, limits, bruns):
+    return "## Peer\n" + "\n".join(" | ".join(map(str, r)) for r in rows)
+
+
+if __name__ == "__main__":
+    main()
