@@ -217,25 +217,23 @@ def block(exe, work, rows):
 
 
 # ---------------------------------------------------------------- output
-def plot(curves_by_mesh, path, xlabel, ylabel, title, swap=False):
+def plot(panels, path, xlabel, ylabel, title):
+    """One panel per mesh, every code's curve in each."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7, 5))
-    styles = {"ours, Mohr-Coulomb penalty": ("C0", "-"), "ours, Katona": ("C2", "-"), TIED: ("C1", "-"),
-              "CalculiX": ("C3", "--")}
-    for mesh, curves in curves_by_mesh.items():
-        for label, (lo, s) in curves.items():
-            c, ls = styles[label]
-            x, y = (s, lo) if not swap else (lo, s)
-            ax.plot(x, y, color=c, ls=ls if mesh.endswith("r1") or "r" not in mesh else ":",
-                    marker="o" if label == "CalculiX" else None, ms=3,
-                    label=f"{label} ({mesh})")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    fig, axes = plt.subplots(1, len(panels), figsize=(6.5 * len(panels), 5), squeeze=False)
+    styles = {"ours, Mohr-Coulomb penalty": ("C0", "-", None), TIED: ("C1", "-", None),
+              "ours, Katona": ("C2", "-", None), "CalculiX": ("C3", "--", "o")}
+    for ax, (name, curves) in zip(axes[0], panels.items()):
+        for label, (y, x) in curves.items():
+            c, ls, mk = styles[label]
+            ax.plot(x, y, color=c, ls=ls, marker=mk, ms=3, label=label)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.set_title(f"{title}{name}", fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -255,18 +253,21 @@ def main():
     work = Path(a.keep) if a.keep else Path(tempfile.mkdtemp(prefix="bench_peer_"))
     work.mkdir(parents=True, exist_ok=True)
     rows, pile_curves, pile_runs = [], {}, {}
-    for refine in ((1,) if a.quick else (1, 4)):
-        c, r, _ = pile(exe, work, refine, rows, None)
-        pile_curves[f"r{refine}"], pile_runs[refine] = c, r
+    for refine in ((1,) if a.quick else (1, 4, 8)):
+        c, r, m = pile(exe, work, refine, rows, None)
+        pile_curves[f", refine {refine} ({len(m['elements'])} Q4)"] = c
+        pile_runs[refine] = r
     bcurves, bruns, limits = block(exe, work, rows)
     header = ["scene", "code", "elements", "dofs_2d", "wall_s", "peak_mb", "rc",
               "settlement_100kN_mm", "settlement_2000kN_mm", "final_or_limit",
               "shaft_resultant_kN"]
     bc.write_csv(bc.BENCH_DIR / "peer.csv", header, rows)
-    plot(pile_curves, bc.BENCH_DIR / "peer_pile.png", "head settlement [mm]",
-         "head load [kN]", "S2 pile: ours vs CalculiX (same mesh, same K_n, K_t)")
+    finest = list(pile_curves)[-1]
+    panels = {k: pile_curves[k] for k in dict.fromkeys([list(pile_curves)[0], finest])}
+    plot(panels, bc.BENCH_DIR / "peer_pile.png", "head settlement [mm]", "head load [kN]",
+         "S2 pile, ours vs CalculiX")
     plot({"": bcurves}, bc.BENCH_DIR / "peer_block.png", "pad displacement along x [µm]",
-         "push F/G", f"CGS-4 block: slip limit {FG_EXACT:.6f}")
+         "push F/G", f"CGS-4 block (exact slip limit {FG_EXACT:.6f})")
     bc.write_fragment("peer", fragment(rows, pile_runs, limits, bruns))
     for r in rows:
         print(" | ".join(map(str, r)))
