@@ -56,9 +56,17 @@ def ours_curve(h5, node, comp, pattern):
     return np.r_[0.0, fac], np.r_[0.0, u], np.r_[1, steps]
 
 
+REPEAT = [1]      # runs per case (the shortest wall time is kept): 2 in full mode
+
+
+def timed(cmd, cwd=None):
+    """The last run's outcome (its files are the ones read) with the shortest wall time."""
+    runs = [bc.run_timed(cmd, cwd=cwd, timeout=600) for _ in range(REPEAT[0])]
+    return dict(runs[-1], wall=min(r["wall"] for r in runs))
+
+
 def run_ours(exe, deck, h5):
-    r = bc.run_timed([exe, deck, "-o", h5, "--quiet"], timeout=600)
-    return r
+    return timed([exe, deck, "-o", h5, "--quiet"])
 
 
 # ---------------------------------------------------------------- CalculiX
@@ -70,7 +78,7 @@ def run_ccx(deck, work, name, print_nodes, contact_print=False):
     ex.export(m, work / f"{name}.inp", warn=warnings.append)
     if contact_print:
         _add_contact_print(work / f"{name}.inp")
-    r = bc.run_timed(["ccx", "-i", name], cwd=work, timeout=600)
+    r = timed(["ccx", "-i", name], cwd=work)
     r["warnings"] = warnings
     r["increments"] = len(re.findall(r"increment\s+\d+ attempt", r["stdout"]))
     r["iterations"] = len(re.findall(r"iteration\s+\d+", r["stdout"]))
@@ -249,6 +257,7 @@ def main():
     os.environ["OMP_NUM_THREADS"] = "1"
     os.environ["OPENBLAS_NUM_THREADS"] = "1"
     os.environ["CCX_NPROC_EQUATION_SOLVER"] = "1"
+    REPEAT[0] = 1 if a.quick else 2
     exe = bc.executable("pecplas")
     work = Path(a.keep) if a.keep else Path(tempfile.mkdtemp(prefix="bench_peer_"))
     work.mkdir(parents=True, exist_ok=True)
@@ -276,7 +285,97 @@ def main():
 
 
 def fragment(rows, pile_runs, limits, bruns):
-    return "## Peer\n" + "\n".join(" | ".join(map(str, r)) for r in rows)
+    """doc/bench/peer.md from this run's numbers; the prose states what they show."""
+    pile = [r for r in rows if r[0].startswith("S2")]
+    t = ["## A peer side by side: CalculiX (issue 7)", "",
+         "`python3 tools/bench_peer.py` (`--quick`: reference mesh only). The same meshes, "
+         "exported by `tools/export_abaqus.py`; ours and `ccx` (CalculiX "
+         f"{_ccx_version()}) run one thread each, wall times of whole runs (input to "
+         "results), best of the runs made here. Ratio = CalculiX wall / our wall.", "",
+         "| scene | code | Q4 | wall [s] | ratio | u(100 kN) [mm] | u(2000 kN) [mm] | "
+         "permanent [mm] | shaft at 2000 kN [kN] |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in pile:
+        ccx = next(x for x in pile if x[0] == r[0] and x[1] == "CalculiX")
+        ratio = "" if r[1] == "CalculiX" else f"{float(ccx[4]) / float(r[4]):.1f}"
+        t.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[4]} | {ratio} | {r[7]} | {r[8]} | {r[9]} "
+                 f"| {r[10]} |")
+    t += ["", "![pile](peer_pile.png)", "",
+          "| CGS-4 block (plane strain, 4 Q4) | wall [s] | slip limit F/G | error |",
+          "|---|---|---|---|"]
+    for label, lim in limits.items():
+        t.append(f"| {label} | {bruns[label]['wall']:.3f} | {lim:.6f} | "
+                 f"{(lim - FG_EXACT) / FG_EXACT:+.1e} |")
+    t += ["", f"Exact: (tan a + mu)/(1 - mu tan a) = {FG_EXACT:.6f}. Both codes are under "
+          "force control and stop at the limit (ours exit 3, ccx \"too many cutbacks\"): the "
+          "limit is the last converged load, to the increment size (0.01 in F/G, cut near "
+          "the limit).", "", "![block](peer_block.png)", ""]
+    fin = [r for r in pile if r[0] == pile[-1][0]]
+    get = {r[1]: r for r in fin}
+    tied, ccx = get[TIED], get["CalculiX"]
+    d2000 = (float(ccx[8]) - float(tied[8])) / float(tied[8])
+    dperm = (float(ccx[9]) - float(tied[9])) / float(tied[9])
+    t += ["**Is the CalculiX pile trustworthy?** On the finest mesh here "
+          f"({pile[-1][0]}), against our Mohr-Coulomb penalty joints with the tip tied as in "
+          f"CalculiX: settlement at 100 kN (elastic, stick) {ccx[7]} vs {tied[7]} mm, at 2000 kN "
+          f"{ccx[8]} vs {tied[8]} mm ({d2000:+.1%}), permanent {ccx[9]} vs {tied[9]} mm "
+          f"({dperm:+.1%}), shaft shear resultant {ccx[10]} vs {tied[10]} kN (hand estimate "
+          f"from the initial stresses {Q_SHAFT:.0f} kN; both exceed it because the soil's "
+          "normal stress on the shaft rises as the pile is pushed). The geostatic "
+          "state is reproduced (contact pressure per shaft face = K0 gamma z at the face's "
+          "middle depth before loading, head displacement 1e-7 m after the gravity step). "
+          "So the axisymmetric contact works here *for the shaft and the column*, whose faces "
+          "are away from the axis; it does **not** for the pile base: CalculiX cannot use as "
+          "a master surface a face with a node on the axis (it becomes a collapsed face in "
+          "the 2° wedge), and both faces of the tip (pile base, column top) touch the axis. "
+          "The exporter ties the tip doublets (*EQUATION), so the CalculiX pile is a "
+          "pile with a rough, bonded base, and compares with our tip-tied deck, not with our "
+          "reference S2 deck. The CGS-4 block is the fair frictional comparison: same mesh, "
+          "same penalty stiffnesses, analytic answer.", "",
+          "**What the comparison taught us about S2.** The tip's shear stiffness decides the "
+          "curve after the shaft slips: our reference penalty deck (tip K_t = E_soil = 2e4 "
+          "kPa/m, the pile base shears easily over the column) settles least; a stiff or "
+          "bonded tip (ours tied, Katona's rigid stick, CalculiX's tie) settles about 5-25 % "
+          "more depending on the mesh (refine 1: 78 vs 99 mm). With K_t = 2e7 at the tip and "
+          "PHI = 30 our penalty deck gives the Katona/CalculiX answer (98.9 mm at refine 1), "
+          "with PHI ~ 0 (smooth tip) the reference one (77.8 mm): the difference between our "
+          "penalty and Katona S2 curves (doc/validation.md, \"Open (Katona in S2)\") is the "
+          "tip's roughness, not an error of the Katona solver. A plausible mechanism, not yet "
+          "checked: a rough base holds the column's top radially, so the column does not "
+          "press on the surrounding soil and slides more easily along the below-tip joint.", "",
+          "**Differences of formulation.**", "",
+          "- Contact: ours are node-to-node joints on coincident node doublets (small "
+          "displacement, the joint frame fixed): Katona with Lagrange multipliers (exact "
+          "stick, zero penetration) or Mohr-Coulomb penalty joints (K_n, K_t, Lobatto points "
+          "on the shaft). CalculiX: face-to-face (mortar-like) penalty contact, slope K_n and "
+          "stick slope K_t per unit area as ours, integrated on the slave faces with its own "
+          "rule; pairing redone as the faces move. Face-to-face was chosen over node-to-face "
+          "because its stiffnesses are per unit area (ours too) and it does not need a "
+          "tributary area; node-to-face scales the spring by an area CalculiX computes.",
+          "- Geometry: CalculiX expands every CAX4 into a C3D8 wedge of 2° (MPCs tie the "
+          "nodes of the two planes to the defining plane): a 3D solve of a 2D problem, with "
+          "3D contact search on the wedge faces; ours is a true axisymmetric 2D element.",
+          "- Initial stresses: ours holds the nodal forces of the geostatic stresses as a "
+          "constant load (equilibrated by definition); CalculiX gets the stresses at every "
+          "integration point (*INITIAL CONDITIONS, TYPE=STRESS) and the self-weight that "
+          "balances them (*DLOAD GRAV, density GAMMA/g) in a first step; the contact "
+          "pressure then builds up from a penetration of p/K_n (about 5 µm).",
+          "- The tip: frictional joint in ours, tied in CalculiX (above).",
+          "- Increments: the same 20 + 20 (ccx may cut an increment; its step times are "
+          "mapped back to the load). Convergence: ours on the residual and displacement "
+          "norms of doc/theory.md; CalculiX's defaults (residual below 0.5 % of the average "
+          "force, correction below 1 % of the increment), looser than ours: part of the "
+          "few-percent difference after slip may come from there.",
+          "- Speed: CalculiX pays for the 3D expansion (three times the nodes), the contact "
+          "search and its fixed start-up (about 1 s even on the 4-element block, where it "
+          "also cuts the increment many times near the slip limit). Single runs on a busy "
+          "machine: only the ratios of one run mean anything."]
+    return "\n".join(t)
+
+
+def _ccx_version():
+    r = subprocess.run(["ccx", "-v"], capture_output=True, text=True)
+    m = re.search(r"Version\s+(\S+)", r.stdout + r.stderr)
+    return m.group(1) if m else "?"
 
 
 if __name__ == "__main__":
