@@ -26,7 +26,6 @@ balances them is applied as *DLOAD GRAV in every step (density GAMMA / g).
 """
 import argparse
 import math
-import re
 import sys
 from pathlib import Path
 
@@ -134,7 +133,8 @@ def joint_sides(joint):
     if joint["type"] in ("GOODMAN4", "THIN_LAYER"):
         s1 = [(r[0], r[1]) for r in joint["rows"]]
         s2 = [(r[3], r[2]) for r in joint["rows"]]
-        pairs = sorted({(r[0], r[3]) for r in joint["rows"]} | {(r[1], r[2]) for r in joint["rows"]})
+        pairs = sorted({(r[0], r[3]) for r in joint["rows"]} |
+                       {(r[1], r[2]) for r in joint["rows"]})
         return s1, s2, pairs
     raise ValueError(f"joint type {joint['type']} is not exported")
 
@@ -211,7 +211,9 @@ def _contact(m, kn, kt, axi, pair, warn):
             raise ValueError(f"law {joint['law']} has no KN/KT: give --kn and --kt")
         s1, s2, pairs = joint_sides(joint)
         name = joint["set"]
-        if not s1 or ({n for s in s1 for n in s} & on_axis and {n for s in s2 for n in s} & on_axis):
+        axis1 = {n for s in s1 for n in s} & on_axis
+        axis2 = {n for s in s2 for n in s} & on_axis
+        if not s1 or (axis1 and axis2):
             warn(f"joint set {name}: both sides touch the axis (or a single doublet), "
                  f"CalculiX cannot build a master face there: its {len(pairs)} doublets are tied")
             fixed = _fixed_dofs(m)

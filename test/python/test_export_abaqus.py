@@ -103,7 +103,8 @@ def test_contact_surfaces_from_the_joint_faces(s2):
         # master on the stiffer side (the pile) for the shaft; the column and the soil are the
         # same sand: the first side (the column) is the master
         for side, want in (("M", {master_set}), ("S", slave_sets)):
-            faces = [(int(a), int(b.strip()[1:])) for a, b in (x.split(",") for x in surf[f"{name}_{side}"])]
+            rows = [x.split(",") for x in surf[f"{name}_{side}"]]
+            faces = [(int(a), int(b.strip()[1:])) for a, b in rows]
             assert {sets[e] for e, _ in faces} == want
             for e, k in faces:     # every face lies on r = 0.5, the joint's line
                 i, j = ex.Q4_FACES[k - 1]
@@ -139,7 +140,8 @@ def test_initial_stress_is_geostatic(s2):
         # element, at a Gauss level 0.211 h from its top or bottom
         y = v[3] / 18.0
         h = max(ys) - min(ys)
-        assert min(abs(y - min(ys)), abs(max(ys) - y)) == pytest.approx(h * (1 - 1 / math.sqrt(3)) / 2)
+        gauss = h * (1 - 1 / math.sqrt(3)) / 2
+        assert min(abs(y - min(ys)), abs(max(ys) - y)) == pytest.approx(gauss)
 
 
 def ours(deck, out):
