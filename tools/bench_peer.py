@@ -357,9 +357,9 @@ def fragment(rows, pile_runs, limits, bruns):
           "- Contact: ours are node-to-node joints on coincident node doublets (small "
           "displacement, the joint frame fixed): Katona with Lagrange multipliers (exact "
           "stick, zero penetration) or Mohr-Coulomb penalty joints (K_n, K_t, Lobatto points "
-          "on the shaft). CalculiX: face-to-face (mortar-like) penalty contact, slope K_n and "
+          "on the shaft). CalculiX: face-to-face penalty contact, slope K_n and "
           "stick slope K_t per unit area as ours, integrated on the slave faces with its own "
-          "rule; pairing redone as the faces move. Face-to-face was chosen over node-to-face "
+          "rule, with a contact search on the faces. Face-to-face was chosen over node-to-face "
           "because its stiffnesses are per unit area (ours too) and it does not need a "
           "tributary area; node-to-face scales the spring by an area CalculiX computes.",
           "- Geometry: CalculiX expands every CAX4 into a C3D8 wedge of 2° (MPCs tie the "
@@ -372,11 +372,11 @@ def fragment(rows, pile_runs, limits, bruns):
           "pressure then builds up from a penetration of p/K_n (about 5 µm).",
           "- The tip: frictional joint in ours, tied in CalculiX (above).",
           "- Increments: the same 20 + 20 (ccx may cut an increment; its step times are "
-          "mapped back to the load). Convergence: ours on the residual and displacement "
-          "norms of doc/theory.md; CalculiX's defaults (residual below 0.5 % of the average "
-          "force, correction below 1 % of the increment), looser than ours, but tightening "
+          "mapped back to the load). Convergence: ours on the Euclidean residual norm, "
+          "1e-4 of the external forces or reactions (doc/theory.md); CalculiX's defaults "
+          "(largest residual below 0.5 % of the average force, correction below 1 % of the increment), looser than ours, but tightening "
           "them 500 and 100 times did not move the refine-8 curve.",
-          "- Speed: CalculiX pays for the 3D expansion (three times the nodes), the contact "
+          "- Speed: CalculiX pays for the 3D expansion (extra nodes tied by MPCs), the contact "
           "search and its fixed start-up (about 1 s even on the 4-element block, where it "
           "also cuts the increment many times near the slip limit). Single runs on a busy "
           "machine: only the ratios of one run mean anything."]
