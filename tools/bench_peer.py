@@ -375,7 +375,8 @@ def fragment(rows, pile_runs, limits, bruns):
           "mapped back to the load). Convergence: ours on the Euclidean residual norm, "
           "1e-4 of the external forces or reactions (doc/theory.md); CalculiX's defaults "
           "(largest residual below 0.5 % of the average force, correction below 1 % of "
-          "the increment), looser than ours, but tightening them 500 and 100 times did not move the refine-8 curve.",
+          "the increment), looser than ours, but tightening them 500 and 100 times did not "
+          "move the refine-8 curve.",
           "- Speed: CalculiX pays for the 3D expansion (extra nodes tied by MPCs), the contact "
           "search and its fixed start-up (about 1 s even on the 4-element block, where it "
           "also cuts the increment many times near the slip limit). Single runs on a busy "
