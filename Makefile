@@ -38,7 +38,9 @@ help:
 	@echo "                PNGs in output/s5"
 	@echo "  make s6       scene S6 (pile pull-out, MODJOIN and Mohr-Coulomb, table IV.1 variants),"
 	@echo "                PNGs in output/s6"
-	@echo "  make bench    speed benchmarks (tools/bench.sh)"
+	@echo "  make bench    benchmark suite (tools/bench.sh, <30 min): overhead vs bare CHOLMOD,"
+	@echo "                stability maps, scaling, work-precision + advice, CalculiX side by"
+	@echo "                side; CSV/PNG and README.md in doc/bench/ (BENCH=quick: minutes)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
 
@@ -118,8 +120,7 @@ s6: build
 	@$(PYTHON) tools/plot_s6.py output/s6
 
 bench: deps
-	@if [ -f tools/bench.sh ]; then bash tools/bench.sh; \
-	else echo "make bench: benchmarks arrive with issue 2's speed report"; fi
+	@bash tools/bench.sh
 
 clean:
 	rm -rf build .pytest_cache

@@ -1,24 +1,38 @@
 #!/usr/bin/env bash
-# make bench: elastic plane-strain squares (Q4 and Q8) at about 1e4, 1e5 and 1e6 equations,
-# each in its own process (so peak memory belongs to the case). Every line: phase wall times
-# of the whole program (read+setup, assembly incl. COO->CSC, factorisation incl. analysis,
-# solve, residual, output), its total, a bare CHOLMOD analyse+factorise+solve of the SAME
-# matrix measured in the same run, their ratio, and peak resident memory.
-# SIZES=small skips the 1e6 cases (a minute each). First: the MODJOIN law speed
-# (bench/laws/bench_laws.f90).
+# make bench: the benchmark suite (never part of make test). Every number in doc/bench/ is
+# measured by this run; every CSV row carries the commit and the machine (tools/bench_common.py).
+#   1. program overhead vs a bare CHOLMOD solve, MODJOIN law speed   (tools/bench_solver.py)
+#   2. stability maps: iterations vs K_n/E and increment size        (tools/bench_stability.py)
+#   3. scaling of an elastic-plastic mesh, 1e4 .. 1e6 DOFs            (tools/bench_scaling.py)
+#   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
+#                                                                     (tools/bench_work_precision.py)
+#   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
+#   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
+# BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 FPM=${FPM:-fpm}
+PYTHON=${PYTHON:-python3}
+mode=()
+[[ ${BENCH:-full} == quick ]] && mode=(--quick)
 $FPM build --profile release >/dev/null
-# interface-law speed (MODJOIN: updates/s incl. tangent, 8000-increment CNL path), seconds
-$FPM run --profile release --target pecplas-bench-laws 2>/dev/null
-echo
-exe=$($FPM run --profile release --target pecplas-bench --runner echo 2>/dev/null | tail -n 1)
-cases=("Q4 70" "Q8 41" "Q4 223" "Q8 129")
-[[ ${SIZES:-all} == small ]] || cases+=("Q4 707" "Q8 408")
-printf '%-3s %8s %9s %8s %8s %8s %8s %8s %8s %8s %8s %7s %8s %9s\n' el N equations \
-  read+set assembly factor solve residual output total bare ratio peakMB 'nnz(L)'
-for c in "${cases[@]}"; do
-  "$exe" $c build/bench
+# the peer (CalculiX) is needed only here, not by make run / make test
+if ! command -v ccx >/dev/null; then
+  if [[ $(id -u) == 0 ]]; then
+    echo "== make bench: installing calculix-ccx (the peer of tools/bench_peer.py)"
+    DEBIAN_FRONTEND=noninteractive apt-get install -y calculix-ccx >/dev/null
+  else
+    echo "make bench: CalculiX is missing; run as root: apt-get install calculix-ccx" >&2
+    exit 1
+  fi
+fi
+mkdir -p doc/bench
+start=$(date +%s)
+for part in solver stability scaling work_precision peer; do
+  t0=$(date +%s)
+  echo "== make bench: tools/bench_$part.py ${mode[*]}"
+  $PYTHON "tools/bench_$part.py" "${mode[@]}"
+  echo "== make bench: $part took $(( $(date +%s) - t0 )) s"
 done
-echo "times in seconds (wall); ratio = total / bare CHOLMOD (analyse + factorise + solve)"
+$PYTHON tools/bench_summary.py --wall $(( $(date +%s) - start ))
+echo "== make bench: doc/bench/README.md ($(( $(date +%s) - start )) s in all)"
