@@ -38,6 +38,8 @@ SCENES = {
            "katona": ROOT / "input/s2/s2_katona.inp", "E": 2e4, "kn_inc": 1e3,
            "title": "S2 pile, Mohr-Coulomb interface (E = E_soil)"},
 }
+ABBREV = {"diverged": "D", "limit load": "L", "singular K": "S", "timeout": "T",
+          "failed": "F", "error": "E"}
 METHODS = ("modified_newton", "newton", "katona")
 HEADER = ["scene", "sweep", "method", "kn_over_e", "increments_requested", "status",
           "timed_out", "increments_done", "iter_mean", "iter_max", "cuts",
@@ -97,6 +99,13 @@ def run_one(exe, scene, sweep, method, ratio, scale, cap, timeout, tmp):
             cuts, states, f"{r['wall']:.3f}"]
 
 
+def state_mean(row):
+    """Katona contact-state iterations per increment (each a solve with the flexibility)."""
+    if not row[11] or not row[7]:
+        return float("nan")
+    return int(row[11].split("/")[0]) / int(row[7])
+
+
 def converged(row):
     return row[5] == "completed"
 
@@ -129,12 +138,26 @@ def plot(scene, rows, ratios, scales, path):
                        origin="lower")
         for j, i, st in marks:
             ax.plot(j, i, "x", color="red", ms=14, mew=2.5)
-            ax.text(j, i - 0.32, st, ha="center", va="center", fontsize=7, color="red")
-        for i in range(len(METHODS)):
+            ax.text(j, i - 0.32, ABBREV.get(st, st), ha="center", va="center", fontsize=8,
+                    color="red", weight="bold")
+        failed = {(a, b) for a, b, _ in marks}
+        for i, meth in enumerate(METHODS):
+            mrows = [r for r in sub if r[2] == meth]
             for j in range(len(xs)):
-                if np.isfinite(grid[i, j]) and (j, i) not in {(a, b) for a, b, _ in marks}:
-                    ax.text(j, i, f"{grid[i, j]:.3g}", ha="center", va="center", fontsize=7,
-                            color="w" if grid[i, j] < norm.vmax ** 0.5 else "k")
+                if not np.isfinite(grid[i, j]) or (j, i) in failed:
+                    continue
+                label = f"{grid[i, j]:.3g}"
+                if meth == "katona" and sweep == "kn":
+                    # one run (no K_n): one label across the row
+                    if j == len(xs) // 2:
+                        ax.text(j, i, f"K_n not used: {label} Newton it/inc, "
+                                f"{state_mean(mrows[0]):.2g} contact-state it/inc",
+                                ha="center", va="center", fontsize=8, color="w")
+                    continue
+                if meth == "katona":
+                    label += f"\n{state_mean(mrows[j]):.2g} st."
+                ax.text(j, i, label, ha="center", va="center", fontsize=7,
+                        color="w" if grid[i, j] < norm.vmax ** 0.5 else "k")
         ax.set_yticks(range(len(METHODS)))
         ax.set_yticklabels(["modified Newton", "full Newton", "Katona (no K_n)"]
                            if sweep == "kn" else [])
@@ -148,7 +171,9 @@ def plot(scene, rows, ratios, scales, path):
             ax.set_xlabel("increments requested (all steps)")
             ax.set_title(f"K_n / E = {SCENES[scene]['kn_inc']:g}")
     fig.colorbar(im, ax=axes, label="mean iterations per increment", shrink=0.9)
-    fig.suptitle(SCENES[scene]["title"] + ": red x = no convergence (status)", fontsize=10)
+    fig.suptitle(SCENES[scene]["title"] + ": red x = no convergence (" +
+                 ", ".join(f"{v} {k}" for k, v in ABBREV.items()) +
+                 "); st. = Katona contact-state it/inc", fontsize=9)
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
 
@@ -165,7 +190,15 @@ def fragment(rows, cap, timeout, wall, quick):
     L = ["## Stability maps (`tools/bench_stability.py`)", "",
          f"Mean iterations per converged increment; a run fails when an increment does not "
          f"converge within {cap} iterations after 3 halvings, or after {timeout:g} s "
-         f"(timeout). Tolerance 1e-4. {'Quick mode (coarse sweep). ' if quick else ''}"
+         f"(timeout): 'converges' means within this budget (S1 modified Newton at "
+         f"K_n/E = 1e3 completes with a 10 000-iteration cap, doc/validation.md). Tolerance "
+         f"1e-4. Status as the program reports it: under force control (S2) an increment that "
+         f"never converges is read as a 'limit load', though the pile has none at 2000 kN (full "
+         f"Newton and Katona complete); 'singular K' = the first factorisation of the "
+         f"penalty-stiffened matrix is refused (pivot ratio test), before any increment. "
+         f"Katona's Newton iterations are 1 per increment here (elastic bodies: the contact "
+         f"nonlinearity is taken by the contact-state iterations, given apart). "
+         f"{'Quick mode (coarse sweep). ' if quick else ''}"
          f"Wall time of the sweep {wall:.0f} s. Data: `stability.csv`.", ""]
     for scene in SCENES:
         L += [f"**{SCENES[scene]['title']}**", "",
@@ -177,7 +210,8 @@ def fragment(rows, cap, timeout, wall, quick):
             inc_bad = ", ".join(f"{r[4]} ({r[5]})" for r in inc if not converged(r)) or "none"
             if meth == "katona":
                 k = [r for r in rows if r[0] == scene and r[1] == "kn" and r[2] == meth][0]
-                rng = f"all (no K_n), {k[5]}, {k[8] or '-'} it/inc"
+                rng = (f"all (no K_n): {k[5]}, {k[8] or '-'} Newton it/inc, "
+                       f"{state_mean(k):.2f} contact-state it/inc (max {k[11].split('/')[-1]})")
                 bad = "-"
             else:
                 ok, badl = converging_range(rows, scene, meth)
