@@ -21,6 +21,7 @@ Writes doc/bench/scaling.csv, doc/bench/scaling.png and the fragment doc/bench/s
     python3 tools/bench_scaling.py [--quick] [--pecplas PATH]
 """
 import argparse
+import os
 import re
 import subprocess
 import sys
@@ -34,6 +35,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_common import BENCH_DIR, ROOT, executable, run_timed, write_csv, write_fragment  # noqa: E402
 
 INCREMENTS = 2
+TIMEOUT = 480.0  # s per run; a run that takes longer is reported as 'timeout'
 PHASES = ("setup", "assembly", "factorisation", "solve", "residual", "laws", "output")
 HEADER = ["nx", "ny", "equations", "status", "increments", "iterations", "factorisations",
           "wall_s", "peak_mb", "time_per_increment_s", "time_per_iteration_s", *[f"t_{p}_s" for p in PHASES],
@@ -162,6 +164,7 @@ def fragment(rows, p, q, wall, quick):
          "c = 10 kPa, φ = ψ = 30°), geostatic initial "
          "stress (K0 = 0.5), then 300 kPa in 2 increments, full Newton with CHOLMOD, results every increment. Time per "
          "increment = (total − read+setup) / increments. "
+         f"BLAS threads {os.environ.get('OPENBLAS_NUM_THREADS', '?')}. "
          f"{'Quick mode (small sizes only). ' if quick else ''}"
          f"Wall time of the benchmark {wall:.0f} s. Data: `scaling.csv`.", "",
          f"**Time per increment grows as N^{p:.2f}** (least squares on log–log over "
@@ -187,9 +190,16 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="1e4, 3e4 and 1e5 equations only")
     ap.add_argument("--pecplas", default=None)
+    ap.add_argument("--threads", type=int, default=1,
+                    help="BLAS/OpenMP threads of the runs (default 1: a core each, so that "
+                    "the exponent does not depend on how busy the other core is)")
+    ap.add_argument("--sizes", type=float, nargs="+", default=None,
+                    help="target equation counts (default 1e4 3e4 1e5 3e5 1e6, quick: 1e4 3e4 1e5)")
     a = ap.parse_args()
     exe = a.pecplas or executable("pecplas")
-    targets = [1e4, 3e4, 1e5] if a.quick else [1e4, 3e4, 1e5, 3e5, 1e6]
+    for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
+        os.environ[var] = str(a.threads)
+    targets = a.sizes or ([1e4, 3e4, 1e5] if a.quick else [1e4, 3e4, 1e5, 3e5, 1e6])
     rows = []
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as t:
@@ -199,7 +209,7 @@ def main():
             deck = tmp / f"footing_{nx}x{ny}.inp"
             make_deck(nx, ny, deck)
             out = deck.with_suffix(".h5")
-            r = run_timed([exe, deck, "-o", out], timeout=400)
+            r = run_timed([exe, deck, "-o", out], timeout=TIMEOUT)
             tm, (inc, its, fac), status = parse_summary(r["stdout"])
             if r["rc"] is None:
                 status = "timeout"
