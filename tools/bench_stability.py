@@ -29,7 +29,8 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, ROOT, executable, run_timed, write_csv, write_fragment  # noqa: E402
+from bench_common import (BENCH_DIR, ROOT, executable, run_timed, write_csv,  # noqa: E402
+                          write_fragment)
 
 SCENES = {
     "s1": {"deck": ROOT / "input/s1/s1_open_close_kn1e5.inp", "katona": None, "E": 1e5,
