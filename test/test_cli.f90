@@ -74,6 +74,11 @@ contains
       call check(error, problem%iterations == problem%increments .and. problem%increments == 6 &
          .and. problem%factorisations == 1, 'linear: 6 increments, 1 iteration each, 1 factorisation')
       if (allocated(error)) return
+      ! the law updates are timed inside the residual computation (a nanosecond clock: each
+      ! timed update adds at least one clock read)
+      call check(error, problem%time%laws > 0.0_wp .and. &
+         problem%time%laws <= problem%time%residual, 'law-update time is part of residual time')
+      if (allocated(error)) return
       call rd%open(out, error)
       if (allocated(error)) return
       call rd%attribute('/', 'status', status, error)

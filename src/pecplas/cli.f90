@@ -207,9 +207,10 @@ contains
          ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
          problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', sec(cpu), ' s CPU'
       associate (t => problem%time)
-         write (*, '(a,7(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
+         write (*, '(a,8(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
             sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
-            '  residual ', sec(t%residual), '  output ', sec(t%output), '  total ', sec(wall)
+            '  residual ', sec(t%residual), ' (laws ', sec(t%laws)//')', '  output ', &
+            sec(t%output), '  total ', sec(wall)
       end associate
       if (problem%katona%active) then
          associate (k => problem%katona)

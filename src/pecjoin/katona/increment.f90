@@ -69,7 +69,10 @@ contains
          ! before the first converged increment the driver's fint_conv is the initial-stress
          ! load, which holds the initial contact forces too: the massif's own is needed here
          if (any(u /= problem%state%u) .or. problem%increments == 0) then
-            call internal_forces(model, problem%rules, u, problem%state, fint, error)
+            t0 = wall_time()
+            call internal_forces(model, problem%rules, u, problem%state, fint, error, &
+               problem%time%laws)
+            problem%time%residual = problem%time%residual + (wall_time() - t0)
             if (allocated(error)) call as_run_error(error)
             if (allocated(error)) return
          else
@@ -154,7 +157,8 @@ contains
                u(dofs%eq_dir(k), dofs%eq_node(k)) = u(dofs%eq_dir(k), dofs%eq_node(k)) + v(k)
             end do
             t0 = wall_time()
-            call internal_forces(model, problem%rules, u, problem%state, fint, error)
+            call internal_forces(model, problem%rules, u, problem%state, fint, error, &
+               problem%time%laws)
             problem%time%residual = problem%time%residual + (wall_time() - t0)
             if (allocated(error)) call as_run_error(error)
             if (allocated(error)) return

@@ -139,7 +139,10 @@ contains
       where (problem%dofs%eq == 0) u = up
       if (any(u /= problem%state%u)) then
          allocate (fint, mold=fint_conv)
-         call internal_forces(model, problem%rules, u, problem%state, fint, error)
+         t0 = wall_time()
+         call internal_forces(model, problem%rules, u, problem%state, fint, error, &
+            problem%time%laws)
+         problem%time%residual = problem%time%residual + (wall_time() - t0)
          if (allocated(error)) call as_run_error(error)
          if (allocated(error)) return
       else
@@ -195,7 +198,8 @@ contains
                u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + du(k)
          end do
          t0 = wall_time()
-         call internal_forces(model, problem%rules, u, problem%state, fint, error)
+         call internal_forces(model, problem%rules, u, problem%state, fint, error, &
+            problem%time%laws)
          problem%time%residual = problem%time%residual + (wall_time() - t0)
          if (allocated(error)) call as_run_error(error)
          if (allocated(error)) return

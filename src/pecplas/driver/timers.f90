@@ -9,6 +9,9 @@ module pecplas_driver_timers
    type :: timers_t
       real(wp) :: assembly = 0.0_wp, factorisation = 0.0_wp, solve = 0.0_wp
       real(wp) :: residual = 0.0_wp, output = 0.0_wp, setup = 0.0_wp
+      !> Part of `residual` spent in the constitutive updates (stress integration at the
+      !> massif Gauss points and the joint force routine, whose cost is its law updates).
+      real(wp) :: laws = 0.0_wp
    end type timers_t
 
 contains

@@ -1,0 +1,104 @@
+"""The pure-Python pieces of the benchmark scripts (tools/bench_*.py) on synthetic data: no
+benchmark is run here."""
+
+import csv
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+
+import bench_common  # noqa: E402
+import bench_scaling  # noqa: E402
+import bench_stability  # noqa: E402
+import bench_summary  # noqa: E402
+import make_default_deck  # noqa: E402
+
+
+def test_exponent_fit_recovers_a_power_law():
+    # t = a N^p exactly: least squares on log-log is exact up to roundoff
+    n = np.array([1e4, 3e4, 1e5, 3e5, 1e6])
+    p, a = bench_scaling.fit_exponent(n, 2.5e-6 * n**1.37)
+    assert p == pytest.approx(1.37, abs=1e-10)
+    assert a == pytest.approx(2.5e-6, rel=1e-8)
+    # +-5 % multiplicative scatter alternating in sign moves the slope by less than 0.05
+    # (5 points spread over two decades)
+    noisy = 2.5e-6 * n**1.37 * np.array([1.05, 0.95, 1.05, 0.95, 1.05])
+    p, _ = bench_scaling.fit_exponent(n, noisy)
+    assert abs(p - 1.37) < 0.05
+
+
+def test_shares_add_up_to_one():
+    t = {"setup": 1.0, "assembly": 2.0, "factorisation": 5.0, "solve": 0.5,
+         "residual": 1.5, "laws": 1.0, "output": 0.25, "total": 11.0}
+    s = bench_scaling.shares(t)
+    assert sum(s.values()) == pytest.approx(1.0, abs=1e-12)
+    # increment time = total - setup = 10 s
+    assert s["factorisation"] == pytest.approx(0.5, abs=1e-12)
+    assert s["law updates"] == pytest.approx(0.1, abs=1e-12)
+    assert s["residual w/o laws"] == pytest.approx(0.05, abs=1e-12)
+    assert s["other"] == pytest.approx(1.0 - 9.25 / 10.0, abs=1e-12)
+
+
+def test_summary_line_is_parsed():
+    # the layout written by pecplas_cli's summary (numbers made up)
+    out = (" summary: 2 increments, 16 iterations, 0 cuts, 15 factorisations, 16 solves, "
+           "9.1 s CPU\n wall time [s]: read+setup 0.556  assembly 3.790  factorisation 8.285"
+           "  solve 0.382  residual 0.874 (laws 0.315)  output 0.071  total 14.015\n"
+           " status: completed  results: x.h5\n")
+    t, counts, status = bench_scaling.parse_summary(out)
+    assert counts == (2, 16, 15)
+    assert status == "completed"
+    assert t["laws"] == pytest.approx(0.315, abs=1e-12)
+    assert t["residual"] == pytest.approx(0.874, abs=1e-12)
+    assert t["total"] == pytest.approx(14.015, abs=1e-12)
+
+
+@pytest.mark.parametrize("nx,ny", [(2, 1), (6, 3), (58, 29)])
+def test_equation_count_matches_the_mesh(nx, ny):
+    # independent count from the generator's mesh: base nodes fixed in x and y, the two
+    # vertical sides (above the base) fixed in x
+    ids, nodes, _ = make_default_deck.q8_mesh(nx, ny, 10.0, 5.0)
+    fixed = sum(2 if j == 0 else (1 if i in (0, 2 * nx) else 0) for (i, j) in ids)
+    assert bench_scaling.equations(nx, ny) == 2 * len(nodes) - fixed
+
+
+def test_stability_deck_edits():
+    text = bench_stability.make_deck("s1", "newton", 1e3, 2.0, 77)
+    # E1 = 1e5: K_n = 1e3 E1; steps 5, 15, 15 doubled
+    assert "KN = 1e+08," in text
+    assert "*SOLVER, METHOD=NEWTON, TOLERANCE=1e-4, MAX_ITERATIONS=77, MAX_CUTS=3" in text
+    assert bench_stability.requested_increments(text) == 70
+    k = bench_stability.make_deck("s1", "katona", 1.0, 0.2, 10)
+    assert "TYPE=KATONA" in k and "TYPE=MOHR_COULOMB" not in k
+    # steps of 5, 15, 15 increments times 0.2
+    assert bench_stability.requested_increments(k) == 1 + 3 + 3
+    # never fewer than one increment per step
+    k = bench_stability.make_deck("s1", "katona", 1.0, 0.01, 10)
+    assert bench_stability.requested_increments(k) == 3
+
+
+def test_csv_has_provenance_columns(tmp_path):
+    p = bench_common.write_csv(tmp_path / "x.csv", ["a", "b"], [[1, 2], [3, 4]])
+    with open(p) as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == ["a", "b", "commit", "machine", "date"]
+    assert len(rows) == 3
+    for r in rows[1:]:
+        assert len(r) == 5 and all(r[2:])
+
+
+def test_summary_order_and_header(tmp_path):
+    for name in ("zeta", "peer", "scaling", "alpha", "advice", "stability", "README"):
+        (tmp_path / f"{name}.md").write_text(f"## {name}\n")
+    order = [p.stem for p in bench_summary.ordered_fragments(tmp_path)]
+    assert order == ["stability", "scaling", "advice", "peer", "alpha", "zeta"]
+    prov = {"commit": "abc1234", "machine": "host cpu x2 Linux", "date": "2026-01-01T00:00:00Z"}
+    text = bench_summary.summary(tmp_path, wall=90.0, prov=prov)
+    assert "abc1234" in text and "host cpu x2 Linux" in text and "90 s" in text
+    pos = [text.index(f"## {n}\n") for n in order]
+    assert pos == sorted(pos)
+    assert "## README" not in text

@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Collects the benchmark fragments doc/bench/*.md (written by tools/bench_*.py through
+bench_common.write_fragment) into doc/bench/README.md, in a fixed order (stability, scaling,
+work_precision, advice, peer, then the others alphabetically), under a header with the commit,
+machine and date (bench_common.provenance) and, if given, the wall time of the whole suite.
+
+    python3 tools/bench_summary.py [--wall SECONDS] [--dir doc/bench]
+"""
+import argparse
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_common import BENCH_DIR, provenance  # noqa: E402
+
+ORDER = ("stability", "scaling", "work_precision", "advice", "peer")
+OUTPUT = "README.md"
+
+
+def ordered_fragments(directory):
+    """Fragment paths: the known sections in ORDER, then any others by name."""
+    found = {p.stem: p for p in Path(directory).glob("*.md") if p.name != OUTPUT}
+    first = [found[n] for n in ORDER if n in found]
+    rest = [found[n] for n in sorted(found) if n not in ORDER]
+    return first + rest
+
+
+def header(prov, wall=None):
+    lines = ["# Benchmarks", "",
+             "Written by `tools/bench_summary.py` from the fragments of the `tools/bench_*.py` "
+             "scripts; every number below was measured in the run that wrote it (CSV files "
+             "next to this one carry commit and machine on every row).", "",
+             f"- commit: `{prov['commit']}`", f"- machine: {prov['machine']}",
+             f"- date: {prov['date']}"]
+    if wall is not None:
+        lines.append(f"- wall time of the benchmark suite: {wall:.0f} s ({wall / 60:.1f} min)")
+    return "\n".join(lines) + "\n"
+
+
+def summary(directory, wall=None, prov=None):
+    """Text of the README: header, then each fragment (separated by blank lines)."""
+    parts = [header(prov or provenance(), wall)]
+    for p in ordered_fragments(directory):
+        parts.append(p.read_text().rstrip() + "\n")
+    return "\n".join(parts)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--wall", type=float, default=None, help="total bench wall time [s]")
+    ap.add_argument("--dir", default=str(BENCH_DIR))
+    a = ap.parse_args()
+    out = Path(a.dir) / OUTPUT
+    out.write_text(summary(a.dir, a.wall))
+    print(out)
+
+
+if __name__ == "__main__":
+    main()
