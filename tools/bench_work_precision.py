@@ -56,7 +56,7 @@ def plan(quick):
         runs.append(dict(scene=scene, model=model, element=element, method=method,
                          level=level, increments=incs, series=series))
     if quick:
-        lv2, lv6, mid2, mid6, incs, inc_study = (1, 2, 4), (1, 2, 4), 2, 2, 10, (5, 20)
+        lv2, lv6, mid2, mid6, incs, inc_study = (1, 2, 4, 8), (1, 2, 4), 2, 2, 10, (5, 20)
     else:
         lv2, lv6, mid2, mid6, incs, inc_study = ((3, 6, 12, 24, 48), (2, 3, 6, 12, 24), 12, 6,
                                                  10, (5, 20, 40))
@@ -125,14 +125,22 @@ def settlement(r, h5):
 
 
 def run_all(runs, exe, budget, workdir):
-    t_start, scale = time.perf_counter(), 1.0
+    t_start, scale, failed = time.perf_counter(), 1.0, {}
     for r in sorted(runs, key=estimate):
         used = time.perf_counter() - t_start
         est = estimate(r) * scale
         r.update(wall=float("nan"), value=None, status="skipped", peak_mb=float("nan"))
+        key = (r["scene"], r["model"], r["element"], r["method"])
+        if r["level"] >= failed.get(key, math.inf):
+            r["status"] = "skipped (coarser level failed)"
+            print(f"  skip {label(r)} n={r['level']} inc={r['increments']}: failed at "
+                  f"n={failed[key]}")
+            r.pop("text")
+            continue
         if used + est > budget:
             print(f"  skip {label(r)} n={r['level']} inc={r['increments']}: estimated "
                   f"{est:.0f} s, {budget - used:.0f} s left")
+            r.pop("text")
             continue
         deck = Path(workdir) / f"{label(r, short=True)}_{r['level']}_{r['increments']}.inp"
         deck.write_text(r.pop("text"))
@@ -144,6 +152,8 @@ def run_all(runs, exe, budget, workdir):
             r["value"] = settlement(r, h5)
         r["status"] = ("ok" if r["value"] is not None else
                        "timeout" if res["rc"] is None else f"failed rc={res['rc']}")
+        if r["status"] != "ok":
+            failed[key] = min(failed.get(key, math.inf), r["level"])
         if r["status"] == "ok" and res["wall"] > 1.0:   # learn the machine's speed
             scale = 0.5 * scale + 0.5 * res["wall"] / estimate(r)
         print(f"  {res['wall']:7.2f} s  {label(r):42s} n={r['level']:<3d} dofs={r['dofs']:<7d}"

@@ -4,13 +4,14 @@ observed order, and the cheapest configuration within an error tolerance."""
 import math
 
 
-def richardson(h, f, p_range=(0.25, 8.0)):
+def richardson(h, f, p_range=(0.5, 8.0)):
     """Extrapolate f(h) -> h = 0 from the three finest levels (f = f0 + C h^p).
 
     h, f: mesh sizes and values (any order, >= 3 levels; h may have any ratios).
     Returns dict(ref, p, uncertainty, monotone, levels): the limit f0 and the observed order
     p when the three finest values converge monotonically with p inside p_range; otherwise
-    (oscillating or stagnating sequence) ref = the finest value, p = None and
+    (oscillating, stagnating, or p < 0.5 where the extrapolation would reach far beyond the
+    data: pre-asymptotic) ref = the finest value, p = None and
     uncertainty = |f_finest - f_next| (the last change, a stated error bar, not a bound).
     With the extrapolation, uncertainty = |ref - f_finest|."""
     pts = sorted(zip(h, f), key=lambda t: -t[0])[-3:]
