@@ -108,8 +108,11 @@ def test_q8_conversion_counts_edges():
     assert count_dofs(q8) == 2 * (8 + 7)
     joint = next(line for line in q8.splitlines() if line.startswith("100,"))
     assert len(joint.split(",")) == 7 and "TYPE=GOODMAN6" in q8
-    base = q8.split("*NSET, NAME=base\n")[1].split("*")[0].split()
-    assert len(base) == 2 + 2          # the 3 corners (one line) + the 2 bottom mid-nodes
+    base = q8.split("*NSET, NAME=base\n")[1].split("*")[0].replace(",", " ").split()
+    assert len(base) == 3 + 2          # the 3 corners + the mid-nodes of the 2 bottom edges
+    coords = {int(line.split(",")[0]): float(line.split(",")[2])
+              for line in q8.split("*NODES\n")[1].split("*")[0].splitlines()}
+    assert all(coords[int(k)] == 0.0 for k in base)          # all on the base line y = 0
     assert "TYPE=Q8" in q8 and "TYPE=Q4" not in q8
 
 
