@@ -68,7 +68,7 @@ def plot(runs, scene, path, tols=(0.01, 0.05)):
 def advice(runs, scene_model, tols=(0.01, 0.05)):
     """Rows (scene, scope, tolerance, configuration, ...) of the cheapest runs."""
     rows = []
-    for scene in ("s2", "s6"):
+    for scene in sorted({r["scene"] for r in runs}):
         sr = [r for r in runs if r["scene"] == scene and r["status"] == "ok"]
         scopes = [("scene", f"vs {scene_model[scene]} reference", "scene_error", sr)]
         scopes += [(m, "vs own model reference", "error", [r for r in sr if r["model"] == m])
