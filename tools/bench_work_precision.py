@@ -39,8 +39,9 @@ from wp_analysis import relative_error, richardson                    # noqa: E4
 from wp_report import (Q_FIX, S2_LOAD, SCENE_REF, advice, label, plot,  # noqa: E402
                        write_fragments)
 
-# seconds per (DOF x increment), measured on this code (a rough guide for ordering and budget)
-RATE = {"NEWTON": 2.0e-5, "MODIFIED_NEWTON": 3.0e-4, "KATONA": 7.0e-6, "MODJOIN": 4.0e-5}
+# seconds per DOF for 10 increments, measured on this code on 2 shared cores (full mode,
+# machine busy); Newton's cost grows about as sqrt(increments): fewer iterations each
+RATE = {"NEWTON": 4.0e-5, "MODIFIED_NEWTON": 3.5e-4, "KATONA": 2.0e-5, "MODJOIN": 4.0e-5}
 def plan(quick):
     """List of run configurations (dicts)."""
     runs = []
@@ -102,7 +103,7 @@ def make_deck(r):
 def estimate(r):
     kind = ("KATONA" if r["model"] == "katona" else
             "MODJOIN" if r["model"] == "modjoin" and r["method"] == "NEWTON" else r["method"])
-    return 0.05 + RATE[kind] * r["dofs"] * r["increments"]
+    return 0.05 + RATE[kind] * r["dofs"] * 10.0 * math.sqrt(r["increments"] / 10.0)
 
 
 def settlement(r, h5):

@@ -41,7 +41,7 @@ def plot(runs, scene, path, tols=(0.01, 0.05)):
         # an error below the reference's own uncertainty is not resolved: drawn hollow at
         # that uncertainty (the finest level of a series is the reference's source)
         y = [r["error"] if r["resolved"] else r["floor"] for r in rs]
-        colour = f"C{i % 10}"
+        colour = plt.cm.tab20(i % 20)   # up to 20 families with their own colour
         mk = "o" if series == "mesh" else "s"
         hollow = [(xi, yi) for r, xi, yi in zip(rs, x, y) if not r["resolved"]]
         if hollow:
