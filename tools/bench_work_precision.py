@@ -88,6 +88,14 @@ def make_deck(r):
     if r["scene"] == "s2":
         text = g2.deck(g2.Mesh(r["level"]), r["model"], r["level"])
         text = wd.first_step_only(text, increments=r["increments"])
+    elif r["model"] == "modjoin":
+        # imposed head uplift (the pull is the reaction; make_s6_decks.py says why): the run
+        # goes to 8 mm uplift (2.83 kN is carried near 5 mm) with every increment written, and
+        # the uplift at Q_FIX is interpolated on the rising branch (s6_results.uplift_at)
+        text = g6.deck(g6.Mesh(r["level"]), r["model"], r["level"])
+        return wd.set_solver(wd.scale_steps(text, r["increments"] / 10.0, last_target=0.2,
+                                            last_increments=15), r["method"],
+                             5000 if r["method"] == "MODIFIED_NEWTON" else None)
     else:
         text = g6.deck(g6.Mesh(r["level"]), r["model"], r["level"])
         text = wd.first_step_only(text, factor=Q_FIX / g6.Q_END, increments=r["increments"])
@@ -112,6 +120,9 @@ def settlement(r, h5):
     if r["scene"] == "s2":
         load, s, _ = s2_results.head_curve(h5)
         target = S2_LOAD
+    elif r["model"] == "modjoin":
+        u = s6_results.uplift_at(h5, Q_FIX)
+        return None if math.isnan(u) else float(u)
     else:
         load, s = s6_results.head_curve(h5)
         target = Q_FIX

@@ -62,6 +62,32 @@ def first_step_only(text, factor=None, increments=None):
     return _join(out)
 
 
+def scale_steps(text, inc_factor, last_target=None, last_increments=None):
+    """Every *STEP's INCREMENTS times inc_factor (at least 1); optionally the last step's
+    target factor (every pattern on its data lines) and its increments before scaling.
+    Used for the imposed-uplift MODJOIN decks of S6, whose load steps are not a force."""
+    groups, steps = _blocks(text), []
+    for i, g in enumerate(groups):
+        if re.match(r"\*STEP\b", g[0], re.IGNORECASE):
+            steps.append(i)
+    if not steps:
+        raise ValueError("deck edit 'scale steps': no *STEP")
+    for i in steps:
+        g = groups[i]
+        m = re.search(r"INCREMENTS=(\d+)", g[0], re.IGNORECASE)
+        if m is None:
+            raise ValueError("deck edit 'scale steps': a *STEP without INCREMENTS=")
+        n = int(m.group(1))
+        if i == steps[-1] and last_increments is not None:
+            n = last_increments
+        g[0] = g[0][:m.start(1)] + str(max(1, round(n * inc_factor))) + g[0][m.end(1):]
+        if i == steps[-1] and last_target is not None:
+            groups[i] = [g[0]] + [re.sub(r",\s*[-+0-9.eE]+\s*$", f", {last_target:.12g}", d)
+                                  if d.strip() and not d.startswith("**") else d
+                                  for d in g[1:]]
+    return _join(groups)
+
+
 def set_output_every(text, every):
     """Fields only every `every` increments (and at each step's end)."""
     return _sub(r"^(\*OUTPUT\b.*?EVERY=)\d+", rf"\g<1>{every}", text, "output every")

@@ -18,7 +18,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 from wp_analysis import cheapest_within, relative_error, richardson  # noqa: E402
-from wp_decks import count_dofs, first_step_only, set_solver, to_q8   # noqa: E402
+from wp_decks import (count_dofs, first_step_only, scale_steps, set_solver,  # noqa: E402
+                      to_q8)
 
 
 @pytest.mark.parametrize("p", [1.0, 2.0, 3.5])
@@ -123,3 +124,17 @@ def test_step_and_solver_edits():
     assert "METHOD=MODIFIED_NEWTON, MAX_ITERATIONS=5000" in d
     with pytest.raises(ValueError):
         set_solver("*NODES\n1, 0, 0\n", "NEWTON")
+
+
+def test_scale_steps_imposed_uplift():
+    """The S6 MODJOIN edit: every step's increments scaled, the last step's target and
+    increments replaced; a deck without steps is refused."""
+    deck = ("*LOAD, NAME=pull, TYPE=DISPLACEMENT\nhead, Y, 0.04\n"
+            "*STEP, NAME=a, INCREMENTS=25\npull, 0.0125\n"
+            "*STEP, NAME=b, INCREMENTS=95\npull, 1\n*SOLVER, METHOD=NEWTON\n")
+    out = scale_steps(deck, 2.0, last_target=0.2, last_increments=15)
+    assert "*STEP, NAME=a, INCREMENTS=50\npull, 0.0125" in out
+    assert "*STEP, NAME=b, INCREMENTS=30\npull, 0.2" in out
+    assert scale_steps(deck, 0.01).count("INCREMENTS=1\n") == 2, "at least one increment"
+    with pytest.raises(ValueError):
+        scale_steps("*NODES\n1, 0, 0\n", 1.0)
