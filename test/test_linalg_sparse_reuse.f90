@@ -80,9 +80,11 @@ contains
       if (allocated(error)) return
       call reference(b, ref, error)
       if (allocated(error)) return
-      call check(error, b%full == 1 .and. b%fast == 1, 'first call sorts, the repeated sequence scatters')
+      call check(error, b%full == 1 .and. b%fast == 1, &
+         'first call sorts, the repeated sequence scatters')
       if (allocated(error)) return
-      call check(error, same_matrix(k, ref), 'fast path equals coo_to_csc exactly (pattern and values)')
+      call check(error, same_matrix(k, ref), &
+         'fast path equals coo_to_csc exactly (pattern and values)')
       if (allocated(error)) return
       call check(error, maxval(abs(k%values)) > 0.1_wp, 'the matrix is not empty (values in -1..1)')
    end subroutine fast_vs_full
@@ -126,12 +128,14 @@ contains
          call check(error, same_matrix(k, ref), 'builder result equals coo_to_csc after a change')
          if (allocated(error)) return
       end do
-      call check(error, b%full == 4 .and. b%fast == 1, '3 changed sequences fall back, 1 repeat scatters')
+      call check(error, b%full == 4 .and. b%fast == 1, &
+         '3 changed sequences fall back, 1 repeat scatters')
    end subroutine test_fallback
 
    !> Pad on a plane pressed and pushed beyond friction through Mohr-Coulomb joints, full
-   !> Newton (the run stops, exit 3): in the last state the joints slide, and the re-assembly of the consistent tangent through
-   !> the map used during the run equals the full conversion by a fresh builder.
+   !> Newton (the run stops at the limit load, exit 3): in the last state the joints slide,
+   !> and the re-assembly of the consistent tangent through the map used during the run
+   !> equals the full conversion by a fresh builder.
    subroutine test_joints(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
@@ -140,7 +144,8 @@ contains
       type(csc_t) :: kfull, kel
       integer :: code
       call make_directories(DIR)
-      code = run_deck('test/data/joints/pad_slip.inp', DIR//'/pad_slip.h5', .true., model, problem)
+      code = run_deck('test/data/joints/pad_slip.inp', DIR//'/pad_slip.h5', .true., model, &
+         problem)
       call check(error, code == 3, 'pad_slip stops when the pad slides away')
       if (allocated(error)) return
       call check(error, problem%kbuild%fast > 0, 'the Newton iterations of the run used the map')
@@ -158,7 +163,8 @@ contains
       if (allocated(error)) return
       call check(error, same_matrix(problem%k, kfull), 'mapped tangent equals the full conversion')
       if (allocated(error)) return
-      call check(error, maxval(abs(kel%values - kfull%values)) > 1.0e-6_wp*maxval(abs(kfull%values)), &
+      call check(error, &
+         maxval(abs(kel%values - kfull%values)) > 1.0e-6_wp*maxval(abs(kfull%values)), &
          'the tangent differs from the elastic stiffness (the map rewrote the values)')
    end subroutine test_joints
 

@@ -84,7 +84,8 @@ contains
    !> values = sum over triplets through the map, in triplet order (the order in which
    !> coo_to_csc sums duplicates, so the result is the same to the last bit). Checks
    !> on the way that triplet p is the entry (row, column) its map position holds, which
-   !> is the triplet p of the mapped sequence: false at the first difference.
+   !> is the triplet p of the mapped sequence: false at the first difference (then the
+   !> full conversion also reports any index out of range).
    logical function scatter(this, csc) result(ok)
       type(csc_builder_t), intent(in) :: this
       type(csc_t), intent(inout) :: csc
@@ -94,6 +95,7 @@ contains
       do p = 1, this%coo%nnz
          q = this%map(p)
          j = this%coo%cols(p)
+         if (j < 1 .or. j > csc%n) return
          if (q <= csc%colptr(j) .or. q > csc%colptr(j + 1)) return
          if (csc%rowind(q) + 1 /= this%coo%rows(p)) return
          csc%values(q) = csc%values(q) + this%coo%vals(p)
