@@ -16,6 +16,7 @@ program tester
    use test_massif_edge_load, only: collect_massif_edge_load
    use test_io_results, only: collect_io_results
    use test_linalg_sparse, only: collect_linalg_sparse
+   use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
    use test_linalg_solvers, only: collect_linalg_solvers
    use test_io_deck_fields, only: collect_io_deck_fields
    use test_io_deck, only: collect_io_deck
@@ -66,6 +67,7 @@ program tester
    suites = [suites, new_testsuite('massif_edge_load', collect_massif_edge_load)]
    suites = [suites, new_testsuite('io_results', collect_io_results)]
    suites = [suites, new_testsuite('linalg_sparse', collect_linalg_sparse)]
+   suites = [suites, new_testsuite('linalg_sparse_reuse', collect_linalg_sparse_reuse)]
    suites = [suites, new_testsuite('linalg_solvers', collect_linalg_solvers)]
    suites = [suites, new_testsuite('io_deck_fields', collect_io_deck_fields)]
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]

@@ -14,6 +14,7 @@ module pecplas_driver_problem
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_linalg_sparse, only: csc_t
+   use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_driver_timers, only: timers_t
    use pecjoin_assembly, only: setup_joint_state
@@ -38,6 +39,8 @@ module pecplas_driver_problem
       real(wp), allocatable :: initial_force(:, :)
       class(linear_solver_t), allocatable :: solver
       type(csc_t) :: k
+      !> Triplet storage and scatter map of the stiffness re-assembly (pecplas_linalg_sparse_reuse).
+      type(csc_builder_t) :: kbuild
       !> Katona contact doublets (inactive when no joint set has a KATONA law).
       type(katona_t) :: katona
       !> Counters for the summary.

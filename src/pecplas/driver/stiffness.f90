@@ -52,7 +52,7 @@ contains
 
       t0 = wall_time()
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
-         problem%k, error)
+         problem%kbuild, problem%k, error)
       if (allocated(error)) return
       if (problem%katona%alpha > 0.0_wp) then
          call add_augmentation(problem%katona, problem%dofs, problem%k, error)

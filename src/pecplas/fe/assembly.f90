@@ -1,5 +1,6 @@
-!> Assembly of the massif elements: stiffness (COO → CSC), internal forces with the material
-!> update at every integration point, external forces of the load patterns. The joint
+!> Assembly of the massif elements: stiffness (COO → CSC, or a rescatter of the values when
+!> the triplet sequence repeats), internal forces with the material update at every
+!> integration point, external forces of the load patterns. The joint
 !> elements (PECJOIN) add their blocks and forces through pecjoin_assembly.
 module pecplas_fe_assembly
    use pecplas_kinds, only: wp
@@ -10,7 +11,8 @@ module pecplas_fe_assembly
    use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
    use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_massif_materials_type, only: NCOMP
-   use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
+   use pecplas_linalg_sparse, only: csc_t
+   use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecjoin_assembly, only: add_joint_stiffness, add_joint_forces
    use pecplas_driver_timers, only: wall_time
    implicit none (type, external)
@@ -22,15 +24,17 @@ contains
 
    !> Global stiffness on the free equations. `tangent`: consistent tangents stored in the
    !> state (full Newton); otherwise the elastic tangent of each material (modified Newton).
-   subroutine assemble_stiffness(model, dofs, rules, state, tangent, k, error)
+   !> `builder` keeps the triplet storage and the scatter map between calls: `k` must be the
+   !> matrix it built last time (or empty); a repeated triplet sequence only rescatters values.
+   subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
       type(massif_rule_t), intent(in) :: rules(:)
       type(fe_state_t), intent(in) :: state
       logical, intent(in) :: tangent
-      type(csc_t), intent(out) :: k
+      type(csc_builder_t), intent(inout) :: builder
+      type(csc_t), intent(inout) :: k
       type(error_t), allocatable, intent(out) :: error
-      type(coo_t) :: coo
       real(wp), allocatable :: xe(:, :), ke(:, :), d(:, :, :)
       real(wp) :: delastic(NCOMP, NCOMP)
       integer, allocatable :: idx(:)
@@ -41,7 +45,7 @@ contains
          nd = 2*rules(s)%nnode
          capacity = capacity + nd*nd*size(model%mesh%esets(s)%conn, 2)
       end do
-      call coo%init(dofs%neq, capacity)
+      call builder%start(dofs%neq, capacity)
       do s = 1, size(rules)
          associate (set => model%mesh%esets(s), st => state%sets(s), &
                     mat => model%materials(model%mesh%esets(s)%material_index)%m)
@@ -62,14 +66,14 @@ contains
                   call element_context(error, set%name, set%ids(e))
                   return
                end if
-               call coo%add_block(idx, ke)
+               call builder%coo%add_block(idx, ke)
             end do
             deallocate (xe, ke, idx, d)
          end associate
       end do
-      call add_joint_stiffness(model, dofs, state%joints, tangent, coo, error)
+      call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, error)
       if (allocated(error)) return
-      call coo_to_csc(coo, k, error)
+      call builder%finish(k, error)
    end subroutine assemble_stiffness
 
    !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,

@@ -1,0 +1,131 @@
+!> Re-assembly of a CSC matrix from a repeated triplet sequence (full Newton assembles the
+!> same connectivity at every iteration). The first conversion records, for each triplet,
+!> its position in the CSC value array; when the next sequence is the same (same entries
+!> in the same order, checked entry by entry), the values are scattered through that map
+!> instead of sorting again. Any difference falls back to `coo_to_csc` and a new map.
+module pecplas_linalg_sparse_reuse
+   use pecplas_kinds, only: wp, ik4
+   use pecplas_error, only: error_t, fatal_error
+   use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
+   implicit none (type, external)
+   private
+
+   public :: csc_builder_t
+
+   !> Triplet storage kept between assemblies (no page faults for a new buffer each time)
+   !> and the scatter map of its last sequence. Lives in the problem state.
+   type :: csc_builder_t
+      !> Triplets of the current assembly: fill with coo%add / coo%add_block after `start`.
+      type(coo_t) :: coo
+      !> map(p): 1-based position in csc%values of triplet p of the mapped sequence.
+      integer(ik4), allocatable :: map(:)
+      !> Length of the mapped sequence (-1: no map), and nnz and order of its CSC matrix.
+      integer :: nmap = -1, nzmap = -1, nmat = -1
+      logical :: upper = .false.
+      !> Conversions done through the map (fast) and by the full sort (full).
+      integer :: fast = 0, full = 0
+   contains
+      procedure :: start => builder_start
+      procedure :: finish => builder_finish
+   end type csc_builder_t
+
+contains
+
+   !> Empties the triplet list for an n x n matrix, keeping the storage when it fits.
+   subroutine builder_start(this, n, capacity, upper_only)
+      class(csc_builder_t), intent(inout) :: this
+      integer, intent(in) :: n, capacity
+      logical, intent(in), optional :: upper_only
+      logical :: upper
+      upper = .false.
+      if (present(upper_only)) upper = upper_only
+      if (allocated(this%coo%rows) .and. this%coo%n == n .and. &
+          (this%coo%upper_only .eqv. upper)) then
+         call this%coo%clear()
+         if (size(this%coo%rows) < capacity) call this%coo%reserve(capacity)
+      else
+         call this%coo%init(n, capacity, upper)
+         this%nmap = -1
+      end if
+   end subroutine builder_start
+
+   !> CSC matrix of the triplets added since `start`. `csc` must be the matrix of the
+   !> previous call (only its values may have been changed since): on the fast path its
+   !> pattern is kept and only the values are rebuilt.
+   subroutine builder_finish(this, csc, error)
+      class(csc_builder_t), intent(inout) :: this
+      type(csc_t), intent(inout) :: csc
+      type(error_t), allocatable, intent(out) :: error
+      if (reusable(this, csc)) then
+         if (scatter(this, csc)) then
+            this%fast = this%fast + 1
+            return
+         end if
+      end if
+      call coo_to_csc(this%coo, csc, error)
+      if (allocated(error)) return
+      call build_map(this, csc, error)
+      this%full = this%full + 1
+   end subroutine builder_finish
+
+   !> The map may apply: same length, order, storage kind and matrix size as when built.
+   logical function reusable(this, csc)
+      class(csc_builder_t), intent(in) :: this
+      type(csc_t), intent(in) :: csc
+      reusable = .false.
+      if (this%nmap /= this%coo%nnz .or. this%nmat /= this%coo%n) return
+      if (.not. allocated(csc%values) .or. .not. allocated(csc%colptr) .or. &
+          .not. allocated(csc%rowind)) return
+      if (csc%n /= this%nmat .or. (csc%upper .neqv. this%upper)) return
+      if (size(csc%values) /= this%nzmap .or. csc%nnz() /= this%nzmap) return
+      reusable = .true.
+   end function reusable
+
+   !> values = sum over triplets through the map, in triplet order (the order in which
+   !> coo_to_csc sums duplicates, so the result is the same to the last bit). Checks
+   !> on the way that triplet p is the entry (row, column) its map position holds, which
+   !> is the triplet p of the mapped sequence: false at the first difference (then the
+   !> full conversion also reports any index out of range).
+   logical function scatter(this, csc) result(ok)
+      type(csc_builder_t), intent(in) :: this
+      type(csc_t), intent(inout) :: csc
+      integer :: p, q, j
+      ok = .false.
+      csc%values = 0.0_wp
+      do p = 1, this%coo%nnz
+         q = this%map(p)
+         j = this%coo%cols(p)
+         if (j < 1 .or. j > csc%n) return
+         if (q <= csc%colptr(j) .or. q > csc%colptr(j + 1)) return
+         if (csc%rowind(q) + 1 /= this%coo%rows(p)) return
+         csc%values(q) = csc%values(q) + this%coo%vals(p)
+      end do
+      ok = .true.
+   end function scatter
+
+   !> map(p) = position of triplet p in the CSC matrix just built from the same triplets.
+   subroutine build_map(this, csc, error)
+      type(csc_builder_t), intent(inout) :: this
+      type(csc_t), intent(in) :: csc
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, q
+      this%nmap = -1
+      if (allocated(this%map)) then
+         if (size(this%map) < this%coo%nnz) deallocate (this%map)
+      end if
+      if (.not. allocated(this%map)) allocate (this%map(max(this%coo%nnz, 1)))
+      do p = 1, this%coo%nnz
+         q = csc%locate(int(this%coo%rows(p)), int(this%coo%cols(p)))
+         if (q == 0) then
+            call fatal_error(error, 'csc_builder: triplet missing from its own CSC matrix')
+            return
+         end if
+         this%map(p) = int(q, ik4)
+      end do
+      this%nmap = this%coo%nnz
+      this%nzmap = csc%nnz()
+      this%nmat = csc%n
+      this%upper = csc%upper
+   end subroutine build_map
+
+end module pecplas_linalg_sparse_reuse

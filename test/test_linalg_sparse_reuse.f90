@@ -1,0 +1,171 @@
+!> Stiffness re-assembly through the scatter map (pecplas_linalg_sparse_reuse): the fast
+!> path must give the matrix of the full COO -> CSC conversion of the same triplets, and any
+!> change of the triplet sequence must take the full conversion again.
+module test_linalg_sparse_reuse
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t
+   use pecplas_model, only: model_t
+   use pecplas_cli, only: run_deck
+   use pecplas_files, only: make_directories
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_fe_assembly, only: assemble_stiffness
+   use pecplas_linalg_sparse, only: csc_t, coo_to_csc
+   use pecplas_linalg_sparse_reuse, only: csc_builder_t
+   use pecplas_testing, only: unittest_t, new_unittest, check
+   use fixtures_linalg, only: det_vector
+   implicit none (type, external)
+   private
+   public :: collect_linalg_sparse_reuse
+
+   character(len=*), parameter :: DIR = 'build/test_out/sparse_reuse'
+
+contains
+
+   subroutine collect_linalg_sparse_reuse(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('fast_path_equals_full', test_fast_full), &
+               new_unittest('fast_path_upper_only', test_fast_upper), &
+               new_unittest('changed_sequence_falls_back', test_fallback), &
+               new_unittest('joints_after_state_change', test_joints)]
+   end subroutine collect_linalg_sparse_reuse
+
+   !> Fills `b` (after start) with nt pseudo-random triplets of an n x n matrix, many of them
+   !> duplicates; `seed` changes the values only, `shift` moves triplet `shift` one column.
+   subroutine fill(b, n, nt, seed, upper, shift)
+      type(csc_builder_t), intent(inout) :: b
+      integer, intent(in) :: n, nt, seed, shift
+      logical, intent(in) :: upper
+      real(wp) :: v(nt), r(nt), c(nt)
+      integer :: k, i, j
+      v = det_vector(nt, seed)
+      r = det_vector(nt, 2)
+      c = det_vector(nt, 3)
+      call b%start(n, nt/4, upper)
+      do k = 1, nt
+         i = 1 + int((r(k) + 1.0_wp)/3.0_wp*n)
+         j = 1 + int((c(k) + 1.0_wp)/3.0_wp*n)
+         if (k == shift) j = 1 + mod(j, n)
+         call b%coo%add(i, j, v(k))
+      end do
+   end subroutine fill
+
+   !> True when a and b have the same pattern and equal values (== also equates -0 and +0,
+   !> the one difference the fast path may make: it sums 0 + v where the sort copies v).
+   logical function same_matrix(a, b)
+      type(csc_t), intent(in) :: a, b
+      same_matrix = a%n == b%n .and. (a%upper .eqv. b%upper) .and. a%nnz() == b%nnz()
+      if (.not. same_matrix) return
+      same_matrix = all(a%colptr == b%colptr) .and. all(a%rowind == b%rowind) .and. &
+                    all(a%values == b%values)
+   end function same_matrix
+
+   !> Reference: the full conversion of the builder's current triplets.
+   subroutine reference(b, a, error)
+      type(csc_builder_t), intent(in) :: b
+      type(csc_t), intent(out) :: a
+      type(error_t), allocatable, intent(out) :: error
+      call coo_to_csc(b%coo, a, error)
+   end subroutine reference
+
+   subroutine fast_vs_full(upper, error)
+      logical, intent(in) :: upper
+      type(error_t), allocatable, intent(out) :: error
+      type(csc_builder_t) :: b
+      type(csc_t) :: k, ref
+      call fill(b, 40, 2000, 1, upper, 0)
+      call b%finish(k, error)
+      if (allocated(error)) return
+      call fill(b, 40, 2000, 7, upper, 0)
+      call b%finish(k, error)
+      if (allocated(error)) return
+      call reference(b, ref, error)
+      if (allocated(error)) return
+      call check(error, b%full == 1 .and. b%fast == 1, &
+         'first call sorts, the repeated sequence scatters')
+      if (allocated(error)) return
+      call check(error, same_matrix(k, ref), &
+         'fast path equals coo_to_csc exactly (pattern and values)')
+      if (allocated(error)) return
+      call check(error, maxval(abs(k%values)) > 0.1_wp, 'the matrix is not empty (values in -1..1)')
+   end subroutine fast_vs_full
+
+   subroutine test_fast_full(error)
+      type(error_t), allocatable, intent(out) :: error
+      call fast_vs_full(.false., error)
+   end subroutine test_fast_full
+
+   !> Upper-only storage: the lower triplets are dropped on entry, as coo_to_csc expects.
+   subroutine test_fast_upper(error)
+      type(error_t), allocatable, intent(out) :: error
+      call fast_vs_full(.true., error)
+   end subroutine test_fast_upper
+
+   !> A moved triplet, a shorter and a longer sequence each take the full conversion, whose
+   !> result is the new matrix; the unchanged sequence after them scatters again.
+   subroutine test_fallback(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(csc_builder_t) :: b
+      type(csc_t) :: k, ref
+      integer :: it
+      call fill(b, 30, 900, 1, .false., 0)
+      call b%finish(k, error)
+      if (allocated(error)) return
+      do it = 1, 4
+         select case (it)
+         case (1)
+            call fill(b, 30, 900, 4, .false., 450)   ! one entry moved to another column
+         case (2)
+            call fill(b, 30, 899, 5, .false., 0)     ! one triplet fewer
+         case (3)
+            call fill(b, 30, 900, 6, .false., 0)     ! one more than last time
+         case (4)
+            call fill(b, 30, 900, 8, .false., 0)     ! repeated: fast again
+         end select
+         call b%finish(k, error)
+         if (allocated(error)) return
+         call reference(b, ref, error)
+         if (allocated(error)) return
+         call check(error, same_matrix(k, ref), 'builder result equals coo_to_csc after a change')
+         if (allocated(error)) return
+      end do
+      call check(error, b%full == 4 .and. b%fast == 1, &
+         '3 changed sequences fall back, 1 repeat scatters')
+   end subroutine test_fallback
+
+   !> Pad on a plane pressed and pushed beyond friction through Mohr-Coulomb joints, full
+   !> Newton (the run stops at the limit load, exit 3): in the last state the joints slide,
+   !> and the re-assembly of the consistent tangent through the map used during the run
+   !> equals the full conversion by a fresh builder.
+   subroutine test_joints(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(csc_builder_t) :: fresh
+      type(csc_t) :: kfull, kel
+      integer :: code
+      call make_directories(DIR)
+      code = run_deck('test/data/joints/pad_slip.inp', DIR//'/pad_slip.h5', .true., model, &
+         problem)
+      call check(error, code == 3, 'pad_slip stops when the pad slides away')
+      if (allocated(error)) return
+      call check(error, problem%kbuild%fast > 0, 'the Newton iterations of the run used the map')
+      if (allocated(error)) return
+      associate (p => problem)
+         call assemble_stiffness(model, p%dofs, p%rules, p%state, .false., p%kbuild, p%k, error)
+         if (allocated(error)) return
+         kel = p%k
+         call assemble_stiffness(model, p%dofs, p%rules, p%state, .true., p%kbuild, p%k, error)
+         if (allocated(error)) return
+         call assemble_stiffness(model, p%dofs, p%rules, p%state, .true., fresh, kfull, error)
+         if (allocated(error)) return
+      end associate
+      call check(error, fresh%full == 1 .and. fresh%fast == 0, 'a fresh builder sorts')
+      if (allocated(error)) return
+      call check(error, same_matrix(problem%k, kfull), 'mapped tangent equals the full conversion')
+      if (allocated(error)) return
+      call check(error, &
+         maxval(abs(kel%values - kfull%values)) > 1.0e-6_wp*maxval(abs(kfull%values)), &
+         'the tangent differs from the elastic stiffness (the map rewrote the values)')
+   end subroutine test_joints
+
+end module test_linalg_sparse_reuse
