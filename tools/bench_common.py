@@ -32,7 +32,8 @@ def provenance():
         return subprocess.run(["git", *args], cwd=ROOT, capture_output=True,
                               text=True).stdout.strip()
     commit = git("rev-parse", "--short", "HEAD") or "unknown"
-    if git("status", "--porcelain", "--untracked-files=no"):
+    # the benchmark's own outputs (doc/bench) do not make the code dirty
+    if git("status", "--porcelain", "--untracked-files=no", "--", ".", ":!doc/bench"):
         commit += "-dirty"
     cpu = platform.processor() or platform.machine()
     try:
