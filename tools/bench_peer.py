@@ -350,13 +350,15 @@ def fragment(rows, pile_runs, limits, bruns):
           "element across the pile) a rough tip settles a quarter more; by hand on that mesh, "
           "our penalty deck with K_t = 2e7 and PHI = 30 at the tip gives 98.9 mm (the Katona "
           "and CalculiX answer), with PHI ~ 0 (smooth) 77.8 mm. So the gap between our penalty "
-          "and Katona S2 curves in doc/validation.md (\"Open (Katona in S2)\", 78.3 vs "
-          "98.7 mm) is the tip's roughness on a coarse mesh, not an error of the Katona "
-          "solver, and it closes with refinement. Katona stays stiffer at small loads "
+          "and Katona S2 curves on the reference mesh (78.3 vs 98.7 mm, doc/validation.md "
+          "S2) is the tip's roughness on a coarse mesh, not an error of the Katona solver "
+          "(the same conclusion as the stiff-spring study there), and it closes with "
+          "refinement. Katona stays stiffer at small loads "
           "(no stick compliance 1/K_t); CalculiX, with the same K_t, matches the penalty "
-          "joints there. A plausible mechanism for the rough tip, not checked: the base holds "
-          "the column's top radially, so the column presses less on the surrounding soil "
-          "and slides more easily along the below-tip joint.", "",
+          "joints there. The mechanism (doc/validation.md S2, measured "
+          "there): the rough base holds the column's top radially, so the column presses "
+          "less on the surrounding soil (252 against 336 kPa) and slides more easily along "
+          "the below-tip joint.", "",
           "**Differences of formulation.**", "",
           "- Contact: ours are node-to-node joints on coincident node doublets (small "
           "displacement, the joint frame fixed): Katona with Lagrange multipliers (exact "

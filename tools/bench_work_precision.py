@@ -230,7 +230,10 @@ def main():
         # against the scene's model: a bound, discretisation error + the model's offset (the
         # distance between the two references), so that a coarse run of another model does
         # not qualify by crossing the reference on its way to its own limit
-        r["scene_error"] = (r["error"] + relative_error(own["ref"], sc["ref"])
+        # the advice never claims an error below what the reference resolves: the bound is
+        # max(error, the reference's own uncertainty)
+        r["error_bound"] = max(r["error"], r["floor"]) if own else float("nan")
+        r["scene_error"] = (r["error_bound"] + relative_error(own["ref"], sc["ref"])
                             if own and sc else float("nan"))
     header = ["scene", "model", "element", "joint", "solver", "series", "level", "dofs",
               "increments", "status", "wall_s", "peak_mb", "value_m", "reference_m", "p",

@@ -71,7 +71,8 @@ def advice(runs, scene_model, tols=(0.01, 0.05)):
     for scene in sorted({r["scene"] for r in runs}):
         sr = [r for r in runs if r["scene"] == scene and r["status"] == "ok"]
         scopes = [("scene", f"vs {scene_model[scene]} reference", "scene_error", sr)]
-        scopes += [(m, "vs own model reference", "error", [r for r in sr if r["model"] == m])
+        scopes += [(m, "vs own model reference", "error_bound",
+                    [r for r in sr if r["model"] == m])
                    for m in sorted({r["model"] for r in sr})]
         for scope, against, key, rs in scopes:
             for t in tols:
@@ -122,7 +123,10 @@ def write_fragments(runs, refs, adv, quick, scenes, scene_model):
           ", ".join(f"{s.upper()}: {m}" for s, m in ref_of.items()) + "), as the bound "
           "discretisation error + the distance between the model's and the scene model's "
           "references, so another model qualifies only if its own limit is close; scope = a "
-          "model: against that model's own reference (discretisation only).", ""]
+          "model: against that model's own reference (discretisation only). The error used is "
+          "never below the reference's own uncertainty (an error the reference cannot resolve "
+          "is not claimed), so a model whose reference is uncertain by more than the "
+          "tolerance has no configuration within it.", ""]
     for s in scenes:
         if SCENE_REF[s][0] != scene_model[s]:
             ad.append(f"- {s.upper()}: the preferred scene model {SCENE_REF[s][0]} has no "
