@@ -2,20 +2,26 @@
 !> step under cheaper and finer configurations, run in-process, and the cheapest one whose
 !> error is below 1 % and below 5 %.
 !>
-!> Variants: the nonlinear method (MODIFIED_NEWTON, NEWTON; Katona decks run their contact
-!> iteration inside either) times the number of increments of every step (x1/2, x1, x2),
-!> run up to the end of the first loading step (the first one that applies more than gravity).
-!> The reference is the finest, NEWTON with x2 increments. The error of a variant is
-!> |u - u_ref| / |u_ref| at the monitored node, at the end of the first step: the node with the
-!> largest free (not imposed) displacement of the reference, or a node given by id; only the
-!> free components of its displacement count (an imposed one is the same in every run). Mesh levels are not
-!> varied: the code has no uniform refiner. Each run writes a scratch results file (the
-!> driver writes as it goes) that is deleted afterwards; its writing time is not counted.
+!> Variants on the deck's mesh: the nonlinear method (MODIFIED_NEWTON, NEWTON; Katona decks run
+!> their contact iteration inside either) times the number of increments of every step (x1/2,
+!> x1, x2), run up to the end of the first loading step (the first one that applies more than
+!> gravity). One mesh level more: the deck's model refined uniformly once (h/2,
+!> pecplas_model_refine) with NEWTON x1 and x2. The reference is the finest, NEWTON x2 on the
+!> refined mesh, so the errors of the deck's mesh include its discretisation error; when the
+!> model cannot be refined (quadratic elements, springs, point loads on a refined set, ...) the
+!> mesh level is not varied (a one-line reason) and the reference is NEWTON x2 on the deck's
+!> mesh. The error of a variant is |u - u_ref| / |u_ref| at the monitored node, at the end of
+!> the first step: the node of the deck (refinement keeps its ids and numbers) with the largest
+!> free (not imposed) displacement of the reference, or a node given by id; only the free
+!> components of its displacement count (an imposed one is the same in every run). Each run
+!> writes a scratch results file (the driver writes as it goes) that is deleted afterwards; its
+!> writing time is not counted.
 module pecplas_driver_advise
    use pecplas_kinds, only: wp, ik8
    use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT
    use pecplas_version, only: VERSION
    use pecplas_model, only: model_t
+   use pecplas_model_refine, only: refine_model
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_prepare, only: prepare_run
@@ -30,18 +36,23 @@ module pecplas_driver_advise
    implicit none (type, external)
    private
 
-   public :: advise_row_t, advise_deck, advise_main, ADVISE_METHODS, ADVISE_FACTORS
+   public :: advise_row_t, advise_deck, advise_main, ADVISE_METHODS, ADVISE_FACTORS, &
+      ADVISE_FINE_FACTORS
 
    !> Nonlinear methods tried (model%solver%method).
    character(len=*), parameter :: ADVISE_METHODS(2) = [character(len=15) :: 'MODIFIED_NEWTON', &
       'NEWTON']
    !> Factors on the number of increments of every step (at least one increment).
    real(wp), parameter :: ADVISE_FACTORS(3) = [0.5_wp, 1.0_wp, 2.0_wp]
+   !> Factors tried with NEWTON on the refined mesh (the last one is the reference).
+   real(wp), parameter :: ADVISE_FINE_FACTORS(2) = [1.0_wp, 2.0_wp]
 
    !> One configuration and what it gave.
    type :: advise_row_t
       character(len=15) :: method = ''
       real(wp) :: factor = 1.0_wp
+      !> On the refined mesh (h/2) rather than the deck's.
+      logical :: fine = .false.
       !> Increments of the first step, wall time [s] without result writing, relative error.
       integer :: increments = 0
       real(wp) :: wall = 0.0_wp, err = huge(1.0_wp)
@@ -54,21 +65,32 @@ contains
 
    !> Runs the variants of `deck`; `node_id` > 0 monitors that node, else the node of largest
    !> reference displacement (`monitored` returns its id). `ref` is the reference row, `best`
-   !> the cheapest row within 1 % and within 5 % (0 when none).
-   subroutine advise_deck(deck, node_id, rows, ref, best, monitored, error)
+   !> the cheapest row within 1 % and within 5 % (0 when none). `mesh_note` is allocated with
+   !> the reason when the mesh level is not varied.
+   subroutine advise_deck(deck, node_id, rows, ref, best, monitored, error, mesh_note)
       character(len=*), intent(in) :: deck
       integer, intent(in) :: node_id
       type(advise_row_t), allocatable, intent(out) :: rows(:)
       integer, intent(out) :: ref, best(2), monitored
       type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable, intent(out), optional :: mesh_note
       real(wp), allocatable :: u(:, :, :)
       logical, allocatable :: free(:, :)
-      type(model_t) :: model
-      integer :: m, f, i, n, inode
+      type(model_t) :: model, fine
+      character(len=:), allocatable :: reason
+      integer :: m, f, i, n, inode, nn0
       real(wp) :: uref(2)
       real(wp), parameter :: TOL(2) = [0.01_wp, 0.05_wp]
 
-      allocate (rows(size(ADVISE_METHODS)*size(ADVISE_FACTORS)))
+      ! the deck's own mesh fixes which nodes may be monitored, and whether it refines
+      call read_deck(deck, model, error)
+      if (allocated(error)) return
+      nn0 = model%mesh%nnode()
+      call refine_model(model, fine, reason)
+      if (present(mesh_note) .and. allocated(reason)) mesh_note = reason
+      n = size(ADVISE_METHODS)*size(ADVISE_FACTORS)
+      if (.not. allocated(reason)) n = n + size(ADVISE_FINE_FACTORS)
+      allocate (rows(n))
       n = 0
       do m = 1, size(ADVISE_METHODS)
          do f = 1, size(ADVISE_FACTORS)
@@ -77,17 +99,25 @@ contains
             rows(n)%factor = ADVISE_FACTORS(f)
          end do
       end do
+      if (.not. allocated(reason)) then
+         do f = 1, size(ADVISE_FINE_FACTORS)
+            n = n + 1
+            rows(n)%method = 'NEWTON'
+            rows(n)%factor = ADVISE_FINE_FACTORS(f)
+            rows(n)%fine = .true.
+         end do
+      end if
       ref = n
       ! the reference first: it fixes the monitored node
       call one_run(deck, n, n, rows(ref), model, u, error, free)
       if (allocated(error)) return
       if (.not. rows(ref)%ok) then
-         call input_error(error, 'advise: the reference run (NEWTON, x2 increments) did not '// &
-            'complete its first step ('//rows(ref)%status//'): no advice')
+         call input_error(error, 'advise: the reference run ('//row_name(rows(ref))// &
+            ') did not complete its first step ('//rows(ref)%status//'): no advice')
          return
       end if
       if (node_id > 0) then
-         inode = findloc(model%mesh%node_id, node_id, dim=1)
+         inode = findloc(model%mesh%node_id(1:nn0), node_id, dim=1)
          if (inode == 0) then
             call input_error(error, 'advise: --advise-node: no node '//itoa(node_id)// &
                ' in the mesh')
@@ -95,8 +125,8 @@ contains
          end if
       else
          ! imposed displacements say nothing of the accuracy: the free components count
-         if (.not. any(free .and. u(:, :, ref) /= 0.0_wp)) free = .true.
-         inode = maxloc(norm2(merge(u(:, :, ref), 0.0_wp, free), dim=1), dim=1)
+         if (.not. any(free(:, 1:nn0) .and. u(:, 1:nn0, ref) /= 0.0_wp)) free = .true.
+         inode = maxloc(norm2(merge(u(:, 1:nn0, ref), 0.0_wp, free(:, 1:nn0)), dim=1), dim=1)
       end if
       if (.not. any(free(:, inode))) free(:, inode) = .true.
       monitored = model%mesh%node_id(inode)
@@ -124,8 +154,8 @@ contains
       end do
    end subroutine advise_deck
 
-   !> Reads `deck` afresh, keeps its steps up to the first loading step, applies the configuration of `row` and runs
-   !> it quietly to a scratch results file (deleted); u(:, :, i) = the displacements at the end
+   !> Reads `deck` afresh (refined once for a row on the fine mesh), keeps its steps up to the
+   !> first loading step, applies the configuration of `row` and runs it quietly to a scratch results file (deleted); u(:, :, i) = the displacements at the end
    !> (u allocated for `nvar` variants by the first run).
    subroutine one_run(deck, i, nvar, row, model, u, error, free)
       character(len=*), intent(in) :: deck
@@ -143,8 +173,20 @@ contains
       character(len=:), allocatable :: status, message, scratch
       real(wp) :: w0
       integer :: nflipped, last, s
+      type(model_t) :: coarse
+      character(len=:), allocatable :: reason
 
-      call read_deck(deck, model, error)
+      if (row%fine) then
+         call read_deck(deck, coarse, error)
+         if (allocated(error)) return
+         call refine_model(coarse, model, reason)
+         if (allocated(reason)) then
+            call input_error(error, 'advise: the refinement failed: '//reason)
+            return
+         end if
+      else
+         call read_deck(deck, model, error)
+      end if
       if (allocated(error)) return
       if (size(model%steps) < 1) then
          call input_error(error, 'advise: the deck has no *STEP')
@@ -178,7 +220,7 @@ contains
       call delete_file(xdmf_path(scratch))
       row%status = status
       row%ok = status == 'completed'
-      if (row%ok) u(:, :, i) = problem%state%u
+      if (row%ok) u(:, 1:size(problem%state%u, 2), i) = problem%state%u
       if (present(free)) free = problem%dofs%eq > 0
    end subroutine one_run
 
@@ -204,20 +246,22 @@ contains
       integer, intent(in) :: node_id
       type(advise_row_t), allocatable :: rows(:)
       type(error_t), allocatable :: error
+      character(len=:), allocatable :: note
       integer :: ref, best(2), monitored, i
-      character(len=*), parameter :: FMT = '(2x,a15,2x,a5,2x,i10,2x,f10.4,2x,a12,2x,a)'
-      call advise_deck(deck, node_id, rows, ref, best, monitored, error)
+      character(len=*), parameter :: FMT = '(2x,a15,2x,a4,2x,a5,2x,i10,2x,f10.4,2x,a12,2x,a)'
+      call advise_deck(deck, node_id, rows, ref, best, monitored, error, note)
       if (allocated(error)) then
          code = command_error('pecplas', error%exit_code(), error%text())
          return
       end if
       write (*, '(a)') 'pecplas --advise '//deck//': first loading step, monitored node '// &
-         itoa(monitored)//', reference NEWTON x2 increments'
-      write (*, '(2x,a15,2x,a5,2x,a10,2x,a10,2x,a12,2x,a)') 'method', 'incr.', 'increments', &
-         'wall [s]', 'error', 'status'
+         itoa(monitored)//', reference '//row_name(rows(ref))
+      if (allocated(note)) write (*, '(a)') 'mesh level not varied: '//note
+      write (*, '(2x,a15,2x,a4,2x,a5,2x,a10,2x,a10,2x,a12,2x,a)') 'method', 'mesh', 'incr.', &
+         'increments', 'wall [s]', 'error', 'status'
       do i = 1, size(rows)
-         write (*, FMT) rows(i)%method, factor_text(rows(i)%factor), rows(i)%increments, &
-            rows(i)%wall, err_text(rows(i)), rows(i)%status
+         write (*, FMT) rows(i)%method, mesh_text(rows(i)), factor_text(rows(i)%factor), &
+            rows(i)%increments, rows(i)%wall, err_text(rows(i)), rows(i)%status
       end do
       write (*, '(a)') advice_line('1 %', rows, best(1))
       write (*, '(a)') advice_line('5 %', rows, best(2))
@@ -235,8 +279,25 @@ contains
       end if
       line = 'advice (error < '//what//'): METHOD='//trim(rows(b)%method)//', INCREMENTS='// &
          itoa(rows(b)%increments)//' in the first loading step (x'//factor_text(rows(b)%factor)// &
-         '), error '//err_text(rows(b))
+         ')'
+      if (rows(b)%fine) line = line//', mesh refined once (h/2)'
+      line = line//', error '//err_text(rows(b))
    end function advice_line
+
+   !> 'deck' (the deck's mesh) or 'h/2' (refined once).
+   pure function mesh_text(row) result(s)
+      type(advise_row_t), intent(in) :: row
+      character(len=:), allocatable :: s
+      s = merge('h/2 ', 'deck', row%fine)
+      s = trim(s)
+   end function mesh_text
+
+   !> The configuration in words, e.g. 'NEWTON x2 increments, mesh h/2'.
+   function row_name(row) result(s)
+      type(advise_row_t), intent(in) :: row
+      character(len=:), allocatable :: s
+      s = trim(row%method)//' x'//factor_text(row%factor)//' increments, mesh '//mesh_text(row)
+   end function row_name
 
    function factor_text(f) result(s)
       real(wp), intent(in) :: f
