@@ -40,6 +40,7 @@ program tester
    use test_pecjoin_modjoin_fe, only: collect_pecjoin_modjoin_fe
    use test_pecjoin_modjoin_cyclic, only: collect_pecjoin_modjoin_cyclic
    use test_advise, only: collect_advise
+   use test_refine, only: collect_refine
    use test_pecjoin_katona, only: collect_pecjoin_katona
    use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
    use test_pecjoin_identify, only: collect_pecjoin_identify
@@ -91,6 +92,7 @@ program tester
    suites = [suites, new_testsuite('pecjoin_modjoin_fe', collect_pecjoin_modjoin_fe)]
    suites = [suites, new_testsuite('pecjoin_modjoin_cyclic', collect_pecjoin_modjoin_cyclic)]
    suites = [suites, new_testsuite('advise', collect_advise)]
+   suites = [suites, new_testsuite('refine', collect_refine)]
    suites = [suites, new_testsuite('pecjoin_katona', collect_pecjoin_katona)]
    suites = [suites, new_testsuite('pecjoin_katona_friction', collect_pecjoin_katona_friction)]
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]

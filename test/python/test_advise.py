@@ -1,6 +1,7 @@
 """`pecplas --advise DECK` (issue 7) through the real executable: exit code 0, one table row
-per configuration, two advice lines whose error is below their threshold, and no results
-file written.
+per configuration (six on the deck's mesh, two on the refined one for a Q4 deck; a Q8 deck
+says why its mesh is not refined), two advice lines whose error is below their threshold, and
+no results file written.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
@@ -37,16 +38,29 @@ def test_advise_prints_table_and_advice_writes_nothing(pecplas, tmp_path):
     assert r.returncode == 0, r.stdout + r.stderr
     rows = [ln.split() for ln in r.stdout.splitlines()
             if ln.strip().startswith(("MODIFIED_NEWTON", "NEWTON"))]
-    assert len(rows) == 6, r.stdout
-    # the reference (NEWTON x2) has error 0
-    ref = [x for x in rows if x[0] == "NEWTON" and float(x[1]) == 2.0]
-    assert len(ref) == 1 and float(ref[0][4]) == 0.0, r.stdout
+    # columns: method, mesh, factor, increments, wall, error, status
+    assert len(rows) == 8, r.stdout
+    assert [x[1] for x in rows] == ["deck"] * 6 + ["h/2"] * 2, r.stdout
+    # the reference (NEWTON x2 on the refined mesh) has error 0
+    ref = [x for x in rows if x[0] == "NEWTON" and x[1] == "h/2" and float(x[2]) == 2.0]
+    assert len(ref) == 1 and float(ref[0][5]) == 0.0, r.stdout
+    assert "reference NEWTON x2 increments, mesh h/2" in r.stdout
     for thr, lab in ((0.01, "1 %"), (0.05, "5 %")):
         line = [ln for ln in r.stdout.splitlines() if ln.startswith(f"advice (error < {lab})")]
         assert len(line) == 1, r.stdout
         m = re.search(r"error ([0-9.E+-]+)$", line[0])
         assert m and float(m.group(1)) < thr, line[0]
     assert set(tmp_path.iterdir()) == before, "advice mode wrote files"
+
+
+def test_advise_q8_deck_keeps_its_mesh(pecplas):
+    r = run(pecplas, "--advise", "input/examples/strip_footing.inp")
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "mesh level not varied: element type Q8" in r.stdout
+    rows = [ln.split() for ln in r.stdout.splitlines()
+            if ln.strip().startswith(("MODIFIED_NEWTON", "NEWTON"))]
+    assert len(rows) == 6 and all(x[1] == "deck" for x in rows), r.stdout
+    assert "reference NEWTON x2 increments, mesh deck" in r.stdout
 
 
 def test_advise_bad_node_is_input_error(pecplas):

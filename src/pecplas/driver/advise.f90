@@ -155,8 +155,9 @@ contains
    end subroutine advise_deck
 
    !> Reads `deck` afresh (refined once for a row on the fine mesh), keeps its steps up to the
-   !> first loading step, applies the configuration of `row` and runs it quietly to a scratch results file (deleted); u(:, :, i) = the displacements at the end
-   !> (u allocated for `nvar` variants by the first run).
+   !> first loading step, applies the configuration of `row` and runs it quietly to a scratch
+   !> results file (deleted); u(:, 1:nnode, i) = the displacements at the end (u allocated for
+   !> `nvar` variants by the first run, the reference: the largest mesh).
    subroutine one_run(deck, i, nvar, row, model, u, error, free)
       character(len=*), intent(in) :: deck
       integer, intent(in) :: i, nvar
@@ -260,8 +261,9 @@ contains
       write (*, '(2x,a15,2x,a4,2x,a5,2x,a10,2x,a10,2x,a12,2x,a)') 'method', 'mesh', 'incr.', &
          'increments', 'wall [s]', 'error', 'status'
       do i = 1, size(rows)
-         write (*, FMT) rows(i)%method, mesh_text(rows(i)), factor_text(rows(i)%factor), &
-            rows(i)%increments, rows(i)%wall, err_text(rows(i)), rows(i)%status
+         write (*, FMT) rows(i)%method, merge('h/2 ', 'deck', rows(i)%fine), &
+            factor_text(rows(i)%factor), rows(i)%increments, rows(i)%wall, err_text(rows(i)), &
+            rows(i)%status
       end do
       write (*, '(a)') advice_line('1 %', rows, best(1))
       write (*, '(a)') advice_line('5 %', rows, best(2))
@@ -299,12 +301,16 @@ contains
       s = trim(row%method)//' x'//factor_text(row%factor)//' increments, mesh '//mesh_text(row)
    end function row_name
 
+   !> '0.5', '1', '2': the factor with no trailing zeros.
    function factor_text(f) result(s)
       real(wp), intent(in) :: f
       character(len=:), allocatable :: s
       character(len=8) :: buf
-      write (buf, '(g0.2)') f
+      write (buf, '(f8.2)') f
       s = trim(adjustl(buf))
+      do while (s(len(s):len(s)) == '0')
+         s = s(1:len(s) - 1)
+      end do
       if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
       if (s(1:1) == '.') s = '0'//s
    end function factor_text
