@@ -10,12 +10,13 @@
 !> refined mesh, so the errors of the deck's mesh include its discretisation error; when the
 !> model cannot be refined (quadratic elements, springs, point loads on a refined set, ...) the
 !> mesh level is not varied (a one-line reason) and the reference is NEWTON x2 on the deck's
-!> mesh. The error of a variant is |u - u_ref| / |u_ref| at the monitored node, at the end of
-!> the first step: the node of the deck (refinement keeps its ids and numbers) with the largest
-!> free (not imposed) displacement of the reference, or a node given by id; only the free
-!> components of its displacement count (an imposed one is the same in every run). Each run
-!> writes a scratch results file (the driver writes as it goes) that is deleted afterwards; its
-!> writing time is not counted.
+!> mesh; the same when the refined reference does not complete the step. The error of a
+!> variant is |u - u_ref| / |u_ref| at the monitored node, at the end of the first step: the
+!> node of the deck (refinement keeps its ids and numbers) with the largest free (not imposed)
+!> displacement of the reference, or a node given by id; only the free components of its
+!> displacement count (an imposed one is the same in every run). Each run writes a scratch
+!> results file (the driver writes as it goes) that is deleted afterwards; its writing time is
+!> not counted.
 module pecplas_driver_advise
    use pecplas_kinds, only: wp, ik8
    use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT
@@ -111,6 +112,17 @@ contains
       ! the reference first: it fixes the monitored node
       call one_run(deck, n, n, rows(ref), model, u, error, free)
       if (allocated(error)) return
+      if (.not. rows(ref)%ok .and. rows(ref)%fine) then
+         ! the refined model stops (e.g. a limit load reached earlier): the deck's mesh only
+         reason = 'the refined reference stopped ('//rows(ref)%status//')'
+         if (present(mesh_note)) mesh_note = reason
+         n = size(ADVISE_METHODS)*size(ADVISE_FACTORS)
+         rows = rows(1:n)
+         ref = n
+         deallocate (u)
+         call one_run(deck, n, n, rows(ref), model, u, error, free)
+         if (allocated(error)) return
+      end if
       if (.not. rows(ref)%ok) then
          call input_error(error, 'advise: the reference run ('//row_name(rows(ref))// &
             ') did not complete its first step ('//rows(ref)%status//'): no advice')
