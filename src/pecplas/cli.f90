@@ -75,8 +75,9 @@ contains
                'output/<deck>.h5) with an XDMF sidecar.'
             write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early.'
             write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
-               'x1/2, x1, x2 increments, prints their cost and error (reference NEWTON x2) '// &
-               'and the cheapest within 1 % and 5 %; writes no results.'
+               'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
+               'Q4/T3 decks), prints their cost and error (reference: the finest, NEWTON x2 '// &
+               'on h/2) and the cheapest within 1 % and 5 %; writes no results.'
             code = EXIT_OK
             return
          case ('--version')
