@@ -29,6 +29,7 @@ module pecjoin_laws_modjoin
       procedure :: elastic_tangent => mj_elastic_tangent
       procedure :: update => mj_update
       procedure :: symmetric_tangent => mj_symmetric_tangent
+      procedure :: strain_refusal => mj_strain_refusal
       procedure :: plastic_slip => mj_plastic_slip
       procedure :: state_names => mj_history_names
       procedure :: describe => mj_describe
@@ -87,6 +88,14 @@ contains
       class(modjoin_law_t), intent(in) :: this
       sym = .false.
    end function mj_symmetric_tangent
+
+   !> A thin layer's strains (jump / thickness) have no consistent reading for MODJOIN.
+   pure function mj_strain_refusal(this) result(why)
+      class(modjoin_law_t), intent(in) :: this
+      character(len=:), allocatable :: why
+      why = 'MODJOIN works on displacement jumps: K0, G0, BETA, A, B, A_G, B_CYC are per '// &
+         'length of relative displacement'
+   end function mj_strain_refusal
 
    pure real(wp) function mj_plastic_slip(this, state) result(slip)
       class(modjoin_law_t), intent(in) :: this

@@ -35,6 +35,9 @@ module pecjoin_laws_type
       procedure(update_ifc), deferred :: update
       !> False when the tangent can be non-symmetric (the solver then uses UMFPACK).
       procedure :: symmetric_tangent => law_symmetric_tangent
+      !> Why the law cannot work on strains (jump / thickness) as a thin layer passes them
+      !> ('' when it can: stiffnesses alone scale with the thickness).
+      procedure :: strain_refusal => law_strain_refusal
       !> Accumulated plastic slip sum |d eps_t^p| of a point with history `state` (for the
       !> results; 0 for a law without one).
       procedure :: plastic_slip => law_plastic_slip
@@ -87,6 +90,12 @@ contains
       class(interface_law_t), intent(in) :: this
       law_symmetric_tangent = .true.
    end function law_symmetric_tangent
+
+   pure function law_strain_refusal(this) result(why)
+      class(interface_law_t), intent(in) :: this
+      character(len=:), allocatable :: why
+      why = ''
+   end function law_strain_refusal
 
    pure real(wp) function law_plastic_slip(this, state) result(slip)
       class(interface_law_t), intent(in) :: this

@@ -20,7 +20,6 @@ module pecplas_io_deck_resolve_joints
    use pecjoin_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
    use pecjoin_laws_katona, only: is_katona
-   use pecjoin_laws_modjoin, only: modjoin_law_t
    implicit none (type, external)
    private
 
@@ -108,17 +107,15 @@ contains
             "'; known laws:"//law_names(model), error)
          return
       end if
-      ! A thin layer hands its law strains (jump / THICKNESS); MODJOIN's parameters are per
-      ! length of relative displacement (K0, G0, BETA, A, B, A_G, B_CYC): no consistent reading.
+      ! a thin layer hands its law strains (jump / THICKNESS): the law must accept them
       if (set%etype == 'THIN_LAYER') then
-         select type (law => model%laws(set%law_index)%law)
-         type is (modjoin_law_t)
+         msg = model%laws(set%law_index)%law%strain_refusal()
+         if (len(msg) > 0) then
             call line_error(state, raw%at, "joint set '"//set%name//"': a THIN_LAYER joint "// &
-               "passes strains (jump / THICKNESS) to its law, but MODJOIN law '"//raw%law// &
-               "' works on displacement jumps (its stiffnesses and lengths are per length of "// &
-               "relative displacement): use GOODMAN4, GOODMAN6 or SPRING joints", error)
+               "passes strains (jump / THICKNESS) to its law, but law '"//raw%law//"': "// &
+               msg//"; use GOODMAN4, GOODMAN6 or SPRING joints", error)
             return
-         end select
+         end if
       end if
       if (len(raw%edges) > 0) then
          call generated(state, model, raw, origin, next_id, set, edges, error)
