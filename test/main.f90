@@ -3,6 +3,7 @@
 program tester
    use pecplas_testing, only: testsuite_t, new_testsuite, run_testsuite
    use test_model_params, only: collect_model_params
+   use test_strings, only: collect_strings
    use test_pecjoin_friction, only: collect_pecjoin_friction
    use test_s1, only: collect_s1
    use test_initial, only: collect_initial
@@ -55,6 +56,7 @@ program tester
    ! One line per suite (appending keeps merges of new suites conflict-free).
    allocate (suites(0))
    suites = [suites, new_testsuite('model_params', collect_model_params)]
+   suites = [suites, new_testsuite('strings', collect_strings)]
    suites = [suites, new_testsuite('lame', collect_lame)]
    suites = [suites, new_testsuite('pecjoin_friction', collect_pecjoin_friction)]
    suites = [suites, new_testsuite('s1', collect_s1)]

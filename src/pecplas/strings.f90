@@ -1,10 +1,11 @@
-!> Case handling of names: keywords, parameters, set/material/law names are compared
-!> case-insensitively everywhere.
+!> Case handling of names (keywords, parameters, set/material/law names are compared
+!> case-insensitively everywhere) and the short number texts of messages and tables.
 module pecplas_strings
+   use pecplas_kinds, only: wp
    implicit none (type, external)
    private
 
-   public :: upper, same_name
+   public :: upper, same_name, itoa, decimal_text
 
 contains
 
@@ -25,5 +26,41 @@ contains
       character(len=*), intent(in) :: a, b
       same_name = upper(a) == upper(b)
    end function same_name
+
+   !> An integer as text, no blanks.
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function itoa
+
+   !> x with at most `digits` decimals and no trailing zeros: 0.5, 1, 2.25, -0.125.
+   function decimal_text(x, digits) result(s)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: digits
+      character(len=:), allocatable :: s
+      character(len=48) :: buf
+      character(len=16) :: fmt
+      integer :: i
+      write (fmt, '(a,i0,a)') '(f0.', digits, ')'
+      write (buf, fmt) x
+      s = trim(adjustl(buf))
+      if (index(s, '.') > 0) then
+         i = len(s)
+         do while (s(i:i) == '0')
+            i = i - 1
+         end do
+         if (s(i:i) == '.') i = i - 1
+         s = s(1:i)
+      end if
+      ! a value that rounds to zero (e.g. '-.000' trimmed to '-') is '0', never '-0'
+      if (s == '' .or. s == '-') s = '0'
+      if (s(1:1) == '.') s = '0'//s
+      if (len(s) > 1) then
+         if (s(1:2) == '-.') s = '-0'//s(2:)
+      end if
+   end function decimal_text
 
 end module pecplas_strings

@@ -8,6 +8,7 @@ module pecjoin_elements_factory
    use pecjoin_elements_goodman4, only: goodman4_t
    use pecjoin_elements_goodman6, only: goodman6_t
    use pecjoin_elements_thin_layer, only: thin_layer_t
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -85,13 +86,6 @@ contains
       end do
    end function joint_type_names
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
    pure function upper(s) result(u)
       character(len=*), intent(in) :: s

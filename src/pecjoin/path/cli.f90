@@ -12,6 +12,7 @@ module pecjoin_path_cli
    use pecjoin_path_driver, only: path_result_t, run_path
    use pecjoin_path_writers, only: write_path_csv, write_path_h5
    use pecplas_command, only: command_error
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -134,12 +135,5 @@ contains
       s = trim(adjustl(buf))
    end function num
 
-   function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
 end module pecjoin_path_cli

@@ -17,6 +17,7 @@ module pecjoin_sensitivity_cli
       CURVE_LABELS, thesis_curves, table_iii2_params, THESIS_SIGMA_N0, THESIS_EPS_T
    use pecjoin_sensitivity_report, only: print_sensitivity, write_sensitivity_csv
    use pecplas_command, only: command_error
+   use pecplas_strings, only: decimal_text
    implicit none (type, external)
    private
 
@@ -160,8 +161,8 @@ contains
       word = 'table III.2'
       if (len(deck_file) > 0) word = 'deck '//deck_file
       if (.not. quiet) call print_sensitivity(6, res, CURVE_LABELS, 'Sensitivity of '// &
-         runner%law_type//' ('//word//') at sigma_n0 = '//num(sigma_n0)//' kPa, eps_t 0 -> '// &
-         num(eps_max)//' mm', with_thesis)
+         runner%law_type//' ('//word//') at sigma_n0 = '//decimal_text(sigma_n0, 3)// &
+         ' kPa, eps_t 0 -> '//decimal_text(eps_max, 3)//' mm', with_thesis)
       call make_directories(path_dir(out))
       call write_sensitivity_csv(out, res, CURVE_LABELS, with_thesis, error)
       if (allocated(error)) then
@@ -192,17 +193,5 @@ contains
       write (*, '(a)') '  -o FILE.csv       raw and normalised Q_p (output/sensitivity.csv)'
    end subroutine help
 
-   function num(x) result(s)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: s
-      character(len=32) :: buf
-      write (buf, '(f0.3)') x
-      s = trim(adjustl(buf))
-      do while (s(len(s):len(s)) == '0')
-         s = s(1:len(s) - 1)
-      end do
-      if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
-      if (s(1:1) == '.') s = '0'//s
-   end function num
 
 end module pecjoin_sensitivity_cli

@@ -34,6 +34,7 @@ module pecplas_driver_advise
    use pecplas_driver_timers, only: wall_time
    use pecplas_files, only: path_stem
    use pecplas_command, only: command_error
+   use pecplas_strings, only: itoa, decimal_text
    implicit none (type, external)
    private
 
@@ -274,7 +275,7 @@ contains
          'increments', 'wall [s]', 'error', 'status'
       do i = 1, size(rows)
          write (*, FMT) rows(i)%method, merge('h/2 ', 'deck', rows(i)%fine), &
-            factor_text(rows(i)%factor), rows(i)%increments, rows(i)%wall, err_text(rows(i)), &
+            decimal_text(rows(i)%factor, 2), rows(i)%increments, rows(i)%wall, err_text(rows(i)), &
             rows(i)%status
       end do
       write (*, '(a)') advice_line('1 %', rows, best(1))
@@ -292,8 +293,8 @@ contains
          return
       end if
       line = 'advice (error < '//what//'): METHOD='//trim(rows(b)%method)//', INCREMENTS='// &
-         itoa(rows(b)%increments)//' in the first loading step (x'//factor_text(rows(b)%factor)// &
-         ')'
+         itoa(rows(b)%increments)//' in the first loading step (x'// &
+         decimal_text(rows(b)%factor, 2)//')'
       if (rows(b)%fine) line = line//', mesh refined once (h/2)'
       line = line//', error '//err_text(rows(b))
    end function advice_line
@@ -310,22 +311,10 @@ contains
    function row_name(row) result(s)
       type(advise_row_t), intent(in) :: row
       character(len=:), allocatable :: s
-      s = trim(row%method)//' x'//factor_text(row%factor)//' increments, mesh '//mesh_text(row)
+      s = trim(row%method)//' x'//decimal_text(row%factor, 2)//' increments, mesh '//mesh_text(row)
    end function row_name
 
    !> '0.5', '1', '2': the factor with no trailing zeros.
-   function factor_text(f) result(s)
-      real(wp), intent(in) :: f
-      character(len=:), allocatable :: s
-      character(len=8) :: buf
-      write (buf, '(f8.2)') f
-      s = trim(adjustl(buf))
-      do while (s(len(s):len(s)) == '0')
-         s = s(1:len(s) - 1)
-      end do
-      if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
-      if (s(1:1) == '.') s = '0'//s
-   end function factor_text
 
    function err_text(row) result(s)
       type(advise_row_t), intent(in) :: row
@@ -361,12 +350,5 @@ contains
       if (ios == 0) close (unit, status='delete')
    end subroutine delete_file
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
 end module pecplas_driver_advise

@@ -4,6 +4,7 @@ module pecplas_io_gmsh_sets
    use pecplas_error, only: error_t, deck_error
    use pecplas_model_mesh, only: mesh_t, element_set_t, node_set_t, edge_set_t
    use pecplas_model_node_lookup, only: node_lookup_t
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -321,12 +322,5 @@ contains
       call move_alloc(tmp, a)
    end subroutine grow
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
 end module pecplas_io_gmsh_sets

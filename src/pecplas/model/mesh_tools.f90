@@ -6,6 +6,7 @@ module pecplas_model_mesh_tools
    use pecplas_error, only: error_t, input_error, fatal_error
    use pecplas_model_mesh, only: mesh_t, element_set_t, node_set_t, edge_set_t
    use pecplas_model_node_lookup, only: node_lookup_t
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -345,12 +346,5 @@ contains
       end if
    end function eid
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
 end module pecplas_model_mesh_tools

@@ -2,7 +2,7 @@
 !> -2., .5 and nothing else), case folding and name lists for messages.
 module pecplas_io_deck_text
    use pecplas_kinds, only: wp
-   use pecplas_strings, only: upper, same_name
+   use pecplas_strings, only: upper, same_name, itoa
    implicit none (type, external)
    private
 
@@ -85,13 +85,6 @@ contains
    end subroutine add_name
 
    !> Integer as text (messages).
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=12) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
    pure logical function is_digit(c)
       character(len=1), intent(in) :: c

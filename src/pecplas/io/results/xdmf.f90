@@ -9,6 +9,7 @@ module pecplas_io_results_xdmf
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: increment_group
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -129,7 +130,7 @@ contains
          associate (set => layout%sets(s))
             write (u, '(a)') '    <Grid Name="'//set%name//'" GridType="Uniform">'
             write (u, '(a)') '     <Topology TopologyType="'//set%topology//'" NumberOfElements="'// &
-               int_text(set%nel)//'" NodesPerElement="'//int_text(set%npe)//'">'
+               itoa(set%nel)//'" NodesPerElement="'//itoa(set%npe)//'">'
             call data_item(u, h5//'/mesh/sets/'//set%name//'/connectivity', set%nel, set%npe, &
                'Int', 4)
             write (u, '(a)') '     </Topology>'
@@ -163,8 +164,8 @@ contains
    subroutine data_item(u, ref, rows, cols, number_type, precision)
       integer, intent(in) :: u, rows, cols, precision
       character(len=*), intent(in) :: ref, number_type
-      write (u, '(a)') '      <DataItem Dimensions="'//int_text(rows)//' '//int_text(cols)// &
-         '" NumberType="'//number_type//'" Precision="'//int_text(precision)// &
+      write (u, '(a)') '      <DataItem Dimensions="'//itoa(rows)//' '//itoa(cols)// &
+         '" NumberType="'//number_type//'" Precision="'//itoa(precision)// &
          '" Format="HDF">'//ref//'</DataItem>'
    end subroutine data_item
 
@@ -174,13 +175,6 @@ contains
       name = path(index(path, '/', back=.true.) + 1:)
    end function basename
 
-   function int_text(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function int_text
 
    function real_text(x) result(text)
       real(wp), intent(in) :: x

@@ -1,0 +1,58 @@
+!> Name folding and the short number texts shared by messages and tables.
+module test_strings
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t
+   use pecplas_strings, only: upper, same_name, itoa, decimal_text
+   use pecplas_testing, only: unittest_t, new_unittest, check
+   implicit none (type, external)
+   private
+   public :: collect_strings
+
+contains
+
+   subroutine collect_strings(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('names', test_names), &
+               new_unittest('integers', test_integers), &
+               new_unittest('decimals', test_decimals)]
+   end subroutine collect_strings
+
+   subroutine test_names(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check(error, upper('  Mohr_coulomb ') == 'MOHR_COULOMB', 'upper trims and folds')
+      if (allocated(error)) return
+      call check(error, same_name('Shaft', 'SHAFT ') .and. .not. same_name('a', 'b'), &
+         'same_name ignores case and blanks')
+   end subroutine test_names
+
+   subroutine test_integers(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check(error, itoa(0) == '0' .and. itoa(-42) == '-42' .and. &
+         itoa(huge(1)) == '2147483647', 'itoa: no blanks, sign, largest integer')
+   end subroutine test_integers
+
+   !> Each case is a text a person reads in a table: no trailing zeros, a leading 0, no '-0'.
+   subroutine test_decimals(error)
+      type(error_t), allocatable, intent(out) :: error
+      call expect(0.5_wp, 2, '0.5')
+      call expect(1.0_wp, 2, '1')
+      call expect(2.0_wp, 2, '2')
+      call expect(56.0_wp, 3, '56')
+      call expect(2.25_wp, 3, '2.25')
+      call expect(-0.125_wp, 3, '-0.125')
+      call expect(0.0_wp, 3, '0')
+      call expect(-1.0e-9_wp, 3, '0')
+      call expect(1.0e-4_wp, 2, '0')
+      call expect(100.0_wp, 2, '100')
+   contains
+      subroutine expect(x, d, text)
+         real(wp), intent(in) :: x
+         integer, intent(in) :: d
+         character(len=*), intent(in) :: text
+         if (allocated(error)) return
+         call check(error, decimal_text(x, d) == text, 'decimal_text gives '''// &
+            decimal_text(x, d)//''', expected '''//text//'''')
+      end subroutine expect
+   end subroutine test_decimals
+
+end module test_strings
