@@ -5,22 +5,19 @@ no results file written.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
-import os
 import re
 import subprocess
 from pathlib import Path
 
 import pytest
+from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="session")
 def pecplas():
-    exe = os.environ.get("PECPLAS_BIN")
-    if exe and Path(exe).exists():
-        return [exe]
-    return ["fpm", "run", "--target", "pecplas", "--"]
+    return pecplas_cmd()
 
 
 def run(pecplas, *args, cwd=ROOT):

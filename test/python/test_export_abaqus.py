@@ -7,7 +7,6 @@ joint, where both codes must give the exact settlement 2 p h / M + p / K_n (unia
 linear penalty): the joint stays closed and in stick, so the case is elastic and bonded."""
 
 import math
-import os
 import shutil
 import subprocess
 import sys
@@ -19,6 +18,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 import export_abaqus as ex  # noqa: E402
+from pecplas_exe import pecplas_cmd  # noqa: E402
 
 E, NU, KN, P, H = 1.0e4, 0.3, 1.0e5, 100.0, 1.0
 M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
@@ -145,9 +145,7 @@ def test_initial_stress_is_geostatic(s2):
 
 
 def ours(deck, out):
-    exe = os.environ.get("PECPLAS_BIN")
-    cmd = [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
-    r = subprocess.run([*cmd, str(deck), "-o", str(out), "--quiet"], cwd=ROOT,
+    r = subprocess.run([*pecplas_cmd(), str(deck), "-o", str(out), "--quiet"], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     with h5py.File(out) as f:

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECKER = ROOT / "tools" / "check_results.py"
@@ -40,8 +41,7 @@ def mutate(text, rng):
 
 @pytest.fixture(scope="module")
 def exe():
-    e = os.environ.get("PECPLAS_BIN")
-    return [e] if e else ["fpm", "run", "--target", "pecplas", "--"]
+    return pecplas_cmd()
 
 
 @pytest.mark.parametrize("case", range(int(os.environ.get("PECPLAS_FUZZ_CASES", "80"))))

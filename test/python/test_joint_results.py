@@ -4,7 +4,6 @@ in stick), and tools/check_results.py accepting the file and catching damaged jo
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else runs through fpm."""
 
-import os
 import shutil
 import subprocess
 import sys
@@ -13,6 +12,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 import pytest
+from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECKER = ROOT / "tools" / "check_results.py"
@@ -21,8 +21,7 @@ DECK = "test/data/joints/patch_goodman6_axi_gen.inp"
 
 @pytest.fixture(scope="module")
 def results(tmp_path_factory):
-    exe = os.environ.get("PECPLAS_BIN")
-    cmd = [exe] if exe and Path(exe).exists() else ["fpm", "run", "--target", "pecplas", "--"]
+    cmd = pecplas_cmd()
     out = tmp_path_factory.mktemp("joints") / "patch.h5"
     r = subprocess.run([*cmd, DECK, "-o", str(out)], cwd=ROOT, capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr

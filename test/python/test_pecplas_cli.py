@@ -5,7 +5,6 @@ test_s2_s3.py).
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -13,6 +12,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 import pytest
+from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECKER = ROOT / "tools" / "check_results.py"
@@ -20,10 +20,7 @@ CHECKER = ROOT / "tools" / "check_results.py"
 
 @pytest.fixture(scope="session")
 def pecplas():
-    exe = os.environ.get("PECPLAS_BIN")
-    if exe and Path(exe).exists():
-        return [exe]
-    return ["fpm", "run", "--target", "pecplas", "--"]
+    return pecplas_cmd()
 
 
 def run(pecplas, *args):

@@ -2,13 +2,13 @@
 the end of the lift, then closed and compressed again; never a NaN. Uses the file written by
 the Fortran suite `s1` (build/test_out/s1/), or runs the deck itself."""
 
-import os
 import subprocess
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
+from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 H5 = ROOT / "build" / "test_out" / "s1" / "s1_open_close_kn1e5.h5"
@@ -18,8 +18,7 @@ H5 = ROOT / "build" / "test_out" / "s1" / "s1_open_close_kn1e5.h5"
 def results(tmp_path_factory):
     path = H5
     if not path.exists():
-        exe = os.environ.get("PECPLAS_BIN")
-        cmd = [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
+        cmd = pecplas_cmd()
         path = tmp_path_factory.mktemp("s1") / "oc.h5"
         run = subprocess.run([*cmd, "input/s1/s1_open_close_kn1e5.inp", "-o", str(path),
                               "--quiet"], cwd=ROOT, capture_output=True, text=True)

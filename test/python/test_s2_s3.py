@@ -18,7 +18,6 @@ Katona: with K_t = E_soil the penalty joints are soft tangentially; the Katona p
 stiff limit (K_t -> infinity), checked by taking the springs' K_t up to 1e4 E_soil."""
 import json
 import math
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -31,6 +30,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 import make_s2_decks  # noqa: E402
 from s2_reference import QS_HAND, W_RW, randolph_wroth  # noqa: E402
 from s2_results import head_curve, last_key, scene_values, settlement_at, shaft  # noqa: E402
+from pecplas_exe import pecplas_cmd  # noqa: E402
 
 QS = 0.5 * 18.0 * math.tan(math.radians(30.0)) * math.pi * 1.0 * 10.0**2 / 2.0
 MODELS = ("goodman", "ghaboussi", "spring", "mohr_coulomb")
@@ -39,13 +39,8 @@ PSI = (0, 1, 5, 15, 30)
 REFERENCE = json.loads((ROOT / "test" / "reference" / "s2_s3.json").read_text())
 
 
-def pecplas():
-    exe = os.environ.get("PECPLAS_BIN")
-    return [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
-
-
 def run_deck(deck, h5):
-    r = subprocess.run([*pecplas(), str(deck), "-o", str(h5), "--quiet"], cwd=ROOT,
+    r = subprocess.run([*pecplas_cmd(), str(deck), "-o", str(h5), "--quiet"], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, f"{deck}: {r.stderr}"
     return h5

@@ -12,7 +12,6 @@ point driver's (pecplas-path, same law, CNL 100 kPa) on the same slip path withi
 |tau|; eps_n within 2 % (measured 0.95 %). Stored regression values with their checks:
 test/reference/s5_s6.json."""
 import json
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -24,14 +23,14 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 from s5_results import (L, SIGMA_N0, compare, interface, keys_and_steps,  # noqa: E402
                         mid_history, point_driver, step_ends)
+from pecplas_exe import pecplas_cmd  # noqa: E402
 
 END = 0.02    # m: 'away from the ends' = beyond one wall thickness (H / 5) from each wall
 
 
 @pytest.fixture(scope="module")
 def run(tmp_path_factory):
-    exe = os.environ.get("PECPLAS_BIN")
-    cmd = [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
+    cmd = pecplas_cmd()
     out = tmp_path_factory.mktemp("s5")
     h5 = out / "s5_shear_box.h5"
     r = subprocess.run([*cmd, str(ROOT / "input/s5/s5_shear_box.inp"), "-o", str(h5),

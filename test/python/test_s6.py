@@ -14,7 +14,6 @@ the MODJOIN / Mohr-Coulomb difference is printed. Stored regression values with 
 test/reference/s5_s6.json."""
 import json
 import math
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -25,6 +24,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 from s6_results import head_curve, keys_and_loads, shaft, uplift_at  # noqa: E402
+from pecplas_exe import pecplas_cmd  # noqa: E402
 
 A, L, GAMMA, PHI = 0.0275, 1.62, 17.0, 41.0
 QS0 = 0.5 * GAMMA * math.tan(math.radians(PHI)) * math.pi * 2 * A * L**2 / 2.0
@@ -37,8 +37,7 @@ REF = json.loads((ROOT / "test/reference/s5_s6.json").read_text())["s6"]
 
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
-    exe = os.environ.get("PECPLAS_BIN")
-    cmd = [exe] if exe else ["fpm", "run", "--target", "pecplas", "--"]
+    cmd = pecplas_cmd()
     out = tmp_path_factory.mktemp("s6")
     files = {}
     for name in DECKS:
