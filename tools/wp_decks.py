@@ -42,6 +42,12 @@ def _join(groups):
     return "\n".join(line for g in groups for line in g) + "\n"
 
 
+def _set_targets(group, factor):
+    """A *STEP group with every pattern's target factor (last number of each data line) set."""
+    return [group[0]] + [re.sub(r",\s*[-+0-9.eE]+\s*$", f", {factor:.12g}", d)
+                         if d.strip() and not d.startswith("**") else d for d in group[1:]]
+
+
 def first_step_only(text, factor=None, increments=None):
     """Keep only the first *STEP (the loading); optionally set its target pattern factor
     (every pattern on its data lines) and its INCREMENTS."""
@@ -54,8 +60,7 @@ def first_step_only(text, factor=None, increments=None):
             if increments is not None:
                 g[0] = _sub(r"INCREMENTS=\d+", f"INCREMENTS={increments}", g[0], "increments")
             if factor is not None:
-                g = [g[0]] + [re.sub(r",\s*[-+0-9.eE]+\s*$", f", {factor:.12g}", d)
-                              if d.strip() and not d.startswith("**") else d for d in g[1:]]
+                g = _set_targets(g, factor)
         out.append(g)
     if nstep == 0:
         raise ValueError("deck edit 'first step': no *STEP")
@@ -82,9 +87,7 @@ def scale_steps(text, inc_factor, last_target=None, last_increments=None):
             n = last_increments
         g[0] = g[0][:m.start(1)] + str(max(1, round(n * inc_factor))) + g[0][m.end(1):]
         if i == steps[-1] and last_target is not None:
-            groups[i] = [g[0]] + [re.sub(r",\s*[-+0-9.eE]+\s*$", f", {last_target:.12g}", d)
-                                  if d.strip() and not d.startswith("**") else d
-                                  for d in g[1:]]
+            groups[i] = _set_targets(g, last_target)
     return _join(groups)
 
 
