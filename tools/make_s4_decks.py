@@ -95,36 +95,32 @@ def main():
                     name, key, control, sigma, [8.0], 400, MONOTONIC_FIGS[key],
                     f"{control} ({what}) at sigma_n0 = {sigma} kPa, eps_t 0 -> 8 mm",
                     "nothing beyond the units reading (0.02 mm increments).")
-    cycles = {1: [2.0, -2.0, 2.0], 10: [2.0] + [-2.0, 2.0] * 10}
-    for key, fig in (("iii6_dr80", "fig. III.30"), ("iii6_dr15", "fig. III.29")):
-        for n, targets in cycles.items():
-            name = f"s4_{key}_cyclic_cnl_{n}"
-            decks[name] = deck(
-                name, key, "CNL", 100, targets, 200, fig,
-                f"cyclic CNL, {n} cycle(s) after the primary loading",
-                "amplitude +/-2 mm, sigma_n0 = 100 kPa, cycles counted after the primary "
-                "loading 0 -> +2 mm" + ("; alpha = 1, A = 0 for the '/' of table III.6"
-                                         if key.endswith("dr15") else "") + ".")
-    # +/-1 mm decks (added, issue 5): at the SPEC-assumed +/-2 mm the dense set reaches its
-    # primary surface every half-cycle past the primary peak (k_peak = 3.56 mm) and the
-    # end-of-cycle shear softens; the amplitude is not given by the thesis.
-    small = {1: [1.0, -1.0, 1.0], 10: [1.0] + [-1.0, 1.0] * 10}
-    for key, fig in (("iii6_dr80", "fig. III.30"), ("iii6_dr15", "fig. III.29")):
-        for n, targets in small.items():
-            name = f"s4_{key}_cyclic_cnl_{n}_a1"
-            decks[name] = deck(
-                name, key, "CNL", 100, targets, 200, fig,
-                f"cyclic CNL, {n} cycle(s) after the primary loading",
-                "amplitude +/-1 mm (not given by the thesis; Desai et al. 1985 ran "
-                "displacement-controlled cyclic tests with the amplitude as a test variable). "
-                "Reason for +/-1 mm beside SPEC's +/-2 mm: at +/-2 mm the dense set reaches its "
-                "primary surface every half-cycle, its plastic slip passes the primary peak "
-                "of R_m (k = 3.56 mm) and the end-of-cycle shear softens after cycle 2; at "
-                "+/-1 mm both sets show the thesis's cyclic hardening (end-of-cycle shear grows "
-                "and the growth slows). sigma_n0 = 100 kPa, cycles counted after the primary "
-                "loading 0 -> +1 mm" + ("; alpha = 1, A = 0 for the '/' of table III.6"
-                                         if key.endswith("dr15") else "") + ".",
-                who="issue 5, beside SPEC")
+    # cyclic CNL at SPEC's assumed +/-2 mm, and at +/-1 mm (added, issue 5): at +/-2 mm the
+    # dense set reaches its primary surface every half-cycle past the primary peak
+    # (k_peak = 3.56 mm) and the end-of-cycle shear softens; the thesis gives no amplitude.
+    why = {2.0: ("", "", None),
+           1.0: ("_a1", " (not given by the thesis; Desai et al. 1985 ran displacement-"
+                 "controlled cyclic tests with the amplitude as a test variable). Reason for "
+                 "+/-1 mm beside SPEC's +/-2 mm: at +/-2 mm the dense set reaches its primary "
+                 "surface every half-cycle, its plastic slip passes the primary peak of R_m "
+                 "(k = 3.56 mm) and the end-of-cycle shear softens after cycle 2; at +/-1 mm "
+                 "both sets show the thesis's cyclic hardening (end-of-cycle shear grows and the "
+                 "growth slows).", "issue 5, beside SPEC")}
+    for amp, (suffix, reason, who) in why.items():
+        cycles = {1: [amp, -amp, amp], 10: [amp] + [-amp, amp] * 10}
+        for key, fig in (("iii6_dr80", "fig. III.30"), ("iii6_dr15", "fig. III.29")):
+            for n, targets in cycles.items():
+                name = f"s4_{key}_cyclic_cnl_{n}{suffix}"
+                assumed = (f"amplitude +/-{amp:g} mm{reason}" + (" sigma_n0" if reason else
+                           ", sigma_n0") + f" = 100 kPa, cycles counted after the primary "
+                           f"loading 0 -> +{amp:g} mm" +
+                           ("; alpha = 1, A = 0 for the '/' of table III.6"
+                            if key.endswith("dr15") else "") + ".")
+                extra = {"who": who} if who else {}
+                decks[name] = deck(name, key, "CNL", 100, targets, 200, fig,
+                                   f"cyclic CNL, {n} cycle(s) after the primary loading",
+                                   assumed, **extra)
+    cycles = {1: [2.0, -2.0, 2.0]}
     name = "s4_iii6_dr80_cyclic_cnd_193"
     decks[name] = deck(name, "iii6_dr80", "CND", 193, cycles[1], 200, "fig. III.31",
                        "cyclic CND at sigma_n0 = 193 kPa, one cycle after the primary loading",
