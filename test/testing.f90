@@ -84,6 +84,8 @@ contains
    end subroutine check_close
 
    !> Runs every test of a suite (or only `only` when given); adds failures to `nfail`.
+   !> A test name `only` that the suite does not hold counts as a failure and lists the
+   !> suite's test names, so a misspelt name cannot pass as "0 passed, 0 failed".
    subroutine run_testsuite(suite, npass, nfail, only)
       type(testsuite_t), intent(in) :: suite
       integer, intent(inout) :: npass, nfail
@@ -91,10 +93,24 @@ contains
       type(unittest_t), allocatable :: tests(:)
       type(error_t), allocatable :: error
       integer :: i
+      logical :: filtered
       call suite%collect(tests)
+      filtered = .false.
+      if (present(only)) filtered = len_trim(only) > 0
+      if (filtered) then
+         if (.not. any([(tests(i)%name == only, i=1, size(tests))])) then
+            nfail = nfail + 1
+            write (*, '(a)') '  FAIL  '//suite%name//': unknown test '//trim(only)// &
+               '; known tests of this suite:'
+            do i = 1, size(tests)
+               write (*, '(a)') '          '//tests(i)%name
+            end do
+            return
+         end if
+      end if
       do i = 1, size(tests)
-         if (present(only)) then
-            if (len_trim(only) > 0 .and. tests(i)%name /= only) cycle
+         if (filtered) then
+            if (tests(i)%name /= only) cycle
          end if
          call tests(i)%run(error)
          if (allocated(error)) then

@@ -4,8 +4,13 @@
 #   1. fpm test   (debug profile with -fcheck=all: every suite of test/main.f90)
 #   2. CMake      (release build in $CMAKE_DIR, one CTest test per suite)
 #   3. pytest     (test/python, the result checker's tests), when present
-# then one closing line "total: N passed, M failed" counting distinct tests (the Fortran
-# tests once, from stage 1; CTest runs the same suites in another build) plus the Python ones.
+# then one closing line "total: N passed, M failed, K skipped" counting distinct tests (the
+# Fortran tests once, from stage 1; CTest runs the same suites in another build) plus the Python
+# ones; every skipped Python test prints its reason (pytest -rs, test/python/conftest.py).
+# The Python tests run only binaries of this same run: after a successful CMake build this script
+# writes $CMAKE_DIR/make-test.stamp (SHA-256 of each executable), removed before the build, and
+# test/python/pecplas_exe.py refuses a binary that does not match it; Fortran-written files must
+# be newer than build/test-logs/make-test.start. When the CMake build fails, pytest does not run.
 # Exits non-zero when any stage failed. The Makefile sets FPM, PYTHON, CMAKE_DIR and JOBS.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -17,9 +22,15 @@ JOBS=${JOBS:-2}
 FPM_TEST_FLAGS=${FPM_TEST_FLAGS:--fcheck=all}
 logdir=build/test-logs
 mkdir -p "$logdir"
+start_stamp=$logdir/make-test.start
+touch "$start_stamp"
+build_stamp=$CMAKE_DIR/make-test.stamp
+rm -f "$build_stamp"
+cmake_built=0
 
 passed=0
 failed=0
+skipped=0
 summary=()
 status=0
 
@@ -62,6 +73,11 @@ if ((rc == 0)); then
   cmake --build "$CMAKE_DIR" -j"$JOBS" 2>&1 | tee "$logdir/cmake-build.log"
   rc=${PIPESTATUS[0]}
   if ((rc == 0)); then
+    cmake_built=1
+    {
+      echo "# written by tools/test_all.sh after the CMake build of $(date -u +%FT%TZ)"
+      find "$CMAKE_DIR" -maxdepth 1 -type f -perm -u+x -name 'pecplas*' -exec sha256sum {} +
+    } >"$build_stamp.tmp" && mv "$build_stamp.tmp" "$build_stamp"
     stage "ctest ${ctest_args[*]}"
     ctest "${ctest_args[@]}" 2>&1 | tee "$logdir/ctest.log"
     rc=${PIPESTATUS[0]}
@@ -82,19 +98,28 @@ else
 fi
 
 # ---- 3. pytest ----
-if compgen -G 'test/python/test_*.py' >/dev/null; then
+if ! compgen -G 'test/python/test_*.py' >/dev/null; then
+  note ok "pytest: no test/python/test_*.py yet"
+elif ((cmake_built == 0)); then
+  failed=$((failed + 1))
+  note FAIL "pytest test/python: not run, the CMake build failed (no fresh binaries to test)"
+else
   stage "$PYTHON -m pytest test/python"
   export PECPLAS_BIN=$PWD/$CMAKE_DIR/pecplas
-  "$PYTHON" -m pytest -q -p no:cacheprovider test/python 2>&1 | tee "$logdir/pytest.log"
+  export PECPLAS_STAMP=$PWD/$build_stamp
+  export PECPLAS_TEST_START=$PWD/$start_stamp
+  "$PYTHON" -m pytest -q -rs -p no:cacheprovider test/python 2>&1 | tee "$logdir/pytest.log"
   rc=${PIPESTATUS[0]}
-  line=$(grep -E '[0-9]+ (passed|failed|errors?)( |,|$)' "$logdir/pytest.log" | tail -n 1)
-  np=0 nf=0
+  line=$(grep -E '[0-9]+ (passed|failed|skipped|errors?)( |,|$)' "$logdir/pytest.log" | tail -n 1)
+  np=0 nf=0 ns=0
   [[ $line =~ ([0-9]+)\ passed ]] && np=${BASH_REMATCH[1]}
   [[ $line =~ ([0-9]+)\ failed ]] && nf=${BASH_REMATCH[1]}
+  [[ $line =~ ([0-9]+)\ skipped ]] && ns=${BASH_REMATCH[1]}
   [[ $line =~ ([0-9]+)\ errors? ]] && nf=$((nf + BASH_REMATCH[1]))
   passed=$((passed + np))
+  skipped=$((skipped + ns))
   if ((rc == 0)); then
-    note ok "pytest test/python: $np passed"
+    note ok "pytest test/python: $np passed, $ns skipped"
   elif ((rc == 5)); then
     note ok "pytest test/python: no tests collected"
   else
@@ -102,8 +127,6 @@ if compgen -G 'test/python/test_*.py' >/dev/null; then
     failed=$((failed + nf))
     note FAIL "pytest test/python: exit $rc, ${line:-no summary}"
   fi
-else
-  note ok "pytest: no test/python/test_*.py yet"
 fi
 
 stage "summary"
@@ -111,5 +134,9 @@ printf '%s\n' "${summary[@]}"
 if ((status != 0)); then
   echo "make test: FAILED (logs in $logdir)"
 fi
-echo "total: $passed passed, $failed failed"
+if ((skipped > 0)); then
+  echo "skipped (reasons):"
+  grep -E '^SKIPPED' "$logdir/pytest.log" | sed 's/^/  /'
+fi
+echo "total: $passed passed, $failed failed, $skipped skipped"
 exit "$status"

@@ -4,7 +4,9 @@ and checks that the checker itself catches broken files.
 Run from the project root:
     python3 -m pytest test/python/test_results_file.py
 This first runs `fpm test -- io_results` (which writes output/test/io_results_*.h5); set
-PECPLAS_NO_FPM=1 to use the files already there.
+PECPLAS_NO_FPM=1 to use the files already there. Under `make test` the Fortran stage has just
+written them: $PECPLAS_TEST_START names a file touched when that run began, and a file older
+than it (left by an earlier run) fails the test.
 """
 
 import os
@@ -35,7 +37,15 @@ EXPECTED = {
 
 @pytest.fixture(scope="session", autouse=True)
 def fortran_output():
-    """Writes the files with the Fortran test suite (unless PECPLAS_NO_FPM is set)."""
+    """Writes the files with the Fortran test suite (unless PECPLAS_NO_FPM is set, or under
+    `make test`, whose first stage wrote them)."""
+    start = os.environ.get("PECPLAS_TEST_START")
+    if start:
+        t0 = os.stat(start).st_mtime
+        stale = [n for n in EXPECTED if not (OUT / n).exists() or (OUT / n).stat().st_mtime < t0]
+        assert not stale, ("not written by the Fortran stage of this `make test` (did "
+                           "`fpm test` fail?): " + ", ".join(stale))
+        return
     if not os.environ.get("PECPLAS_NO_FPM") and shutil.which("fpm"):
         run = subprocess.run(["fpm", "test", "--", "io_results"], cwd=ROOT,
                              capture_output=True, text=True)

@@ -1,6 +1,6 @@
 """S1 opening-closing through the results file: compressed, then open with zero stress at
-the end of the lift, then closed and compressed again; never a NaN. Uses the file written by
-the Fortran suite `s1` (build/test_out/s1/), or runs the deck itself."""
+the end of the lift, then closed and compressed again; never a NaN. Runs the deck itself into
+a fresh temporary directory every time (never a file left by an earlier run)."""
 
 import subprocess
 from pathlib import Path
@@ -11,18 +11,15 @@ import pytest
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-H5 = ROOT / "build" / "test_out" / "s1" / "s1_open_close_kn1e5.h5"
 
 
 @pytest.fixture(scope="module")
 def results(tmp_path_factory):
-    path = H5
-    if not path.exists():
-        cmd = pecplas_cmd()
-        path = tmp_path_factory.mktemp("s1") / "oc.h5"
-        run = subprocess.run([*cmd, "input/s1/s1_open_close_kn1e5.inp", "-o", str(path),
-                              "--quiet"], cwd=ROOT, capture_output=True, text=True)
-        assert run.returncode == 0, run.stderr
+    path = tmp_path_factory.mktemp("s1") / "oc.h5"
+    run = subprocess.run([*pecplas_cmd(), "input/s1/s1_open_close_kn1e5.inp", "-o", str(path),
+                          "--quiet"], cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert path.exists(), "pecplas exited 0 but wrote no " + str(path)
     with h5py.File(path) as f:
         steps = f["history/step"][:]
         rows = {}
