@@ -5,8 +5,9 @@ the decks of input/s1/ (run by `make s1`), and the normal stress of the opening-
 
     python3 tools/plot_s1.py [DIR]          # default output/s1; writes PNGs there
 """
-import sys
 from pathlib import Path
+
+from scene_cli import scene_dir
 
 import h5py
 import matplotlib
@@ -36,7 +37,7 @@ def series(path):
 
 
 def main():
-    d = Path(sys.argv[1] if len(sys.argv) > 1 else "output/s1")
+    d = scene_dir(__doc__, "output/s1")
     # fig II.3-like: cohesive and frictional joints under force control / displacement control
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     for name, label in [("s1_cohesive_disp", "cohesive c = 1"),

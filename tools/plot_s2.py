@@ -9,6 +9,8 @@ the S3 curves for psi = 0, 1, 5, 15, 30°. Reads output/s2/*.h5 and output/s3/*.
 import sys
 from pathlib import Path
 
+from scene_cli import scene_dir
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -20,7 +22,7 @@ from s2_results import head_curve, last_key, shaft  # noqa: E402
 
 
 def main():
-    out = Path(sys.argv[1] if len(sys.argv) > 1 else "output")
+    out = scene_dir(__doc__, "output")
     s2 = sorted((out / "s2").glob("s2_*.h5"))
     if s2:
         fig, ax = plt.subplots(figsize=(6, 4.5))

@@ -10,8 +10,9 @@ fig. III.26), III.31 (cyclic CND at 193 kPa), and table III.4 as bars
     python3 tools/plot_s4.py [DIR]          # default output/s4; writes PNGs there
 """
 import csv
-import sys
 from pathlib import Path
+
+from scene_cli import scene_dir
 
 import matplotlib
 
@@ -233,7 +234,7 @@ def sensitivity(d):
 
 
 def main():
-    d = Path(sys.argv[1] if len(sys.argv) > 1 else "output/s4")
+    d = scene_dir(__doc__, "output/s4")
     for key in TABLES:
         monotonic(d, key)
     versions(d)

@@ -10,6 +10,8 @@ pecplas-path in output/s5 and writes PNGs there.
 import sys
 from pathlib import Path
 
+from scene_cli import scene_dir
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -22,7 +24,7 @@ from s5_results import (L, compare, interface, keys_and_steps, mid_history,  # n
 
 
 def main():
-    out = Path(sys.argv[1] if len(sys.argv) > 1 else "output/s5")
+    out = scene_dir(__doc__, "output/s5")
     h5 = out / "s5_shear_box.h5"
     keys, _ = keys_and_steps(h5)
     ends = step_ends(h5)

@@ -12,6 +12,8 @@ import math
 import sys
 from pathlib import Path
 
+from scene_cli import scene_dir
+
 import h5py
 import matplotlib
 matplotlib.use("Agg")
@@ -48,7 +50,7 @@ def slips(h5, keys):
 
 
 def main():
-    d = Path(sys.argv[1] if len(sys.argv) > 1 else "output/s6")
+    d = scene_dir(__doc__, "output/s6")
     runs = {p.stem: p for p in sorted(d.glob("s6_*.h5"))}
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     for ax, xmax in zip(axes, (40, 5)):
