@@ -83,7 +83,8 @@ s2 s3: build
 	done
 	@$(PYTHON) tools/plot_s2.py output
 # S4: every path deck, then the identification of the CNL curves (thesis III.17-III.20) and
-# the sensitivity table (III.4), then the figures. The tables are also kept as .txt files.
+# the sensitivity table (III.4), then the figures; tools/s4_report.py then writes the S4
+# numbers of doc/validation.md. The tables are also kept as .txt files.
 S4_RUN = $(FPM) run --profile release --target
 s4: build
 	@mkdir -p output/s4
@@ -101,6 +102,7 @@ s4: build
 	@$(S4_RUN) pecplas-sensitivity -- -o output/s4/sensitivity.csv 2>&1 \
 	  | tee output/s4/sensitivity.txt
 	@$(PYTHON) tools/plot_s4.py output/s4
+	@$(PYTHON) tools/s4_report.py output/s4
 
 # S5: the FE shear box, then the figures (plot_s5.py runs pecplas-path on the mid-interface path).
 s5: build
