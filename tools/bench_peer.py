@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A peer side by side (issue 7): our code and CalculiX (ccx) on the same meshes.
+"""A peer side by side: our code and CalculiX (ccx) on the same meshes.
 
 1. The S2 frictional pile (tools/make_s2_decks.py, axisymmetric): ours with the Mohr-Coulomb
    penalty joints and with Katona contact, CalculiX with face-to-face penalty contact and
@@ -285,7 +285,7 @@ def main():
 def fragment(rows, pile_runs, limits, bruns):
     """doc/bench/peer.md from this run's numbers; the prose states what they show."""
     pile = [r for r in rows if r[0].startswith("S2")]
-    t = ["## A peer side by side: CalculiX (issue 7)", "",
+    t = ["## A peer side by side: CalculiX", "",
          "`python3 tools/bench_peer.py` (`--quick`: reference mesh only). The same meshes, "
          "exported by `tools/export_abaqus.py`; ours and `ccx` (CalculiX "
          f"{_ccx_version()}) run one thread each, wall times of whole runs (input to "

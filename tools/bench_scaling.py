@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Scaling (issue 7): an elastic-plastic strip footing from about 1e4 to 1e6 equations.
+"""Scaling: an elastic-plastic strip footing from about 1e4 to 1e6 equations.
 
 Mesh: tools/make_default_deck.py (Q8, half model, 10 m x 5 m, footing half-width 1 m), soil
 turned into Drucker-Prager fitted to Mohr-Coulomb in plane strain (E = 2e4 kPa, nu = 0.3,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Stability maps (issue 7): where modified Newton, full Newton and Katona stop converging.
+"""Stability maps: where modified Newton, full Newton and Katona stop converging.
 
 Two scenes: S1 compression-opening-closing (input/s1/s1_open_close_kn1e5.inp, E = E1 = 1e5 kPa,
 the soft block) and S2 (input/s2/s2_mohr_coulomb.inp, E = E_soil = 2e4 kPa; Katona:

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Export one of our decks (doc/deck.md) to an Abaqus-style CalculiX input (`ccx`), for the
-side-by-side benchmark tools/bench_peer.py (issue 7).
+side-by-side benchmark tools/bench_peer.py (`doc/bench/README.md`).
 
 Covered: *NODES, *ELEMENTS (Q4, Q8, T3), *MATERIAL (elastic E, NU, GAMMA), *SECTION, *NSET,
 *BOUNDARY (fixed components), *EDGES + *LOAD TYPE=PRESSURE, *LOAD TYPE=FORCE,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hertz line contact deck (SPEC §8, NAFEMS FENET D3613 set-up) for Katona contact.
+"""Hertz line contact deck (doc/validation.md, NAFEMS FENET D3613 set-up) for Katona contact.
 
 A half cylinder (R = 50 mm, E = 70 GPa, nu = 0.3) pressed on a block (E = 210 GPa,
 nu = 0.3) by F = 35 kN/mm, plane strain, units N, mm, MPa. By symmetry only x >= 0 is

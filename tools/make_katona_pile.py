@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Axisymmetric pile deck for the Katona / penalty speed comparison (doc/validation.md).
 
-Scene S2 geometry (SPEC §7): pile diameter 1 m embedded 10 m, soil domain radius 10 m and
+Scene S2 geometry (doc/validation.md): pile diameter 1 m embedded 10 m, soil domain radius 10 m and
 depth 20 m; soil E = 2e4 kPa, nu = 0.3, pile E = 2e7 kPa, nu = 0.2, gamma = 18 kN/m3 for
 both, geostatic initial stresses with K0 = 0.5; bottom fixed, outer side and axis radially
 fixed. Interface joints (GOODMAN4, generated with EDGES/SIDE) along the shaft and under the

@@ -2,10 +2,10 @@
 """Scene S2 (thesis figs II.6-II.12): an axisymmetric pile under one load cycle, with each
 interface model on the same mesh, and scene S3 (fig. II.13): Mohr-Coulomb with dilatancy.
 
-Geometry and data (SPEC §7 S2): pile diameter 1 m embedded 10 m; pile and soil elastic;
+Geometry and data (doc/validation.md, scene S2): pile diameter 1 m embedded 10 m; pile and soil elastic;
 interface phi = 30°, c = 0, K_t = E_soil, K_n = E_pile (per m); joints along the shaft,
 horizontally under the tip and vertically below the tip down to the bottom of the mesh.
-Assumed (SPEC): soil E = 2e4 kPa, nu = 0.3, gamma = 18 kN/m3, K0 = 0.5 (geostatic initial
+Assumed (not given by the thesis): soil E = 2e4 kPa, nu = 0.3, gamma = 18 kN/m3, K0 = 0.5 (geostatic initial
 stress); pile E = 2e7 kPa, nu = 0.2; domain radius 10 m, depth 20 m, bottom fixed, outer side
 radially fixed; head load 0 -> 2000 kN in 20 increments, back to 0 in 20. Further assumed here:
 the pile starts from the same geostatic stress as the soil (gamma = 18, K0 = 0.5, so the
@@ -89,7 +89,7 @@ def interfaces(m):
 
 
 def law_lines(model, psi=0.0, kt=E_SOIL):
-    """The interface law; `kt` (default E_soil, SPEC) is changed only by the tests that
+    """The interface law; `kt` (default E_soil, assumed) is changed only by the tests that
     take penalty joints to their stiff limit (test_s2_s3.py)."""
     if model == "goodman":
         return ["*INTERFACE_LAW, NAME=iface, TYPE=GOODMAN",
@@ -168,7 +168,7 @@ def deck(m, model, refine, psi=0.0, title=None, kt=E_SOIL, unload=True):
 def default_deck(m):
     """The Goodman deck at refinement 1 with a header naming it `make run`'s default."""
     head = ["** input/default.inp: the deck `make run` runs (-> output/default.h5, .xmf and",
-            "** the head load-settlement picture output/default.png). It is scene S2 (SPEC §7)",
+            "** the head load-settlement picture output/default.png). It is scene S2 (doc/validation.md)",
             "** with the Goodman interface at refinement 1, identical to input/s2/s2_goodman.inp",
             "** below this header: a 1 m pile, 10 m long, loaded 0 -> 2000 kN -> 0; runs in about",
             "** a second.",

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Scene S5 (SPEC section 7; thesis figs IV.1-IV.3): FE model of the interface shear box.
+"""Scene S5 (doc/validation.md; thesis figs IV.1-IV.3): FE model of the interface shear box.
 
 Given (thesis): plane strain; sand E = 100 MPa, nu = 0.3; concrete plate E = 2.7e4 MPa,
 nu = 0.25; steel box E = 2.1e5 MPa, nu = 0.2; interface MODJOIN cyclic, table III.6 Dr 80 %;
 homogeneous initial stress; displacement-controlled cycles.
-Assumed (SPEC): sand sample 0.31 m x 0.10 m in a box with 0.02 m walls, plate 0.05 m thick under
+Assumed (not given by the thesis): sand sample 0.31 m x 0.10 m in a box with 0.02 m walls, plate 0.05 m thick under
 the sand, sigma_n0 = 100 kPa held by a pressure on top, amplitude +-2 mm.
 Assumed here (simplifications, said in doc/validation.md):
 - the box is one steel body: two side walls (0.02 m x 0.10 m) and a lid 0.02 m thick over the

@@ -2,12 +2,12 @@
 """Scene S6 (thesis figs IV.4-IV.10, table IV.1): pull-out of a model pile in dense dry Hostun
 sand, axisymmetric, MODJOIN (initial version, table III.1) or Mohr-Coulomb on the shaft.
 
-Given (SPEC §7 S6): pile diameter 5.5 cm, embedded length 1.62 m (points of interest at depths
+Given (doc/validation.md, scene S6): pile diameter 5.5 cm, embedded length 1.62 m (points of interest at depths
 0.525, 1.016, 1.581 m); sand gamma = 17 kN/m3; sand and steel elastic; interface MODJOIN
 initial version with table III.1 (K0 = 80 kPa/mm, G0 = 40 kPa/mm, phi = 41, c = 0, R0 = 0.3,
 beta = 9 mm, psi = 27, a_g = 0.5 /mm), and Mohr-Coulomb with the same K, G, phi and psi = 6;
 23 equal increments of axial pull; table IV.1 study: G0, K0, beta, a_g each +50 %.
-Assumed (SPEC): tank radius 1.0 m, depth 2.0 m, rigid walls and base (outer side radially
+Assumed (not given by the thesis): tank radius 1.0 m, depth 2.0 m, rigid walls and base (outer side radially
 fixed, base fixed); sand E = 3.0e4 kPa, nu = 0.3, K0 = 0.5 (geostatic initial stress, the
 joints get sigma_n0 projected from it); steel E = 2.1e8 kPa, nu = 0.3. Mohr-Coulomb: pull
 0 -> 6.28 kN (the thesis's last cycle peak) as a uniform upward traction on the head, 23

@@ -79,7 +79,7 @@ def checks(case):
             c["peak_sigma_n"] = "rises with psi (blocked dilatancy, thesis fig. II.13)"
             c["shaft_resultant"] = "above the psi = 0 hand capacity and rising with psi " \
                                    "(dilatancy raises sigma_n)"
-        c["capacity_15mm"] += "; rises monotonically with psi (issue 6: S3)"
+        c["capacity_15mm"] += "; rises monotonically with psi (scene S3)"
         if psi == "0":
             c["settlement_2000"] += "; equals S2 Mohr-Coulomb (same deck, psi = 0)"
     return c

@@ -1,4 +1,4 @@
-"""`pecplas --advise DECK` (issue 7) through the real executable: exit code 0, one table row
+"""`pecplas --advise DECK` (`doc/build.md`, `doc/bench/README.md`) through the real executable: exit code 0, one table row
 per configuration (six on the deck's mesh, two on the refined one for a Q4 deck; a Q8 deck
 says why its mesh is not refined), two advice lines whose error is below their threshold, and
 no results file written.

@@ -2,7 +2,7 @@
 joints and Katona contact) and S3 (Mohr-Coulomb with dilatancy) at the reference refinement,
 through the real program.
 
-Physics asserted (SPEC §7, issue: S2/S3 physics): at 2000 kN the head load exceeds the shaft
+Physics asserted (`doc/validation.md`, scenes S2 and S3): at 2000 kN the head load exceeds the shaft
 capacity computed by hand from the initial stresses, Q_s = int_0^L K0 gamma z tan(phi) pi d dz
 = 816.2 kN, so the whole shaft slips (points with sigma_n > 1 kPa) and carries Q_s within
 15 % (sigma_n moves away from K0 gamma z as the soil deforms); after unloading the settlement

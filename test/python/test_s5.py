@@ -1,4 +1,4 @@
-"""Scene S5 (SPEC §7, thesis figs IV.1-IV.3): FE interface shear box, MODJOIN cyclic III.6
+"""Scene S5 (`doc/validation.md`, thesis figs IV.1-IV.3): FE interface shear box, MODJOIN cyclic III.6
 Dr 80 %, one cycle of +-2 mm of the plate under sigma_n0 = 100 kPa, through the real programs.
 
 Physics asserted: (1) the interface stresses are uniform within 2 % away from the ends at the
