@@ -64,7 +64,7 @@ def tracked_files():
 
 
 def test_no_internal_citations():
-    """Docs, tools, decks and tests cite the thesis or doc/, never SPEC, issues or sessions."""
+    """Docs, tools, decks and tests cite the thesis or doc/, never the private references."""
     bad = []
     for name in tracked_files():
         path = ROOT / name
