@@ -5,7 +5,8 @@
 !> The chain (when *SOLVER, FALLBACK=YES, the default): an increment the run's method cannot
 !> converge is tried again from the last converged state by the next methods of
 !>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
-!> and only then cut. Every method but the last gives up as soon as its residual's rate
+!> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
+!> Every method but the last gives up as soon as its residual's rate
 !> shows it would miss the iteration cap. Katona contact iterates its contact states inside
 !> modified or full Newton (its quasi-Newton is modified Newton).
 module pecplas_driver_attempts
@@ -50,7 +51,9 @@ contains
       integer, allocatable :: methods(:)
       select case (model%solver%method)
       case ('NEWTON')
-         methods = [METHOD_NEWTON]
+         ! BFGS on the last factorised tangent: where a singular tangent stalls Newton
+         ! (a mechanism forming at a limit load)
+         methods = [METHOD_NEWTON, METHOD_QUASI]
       case ('QUASI_NEWTON')
          methods = [METHOD_QUASI, METHOD_NEWTON]
       case default

@@ -104,7 +104,7 @@ contains
       fext = fbase + tau*fq
       u = problem%state%u
       where (problem%dofs%eq == 0) u = up
-      moved = any(u /= problem%state%u) .or. tau /= att%tau0
+      moved = any(u /= problem%state%u) .or. (tau /= att%tau0 .and. any(fq /= 0.0_wp))
       allocate (reaction(2, size(u, 2)), r(neq), du(neq), gfree(neq), dtot(neq), source=0.0_wp)
       allocate (hist(0:model%solver%max_iterations + 1), states(0:model%solver%max_iterations + 1))
       hist = 0.0_wp
