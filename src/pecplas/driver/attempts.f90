@@ -6,8 +6,8 @@
 !> converge is tried again from the last converged state by the next methods of
 !>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
 !> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
-!> Every method but the last gives up as soon as its residual's rate
-!> shows it would miss the iteration cap. Katona contact iterates its contact states inside
+!> Modified Newton gives up as soon as its residual's rate shows it would crawl
+!> (pecplas_driver_iterate); the others run to the iteration cap. Katona contact iterates its contact states inside
 !> modified or full Newton (its quasi-Newton is modified Newton).
 module pecplas_driver_attempts
    use pecplas_kinds, only: wp
@@ -86,7 +86,9 @@ contains
          method = methods(i)
          att%method = method
          att%line_search = model%solver%line_search .and. method /= METHOD_MODIFIED
-         att%give_up_early = i < size(methods)
+         ! only modified Newton's linear rate predicts its end reliably; the others run to
+         ! the cap (BFGS converges irregularly while joint states still change)
+         att%give_up_early = i < size(methods) .and. method == METHOD_MODIFIED
          if (problem%katona%active) then
             call katona_attempt(model, problem, run, att, u, fint, reaction, out, error)
          else

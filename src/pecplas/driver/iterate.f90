@@ -58,9 +58,8 @@ module pecplas_driver_iterate
       real(wp), allocatable :: du(:)
    end type outcome_t
 
-   !> Early give-up: after MIN_RATE_ITERS iterations, the residual's mean contraction over
-   !> the last RATE_SPAN iterations must bring it below the tolerance within the cap.
-   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4
+   !> Early give-up of a method that is not the chain's last (see `hopeless`).
+   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
 
 contains
 
@@ -330,9 +329,10 @@ contains
    end function cap_reason
 
    !> Modified Newton (linear convergence): true when the mean contraction of the last
-   !> RATE_SPAN iterations cannot bring the residual below `tol` before the cap. Other
-   !> methods converge irregularly (BFGS speeds up as pairs accumulate, a tangent changes
-   !> with the slip states): true only when the residual has not fallen over that span.
+   !> RATE_SPAN iterations cannot bring the residual below `tol` within min(cap, MN_BUDGET)
+   !> iterations (the next method of the chain is cheaper than a crawl). Other methods
+   !> converge irregularly (BFGS speeds up as pairs accumulate, a tangent changes with the
+   !> slip states): true only when the residual has not fallen over SLOW_SPAN iterations.
    pure logical function hopeless(hist, tol, cap, linear)
       real(wp), intent(in) :: hist(0:)
       real(wp), intent(in) :: tol
@@ -342,14 +342,19 @@ contains
       integer :: n
       n = ubound(hist, 1)
       hopeless = .false.
+      if (.not. linear) then
+         if (n < SLOW_SPAN) return
+         hopeless = minval(hist(n - SLOW_SPAN/2:n)) >= minval(hist(0:n - SLOW_SPAN/2 - 1))
+         return
+      end if
       if (.not. (hist(n - RATE_SPAN) > 0.0_wp) .or. .not. (hist(n) > 0.0_wp)) return
       rate = (hist(n)/hist(n - RATE_SPAN))**(1.0_wp/RATE_SPAN)
-      if (rate >= 1.0_wp .or. .not. linear) then
-         hopeless = rate >= 1.0_wp
+      if (rate >= 1.0_wp) then
+         hopeless = .true.
          return
       end if
       need = log(tol/hist(n))/log(rate)
-      hopeless = n + need > real(cap, wp)
+      hopeless = n + need > real(min(cap, MN_BUDGET), wp)
    end function hopeless
 
    pure real(wp) function ieee_nan() result(x)
