@@ -89,7 +89,9 @@ contains
       code = run_deck(DATA//'pad_slip.inp', DIR//'/pad.h5', .true., model, problem)
       call check(error, code /= 0, 'T = 1.01 mu N: the run does not complete')
       if (allocated(error)) return
-      call check(error, problem%state%factors(2)*60.6_wp <= 60.0_wp*(1.0_wp + 1.0e-8_wp), &
+      ! the arc-length probe follows the limit itself: to the residual tolerance (1e-8 of
+      ! the loads and reactions, ~200 kN here, i.e. 2e-6 kN)
+      call check(error, problem%state%factors(2)*60.6_wp <= 60.0_wp + 2.0e-6_wp, &
          'no converged state carries more than mu N')
    end subroutine test_slip
 

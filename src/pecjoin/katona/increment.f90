@@ -37,11 +37,13 @@ contains
 
    !> Same contract as the driver's solve_increment: u, fint (without contact forces),
    !> reaction (with them) at the end; converged / blowup / iterations / residual.
-   subroutine katona_increment(model, problem, factors, fint_conv, u, fint, reaction, &
+   subroutine katona_increment(model, problem, factors, fint_conv, newton, u, fint, reaction, &
          converged, blowup, iters, residual, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       real(wp), intent(in) :: factors(:), fint_conv(:, :)
+      !> Consistent tangents every outer iteration (else the run's factorisation).
+      logical, intent(in) :: newton
       real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
       logical, intent(out) :: converged, blowup
       integer, intent(out) :: iters
@@ -52,9 +54,7 @@ contains
       integer, allocatable :: flips(:)
       real(wp) :: rnorm, ref, t0
       integer :: p, i, d, k, nstates, nit, n2
-      logical :: newton
 
-      newton = model%solver%method == 'NEWTON'
       associate (kt => problem%katona, dofs => problem%dofs)
          n2 = 2*kt%nd
          fext = problem%initial_force

@@ -1,19 +1,29 @@
-!> The incremental–iterative solution (Annex A): load steps split into increments, each
-!> solved by modified Newton (stiffness factorised once, residual forces re-applied, as in
-!> the thesis) or full Newton (consistent tangent re-factorised every iteration).
-!> An increment that does not converge is halved; after `max_cuts` halvings the run stops.
+!> The incremental–iterative solution (thesis Annex A, extended): each load step is split
+!> into increments, under load control (fixed fractions of the step) or arc-length control
+!> (*STEP, CONTROL=ARC_LENGTH: pecplas_driver_arc_path). An increment is tried by the chain
+!> of methods (pecplas_driver_attempts), then halved up to `max_cuts` times.
+!>
+!> Statuses, each a claim about the run:
+!>   completed   every step reached its end;
+!>   limit load  the load-displacement path has a maximum: the arc-length path passed it (the
+!>               load fell in two increments after it) or became flat (current stiffness
+!>               parameter ~ 0); under load control a step that cannot be converged is probed
+!>               by arc-length from the last converged state, which either passes the failed
+!>               load (the run goes on) or establishes the maximum; /limit stores where;
+!>   diverged    no equilibrium was found, with the reason of each method;
+!>   stopped     an arc-length step used its MAX_INCREMENTS before its target.
 module pecplas_driver_increments
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error, run_error, ERR_SINGULAR, ERR_RUN
+   use pecplas_error, only: error_t
    use pecplas_model, only: model_t
    use pecplas_model_loads, only: step_t
    use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_stiffness, only: factorise_stiffness
-   use pecplas_driver_output, only: write_increment, progress_line
-   use pecplas_fe_assembly, only: internal_forces
+   use pecplas_driver_iterate, only: attempt_t, outcome_t
+   use pecplas_driver_attempts, only: run_t, try_chain, accept_increment
+   use pecplas_driver_arc_path, only: arc_request_t, arc_end_t, trace_arc, END_TARGET, &
+      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED
    use pecplas_io_results_file, only: results_file_t
-   use pecplas_driver_timers, only: wall_time
-   use pecjoin_katona_increment, only: katona_increment
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -21,8 +31,8 @@ module pecplas_driver_increments
 
 contains
 
-   !> Runs every step. `status` is 'completed', 'diverged' or 'failed'; `message` says why
-   !> a run stopped. Converged increments are written to `results` as they come.
+   !> Runs every step. `status`: 'completed', 'limit load', 'diverged' or 'stopped';
+   !> `message` says why a run stopped. Converged increments are written as they come.
    subroutine run_increments(model, problem, results, quiet, status, message, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
@@ -30,267 +40,262 @@ contains
       logical, intent(in) :: quiet
       character(len=:), allocatable, intent(out) :: status, message
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: f0(:), ftarget(:), factors(:), fint_conv(:, :), u(:, :)
-      real(wp), allocatable :: fint(:, :), reaction(:, :)
-      real(wp) :: tau, dt, dt0, residual, t_start, t_now, t_out
-      !> Secant stiffness of the first loaded increment, the last converged and the last
-      !> failed one (current stiffness parameter = k / k_first, Bergan).
-      real(wp) :: k_first, k_conv, k_fail
-      integer :: istep, inc_in_step, iters, level
-      logical :: converged, last, blowup
-      character(len=160) :: buf
+      type(run_t) :: run
+      real(wp), allocatable :: f0(:), ftarget(:)
+      integer :: istep
 
-      call cpu_time(t_start)
-      status = 'completed'; message = 'all steps completed'
-      k_first = 0.0_wp; k_conv = 0.0_wp
+      call cpu_time(run%cpu_start)
+      run%quiet = quiet
+      status = 'completed'
+      message = 'all steps completed'
       ! the initial stresses are in equilibrium with their own nodal forces
-      fint_conv = problem%initial_force
+      run%fint_conv = problem%initial_force
       do istep = 1, size(model%steps)
-         associate (step => model%steps(istep))
-            f0 = problem%state%factors
-            ftarget = f0
-            ftarget(step%pattern) = step%target
-            dt0 = 1.0_wp/step%increments
-            dt = dt0; tau = 0.0_wp; level = 0; inc_in_step = 0
-            do while (tau < 1.0_wp - 1.0e-12_wp)
-               dt = min(dt, 1.0_wp - tau)
-               factors = f0 + (ftarget - f0)*(tau + dt)
-               if (problem%katona%active) then
-                  call katona_increment(model, problem, factors, fint_conv, u, fint, reaction, &
-                     converged, blowup, iters, residual, error)
-               else
-                  call solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
-                     converged, blowup, iters, residual, error)
-               end if
-               if (allocated(error)) then
-                  if (error%kind /= ERR_RUN) return
-                  deallocate (error)
-                  converged = .false.
-               end if
-               problem%iterations = problem%iterations + iters
-               if (.not. converged) then
-                  k_fail = secant_stiffness(problem, problem%state%factors, factors, u)
-                  call problem%state%rollback()
-                  if (level >= model%solver%max_cuts) then
-                     call stop_reason(model, step, istep, f0, ftarget, tau, tau + dt, level, &
-                        blowup, stiffness_ratio(k_first, k_conv, k_fail), status, message)
-                     return
-                  end if
+         f0 = problem%state%factors
+         ftarget = f0
+         ftarget(model%steps(istep)%pattern) = model%steps(istep)%target
+         run%k_first = 0.0_wp
+         if (model%steps(istep)%arc_length) then
+            call arc_step(model, problem, results, run, istep, f0, ftarget, status, message, &
+               error)
+         else
+            call load_step(model, problem, results, run, istep, f0, ftarget, status, message, &
+               error)
+         end if
+         if (allocated(error) .or. status /= 'completed') exit
+      end do
+      if (allocated(error)) return
+      if (status == 'limit load') call results%write_limit(run%limit, error)
+   end subroutine run_increments
+
+   !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and
+   !> grown back after success.
+   subroutine load_step(model, problem, results, run, istep, f0, ftarget, status, message, &
+         error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      character(len=:), allocatable, intent(inout) :: status, message
+      type(error_t), allocatable, intent(out) :: error
+      type(attempt_t) :: att
+      type(outcome_t) :: out
+      type(arc_request_t) :: req
+      type(arc_end_t) :: res
+      real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
+      real(wp) :: tau, dt, dt0
+      integer :: level, inc, method
+
+      associate (step => model%steps(istep))
+         att%f0 = f0
+         att%ftarget = ftarget
+         dt0 = 1.0_wp/step%increments
+         dt = dt0
+         tau = 0.0_wp
+         level = 0
+         inc = 0
+         do while (tau < 1.0_wp - 1.0e-12_wp)
+            dt = min(dt, 1.0_wp - tau)
+            att%arc = .false.
+            att%tau0 = tau
+            att%tau1 = tau + dt
+            call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+            if (allocated(error)) return
+            if (.not. out%converged) then
+               if (level < model%solver%max_cuts) then
                   level = level + 1
                   problem%cuts = problem%cuts + 1
                   dt = 0.5_wp*dt
-                  if (.not. quiet) write (*, '(a,es9.2,a)') '   no convergence: increment cut to ', &
-                     dt, ' of the step'
+                  if (.not. run%quiet) write (*, '(a,es9.2,a)') &
+                     '   no convergence: increment cut to ', dt, ' of the step'
                   cycle
                end if
-               k_conv = secant_stiffness(problem, problem%state%factors, factors, u)
-               if (k_first == 0.0_wp) k_first = k_conv
-               tau = tau + dt
-               inc_in_step = inc_in_step + 1
-               problem%increments = problem%increments + 1
-               call problem%state%commit()
-               problem%state%u = u
-               problem%state%factors = factors
-               fint_conv = fint
-               last = tau >= 1.0_wp - 1.0e-12_wp
-               call cpu_time(t_now)
-               t_out = wall_time()
-               call write_increment(model, problem, results, istep, inc_in_step, &
-                  real(istep - 1, wp) + tau, iters, residual, t_now - t_start, reaction, last, error)
-               problem%time%output = problem%time%output + (wall_time() - t_out)
-               if (allocated(error)) return
-               if (.not. quiet) call progress_line(model, problem, istep, inc_in_step, tau, iters, &
-                  residual)
-               if (level > 0) then
-                  level = level - 1
-                  dt = min(dt0, 2.0_wp*dt)
+               if (.not. probe_allowed(model, problem, f0, ftarget)) then
+                  call diverged(step, istep, tau + dt, level, out%reason, status, message)
+                  return
                end if
-            end do
-         end associate
-      end do
-   end subroutine run_increments
+               ! cannot be converged at any cut: is it a maximum of the load?
+               if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
+                  'probing the path by arc-length from the last converged state'
+               req%tau_start = tau
+               req%tau_pass = tau + dt
+               req%dl = 0.0_wp
+               if (allocated(run%du_prev)) req%dl = norm2(run%du_prev)
+               req%dtau_first = dt
+               req%max_increments = model%solver%limit_probe
+               req%stop_at_limit = .true.
+               req%time0 = real(istep - 1, wp) + tau
+               req%time_span = 0.5_wp*dt
+               call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, req, res, &
+                  error)
+               if (allocated(error)) return
+               select case (res%kind)
+               case (END_PASSED, END_TARGET)
+                  ! a convergence failure, not a limit: load control goes on from here
+                  tau = res%tau
+                  level = 0
+                  dt = dt0
+                  cycle
+               case (END_LIMIT, END_UNLOADED)
+                  call limit_reached(model, problem, run, step, istep, res, status, message)
+               case default
+                  call diverged(step, istep, tau + dt, level, out%reason//'; the arc-length '// &
+                     'probe from fraction '//num(tau)//' '//probe_failure(res), status, message)
+               end select
+               return
+            end if
+            tau = att%tau1
+            inc = inc + 1
+            if (run%k_first == 0.0_wp .and. allocated(out%du)) &
+               run%k_first = dt/max(norm2(out%du), tiny(1.0_wp))
+            call accept_increment(model, problem, results, run, att, out, method, u, fint, &
+               reaction, istep, inc, real(istep - 1, wp) + tau, tau >= 1.0_wp - 1.0e-12_wp, 0, &
+               error)
+            if (allocated(error)) return
+            if (level > 0) then
+               level = level - 1
+               dt = min(dt0, 2.0_wp*dt)
+            end if
+         end do
+      end associate
+   end subroutine load_step
 
-   !> One increment to the pattern `factors`: imposes the displacement patterns, iterates
-   !> on the free equations until ||FR|| <= tol * max(||F_ext||, ||reactions||).
-   subroutine solve_increment(model, problem, factors, fint_conv, u, fint, reaction, &
-         converged, blowup, iters, residual, error)
+   !> A step under arc-length control.
+   subroutine arc_step(model, problem, results, run, istep, f0, ftarget, status, message, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
-      real(wp), intent(in) :: factors(:), fint_conv(:, :)
-      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
-      !> converged: equilibrium found; blowup: the residual became non-finite.
-      logical, intent(out) :: converged, blowup
-      integer, intent(out) :: iters
-      real(wp), intent(out) :: residual
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      character(len=:), allocatable, intent(inout) :: status, message
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: fext(:, :), up(:, :), r(:), du(:)
-      real(wp) :: rnorm, ref, t0
-      integer :: p, i, d, k
-      logical :: newton
-
-      newton = model%solver%method == 'NEWTON'
-      fext = problem%initial_force
-      allocate (up(2, size(fint_conv, 2)), source=0.0_wp)
-      do p = 1, size(factors)
-         fext = fext + factors(p)*problem%pattern_force(:, :, p)
-         up = up + factors(p)*problem%pattern_disp(:, :, p)
-      end do
-      u = problem%state%u
-      where (problem%dofs%eq == 0) u = up
-      if (any(u /= problem%state%u)) then
-         allocate (fint, mold=fint_conv)
-         t0 = wall_time()
-         call internal_forces(model, problem%rules, u, problem%state, fint, error, &
-            problem%time%laws)
-         problem%time%residual = problem%time%residual + (wall_time() - t0)
-         if (allocated(error)) call as_run_error(error)
+      type(arc_request_t) :: req
+      type(arc_end_t) :: res
+      integer :: inc
+      associate (step => model%steps(istep))
+         inc = 0
+         req%tau_start = 0.0_wp
+         req%dl = 0.0_wp
+         req%dtau_first = 1.0_wp/step%increments
+         req%max_increments = step%max_increments
+         req%time0 = real(istep - 1, wp)
+         call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, req, res, error)
          if (allocated(error)) return
-      else
-         fint = fint_conv
-      end if
-      allocate (r(problem%dofs%neq), du(problem%dofs%neq), reaction(2, size(u, 2)))
-      converged = .false.
-      blowup = .false.
-      iters = 0
-      do
-         reaction = fint - fext
-         do i = 1, size(u, 2)
-            do d = 1, 2
-               k = problem%dofs%eq(d, i)
-               if (k > 0) then
-                  r(k) = fext(d, i) - fint(d, i)
-                  reaction(d, i) = 0.0_wp
-               end if
-            end do
-         end do
-         rnorm = norm2(r)
-         ! reference: the applied loads and reactions (not the initial-stress forces, which
-         ! would loosen the criterion); those only when nothing else acts
-         ref = max(norm2(pack(fext - problem%initial_force, problem%dofs%eq > 0)), norm2(reaction))
-         if (ref == 0.0_wp) ref = norm2(pack(problem%initial_force, problem%dofs%eq > 0))
-         residual = 0.0_wp
-         if (ref > 0.0_wp) residual = rnorm/ref
-         if (rnorm <= model%solver%tolerance*ref .or. rnorm == 0.0_wp) then
-            converged = .true.
+         select case (res%kind)
+         case (END_TARGET)
             return
-         end if
-         blowup = .not. (rnorm < huge(1.0_wp))
-         if (iters >= model%solver%max_iterations .or. blowup) return
-         if (newton .and. iters > 0) then
-            call factorise_stiffness(model, problem, .true., error)
-            if (allocated(error)) then
-               ! A singular consistent tangent (perfectly plastic zones near a limit load)
-               ! is no mechanism of the model: this iteration uses the elastic stiffness.
-               if (error%kind /= ERR_SINGULAR) return
-               deallocate (error)
-               call factorise_stiffness(model, problem, .false., error)
-               if (allocated(error)) return
+         case (END_NODE)
+            if (res%beyond > 0 .and. res%tau < res%tau_peak) then
+               call limit_reached(model, problem, run, step, istep, res, status, message)
             end if
-         end if
-         t0 = wall_time()
-         call problem%solver%solve(r, du, error)
-         problem%time%solve = problem%time%solve + (wall_time() - t0)
-         if (allocated(error)) return
-         problem%solves = problem%solves + 1
-         iters = iters + 1
-         do k = 1, problem%dofs%neq
-            u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) = &
-               u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + du(k)
-         end do
-         t0 = wall_time()
-         call internal_forces(model, problem%rules, u, problem%state, fint, error, &
-            problem%time%laws)
-         problem%time%residual = problem%time%residual + (wall_time() - t0)
-         if (allocated(error)) call as_run_error(error)
-         if (allocated(error)) return
-      end do
-   end subroutine solve_increment
+         case (END_LIMIT, END_UNLOADED)
+            call limit_reached(model, problem, run, step, istep, res, status, message)
+         case (END_MAX)
+            status = 'stopped'
+            message = 'step '//itoa(istep)//' ('//step%name//'): MAX_INCREMENTS='// &
+               itoa(step%max_increments)//' arc-length increments used at step fraction '// &
+               num(res%tau)//' before the target (no maximum of the load on the way)'
+         case default
+            call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
+               message)
+         end select
+      end associate
+   end subroutine arc_step
 
-   !> Why a step stopped. Under increasing force control (no imposed displacement changes in
-   !> the step, some load grows) an increment that finds no equilibrium however small it is cut means the structure
-   !> cannot carry more load: a limit load, reported with the last converged load factors.
-   !> Under displacement control, or when the residual blows up, the run has diverged.
-   !> The stiffness must also have dropped: current stiffness parameter `sp` < 0.5 (an elastic
-   !> structure that fails to converge for another reason has sp = 1 and is 'diverged').
-   subroutine stop_reason(model, step, istep, f0, ftarget, tau_ok, tau_failed, cuts, blowup, &
-         sp, status, message)
+   !> A probe needs a growing force and no changing imposed displacement (unloading that
+   !> fails is no limit), the arc-length path (not with Katona contact), and a budget.
+   logical function probe_allowed(model, problem, f0, ftarget) result(ok)
       type(model_t), intent(in) :: model
-      type(step_t), intent(in) :: step
-      integer, intent(in) :: istep, cuts
-      real(wp), intent(in) :: f0(:), ftarget(:), tau_ok, tau_failed, sp
-      logical, intent(in) :: blowup
-      character(len=:), allocatable, intent(out) :: status, message
-      character(len=400) :: buf
-      logical :: force_control
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: f0(:), ftarget(:)
       integer :: p
-      ! a limit load needs a load that grows: some force pattern increasing in magnitude and
-      ! no imposed displacement changing (unloading that fails is a divergence)
-      force_control = .false.
+      ok = model%solver%limit_probe > 0 .and. .not. problem%katona%active
+      if (.not. ok) return
+      ok = .false.
       do p = 1, size(f0)
          if (model%patterns(p)%kind == 'DISPLACEMENT') then
             if (ftarget(p) /= f0(p)) then
-               force_control = .false.
-               exit
+               ok = .false.
+               return
             end if
          else if (abs(ftarget(p)) > abs(f0(p))) then
-            force_control = .true.
+            ok = .true.
          end if
       end do
-      if (force_control .and. .not. blowup .and. sp < 0.5_wp) then
-         status = 'limit load'
-         write (buf, '(a,i0,a,a,a,f6.4,a,f6.4,a,i0,a,es9.2,a)') 'limit load in step ', istep, &
-            ' (', step%name, '): equilibrium holds up to step fraction ', tau_ok, &
-            ' but not at ', tau_failed, ' (', cuts, ' increment cuts, current stiffness '// &
-            'parameter ', sp, '); load factors at the limit:'
-         message = trim(buf)
-         do p = 1, size(f0)
-            if (ftarget(p) == f0(p)) cycle
-            write (buf, '(a,a,a,g0.6)') ' ', model%patterns(p)%name, ' = ', &
-               f0(p) + (ftarget(p) - f0(p))*tau_ok
-            message = message//trim(buf)
-         end do
-      else
-         status = 'diverged'
-         write (buf, '(a,i0,a,a,a,f6.4,a,i0,a,es9.2,a)') 'step ', istep, ' (', step%name, &
-            ') did not converge at step fraction ', tau_failed, ' after ', cuts, &
-            ' increment cuts (current stiffness parameter ', sp, ')'
-         message = trim(buf)
-         if (blowup) message = message//' (the residual became infinite or NaN)'
-      end if
-      message = message//'; last converged state kept in the results file'
-   end subroutine stop_reason
+   end function probe_allowed
 
-   !> Secant stiffness |df|^2 / (df . du) of an increment from factors `fa` to `fb` with
-   !> trial displacements `u` (free equations, force patterns); 0 when no force changes.
-   real(wp) function secant_stiffness(problem, fa, fb, u) result(k)
+   subroutine limit_reached(model, problem, run, step, istep, res, status, message)
+      type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
-      real(wp), intent(in) :: fa(:), fb(:), u(:, :)
-      real(wp) :: df(2, size(u, 2)), num, den
+      type(run_t), intent(inout) :: run
+      type(step_t), intent(in) :: step
+      integer, intent(in) :: istep
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable, intent(inout) :: status, message
       integer :: p
-      df = 0.0_wp
-      do p = 1, size(fa)
-         if (fb(p) /= fa(p)) df = df + (fb(p) - fa(p))*problem%pattern_force(:, :, p)
+      status = 'limit load'
+      run%limit%kind = merge('flat  ', 'passed', res%flat .and. res%beyond < 2)
+      run%limit%kind = trim(run%limit%kind)
+      run%limit%step = istep
+      run%limit%global_increment = res%peak_increment
+      run%limit%fraction = res%tau_peak
+      run%limit%stiffness_parameter = res%sp
+      run%limit%pattern_factors = res%peak_factors
+      message = 'limit load in step '//itoa(istep)//' ('//step%name//'): '
+      if (run%limit%kind == 'passed') then
+         message = message//'the load-displacement path has a maximum at step fraction '// &
+            num(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
+            itoa(res%beyond)//' increments beyond it'
+      else
+         message = message//'the load-displacement path is flat (current stiffness '// &
+            'parameter '//num(res%sp)//') from step fraction '//num(res%tau_peak)// &
+            ' (increment '//itoa(res%peak_increment)//')'
+      end if
+      message = message//'; load factors at the peak:'
+      do p = 1, size(res%peak_factors)
+         if (res%peak_factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
+            message = message//' '//model%patterns(p)%name//' = '//num(res%peak_factors(p))
       end do
-      where (problem%dofs%eq == 0) df = 0.0_wp
-      num = sum(df**2)
-      den = sum(df*(u - problem%state%u))
-      k = 0.0_wp
-      if (num > 0.0_wp) k = num/max(den, tiny(1.0_wp))
-   end function secant_stiffness
+      if (problem%increments > 0) message = message//'; every converged increment is in '// &
+         'the results file (/limit says where the peak is)'
+   end subroutine limit_reached
 
-   !> Current stiffness parameter min(k_conv, k_fail) / k_first (1 when unknown).
-   pure real(wp) function stiffness_ratio(k_first, k_conv, k_fail) result(sp)
-      real(wp), intent(in) :: k_first, k_conv, k_fail
-      sp = 1.0_wp
-      if (k_first <= 0.0_wp) return
-      if (k_conv > 0.0_wp) sp = min(sp, k_conv/k_first)
-      if (k_fail > 0.0_wp) sp = min(sp, k_fail/k_first)
-   end function stiffness_ratio
+   subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)
+      type(step_t), intent(in) :: step
+      integer, intent(in) :: istep, cuts
+      real(wp), intent(in) :: tau_failed
+      character(len=*), intent(in) :: reason
+      character(len=:), allocatable, intent(inout) :: status, message
+      status = 'diverged'
+      message = 'step '//itoa(istep)//' ('//step%name//') did not converge at step '// &
+         'fraction '//num(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
+         '); last converged state kept in the results file'
+   end subroutine diverged
 
-   !> A material that cannot return (e.g. a failed local iteration) cuts the increment.
-   subroutine as_run_error(error)
-      type(error_t), allocatable, intent(inout) :: error
-      if (error%kind /= ERR_SINGULAR) error%kind = ERR_RUN
-   end subroutine as_run_error
+   function probe_failure(res) result(text)
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable :: text
+      select case (res%kind)
+      case (END_MAX)
+         text = 'traced '//itoa(res%increments)//' increments to fraction '//num(res%tau)// &
+            ' without passing the failed load or a maximum'
+      case (END_NODE)
+         text = 'reached the step''s target displacement'
+      case default
+         text = 'failed after '//itoa(res%increments)//' increments: '//res%reason
+      end select
+   end function probe_failure
+
+   !> Six significant digits.
+   function num(x) result(s)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+      write (buf, '(g0.6)') x
+      s = trim(adjustl(buf))
+   end function num
 
 end module pecplas_driver_increments

@@ -16,12 +16,13 @@ contains
 
    !> Writes one converged increment; fields only every `output%every` increments and at the
    !> end of each step, the history row always.
+   !> `how` = (method, line searches, control) of the increment (see the history columns).
    subroutine write_increment(model, problem, results, istep, inc, time, iters, residual, &
-         cpu, reaction, last_of_step, error)
+         cpu, reaction, last_of_step, how, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       type(results_file_t), intent(inout) :: results
-      integer, intent(in) :: istep, inc, iters
+      integer, intent(in) :: istep, inc, iters, how(3)
       real(wp), intent(in) :: time, residual, cpu
       real(wp), intent(in) :: reaction(:, :)
       logical, intent(in) :: last_of_step
@@ -35,6 +36,9 @@ contains
       r%time = time
       r%pattern_factors = problem%state%factors
       r%iterations = iters
+      r%method = how(1)
+      r%line_searches = how(2)
+      r%control = how(3)
       r%residual = residual
       r%cpu_time = cpu
       r%write_fields = last_of_step .or. mod(inc, max(1, model%output%every)) == 0
@@ -81,12 +85,14 @@ contains
    end subroutine joint_fields
 
    !> One line per converged increment: step, increment, step fraction, iterations, residual
-   !> (and, with joints, the number of joint points in slip and in separation).
-   subroutine progress_line(model, problem, istep, inc, tau, iters, residual)
+   !> (and, with joints, the number of joint points in slip and in separation), then the
+   !> method when it is not the run's own, line searches, and 'arc' under arc-length control.
+   subroutine progress_line(model, problem, istep, inc, tau, iters, residual, how_text)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       integer, intent(in) :: istep, inc, iters
       real(wp), intent(in) :: tau, residual
+      character(len=*), intent(in) :: how_text
       character(len=120) :: joints
       integer :: nslip, nopen
       joints = ''
@@ -101,7 +107,8 @@ contains
          problem%katona%last_state_iterations, ' factorisations ', problem%factorisations
       write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
-         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)
+         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)// &
+         how_text
    end subroutine progress_line
 
 end module pecplas_driver_output

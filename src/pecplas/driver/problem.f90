@@ -38,6 +38,10 @@ module pecplas_driver_problem
       !> state is in equilibrium (2, nnode); zero without *INITIAL_STRESS.
       real(wp), allocatable :: initial_force(:, :)
       class(linear_solver_t), allocatable :: solver
+      !> Full-Newton fallback of a modified/quasi-Newton run: the consistent tangent is
+      !> factorised by its own solver so that the run's stiffness factorisation stays.
+      class(linear_solver_t), allocatable :: tsolver
+      logical :: separate_tangent = .false., tangent_factorised = .false.
       type(csc_t) :: k
       !> Triplet storage and scatter map of the stiffness re-assembly (pecplas_linalg_sparse_reuse).
       type(csc_builder_t) :: kbuild
@@ -45,6 +49,11 @@ module pecplas_driver_problem
       type(katona_t) :: katona
       !> Counters for the summary.
       integer :: increments = 0, iterations = 0, cuts = 0, factorisations = 0, solves = 0
+      !> Line-search residual evaluations; tangents found singular (elastic used instead);
+      !> increments converged by each method (modified, quasi-, full Newton) and under
+      !> arc-length control.
+      integer :: line_searches = 0, singular_tangents = 0, arc_increments = 0
+      integer :: by_method(3) = 0
       type(timers_t) :: time
    end type problem_t
 
@@ -81,6 +90,7 @@ contains
             st%tangent = spread(spread(d, 3, ng), 4, nel)
          end associate
       end do
+      problem%separate_tangent = model%solver%method /= 'NEWTON'
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
       npat = 0

@@ -18,18 +18,22 @@ module pecplas_driver_stiffness
 contains
 
    !> Name of the linear solver a run uses.
-   function linear_solver_name(model) result(name)
+   !> `tangent_of_fallback`: the solver of the full-Newton fallback of a modified-Newton run.
+   function linear_solver_name(model, tangent_of_fallback) result(name)
       type(model_t), intent(in) :: model
+      logical, intent(in), optional :: tangent_of_fallback
       character(len=:), allocatable :: name
       integer :: i
-      logical :: symmetric
+      logical :: symmetric, tangent
       name = model%solver%linear
       if (name /= 'AUTO') return
+      tangent = model%solver%method == 'NEWTON'
+      if (present(tangent_of_fallback)) tangent = tangent .or. tangent_of_fallback
       ! The elastic stiffness of modified Newton is symmetric positive definite: CHOLMOD.
       ! Full Newton with a non-symmetric consistent tangent (non-associated plasticity,
       ! frictional interfaces) needs LU: UMFPACK.
       symmetric = .true.
-      if (model%solver%method == 'NEWTON') then
+      if (tangent) then
          do i = 1, size(model%materials)
             symmetric = symmetric .and. model%materials(i)%m%symmetric_tangent()
          end do
@@ -42,13 +46,24 @@ contains
       name = merge('CHOLMOD', 'UMFPACK', symmetric)
    end function linear_solver_name
 
-   !> `tangent`: consistent tangents (full Newton) instead of elastic stiffness.
-   subroutine factorise_stiffness(model, problem, tangent, error)
+   !> `tangent`: consistent tangents (full Newton) instead of elastic stiffness;
+   !> `tangent_solver`: into the fallback's own solver when the run has one
+   !> (problem%separate_tangent), keeping the run's factorisation.
+   subroutine factorise_stiffness(model, problem, tangent, error, tangent_solver)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: tangent
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: tangent_solver
       real(wp) :: t0
+      logical :: separate
+
+      separate = .false.
+      if (present(tangent_solver)) separate = tangent_solver .and. problem%separate_tangent
+      if (separate) then
+         call factorise_tangent(model, problem, error)
+         return
+      end if
 
       t0 = wall_time()
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
@@ -80,6 +95,32 @@ contains
       problem%factorisations = problem%factorisations + 1
       problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
    end subroutine factorise_stiffness
+
+   !> The fallback tangent into problem%tsolver (created and analysed on first use).
+   subroutine factorise_tangent(model, problem, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      t0 = wall_time()
+      problem%tangent_factorised = .false.
+      call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .true., &
+         problem%kbuild, problem%k, error)
+      if (allocated(error)) return
+      problem%time%assembly = problem%time%assembly + (wall_time() - t0)
+      t0 = wall_time()
+      if (.not. allocated(problem%tsolver)) then
+         call new_linear_solver(linear_solver_name(model, .true.), problem%tsolver, error)
+         if (allocated(error)) return
+         call problem%tsolver%analyse(problem%k, error)
+         if (allocated(error)) return
+      end if
+      call problem%tsolver%factorise(problem%k, error)
+      problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
+      if (allocated(error)) return
+      problem%factorisations = problem%factorisations + 1
+      problem%tangent_factorised = .true.
+   end subroutine factorise_tangent
 
    !> A singular R with Katona contact (a body held only by its contacts): factorises
    !> R_a = R + alpha D^T D instead, alpha = largest diagonal term of R. The Katona solve is

@@ -40,6 +40,17 @@ module pecplas_model_loads
    type :: step_t
       character(len=:), allocatable :: name
       integer :: increments = 1
+      !> Arc-length control (the load factor of the step is an unknown of each increment);
+      !> else load control (fixed fractions of the step).
+      logical :: arc_length = .false.
+      !> Arc-length: the most increments of the step, the iterations an increment should take
+      !> (its length adapts to them), the length bounds as multiples of the first one.
+      integer :: max_increments = 0, iterations_wanted = 6
+      real(wp) :: min_length = 1.0e-4_wp, max_length = 10.0_wp
+      !> Arc-length: stop when node `node` (internal index; 0 none) reaches displacement
+      !> `displacement` along `dof` (1 = x/r, 2 = y/z).
+      integer :: node = 0, dof = 0
+      real(wp) :: displacement = 0.0_wp
       !> Patterns named in the step and their factor at its end.
       integer, allocatable :: pattern(:)
       real(wp), allocatable :: target(:)

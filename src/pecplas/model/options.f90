@@ -12,8 +12,10 @@ module pecplas_model_options
    !> Linear solver names: AUTO picks CHOLMOD for symmetric positive definite systems.
    character(len=*), parameter :: LINEAR_SOLVERS(3) = [character(len=8) :: 'AUTO', 'CHOLMOD', &
       'UMFPACK']
-   character(len=*), parameter :: NONLINEAR_METHODS(2) = [character(len=16) :: &
-      'MODIFIED_NEWTON', 'NEWTON']
+   !> MODIFIED_NEWTON: the run's stiffness factorised once (the thesis); QUASI_NEWTON: the
+   !> same with BFGS updates; NEWTON: the consistent tangent every iteration.
+   character(len=*), parameter :: NONLINEAR_METHODS(3) = [character(len=16) :: &
+      'MODIFIED_NEWTON', 'QUASI_NEWTON', 'NEWTON']
 
    type :: analysis_t
       !> PLANE_STRAIN or AXISYMMETRIC.
@@ -30,6 +32,14 @@ module pecplas_model_options
       integer :: max_iterations = 50
       !> Number of times an increment may be halved before the run stops.
       integer :: max_cuts = 5
+      !> An increment the method cannot converge is tried by the next methods of the chain
+      !> MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (line search) before it is cut.
+      logical :: fallback = .true.
+      !> Line search for full Newton and quasi-Newton iterations.
+      logical :: line_search = .true.
+      !> Arc-length increments tried from the last converged state when a force-controlled
+      !> increment cannot be converged at any cut (0: none; the run then says 'diverged').
+      integer :: limit_probe = 30
    end type solver_options_t
 
    type :: output_options_t

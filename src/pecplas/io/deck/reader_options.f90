@@ -71,6 +71,7 @@ contains
    end subroutine read_analysis
 
    !> *SOLVER [, LINEAR=..] [, METHOD=..] [, TOLERANCE=..] [, MAX_ITERATIONS=..] [, MAX_CUTS=..]
+   !>    [, FALLBACK=YES|NO] [, LINE_SEARCH=YES|NO] [, LIMIT_PROBE=n]
    subroutine read_solver(state, model, block, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -78,7 +79,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical :: found
       call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'LINEAR', 'METHOD', &
-         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS'], error)
+         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'FALLBACK', 'LINE_SEARCH', 'LIMIT_PROBE'], &
+         error)
       if (allocated(error)) return
       call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
       if (allocated(error)) return
@@ -94,6 +96,12 @@ contains
       call param_int(state, block, 'MAX_ITERATIONS', 1, model%solver%max_iterations, error)
       if (allocated(error)) return
       call param_int(state, block, 'MAX_CUTS', 0, model%solver%max_cuts, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'FALLBACK', model%solver%fallback, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'LINE_SEARCH', model%solver%line_search, error)
+      if (allocated(error)) return
+      call param_int(state, block, 'LIMIT_PROBE', 0, model%solver%limit_probe, error)
    end subroutine read_solver
 
    !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]
@@ -118,7 +126,10 @@ contains
       call param_yes_no(state, block, 'REACTIONS', model%output%reactions, error)
    end subroutine read_output
 
-   !> *STEP [, NAME=name] [, INCREMENTS=n] -- data: pattern, target_factor
+   !> *STEP [, NAME=name] [, INCREMENTS=n] [, CONTROL=LOAD|ARC_LENGTH] -- data: pattern,
+   !> target_factor. Arc-length options: MAX_INCREMENTS=m, ITERATIONS=i (wanted per
+   !> increment), MIN_LENGTH=, MAX_LENGTH= (multiples of the first length), NODE=id, DOF=1|2,
+   !> DISPLACEMENT=v (stop when the node gets there).
    subroutine read_step(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
@@ -129,8 +140,9 @@ contains
       type(raw_item_t) :: item
       logical :: found
       integer :: i, n
-      call block%kw%check_keys(state%lines(block%at), [character(len=10) :: 'NAME', &
-         'INCREMENTS'], error)
+      call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'NAME', &
+         'INCREMENTS', 'CONTROL', 'MAX_INCREMENTS', 'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', &
+         'NODE', 'DOF', 'DISPLACEMENT'], error)
       if (allocated(error)) return
       if (.not. allocated(state%steps)) allocate (state%steps(0))
       n = size(state%steps)
@@ -144,6 +156,8 @@ contains
          end if
       end do
       call param_int(state, block, 'INCREMENTS', 1, step%increments, error)
+      if (allocated(error)) return
+      call read_step_control(state, block, step, error)
       if (allocated(error)) return
       step%at = block%at
       if (block%last < block%first) then
@@ -166,6 +180,66 @@ contains
       tmp(n + 1) = step
       call move_alloc(tmp, state%steps)
    end subroutine read_step
+
+   !> CONTROL= and the arc-length options of *STEP.
+   subroutine read_step_control(state, block, step, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      type(raw_step_t), intent(inout) :: step
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: control
+      logical :: found, has_node, has_disp
+      integer :: i
+      character(len=14), parameter :: ARC_KEYS(7) = [character(len=14) :: 'MAX_INCREMENTS', &
+         'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', 'NODE', 'DOF', 'DISPLACEMENT']
+      control = 'LOAD'
+      call param_choice(state, block, 'CONTROL', [character(len=10) :: 'LOAD', 'ARC_LENGTH'], &
+         control, error)
+      if (allocated(error)) return
+      step%arc_length = control == 'ARC_LENGTH'
+      if (.not. step%arc_length) then
+         do i = 1, size(ARC_KEYS)
+            call block%kw%get(trim(ARC_KEYS(i)), control, found)
+            if (found) then
+               call line_error(state, block%at, trim(ARC_KEYS(i))//'= is an option of '// &
+                  'CONTROL=ARC_LENGTH (this step is load-controlled)', error)
+               return
+            end if
+         end do
+         return
+      end if
+      step%max_increments = 10*step%increments
+      call param_int(state, block, 'MAX_INCREMENTS', 1, step%max_increments, error)
+      if (allocated(error)) return
+      call param_int(state, block, 'ITERATIONS', 1, step%iterations_wanted, error)
+      if (allocated(error)) return
+      call param_real(state, block, 'MIN_LENGTH', step%min_length, found, error)
+      if (allocated(error)) return
+      call param_real(state, block, 'MAX_LENGTH', step%max_length, found, error)
+      if (allocated(error)) return
+      if (.not. (step%min_length > 0.0_wp .and. step%min_length <= 1.0_wp .and. &
+          step%max_length >= 1.0_wp .and. step%max_length < huge(1.0_wp))) then
+         call line_error(state, block%at, 'expected 0 < MIN_LENGTH <= 1 <= MAX_LENGTH '// &
+            '(multiples of the first increment length)', error)
+         return
+      end if
+      call param_int(state, block, 'NODE', 1, step%node_id, error)
+      if (allocated(error)) return
+      has_node = step%node_id > 0
+      call param_int(state, block, 'DOF', 1, step%dof, error)
+      if (allocated(error)) return
+      call param_real(state, block, 'DISPLACEMENT', step%displacement, has_disp, error)
+      if (allocated(error)) return
+      if (has_node .neqv. (has_disp .and. step%dof > 0)) then
+         call line_error(state, block%at, 'a displacement target needs NODE=id, DOF=1|2 and '// &
+            'DISPLACEMENT=value together', error)
+         return
+      end if
+      if (step%dof > 2) then
+         call line_error(state, block%at, 'expected DOF=1 (x or r) or DOF=2 (y or z)', error)
+         return
+      end if
+   end subroutine read_step_control
 
    subroutine param_real(state, block, key, value, found, error)
       type(deck_state_t), intent(in) :: state

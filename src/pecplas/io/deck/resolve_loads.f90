@@ -4,10 +4,11 @@
 module pecplas_io_deck_resolve_loads
    use pecplas_error, only: error_t
    use pecplas_io_deck_fields, only: parse_int, same_name, upper, add_name
-   use pecplas_io_deck_state, only: deck_state_t, raw_item_t, line_error
+   use pecplas_io_deck_state, only: deck_state_t, raw_item_t, raw_step_t, line_error
    use pecplas_model, only: model_t
    use pecplas_model_mesh, only: mesh_t
-   use pecplas_model_loads, only: load_pattern_t
+   use pecplas_model_loads, only: load_pattern_t, step_t
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -158,6 +159,13 @@ contains
             step%increments = raw%increments
             step%file = state%lines(raw%at)%file
             step%line = state%lines(raw%at)%line
+            step%arc_length = raw%arc_length
+            step%max_increments = raw%max_increments
+            step%iterations_wanted = raw%iterations_wanted
+            step%min_length = raw%min_length
+            step%max_length = raw%max_length
+            step%dof = raw%dof
+            step%displacement = raw%displacement
             allocate (step%pattern(raw%n), step%target(raw%n))
             do i = 1, raw%n
                p = 0
@@ -178,9 +186,49 @@ contains
                step%pattern(i) = p
                step%target(i) = raw%items(i)%value(1)
             end do
+            if (raw%arc_length) then
+               call resolve_arc_step(state, model, raw, step, error)
+               if (allocated(error)) return
+            end if
          end associate
       end do
    end subroutine resolve_steps
+
+   !> An arc-length step scales force patterns only (imposed displacements have no limit
+   !> point to pass: load control follows them) and at least one must change; its target node
+   !> must exist.
+   subroutine resolve_arc_step(state, model, raw, step, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(raw_step_t), intent(in) :: raw
+      type(step_t), intent(inout) :: step
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      logical :: force
+      force = .false.
+      do i = 1, size(step%pattern)
+         if (model%patterns(step%pattern(i))%kind == 'DISPLACEMENT') then
+            call line_error(state, raw%items(i)%at, "CONTROL=ARC_LENGTH scales force "// &
+               "patterns only; '"//model%patterns(step%pattern(i))%name//"' is a displacement "// &
+               'pattern (load control follows imposed displacements: give it a step of its own)', &
+               error)
+            return
+         end if
+         force = .true.
+      end do
+      if (.not. force) then
+         call line_error(state, raw%at, "CONTROL=ARC_LENGTH needs a force pattern in step '"// &
+            raw%name//"'", error)
+         return
+      end if
+      if (raw%node_id > 0) then
+         step%node = findloc(model%mesh%node_id, raw%node_id, dim=1)
+         if (step%node == 0) then
+            call line_error(state, raw%at, 'NODE='//itoa(raw%node_id)//': no such node', error)
+            return
+         end if
+      end if
+   end subroutine resolve_arc_step
 
    !> ' a b c' lists of names for messages (' (none)' when empty).
    function nset_names(mesh) result(list)

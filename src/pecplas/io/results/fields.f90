@@ -134,6 +134,10 @@ contains
       if (.not. allocated(error)) call h5_append(file, 'history/iterations', row, &
          inc%iterations, error)
       if (.not. allocated(error)) call h5_append(file, 'history/fields', row, fields, error)
+      if (.not. allocated(error)) call h5_append(file, 'history/method', row, inc%method, error)
+      if (.not. allocated(error)) call h5_append(file, 'history/line_searches', row, &
+         inc%line_searches, error)
+      if (.not. allocated(error)) call h5_append(file, 'history/control', row, inc%control, error)
       if (.not. allocated(error)) call h5_append(file, 'history/time', row, inc%time, error)
       if (.not. allocated(error)) call h5_append(file, 'history/residual', row, inc%residual, &
          error)

@@ -20,9 +20,9 @@ module pecplas_io_results_file
    use pecplas_model, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
-      joint_points_t
+      joint_points_t, limit_point_t
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
-      h5_history_dataset, safe_name
+      h5_history_dataset, safe_name, h5_write
    use pecplas_io_results_mesh, only: write_mesh
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
@@ -34,8 +34,8 @@ module pecplas_io_results_file
    public :: results_file_t, RESULT_STATUSES
 
    !> Final statuses accepted by `finish`; a file never finished keeps 'running'.
-   character(len=*), parameter :: RESULT_STATUSES(4) = [character(len=10) :: 'completed', &
-      'limit load', 'diverged', 'failed']
+   character(len=*), parameter :: RESULT_STATUSES(5) = [character(len=10) :: 'completed', &
+      'limit load', 'diverged', 'stopped', 'failed']
 
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
@@ -56,6 +56,7 @@ module pecplas_io_results_file
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
+      procedure :: write_limit => results_write_limit
       procedure :: is_open => results_is_open
       procedure :: free => results_free
       final :: results_final
@@ -199,8 +200,8 @@ contains
       integer(hid_t), intent(in) :: file
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      character(len=*), parameter :: INTS(5) = [character(len=16) :: 'step', 'increment', &
-         'global_increment', 'iterations', 'fields']
+      character(len=*), parameter :: INTS(8) = [character(len=16) :: 'step', 'increment', &
+         'global_increment', 'iterations', 'fields', 'method', 'line_searches', 'control']
       character(len=*), parameter :: REALS(3) = [character(len=8) :: 'time', 'residual', &
          'cpu_time']
       integer(hid_t) :: g
@@ -285,7 +286,7 @@ contains
       end if
       if (.not. any(RESULT_STATUSES == status)) then
          call fatal_error(error, 'results file: unknown status "'//status// &
-            '"; known: completed, limit load, diverged, failed')
+            '"; known: completed, limit load, diverged, stopped, failed')
          return
       end if
       complete = 0
@@ -302,6 +303,30 @@ contains
       if (allocated(error)) return
       call this%free()
    end subroutine results_finish
+
+   !> /limit: where the load of the run had its maximum (written before `finish`).
+   subroutine results_write_limit(this, limit, error)
+      class(results_file_t), intent(inout) :: this
+      type(limit_point_t), intent(in) :: limit
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: g
+      if (this%file <= 0) then
+         call fatal_error(error, 'results file is not open')
+         return
+      end if
+      call h5_group(this%file, 'limit', g, error)
+      if (allocated(error)) return
+      call h5_attr(g, 'kind', limit%kind, error)
+      if (.not. allocated(error)) call h5_attr(g, 'step', limit%step, error)
+      if (.not. allocated(error)) call h5_attr(g, 'global_increment', limit%global_increment, &
+         error)
+      if (.not. allocated(error)) call h5_attr(g, 'fraction', limit%fraction, error)
+      if (.not. allocated(error)) call h5_attr(g, 'stiffness_parameter', &
+         limit%stiffness_parameter, error)
+      if (.not. allocated(error)) call h5_write(g, 'pattern_factors', limit%pattern_factors, &
+         error)
+      call h5_close_group(g)
+   end subroutine results_write_limit
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)

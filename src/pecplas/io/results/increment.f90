@@ -6,7 +6,7 @@ module pecplas_io_results_increment
    private
 
    public :: increment_result_t, set_fields_t, gauss_coordinates_t, joint_fields_t, &
-      joint_points_t
+      joint_points_t, limit_point_t
 
    !> Gauss-point fields of one element set, components (xx, yy, zz, xy) as in the
    !> massif materials (xy strain is engineering shear).
@@ -46,6 +46,9 @@ module pecplas_io_results_increment
       real(wp) :: time = 0.0_wp
       !> Factor of each load pattern (model%patterns order) at the end of the increment.
       real(wp), allocatable :: pattern_factors(:)
+      !> Method that converged (1 modified Newton, 2 quasi-Newton, 3 full Newton), line
+      !> search residual evaluations, control (0 load, 1 arc-length).
+      integer :: method = 0, line_searches = 0, control = 0
       !> Newton iterations and final relative residual ||FR|| / ||F||.
       integer :: iterations = 0
       real(wp) :: residual = 0.0_wp
@@ -61,5 +64,15 @@ module pecplas_io_results_increment
       !> One entry per joint set, in model%joint_sets order (absent: no joints).
       type(joint_fields_t), allocatable :: joint_fields(:)
    end type increment_result_t
+
+   !> The largest load of a path that has a maximum: step, global increment and step
+   !> fraction where it was reached, the pattern factors there, and how the maximum showed
+   !> ('passed': the load fell after it; 'flat': the current stiffness parameter ~ 0).
+   type :: limit_point_t
+      character(len=:), allocatable :: kind
+      integer :: step = 0, global_increment = 0
+      real(wp) :: fraction = 0.0_wp, stiffness_parameter = 0.0_wp
+      real(wp), allocatable :: pattern_factors(:)
+   end type limit_point_t
 
 end module pecplas_io_results_increment
