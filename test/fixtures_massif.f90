@@ -43,7 +43,7 @@ contains
    !> A distorted element of type `name` with r in [1, 2.3] (valid for axisymmetry).
    !> Quadratic elements get mid-side nodes moved off the chords (curved edges).
    function sample_xe(name) result(xe)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       real(wp), allocatable :: xe(:, :)
       real(wp), parameter :: TRI(2, 3) = reshape([1.1_wp, 0.2_wp, 2.3_wp, 0.5_wp, &
                                                   1.4_wp, 1.7_wp], [2, 3])
@@ -58,7 +58,7 @@ contains
          xe = reshape([TRI, mid(TRI, 1, 2), mid(TRI, 2, 3), mid(TRI, 3, 1)], [2, 6])
          xe(:, 4) = xe(:, 4) + [0.03_wp, -0.05_wp]
          xe(:, 5) = xe(:, 5) + [0.04_wp, 0.02_wp]
-      case ('Q8')
+      case ('Q8', 'Q8R')
          xe = reshape([QUAD, mid(QUAD, 1, 2), mid(QUAD, 2, 3), mid(QUAD, 3, 4), &
                        mid(QUAD, 4, 1)], [2, 8])
          xe(:, 5) = xe(:, 5) + [0.02_wp, -0.06_wp]
@@ -75,7 +75,7 @@ contains
 
    !> Sample points inside the reference element (not Gauss points).
    function sample_points(name) result(p)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       real(wp) :: p(2, 3)
       if (name(1:1) == 'T') then
          p = reshape([0.2_wp, 0.3_wp, 0.6_wp, 0.1_wp, 0.05_wp, 0.85_wp], [2, 3])
@@ -117,7 +117,7 @@ contains
    !> quadrilaterals (Q4, Q8) or ten triangles (T3, T6, each quadrilateral cut along a
    !> diagonal); quadratic elements get mid-side nodes at edge midpoints.
    subroutine build_patch(name, x0, patch)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       real(wp), intent(in) :: x0
       type(patch_t), intent(out) :: patch
       real(wp), parameter :: CORNERS(2, 8) = reshape([0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, &
@@ -140,7 +140,7 @@ contains
       nc = size(lin, 1)
       x(:, 1:8) = CORNERS
       k = 8
-      if (name == 'T6' .or. name == 'Q8') then
+      if (name == 'T6' .or. name(1:2) == 'Q8') then
          allocate (patch%conn(2*nc, size(lin, 2)))
          patch%conn(1:nc, :) = lin
          do e = 1, size(lin, 2)

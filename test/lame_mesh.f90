@@ -7,6 +7,7 @@ module lame_mesh
    private
 
    public :: write_lame_deck, lame_exact, A, B, P, E, NU
+   public :: write_ring_mesh, ring_node, ring_quadratic
 
    real(wp), parameter :: A = 1.0_wp, B = 2.0_wp, P = 100.0_wp, E = 1.0e4_wp, NU = 0.3_wp
    real(wp), parameter :: PI = acos(-1.0_wp)
@@ -23,20 +24,43 @@ contains
       hoop = c*(1.0_wp + B**2/r**2)
    end subroutine lame_exact
 
-   !> Structured mesh of nr x nt cells in (r, theta) [plane] or (r, z) [axi] with element
-   !> type etype (T3, T6, Q4, Q8); a quadratic grid (2nr+1) x (2nt+1) is used for T6/Q8.
+   !> Deck of the Lamé problem (elastic ring, internal pressure P, one increment) on the
+   !> ring_mesh of nr x nt cells with element type etype.
    subroutine write_lame_deck(path, etype, axi, nr, nt)
       character(len=*), intent(in) :: path, etype
       logical, intent(in) :: axi
       integer, intent(in) :: nr, nt
-      integer :: u, i, j, mr, mt, step, id, eid
-      real(wp) :: r, t, x, y
-      logical :: quad
-      quad = etype == 'T6' .or. etype == 'Q8'
-      step = merge(2, 1, quad)
-      mr = step*nr; mt = step*nt
+      integer :: u
       open (newunit=u, file=path, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'Lame thick cylinder '//etype
+      call write_ring_mesh(u, etype, axi, nr, nt)
+      write (u, '(a)') '*MATERIAL, NAME=steel, TYPE=ELASTIC'
+      write (u, '(a,es24.16,a,es24.16)') 'E = ', E, ', NU = ', NU
+      write (u, '(a)') '*SECTION, SET=ring, MATERIAL=steel'
+      write (u, '(a)') '*LOAD, NAME=internal, TYPE=PRESSURE'
+      write (u, '(a,es24.16)') 'inner, ', P
+      write (u, '(a)') '*STEP, NAME=pressurise, INCREMENTS=1'
+      write (u, '(a)') 'internal, 1.0'
+      write (u, '(a)') '*SOLVER, TOLERANCE=1e-10'
+      close (u)
+   end subroutine write_lame_deck
+
+   !> Writes to unit u the *ANALYSIS line and a structured mesh of nr x nt cells in
+   !> (r, theta) [plane: quarter ring] or (r, z) [axi] with element type etype (T3, T6,
+   !> Q4, Q8, Q8R); a quadratic grid (2nr+1) x (2nt+1) numbered by ring_node is used for
+   !> T6/Q8/Q8R. Element set 'ring', node sets 'bottom' and 'top' on symmetry rollers
+   !> (u_z = 0 on both faces in axi), edge set 'inner' (r = A).
+   subroutine write_ring_mesh(u, etype, axi, nr, nt)
+      integer, intent(in) :: u
+      character(len=*), intent(in) :: etype
+      logical, intent(in) :: axi
+      integer, intent(in) :: nr, nt
+      integer :: i, j, mr, mt, step, eid
+      real(wp) :: r, t, x, y
+      logical :: quad
+      quad = ring_quadratic(etype)
+      step = merge(2, 1, quad)
+      mr = step*nr; mt = step*nt
       if (axi) then
          write (u, '(a)') '*ANALYSIS, TYPE=AXISYMMETRIC'
       else
@@ -64,7 +88,7 @@ contains
                eid = eid + 1
                write (u, '(*(i0,:,","))') eid, node(i, j), node(i + 1, j), node(i + 1, j + 1), &
                   node(i, j + 1)
-            case ('Q8')
+            case ('Q8', 'Q8R')
                eid = eid + 1
                write (u, '(*(i0,:,","))') eid, node(i, j), node(i + 2, j), node(i + 2, j + 2), &
                   node(i, j + 2), node(i + 1, j), node(i + 2, j + 1), node(i + 1, j + 2), &
@@ -84,9 +108,6 @@ contains
             end select
          end do
       end do
-      write (u, '(a)') '*MATERIAL, NAME=steel, TYPE=ELASTIC'
-      write (u, '(a,es24.16,a,es24.16)') 'E = ', E, ', NU = ', NU
-      write (u, '(a)') '*SECTION, SET=ring, MATERIAL=steel'
       write (u, '(a)') '*NSET, NAME=bottom'
       write (u, '(*(i0,:,","))') (node(i, 0), i=0, mr)
       write (u, '(a)') '*NSET, NAME=top'
@@ -106,17 +127,23 @@ contains
             write (u, '(*(i0,:,","))') node(0, j), node(0, j + 1)
          end if
       end do
-      write (u, '(a)') '*LOAD, NAME=internal, TYPE=PRESSURE'
-      write (u, '(a,es24.16)') 'inner, ', P
-      write (u, '(a)') '*STEP, NAME=pressurise, INCREMENTS=1'
-      write (u, '(a)') 'internal, 1.0'
-      write (u, '(a)') '*SOLVER, TOLERANCE=1e-10'
-      close (u)
    contains
       integer function node(ii, jj)
          integer, intent(in) :: ii, jj
-         node = 1 + ii + jj*(mr + 1)
+         node = ring_node(ii, jj, mr)
       end function node
-   end subroutine write_lame_deck
+   end subroutine write_ring_mesh
+
+   !> Whether write_ring_mesh uses the quadratic grid for etype.
+   pure logical function ring_quadratic(etype)
+      character(len=*), intent(in) :: etype
+      ring_quadratic = etype == 'T6' .or. etype == 'Q8' .or. etype == 'Q8R'
+   end function ring_quadratic
+
+   !> Id of grid node (i, j), i = 0..mr radial, j angular, on a grid of mr + 1 columns.
+   pure integer function ring_node(i, j, mr)
+      integer, intent(in) :: i, j, mr
+      ring_node = 1 + i + j*(mr + 1)
+   end function ring_node
 
 end module lame_mesh

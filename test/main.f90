@@ -48,6 +48,9 @@ program tester
    use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
    use test_pecjoin_identify_roundtrip, only: collect_pecjoin_identify_roundtrip
    use test_driver_nonlinear, only: collect_driver_nonlinear
+   use test_massif_collapse, only: collect_massif_collapse
+   use test_massif_q8r, only: collect_massif_q8r
+   use test_driver_sanity, only: collect_driver_sanity
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -102,6 +105,9 @@ program tester
    suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
    suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]
    suites = [suites, new_testsuite('driver_nonlinear', collect_driver_nonlinear)]
+   suites = [suites, new_testsuite('massif_collapse', collect_massif_collapse)]
+   suites = [suites, new_testsuite('massif_q8r', collect_massif_q8r)]
+   suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

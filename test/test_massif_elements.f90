@@ -17,7 +17,7 @@ module test_massif_elements
    private
    public :: collect_massif_elements
 
-   character(len=2), parameter :: NAMES(4) = KNOWN_MASSIF_ELEMENTS
+   character(len=*), parameter :: NAMES(*) = KNOWN_MASSIF_ELEMENTS
    real(wp), parameter :: TWO_PI = 2.0_wp*acos(-1.0_wp)
 
 contains
@@ -105,7 +105,7 @@ contains
 
    !> Element stiffness (E = 1, nu = 0.3) of the distorted sample element.
    subroutine sample_stiffness(name, kind, ke, error)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       integer, intent(in) :: kind
       real(wp), allocatable, intent(out) :: ke(:, :)
       type(error_t), allocatable, intent(out) :: error
@@ -160,10 +160,13 @@ contains
    !> are exactly the rigid modes, well separated (next one > 1e-4 lambda_max): 3 in plane
    !> strain, 1 in axisymmetry; the one-point T3 has 2 in axisymmetry, since the hoop
    !> strain is sampled only at the centroid (a rotation about it is free in one element).
+   !> Q8R (2 x 2 points, 12 strain samples for 13 deformation modes) has exactly one
+   !> spurious mode in plane strain: 4 zero eigenvalues.
    subroutine test_eigen(error)
       type(error_t), allocatable, intent(out) :: error
       integer, parameter :: KINDS(2) = [PLANE_STRAIN, AXISYMMETRIC]
       real(wp), allocatable :: ke(:, :), lam(:)
+      real(wp) :: gap
       integer :: ie, ik, info, nzero, expected
       do ie = 1, size(NAMES)
          do ik = 1, 2
@@ -179,7 +182,14 @@ contains
             nzero = count(abs(lam) < 1.0e-10_wp*lam(size(lam)))
             expected = merge(3, 1, KINDS(ik) == PLANE_STRAIN)
             if (NAMES(ie) == 'T3' .and. KINDS(ik) == AXISYMMETRIC) expected = 2
-            call check(error, nzero == expected .and. lam(nzero + 1) > 1.0e-4_wp*lam(size(lam)) &
+            gap = 1.0e-4_wp
+            if (NAMES(ie) == 'Q8R') then
+               ! plane strain: + 1 spurious mode; axisymmetry: that mode only meets the hoop
+               ! strain u_r/r (9e-6 lambda_max on this element), weak but not zero
+               if (KINDS(ik) == PLANE_STRAIN) expected = 4
+               if (KINDS(ik) == AXISYMMETRIC) gap = 1.0e-6_wp
+            end if
+            call check(error, nzero == expected .and. lam(nzero + 1) > gap*lam(size(lam)) &
                .and. lam(1) > -1.0e-10_wp*lam(size(lam)), NAMES(ie)//' zero-energy modes')
             if (allocated(error)) return
             deallocate (lam)

@@ -20,7 +20,7 @@ module test_massif_patch
    private
    public :: collect_massif_patch
 
-   character(len=2), parameter :: NAMES(4) = KNOWN_MASSIF_ELEMENTS
+   character(len=*), parameter :: NAMES(*) = KNOWN_MASSIF_ELEMENTS
    real(wp), parameter :: YOUNG = 2.0e4_wp, NU = 0.3_wp, THICK = 0.5_wp, TOL = 1.0e-10_wp
    real(wp), parameter :: TWO_PI = 2.0_wp*acos(-1.0_wp)
    !> Faces of the patch [x0, x0+1] x [0, 1]: left, right, bottom, top, outward normals.
@@ -82,7 +82,7 @@ contains
    end subroutine test_disp_axi_shear
 
    subroutine displacement_patch(name, kind, x0, a, c, eps_exact, error)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       integer, intent(in) :: kind
       real(wp), intent(in) :: x0, a(2, 2), c(2), eps_exact(4)
       type(error_t), allocatable, intent(out) :: error
@@ -178,7 +178,7 @@ contains
    !> 1 = rollers (u = 0) on the left face + v = 0 at node 1 (corner (x0, 0)),
    !> 2 = u = v = 0 at node 1 and v = 0 at node 2 (corner (x0+1, 0)), 3 = v = 0 at node 1.
    subroutine force_patch(name, kind, x0, pres, trac, sig_exact, support, error)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       integer, intent(in) :: kind, support
       real(wp), intent(in) :: x0, pres(4), trac(2, 4), sig_exact(4)
       type(error_t), allocatable, intent(out) :: error
@@ -229,7 +229,7 @@ contains
    end subroutine force_patch
 
    subroutine setup(name, x0, elem, rule, patch)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       real(wp), intent(in) :: x0
       class(massif_element_t), allocatable, intent(out) :: elem
       type(massif_rule_t), intent(out) :: rule

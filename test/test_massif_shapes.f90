@@ -13,7 +13,7 @@ module test_massif_shapes
    private
    public :: collect_massif_shapes
 
-   character(len=2), parameter :: NAMES(4) = KNOWN_MASSIF_ELEMENTS
+   character(len=*), parameter :: NAMES(*) = KNOWN_MASSIF_ELEMENTS
 
 contains
 
@@ -86,7 +86,7 @@ contains
 
    !> Reference coordinates of the nodes, in element node order.
    function reference_nodes(name) result(xn)
-      character(len=2), intent(in) :: name
+      character(len=*), intent(in) :: name
       real(wp), allocatable :: xn(:, :)
       select case (name)
       case ('T3')

@@ -2,7 +2,7 @@
 """Export one of our decks (doc/deck.md) to an Abaqus-style CalculiX input (`ccx`), for the
 side-by-side benchmark tools/bench_peer.py (`doc/bench/README.md`).
 
-Covered: *NODES, *ELEMENTS (Q4, Q8, T3), *MATERIAL (elastic E, NU, GAMMA), *SECTION, *NSET,
+Covered: *NODES, *ELEMENTS (Q4, Q8, Q8R, T3), *MATERIAL (elastic E, NU, GAMMA), *SECTION, *NSET,
 *BOUNDARY (fixed components), *EDGES + *LOAD TYPE=PRESSURE, *LOAD TYPE=FORCE,
 *INITIAL_STRESS TYPE=GEOSTATIC, *STEP (proportional patterns, linear increments), and the
 joints (*JOINTS SPRING doublets or GOODMAN4 elements) turned into CalculiX contact:
@@ -161,7 +161,7 @@ def _ip_points(xy, etype):
 def export(m, out, kn=None, kt=None, pair="surface", warn=print):
     axi = m["analysis"].startswith("AXI")
     cpe = {"Q4": "CAX4" if axi else "CPE4", "T3": "CAX3" if axi else "CPE3",
-           "Q8": "CAX8" if axi else "CPE8"}
+           "Q8": "CAX8" if axi else "CPE8", "Q8R": "CAX8R" if axi else "CPE8R"}
     L = ["** Exported from our deck by tools/export_abaqus.py for CalculiX (ccx)",
          "*HEADING", "exported deck", "*NODE"]
     L += [f"{k}, {x:.12g}, {y:.12g}, 0" for k, (x, y) in sorted(m["nodes"].items())]

@@ -13,6 +13,7 @@ module pecplas_cli
    use pecplas_driver_stiffness, only: linear_solver_name
    use pecplas_driver_increments, only: run_increments
    use pecplas_driver_gauss, only: gauss_coordinates
+   use pecplas_driver_sanity, only: large_displacement_warning
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_driver_advise, only: advise_main
    use pecplas_io_results_file, only: results_file_t
@@ -117,7 +118,7 @@ contains
       type(results_file_t) :: results
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: status, message, outfile
+      character(len=:), allocatable :: status, message, outfile, warning
       real(wp) :: t0, t1, w0
       integer :: nflipped
 
@@ -154,6 +155,18 @@ contains
       if (allocated(error)) then
          status = 'failed'
          message = error%text()
+      end if
+      ! a warning keeps the status and exit code; it goes to stderr, the message and the file
+      warning = large_displacement_warning(model%mesh%x, problem%state%u)
+      if (len(warning) > 0) then
+         write (0, '(a)') COMMAND//': warning: '//warning
+         if (len(message) > 0) message = message//'; '
+         message = message//'warning: '//warning
+         call results%set_warnings(warning, error)
+         if (allocated(error)) then
+            code = command_error(COMMAND, EXIT_INTERNAL, 'cannot write results: '//error%text())
+            return
+         end if
       end if
       call results%finish(status, message, error)
       if (allocated(error)) then

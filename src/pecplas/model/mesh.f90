@@ -11,7 +11,7 @@ module pecplas_model_mesh
    !> Elements of one type sharing a material (one block of the deck or one Gmsh group).
    type :: element_set_t
       character(len=:), allocatable :: name
-      !> Element type name as in the deck: 'T3', 'T6', 'Q4', 'Q8'.
+      !> Element type name as in the deck: 'T3', 'T6', 'Q4', 'Q8', 'Q8R'.
       character(len=:), allocatable :: etype
       !> Connectivity (nodes per element, number of elements), internal node numbers,
       !> corners counter-clockwise first, then mid-side nodes (node i+n/2 between i and i+1).

@@ -102,13 +102,13 @@ contains
       end if
    end subroutine append_mesh
 
-   !> Number of corner nodes of an element type ('T3', 'T6' -> 3; 'Q4', 'Q8' -> 4), 0 if unknown.
+   !> Corner nodes of an element type ('T3', 'T6' -> 3; 'Q4', 'Q8', 'Q8R' -> 4), 0 if unknown.
    pure integer function corner_count(etype) result(nc)
       character(len=*), intent(in) :: etype
       select case (etype)
       case ('T3', 'T6')
          nc = 3
-      case ('Q4', 'Q8')
+      case ('Q4', 'Q8', 'Q8R')
          nc = 4
       case default
          nc = 0

@@ -14,8 +14,9 @@ module pecplas_io_deck_reader_mesh
    public :: ELEMENT_TYPES, element_nodes
 
    !> Massif element types and their node counts.
-   character(len=*), parameter :: ELEMENT_TYPES(4) = [character(len=2) :: 'T3', 'T6', 'Q4', 'Q8']
-   integer, parameter :: NODES_PER_TYPE(4) = [3, 6, 4, 8]
+   character(len=*), parameter :: ELEMENT_TYPES(5) = [character(len=3) :: 'T3', 'T6', 'Q4', 'Q8', &
+      'Q8R']
+   integer, parameter :: NODES_PER_TYPE(5) = [3, 6, 4, 8, 8]
 
 contains
 
@@ -62,7 +63,7 @@ contains
       end do
    end subroutine read_nodes
 
-   !> *ELEMENTS, TYPE=T3|T6|Q4|Q8, SET=name -- data: id, n1, ..., nN
+   !> *ELEMENTS, TYPE=T3|T6|Q4|Q8|Q8R, SET=name -- data: id, n1, ..., nN
    subroutine read_elements(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
@@ -84,7 +85,7 @@ contains
       if (nen == 0) then
          list = ''
          do i = 1, size(ELEMENT_TYPES)
-            call add_name(list, ELEMENT_TYPES(i))
+            call add_name(list, trim(ELEMENT_TYPES(i)))
          end do
          call line_error(state, block%at, "unknown element type '"//etype//"'; known types:"// &
             list, error)

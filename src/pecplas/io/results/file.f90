@@ -1,7 +1,8 @@
 !> The results file of a run (HDF5), written while the run goes on:
 !>   /            attributes program, version, format_version, title, units, deck_file,
 !>                deck_text, analysis, thickness, created, status, complete,
-!>                status_message (+ finished, and completed when status = 'completed')
+!>                status_message (+ finished, and completed when status = 'completed';
+!>                warnings when the run has any, e.g. displacements too large for small strain)
 !>   /mesh        see pecplas_io_results_mesh
 !>   /history     one row per converged increment: step, increment, global_increment, time,
 !>                iterations, residual, cpu_time, fields (1 = field group written) and
@@ -57,6 +58,7 @@ module pecplas_io_results_file
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
       procedure :: write_limit => results_write_limit
+      procedure :: set_warnings => results_set_warnings
       procedure :: is_open => results_is_open
       procedure :: free => results_free
       final :: results_final
@@ -327,6 +329,19 @@ contains
          error)
       call h5_close_group(g)
    end subroutine results_write_limit
+
+   !> Stores `text` (warnings of the run, one per line) as the root attribute `warnings`;
+   !> call before `finish`. Files without warnings have no such attribute.
+   subroutine results_set_warnings(this, text, error)
+      class(results_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: text
+      type(error_t), allocatable, intent(out) :: error
+      if (this%file <= 0) then
+         call fatal_error(error, 'results file is not open')
+         return
+      end if
+      call h5_attr(this%file, 'warnings', text, error)
+   end subroutine results_set_warnings
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)

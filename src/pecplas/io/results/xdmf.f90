@@ -48,12 +48,12 @@ contains
          topology = 'Triangle_6'; npe = 6
       case ('Q4')
          topology = 'Quadrilateral'; npe = 4
-      case ('Q8')
+      case ('Q8', 'Q8R')
          topology = 'Quadrilateral_8'; npe = 8
       case default
          npe = 0
          call fatal_error(error, 'results file: no XDMF topology for element type "'// &
-            etype//'"; known types: T3 T6 Q4 Q8')
+            etype//'"; known types: T3 T6 Q4 Q8 Q8R')
       end select
    end subroutine xdmf_topology
 

@@ -6,6 +6,7 @@ module pecplas_massif_elements_factory
    use pecplas_massif_elements_t6, only: t6_element_t
    use pecplas_massif_elements_q4, only: q4_element_t
    use pecplas_massif_elements_q8, only: q8_element_t
+   use pecplas_massif_elements_q8r, only: q8r_element_t
    use pecplas_strings, only: upper
    implicit none (type, external)
    private
@@ -13,7 +14,8 @@ module pecplas_massif_elements_factory
    public :: new_massif_element, massif_element_nnode, KNOWN_MASSIF_ELEMENTS
 
    !> Deck names of the massif elements, in the order listed in error messages.
-   character(len=2), parameter :: KNOWN_MASSIF_ELEMENTS(4) = ['T3', 'T6', 'Q4', 'Q8']
+   character(len=3), parameter :: KNOWN_MASSIF_ELEMENTS(5) = [character(len=3) :: 'T3', 'T6', 'Q4', &
+      'Q8', 'Q8R']
 
 contains
 
@@ -34,10 +36,12 @@ contains
          allocate (q4_element_t :: elem)
       case ('Q8')
          allocate (q8_element_t :: elem)
+      case ('Q8R')
+         allocate (q8r_element_t :: elem)
       case default
          known = ''
          do i = 1, size(KNOWN_MASSIF_ELEMENTS)
-            known = known//' '//KNOWN_MASSIF_ELEMENTS(i)
+            known = known//' '//trim(KNOWN_MASSIF_ELEMENTS(i))
          end do
          call input_error(error, 'unknown massif element type "'//trim(adjustl(name))// &
             '"; known types:'//known)
@@ -54,7 +58,7 @@ contains
          nnode = 6
       case ('Q4')
          nnode = 4
-      case ('Q8')
+      case ('Q8', 'Q8R')
          nnode = 8
       case default
          nnode = 0

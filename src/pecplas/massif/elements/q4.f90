@@ -26,7 +26,7 @@ contains
 
    pure function q4_name(this) result(name)
       class(q4_element_t), intent(in) :: this
-      character(len=2) :: name
+      character(len=:), allocatable :: name
       name = 'Q4'
    end function q4_name
 

@@ -26,7 +26,7 @@ contains
 
    pure function q8_name(this) result(name)
       class(q8_element_t), intent(in) :: this
-      character(len=2) :: name
+      character(len=:), allocatable :: name
       name = 'Q8'
    end function q8_name
 

@@ -23,7 +23,7 @@ contains
 
    pure function t3_name(this) result(name)
       class(t3_element_t), intent(in) :: this
-      character(len=2) :: name
+      character(len=:), allocatable :: name
       name = 'T3'
    end function t3_name
 

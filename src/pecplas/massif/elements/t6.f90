@@ -23,7 +23,7 @@ contains
 
    pure function t6_name(this) result(name)
       class(t6_element_t), intent(in) :: this
-      character(len=2) :: name
+      character(len=:), allocatable :: name
       name = 'T6'
    end function t6_name
 

@@ -1,5 +1,5 @@
 !> Abstract isoparametric massif element (reference geometry, shape functions,
-!> integration rule, edges). Concrete types: T3, T6, Q4, Q8 (one file each).
+!> integration rule, edges). Concrete types: T3, T6, Q4, Q8, Q8R (one file each).
 !> Node order: corners counter-clockwise, then mid-side nodes (Gmsh order).
 module pecplas_massif_elements_type
    use pecplas_kinds, only: wp
@@ -10,7 +10,7 @@ module pecplas_massif_elements_type
 
    type, abstract :: massif_element_t
    contains
-      !> Deck name: 'T3', 'T6', 'Q4', 'Q8'.
+      !> Deck name: 'T3', 'T6', 'Q4', 'Q8', 'Q8R'.
       procedure(name_ifc), deferred :: name
       !> Nodes per element.
       procedure(count_ifc), deferred :: nnode
@@ -31,7 +31,7 @@ module pecplas_massif_elements_type
       pure function name_ifc(this) result(name)
          import :: massif_element_t
          class(massif_element_t), intent(in) :: this
-         character(len=2) :: name
+         character(len=:), allocatable :: name
       end function name_ifc
 
       pure integer function count_ifc(this)
