@@ -18,6 +18,7 @@ module pecplas_cli
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
    use pecplas_command, only: command_error
+   use pecplas_provenance, only: version_lines
    implicit none (type, external)
    private
 
@@ -81,7 +82,7 @@ contains
             code = EXIT_OK
             return
          case ('--version')
-            write (*, '(a)') PROGRAM_NAME//' '//VERSION
+            call print_version()
             code = EXIT_OK
             return
          case default
@@ -166,6 +167,16 @@ contains
       if (status /= 'completed') code = EXIT_STOPPED
       if (status == 'failed') code = EXIT_INTERNAL
    end function run_deck
+
+   !> --version: version, commit, compiler, linked library versions.
+   subroutine print_version()
+      character(len=:), allocatable :: lines(:)
+      integer :: i
+      lines = version_lines()
+      do i = 1, size(lines)
+         write (*, '(a)') trim(lines(i))
+      end do
+   end subroutine print_version
 
    subroutine banner(model, problem, deck, outfile)
       type(model_t), intent(in) :: model
