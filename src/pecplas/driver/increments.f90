@@ -36,7 +36,7 @@ contains
       !> Secant stiffness of the first loaded increment, the last converged and the last
       !> failed one (current stiffness parameter = k / k_first, Bergan).
       real(wp) :: k_first, k_conv, k_fail
-      integer :: istep, inc_in_step, iters, level
+      integer :: istep, istep0, inc_in_step, iters, level
       logical :: converged, last, blowup
       character(len=160) :: buf
 
@@ -45,13 +45,27 @@ contains
       k_first = 0.0_wp; k_conv = 0.0_wp
       ! the initial stresses are in equilibrium with their own nodal forces
       fint_conv = problem%initial_force
-      do istep = 1, size(model%steps)
+      istep0 = 1
+      ! restart: resume the step loop where the run read back stopped (pecplas_driver_restart)
+      if (problem%position%resume) then
+         fint_conv = problem%position%fint_conv
+         istep0 = problem%position%istep
+         k_first = problem%position%k_first; k_conv = problem%position%k_conv
+      end if
+      do istep = istep0, size(model%steps)
          associate (step => model%steps(istep))
             f0 = problem%state%factors
+            if (problem%position%resume) f0 = problem%position%f0
             ftarget = f0
             ftarget(step%pattern) = step%target
             dt0 = 1.0_wp/step%increments
             dt = dt0; tau = 0.0_wp; level = 0; inc_in_step = 0
+            if (problem%position%resume) then
+               associate (pos => problem%position)
+                  dt = pos%dt; tau = pos%tau; level = pos%level; inc_in_step = pos%inc_in_step
+                  pos%resume = .false.
+               end associate
+            end if
             do while (tau < 1.0_wp - 1.0e-12_wp)
                dt = min(dt, 1.0_wp - tau)
                factors = f0 + (ftarget - f0)*(tau + dt)
@@ -95,12 +109,23 @@ contains
                last = tau >= 1.0_wp - 1.0e-12_wp
                call cpu_time(t_now)
                t_out = wall_time()
+               ! the loop's position after this increment (the size grows back below), kept
+               ! for the restart data that write_increment writes
+               call problem%position%record(istep, inc_in_step, tau, merge(min(dt0, 2.0_wp*dt), &
+                  dt, level > 0), max(level - 1, 0), k_first, k_conv, f0, fint_conv)
                call write_increment(model, problem, results, istep, inc_in_step, &
                   real(istep - 1, wp) + tau, iters, residual, t_now - t_start, reaction, last, error)
                problem%time%output = problem%time%output + (wall_time() - t_out)
                if (allocated(error)) return
                if (.not. quiet) call progress_line(model, problem, istep, inc_in_step, tau, iters, &
                   residual)
+               if (problem%position%stop_now(last .and. istep == size(model%steps), &
+                   problem%increments)) then
+                  status = 'interrupted'
+                  message = 'stopped after the requested number of increments '// &
+                     '(--stop-after-increments); restart with --restart'
+                  return
+               end if
                if (level > 0) then
                   level = level - 1
                   dt = min(dt0, 2.0_wp*dt)

@@ -24,6 +24,7 @@ module pecplas_io_results_file
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
       h5_history_dataset, safe_name
    use pecplas_io_results_mesh, only: write_mesh
+   use pecplas_io_results_restart, only: restart_data_t, write_restart_group
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
@@ -34,8 +35,8 @@ module pecplas_io_results_file
    public :: results_file_t, RESULT_STATUSES
 
    !> Final statuses accepted by `finish`; a file never finished keeps 'running'.
-   character(len=*), parameter :: RESULT_STATUSES(4) = [character(len=10) :: 'completed', &
-      'limit load', 'diverged', 'failed']
+   character(len=*), parameter :: RESULT_STATUSES(5) = [character(len=11) :: 'completed', &
+      'limit load', 'diverged', 'failed', 'interrupted']
 
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
@@ -56,6 +57,7 @@ module pecplas_io_results_file
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
+      procedure :: write_restart => results_write_restart
       procedure :: is_open => results_is_open
       procedure :: free => results_free
       final :: results_final
@@ -302,6 +304,18 @@ contains
       if (allocated(error)) return
       call this%free()
    end subroutine results_finish
+
+   !> Replaces the /restart group with `data` (pecplas_io_results_restart).
+   subroutine results_write_restart(this, data, error)
+      class(results_file_t), intent(inout) :: this
+      type(restart_data_t), intent(in) :: data
+      type(error_t), allocatable, intent(out) :: error
+      if (this%file <= 0) then
+         call fatal_error(error, 'results file is not open')
+         return
+      end if
+      call write_restart_group(this%file, data, error)
+   end subroutine results_write_restart
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)
