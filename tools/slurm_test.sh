@@ -73,7 +73,8 @@ for _ in $(seq 30); do
 done
 sinfo
 
-exe=$("$FPM" run --profile release --target pecplas --runner echo 2>/dev/null | tail -n 1)
+# the program: $PECPLAS_BIN, else fpm's release build (make test-slurm builds it first)
+exe=${PECPLAS_BIN:-$("$FPM" run --profile release --target pecplas --runner echo 2>/dev/null | tail -n 1)}
 exe=$(realpath "$exe")
 out=$work/s2_mesh
 rm -rf "$out"
