@@ -19,9 +19,10 @@ DECK ?= input/default.inp
 OUT ?= output/$(basename $(notdir $(DECK))).h5
 CMAKE_DIR ?= build/cmake
 JOBS ?= 2
+PREFIX ?= $(HOME)/.local
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5 s6
+.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5 s6 install test-slurm
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -29,6 +30,10 @@ help:
 	@echo "                DECK=path/to/deck.inp [OUT=path/to/results.h5] to choose"
 	@echo "  make test     fpm test (debug) + CMake build and ctest (release) + pytest test/python"
 	@echo "  make build    fpm build --profile release"
+	@echo "  make install  build (release) and install pecplas, pecplas-path, pecplas-identify,"
+	@echo "                pecplas-sensitivity and pecplas-sweep into PREFIX/bin (PREFIX=$(PREFIX))"
+	@echo "  make test-slurm  start a one-node Slurm here and run the S2 mesh series as a job"
+	@echo "                array through pecplas-sweep (doc/sweep.md; needs root or Slurm)"
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
 	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
 	@echo "  make s2, s3   scenes S2 (pile, interface models) and S3 (dilatancy), PNGs in output/"
@@ -49,6 +54,7 @@ deps:
 
 build: deps
 	@bash tools/fpm_fresh.sh
+	@bash tools/build_info.sh
 	$(FPM) build --profile release
 
 run: build
@@ -62,6 +68,13 @@ run: build
 
 test: deps
 	@bash tools/test_all.sh
+
+install: deps
+	@bash tools/fpm_fresh.sh
+	@bash tools/install.sh "$(PREFIX)"
+
+test-slurm: build
+	@bash tools/slurm_test.sh
 
 s1: build
 	@mkdir -p output/s1

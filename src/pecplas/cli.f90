@@ -19,15 +19,20 @@ module pecplas_cli
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
    use pecplas_command, only: command_error
+   use pecplas_driver_restart, only: restore_restart
+   use pecplas_provenance, only: version_lines
    implicit none (type, external)
    private
 
    !> Program name in error messages.
    character(len=*), parameter :: COMMAND = 'pecplas'
+   !> Exit code of a run interrupted (SIGTERM/SIGINT, or --stop-after-increments).
+   integer, parameter :: EXIT_INTERRUPTED = 4
 
    public :: pecplas_main, run_deck
 
-   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] | '// &
+   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
+      '[--restart OLD.h5] | '// &
       'pecplas --advise DECK [--advise-node N]'
 
 contains
@@ -35,12 +40,14 @@ contains
    !> Runs the program for the command-line words `args`; returns the exit code.
    integer function pecplas_main(args) result(code)
       character(len=*), intent(in) :: args(:)
-      character(len=:), allocatable :: deck, outfile
+      character(len=:), allocatable :: deck, outfile, restart
       logical :: quiet, advise
       type(model_t) :: model
       type(problem_t) :: problem
-      integer :: i, node, ios
+      integer :: i, node, ios, stop_after
 
+      restart = ''
+      stop_after = 0
       advise = .false.
       node = 0
       quiet = .false.
@@ -63,6 +70,24 @@ contains
                return
             end if
             i = i + 1
+         case ('--restart')
+            if (i == size(args)) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --restart needs the results '// &
+                  'file to continue. '//USAGE)
+               return
+            end if
+            i = i + 1
+            restart = trim(args(i))
+         case ('--stop-after-increments')
+            ! test hook: stop as if interrupted after N converged increments in all
+            ios = 1
+            if (i < size(args)) read (args(i + 1), *, iostat=ios) stop_after
+            if (ios /= 0 .or. stop_after <= 0) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --stop-after-increments '// &
+                  'needs a number > 0. '//USAGE)
+               return
+            end if
+            i = i + 1
          case ('-o', '--output')
             if (i == size(args)) then
                code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
@@ -82,7 +107,7 @@ contains
             code = EXIT_OK
             return
          case ('--version')
-            write (*, '(a)') PROGRAM_NAME//' '//VERSION
+            call print_version()
             code = EXIT_OK
             return
          case default
@@ -105,14 +130,19 @@ contains
          code = advise_main(deck, node)
          return
       end if
-      code = run_deck(deck, outfile, quiet, model, problem)
+      code = run_deck(deck, outfile, quiet, model, problem, restart, stop_after)
    end function pecplas_main
 
    !> Runs `deck`, writing `outfile` (empty: the deck's *OUTPUT file or output/<deck>.h5).
    !> Returns the exit code; `model` and `problem` hold the final state (for tests).
-   integer function run_deck(deck, outfile_in, quiet, model, problem) result(code)
+   !> restart: a results file of the same deck to continue from (its last converged
+   !> increment); stop_after: stop as interrupted after that many increments (test hook).
+   integer function run_deck(deck, outfile_in, quiet, model, problem, restart, stop_after) &
+         result(code)
       character(len=*), intent(in) :: deck, outfile_in
       logical, intent(in) :: quiet
+      character(len=*), intent(in), optional :: restart
+      integer, intent(in), optional :: stop_after
       type(model_t), intent(out) :: model
       type(problem_t), intent(out) :: problem
       type(results_file_t) :: results
@@ -127,6 +157,10 @@ contains
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
+      if (.not. allocated(error) .and. present(restart)) then
+         if (len(restart) > 0) call restore_restart(restart, model, problem, error)
+      end if
+      if (present(stop_after)) problem%position%stop_after = stop_after
       if (allocated(error)) then
          code = command_error(COMMAND, error%exit_code(), error%text())
          return
@@ -138,6 +172,13 @@ contains
             outfile = model%output%file
          else
             outfile = 'output/'//path_stem(deck)//'.h5'
+         end if
+      end if
+      if (present(restart)) then
+         if (same_file(restart, outfile)) then
+            code = command_error(COMMAND, EXIT_INPUT, 'the restarted run must write another '// &
+               'file than '//restart//' (give -o NEW.h5)')
+            return
          end if
       end if
       call make_directories(path_dir(outfile))
@@ -178,7 +219,34 @@ contains
       code = EXIT_OK
       if (status /= 'completed') code = EXIT_STOPPED
       if (status == 'failed') code = EXIT_INTERNAL
+      if (status == 'interrupted') code = EXIT_INTERRUPTED
    end function run_deck
+
+   !> True when the two paths are spelled the same (after a leading './').
+   pure logical function same_file(a, b)
+      character(len=*), intent(in) :: a, b
+      same_file = strip_dot(a) == strip_dot(b)
+   end function same_file
+
+   pure function strip_dot(p) result(q)
+      character(len=*), intent(in) :: p
+      character(len=:), allocatable :: q
+      q = trim(p)
+      do while (len(q) > 2)
+         if (q(1:2) /= './') exit
+         q = q(3:)
+      end do
+   end function strip_dot
+
+   !> --version: version, commit, compiler, linked library versions.
+   subroutine print_version()
+      character(len=:), allocatable :: lines(:)
+      integer :: i
+      lines = version_lines()
+      do i = 1, size(lines)
+         write (*, '(a)') trim(lines(i))
+      end do
+   end subroutine print_version
 
    subroutine banner(model, problem, deck, outfile)
       type(model_t), intent(in) :: model

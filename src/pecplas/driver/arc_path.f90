@@ -20,10 +20,11 @@ module pecplas_driver_arc_path
    private
 
    public :: arc_request_t, arc_end_t, trace_arc
-   public :: END_TARGET, END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED
+   public :: END_TARGET, END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, &
+      END_INTERRUPTED
 
    integer, parameter :: END_TARGET = 1, END_PASSED = 2, END_NODE = 3, END_LIMIT = 4, &
-      END_MAX = 5, END_FAILED = 6, END_UNLOADED = 7
+      END_MAX = 5, END_FAILED = 6, END_UNLOADED = 7, END_INTERRUPTED = 8
 
    !> The path has become flat when |current stiffness parameter| stays below this for
    !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau).
@@ -134,6 +135,8 @@ contains
             inc_in_step = inc_in_step + 1
             time = req%time0 + req%time_span*real(res%increments, wp)/real(req%max_increments + 1, wp)
             if (landed) time = real(istep, wp)
+            call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
+               0.0_wp, f0, fint)
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
                reaction, istep, inc_in_step, time, landed, merge(0, 1, landed), error)
             if (allocated(error)) return
@@ -150,6 +153,10 @@ contains
             res%flat = nflat >= FLAT_COUNT
             if (landed) then
                res%kind = END_TARGET
+               return
+            end if
+            if (problem%position%stop_now(.false., problem%increments)) then
+               res%kind = END_INTERRUPTED
                return
             end if
             if (req%tau_pass > 0.0_wp .and. tau > req%tau_pass .and. res%beyond == 0 .and. &

@@ -21,7 +21,7 @@ module pecplas_driver_increments
    use pecplas_driver_iterate, only: attempt_t, outcome_t
    use pecplas_driver_attempts, only: run_t, try_chain, accept_increment
    use pecplas_driver_arc_path, only: arc_request_t, arc_end_t, trace_arc, END_TARGET, &
-      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED
+      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_io_results_file, only: results_file_t
    use pecplas_strings, only: itoa
    implicit none (type, external)
@@ -42,7 +42,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(run_t) :: run
       real(wp), allocatable :: f0(:), ftarget(:)
-      integer :: istep
+      integer :: istep, istep0
 
       call cpu_time(run%cpu_start)
       run%quiet = quiet
@@ -50,11 +50,19 @@ contains
       message = 'all steps completed'
       ! the initial stresses are in equilibrium with their own nodal forces
       run%fint_conv = problem%initial_force
-      do istep = 1, size(model%steps)
+      istep0 = 1
+      ! restart: resume the step loop where the run read back stopped (pecplas_driver_restart)
+      if (problem%position%resume) then
+         run%fint_conv = problem%position%fint_conv
+         istep0 = problem%position%istep
+      end if
+      do istep = istep0, size(model%steps)
          f0 = problem%state%factors
+         if (problem%position%resume) f0 = problem%position%f0
          ftarget = f0
          ftarget(model%steps(istep)%pattern) = model%steps(istep)%target
          run%k_first = 0.0_wp
+         if (problem%position%resume) run%k_first = problem%position%k_first
          if (model%steps(istep)%arc_length) then
             call arc_step(model, problem, results, run, istep, f0, ftarget, status, message, &
                error)
@@ -96,6 +104,12 @@ contains
          tau = 0.0_wp
          level = 0
          inc = 0
+         if (problem%position%resume) then
+            associate (pos => problem%position)
+               dt = pos%dt; tau = pos%tau; level = pos%level; inc = pos%inc_in_step
+               pos%resume = .false.
+            end associate
+         end if
          do while (tau < 1.0_wp - 1.0e-12_wp)
             dt = min(dt, 1.0_wp - tau)
             att%arc = .false.
@@ -132,6 +146,8 @@ contains
                   error)
                if (allocated(error)) return
                select case (res%kind)
+               case (END_INTERRUPTED)
+                  call interrupted_status(status, message)
                case (END_PASSED, END_TARGET)
                   ! a convergence failure, not a limit: load control goes on from here
                   tau = res%tau
@@ -150,10 +166,15 @@ contains
             inc = inc + 1
             if (run%k_first == 0.0_wp .and. allocated(out%du)) &
                run%k_first = dt/max(norm2(out%du), tiny(1.0_wp))
+            ! the loop's position after this increment (the size grows back below), for the
+            ! restart data written with the increment
+            call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
+               level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint)
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
                reaction, istep, inc, real(istep - 1, wp) + tau, tau >= 1.0_wp - 1.0e-12_wp, 0, &
                error)
             if (allocated(error)) return
+            if (interrupted(model, problem, istep, tau, status, message)) return
             if (level > 0) then
                level = level - 1
                dt = min(dt0, 2.0_wp*dt)
@@ -178,6 +199,11 @@ contains
       associate (step => model%steps(istep))
          inc = 0
          req%tau_start = 0.0_wp
+         if (problem%position%resume) then
+            req%tau_start = problem%position%tau
+            inc = problem%position%inc_in_step
+            problem%position%resume = .false.
+         end if
          req%dl = 0.0_wp
          req%dtau_first = 1.0_wp/step%increments
          req%max_increments = step%max_increments
@@ -187,6 +213,8 @@ contains
          select case (res%kind)
          case (END_TARGET)
             return
+         case (END_INTERRUPTED)
+            call interrupted_status(status, message)
          case (END_NODE)
             if (res%beyond > 0 .and. res%tau < res%tau_peak) then
                call limit_reached(model, problem, run, step, istep, res, status, message)
@@ -262,6 +290,26 @@ contains
       if (problem%increments > 0) message = message//'; every converged increment is in '// &
          'the results file (/limit says where the peak is)'
    end subroutine limit_reached
+
+   !> True (with status 'interrupted') when the run must stop after this increment: the
+   !> --stop-after-increments test hook.
+   logical function interrupted(model, problem, istep, tau, status, message)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: tau
+      character(len=:), allocatable, intent(inout) :: status, message
+      interrupted = problem%position%stop_now(tau >= 1.0_wp - 1.0e-12_wp .and. &
+         istep == size(model%steps), problem%increments)
+      if (interrupted) call interrupted_status(status, message)
+   end function interrupted
+
+   subroutine interrupted_status(status, message)
+      character(len=:), allocatable, intent(inout) :: status, message
+      status = 'interrupted'
+      message = 'stopped after the requested number of increments (--stop-after-increments); '// &
+         'restart with --restart'
+   end subroutine interrupted_status
 
    subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)
       type(step_t), intent(in) :: step

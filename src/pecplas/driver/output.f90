@@ -7,6 +7,7 @@ module pecplas_driver_output
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: increment_result_t
    use pecjoin_laws_coulomb, only: plastic_slip
+   use pecplas_driver_restart, only: pack_restart
    implicit none (type, external)
    private
 
@@ -15,7 +16,7 @@ module pecplas_driver_output
 contains
 
    !> Writes one converged increment; fields only every `output%every` increments and at the
-   !> end of each step, the history row always.
+   !> end of each step, the history row and the restart data (/restart) always.
    !> `how` = (method, line searches, control) of the increment (see the history columns).
    subroutine write_increment(model, problem, results, istep, inc, time, iters, residual, &
          cpu, reaction, last_of_step, how, error)
@@ -54,6 +55,8 @@ contains
          call joint_fields(model, problem, r)
       end if
       call results%write_increment(r, error)
+      ! the state to restart from, replaced at every converged increment
+      if (.not. allocated(error)) call results%write_restart(pack_restart(problem), error)
    end subroutine write_increment
 
    !> Converged joint fields of every joint set; the plastic slip is the law's own

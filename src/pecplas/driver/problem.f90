@@ -17,6 +17,7 @@ module pecplas_driver_problem
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_driver_timers, only: timers_t
+   use pecplas_driver_position, only: run_position_t
    use pecjoin_assembly, only: setup_joint_state
    use pecjoin_katona_type, only: katona_t
    use pecjoin_katona_doublets, only: setup_katona
@@ -55,6 +56,8 @@ module pecplas_driver_problem
       integer :: line_searches = 0, singular_tangents = 0, arc_increments = 0
       integer :: by_method(3) = 0
       type(timers_t) :: time
+      !> Position of the step loop after the last converged increment (restart).
+      type(run_position_t) :: position
    end type problem_t
 
 contains

@@ -25,6 +25,7 @@ module pecplas_io_results_file
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
       h5_history_dataset, safe_name, h5_write
    use pecplas_io_results_mesh, only: write_mesh
+   use pecplas_io_results_restart, only: restart_data_t, write_restart_group
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
@@ -35,8 +36,8 @@ module pecplas_io_results_file
    public :: results_file_t, RESULT_STATUSES
 
    !> Final statuses accepted by `finish`; a file never finished keeps 'running'.
-   character(len=*), parameter :: RESULT_STATUSES(5) = [character(len=10) :: 'completed', &
-      'limit load', 'diverged', 'stopped', 'failed']
+   character(len=*), parameter :: RESULT_STATUSES(6) = [character(len=11) :: 'completed', &
+      'limit load', 'diverged', 'stopped', 'failed', 'interrupted']
 
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
@@ -59,6 +60,7 @@ module pecplas_io_results_file
       procedure :: finish => results_finish
       procedure :: write_limit => results_write_limit
       procedure :: set_warnings => results_set_warnings
+      procedure :: write_restart => results_write_restart
       procedure :: is_open => results_is_open
       procedure :: free => results_free
       final :: results_final
@@ -288,7 +290,7 @@ contains
       end if
       if (.not. any(RESULT_STATUSES == status)) then
          call fatal_error(error, 'results file: unknown status "'//status// &
-            '"; known: completed, limit load, diverged, stopped, failed')
+            '"; known: completed, limit load, diverged, stopped, failed, interrupted')
          return
       end if
       complete = 0
@@ -342,6 +344,18 @@ contains
       end if
       call h5_attr(this%file, 'warnings', text, error)
    end subroutine results_set_warnings
+
+   !> Replaces the /restart group with `data` (pecplas_io_results_restart).
+   subroutine results_write_restart(this, data, error)
+      class(results_file_t), intent(inout) :: this
+      type(restart_data_t), intent(in) :: data
+      type(error_t), allocatable, intent(out) :: error
+      if (this%file <= 0) then
+         call fatal_error(error, 'results file is not open')
+         return
+      end if
+      call write_restart_group(this%file, data, error)
+   end subroutine results_write_restart
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)

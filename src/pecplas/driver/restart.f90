@@ -1,0 +1,221 @@
+!> Restart: the driver's state after a converged increment, packed for the results file's
+!> /restart group (pecplas_io_results_restart) and read back into a freshly prepared problem
+!> so that `pecplas DECK --restart OLD.h5` continues the step loop where OLD.h5 stopped.
+!> Packed: the position in the step loop (pecplas_driver_position) and the run counters,
+!> displacements, pattern factors, converged internal forces, the massif's stresses,
+!> strains and histories, the joints' law strains, stresses, histories and modes, and the
+!> Katona doublets' states and multipliers.
+module pecplas_driver_restart
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, input_error, fatal_error
+   use pecplas_strings, only: itoa
+   use pecplas_model, only: model_t
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_io_results_restart, only: restart_data_t, read_restart_group
+   implicit none (type, external)
+   private
+
+   public :: pack_restart, restore_restart
+
+   !> Layout version of the packed data (a file with another one is refused).
+   real(wp), parameter :: LAYOUT = 1.0_wp
+   integer, parameter :: NPOS = 13
+
+contains
+
+   !> The restart data of the last converged increment (problem%position must be recorded).
+   function pack_restart(problem) result(data)
+      type(problem_t), intent(in) :: problem
+      type(restart_data_t) :: data
+      integer :: s
+      associate (p => problem%position, st => problem%state, kt => problem%katona)
+         call data%add('position', [LAYOUT, real(p%istep, wp), real(p%inc_in_step, wp), &
+            real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%increments, wp), &
+            real(problem%iterations, wp), real(problem%cuts, wp), kt%force_scale, &
+            kt%max_penetration])
+         call data%add('f0', p%f0)
+         call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
+         call data%add('u', reshape(st%u, [size(st%u)]))
+         call data%add('factors', st%factors)
+         do s = 1, size(st%sets)
+            call data%add('stress_'//itoa(s), flat3(st%sets(s)%stress))
+            call data%add('strain_'//itoa(s), flat3(st%sets(s)%strain))
+            call data%add('hist_'//itoa(s), flat3(st%sets(s)%hist))
+         end do
+         if (allocated(st%joints%sets)) then
+            do s = 1, size(st%joints%sets)
+               associate (j => st%joints%sets(s))
+                  call data%add('joint_eps_'//itoa(s), flat3(j%eps))
+                  call data%add('joint_sigma_'//itoa(s), flat3(j%sigma))
+                  call data%add('joint_hist_'//itoa(s), flat3(j%hist))
+                  call data%add('joint_mode_'//itoa(s), real(reshape(j%mode, [size(j%mode)]), wp))
+               end associate
+            end do
+         end if
+         if (kt%active) then
+            call data%add('katona_mode', real(kt%mode, wp))
+            call data%add('katona_sign', real(kt%sgn, wp))
+            call data%add('katona_broken', merge(1.0_wp, 0.0_wp, kt%broken))
+            call data%add('katona_force', reshape(kt%f, [size(kt%f)]))
+            call data%add('katona_z', reshape(kt%z, [size(kt%z)]))
+            call data%add('katona_anchor', kt%anchor)
+         end if
+      end associate
+   end function pack_restart
+
+   !> Reads the restart data of `path` into `problem` (set up and initialised for `model`,
+   !> the same deck) and marks its position to be resumed. Input errors (exit 2): no restart
+   !> data, another deck, data that does not fit.
+   subroutine restore_restart(path, model, problem, error)
+      character(len=*), intent(in) :: path
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      type(restart_data_t) :: data
+      character(len=:), allocatable :: deck_text, names(:), msg
+      integer :: nj
+
+      nj = 0
+      if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
+      names = restart_names(size(problem%state%sets), nj)
+      call read_restart_group(path, names, data, deck_text, error)
+      if (allocated(error)) then
+         msg = error%text()
+         call input_error(error, 'cannot restart from '//path//': '//msg)
+         return
+      end if
+      if (.not. allocated(model%deck_text)) then
+         call input_error(error, 'cannot restart: the deck text is unknown')
+         return
+      end if
+      if (deck_text /= model%deck_text) then
+         call input_error(error, 'cannot restart from '//path//': it was written by another '// &
+            'deck (its deck text differs from '//model%deck_file//'); restart with the deck '// &
+            'that wrote it')
+         return
+      end if
+      call unpack_data(data, model, problem, error)
+      if (allocated(error)) then
+         msg = error%text()
+         call input_error(error, 'cannot restart from '//path// &
+            ': its restart data does not fit this deck ('//msg//')')
+      end if
+   end subroutine restore_restart
+
+   !> Puts the restart data into `problem` and marks its position to be resumed.
+   subroutine unpack_data(data, model, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      integer :: s, nj
+      nj = 0
+      if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
+      associate (p => problem%position, st => problem%state, kt => problem%katona)
+         call data%get('position', NPOS, v, error)
+         if (allocated(error)) return
+         if (v(1) /= LAYOUT) then
+            call fatal_error(error, 'restart data of another layout version')
+            return
+         end if
+         p%istep = nint(v(2)); p%inc_in_step = nint(v(3)); p%level = nint(v(4))
+         p%tau = v(5); p%dt = v(6); p%k_first = v(7); p%k_conv = v(8)
+         problem%increments = nint(v(9)); problem%iterations = nint(v(10))
+         problem%cuts = nint(v(11)); kt%force_scale = v(12); kt%max_penetration = v(13)
+         if (p%istep < 1 .or. p%istep > size(model%steps)) then
+            call fatal_error(error, 'restart step '//itoa(p%istep)//' is not a step of the deck')
+            return
+         end if
+         call data%get('f0', size(st%factors), p%f0, error)
+         if (allocated(error)) return
+         call data%get('fint_conv', size(st%u), v, error)
+         if (allocated(error)) return
+         p%fint_conv = reshape(v, shape(st%u))
+         call data%get('u', size(st%u), v, error)
+         if (allocated(error)) return
+         st%u = reshape(v, shape(st%u))
+         call data%get('factors', size(st%factors), v, error)
+         if (allocated(error)) return
+         st%factors = v
+         do s = 1, size(st%sets)
+            call get3(data, 'stress_'//itoa(s), st%sets(s)%stress, error)
+            if (.not. allocated(error)) call get3(data, 'strain_'//itoa(s), st%sets(s)%strain, error)
+            if (.not. allocated(error)) call get3(data, 'hist_'//itoa(s), st%sets(s)%hist, error)
+            if (allocated(error)) return
+         end do
+         do s = 1, nj
+            associate (j => st%joints%sets(s))
+               call get3(data, 'joint_eps_'//itoa(s), j%eps, error)
+               if (.not. allocated(error)) call get3(data, 'joint_sigma_'//itoa(s), j%sigma, error)
+               if (.not. allocated(error)) call get3(data, 'joint_hist_'//itoa(s), j%hist, error)
+               if (.not. allocated(error)) call data%get('joint_mode_'//itoa(s), size(j%mode), v, &
+                  error)
+               if (allocated(error)) return
+               j%mode = reshape(nint(v), shape(j%mode))
+            end associate
+         end do
+         if (kt%active) then
+            call data%get('katona_mode', kt%nd, v, error)
+            if (allocated(error)) return
+            kt%mode = nint(v)
+            call data%get('katona_sign', kt%nd, v, error)
+            if (allocated(error)) return
+            kt%sgn = nint(v)
+            call data%get('katona_broken', kt%nd, v, error)
+            if (allocated(error)) return
+            kt%broken = v /= 0.0_wp
+            call data%get('katona_force', 2*kt%nd, v, error)
+            if (allocated(error)) return
+            kt%f = reshape(v, shape(kt%f))
+            call data%get('katona_z', 2*kt%nd, v, error)
+            if (allocated(error)) return
+            kt%z = reshape(v, shape(kt%z))
+            call data%get('katona_anchor', kt%nd, kt%anchor, error)
+            if (allocated(error)) return
+            call kt%begin_increment()
+         end if
+         ! trial = converged everywhere, as after a commit
+         call st%rollback()
+         p%resume = .true.
+      end associate
+   end subroutine unpack_data
+
+   !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
+   pure function restart_names(nsets, njoint) result(names)
+      integer, intent(in) :: nsets, njoint
+      character(len=:), allocatable :: names(:)
+      character(len=32), allocatable :: list(:)
+      integer :: s
+      list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
+         'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
+         'katona_anchor']
+      do s = 1, nsets
+         list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
+            'hist_'//itoa(s)]
+      end do
+      do s = 1, njoint
+         list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &
+            'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s)]
+      end do
+      names = list
+   end function restart_names
+
+   pure function flat3(a) result(v)
+      real(wp), intent(in) :: a(:, :, :)
+      real(wp), allocatable :: v(:)
+      v = reshape(a, [size(a)])
+   end function flat3
+
+   subroutine get3(data, name, a, error)
+      type(restart_data_t), intent(in) :: data
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: a(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      call data%get(name, size(a), v, error)
+      if (allocated(error)) return
+      a = reshape(v, shape(a))
+   end subroutine get3
+
+end module pecplas_driver_restart

@@ -1,0 +1,128 @@
+!> The `/restart` group of a results file: the full state of the last converged increment,
+!> as named 1-D real datasets (the driver packs and unpacks them: pecplas_driver_restart).
+!> It is replaced at every converged increment (written as /restart_next, then renamed), so
+!> the file holds one copy whatever the number of increments and a run killed while writing
+!> it keeps the previous one.
+module pecplas_io_results_restart
+   use hdf5, only: hid_t, h5lexists_f, h5ldelete_f, h5lmove_f, h5fflush_f, H5F_SCOPE_GLOBAL_F
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, fatal_error
+   use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write
+   use pecplas_io_results_reader, only: results_reader_t
+   implicit none (type, external)
+   private
+
+   public :: restart_item_t, restart_data_t, write_restart_group, read_restart_group
+
+   !> Group name in the results file.
+   character(len=*), parameter, public :: RESTART_GROUP = 'restart'
+
+   type :: restart_item_t
+      character(len=:), allocatable :: name
+      real(wp), allocatable :: v(:)
+   end type restart_item_t
+
+   !> The named arrays of one restart state, in writing order.
+   type :: restart_data_t
+      type(restart_item_t), allocatable :: items(:)
+   contains
+      procedure :: add => data_add
+      procedure :: get => data_get
+   end type restart_data_t
+
+contains
+
+   !> Appends the array `v` (any values; integers are stored exactly as reals) as `name`.
+   subroutine data_add(this, name, v)
+      class(restart_data_t), intent(inout) :: this
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: v(:)
+      type(restart_item_t) :: item
+      if (.not. allocated(this%items)) allocate (this%items(0))
+      item%name = name
+      item%v = v
+      this%items = [this%items, item]
+   end subroutine data_add
+
+   !> The array `name` of `n` values; an error naming it when absent or of another size.
+   subroutine data_get(this, name, n, v, error)
+      class(restart_data_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: n
+      real(wp), allocatable, intent(out) :: v(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      character(len=24) :: a, b
+      if (allocated(this%items)) then
+         do i = 1, size(this%items)
+            if (this%items(i)%name /= name) cycle
+            if (size(this%items(i)%v) /= n) then
+               write (a, '(i0)') size(this%items(i)%v)
+               write (b, '(i0)') n
+               call fatal_error(error, 'restart data '//name//' has '//trim(a)// &
+                  ' values where this deck needs '//trim(b))
+               return
+            end if
+            v = this%items(i)%v
+            return
+         end do
+      end if
+      call fatal_error(error, 'restart data has no '//name)
+   end subroutine data_get
+
+   !> Writes `data` as /restart of the open file `file`, replacing the previous one.
+   subroutine write_restart_group(file, data, error)
+      integer(hid_t), intent(in) :: file
+      type(restart_data_t), intent(in) :: data
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: NEXT = RESTART_GROUP//'_next'
+      integer(hid_t) :: g
+      logical :: found
+      integer :: i, err
+      call h5lexists_f(file, NEXT, found, err)
+      if (found) call h5ldelete_f(file, NEXT, err)
+      call h5_group(file, NEXT, g, error)
+      if (allocated(error)) return
+      do i = 1, size(data%items)
+         call h5_write(g, data%items(i)%name, data%items(i)%v, error)
+         if (allocated(error)) exit
+      end do
+      call h5_close_group(g)
+      if (allocated(error)) return
+      call h5lexists_f(file, RESTART_GROUP, found, err)
+      if (found) call h5ldelete_f(file, RESTART_GROUP, err)
+      call h5lmove_f(file, NEXT, file, RESTART_GROUP, err)
+      if (err == 0) call h5fflush_f(file, H5F_SCOPE_GLOBAL_F, err)
+      if (err /= 0) call fatal_error(error, 'cannot write the restart group')
+   end subroutine write_restart_group
+
+   !> Reads /restart of the results file `path` into `data` (items named by `names`) and its
+   !> deck text. An error when the file cannot be read or holds no restart group.
+   subroutine read_restart_group(path, names, data, deck_text, error)
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: names(:)
+      type(restart_data_t), intent(out) :: data
+      character(len=:), allocatable, intent(out) :: deck_text
+      type(error_t), allocatable, intent(out) :: error
+      type(results_reader_t) :: reader
+      real(wp), allocatable :: v(:)
+      integer :: i
+      call reader%open(path, error)
+      if (allocated(error)) return
+      if (.not. reader%exists('/'//RESTART_GROUP)) then
+         call fatal_error(error, path//' holds no restart data (/'//RESTART_GROUP// &
+            ' group): it was written before restart files existed, or before its first '// &
+            'converged increment')
+         return
+      end if
+      call reader%attribute('/', 'deck_text', deck_text, error)
+      if (allocated(error)) return
+      do i = 1, size(names)
+         if (.not. reader%exists('/'//RESTART_GROUP//'/'//trim(names(i)))) cycle
+         call reader%dataset('/'//RESTART_GROUP//'/'//trim(names(i)), v, error)
+         if (allocated(error)) return
+         call data%add(trim(names(i)), v)
+      end do
+   end subroutine read_restart_group
+
+end module pecplas_io_results_restart

@@ -1,0 +1,446 @@
+#!/usr/bin/env python3
+"""pecplas-sweep: parameter studies with pecplas (doc/sweep.md).
+
+    pecplas-sweep make TEMPLATE TABLE -o DIR      one deck per table row: DIR/<case>.inp
+    pecplas-sweep run DIR [-j N]                  run them locally, N at a time
+    pecplas-sweep slurm DIR [--partition P ...]   write DIR/sweep.sbatch, a Slurm job array
+    pecplas-sweep collect DIR -q NAME=SPEC ...    gather quantities -> DIR/collected.{csv,h5}
+
+The template is a deck with `{{NAME}}` placeholders; the table is a CSV file (header = names,
+one row per case) or a TOML file with one `[[case]]` table per row. A column `case` (optional)
+names the case; otherwise cases are case_000, case_001, ... Relative `FILE=` paths of the
+template (*INCLUDE, *MESH, *OUTPUT) are rewritten so that the decks written to DIR find the
+same files. Python standard library only, plus h5py and numpy for `collect`.
+Exit codes: 0 done, 1 some run failed, 2 bad input (message `file:line: what was expected`).
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+PLACEHOLDER = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
+FILE_OPTION = re.compile(r"(FILE\s*=\s*)([^,\s]+)", re.IGNORECASE)
+MANIFEST = "sweep.json"
+CASE_NAME = re.compile(r"^[A-Za-z0-9_.+-]+$")
+# exit codes of pecplas that leave a results file: completed, stopped early (limit load...)
+RESULT_CODES = (0, 3)
+
+
+class InputError(Exception):
+    """Bad input: the message is `file:line: text` and the program exits with 2."""
+
+
+# ---------------------------------------------------------------- make
+def read_table(path):
+    """List of (case name, {column: text}) from a CSV or TOML table."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(f"{path}: no such table file (CSV or TOML expected)")
+    rows = []
+    if path.suffix.lower() == ".toml":
+        import tomllib
+        try:
+            data = tomllib.loads(path.read_text())
+        except tomllib.TOMLDecodeError as e:
+            raise InputError(f"{path}:1: [TOML] {e}") from None
+        cases = data.get("case")
+        if not isinstance(cases, list) or not cases:
+            raise InputError(f"{path}:1: [TOML] expected one or more [[case]] tables")
+        for i, c in enumerate(cases):
+            rows.append((i + 2, {str(k): _toml_text(v) for k, v in c.items()}))
+    else:
+        with path.open(newline="") as f:
+            lines = [ln for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
+        reader = csv.reader(lines)
+        header = [h.strip() for h in next(reader, [])]
+        if not header or any(not h for h in header):
+            raise InputError(f"{path}:1: [CSV] expected a header line of column names")
+        for n, rec in enumerate(reader, start=2):
+            if len(rec) != len(header):
+                raise InputError(f"{path}:{n}: [CSV] expected {len(header)} values "
+                                 f"({', '.join(header)}), found {len(rec)}")
+            rows.append((n, {h: v.strip() for h, v in zip(header, rec)}))
+    if not rows:
+        raise InputError(f"{path}:2: [TABLE] expected at least one row of values")
+    cases, seen = [], set()
+    for i, (line, values) in enumerate(rows):
+        name = values.pop("case", None) or f"case_{i:03d}"
+        if not CASE_NAME.match(name):
+            raise InputError(f"{path}:{line}: [TABLE] case name {name!r}: expected letters, "
+                             "digits, '_', '-', '.', '+' only")
+        if name in seen:
+            raise InputError(f"{path}:{line}: [TABLE] case name {name!r} given twice")
+        seen.add(name)
+        cases.append((line, name, values))
+    return cases
+
+
+def _toml_text(v):
+    if isinstance(v, bool):
+        return "YES" if v else "NO"
+    return repr(v) if isinstance(v, float) else str(v)
+
+
+def substitute(template_path, text, values, table_path, line):
+    """Template text with every {{NAME}} replaced; unknown names are an input error."""
+    out = []
+    for n, src in enumerate(text.splitlines(keepends=True), start=1):
+        def repl(m):
+            if m.group(1) not in values:
+                raise InputError(f"{template_path}:{n}: [TEMPLATE] placeholder {{{{{m.group(1)}}}}}"
+                                 f" has no column in {table_path} (columns: "
+                                 f"{', '.join(sorted(values)) or 'none'})")
+            return values[m.group(1)]
+        out.append(PLACEHOLDER.sub(repl, src))
+    return "".join(out)
+
+
+def rebase_files(text, template_dir, out_dir):
+    """Relative FILE= paths on keyword lines, made relative to out_dir instead of template_dir."""
+    lines = []
+    for ln in text.splitlines(keepends=True):
+        if ln.lstrip().startswith("*") and not ln.lstrip().startswith("**"):
+            def repl(m):
+                p = m.group(2)
+                if os.path.isabs(p):
+                    return m.group(0)
+                target = (template_dir / p).resolve()
+                return m.group(1) + os.path.relpath(target, out_dir.resolve())
+            ln = FILE_OPTION.sub(repl, ln)
+        lines.append(ln)
+    return "".join(lines)
+
+
+def cmd_make(a):
+    template, table, out = Path(a.template), Path(a.table), Path(a.output)
+    if not template.is_file():
+        raise InputError(f"{template}: no such template deck")
+    text = template.read_text()
+    used = set(PLACEHOLDER.findall(text))
+    if not used:
+        raise InputError(f"{template}:1: [TEMPLATE] expected at least one {{{{NAME}}}} placeholder")
+    cases = read_table(table)
+    out.mkdir(parents=True, exist_ok=True)
+    manifest = {"template": str(template.resolve()), "table": str(table.resolve()), "cases": []}
+    for line, name, values in cases:
+        deck = substitute(template, text, values, table, line)
+        deck = rebase_files(deck, template.parent, out)
+        header = (f"** {name}: written by pecplas-sweep from {template} with "
+                  + ", ".join(f"{k} = {v}" for k, v in values.items()) + "\n")
+        (out / f"{name}.inp").write_text(header + deck)
+        manifest["cases"].append({"name": name, "deck": f"{name}.inp",
+                                  "results": f"{name}.h5", "parameters": values})
+    unused = sorted(set(cases[0][2]) - used)
+    (out / MANIFEST).write_text(json.dumps(manifest, indent=1) + "\n")
+    print(f"pecplas-sweep: {len(cases)} decks written to {out}")
+    if unused:
+        print(f"pecplas-sweep: note: column(s) {', '.join(unused)} of {table} are used by no "
+              "placeholder", file=sys.stderr)
+    return 0
+
+
+# ---------------------------------------------------------------- run / slurm
+def load_manifest(d):
+    p = Path(d) / MANIFEST
+    if not p.is_file():
+        raise InputError(f"{p}: no sweep here (expected the directory written by "
+                         "`pecplas-sweep make`)")
+    return json.loads(p.read_text())
+
+
+def pecplas_command(given):
+    """The pecplas executable: --pecplas, $PECPLAS_BIN, next to this script, or on PATH."""
+    for c in (given, os.environ.get("PECPLAS_BIN")):
+        if c:
+            return str(Path(c).resolve()) if Path(c).exists() else c
+    here = Path(__file__).resolve().parent / "pecplas"
+    if here.is_file():
+        return str(here)
+    found = shutil.which("pecplas")
+    if not found:
+        raise InputError("pecplas: not found (give --pecplas PATH, set PECPLAS_BIN or put "
+                         "pecplas on PATH, e.g. `make install`)")
+    return found
+
+
+def run_case(exe, d, case):
+    deck, res = case["deck"], case["results"]
+    with open(d / f"{case['name']}.log", "w") as log:
+        t0 = time.monotonic()
+        rc = subprocess.call([exe, deck, "-o", res, "--quiet"], cwd=d, stdout=log,
+                             stderr=subprocess.STDOUT)
+    return case["name"], rc, time.monotonic() - t0
+
+
+def cmd_run(a):
+    d = Path(a.dir)
+    m = load_manifest(d)
+    exe = pecplas_command(a.pecplas)
+    cases = m["cases"]
+    if a.cases:
+        cases = [cases[i] for i in a.cases]
+    bad = 0
+    with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+        for name, rc, t in pool.map(lambda c: run_case(exe, d, c), cases):
+            ok = rc in RESULT_CODES
+            bad += not ok
+            print(f"pecplas-sweep: {name} exit {rc} ({t:.1f} s)"
+                  + ("" if ok else f", see {d / (name + '.log')}"))
+    return 1 if bad else 0
+
+
+SBATCH = """#!/bin/bash
+# Written by pecplas-sweep: one array task per deck of {dir}.
+#   sbatch {script}      then, when all tasks are done: pecplas-sweep collect {dir} -q ...
+#SBATCH --job-name={job}
+#SBATCH --array=0-{last}{throttle}
+#SBATCH --ntasks=1
+#SBATCH --cpus-per-task={cpus}
+#SBATCH --output={dir}/slurm-%A_%a.out
+{extra}set -uo pipefail
+cases=({cases})
+case=${{cases[$SLURM_ARRAY_TASK_ID]}}
+cd {dir}
+export OMP_NUM_THREADS=${{SLURM_CPUS_PER_TASK:-1}}
+{exe} "$case.inp" -o "$case.h5" --quiet >"$case.log" 2>&1
+rc=$?
+echo "$case exit $rc" >>"$case.log"
+# 3 = stopped early (limit load, divergence): the results file is complete up to there
+[[ $rc == 0 || $rc == 3 ]] || exit $rc
+"""
+
+
+def cmd_slurm(a):
+    d = Path(a.dir).resolve()
+    m = load_manifest(d)
+    n = len(m["cases"])
+    extra = ""
+    for opt in ("partition", "time", "account", "mem"):
+        v = getattr(a, opt)
+        if v:
+            extra += f"#SBATCH --{opt}={v}\n"
+    script = d / "sweep.sbatch"
+    script.write_text(SBATCH.format(
+        dir=shlex.quote(str(d)), script=shlex.quote(str(script)), job=a.job_name, last=n - 1,
+        throttle=f"%{a.max_parallel}" if a.max_parallel else "", cpus=a.cpus_per_task,
+        extra=extra, cases=" ".join(shlex.quote(c["name"]) for c in m["cases"]),
+        exe=shlex.quote(pecplas_command(a.pecplas))))
+    script.chmod(0o755)
+    print(f"pecplas-sweep: {script} ({n} array tasks 0-{n - 1})")
+    if a.submit:
+        out = subprocess.run(["sbatch", "--parsable", str(script)], capture_output=True,
+                             text=True)
+        if out.returncode != 0:
+            print(f"pecplas-sweep: sbatch failed: {out.stderr.strip()}", file=sys.stderr)
+            return 1
+        print(f"pecplas-sweep: submitted job {out.stdout.strip()}")
+    return 0
+
+
+# ---------------------------------------------------------------- collect
+QUANTITY = re.compile(r"^(?:(max|min|last):)?(factor|disp|reaction):([^@]+?)(?:@(.+)=(.+))?$")
+
+
+def parse_quantity(text):
+    """NAME=[max:|min:|last:]KIND:ARGS[@PATTERN=VALUE] -> dict; see doc/sweep.md."""
+    if "=" not in text:
+        raise InputError(f"--quantity {text}: expected NAME=SPEC")
+    name, spec = text.split("=", 1)
+    m = QUANTITY.match(spec.strip())
+    if not name.strip() or not m:
+        raise InputError(f"--quantity {text}: expected NAME=[max:|min:]factor:PATTERN, "
+                         "NAME=...disp:X,Y:x|y or NAME=...reaction:NSET:x|y, optionally "
+                         "@PATTERN=VALUE")
+    op, kind, args, at_pat, at_val = m.groups()
+    q = {"name": name.strip(), "op": op or "last", "kind": kind, "at": None}
+    if kind == "factor":
+        q["pattern"] = args
+    else:
+        parts = args.split(":")
+        if len(parts) != 2 or parts[1] not in ("x", "y"):
+            raise InputError(f"--quantity {text}: expected {kind}:{'X,Y' if kind == 'disp' else 'NSET'}"
+                             ":x or :y")
+        q["where"], q["dir"] = parts[0], "xy".index(parts[1])
+        if kind == "disp":
+            try:
+                q["where"] = [float(v) for v in parts[0].split(",")]
+                assert len(q["where"]) == 2
+            except (ValueError, AssertionError):
+                raise InputError(f"--quantity {text}: expected the node as X,Y") from None
+    if at_pat:
+        if q["op"] != "last":
+            raise InputError(f"--quantity {text}: @PATTERN=VALUE goes with no max:/min:")
+        try:
+            q["at"] = (at_pat, float(at_val))
+        except ValueError:
+            raise InputError(f"--quantity {text}: expected a number after {at_pat}=") from None
+    return q
+
+
+def _text(v):
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def evaluate(path, quantities):
+    """{name: value or None (not reached)}, status of the results file `path`."""
+    import h5py
+    import numpy as np
+    with h5py.File(path, "r") as f:
+        status = _text(f.attrs["status"])
+        patterns = [_text(p) for p in np.atleast_1d(f["history"].attrs["patterns"])]
+        fields = f["history/fields"][:].astype(bool)
+        factors = f["history/pattern_factors"][:]
+        factors = factors.reshape(len(fields), -1)
+        gi = f["history/global_increment"][:]
+        keys = [f"{int(g):06d}" for g in gi[fields]]
+        fac = factors[fields]
+        out = {}
+        for q in quantities:
+            def pat(name):
+                if name not in patterns:
+                    raise InputError(f"{path}: no load pattern {name!r} (patterns: "
+                                     f"{', '.join(patterns)})")
+                return patterns.index(name)
+            if q["kind"] == "factor":
+                series = fac[:, pat(q["pattern"])]
+            elif q["kind"] == "disp":
+                x = f["mesh/coordinates"][:]
+                node = int(np.argmin(np.hypot(x[:, 0] - q["where"][0], x[:, 1] - q["where"][1])))
+                series = np.array([f["increments"][k]["displacement"][node, q["dir"]]
+                                   for k in keys])
+            else:
+                sets = {_text(g.attrs.get("name", k)): g for k, g in f["mesh/node_sets"].items()}
+                if q["where"] not in sets:
+                    raise InputError(f"{path}: no node set {q['where']!r} "
+                                     f"(sets: {', '.join(sorted(sets))})")
+                nodes = sets[q["where"]]["nodes"][:]
+                series = np.array([f["increments"][k]["reaction"][:, q["dir"]][nodes].sum()
+                                   for k in keys])
+            out[q["name"]] = reduce(series, fac, q, pat)
+    return out, status
+
+
+def reduce(series, fac, q, pat):
+    """The value of a quantity from its series over the written increments."""
+    if len(series) == 0:
+        return None
+    if q["op"] == "max":
+        return float(series.max())
+    if q["op"] == "min":
+        return float(series.min())
+    if q["at"] is None:
+        return float(series[-1])
+    p = fac[:, pat(q["at"][0])]
+    v = q["at"][1]
+    for i in range(len(p)):
+        if p[i] == v:
+            return float(series[i])
+        if i > 0 and (p[i - 1] - v) * (p[i] - v) < 0:
+            w = (v - p[i - 1]) / (p[i] - p[i - 1])
+            return float(series[i - 1] + w * (series[i] - series[i - 1]))
+    return None
+
+
+def cmd_collect(a):
+    import h5py
+    import numpy as np
+    d = Path(a.dir)
+    m = load_manifest(d)
+    quantities = [parse_quantity(t) for t in a.quantity]
+    params = list(dict.fromkeys(k for c in m["cases"] for k in c["parameters"]))
+    rows, missing = [], 0
+    for c in m["cases"]:
+        res = d / c["results"]
+        if res.is_file():
+            try:
+                values, status = evaluate(res, quantities)
+            except (OSError, KeyError) as e:
+                values, status = {}, f"unreadable ({e})"
+        else:
+            values, status = {}, "missing"
+        missing += status in ("missing", "running") or status.startswith("unreadable")
+        rows.append((c, status, values))
+    csv_path = Path(a.output or d / "collected.csv")
+    with csv_path.open("w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case"] + params + ["status"] + [q["name"] for q in quantities])
+        for c, status, values in rows:
+            w.writerow([c["name"]] + [c["parameters"].get(p, "") for p in params] + [status]
+                       + ["" if values.get(q["name"]) is None else repr(values[q["name"]])
+                          for q in quantities])
+    h5_path = csv_path.with_suffix(".h5")
+    with h5py.File(h5_path, "w") as f:
+        f.attrs["sweep"] = str(d.resolve())
+        f.attrs["quantities"] = json.dumps({q["name"]: t for q, t in zip(quantities, a.quantity)})
+        f["case"] = [c["name"].encode() for c, _, _ in rows]
+        f["status"] = [s.encode() for _, s, _ in rows]
+        g = f.create_group("parameters")
+        for p in params:
+            vals = [c["parameters"].get(p, "") for c, _, _ in rows]
+            try:
+                g[p] = np.array([float(v) for v in vals])
+            except ValueError:
+                g[p] = [v.encode() for v in vals]
+        g = f.create_group("quantities")
+        for q in quantities:
+            vals = [values.get(q["name"]) for _, _, values in rows]
+            # never a NaN in a results file: a value not reached is 0 with found = 0
+            g[q["name"]] = np.array([0.0 if v is None else v for v in vals])
+            g[q["name"] + "_found"] = np.array([v is not None for v in vals], dtype=np.int8)
+    print(f"pecplas-sweep: {len(rows)} cases collected into {csv_path} and {h5_path}"
+          + (f" ({missing} without results)" if missing else ""))
+    return 1 if missing else 0
+
+
+# ---------------------------------------------------------------- command line
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="pecplas-sweep", description=__doc__.split("\n\n")[0])
+    sub = ap.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("make", help="one deck per table row")
+    p.add_argument("template")
+    p.add_argument("table")
+    p.add_argument("-o", "--output", required=True, help="directory for the decks")
+    p.set_defaults(func=cmd_make)
+    p = sub.add_parser("run", help="run the decks locally")
+    p.add_argument("dir")
+    p.add_argument("-j", "--jobs", type=int, default=1, help="runs at a time (default 1)")
+    p.add_argument("--pecplas", help="pecplas executable")
+    p.add_argument("--cases", type=int, nargs="+", help="only these case indices")
+    p.set_defaults(func=cmd_run)
+    p = sub.add_parser("slurm", help="write a Slurm job-array script")
+    p.add_argument("dir")
+    p.add_argument("--partition")
+    p.add_argument("--time", help="wall time per task, e.g. 01:00:00")
+    p.add_argument("--account")
+    p.add_argument("--mem", help="memory per task, e.g. 2G")
+    p.add_argument("--cpus-per-task", type=int, default=1)
+    p.add_argument("--max-parallel", type=int, help="at most this many tasks at once (%%N)")
+    p.add_argument("--job-name", default="pecplas-sweep")
+    p.add_argument("--pecplas", help="pecplas executable on the compute nodes")
+    p.add_argument("--submit", action="store_true", help="also submit it with sbatch")
+    p.set_defaults(func=cmd_slurm)
+    p = sub.add_parser("collect", help="gather quantities into one CSV and one HDF5")
+    p.add_argument("dir")
+    p.add_argument("-q", "--quantity", action="append", required=True,
+                   help="NAME=[max:|min:]factor:PATTERN | disp:X,Y:x|y | reaction:NSET:x|y"
+                        "[@PATTERN=VALUE]")
+    p.add_argument("-o", "--output", help="CSV file (default DIR/collected.csv; .h5 beside)")
+    p.set_defaults(func=cmd_collect)
+    a = ap.parse_args(argv)
+    try:
+        return a.func(a)
+    except InputError as e:
+        print(f"pecplas-sweep: {e}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
