@@ -14,6 +14,8 @@ module pecplas_driver_increments
    use pecplas_io_results_file, only: results_file_t
    use pecplas_driver_timers, only: wall_time
    use pecjoin_katona_increment, only: katona_increment
+   use pecplas_signals, only: interrupt_requested, interrupt_signal
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -101,6 +103,12 @@ contains
                if (allocated(error)) return
                if (.not. quiet) call progress_line(model, problem, istep, inc_in_step, tau, iters, &
                   residual)
+               if (interrupt_requested()) then
+                  status = 'interrupted'
+                  message = 'stopped by '//interrupt_signal()//' after increment '// &
+                     itoa(inc_in_step)//' of step '//itoa(istep)
+                  return
+               end if
                if (level > 0) then
                   level = level - 1
                   dt = min(dt0, 2.0_wp*dt)

@@ -1,5 +1,6 @@
 !> What a run shows: the results file rows and the one-line progress per increment.
 module pecplas_driver_output
+   use, intrinsic :: iso_fortran_env, only: output_unit
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_model, only: model_t
@@ -102,6 +103,8 @@ contains
       write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
          '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)
+      ! one line per increment reaches a redirected log at once (a killed run keeps it)
+      flush (output_unit)
    end subroutine progress_line
 
 end module pecplas_driver_output

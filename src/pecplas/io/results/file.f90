@@ -10,13 +10,24 @@
 !>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
 !>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
 !>                joints/<set>/... (see pecplas_io_results_joints)
-!> Every increment is flushed, so a run that crashes leaves a readable file whose status
-!> is still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> While the run goes on, the file is written under a temporary name in the target's
+!> directory (`.NAME.h5.<pid>.tmp`, see `temporary_path`) with its XDMF sidecar
+!> (`.NAME.xmf.<pid>.tmp`); `finish` renames it onto the target, so an earlier result of the
+!> same name is replaced only by a finished file and never damaged by a run that dies.
+!> Every increment is flushed, so a run that crashes leaves a readable temporary file whose
+!> status is still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> The sidecar is rewritten whole (through a staging file and a rename) at most once a
+!> second and at most 5 % of the time, and at the end: its cost stays linear in the number
+!> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
+!> `write_increment` and every later write fail as a full disk would.
 module pecplas_io_results_file
+   use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
+   use pecplas_strings, only: itoa
+   use pecplas_files, only: rename_file, remove_file, process_id, path_base
    use pecplas_model, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
@@ -24,24 +35,38 @@ module pecplas_io_results_file
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
       h5_history_dataset, safe_name
    use pecplas_io_results_mesh, only: write_mesh
-   use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
+   use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
+      write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
       check_joint_fields, write_joint_fields
    implicit none (type, external)
    private
 
-   public :: results_file_t, RESULT_STATUSES
+   public :: results_file_t, RESULT_STATUSES, temporary_path
 
    !> Final statuses accepted by `finish`; a file never finished keeps 'running'.
-   character(len=*), parameter :: RESULT_STATUSES(4) = [character(len=10) :: 'completed', &
-      'limit load', 'diverged', 'failed']
+   character(len=*), parameter :: RESULT_STATUSES(5) = [character(len=11) :: 'completed', &
+      'limit load', 'diverged', 'failed', 'interrupted']
+
+   !> The running sidecar is rewritten at most every XMF_PERIOD seconds and when its last
+   !> write took at most 1/XMF_SHARE of the time since.
+   real(wp), parameter :: XMF_PERIOD = 1.0_wp, XMF_SHARE = 20.0_wp
 
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
       private
       integer(hid_t) :: file = -1
-      character(len=:), allocatable :: path, xmf
+      !> Targets (.h5 and .xmf), the temporary files written while the run goes on, and
+      !> the staging name through which every .xmf is written.
+      character(len=:), allocatable :: path, xmf, work, work_xmf, staging
+      !> Fields groups listed in the running .xmf; time of its last write and its cost [s].
+      integer :: xmf_count = -1
+      real(wp) :: xmf_at = 0.0_wp, xmf_cost = 0.0_wp
+      !> Test hook: writes fail from the fail_at-th write_increment on (0: never).
+      integer :: fail_at = 0, nwrite = 0
+      !> The first write error (disk full, permissions), kept for the command layer.
+      character(len=:), allocatable :: failure
       type(xdmf_layout_t) :: layout
       integer :: npattern = 0, nrows = 0
       !> Gauss points per element of each set.
@@ -57,7 +82,10 @@ module pecplas_io_results_file
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
       procedure :: is_open => results_is_open
+      procedure :: working_path => results_working_path
+      procedure :: write_failure => results_write_failure
       procedure :: free => results_free
+      procedure :: discard => abandon
       final :: results_final
    end type results_file_t
 
@@ -90,26 +118,63 @@ contains
       if (allocated(error)) return
       call h5_init(error)
       if (allocated(error)) return
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, this%file, err)
-      if (err /= 0) then
-         this%file = -1
-         call fatal_error(error, 'cannot create results file '//path// &
-            ' (does its directory exist and is it writable?)')
-         return
-      end if
       this%path = path
       this%xmf = xdmf_path(path)
-      this%layout%h5_name = path(index(path, '/', back=.true.) + 1:)
+      this%work = temporary_path(path)
+      this%work_xmf = temporary_path(this%xmf)
+      this%staging = this%work_xmf(1:len(this%work_xmf) - 4)//'.new'
+      this%xmf_count = -1
+      this%nwrite = 0
+      if (allocated(this%failure)) deallocate (this%failure)
+      this%fail_at = test_fail_at()
+      call h5fcreate_f(this%work, H5F_ACC_TRUNC_F, this%file, err)
+      if (err /= 0) then
+         this%file = -1
+         call fatal_error(error, 'cannot create results file '//this%work// &
+            ' (does the directory of '//path//' exist and is it writable?)')
+         return
+      end if
       call write_root(this%file, model, version, error)
-      if (allocated(error)) return
-      call write_mesh(this%file, model%mesh, gauss_xy, error)
-      if (allocated(error)) return
-      call write_joint_mesh(this%file, model, points, error)
-      if (allocated(error)) return
-      call create_history(this%file, model, error)
-      if (allocated(error)) return
-      call commit(this, error)
+      if (.not. allocated(error)) call write_mesh(this%file, model%mesh, gauss_xy, error)
+      if (.not. allocated(error)) call write_joint_mesh(this%file, model, points, error)
+      if (.not. allocated(error)) call create_history(this%file, model, error)
+      if (.not. allocated(error)) call commit(this, .true., error)
+      if (allocated(error)) call abandon(this)
    end subroutine results_create
+
+   !> Where the results of `path` are written while the run goes on: a hidden file of the
+   !> same directory named after the target and this process, 'out/a.h5' ->
+   !> 'out/.a.h5.<pid>.tmp' (the same directory, so that the final rename is atomic).
+   function temporary_path(path) result(tmp)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: tmp
+      integer :: i
+      i = index(path, '/', back=.true.)
+      tmp = path(1:i)//'.'//path_base(path)//'.'//itoa(process_id())//'.tmp'
+   end function temporary_path
+
+   !> PECPLAS_TEST_FAIL_WRITE (test hook), 0 when unset or not a positive integer.
+   integer function test_fail_at() result(n)
+      character(len=32) :: text
+      integer :: length, stat, ios
+      n = 0
+      call get_environment_variable('PECPLAS_TEST_FAIL_WRITE', text, length, stat)
+      if (stat /= 0 .or. length == 0) return
+      read (text, *, iostat=ios) n
+      if (ios /= 0 .or. n < 0) n = 0
+   end function test_fail_at
+
+   !> Closes the file and removes its temporary files (a file that could not be created,
+   !> a scratch run).
+   subroutine abandon(this)
+      class(results_file_t), intent(inout) :: this
+      integer :: err
+      if (this%file > 0) call h5fclose_f(this%file, err)
+      this%file = -1
+      call remove_file(this%work)
+      call remove_file(this%work_xmf)
+      call remove_file(this%staging)
+   end subroutine abandon
 
    !> Checks the model and gauss_xy and records the layout of the file.
    subroutine plan(this, model, gauss_xy, error)
@@ -243,8 +308,9 @@ contains
    end subroutine write_pattern_names
 
    !> Appends one converged increment (history row, and fields when inc%write_fields),
-   !> then flushes the file and rewrites the XDMF. Refuses non-finite values and wrong
-   !> shapes before writing anything.
+   !> then flushes the file (and, when due, rewrites the running XDMF). Refuses non-finite
+   !> values and wrong shapes before writing anything. A failed write (disk full,
+   !> permissions) is also kept as `write_failure`.
    subroutine results_write_increment(this, inc, error)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
@@ -258,6 +324,20 @@ contains
       if (inc%write_fields) then
          call check_joint_fields(inc%joint_fields, this%joints, 'results file: ', error)
          if (allocated(error)) return
+      end if
+      this%nwrite = this%nwrite + 1
+      call write_checked(this, inc, error)
+      if (allocated(error) .and. .not. allocated(this%failure)) this%failure = error%text()
+   end subroutine results_write_increment
+
+   !> The writing part of write_increment.
+   subroutine write_checked(this, inc, error)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      type(error_t), allocatable, intent(out) :: error
+      call test_hook(this, error)
+      if (allocated(error)) return
+      if (inc%write_fields) then
          call write_fields(this%file, inc, this%layout, this%strains, error)
          if (allocated(error)) return
          if (size(this%joints) > 0) call write_joint_fields(this%file, inc%global_increment, &
@@ -269,25 +349,37 @@ contains
       call write_history_row(this%file, this%nrows + 1, inc, error)
       if (allocated(error)) return
       this%nrows = this%nrows + 1
-      call commit(this, error)
-   end subroutine results_write_increment
+      call commit(this, .false., error)
+   end subroutine write_checked
 
-   !> Records how the run ended and closes the file. status: one of RESULT_STATUSES;
-   !> complete = 1 only for 'completed'.
+   !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
+   subroutine test_hook(this, error)
+      class(results_file_t), intent(in) :: this
+      type(error_t), allocatable, intent(out) :: error
+      if (this%fail_at > 0 .and. this%nwrite >= this%fail_at) call fatal_error(error, &
+         'HDF5: cannot write results file '//this%work//' (write '//itoa(this%nwrite)// &
+         ' failed on purpose: PECPLAS_TEST_FAIL_WRITE='//itoa(this%fail_at)//')')
+   end subroutine test_hook
+
+   !> Records how the run ended, closes the file and renames it onto the target (then the
+   !> final XDMF, naming the target). status: one of RESULT_STATUSES; complete = 1 only for
+   !> 'completed'. On error the temporary file stays where `working_path` says.
    subroutine results_finish(this, status, message, error)
       class(results_file_t), intent(inout) :: this
       character(len=*), intent(in) :: status, message
       type(error_t), allocatable, intent(out) :: error
-      integer :: complete
+      integer :: complete, err
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
          return
       end if
       if (.not. any(RESULT_STATUSES == status)) then
          call fatal_error(error, 'results file: unknown status "'//status// &
-            '"; known: completed, limit load, diverged, failed')
+            '"; known: completed, limit load, diverged, failed, interrupted')
          return
       end if
+      if (allocated(this%failure)) call test_hook(this, error)
+      if (allocated(error)) return
       complete = 0
       if (status == 'completed') complete = 1
       call h5_attr(this%file, 'status', status, error)
@@ -298,9 +390,22 @@ contains
       ! complete last: a crash in between leaves complete = 0
       if (.not. allocated(error)) call h5_attr(this%file, 'complete', complete, error)
       if (allocated(error)) return
-      call commit(this, error)
-      if (allocated(error)) return
-      call this%free()
+      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
+      if (err == 0) call h5fclose_f(this%file, err)
+      if (err /= 0) then
+         call fatal_error(error, 'HDF5: cannot close results file '//this%work// &
+            ' (disk full?)')
+         return
+      end if
+      this%file = -1
+      if (.not. rename_file(this%work, this%path)) then
+         call fatal_error(error, 'cannot rename '//this%work//' onto '//this%path// &
+            '; the results are in '//this%work)
+         return
+      end if
+      call write_xdmf(this%xmf, this%staging, xdmf_text(this%layout, path_base(this%path), &
+         this%written, this%written_time), error)
+      if (.not. allocated(error)) call remove_file(this%work_xmf)
    end subroutine results_finish
 
    !> True between a successful `create` and `finish` / `free`.
@@ -309,16 +414,35 @@ contains
       results_is_open = this%file > 0
    end function results_is_open
 
+   !> The file being written (temporary name) until `finish` renames it onto the target.
+   function results_working_path(this) result(path)
+      class(results_file_t), intent(in) :: this
+      character(len=:), allocatable :: path
+      path = ''
+      if (allocated(this%work)) path = this%work
+   end function results_working_path
+
+   !> The first write error of the file ('' if none): disk full, permissions, test hook.
+   function results_write_failure(this) result(text)
+      class(results_file_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = ''
+      if (allocated(this%failure)) text = this%failure
+   end function results_write_failure
+
    !> Closes the file without touching its status: a run stopped without `finish` keeps
-   !> status 'running' and complete = 0.
+   !> status 'running' and complete = 0, under its temporary name, next to an XDMF sidecar
+   !> (also temporary) that lists every increment written.
    subroutine results_free(this)
       class(results_file_t), intent(inout) :: this
+      type(error_t), allocatable :: error
       integer :: err
-      if (this%file > 0) then
-         call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
-         call h5fclose_f(this%file, err)
-      end if
+      if (this%file <= 0) return
+      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
+      call h5fclose_f(this%file, err)
       this%file = -1
+      if (.not. allocated(this%failure) .and. this%xmf_count /= size(this%written)) &
+         call write_running_xmf(this, error)
    end subroutine results_free
 
    subroutine results_final(this)
@@ -326,18 +450,45 @@ contains
       call this%free()
    end subroutine results_final
 
-   !> Flushes to disk (the commit point of an increment) and rewrites the XDMF.
-   subroutine commit(this, error)
+   !> Flushes to disk (the commit point of an increment) and rewrites the running XDMF when
+   !> it lacks increments and `force` or its period has passed (see XMF_PERIOD, XMF_SHARE).
+   subroutine commit(this, force, error)
       class(results_file_t), intent(inout) :: this
+      logical, intent(in) :: force
       type(error_t), allocatable, intent(out) :: error
       integer :: err
+      real(wp) :: since
       call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
       if (err /= 0) then
-         call fatal_error(error, 'HDF5: cannot flush results file '//this%path)
+         call fatal_error(error, 'HDF5: cannot flush results file '//this%work//' (disk full?)')
          return
       end if
-      call write_xdmf(this%xmf, this%layout, this%written, this%written_time, error)
+      if (this%xmf_count == size(this%written)) return
+      since = clock() - this%xmf_at
+      if (force .or. since >= max(XMF_PERIOD, XMF_SHARE*this%xmf_cost)) &
+         call write_running_xmf(this, error)
    end subroutine commit
+
+   !> The XDMF of the temporary file, naming it, through the staging file and a rename.
+   subroutine write_running_xmf(this, error)
+      class(results_file_t), intent(inout) :: this
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      t0 = clock()
+      call write_xdmf(this%work_xmf, this%staging, xdmf_text(this%layout, &
+         path_base(this%work), this%written, this%written_time), error)
+      if (allocated(error)) return
+      this%xmf_count = size(this%written)
+      this%xmf_at = clock()
+      this%xmf_cost = this%xmf_at - t0
+   end subroutine write_running_xmf
+
+   !> Wall-clock seconds (monotonic).
+   real(wp) function clock()
+      integer(int64) :: count, rate
+      call system_clock(count, rate)
+      clock = real(count, wp)/real(max(rate, 1_int64), wp)
+   end function clock
 
    pure function text_or_empty(text) result(out)
       character(len=:), allocatable, intent(in) :: text
