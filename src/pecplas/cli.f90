@@ -7,7 +7,7 @@ module pecplas_cli
    use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, &
       EXIT_INTERRUPTED
    use pecplas_version, only: PROGRAM_NAME, VERSION
-   use pecplas_files, only: make_directories, path_stem, path_dir, same_file
+   use pecplas_files, only: make_directories, path_stem, path_dir, same_file, exit_now
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_driver_problem, only: problem_t
@@ -159,6 +159,7 @@ contains
          jpoints)
       if (allocated(error)) then
          code = command_error(COMMAND, EXIT_INPUT, 'cannot write results: '//error%text())
+         if (results%is_broken()) call exit_now(code)
          return
       end if
       ! from here a termination signal ends the run between increments, as 'interrupted'
@@ -178,6 +179,8 @@ contains
          code = command_error(COMMAND, EXIT_STOPPED, 'cannot write results: '//failure// &
             '; the increments written before are in '// &
             results%working_path()//' (status running); '//outfile//' is untouched')
+         ! the HDF5 library's exit handler would crash on a file it could not write
+         if (results%is_broken()) call exit_now(code)
          return
       end if
       call cpu_time(t1)

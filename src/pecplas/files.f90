@@ -1,12 +1,13 @@
 !> Small file-system helpers (directory creation, path pieces, rename, identity of two
 !> paths) for the command layer and the results writer.
 module pecplas_files
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_long_long
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit, error_unit
    implicit none (type, external)
    private
 
    public :: make_directories, path_stem, path_dir, path_base, rename_file, remove_file, &
-      same_file, process_id
+      same_file, process_id, free_bytes, exit_now
 
    interface
       integer(c_int) function c_mkdir(path, mode) bind(C, name='mkdir')
@@ -29,6 +30,14 @@ module pecplas_files
       integer(c_int) function c_getpid() bind(C, name='pecplas_getpid')
          import :: c_int
       end function c_getpid
+      integer(c_long_long) function c_free_bytes(path) bind(C, name='pecplas_free_bytes')
+         import :: c_long_long, c_char
+         character(kind=c_char), intent(in) :: path(*)
+      end function c_free_bytes
+      subroutine c_exit_now(code) bind(C, name='pecplas_exit_now')
+         import :: c_int
+         integer(c_int), value :: code
+      end subroutine c_exit_now
    end interface
 
 contains
@@ -98,5 +107,20 @@ contains
    integer function process_id()
       process_id = c_getpid()
    end function process_id
+
+   !> Bytes still writable in the file system of `path` (-1 when unknown).
+   integer(int64) function free_bytes(path)
+      character(len=*), intent(in) :: path
+      free_bytes = int(c_free_bytes(path//c_null_char), int64)
+   end function free_bytes
+
+   !> Flushes standard output and error and ends the process with `code` at once, without
+   !> the libraries' exit handlers (the command layer's way out after an HDF5 failure).
+   subroutine exit_now(code)
+      integer, intent(in) :: code
+      flush (output_unit)
+      flush (error_unit)
+      call c_exit_now(int(code, c_int))
+   end subroutine exit_now
 
 end module pecplas_files

@@ -13,3 +13,21 @@ int pecplas_same_file(const char *a, const char *b) {
 }
 
 int pecplas_getpid(void) { return (int)getpid(); }
+
+#include <stdio.h>
+#include <sys/statvfs.h>
+
+/* Bytes an unprivileged process may still write in the file system holding `path`
+ * (a file or directory), or -1 when unknown. */
+long long pecplas_free_bytes(const char *path) {
+    struct statvfs s;
+    if (statvfs(path, &s) != 0) return -1;
+    return (long long)s.f_bavail * (long long)s.f_frsize;
+}
+
+/* Ends the process at once with `code`, without the exit handlers of the libraries (the
+ * HDF5 library's handler crashes on a file it could not flush). */
+void pecplas_exit_now(int code) {
+    fflush(NULL);
+    _exit(code);
+}

@@ -27,7 +27,7 @@ module pecplas_io_results_file
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_strings, only: itoa
-   use pecplas_files, only: rename_file, remove_file, process_id, path_base
+   use pecplas_files, only: rename_file, remove_file, process_id, path_base, free_bytes
    use pecplas_model, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
@@ -65,8 +65,12 @@ module pecplas_io_results_file
       real(wp) :: xmf_at = 0.0_wp, xmf_cost = 0.0_wp
       !> Test hook: writes fail from the fail_at-th write_increment on (0: never).
       integer :: fail_at = 0, nwrite = 0
-      !> The first write error (disk full, permissions), kept for the command layer.
+      !> The first write error of the file (disk full, permissions), kept for the command layer;
+      !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
       character(len=:), allocatable :: failure
+      logical :: broken = .false.
+      !> Size of the temporary file after the last increment and what that increment added.
+      integer(int64) :: bytes = 0, growth = 0
       type(xdmf_layout_t) :: layout
       integer :: npattern = 0, nrows = 0
       !> Gauss points per element of each set.
@@ -84,6 +88,7 @@ module pecplas_io_results_file
       procedure :: is_open => results_is_open
       procedure :: working_path => results_working_path
       procedure :: write_failure => results_write_failure
+      procedure :: is_broken => results_is_broken
       procedure :: free => results_free
       procedure :: discard => abandon
       final :: results_final
@@ -125,6 +130,9 @@ contains
       this%staging = this%work_xmf(1:len(this%work_xmf) - 4)//'.new'
       this%xmf_count = -1
       this%nwrite = 0
+      this%broken = .false.
+      this%bytes = 0
+      this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
       this%fail_at = test_fail_at()
       call h5fcreate_f(this%work, H5F_ACC_TRUNC_F, this%file, err)
@@ -139,7 +147,10 @@ contains
       if (.not. allocated(error)) call write_joint_mesh(this%file, model, points, error)
       if (.not. allocated(error)) call create_history(this%file, model, error)
       if (.not. allocated(error)) call commit(this, .true., error)
-      if (allocated(error)) call abandon(this)
+      if (allocated(error)) then
+         this%broken = .true.
+         call abandon(this)
+      end if
    end subroutine results_create
 
    !> Where the results of `path` are written while the run goes on: a hidden file of the
@@ -326,17 +337,38 @@ contains
          if (allocated(error)) return
       end if
       this%nwrite = this%nwrite + 1
+      call test_hook(this, error)
+      if (.not. allocated(error)) call check_space(this, error)
+      if (allocated(error)) then
+         if (.not. allocated(this%failure)) this%failure = error%text()
+         return
+      end if
       call write_checked(this, inc, error)
-      if (allocated(error) .and. .not. allocated(this%failure)) this%failure = error%text()
+      if (allocated(error)) then
+         this%broken = .true.
+         if (.not. allocated(this%failure)) this%failure = error%text()
+      end if
    end subroutine results_write_increment
+
+   !> Refuses to start an increment that may not fit on the disk (twice what the last one
+   !> took, plus 64 KiB): HDF5 cut short by a full disk leaves a damaged last increment.
+   subroutine check_space(this, error)
+      class(results_file_t), intent(in) :: this
+      type(error_t), allocatable, intent(out) :: error
+      integer(int64) :: free, need
+      free = free_bytes(this%work)
+      need = 2*this%growth + 65536_int64
+      if (free >= 0 .and. free < need) call fatal_error(error, 'disk full: '// &
+         itoa(int(free/1024))//' KiB left for '//this%work//', an increment needs about '// &
+         itoa(int(need/1024))//' KiB')
+   end subroutine check_space
 
    !> The writing part of write_increment.
    subroutine write_checked(this, inc, error)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
-      call test_hook(this, error)
-      if (allocated(error)) return
+      integer(int64) :: nbytes
       if (inc%write_fields) then
          call write_fields(this%file, inc, this%layout, this%strains, error)
          if (allocated(error)) return
@@ -350,6 +382,12 @@ contains
       if (allocated(error)) return
       this%nrows = this%nrows + 1
       call commit(this, .false., error)
+      if (allocated(error)) return
+      inquire (file=this%work, size=nbytes)
+      if (nbytes > 0) then
+         this%growth = max(0_int64, nbytes - this%bytes)
+         this%bytes = nbytes
+      end if
    end subroutine write_checked
 
    !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
@@ -379,6 +417,7 @@ contains
          return
       end if
       if (allocated(this%failure)) call test_hook(this, error)
+      if (.not. allocated(error) .and. allocated(this%failure)) call check_space(this, error)
       if (allocated(error)) return
       complete = 0
       if (status == 'completed') complete = 1
@@ -429,6 +468,13 @@ contains
       text = ''
       if (allocated(this%failure)) text = this%failure
    end function results_write_failure
+
+   !> True when the HDF5 library failed on this file: the command layer should then end
+   !> the process without the library's exit handler (pecplas_files: exit_now).
+   pure logical function results_is_broken(this)
+      class(results_file_t), intent(in) :: this
+      results_is_broken = this%broken
+   end function results_is_broken
 
    !> Closes the file without touching its status: a run stopped without `finish` keeps
    !> status 'running' and complete = 0, under its temporary name, next to an XDMF sidecar
