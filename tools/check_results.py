@@ -24,7 +24,7 @@ import numpy as np
 
 ROOT_ATTRS = ["program", "version", "title", "units", "deck_file", "deck_text", "analysis",
               "created", "status", "complete", "status_message"]
-STATUSES = ["running", "completed", "limit load", "diverged", "failed"]
+STATUSES = ["running", "completed", "limit load", "diverged", "failed", "interrupted"]
 HISTORY_1D = ["step", "increment", "global_increment", "time", "iterations", "residual",
               "cpu_time", "fields"]
 SET_DATASETS = ["connectivity", "element_ids", "gauss_coordinates"]

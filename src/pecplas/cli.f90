@@ -144,7 +144,8 @@ contains
             outfile = 'output/'//path_stem(deck)//'.h5'
          end if
       end if
-      input = input_named(model, [character(len=len(outfile) + 4) :: outfile, xdmf_path(outfile)])
+      input = input_named(model, outfile)
+      if (len(input) == 0) input = input_named(model, xdmf_path(outfile))
       if (len(input) > 0) then
          code = command_error(COMMAND, EXIT_INPUT, 'the results file '//outfile//' (or its .xmf) '// &
             'would overwrite the input file '//input//' of this run; choose another name with -o')
@@ -192,14 +193,14 @@ contains
       if (status == 'interrupted') code = EXIT_INTERRUPTED
    end function run_deck
 
-   !> The first input file of the run (deck or *INCLUDE, as listed in the deck text) that
-   !> is one of `outputs` (same file, whatever the spelling); '' if none.
-   function input_named(model, outputs) result(input)
+   !> The input file of the run (deck or *INCLUDE, as listed in the deck text) that is the
+   !> file `output` (same file, whatever the spelling); '' if none.
+   function input_named(model, output) result(input)
       type(model_t), intent(in) :: model
-      character(len=*), intent(in) :: outputs(:)
+      character(len=*), intent(in) :: output
       character(len=:), allocatable :: input
       character(len=*), parameter :: MARK = '** ---- file: '
-      integer :: start, eol, i
+      integer :: start, eol
       input = ''
       if (.not. allocated(model%deck_text)) return
       associate (text => model%deck_text)
@@ -208,12 +209,10 @@ contains
             eol = index(text(start:), new_line('a'))
             if (eol == 0) eol = len(text) - start + 2
             if (text(start:min(len(text), start + len(MARK) - 1)) == MARK) then
-               do i = 1, size(outputs)
-                  if (same_file(text(start + len(MARK):start + eol - 2), trim(outputs(i)))) then
-                     input = text(start + len(MARK):start + eol - 2)
-                     return
-                  end if
-               end do
+               if (same_file(text(start + len(MARK):start + eol - 2), output)) then
+                  input = text(start + len(MARK):start + eol - 2)
+                  return
+               end if
             end if
             start = start + eol
          end do

@@ -91,6 +91,7 @@ module pecplas_io_results_file
       procedure :: is_broken => results_is_broken
       procedure :: free => results_free
       procedure :: discard => abandon
+      procedure, private :: staging_h5
       final :: results_final
    end type results_file_t
 
@@ -135,10 +136,11 @@ contains
       this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
       this%fail_at = test_fail_at()
-      call h5fcreate_f(this%work, H5F_ACC_TRUNC_F, this%file, err)
+      ! built under a staging name, then renamed: a .tmp file is always readable
+      call h5fcreate_f(this%staging_h5(), H5F_ACC_TRUNC_F, this%file, err)
       if (err /= 0) then
          this%file = -1
-         call fatal_error(error, 'cannot create results file '//this%work// &
+         call fatal_error(error, 'cannot create results file '//this%staging_h5()// &
             ' (does the directory of '//path//' exist and is it writable?)')
          return
       end if
@@ -146,6 +148,15 @@ contains
       if (.not. allocated(error)) call write_mesh(this%file, model%mesh, gauss_xy, error)
       if (.not. allocated(error)) call write_joint_mesh(this%file, model, points, error)
       if (.not. allocated(error)) call create_history(this%file, model, error)
+      if (.not. allocated(error)) then
+         call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
+         if (err /= 0) call fatal_error(error, 'HDF5: cannot flush results file '// &
+            this%staging_h5()//' (disk full?)')
+      end if
+      if (.not. allocated(error)) then
+         if (.not. rename_file(this%staging_h5(), this%work)) call fatal_error(error, &
+            'cannot rename '//this%staging_h5()//' onto '//this%work)
+      end if
       if (.not. allocated(error)) call commit(this, .true., error)
       if (allocated(error)) then
          this%broken = .true.
@@ -182,10 +193,18 @@ contains
       integer :: err
       if (this%file > 0) call h5fclose_f(this%file, err)
       this%file = -1
+      call remove_file(this%staging_h5())
       call remove_file(this%work)
       call remove_file(this%work_xmf)
       call remove_file(this%staging)
    end subroutine abandon
+
+   !> Name under which the HDF5 file is built before its first flush.
+   function staging_h5(this) result(path)
+      class(results_file_t), intent(in) :: this
+      character(len=:), allocatable :: path
+      path = this%work(1:len(this%work) - 4)//'.new'
+   end function staging_h5
 
    !> Checks the model and gauss_xy and records the layout of the file.
    subroutine plan(this, model, gauss_xy, error)
@@ -437,14 +456,20 @@ contains
          return
       end if
       this%file = -1
+      ! the final sidecar is staged first: the two renames then follow each other closely
+      call write_xdmf(this%staging, '', xdmf_text(this%layout, path_base(this%path), &
+         this%written, this%written_time), error)
+      if (allocated(error)) return
       if (.not. rename_file(this%work, this%path)) then
          call fatal_error(error, 'cannot rename '//this%work//' onto '//this%path// &
             '; the results are in '//this%work)
          return
       end if
-      call write_xdmf(this%xmf, this%staging, xdmf_text(this%layout, path_base(this%path), &
-         this%written, this%written_time), error)
-      if (.not. allocated(error)) call remove_file(this%work_xmf)
+      if (.not. rename_file(this%staging, this%xmf)) then
+         call fatal_error(error, 'cannot rename '//this%staging//' onto '//this%xmf)
+         return
+      end if
+      call remove_file(this%work_xmf)
    end subroutine results_finish
 
    !> True between a successful `create` and `finish` / `free`.

@@ -113,12 +113,16 @@ contains
    end function xdmf_text
 
    !> Writes `text` to `path` through `staging` (same directory) and a rename, so that
-   !> `path` is always a whole file: the old one or the new one, never a part.
-   subroutine write_xdmf(path, staging, text, error)
-      character(len=*), intent(in) :: path, staging, text
+   !> `path` is always a whole file: the old one or the new one, never a part. With an
+   !> empty `staging`, writes `path` directly.
+   subroutine write_xdmf(path, staging_in, text, error)
+      character(len=*), intent(in) :: path, staging_in, text
       type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: staging
       integer :: u, ios
       character(len=256) :: msg
+      staging = staging_in
+      if (len(staging) == 0) staging = path
       open (newunit=u, file=staging, status='replace', action='write', access='stream', &
          form='unformatted', iostat=ios, iomsg=msg)
       if (ios == 0) write (u, iostat=ios, iomsg=msg) text
@@ -133,6 +137,7 @@ contains
          call fatal_error(error, 'cannot close XDMF file '//staging)
          return
       end if
+      if (staging == path) return
       if (.not. rename_file(staging, path)) then
          call remove_file(staging)
          call fatal_error(error, 'cannot rename '//staging//' onto '//path)
