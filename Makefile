@@ -60,7 +60,6 @@ build: deps
 run: build
 	@test -f "$(DECK)" || { echo "make run: no deck $(DECK) (choose one with DECK=path/to/deck.inp)" >&2; exit 1; }
 	@mkdir -p "$(dir $(OUT))"
-	@rm -f "$(OUT)"
 	$(FPM) run --profile release --target pecplas -- "$(DECK)" -o "$(OUT)"
 	@test -f "$(OUT)" || { echo "make run: pecplas wrote no $(OUT)" >&2; exit 1; }
 	@$(PYTHON) tools/plot_results.py "$(OUT)" -o "$(basename $(OUT)).png" || echo "make run: no picture (matplotlib missing?)"

@@ -10,7 +10,8 @@ module test_io_results
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use pecplas_model, only: model_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t
-   use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_file, only: results_file_t, temporary_path
+   use pecplas_files, only: rename_file, remove_file, path_base
    use pecplas_io_results_reader, only: results_reader_t
    use test_io_results_data, only: sample_model, sample_gauss, sample_increment, &
       same_bits, OUT_DIR, make_out_dir, copy_file
@@ -225,22 +226,36 @@ contains
 
    !> A writer that stops after 2 increments without finish: the bytes on disk (copied
    !> while the file is still open, as a crash would leave them) and the file closed by
-   !> free both read as status 'running', complete = 0, with both increments.
+   !> free both read as status 'running', complete = 0, with both increments; they stay
+   !> under the temporary name (with a sidecar listing both) and the target is not created.
+   !> The temporary file is then renamed for test/python/test_results_file.py.
    subroutine test_crash(error)
       type(error_t), allocatable, intent(out) :: error
       type(results_file_t) :: rf
+      character(len=:), allocatable :: target, tmp
+      logical :: exists
+      target = OUT_DIR//'/io_results_running.h5'
+      tmp = temporary_path(target)
+      call remove_file(target)
       call write_sample(rf, 'io_results_running.h5', 1, 2, error)
       if (allocated(error)) return
-      call copy_file(OUT_DIR//'/io_results_running.h5', OUT_DIR//'/crash/io_results_running.h5', &
-         error)
+      call check(error, rf%working_path() == tmp, 'working path '//rf%working_path())
       if (allocated(error)) return
-      call copy_file(OUT_DIR//'/io_results_running.xmf', &
-         OUT_DIR//'/crash/io_results_running.xmf', error)
+      call copy_file(tmp, OUT_DIR//'/crash/io_results_running.h5', error)
       if (allocated(error)) return
       call check_running(OUT_DIR//'/crash/io_results_running.h5', 2, error)
       if (allocated(error)) return
       call rf%free()
-      call check_running(OUT_DIR//'/io_results_running.h5', 2, error)
+      call check_running(tmp, 2, error)
+      if (allocated(error)) return
+      inquire (file=target, exist=exists)
+      call check(error, .not. exists, 'a run that did not finish leaves the target alone')
+      if (allocated(error)) return
+      call check_xdmf(temporary_path(OUT_DIR//'/io_results_running.xmf'), path_base(tmp), 2, &
+         error)
+      if (allocated(error)) return
+      call remove_file(temporary_path(OUT_DIR//'/io_results_running.xmf'))
+      call check(error, rename_file(tmp, target), 'rename '//tmp)
    end subroutine test_crash
 
    subroutine check_running(path, nrow, error)
@@ -339,17 +354,21 @@ contains
    subroutine test_finaliser(error)
       type(error_t), allocatable, intent(out) :: error
       type(results_file_t), allocatable :: rf
+      character(len=:), allocatable :: tmp
+      tmp = temporary_path(OUT_DIR//'/io_results_final.h5')
       allocate (rf)
       call write_sample(rf, 'io_results_final.h5', 1, 1, error)
       if (allocated(error)) return
       deallocate (rf)
-      call check_running(OUT_DIR//'/io_results_final.h5', 1, error)
+      call check_running(tmp, 1, error)
       if (allocated(error)) return
       ! HDF5 refuses to truncate a file that is still open: this proves the close
       allocate (rf)
       call write_sample(rf, 'io_results_final.h5', 1, 1, error)
       if (allocated(error)) return
       call rf%free()
+      call remove_file(temporary_path(OUT_DIR//'/io_results_final.xmf'))
+      call check(error, rename_file(tmp, OUT_DIR//'/io_results_final.h5'), 'rename '//tmp)
    end subroutine test_finaliser
 
    !> A model without load patterns (an empty pattern_factors column set) and a writer
@@ -362,9 +381,10 @@ contains
       type(increment_result_t) :: inc
       real(wp), allocatable :: factors(:, :)
       integer :: n
+      logical :: exists
       call write_sample(rf, 'io_results_scratch.h5', 1, 1, error)
       if (allocated(error)) return
-      call rf%free()
+      call rf%discard()
       model = sample_model()
       deallocate (model%patterns)
       call rf%create(OUT_DIR//'/io_results_nopattern.h5', model, '0.1.0-test', sample_gauss(), &
@@ -384,6 +404,12 @@ contains
       if (allocated(error)) return
       call rd%attribute('/', 'complete', n, error); if (allocated(error)) return
       call check(error, n == 1, 'completed without patterns')
+      if (allocated(error)) return
+      inquire (file=temporary_path(OUT_DIR//'/io_results_nopattern.h5'), exist=exists)
+      call check(error, .not. exists, 'finish renamed the temporary file onto the target')
+      if (allocated(error)) return
+      inquire (file=temporary_path(OUT_DIR//'/io_results_nopattern.xmf'), exist=exists)
+      call check(error, .not. exists, 'finish removed the temporary sidecar')
    end subroutine test_no_pattern
 
 end module test_io_results

@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+from save_figure import save_figure  # noqa: E402
 
 
 def read_path_csv(path):
@@ -56,7 +57,7 @@ def main(argv=None):
         ax.legend(fontsize="small")
     fig.tight_layout()
     out = args.output or os.path.splitext(args.csv[0])[0] + ".png"
-    fig.savefig(out, dpi=120)
+    save_figure(fig, out, dpi=120)
     print(out)
     return 0
 

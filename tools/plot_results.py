@@ -26,6 +26,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+from save_figure import save_figure  # noqa: E402
 
 COMPONENTS = {"xx": 0, "yy": 1, "zz": 2, "xy": 3}
 # corner nodes in boundary order; quadratic elements walk corner, mid, corner, ...
@@ -127,7 +128,7 @@ def main():
     ax.set_title(f"{title}\nincrement {int(key)}, time {time:g}, displacements x{scale:.3g}",
                  fontsize=10)
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    save_figure(fig, out, dpi=120)
     print(f"plot_results: {out}")
 
 

@@ -15,6 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from save_figure import save_figure  # noqa: E402
 
 
 def series(path):
@@ -59,7 +60,7 @@ def main():
     axes[1].set_title("S1: dilatancy with stiff (5e6) and soft (5e3) K_n", fontsize=10)
     axes[1].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(d / "s1_shear.png", dpi=120)
+    save_figure(fig, d / "s1_shear.png", dpi=120)
     print(d / "s1_shear.png")
     # opening-closing: normal stress against the imposed vertical displacement
     fig, ax = plt.subplots(figsize=(6, 4.2))
@@ -71,7 +72,7 @@ def main():
     ax.set_title("S1: compression - opening - closing", fontsize=10)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(d / "s1_open_close.png", dpi=120)
+    save_figure(fig, d / "s1_open_close.png", dpi=120)
     print(d / "s1_open_close.png")
 
 

@@ -19,6 +19,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from s2_results import head_curve, last_key, shaft  # noqa: E402
+from save_figure import save_figure  # noqa: E402
 
 
 def main():
@@ -34,7 +35,7 @@ def main():
         ax.set_title("S2: pile under one load cycle (fig. II.7 style)", fontsize=10)
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(out / "s2" / "s2_head_curve.png", dpi=120)
+        save_figure(fig, out / "s2" / "s2_head_curve.png", dpi=120)
         print(out / "s2" / "s2_head_curve.png")
         fig, axes = plt.subplots(1, 2, figsize=(10, 5), sharey=True)
         for p in s2:
@@ -51,7 +52,7 @@ def main():
         fig.suptitle("S2: shaft stresses at the end of loading and unloading (figs II.8-II.11)",
                      fontsize=10)
         fig.tight_layout()
-        fig.savefig(out / "s2" / "s2_shaft.png", dpi=120)
+        save_figure(fig, out / "s2" / "s2_shaft.png", dpi=120)
         print(out / "s2" / "s2_shaft.png")
     s3 = sorted((out / "s3").glob("s3_psi*.h5"), key=lambda p: int(p.stem[6:].split("_")[0]))
     if s3:
@@ -65,7 +66,7 @@ def main():
         ax.set_title("S3: effect of dilatancy (fig. II.13 style)", fontsize=10)
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(out / "s3" / "s3_dilatancy.png", dpi=120)
+        save_figure(fig, out / "s3" / "s3_dilatancy.png", dpi=120)
         print(out / "s3" / "s3_dilatancy.png")
 
 

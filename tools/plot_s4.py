@@ -19,6 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from save_figure import save_figure  # noqa: E402
 
 SIGMAS = (31, 56, 122)
 TABLES = {"iii1": ("fig. III.9", "table III.1, initial version"),
@@ -77,7 +78,7 @@ def monotonic(d, key):
         a.legend(fontsize=7)
     fig.suptitle(f"S4, MODJOIN {what} (thesis {fig_ref})", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / f"s4_{key}.png", dpi=110)
+    save_figure(fig, d / f"s4_{key}.png", dpi=110)
     plt.close(fig)
 
 
@@ -101,7 +102,7 @@ def versions(d):
         a.legend(fontsize=7)
     fig.suptitle("S4: initial and improved versions of MODJOIN (thesis fig. III.12)", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / "s4_versions_56.png", dpi=110)
+    save_figure(fig, d / "s4_versions_56.png", dpi=110)
     plt.close(fig)
 
 
@@ -146,7 +147,7 @@ def cyclic(d, key, fig_ref, what, suffix, amp):
     fig.suptitle(f"S4, cyclic CNL at 100 kPa, +/-{amp:g} mm, MODJOIN cyclic, {what} "
                  f"(thesis {fig_ref})", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / f"s4_{key}_cyclic_cnl{suffix}.png", dpi=110)
+    save_figure(fig, d / f"s4_{key}_cyclic_cnl{suffix}.png", dpi=110)
     plt.close(fig)
 
 
@@ -178,7 +179,7 @@ def envelopes(d):
     fig.suptitle("S4, cyclic CNL at 100 kPa, table III.6: end of each cycle (thesis fig. III.26 "
                  "style)", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / "s4_iii6_cyclic_envelopes.png", dpi=110)
+    save_figure(fig, d / "s4_iii6_cyclic_envelopes.png", dpi=110)
     plt.close(fig)
 
 
@@ -202,7 +203,7 @@ def cyclic_cnd(d):
     fig.suptitle("S4, cyclic CND at 193 kPa, +/-2 mm, MODJOIN cyclic, table III.6 Dr = 80 % "
                  "(thesis fig. III.31)", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / "s4_iii6_dr80_cyclic_cnd_193.png", dpi=110)
+    save_figure(fig, d / "s4_iii6_dr80_cyclic_cnd_193.png", dpi=110)
     plt.close(fig)
 
 
@@ -229,7 +230,7 @@ def sensitivity(d):
     np.atleast_1d(ax)[0].legend(fontsize=7)
     fig.suptitle("S4: sensitivity of MODJOIN (table III.2, 56 kPa, 0-6 mm), III.21", fontsize=11)
     fig.tight_layout()
-    fig.savefig(d / "s4_sensitivity.png", dpi=110)
+    save_figure(fig, d / "s4_sensitivity.png", dpi=110)
     plt.close(fig)
 
 

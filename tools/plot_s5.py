@@ -21,6 +21,7 @@ import numpy as np  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from s5_results import (L, compare, interface, keys_and_steps, mid_history,  # noqa: E402
                         point_driver, step_ends)
+from save_figure import save_figure  # noqa: E402
 
 
 def main():
@@ -45,7 +46,7 @@ def main():
     axes[0].set_title("S5: stresses along the interface (fig. IV.2 style)", fontsize=10)
     axes[1].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(out / "s5_distributions.png", dpi=120)
+    save_figure(fig, out / "s5_distributions.png", dpi=120)
     print(out / "s5_distributions.png")
 
     fe = mid_history(h5)
@@ -72,7 +73,7 @@ def main():
     fig.suptitle(f"S5: mid-interface FE vs point driver (fig. IV.3 style), "
                  f"max |dtau| = {100 * dev:.2f} % of peak", fontsize=10)
     fig.tight_layout()
-    fig.savefig(out / "s5_mid_interface.png", dpi=120)
+    save_figure(fig, out / "s5_mid_interface.png", dpi=120)
     print(out / "s5_mid_interface.png")
 
 

@@ -22,6 +22,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from s6_results import head_curve, keys_and_loads, shaft  # noqa: E402
+from save_figure import save_figure  # noqa: E402
 
 DEPTHS = (0.525, 1.016, 1.581)   # points of interest of the thesis [m]
 QS = (2.83, 4.40, 6.28)          # measured cycle peaks [kN]
@@ -66,7 +67,7 @@ def main():
     axes[0].legend(fontsize=8)
     fig.suptitle("S6 head load-uplift (figs IV.5, IV.6, IV.10 style; grey: measured peaks)")
     fig.tight_layout()
-    fig.savefig(d / "s6_head.png", dpi=120)
+    save_figure(fig, d / "s6_head.png", dpi=120)
     for name in ("s6_modjoin", "s6_mohr_coulomb"):
         if name not in runs:
             continue
@@ -101,7 +102,7 @@ def main():
         axes[1].legend(fontsize=7)
         fig.suptitle(f"S6 {name[3:]}: axial force (fig. IV.7) and shaft stresses (fig. IV.8)")
         fig.tight_layout()
-        fig.savefig(d / f"{name}_shaft.png", dpi=120)
+        save_figure(fig, d / f"{name}_shaft.png", dpi=120)
         # fig. IV.9: stress paths at the three depths
         z, _, _ = shaft(h5, keys[0])
         st = np.array([shaft(h5, k)[1] for k in keys])
@@ -120,7 +121,7 @@ def main():
         axes[0].legend(fontsize=7)
         fig.suptitle(f"S6 {name[3:]}: stresses at three shaft points (fig. IV.9 style)")
         fig.tight_layout()
-        fig.savefig(d / f"{name}_paths.png", dpi=120)
+        save_figure(fig, d / f"{name}_paths.png", dpi=120)
     print(f"plot_s6: figures in {d}")
 
 

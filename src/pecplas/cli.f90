@@ -1,11 +1,13 @@
 !> The batch command `pecplas DECK [-o FILE] [--quiet]`: reads the deck, sets the problem
 !> up, factorises, runs the steps and writes the results. Returns the exit code
-!> (0 done, 2 input error, 3 run stopped early, 1 internal error) so tests can call it.
+!> (0 done, 2 input error, 3 run stopped early or results not writable, 4 interrupted by
+!> SIGTERM/SIGINT/SIGHUP, 1 internal error) so tests can call it.
 module pecplas_cli
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL
+   use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, &
+      EXIT_INTERRUPTED
    use pecplas_version, only: PROGRAM_NAME, VERSION
-   use pecplas_files, only: make_directories, path_stem, path_dir
+   use pecplas_files, only: make_directories, path_stem, path_dir, same_file, exit_now
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_driver_problem, only: problem_t
@@ -17,6 +19,8 @@ module pecplas_cli
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_driver_advise, only: advise_main
    use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_xdmf, only: xdmf_path
+   use pecplas_signals, only: install_signal_handlers, interrupt_signal
    use pecplas_driver_timers, only: wall_time
    use pecplas_command, only: command_error
    use pecplas_driver_restart, only: restore_restart
@@ -27,7 +31,6 @@ module pecplas_cli
    !> Program name in error messages.
    character(len=*), parameter :: COMMAND = 'pecplas'
    !> Exit code of a run interrupted (SIGTERM/SIGINT, or --stop-after-increments).
-   integer, parameter :: EXIT_INTERRUPTED = 4
 
    public :: pecplas_main, run_deck
 
@@ -99,7 +102,8 @@ contains
             write (*, '(a)') USAGE
             write (*, '(a)') '  Runs the keyword deck DECK and writes HDF5 results (default '// &
                'output/<deck>.h5) with an XDMF sidecar.'
-            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early.'
+            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early '// &
+               '(or results not writable), 4 interrupted (SIGTERM, SIGINT, SIGHUP).'
             write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
                'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
                'Q4/T3 decks), prints their cost and error (reference: the finest, NEWTON x2 '// &
@@ -148,7 +152,7 @@ contains
       type(results_file_t) :: results
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
-      character(len=:), allocatable :: status, message, outfile, warning
+      character(len=:), allocatable :: status, message, outfile, warning, input, failure
       real(wp) :: t0, t1, w0
       integer :: nflipped
 
@@ -181,6 +185,13 @@ contains
             return
          end if
       end if
+      input = input_named(model, outfile)
+      if (len(input) == 0) input = input_named(model, xdmf_path(outfile))
+      if (len(input) > 0) then
+         code = command_error(COMMAND, EXIT_INPUT, 'the results file '//outfile//' (or its .xmf) '// &
+            'would overwrite the input file '//input//' of this run; choose another name with -o')
+         return
+      end if
       call make_directories(path_dir(outfile))
       if (.not. quiet) call banner(model, problem, deck, outfile)
       if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
@@ -190,8 +201,12 @@ contains
          jpoints)
       if (allocated(error)) then
          code = command_error(COMMAND, EXIT_INPUT, 'cannot write results: '//error%text())
+         if (results%is_broken()) call exit_now(code)
          return
       end if
+      ! from here a termination signal ends the run between increments, as 'interrupted'
+      if (.not. install_signal_handlers() .and. .not. quiet) write (*, '(a)') &
+         ' note: no handler for SIGTERM/SIGINT/SIGHUP; a signal ends the run at once'
       call run_increments(model, problem, results, quiet, status, message, error)
       if (allocated(error)) then
          status = 'failed'
@@ -209,9 +224,17 @@ contains
             return
          end if
       end if
+      failure = results%write_failure()
+      if (len(failure) > 0) message = 'cannot write results: '//failure
       call results%finish(status, message, error)
       if (allocated(error)) then
-         code = command_error(COMMAND, EXIT_INTERNAL, 'cannot finish results file: '//error%text())
+         call results%free()
+         if (len(failure) == 0) failure = error%text()
+         code = command_error(COMMAND, EXIT_STOPPED, 'cannot write results: '//failure// &
+            '; the increments written before are in '// &
+            results%working_path()//' (status running); '//outfile//' is untouched')
+         ! the HDF5 library's exit handler would crash on a file it could not write
+         if (results%is_broken()) call exit_now(code)
          return
       end if
       call cpu_time(t1)
@@ -219,24 +242,9 @@ contains
       code = EXIT_OK
       if (status /= 'completed') code = EXIT_STOPPED
       if (status == 'failed') code = EXIT_INTERNAL
+      if (len(failure) > 0) code = EXIT_STOPPED
       if (status == 'interrupted') code = EXIT_INTERRUPTED
    end function run_deck
-
-   !> True when the two paths are spelled the same (after a leading './').
-   pure logical function same_file(a, b)
-      character(len=*), intent(in) :: a, b
-      same_file = strip_dot(a) == strip_dot(b)
-   end function same_file
-
-   pure function strip_dot(p) result(q)
-      character(len=*), intent(in) :: p
-      character(len=:), allocatable :: q
-      q = trim(p)
-      do while (len(q) > 2)
-         if (q(1:2) /= './') exit
-         q = q(3:)
-      end do
-   end function strip_dot
 
    !> --version: version, commit, compiler, linked library versions.
    subroutine print_version()
@@ -247,6 +255,32 @@ contains
          write (*, '(a)') trim(lines(i))
       end do
    end subroutine print_version
+
+   !> The input file of the run (deck or *INCLUDE, as listed in the deck text) that is the
+   !> file `output` (same file, whatever the spelling); '' if none.
+   function input_named(model, output) result(input)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: output
+      character(len=:), allocatable :: input
+      character(len=*), parameter :: MARK = '** ---- file: '
+      integer :: start, eol
+      input = ''
+      if (.not. allocated(model%deck_text)) return
+      associate (text => model%deck_text)
+         start = 1
+         do while (start <= len(text))
+            eol = index(text(start:), new_line('a'))
+            if (eol == 0) eol = len(text) - start + 2
+            if (text(start:min(len(text), start + len(MARK) - 1)) == MARK) then
+               if (same_file(text(start + len(MARK):start + eol - 2), output)) then
+                  input = text(start + len(MARK):start + eol - 2)
+                  return
+               end if
+            end if
+            start = start + eol
+         end do
+      end associate
+   end function input_named
 
    subroutine banner(model, problem, deck, outfile)
       type(model_t), intent(in) :: model
@@ -284,6 +318,7 @@ contains
       real(wp), intent(in) :: cpu, wall
       logical, intent(in) :: quiet
       if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
+      flush (0)
       if (quiet) return
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%increments, &
          ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &

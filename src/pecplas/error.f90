@@ -6,10 +6,11 @@ module pecplas_error
    private
 
    public :: error_t, fatal_error, deck_error, input_error, run_error, singular_error
-   public :: EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL
+   public :: EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, EXIT_INTERRUPTED
 
-   !> Exit codes of the batch executable.
-   integer, parameter :: EXIT_OK = 0, EXIT_INPUT = 2, EXIT_STOPPED = 3, EXIT_INTERNAL = 1
+   !> Exit codes of the batch executable (4: stopped by SIGTERM, SIGINT or SIGHUP).
+   integer, parameter :: EXIT_OK = 0, EXIT_INPUT = 2, EXIT_STOPPED = 3, EXIT_INTERNAL = 1, &
+      EXIT_INTERRUPTED = 4
 
    !> Kinds of error (decide the exit code).
    integer, parameter, public :: ERR_INTERNAL = 1, ERR_INPUT = 2, ERR_RUN = 3, ERR_SINGULAR = 4

@@ -30,7 +30,6 @@ module pecplas_driver_advise
    use pecplas_driver_gauss, only: gauss_coordinates
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_io_results_file, only: results_file_t
-   use pecplas_io_results_xdmf, only: xdmf_path
    use pecplas_driver_timers, only: wall_time
    use pecplas_files, only: path_stem
    use pecplas_command, only: command_error
@@ -229,9 +228,7 @@ contains
       call run_increments(model, problem, results, .true., status, message, run_err)
       row%wall = wall_time() - w0 - problem%time%output
       if (allocated(run_err)) status = 'failed'
-      call results%free()
-      call delete_file(scratch)
-      call delete_file(xdmf_path(scratch))
+      call results%discard()
       row%status = status
       row%ok = status == 'completed'
       if (row%ok) u(:, 1:size(problem%state%u, 2), i) = problem%state%u
@@ -342,13 +339,5 @@ contains
       path = trim(dir)//'/pecplas_advise_'//path_stem(deck)//'_'//itoa(int(mod(count, &
          1000000000_ik8)))//'_'//itoa(i)//'.h5'
    end function scratch_name
-
-   subroutine delete_file(path)
-      character(len=*), intent(in) :: path
-      integer :: unit, ios
-      open (newunit=unit, file=path, status='old', iostat=ios)
-      if (ios == 0) close (unit, status='delete')
-   end subroutine delete_file
-
 
 end module pecplas_driver_advise

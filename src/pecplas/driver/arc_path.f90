@@ -16,6 +16,7 @@ module pecplas_driver_arc_path
    use pecplas_driver_arc_length, only: adapt_length
    use pecplas_driver_residual, only: load_vectors, free_part
    use pecplas_io_results_file, only: results_file_t
+   use pecplas_signals, only: interrupt_requested
    implicit none (type, external)
    private
 
@@ -155,7 +156,8 @@ contains
                res%kind = END_TARGET
                return
             end if
-            if (problem%position%stop_now(.false., problem%increments)) then
+            if (interrupt_requested() .or. problem%position%stop_now(.false., &
+                problem%increments)) then
                res%kind = END_INTERRUPTED
                return
             end if

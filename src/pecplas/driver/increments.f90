@@ -24,6 +24,7 @@ module pecplas_driver_increments
       END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_io_results_file, only: results_file_t
    use pecplas_strings, only: itoa
+   use pecplas_signals, only: interrupt_requested, interrupt_signal
    implicit none (type, external)
    private
 
@@ -147,7 +148,7 @@ contains
                if (allocated(error)) return
                select case (res%kind)
                case (END_INTERRUPTED)
-                  call interrupted_status(status, message)
+                  call interrupted_status(problem, status, message)
                case (END_PASSED, END_TARGET)
                   ! a convergence failure, not a limit: load control goes on from here
                   tau = res%tau
@@ -214,7 +215,7 @@ contains
          case (END_TARGET)
             return
          case (END_INTERRUPTED)
-            call interrupted_status(status, message)
+            call interrupted_status(problem, status, message)
          case (END_NODE)
             if (res%beyond > 0 .and. res%tau < res%tau_peak) then
                call limit_reached(model, problem, run, step, istep, res, status, message)
@@ -291,7 +292,8 @@ contains
          'the results file (/limit says where the peak is)'
    end subroutine limit_reached
 
-   !> True (with status 'interrupted') when the run must stop after this increment: the
+   !> True (with status 'interrupted') when the run must stop after this increment: a
+   !> termination signal (SIGTERM, SIGINT, SIGHUP: pecplas_signals) or the
    !> --stop-after-increments test hook.
    logical function interrupted(model, problem, istep, tau, status, message)
       type(model_t), intent(in) :: model
@@ -299,16 +301,22 @@ contains
       integer, intent(in) :: istep
       real(wp), intent(in) :: tau
       character(len=:), allocatable, intent(inout) :: status, message
-      interrupted = problem%position%stop_now(tau >= 1.0_wp - 1.0e-12_wp .and. &
-         istep == size(model%steps), problem%increments)
-      if (interrupted) call interrupted_status(status, message)
+      interrupted = interrupt_requested() .or. problem%position%stop_now(tau >= 1.0_wp - &
+         1.0e-12_wp .and. istep == size(model%steps), problem%increments)
+      if (interrupted) call interrupted_status(problem, status, message)
    end function interrupted
 
-   subroutine interrupted_status(status, message)
+   subroutine interrupted_status(problem, status, message)
+      type(problem_t), intent(in) :: problem
       character(len=:), allocatable, intent(inout) :: status, message
       status = 'interrupted'
-      message = 'stopped after the requested number of increments (--stop-after-increments); '// &
-         'restart with --restart'
+      if (interrupt_requested()) then
+         message = 'stopped by '//interrupt_signal()//' after increment '// &
+            itoa(problem%increments)//'; continue with --restart'
+      else
+         message = 'stopped after the requested number of increments '// &
+            '(--stop-after-increments); continue with --restart'
+      end if
    end subroutine interrupted_status
 
    subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)

@@ -1,5 +1,6 @@
 !> What a run shows: the results file rows and the one-line progress per increment.
 module pecplas_driver_output
+   use, intrinsic :: iso_fortran_env, only: output_unit
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_model, only: model_t
@@ -112,6 +113,8 @@ contains
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
          '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)// &
          how_text
+      ! one line per increment reaches a redirected log at once (a killed run keeps it)
+      flush (output_unit)
    end subroutine progress_line
 
 end module pecplas_driver_output

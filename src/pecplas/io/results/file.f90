@@ -11,13 +11,24 @@
 !>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
 !>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
 !>                joints/<set>/... (see pecplas_io_results_joints)
-!> Every increment is flushed, so a run that crashes leaves a readable file whose status
-!> is still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> While the run goes on, the file is written under a temporary name in the target's
+!> directory (`.NAME.h5.<pid>.tmp`, see `temporary_path`) with its XDMF sidecar
+!> (`.NAME.xmf.<pid>.tmp`); `finish` renames it onto the target, so an earlier result of the
+!> same name is replaced only by a finished file and never damaged by a run that dies.
+!> Every increment is flushed, so a run that crashes leaves a readable temporary file whose
+!> status is still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> The sidecar is rewritten whole (through a staging file and a rename) at most once a
+!> second and at most 5 % of the time, and at the end: its cost stays linear in the number
+!> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
+!> `write_increment` and every later write fail as a full disk would.
 module pecplas_io_results_file
+   use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
+   use pecplas_strings, only: itoa
+   use pecplas_files, only: rename_file, remove_file, process_id, path_base, free_bytes
    use pecplas_model, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
@@ -26,24 +37,42 @@ module pecplas_io_results_file
       h5_history_dataset, safe_name, h5_write
    use pecplas_io_results_mesh, only: write_mesh
    use pecplas_io_results_restart, only: restart_data_t, write_restart_group
-   use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
+   use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
+      write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
       check_joint_fields, write_joint_fields
    implicit none (type, external)
    private
 
-   public :: results_file_t, RESULT_STATUSES
+   public :: results_file_t, RESULT_STATUSES, temporary_path
 
    !> Final statuses accepted by `finish`; a file never finished keeps 'running'.
    character(len=*), parameter :: RESULT_STATUSES(6) = [character(len=11) :: 'completed', &
       'limit load', 'diverged', 'stopped', 'failed', 'interrupted']
 
+   !> The running sidecar is rewritten at most every XMF_PERIOD seconds and when its last
+   !> write took at most 1/XMF_SHARE of the time since.
+   real(wp), parameter :: XMF_PERIOD = 1.0_wp, XMF_SHARE = 20.0_wp
+
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
       private
       integer(hid_t) :: file = -1
-      character(len=:), allocatable :: path, xmf
+      !> Targets (.h5 and .xmf), the temporary files written while the run goes on, and
+      !> the staging name through which every .xmf is written.
+      character(len=:), allocatable :: path, xmf, work, work_xmf, staging
+      !> Fields groups listed in the running .xmf; time of its last write and its cost [s].
+      integer :: xmf_count = -1
+      real(wp) :: xmf_at = 0.0_wp, xmf_cost = 0.0_wp
+      !> Test hook: writes fail from the fail_at-th write_increment on (0: never).
+      integer :: fail_at = 0, nwrite = 0
+      !> The first write error of the file (disk full, permissions), kept for the command layer;
+      !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
+      character(len=:), allocatable :: failure
+      logical :: broken = .false.
+      !> Size of the temporary file after the last increment and what that increment added.
+      integer(int64) :: bytes = 0, growth = 0
       type(xdmf_layout_t) :: layout
       integer :: npattern = 0, nrows = 0
       !> Gauss points per element of each set.
@@ -62,7 +91,12 @@ module pecplas_io_results_file
       procedure :: set_warnings => results_set_warnings
       procedure :: write_restart => results_write_restart
       procedure :: is_open => results_is_open
+      procedure :: working_path => results_working_path
+      procedure :: write_failure => results_write_failure
+      procedure :: is_broken => results_is_broken
       procedure :: free => results_free
+      procedure :: discard => abandon
+      procedure, private :: staging_h5
       final :: results_final
    end type results_file_t
 
@@ -95,26 +129,87 @@ contains
       if (allocated(error)) return
       call h5_init(error)
       if (allocated(error)) return
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, this%file, err)
-      if (err /= 0) then
-         this%file = -1
-         call fatal_error(error, 'cannot create results file '//path// &
-            ' (does its directory exist and is it writable?)')
-         return
-      end if
       this%path = path
       this%xmf = xdmf_path(path)
-      this%layout%h5_name = path(index(path, '/', back=.true.) + 1:)
+      this%work = temporary_path(path)
+      this%work_xmf = temporary_path(this%xmf)
+      this%staging = this%work_xmf(1:len(this%work_xmf) - 4)//'.new'
+      this%xmf_count = -1
+      this%nwrite = 0
+      this%broken = .false.
+      this%bytes = 0
+      this%growth = 0
+      if (allocated(this%failure)) deallocate (this%failure)
+      this%fail_at = test_fail_at()
+      ! built under a staging name, then renamed: a .tmp file is always readable
+      call h5fcreate_f(this%staging_h5(), H5F_ACC_TRUNC_F, this%file, err)
+      if (err /= 0) then
+         this%file = -1
+         call fatal_error(error, 'cannot create results file '//this%staging_h5()// &
+            ' (does the directory of '//path//' exist and is it writable?)')
+         return
+      end if
       call write_root(this%file, model, version, error)
-      if (allocated(error)) return
-      call write_mesh(this%file, model%mesh, gauss_xy, error)
-      if (allocated(error)) return
-      call write_joint_mesh(this%file, model, points, error)
-      if (allocated(error)) return
-      call create_history(this%file, model, error)
-      if (allocated(error)) return
-      call commit(this, error)
+      if (.not. allocated(error)) call write_mesh(this%file, model%mesh, gauss_xy, error)
+      if (.not. allocated(error)) call write_joint_mesh(this%file, model, points, error)
+      if (.not. allocated(error)) call create_history(this%file, model, error)
+      if (.not. allocated(error)) then
+         call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
+         if (err /= 0) call fatal_error(error, 'HDF5: cannot flush results file '// &
+            this%staging_h5()//' (disk full?)')
+      end if
+      if (.not. allocated(error)) then
+         if (.not. rename_file(this%staging_h5(), this%work)) call fatal_error(error, &
+            'cannot rename '//this%staging_h5()//' onto '//this%work)
+      end if
+      if (.not. allocated(error)) call commit(this, .true., error)
+      if (allocated(error)) then
+         this%broken = .true.
+         call abandon(this)
+      end if
    end subroutine results_create
+
+   !> Where the results of `path` are written while the run goes on: a hidden file of the
+   !> same directory named after the target and this process, 'out/a.h5' ->
+   !> 'out/.a.h5.<pid>.tmp' (the same directory, so that the final rename is atomic).
+   function temporary_path(path) result(tmp)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: tmp
+      integer :: i
+      i = index(path, '/', back=.true.)
+      tmp = path(1:i)//'.'//path_base(path)//'.'//itoa(process_id())//'.tmp'
+   end function temporary_path
+
+   !> PECPLAS_TEST_FAIL_WRITE (test hook), 0 when unset or not a positive integer.
+   integer function test_fail_at() result(n)
+      character(len=32) :: text
+      integer :: length, stat, ios
+      n = 0
+      call get_environment_variable('PECPLAS_TEST_FAIL_WRITE', text, length, stat)
+      if (stat /= 0 .or. length == 0) return
+      read (text, *, iostat=ios) n
+      if (ios /= 0 .or. n < 0) n = 0
+   end function test_fail_at
+
+   !> Closes the file and removes its temporary files (a file that could not be created,
+   !> a scratch run).
+   subroutine abandon(this)
+      class(results_file_t), intent(inout) :: this
+      integer :: err
+      if (this%file > 0) call h5fclose_f(this%file, err)
+      this%file = -1
+      call remove_file(this%staging_h5())
+      call remove_file(this%work)
+      call remove_file(this%work_xmf)
+      call remove_file(this%staging)
+   end subroutine abandon
+
+   !> Name under which the HDF5 file is built before its first flush.
+   function staging_h5(this) result(path)
+      class(results_file_t), intent(in) :: this
+      character(len=:), allocatable :: path
+      path = this%work(1:len(this%work) - 4)//'.new'
+   end function staging_h5
 
    !> Checks the model and gauss_xy and records the layout of the file.
    subroutine plan(this, model, gauss_xy, error)
@@ -248,8 +343,9 @@ contains
    end subroutine write_pattern_names
 
    !> Appends one converged increment (history row, and fields when inc%write_fields),
-   !> then flushes the file and rewrites the XDMF. Refuses non-finite values and wrong
-   !> shapes before writing anything.
+   !> then flushes the file (and, when due, rewrites the running XDMF). Refuses non-finite
+   !> values and wrong shapes before writing anything. A failed write (disk full,
+   !> permissions) is also kept as `write_failure`.
    subroutine results_write_increment(this, inc, error)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
@@ -263,6 +359,41 @@ contains
       if (inc%write_fields) then
          call check_joint_fields(inc%joint_fields, this%joints, 'results file: ', error)
          if (allocated(error)) return
+      end if
+      this%nwrite = this%nwrite + 1
+      call test_hook(this, error)
+      if (.not. allocated(error)) call check_space(this, error)
+      if (allocated(error)) then
+         if (.not. allocated(this%failure)) this%failure = error%text()
+         return
+      end if
+      call write_checked(this, inc, error)
+      if (allocated(error)) then
+         this%broken = .true.
+         if (.not. allocated(this%failure)) this%failure = error%text()
+      end if
+   end subroutine results_write_increment
+
+   !> Refuses to start an increment that may not fit on the disk (twice what the last one
+   !> took, plus 64 KiB): HDF5 cut short by a full disk leaves a damaged last increment.
+   subroutine check_space(this, error)
+      class(results_file_t), intent(in) :: this
+      type(error_t), allocatable, intent(out) :: error
+      integer(int64) :: free, need
+      free = free_bytes(this%work)
+      need = 2*this%growth + 65536_int64
+      if (free >= 0 .and. free < need) call fatal_error(error, 'disk full: '// &
+         itoa(int(free/1024))//' KiB left for '//this%work//', an increment needs about '// &
+         itoa(int(need/1024))//' KiB')
+   end subroutine check_space
+
+   !> The writing part of write_increment.
+   subroutine write_checked(this, inc, error)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      type(error_t), allocatable, intent(out) :: error
+      integer(int64) :: nbytes
+      if (inc%write_fields) then
          call write_fields(this%file, inc, this%layout, this%strains, error)
          if (allocated(error)) return
          if (size(this%joints) > 0) call write_joint_fields(this%file, inc%global_increment, &
@@ -274,16 +405,32 @@ contains
       call write_history_row(this%file, this%nrows + 1, inc, error)
       if (allocated(error)) return
       this%nrows = this%nrows + 1
-      call commit(this, error)
-   end subroutine results_write_increment
+      call commit(this, .false., error)
+      if (allocated(error)) return
+      inquire (file=this%work, size=nbytes)
+      if (nbytes > 0) then
+         this%growth = max(0_int64, nbytes - this%bytes)
+         this%bytes = nbytes
+      end if
+   end subroutine write_checked
 
-   !> Records how the run ended and closes the file. status: one of RESULT_STATUSES;
-   !> complete = 1 only for 'completed'.
+   !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
+   subroutine test_hook(this, error)
+      class(results_file_t), intent(in) :: this
+      type(error_t), allocatable, intent(out) :: error
+      if (this%fail_at > 0 .and. this%nwrite >= this%fail_at) call fatal_error(error, &
+         'HDF5: cannot write results file '//this%work//' (write '//itoa(this%nwrite)// &
+         ' failed on purpose: PECPLAS_TEST_FAIL_WRITE='//itoa(this%fail_at)//')')
+   end subroutine test_hook
+
+   !> Records how the run ended, closes the file and renames it onto the target (then the
+   !> final XDMF, naming the target). status: one of RESULT_STATUSES; complete = 1 only for
+   !> 'completed'. On error the temporary file stays where `working_path` says.
    subroutine results_finish(this, status, message, error)
       class(results_file_t), intent(inout) :: this
       character(len=*), intent(in) :: status, message
       type(error_t), allocatable, intent(out) :: error
-      integer :: complete
+      integer :: complete, err
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
          return
@@ -293,6 +440,9 @@ contains
             '"; known: completed, limit load, diverged, stopped, failed, interrupted')
          return
       end if
+      if (allocated(this%failure)) call test_hook(this, error)
+      if (.not. allocated(error) .and. allocated(this%failure)) call check_space(this, error)
+      if (allocated(error)) return
       complete = 0
       if (status == 'completed') complete = 1
       call h5_attr(this%file, 'status', status, error)
@@ -303,9 +453,28 @@ contains
       ! complete last: a crash in between leaves complete = 0
       if (.not. allocated(error)) call h5_attr(this%file, 'complete', complete, error)
       if (allocated(error)) return
-      call commit(this, error)
+      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
+      if (err == 0) call h5fclose_f(this%file, err)
+      if (err /= 0) then
+         call fatal_error(error, 'HDF5: cannot close results file '//this%work// &
+            ' (disk full?)')
+         return
+      end if
+      this%file = -1
+      ! the final sidecar is staged first: the two renames then follow each other closely
+      call write_xdmf(this%staging, '', xdmf_text(this%layout, path_base(this%path), &
+         this%written, this%written_time), error)
       if (allocated(error)) return
-      call this%free()
+      if (.not. rename_file(this%work, this%path)) then
+         call fatal_error(error, 'cannot rename '//this%work//' onto '//this%path// &
+            '; the results are in '//this%work)
+         return
+      end if
+      if (.not. rename_file(this%staging, this%xmf)) then
+         call fatal_error(error, 'cannot rename '//this%staging//' onto '//this%xmf)
+         return
+      end if
+      call remove_file(this%work_xmf)
    end subroutine results_finish
 
    !> /limit: where the load of the run had its maximum (written before `finish`).
@@ -363,16 +532,42 @@ contains
       results_is_open = this%file > 0
    end function results_is_open
 
+   !> The file being written (temporary name) until `finish` renames it onto the target.
+   function results_working_path(this) result(path)
+      class(results_file_t), intent(in) :: this
+      character(len=:), allocatable :: path
+      path = ''
+      if (allocated(this%work)) path = this%work
+   end function results_working_path
+
+   !> The first write error of the file ('' if none): disk full, permissions, test hook.
+   function results_write_failure(this) result(text)
+      class(results_file_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = ''
+      if (allocated(this%failure)) text = this%failure
+   end function results_write_failure
+
+   !> True when the HDF5 library failed on this file: the command layer should then end
+   !> the process without the library's exit handler (pecplas_files: exit_now).
+   pure logical function results_is_broken(this)
+      class(results_file_t), intent(in) :: this
+      results_is_broken = this%broken
+   end function results_is_broken
+
    !> Closes the file without touching its status: a run stopped without `finish` keeps
-   !> status 'running' and complete = 0.
+   !> status 'running' and complete = 0, under its temporary name, next to an XDMF sidecar
+   !> (also temporary) that lists every increment written.
    subroutine results_free(this)
       class(results_file_t), intent(inout) :: this
+      type(error_t), allocatable :: error
       integer :: err
-      if (this%file > 0) then
-         call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
-         call h5fclose_f(this%file, err)
-      end if
+      if (this%file <= 0) return
+      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
+      call h5fclose_f(this%file, err)
       this%file = -1
+      if (.not. allocated(this%failure) .and. this%xmf_count /= size(this%written)) &
+         call write_running_xmf(this, error)
    end subroutine results_free
 
    subroutine results_final(this)
@@ -380,18 +575,45 @@ contains
       call this%free()
    end subroutine results_final
 
-   !> Flushes to disk (the commit point of an increment) and rewrites the XDMF.
-   subroutine commit(this, error)
+   !> Flushes to disk (the commit point of an increment) and rewrites the running XDMF when
+   !> it lacks increments and `force` or its period has passed (see XMF_PERIOD, XMF_SHARE).
+   subroutine commit(this, force, error)
       class(results_file_t), intent(inout) :: this
+      logical, intent(in) :: force
       type(error_t), allocatable, intent(out) :: error
       integer :: err
+      real(wp) :: since
       call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
       if (err /= 0) then
-         call fatal_error(error, 'HDF5: cannot flush results file '//this%path)
+         call fatal_error(error, 'HDF5: cannot flush results file '//this%work//' (disk full?)')
          return
       end if
-      call write_xdmf(this%xmf, this%layout, this%written, this%written_time, error)
+      if (this%xmf_count == size(this%written)) return
+      since = clock() - this%xmf_at
+      if (force .or. since >= max(XMF_PERIOD, XMF_SHARE*this%xmf_cost)) &
+         call write_running_xmf(this, error)
    end subroutine commit
+
+   !> The XDMF of the temporary file, naming it, through the staging file and a rename.
+   subroutine write_running_xmf(this, error)
+      class(results_file_t), intent(inout) :: this
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      t0 = clock()
+      call write_xdmf(this%work_xmf, this%staging, xdmf_text(this%layout, &
+         path_base(this%work), this%written, this%written_time), error)
+      if (allocated(error)) return
+      this%xmf_count = size(this%written)
+      this%xmf_at = clock()
+      this%xmf_cost = this%xmf_at - t0
+   end subroutine write_running_xmf
+
+   !> Wall-clock seconds (monotonic).
+   real(wp) function clock()
+      integer(int64) :: count, rate
+      call system_clock(count, rate)
+      clock = real(count, wp)/real(max(rate, 1_int64), wp)
+   end function clock
 
    pure function text_or_empty(text) result(out)
       character(len=:), allocatable, intent(in) :: text

@@ -14,7 +14,7 @@ module pecplas_io_results_h5
       h5dcreate_f, h5dwrite_f, h5dclose_f, h5dopen_f, h5dset_extent_f, h5dget_space_f, &
       h5sselect_hyperslab_f, h5gcreate_f, h5gclose_f, h5acreate_f, h5aopen_f, h5aexists_f, &
       h5awrite_f, h5aclose_f, h5tcopy_f, h5tset_cset_f, h5tclose_f, h5pcreate_f, &
-      h5pset_chunk_f, h5pclose_f, H5T_STRING, H5T_CSET_UTF8_F, H5T_IEEE_F64LE, H5T_STD_I32LE, &
+      h5pset_chunk_f, h5pclose_f, h5eset_auto_f, H5T_STRING, H5T_CSET_UTF8_F, H5T_IEEE_F64LE, H5T_STD_I32LE, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
       H5P_DATASET_CREATE_F
    use pecplas_kinds, only: wp
@@ -46,12 +46,17 @@ module pecplas_io_results_h5
 
 contains
 
-   !> Opens the HDF5 library (idempotent).
+   !> Opens the HDF5 library (idempotent) and turns its own error stack printing off: every
+   !> failure is reported once, by the caller, as one line naming the file and the object.
    subroutine h5_init(error)
       type(error_t), allocatable, intent(out) :: error
       integer :: err
       call h5open_f(err)
-      if (err /= 0) call fatal_error(error, 'HDF5: cannot initialise the library')
+      if (err /= 0) then
+         call fatal_error(error, 'HDF5: cannot initialise the library')
+         return
+      end if
+      call h5eset_auto_f(0, err)
    end subroutine h5_init
 
    !> Group name safe for HDF5 links and XDMF paths: characters other than letters, digits,

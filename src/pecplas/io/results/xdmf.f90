@@ -10,10 +10,11 @@ module pecplas_io_results_xdmf
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: increment_group
    use pecplas_strings, only: itoa
+   use pecplas_files, only: rename_file, remove_file
    implicit none (type, external)
    private
 
-   public :: xdmf_set_t, xdmf_layout_t, xdmf_topology, xdmf_path, write_xdmf
+   public :: xdmf_set_t, xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, write_xdmf
 
    !> One element set as the XDMF sees it.
    type :: xdmf_set_t
@@ -26,12 +27,16 @@ module pecplas_io_results_xdmf
 
    !> What the results file holds: enough to write the XDMF without reading the HDF5 file.
    type :: xdmf_layout_t
-      !> Name of the .h5 file as referenced from the .xmf (both in the same directory).
-      character(len=:), allocatable :: h5_name
       integer :: nnode = 0
       type(xdmf_set_t), allocatable :: sets(:)
       logical :: reactions = .true., stresses = .true.
    end type xdmf_layout_t
+
+   !> A growing text (amortised doubling).
+   type :: text_buffer_t
+      character(len=:), allocatable :: s
+      integer :: n = 0
+   end type text_buffer_t
 
 contains
 
@@ -78,95 +83,142 @@ contains
       if (len(s) >= len(tail)) ends_with = s(len(s) - len(tail) + 1:) == tail
    end function ends_with
 
-   !> Writes (replaces) the .xmf for the increments written so far: global numbers
-   !> `increments` at pseudo-times `times`. With no increment yet, one grid of the bare mesh
-   !> at time 0 lets ParaView show the mesh of a run that has just started.
-   subroutine write_xdmf(path, layout, increments, times, error)
-      character(len=*), intent(in) :: path
+   !> The whole .xmf text for the increments written so far: global numbers `increments`
+   !> at pseudo-times `times`, heavy data in `h5_name` (a file of the same directory). With
+   !> no increment yet, one grid of the bare mesh at time 0 lets ParaView show the mesh of a
+   !> run that has just started. Built in memory: the file is then written in one call.
+   function xdmf_text(layout, h5_name, increments, times) result(text)
       type(xdmf_layout_t), intent(in) :: layout
+      character(len=*), intent(in) :: h5_name
       integer, intent(in) :: increments(:)
       real(wp), intent(in) :: times(:)
-      type(error_t), allocatable, intent(out) :: error
-      integer :: u, ios, k
-      character(len=256) :: msg
-      open (newunit=u, file=path, status='replace', action='write', form='formatted', &
-         iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call fatal_error(error, 'cannot write XDMF file '//path//': '//trim(msg))
-         return
-      end if
-      write (u, '(a)') '<?xml version="1.0" ?>'
-      write (u, '(a)') '<Xdmf Version="3.0">'
-      write (u, '(a)') ' <Domain>'
-      write (u, '(a)') '  <Grid Name="PECPLAS" GridType="Collection" CollectionType="Temporal">'
+      character(len=:), allocatable :: text
+      type(text_buffer_t) :: b
+      integer :: k
+      call put(b, '<?xml version="1.0" ?>')
+      call put(b, '<Xdmf Version="3.0">')
+      call put(b, ' <Domain>')
+      call put(b, '  <Grid Name="PECPLAS" GridType="Collection" CollectionType="Temporal">')
       if (size(increments) == 0) then
-         call write_increment(u, layout, 0, 0.0_wp)
+         call put_increment(b, layout, h5_name, 0, 0.0_wp)
       else
          do k = 1, size(increments)
-            call write_increment(u, layout, increments(k), times(k))
+            call put_increment(b, layout, h5_name, increments(k), times(k))
          end do
       end if
-      write (u, '(a)') '  </Grid>'
-      write (u, '(a)') ' </Domain>'
-      write (u, '(a)') '</Xdmf>'
+      call put(b, '  </Grid>')
+      call put(b, ' </Domain>')
+      call put(b, '</Xdmf>')
+      text = b%s(1:b%n)
+   end function xdmf_text
+
+   !> Writes `text` to `path` through `staging` (same directory) and a rename, so that
+   !> `path` is always a whole file: the old one or the new one, never a part. With an
+   !> empty `staging`, writes `path` directly.
+   subroutine write_xdmf(path, staging_in, text, error)
+      character(len=*), intent(in) :: path, staging_in, text
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: staging
+      integer :: u, ios
+      character(len=256) :: msg
+      staging = staging_in
+      if (len(staging) == 0) staging = path
+      open (newunit=u, file=staging, status='replace', action='write', access='stream', &
+         form='unformatted', iostat=ios, iomsg=msg)
+      if (ios == 0) write (u, iostat=ios, iomsg=msg) text
+      if (ios /= 0) then
+         close (u, status='delete', iostat=ios)
+         call fatal_error(error, 'cannot write XDMF file '//staging//': '//trim(msg))
+         return
+      end if
       close (u, iostat=ios)
-      if (ios /= 0) call fatal_error(error, 'cannot close XDMF file '//path)
+      if (ios /= 0) then
+         call remove_file(staging)
+         call fatal_error(error, 'cannot close XDMF file '//staging)
+         return
+      end if
+      if (staging == path) return
+      if (.not. rename_file(staging, path)) then
+         call remove_file(staging)
+         call fatal_error(error, 'cannot rename '//staging//' onto '//path)
+      end if
    end subroutine write_xdmf
 
+   !> Appends `line` and a newline, doubling the buffer when full (linear total cost).
+   subroutine put(b, line)
+      type(text_buffer_t), intent(inout) :: b
+      character(len=*), intent(in) :: line
+      character(len=:), allocatable :: grown
+      integer :: need
+      need = b%n + len(line) + 1
+      if (.not. allocated(b%s)) allocate (character(len=max(4096, need)) :: b%s)
+      if (need > len(b%s)) then
+         allocate (character(len=max(2*len(b%s), need)) :: grown)
+         grown(1:b%n) = b%s(1:b%n)
+         call move_alloc(grown, b%s)
+      end if
+      b%s(b%n + 1:need) = line//new_line('a')
+      b%n = need
+   end subroutine put
+
    !> One spatial collection; inc = 0 writes the mesh without attributes.
-   subroutine write_increment(u, layout, inc, time)
-      integer, intent(in) :: u, inc
+   subroutine put_increment(b, layout, h5_name, inc, time)
+      type(text_buffer_t), intent(inout) :: b
       type(xdmf_layout_t), intent(in) :: layout
+      character(len=*), intent(in) :: h5_name
+      integer, intent(in) :: inc
       real(wp), intent(in) :: time
       character(len=:), allocatable :: h5, group
       integer :: s
-      h5 = xml_escape(layout%h5_name)//':'
+      h5 = xml_escape(h5_name)//':'
       group = 'mesh'
       if (inc > 0) group = increment_group(inc)
-      write (u, '(a)') '   <Grid Name="'//basename(group)//'" GridType="Collection" '// &
-         'CollectionType="Spatial">'
-      write (u, '(a)') '    <Time Value="'//real_text(time)//'"/>'
+      call put(b, '   <Grid Name="'//basename(group)//'" GridType="Collection" '// &
+         'CollectionType="Spatial">')
+      call put(b, '    <Time Value="'//real_text(time)//'"/>')
       do s = 1, size(layout%sets)
          associate (set => layout%sets(s))
-            write (u, '(a)') '    <Grid Name="'//set%name//'" GridType="Uniform">'
-            write (u, '(a)') '     <Topology TopologyType="'//set%topology//'" NumberOfElements="'// &
-               itoa(set%nel)//'" NodesPerElement="'//itoa(set%npe)//'">'
-            call data_item(u, h5//'/mesh/sets/'//set%name//'/connectivity', set%nel, set%npe, &
+            call put(b, '    <Grid Name="'//set%name//'" GridType="Uniform">')
+            call put(b, '     <Topology TopologyType="'//set%topology//'" NumberOfElements="'// &
+               itoa(set%nel)//'" NodesPerElement="'//itoa(set%npe)//'">')
+            call data_item(b, h5//'/mesh/sets/'//set%name//'/connectivity', set%nel, set%npe, &
                'Int', 4)
-            write (u, '(a)') '     </Topology>'
-            write (u, '(a)') '     <Geometry GeometryType="XY">'
-            call data_item(u, h5//'/mesh/coordinates', layout%nnode, 2, 'Float', 8)
-            write (u, '(a)') '     </Geometry>'
+            call put(b, '     </Topology>')
+            call put(b, '     <Geometry GeometryType="XY">')
+            call data_item(b, h5//'/mesh/coordinates', layout%nnode, 2, 'Float', 8)
+            call put(b, '     </Geometry>')
             if (inc > 0) then
-               call attribute(u, 'displacement', 'Vector', 'Node', &
+               call attribute(b, 'displacement', 'Vector', 'Node', &
                   h5//group//'/displacement3', layout%nnode, 3)
-               if (layout%reactions) call attribute(u, 'reaction', 'Vector', 'Node', &
+               if (layout%reactions) call attribute(b, 'reaction', 'Vector', 'Node', &
                   h5//group//'/reaction3', layout%nnode, 3)
-               if (layout%stresses) call attribute(u, 'stress_mean', 'Matrix', 'Cell', &
+               if (layout%stresses) call attribute(b, 'stress_mean', 'Matrix', 'Cell', &
                   h5//group//'/sets/'//set%name//'/stress_mean', set%nel, 4)
             end if
-            write (u, '(a)') '    </Grid>'
+            call put(b, '    </Grid>')
          end associate
       end do
-      write (u, '(a)') '   </Grid>'
-   end subroutine write_increment
+      call put(b, '   </Grid>')
+   end subroutine put_increment
 
-   subroutine attribute(u, name, kind, center, ref, rows, cols)
-      integer, intent(in) :: u, rows, cols
+   subroutine attribute(b, name, kind, center, ref, rows, cols)
+      type(text_buffer_t), intent(inout) :: b
+      integer, intent(in) :: rows, cols
       character(len=*), intent(in) :: name, kind, center, ref
-      write (u, '(a)') '     <Attribute Name="'//name//'" AttributeType="'//kind// &
-         '" Center="'//center//'">'
-      call data_item(u, ref, rows, cols, 'Float', 8)
-      write (u, '(a)') '     </Attribute>'
+      call put(b, '     <Attribute Name="'//name//'" AttributeType="'//kind// &
+         '" Center="'//center//'">')
+      call data_item(b, ref, rows, cols, 'Float', 8)
+      call put(b, '     </Attribute>')
    end subroutine attribute
 
    !> An HDF5 DataItem; Dimensions are the h5py (C-order) shape of the dataset.
-   subroutine data_item(u, ref, rows, cols, number_type, precision)
-      integer, intent(in) :: u, rows, cols, precision
+   subroutine data_item(b, ref, rows, cols, number_type, precision)
+      type(text_buffer_t), intent(inout) :: b
+      integer, intent(in) :: rows, cols, precision
       character(len=*), intent(in) :: ref, number_type
-      write (u, '(a)') '      <DataItem Dimensions="'//itoa(rows)//' '//itoa(cols)// &
+      call put(b, '      <DataItem Dimensions="'//itoa(rows)//' '//itoa(cols)// &
          '" NumberType="'//number_type//'" Precision="'//itoa(precision)// &
-         '" Format="HDF">'//ref//'</DataItem>'
+         '" Format="HDF">'//ref//'</DataItem>')
    end subroutine data_item
 
    pure function basename(path) result(name)

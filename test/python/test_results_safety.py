@@ -1,0 +1,199 @@
+"""Results-file safety of the `pecplas` executable (doc/results.md, "Safety"): results never
+overwrite an input, a run writes a temporary file renamed onto the target only when it ends,
+a write failure ends with exit 3 and one line on stderr, SIGTERM ends with status
+'interrupted' and exit 4, and kill -9 at any moment leaves readable, consistent files and
+the previous result untouched.
+
+Run from the project root: python3 -m pytest test/python/test_results_safety.py
+(uses $PECPLAS_BIN, else the executable of `fpm run`).
+"""
+
+import hashlib
+import os
+import random
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import h5py
+import pytest
+
+from pecplas_exe import pecplas_cmd
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+import check_results  # noqa: E402
+OEDOMETER = ROOT / "test" / "data" / "cli" / "oedometer.inp"
+INCLUDES = ROOT / "test" / "data" / "decks"
+S6 = ROOT / "input" / "s6" / "s6_modjoin.inp"
+
+
+@pytest.fixture(scope="module")
+def exe():
+    """The pecplas executable itself (kill must reach it, not an `fpm run` wrapper)."""
+    cmd = pecplas_cmd()
+    if cmd[0] != "fpm":
+        return cmd[0]
+    run = subprocess.run(["fpm", "run", "--target", "pecplas", "--runner", "echo"], cwd=ROOT,
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr
+    return str(ROOT / run.stdout.split()[-1])
+
+
+def digest(path):
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def run(exe, *args, env=None, cwd=None):
+    full = dict(os.environ, **(env or {}))
+    return subprocess.run([exe, *map(str, args)], capture_output=True, text=True, env=full,
+                          cwd=cwd, timeout=120)
+
+
+def temporaries(directory):
+    return sorted(p for p in Path(directory).iterdir() if p.name.endswith(".tmp"))
+
+
+def check_file(h5, xmf, status):
+    """tools/check_results.py (in this process): structure, history rows against field
+    groups, every XDMF reference a dataset of the file with its shape, no NaN."""
+    problems, _ = check_results.check(str(h5), status, str(xmf))
+    assert not problems, f"{h5}: {problems}"
+
+
+@pytest.fixture(scope="module")
+def s6_deck(tmp_path_factory):
+    """The S6 MODJOIN deck (135 increments) with fields every 10th increment: a run of
+    a few tenths of a second with many commit points, and files quick to check."""
+    deck = tmp_path_factory.mktemp("deck") / "s6.inp"
+    text = S6.read_text()
+    assert "*OUTPUT, EVERY=1\n" in text
+    deck.write_text(text.replace("*OUTPUT, EVERY=1\n", "*OUTPUT, EVERY=10\n"))
+    return deck
+
+
+def test_output_never_overwrites_an_input(exe, tmp_path):
+    # the deck itself, an *INCLUDE file (also under another spelling), and a deck whose
+    # .xmf sidecar would be the input
+    shutil.copytree(INCLUDES / "inc", tmp_path / "inc")
+    deck = tmp_path / "main.inp"
+    shutil.copy(INCLUDES / "good_t6_main.inp", deck)
+    inputs = {p: digest(p) for p in tmp_path.rglob("*.inp")}
+    for target in ["main.inp", "inc/t6_nodes.inp", "./inc/../inc/t6_material.inp"]:
+        r = run(exe, "main.inp", "-o", target, "--quiet", cwd=tmp_path)
+        assert r.returncode == 2, r.stderr
+        line = r.stderr.strip()
+        assert "\n" not in line and "would overwrite the input file" in line, line
+        assert Path(target).name in line and "choose another name with -o" in line, line
+    (tmp_path / "side.xmf").write_text("not results\n")
+    shutil.copy(deck, tmp_path / "side.inp")
+    text = (tmp_path / "side.inp").read_text().replace(
+        "*TITLE", "*INCLUDE, FILE=side.xmf\n*TITLE", 1)
+    (tmp_path / "side.inp").write_text(text)
+    # side.xmf holds no keyword line: including it adds nothing, but it is an input
+    r = run(exe, "side.inp", "-o", "side.h5", "--quiet", cwd=tmp_path)
+    assert r.returncode == 2 and "side.xmf" in r.stderr, r.stderr
+    assert {p: digest(p) for p in tmp_path.rglob("*.inp") if p.name != "side.inp"} == inputs
+    assert (tmp_path / "side.xmf").read_text() == "not results\n"
+    assert not list(tmp_path.glob("*.h5")) and not temporaries(tmp_path)
+
+
+def test_write_failure_keeps_earlier_increments_and_old_result(exe, tmp_path):
+    out = tmp_path / "oed.h5"
+    assert run(exe, OEDOMETER, "-o", out, "--quiet").returncode == 0
+    old = digest(out), digest(tmp_path / "oed.xmf")
+    r = run(exe, OEDOMETER, "-o", out, env={"PECPLAS_TEST_FAIL_WRITE": "3"})
+    assert r.returncode == 3, r.stderr
+    lines = r.stderr.strip().splitlines()
+    # one line, ours: the HDF5 library's own error stack is off
+    assert len(lines) == 1 and lines[0].startswith("pecplas: error: cannot write results"), lines
+    assert "HDF5-DIAG" not in r.stderr and "PECPLAS_TEST_FAIL_WRITE=3" in lines[0]
+    # the old result is untouched; the run's increments 1-2 are in its temporary file
+    assert (digest(out), digest(tmp_path / "oed.xmf")) == old
+    h5, xmf = temporaries(tmp_path)
+    assert h5.name.startswith(".oed.h5.") and xmf.name.startswith(".oed.xmf.")
+    assert h5.name in lines[0]
+    with h5py.File(h5, "r") as f:
+        assert f.attrs["status"] == "running" and f.attrs["complete"] == 0
+        assert list(f["history/global_increment"][()]) == [1, 2]
+    check_file(h5, xmf, "running")
+
+
+def test_sigterm_ends_as_interrupted_with_exit_4(exe, s6_deck, tmp_path):
+    out = tmp_path / "s6.h5"
+    proc = subprocess.Popen([exe, str(s6_deck), "-o", str(out)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    # progress lines are flushed one by one: wait for the 10th increment
+    for line in proc.stdout:
+        if re.match(r"\s*step\s+1\s+\S+\s+inc\s+10\b", line):
+            break
+    proc.send_signal(signal.SIGTERM)
+    stdout, stderr = proc.communicate(timeout=60)
+    assert proc.returncode == 4, stderr
+    assert "interrupted" in stderr and "SIGTERM" in stderr, stderr
+    with h5py.File(out, "r") as f:
+        assert f.attrs["status"] == "interrupted" and f.attrs["complete"] == 0
+        n = len(f["history/step"])
+        assert 10 <= n < 135, n  # stopped between increments, before the last (135)
+    check_file(out, tmp_path / "s6.xmf", "interrupted")
+    assert not temporaries(tmp_path)
+
+
+def test_rerun_while_old_file_is_open(exe, tmp_path):
+    out = tmp_path / "oed.h5"
+    assert run(exe, OEDOMETER, "-o", out, "--quiet").returncode == 0
+    with h5py.File(out, "r") as old:
+        rows = len(old["history/step"])
+        r = run(exe, OEDOMETER, "-o", out, "--quiet")
+        assert r.returncode == 0, r.stderr
+        # the reader still sees the whole old file; the target is the new, complete one
+        assert len(old["history/step"]) == rows and old["increments/000006/displacement"].shape
+    check_file(out, tmp_path / "oed.xmf", "completed")
+
+
+def test_kill9_at_random_moments(exe, s6_deck, tmp_path):
+    """20 runs killed with SIGKILL at random moments (seeded): the previous result stays
+    byte for byte unless the run ended first; every file left opens and is consistent."""
+    out = tmp_path / "s6.h5"
+    xmf = tmp_path / "s6.xmf"
+    t0 = time.monotonic()
+    assert run(exe, s6_deck, "-o", out, "--quiet").returncode == 0
+    duration = time.monotonic() - t0
+    rng = random.Random(20240611)
+    outcomes = {"killed": 0, "finished": 0}
+    for _ in range(20):
+        old = digest(out), digest(xmf)
+        proc = subprocess.Popen([exe, str(s6_deck), "-o", str(out), "--quiet"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        time.sleep(rng.uniform(0.0, 1.1*duration))
+        proc.kill()
+        code = proc.wait()
+        if code == 0:
+            outcomes["finished"] += 1
+            check_file(out, xmf, "completed")
+        else:
+            outcomes["killed"] += 1
+            assert code == -signal.SIGKILL
+            if digest(out) == old[0]:
+                # the old result, byte for byte (the .xmf is renamed after the .h5)
+                assert digest(xmf) == old[1]
+            else:
+                # killed after the .h5 rename: the new file is a whole, completed result
+                check_file(out, xmf, "completed")
+        left = temporaries(tmp_path)
+        h5s = [p for p in left if p.name.startswith(".s6.h5.")]
+        for h5 in h5s:
+            # the run's own sidecar, when it got that far, names the temporary file
+            sidecar = tmp_path / h5.name.replace(".s6.h5.", ".s6.xmf.")
+            if sidecar.exists():
+                check_file(h5, sidecar, "running")
+            else:
+                with h5py.File(h5, "r") as f:
+                    assert f.attrs["status"] == "running"
+        for p in left:
+            p.unlink()
+    assert outcomes["killed"] >= 10, outcomes
