@@ -30,6 +30,9 @@ module pecplas_model_options
       integer :: max_iterations = 50
       !> Number of times an increment may be halved before the run stops.
       integer :: max_cuts = 5
+      !> Threads (OpenMP, CHOLMOD, BLAS): *SOLVER THREADS=; 0 = not given (then
+      !> OMP_NUM_THREADS, else 1). After start-up, the number the run used.
+      integer :: threads = 0
    end type solver_options_t
 
    type :: output_options_t

@@ -71,6 +71,7 @@ contains
    end subroutine read_analysis
 
    !> *SOLVER [, LINEAR=..] [, METHOD=..] [, TOLERANCE=..] [, MAX_ITERATIONS=..] [, MAX_CUTS=..]
+   !>   [, THREADS=n]
    subroutine read_solver(state, model, block, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -78,7 +79,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical :: found
       call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'LINEAR', 'METHOD', &
-         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS'], error)
+         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'THREADS'], error)
       if (allocated(error)) return
       call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
       if (allocated(error)) return
@@ -94,6 +95,8 @@ contains
       call param_int(state, block, 'MAX_ITERATIONS', 1, model%solver%max_iterations, error)
       if (allocated(error)) return
       call param_int(state, block, 'MAX_CUTS', 0, model%solver%max_cuts, error)
+      if (allocated(error)) return
+      call param_int(state, block, 'THREADS', 1, model%solver%threads, error)
    end subroutine read_solver
 
    !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]
