@@ -10,6 +10,12 @@ module pecplas_linalg_threads
    private
 
    public :: thread_setting_t, resolve_threads, apply_threads, openmp_threads
+   public :: PARALLEL_MIN_ELEMENTS
+
+   !> Element loops shorter than this run serially: a parallel region costs a few
+   !> microseconds on an idle machine (a scheduler time slice on a loaded one), more than
+   !> the work of a few dozen elements.
+   integer, parameter :: PARALLEL_MIN_ELEMENTS = 64
 
    !> The thread setting of a run, as printed in the summary and stored in the results.
    type :: thread_setting_t
