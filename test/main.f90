@@ -47,6 +47,7 @@ program tester
    use test_pecjoin_identify, only: collect_pecjoin_identify
    use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
    use test_pecjoin_identify_roundtrip, only: collect_pecjoin_identify_roundtrip
+   use test_linalg_threads, only: collect_linalg_threads
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -100,6 +101,7 @@ program tester
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
    suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
    suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]
+   suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
