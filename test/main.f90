@@ -51,6 +51,7 @@ program tester
    use test_massif_collapse, only: collect_massif_collapse
    use test_massif_q8r, only: collect_massif_q8r
    use test_driver_sanity, only: collect_driver_sanity
+   use test_linalg_threads, only: collect_linalg_threads
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -108,6 +109,7 @@ program tester
    suites = [suites, new_testsuite('massif_collapse', collect_massif_collapse)]
    suites = [suites, new_testsuite('massif_q8r', collect_massif_q8r)]
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
+   suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

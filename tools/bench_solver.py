@@ -6,14 +6,20 @@
 2. pecplas-bench: elastic plane-strain squares (Q4, Q8) at about 1e4, 1e5 (and 1e6 in full
    mode) equations, one process per case: phase times of the whole program and a bare
    CHOLMOD analyse + factorise + solve of the SAME matrix in the same process; the ratio
-   total / bare is the price of everything that is not the sparse factorisation.
+   total / bare is the price of everything that is not the sparse factorisation. Both run
+   under the same thread setting (OMP_NUM_THREADS: OpenMP, CHOLMOD's team and the BLAS, see
+   doc/deck.md *SOLVER THREADS=), 1 and 2 threads; each case is run REPEATS times and reported
+   as median and spread (min-max), with the 1-minute load average at the start of each case:
+   a rerun on a quiet machine should land within the spread.
 
 Writes doc/bench/solver.csv, doc/bench/laws.csv and the fragments solver.md, laws.md.
 
     python3 tools/bench_solver.py [--quick]
 """
 import argparse
+import os
 import re
+import statistics
 import tempfile
 
 from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment
@@ -21,6 +27,32 @@ from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_frag
 COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
            "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",
            "peak_mb", "nnz_L"]
+# per row: thread setting, repeats, load average and the spread of the timed columns
+EXTRA = ["threads", "repeats", "load1", "total_min_s", "total_max_s", "bare_min_s",
+         "bare_max_s", "ratio_min", "ratio_max"]
+REPEATS = 3
+THREADS = (1, 2)
+
+
+def load1():
+    """1-minute load average (machine load at the time of a timing)."""
+    try:
+        with open("/proc/loadavg") as f:
+            return float(f.read().split()[0])
+    except OSError:
+        return float("nan")
+
+
+def median_row(runs, threads, load):
+    """Median of each timed column over the repeated runs, with the spread of total, bare
+    and ratio."""
+    row = list(runs[0][:3])
+    for k in range(3, len(COLUMNS)):
+        row.append(statistics.median(r[k] for r in runs))
+    col = {c: [r[i] for r in runs] for i, c in enumerate(COLUMNS)}
+    return row + [threads, len(runs), load, min(col["total_s"]), max(col["total_s"]),
+                  min(col["bare_cholmod_s"]), max(col["bare_cholmod_s"]), min(col["ratio"]),
+                  max(col["ratio"])]
 
 
 def laws():
@@ -49,27 +81,41 @@ def solver(quick):
         cases += [("Q4", 707), ("Q8", 408)]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for el, n in cases:
-            r = run_timed([exe, el, n, tmp])
-            f = r["stdout"].split()
-            if r["rc"] != 0 or len(f) < len(COLUMNS):
-                raise RuntimeError(f"pecplas-bench {el} {n} failed:\n{r['stdout']}{r['stderr']}")
-            rows.append([f[0], int(f[1]), int(f[2])] + [float(x) for x in f[3:len(COLUMNS)]])
-            print(" ".join(str(x) for x in rows[-1]), flush=True)
-    write_csv(BENCH_DIR / "solver.csv", COLUMNS, rows)
+        for threads in THREADS:
+            os.environ["OMP_NUM_THREADS"] = str(threads)
+            for el, n in cases:
+                load = load1()
+                runs = []
+                for _ in range(REPEATS):
+                    r = run_timed([exe, el, n, tmp])
+                    f = r["stdout"].split()
+                    if r["rc"] != 0 or len(f) < len(COLUMNS):
+                        raise RuntimeError(f"pecplas-bench {el} {n} failed:\n{r['stdout']}"
+                                           f"{r['stderr']}")
+                    runs.append([f[0], int(f[1]), int(f[2])] +
+                                [float(x) for x in f[3:len(COLUMNS)]])
+                rows.append(median_row(runs, threads, load))
+                print(" ".join(str(x) for x in rows[-1]), flush=True)
+    write_csv(BENCH_DIR / "solver.csv", COLUMNS + EXTRA, rows)
     md = ["## Program overhead against a bare CHOLMOD solve", "",
           "Elastic plane-strain squares, one process per case. `total` is the whole program "
           "(read + setup, assembly incl. COO→CSC, factorisation incl. analysis, solve, "
           "residual, HDF5 output); `bare` is CHOLMOD analyse + factorise + solve of the same "
-          "matrix in the same process. Times in seconds (wall).", "",
-          "| element | equations | read+setup | assembly | factorisation | solve | output "
-          "| total | bare CHOLMOD | ratio | peak MB |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+          "matrix in the same process, under the same thread setting (OMP_NUM_THREADS = "
+          "threads). Times in seconds (wall), median of " + str(REPEATS) + " runs, spread "
+          "min-max; load = 1-minute load average when the case started.", "",
+          "| element | equations | threads | load | read+setup | assembly | factorisation "
+          "| solve | output | total [min-max] | bare CHOLMOD [min-max] | ratio [min-max] "
+          "| peak MB |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        d = dict(zip(COLUMNS, r))
-        md.append(f"| {d['element']} | {d['equations']} | {d['read_setup_s']:.3f} | "
-                  f"{d['assembly_s']:.3f} | {d['factorisation_s']:.3f} | {d['solve_s']:.3f} | "
-                  f"{d['output_s']:.3f} | {d['total_s']:.3f} | {d['bare_cholmod_s']:.3f} | "
-                  f"{d['ratio']:.2f} | {d['peak_mb']:.0f} |")
+        d = dict(zip(COLUMNS + EXTRA, r))
+        md.append(f"| {d['element']} | {d['equations']} | {d['threads']} | {d['load1']:.1f} | "
+                  f"{d['read_setup_s']:.3f} | {d['assembly_s']:.3f} | "
+                  f"{d['factorisation_s']:.3f} | {d['solve_s']:.3f} | {d['output_s']:.3f} | "
+                  f"{d['total_s']:.3f} [{d['total_min_s']:.3f}-{d['total_max_s']:.3f}] | "
+                  f"{d['bare_cholmod_s']:.3f} [{d['bare_min_s']:.3f}-{d['bare_max_s']:.3f}] | "
+                  f"{d['ratio']:.2f} [{d['ratio_min']:.2f}-{d['ratio_max']:.2f}] | "
+                  f"{d['peak_mb']:.0f} |")
     write_fragment("solver", "\n".join(md))
     return rows
 

@@ -8,12 +8,14 @@ module pecjoin_assembly
    use pecplas_model, only: model_t
    use pecplas_fe_dofs, only: dofs_t
    use pecplas_linalg_sparse, only: coo_t
-   use pecjoin_laws_type, only: MODE_STICK
+   use pecjoin_laws_type, only: MODE_STICK, interface_law_t
+   use pecplas_model_joints, only: joint_set_t
    use pecjoin_elements_type, only: joint_element_t, joint_point_t, joint_strain, &
       joint_force, joint_stiffness
-   use pecjoin_state, only: joint_state_t
+   use pecjoin_state, only: joint_state_t, joint_set_state_t
    use pecjoin_points, only: joint_set_element, joint_element_points, element_context
    use pecjoin_laws_katona, only: is_katona
+   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    implicit none (type, external)
    private
 
@@ -86,7 +88,8 @@ contains
 
    !> Adds the joint stiffness blocks to `coo` (free equations of `dofs`). `tangent`: the
    !> consistent tangents of the last update (full Newton); otherwise the elastic tangent
-   !> of each point's converged state (modified Newton).
+   !> of each point's converged state (modified Newton). Elements run in parallel (OpenMP),
+   !> each at a triplet offset counted beforehand: the triplet order is the serial one.
    subroutine add_joint_stiffness(model, dofs, jstate, tangent, coo, error)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
@@ -94,12 +97,13 @@ contains
       logical, intent(in) :: tangent
       type(coo_t), intent(inout) :: coo
       type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err
       class(joint_element_t), allocatable :: elem
       type(joint_point_t), allocatable :: pts(:)
       real(wp), allocatable :: ke(:, :)
-      integer, allocatable :: idx(:)
+      integer, allocatable :: idx(:), offset(:)
       real(wp) :: c(2, 2)
-      integer :: s, e, ip, nd
+      integer :: s, e, ip, nd, nel, bad
       if (.not. allocated(model%joint_sets)) return
       do s = 1, size(model%joint_sets)
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
@@ -109,10 +113,28 @@ contains
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()
+            nel = size(set%conn, 2)
+            allocate (idx(nd), offset(nel + 1))
+            offset(1) = coo%nnz
+            do e = 1, nel
+               call equations(dofs, set%conn(:, e), idx)
+               offset(e + 1) = offset(e) + coo%block_size(idx)
+            end do
+            deallocate (idx) ! private in the loop below
+            call coo%reserve(offset(nel + 1) - coo%nnz)
+            bad = huge(bad)
+            !$omp parallel default(shared) private(e, ip, c, pts, ke, idx, err) &
+            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
             allocate (pts(elem%npoint()), ke(nd, nd), idx(nd))
-            do e = 1, size(set%conn, 2)
-               call joint_element_points(model, set, elem, e, pts, error)
-               if (allocated(error)) return
+            !$omp do schedule(static)
+            do e = 1, nel
+               call joint_element_points(model, set, elem, e, pts, err)
+               if (allocated(err)) then
+                  !$omp critical (pecjoin_assembly_bad)
+                  bad = min(bad, e)
+                  !$omp end critical (pecjoin_assembly_bad)
+                  cycle
+               end if
                ke = 0.0_wp
                do ip = 1, size(pts)
                   if (tangent) then
@@ -122,29 +144,50 @@ contains
                   end if
                   call joint_stiffness(pts(ip), c, ke)
                end do
-               idx(1:nd:2) = dofs%eq(1, set%conn(:, e))
-               idx(2:nd:2) = dofs%eq(2, set%conn(:, e))
-               call coo%add_block(idx, ke)
+               call equations(dofs, set%conn(:, e), idx)
+               call coo%put_block(offset(e), idx, ke)
             end do
+            !$omp end do
             deallocate (pts, ke, idx)
+            !$omp end parallel
+            coo%nnz = offset(nel + 1)
+            deallocate (offset)
+            if (bad <= nel) then
+               ! again, serially, for the message of the first failing element
+               allocate (pts(elem%npoint()))
+               call joint_element_points(model, set, elem, bad, pts, error)
+               if (.not. allocated(error)) call fatal_error(error, 'joint element failed')
+               return
+            end if
          end associate
       end do
    end subroutine add_joint_stiffness
 
+   !> Equation numbers (u1, v1, u2, v2, ...) of an element's nodes `conn`.
+   pure subroutine equations(dofs, conn, idx)
+      type(dofs_t), intent(in) :: dofs
+      integer, intent(in) :: conn(:)
+      integer, intent(out) :: idx(:)
+      idx(1::2) = dofs%eq(1, conn)
+      idx(2::2) = dofs%eq(2, conn)
+   end subroutine equations
+
    !> Adds the joint internal forces for the trial displacements `u` to fint(2, nnode),
    !> updating the trial stress, strain, history, mode and tangent of every point from the
-   !> converged state.
+   !> converged state. Elements run in parallel (OpenMP), each updating its own points and
+   !> element vector; the vectors are added to fint serially in element order, so fint does
+   !> not depend on the number of threads, to the last bit.
    subroutine add_joint_forces(model, u, jstate, fint, error)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: u(:, :)
       type(joint_state_t), intent(inout) :: jstate
       real(wp), intent(inout) :: fint(:, :)
       type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err
       class(joint_element_t), allocatable :: elem
       type(joint_point_t), allocatable :: pts(:)
-      real(wp), allocatable :: ue(:), fe(:)
-      real(wp) :: eps(2), deps(2)
-      integer :: s, e, ip, nd, j
+      real(wp), allocatable :: fe(:, :)
+      integer :: s, e, nd, nel, j, bad
       if (.not. allocated(model%joint_sets)) return
       do s = 1, size(model%joint_sets)
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
@@ -154,33 +197,75 @@ contains
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()
-            allocate (pts(elem%npoint()), ue(nd), fe(nd))
-            do e = 1, size(set%conn, 2)
-               call joint_element_points(model, set, elem, e, pts, error)
-               if (allocated(error)) return
-               ue = reshape(u(:, set%conn(:, e)), [nd])
-               fe = 0.0_wp
-               do ip = 1, size(pts)
-                  eps = joint_strain(pts(ip), ue)
-                  deps = eps - st%eps(:, ip, e)
-                  st%hist_trial(:, ip, e) = st%hist(:, ip, e)
-                  call law%update(st%sigma(:, ip, e), deps, st%hist_trial(:, ip, e), &
-                     st%sigma_trial(:, ip, e), st%tangent(:, :, ip, e), st%mode_trial(ip, e), &
-                     error)
-                  if (allocated(error)) then
-                     call element_context(error, set, e)
-                     return
-                  end if
-                  st%eps_trial(:, ip, e) = eps
-                  call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
-               end do
+            nel = size(set%conn, 2)
+            allocate (fe(nd, nel))
+            bad = huge(bad)
+            !$omp parallel default(shared) private(e, pts, err) &
+            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
+            allocate (pts(elem%npoint()))
+            !$omp do schedule(static)
+            do e = 1, nel
+               call joint_element_forces(model, set, elem, law, e, u, st, pts, fe(:, e), err)
+               if (allocated(err)) then
+                  !$omp critical (pecjoin_assembly_bad)
+                  bad = min(bad, e)
+                  !$omp end critical (pecjoin_assembly_bad)
+               end if
+            end do
+            !$omp end do
+            deallocate (pts)
+            !$omp end parallel
+            if (bad <= nel) then
+               ! again, serially, for the message of the first failing element
+               allocate (pts(elem%npoint()))
+               call joint_element_forces(model, set, elem, law, bad, u, st, pts, fe(:, bad), &
+                  error)
+               if (.not. allocated(error)) call fatal_error(error, 'joint update failed')
+               return
+            end if
+            do e = 1, nel
                do j = 1, size(set%conn, 1)
-                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j)
+                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j, e)
                end do
             end do
-            deallocate (pts, ue, fe)
+            deallocate (fe)
          end associate
       end do
    end subroutine add_joint_forces
+
+   !> Element vector fe of joint element e, updating the trial state of its points from the
+   !> converged one (only this element's columns of `st` are written). An error names the
+   !> element.
+   subroutine joint_element_forces(model, set, elem, law, e, u, st, pts, fe, error)
+      type(model_t), intent(in) :: model
+      type(joint_set_t), intent(in) :: set
+      class(joint_element_t), intent(in) :: elem
+      class(interface_law_t), intent(in) :: law
+      integer, intent(in) :: e
+      real(wp), intent(in) :: u(:, :)
+      type(joint_set_state_t), intent(inout) :: st
+      type(joint_point_t), intent(inout) :: pts(:)
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: ue(size(fe)), eps(2), deps(2)
+      integer :: ip
+      call joint_element_points(model, set, elem, e, pts, error)
+      if (allocated(error)) return
+      ue = reshape(u(:, set%conn(:, e)), [size(fe)])
+      fe = 0.0_wp
+      do ip = 1, size(pts)
+         eps = joint_strain(pts(ip), ue)
+         deps = eps - st%eps(:, ip, e)
+         st%hist_trial(:, ip, e) = st%hist(:, ip, e)
+         call law%update(st%sigma(:, ip, e), deps, st%hist_trial(:, ip, e), &
+            st%sigma_trial(:, ip, e), st%tangent(:, :, ip, e), st%mode_trial(ip, e), error)
+         if (allocated(error)) then
+            call element_context(error, set, e)
+            return
+         end if
+         st%eps_trial(:, ip, e) = eps
+         call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
+      end do
+   end subroutine joint_element_forces
 
 end module pecjoin_assembly

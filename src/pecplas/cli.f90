@@ -25,6 +25,7 @@ module pecplas_cli
    use pecplas_command, only: command_error
    use pecplas_driver_restart, only: restore_restart
    use pecplas_provenance, only: version_lines
+   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
    implicit none (type, external)
    private
 
@@ -152,6 +153,7 @@ contains
       type(results_file_t) :: results
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
+      type(thread_setting_t) :: threads
       character(len=:), allocatable :: status, message, outfile, warning, input, failure
       real(wp) :: t0, t1, w0
       integer :: nflipped
@@ -160,6 +162,11 @@ contains
       w0 = wall_time()
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
+      if (.not. allocated(error)) then
+         threads = resolve_threads(model%solver%threads)
+         call apply_threads(threads)
+         model%solver%threads = threads%n
+      end if
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
       if (.not. allocated(error) .and. present(restart)) then
          if (len(restart) > 0) call restore_restart(restart, model, problem, error)
@@ -238,7 +245,7 @@ contains
          return
       end if
       call cpu_time(t1)
-      call summary(problem, status, message, outfile, t1 - t0, wall_time() - w0, quiet)
+      call summary(problem, threads, status, message, outfile, t1 - t0, wall_time() - w0, quiet)
       code = EXIT_OK
       if (status /= 'completed') code = EXIT_STOPPED
       if (status == 'failed') code = EXIT_INTERNAL
@@ -312,8 +319,9 @@ contains
       end do
    end subroutine banner
 
-   subroutine summary(problem, status, message, outfile, cpu, wall, quiet)
+   subroutine summary(problem, threads, status, message, outfile, cpu, wall, quiet)
       type(problem_t), intent(in) :: problem
+      type(thread_setting_t), intent(in) :: threads
       character(len=*), intent(in) :: status, message, outfile
       real(wp), intent(in) :: cpu, wall
       logical, intent(in) :: quiet
@@ -329,6 +337,8 @@ contains
             '  residual ', sec(t%residual), ' (laws ', sec(t%laws)//')', '  output ', &
             sec(t%output), '  total ', sec(wall)
       end associate
+      write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
+         trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
       if (problem%katona%active) then
          associate (k => problem%katona)
             write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &
@@ -341,6 +351,14 @@ contains
       end if
       write (*, '(a)') ' status: '//status//'  results: '//outfile
    end subroutine summary
+
+   !> The BLAS whose threads were set, or a note that none was found (single-threaded BLAS).
+   function blas_name(blas) result(name)
+      character(len=*), intent(in) :: blas
+      character(len=:), allocatable :: name
+      name = blas
+      if (len(blas) == 0) name = 'without thread control'
+   end function blas_name
 
    !> Seconds with 3 decimals and a leading zero ("0.012").
    function sec(t) result(s)

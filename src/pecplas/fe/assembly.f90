@@ -7,7 +7,7 @@ module pecplas_fe_assembly
    use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
    use pecplas_fe_dofs, only: dofs_t
-   use pecplas_fe_state, only: fe_state_t
+   use pecplas_fe_state, only: fe_state_t, set_state_t
    use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
    use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_massif_materials_type, only: NCOMP
@@ -15,6 +15,7 @@ module pecplas_fe_assembly
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecjoin_assembly, only: add_joint_stiffness, add_joint_forces
    use pecplas_driver_timers, only: wall_time
+   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    implicit none (type, external)
    private
 
@@ -26,6 +27,8 @@ contains
    !> state (full Newton); otherwise the elastic tangent of each material (modified Newton).
    !> `builder` keeps the triplet storage and the scatter map between calls: `k` must be the
    !> matrix it built last time (or empty); a repeated triplet sequence only rescatters values.
+   !> Elements run in parallel (OpenMP), each writing its triplets at an offset counted
+   !> beforehand, so the triplet sequence, hence k, is that of the serial loop.
    subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
@@ -35,10 +38,11 @@ contains
       type(csc_builder_t), intent(inout) :: builder
       type(csc_t), intent(inout) :: k
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: xe(:, :), ke(:, :), d(:, :, :)
+      type(error_t), allocatable :: err
+      real(wp), allocatable :: ke(:, :), d(:, :, :)
       real(wp) :: delastic(NCOMP, NCOMP)
-      integer, allocatable :: idx(:)
-      integer :: s, e, nn, nd, capacity
+      integer, allocatable :: idx(:), offset(:)
+      integer :: s, e, nn, nd, nel, capacity, bad
 
       capacity = 0
       do s = 1, size(rules)
@@ -49,26 +53,49 @@ contains
       do s = 1, size(rules)
          associate (set => model%mesh%esets(s), st => state%sets(s), &
                     mat => model%materials(model%mesh%esets(s)%material_index)%m)
-            nn = rules(s)%nnode; nd = 2*nn
-            allocate (xe(2, nn), ke(nd, nd), idx(nd), d(NCOMP, NCOMP, st%ngauss))
-            if (.not. tangent) then
-               call mat%elastic_tangent(delastic)
-               d = spread(delastic, 3, st%ngauss)
-            end if
-            do e = 1, size(set%conn, 2)
-               xe = model%mesh%x(:, set%conn(:, e))
-               idx(1:nd:2) = dofs%eq(1, set%conn(:, e))
-               idx(2:nd:2) = dofs%eq(2, set%conn(:, e))
-               if (tangent) d = st%tangent(:, :, :, e)
-               call massif_stiffness(rules(s), model%analysis%kind, model%analysis%thickness, &
-                  xe, d, ke, error)
-               if (allocated(error)) then
-                  call element_context(error, set%name, set%ids(e))
-                  return
-               end if
-               call builder%coo%add_block(idx, ke)
+            nn = rules(s)%nnode; nd = 2*nn; nel = size(set%conn, 2)
+            allocate (idx(nd), offset(nel + 1))
+            offset(1) = builder%coo%nnz
+            do e = 1, nel
+               call element_equations(dofs, set%conn(:, e), idx)
+               offset(e + 1) = offset(e) + builder%coo%block_size(idx)
             end do
-            deallocate (xe, ke, idx, d)
+            deallocate (idx) ! private in the loop below
+            call builder%coo%reserve(offset(nel + 1) - builder%coo%nnz)
+            if (.not. tangent) call mat%elastic_tangent(delastic)
+            bad = huge(bad)
+            !$omp parallel default(shared) private(e, ke, idx, d, err) &
+            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
+            allocate (ke(nd, nd), idx(nd), d(NCOMP, NCOMP, st%ngauss))
+            if (.not. tangent) d = spread(delastic, 3, st%ngauss)
+            !$omp do schedule(static)
+            do e = 1, nel
+               if (tangent) d = st%tangent(:, :, :, e)
+               call element_stiffness(model, rules(s), set%conn(:, e), d, ke, err)
+               if (allocated(err)) then
+                  !$omp critical (pecplas_assembly_bad)
+                  bad = min(bad, e)
+                  !$omp end critical (pecplas_assembly_bad)
+                  cycle
+               end if
+               call element_equations(dofs, set%conn(:, e), idx)
+               call builder%coo%put_block(offset(e), idx, ke)
+            end do
+            !$omp end do
+            deallocate (ke, idx, d)
+            !$omp end parallel
+            builder%coo%nnz = offset(nel + 1)
+            deallocate (offset)
+            if (bad <= nel) then
+               ! again, serially, for the message of the first failing element
+               allocate (ke(nd, nd), d(NCOMP, NCOMP, st%ngauss))
+               d = spread(delastic, 3, st%ngauss)
+               if (tangent) d = st%tangent(:, :, :, bad)
+               call element_stiffness(model, rules(s), set%conn(:, bad), d, ke, error)
+               if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
+               call element_context(error, set%name, set%ids(bad))
+               return
+            end if
          end associate
       end do
       call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, error)
@@ -76,9 +103,33 @@ contains
       call builder%finish(k, error)
    end subroutine assemble_stiffness
 
+   !> Equation numbers (u1, v1, u2, v2, ...) of an element's nodes `conn`.
+   pure subroutine element_equations(dofs, conn, idx)
+      type(dofs_t), intent(in) :: dofs
+      integer, intent(in) :: conn(:)
+      integer, intent(out) :: idx(:)
+      idx(1::2) = dofs%eq(1, conn)
+      idx(2::2) = dofs%eq(2, conn)
+   end subroutine element_equations
+
+   !> Stiffness ke of one massif element with nodes `conn` and point tangents d.
+   subroutine element_stiffness(model, rule, conn, d, ke, error)
+      type(model_t), intent(in) :: model
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: conn(:)
+      real(wp), intent(in) :: d(:, :, :)
+      real(wp), intent(out) :: ke(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      call massif_stiffness(rule, model%analysis%kind, model%analysis%thickness, &
+         model%mesh%x(:, conn), d, ke, error)
+   end subroutine element_stiffness
+
    !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
    !> updating trial stresses, strains, history and tangents from the converged state.
-   !> `law_time` (if present) accumulates the wall time of the constitutive updates.
+   !> `law_time` (if present) accumulates the wall time of the constitutive updates (summed
+   !> over threads). Elements run in parallel (OpenMP), each updating its own points and
+   !> element vector; the vectors are then added to fint serially in element order, so fint
+   !> does not depend on the number of threads, to the last bit.
    subroutine internal_forces(model, rules, u, state, fint, error, law_time)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
@@ -87,58 +138,91 @@ contains
       real(wp), intent(out) :: fint(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(inout), optional :: law_time
-      real(wp), allocatable :: xe(:, :), ue(:), fe(:)
-      type(massif_point_t) :: pt
-      real(wp) :: eps(NCOMP), deps(NCOMP), t0, tlaw
-      integer :: s, e, g, nn, nd, j
+      type(error_t), allocatable :: err
+      real(wp), allocatable :: fe(:, :)
+      real(wp) :: t0, tlaw
+      integer :: s, e, nn, nel, j, bad
       logical :: timed
 
-      ! the clock is read around each point update only when asked (a vDSO call, ~20 ns)
       timed = present(law_time)
       tlaw = 0.0_wp
-      t0 = 0.0_wp
       fint = 0.0_wp
       do s = 1, size(rules)
-         associate (set => model%mesh%esets(s), st => state%sets(s), &
-                    mat => model%materials(model%mesh%esets(s)%material_index)%m)
-            nn = rules(s)%nnode; nd = 2*nn
-            allocate (xe(2, nn), ue(nd), fe(nd))
-            do e = 1, size(set%conn, 2)
-               xe = model%mesh%x(:, set%conn(:, e))
-               ue = reshape(u(:, set%conn(:, e)), [nd])
-               fe = 0.0_wp
-               do g = 1, st%ngauss
-                  call massif_gauss_point(rules(s), g, model%analysis%kind, &
-                     model%analysis%thickness, xe, pt, error)
-                  if (allocated(error)) then
-                     call element_context(error, set%name, set%ids(e))
-                     return
-                  end if
-                  eps = matmul(pt%b(:, 1:nd), ue)
-                  deps = eps - st%strain(:, g, e)
-                  st%hist_trial(:, g, e) = st%hist(:, g, e)
-                  if (timed) t0 = wall_time()
-                  call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
-                     st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
-                  if (timed) tlaw = tlaw + (wall_time() - t0)
-                  if (allocated(error)) then
-                     call element_context(error, set%name, set%ids(e))
-                     return
-                  end if
-                  st%strain_trial(:, g, e) = eps
-                  fe = fe + matmul(st%stress_trial(:, g, e), pt%b(:, 1:nd))*pt%dvol
-               end do
+         associate (set => model%mesh%esets(s), st => state%sets(s))
+            nn = rules(s)%nnode; nel = size(set%conn, 2)
+            allocate (fe(2*nn, nel))
+            bad = huge(bad)
+            !$omp parallel do default(shared) private(e, err) reduction(+:tlaw) schedule(static) &
+            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
+            do e = 1, nel
+               call element_forces(model, rules(s), s, e, u, st, fe(:, e), timed, tlaw, err)
+               if (allocated(err)) then
+                  !$omp critical (pecplas_assembly_bad)
+                  bad = min(bad, e)
+                  !$omp end critical (pecplas_assembly_bad)
+               end if
+            end do
+            !$omp end parallel do
+            if (bad <= nel) then
+               ! again, serially, for the message of the first failing element
+               call element_forces(model, rules(s), s, bad, u, st, fe(:, bad), .false., t0, error)
+               if (.not. allocated(error)) call fatal_error(error, 'element update failed')
+               call element_context(error, set%name, set%ids(bad))
+               return
+            end if
+            do e = 1, nel
                do j = 1, nn
-                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j)
+                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j, e)
                end do
             end do
-            deallocate (xe, ue, fe)
+            deallocate (fe)
          end associate
       end do
       if (timed) t0 = wall_time()
       call add_joint_forces(model, u, state%joints, fint, error)
       if (timed) law_time = law_time + tlaw + (wall_time() - t0)
    end subroutine internal_forces
+
+   !> Element vector fe = sum B^T sigma dV of element e of set s, updating the trial state of
+   !> its points from the converged one (only this element's columns of `st` are written).
+   !> The clock is read around each point update only when `timed` (a vDSO call, ~20 ns).
+   subroutine element_forces(model, rule, s, e, u, st, fe, timed, tlaw, error)
+      type(model_t), intent(in) :: model
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: s, e
+      real(wp), intent(in) :: u(:, :)
+      type(set_state_t), intent(inout) :: st
+      real(wp), intent(out) :: fe(:)
+      logical, intent(in) :: timed
+      real(wp), intent(inout) :: tlaw
+      type(error_t), allocatable, intent(out) :: error
+      type(massif_point_t) :: pt
+      real(wp) :: xe(2, rule%nnode), ue(2*rule%nnode), eps(NCOMP), deps(NCOMP), t0
+      integer :: g, nd
+      associate (conn => model%mesh%esets(s)%conn(:, e), &
+                 mat => model%materials(model%mesh%esets(s)%material_index)%m)
+         nd = 2*rule%nnode
+         xe = model%mesh%x(:, conn)
+         ue = reshape(u(:, conn), [nd])
+         fe = 0.0_wp
+         t0 = 0.0_wp
+         do g = 1, st%ngauss
+            call massif_gauss_point(rule, g, model%analysis%kind, model%analysis%thickness, &
+               xe, pt, error)
+            if (allocated(error)) return
+            eps = matmul(pt%b(:, 1:nd), ue)
+            deps = eps - st%strain(:, g, e)
+            st%hist_trial(:, g, e) = st%hist(:, g, e)
+            if (timed) t0 = wall_time()
+            call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+               st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
+            if (timed) tlaw = tlaw + (wall_time() - t0)
+            if (allocated(error)) return
+            st%strain_trial(:, g, e) = eps
+            fe = fe + matmul(st%stress_trial(:, g, e), pt%b(:, 1:nd))*pt%dvol
+         end do
+      end associate
+   end subroutine element_forces
 
    !> Prefixes an element-level error with the element set and user id.
    subroutine element_context(error, set_name, id)

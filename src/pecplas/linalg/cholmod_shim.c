@@ -17,6 +17,9 @@
 #else
 #include <cholmod.h>
 #endif
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 typedef struct {
     cholmod_common c;
@@ -53,6 +56,9 @@ void *pecplas_cholmod_new(int ldl) {
     h->c.print = 0; /* errors are reported by the caller from the status */
     h->c.supernodal = ldl ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
     h->c.final_ll = ldl ? 0 : 1;
+#if CHOLMOD_MAIN_VERSION >= 4 && defined(_OPENMP)
+    h->c.nthreads_max = omp_get_max_threads(); /* the program's thread setting */
+#endif
     return h;
 }
 
@@ -83,7 +89,19 @@ int pecplas_cholmod_factorise(void *handle, int n, const int *colptr, const int 
     pecplas_cholmod *h = handle;
     if (!h->L) return CHOLMOD_INVALID;
     cholmod_sparse a = wrap(n, colptr, rowind, x);
+#ifdef _OPENMP
+    /* CHOLMOD 3.x asks for a fixed team, num_threads(CHOLMOD_OMP_NUM_THREADS = 4), in its
+     * supernodal factorisation whatever OMP_NUM_THREADS says; on fewer cores that
+     * oversubscribes. Dynamic adjustment caps a team at min(cores, omp_get_max_threads())
+     * less the load average, so never above the program's thread setting
+     * (pecplas_threads_set); restored afterwards. */
+    int dynamic = omp_get_dynamic();
+    omp_set_dynamic(1);
+#endif
     cholmod_factorize(&a, h->L, &h->c);
+#ifdef _OPENMP
+    omp_set_dynamic(dynamic);
+#endif
     return h->c.status;
 }
 

@@ -27,6 +27,8 @@ module pecplas_linalg_sparse
       procedure :: clear => coo_clear
       procedure :: add => coo_add
       procedure :: add_block => coo_add_block
+      procedure :: block_size => coo_block_size
+      procedure :: put_block => coo_put_block
    end type coo_t
 
    !> Compressed sparse column matrix: rows sorted ascending and unique within each column.
@@ -106,10 +108,40 @@ contains
       class(coo_t), intent(inout) :: this
       integer, intent(in) :: idx(:)
       real(wp), intent(in) :: kblock(:, :)
-      integer :: r, c, m, k
-      m = count(idx > 0)
-      if (this%nnz + m*m > size(this%rows)) call this%reserve(m*m)
-      k = this%nnz
+      integer :: m
+      m = this%block_size(idx)
+      if (this%nnz + m > size(this%rows)) call this%reserve(m)
+      call this%put_block(this%nnz, idx, kblock)
+      this%nnz = this%nnz + m
+   end subroutine coo_add_block
+
+   !> Number of triplets add_block stores for the equation numbers idx.
+   integer function coo_block_size(this, idx) result(m)
+      class(coo_t), intent(in) :: this
+      integer, intent(in) :: idx(:)
+      integer :: r, c
+      if (.not. this%upper_only) then
+         m = count(idx > 0)**2
+         return
+      end if
+      m = 0
+      do c = 1, size(idx)
+         if (idx(c) <= 0) cycle
+         do r = 1, size(idx)
+            if (idx(r) > 0 .and. idx(r) <= idx(c)) m = m + 1
+         end do
+      end do
+   end function coo_block_size
+
+   !> Writes the triplets of add_block at positions k0+1 .. k0+block_size(idx), storage
+   !> reserved, `nnz` untouched: element loops run in parallel, each element at its own
+   !> offset, and the triplet order is that of serial add_block calls.
+   subroutine coo_put_block(this, k0, idx, kblock)
+      class(coo_t), intent(inout) :: this
+      integer, intent(in) :: k0, idx(:)
+      real(wp), intent(in) :: kblock(:, :)
+      integer :: r, c, k
+      k = k0
       do c = 1, size(idx)
          if (idx(c) <= 0) cycle
          do r = 1, size(idx)
@@ -121,8 +153,7 @@ contains
             this%vals(k) = kblock(r, c)
          end do
       end do
-      this%nnz = k
-   end subroutine coo_add_block
+   end subroutine coo_put_block
 
    !> Converts triplets to CSC in O(nnz + n): a counting sort by column, duplicates summed
    !> with a row marker, then two counting-sort transposes, which leave the rows ascending.

@@ -40,6 +40,9 @@ module pecplas_model_options
       !> Arc-length increments tried from the last converged state when a force-controlled
       !> increment cannot be converged at any cut (0: none; the run then says 'diverged').
       integer :: limit_probe = 30
+      !> Threads (OpenMP, CHOLMOD, BLAS): *SOLVER THREADS=; 0 = not given (then
+      !> OMP_NUM_THREADS, else 1). After start-up, the number the run used.
+      integer :: threads = 0
    end type solver_options_t
 
    type :: output_options_t

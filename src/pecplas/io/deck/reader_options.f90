@@ -71,7 +71,7 @@ contains
    end subroutine read_analysis
 
    !> *SOLVER [, LINEAR=..] [, METHOD=..] [, TOLERANCE=..] [, MAX_ITERATIONS=..] [, MAX_CUTS=..]
-   !>    [, FALLBACK=YES|NO] [, LINE_SEARCH=YES|NO] [, LIMIT_PROBE=n]
+   !>    [, FALLBACK=YES|NO] [, LINE_SEARCH=YES|NO] [, LIMIT_PROBE=n] [, THREADS=n]
    subroutine read_solver(state, model, block, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -79,8 +79,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical :: found
       call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'LINEAR', 'METHOD', &
-         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'FALLBACK', 'LINE_SEARCH', 'LIMIT_PROBE'], &
-         error)
+         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'FALLBACK', 'LINE_SEARCH', 'LIMIT_PROBE', &
+         'THREADS'], error)
       if (allocated(error)) return
       call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
       if (allocated(error)) return
@@ -102,6 +102,8 @@ contains
       call param_yes_no(state, block, 'LINE_SEARCH', model%solver%line_search, error)
       if (allocated(error)) return
       call param_int(state, block, 'LIMIT_PROBE', 0, model%solver%limit_probe, error)
+      if (allocated(error)) return
+      call param_int(state, block, 'THREADS', 1, model%solver%threads, error)
    end subroutine read_solver
 
    !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]

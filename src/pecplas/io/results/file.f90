@@ -1,6 +1,6 @@
 !> The results file of a run (HDF5), written while the run goes on:
 !>   /            attributes program, version, format_version, title, units, deck_file,
-!>                deck_text, analysis, thickness, created, status, complete,
+!>                deck_text, analysis, thickness, threads, created, status, complete,
 !>                status_message (+ finished, and completed when status = 'completed';
 !>                warnings when the run has any, e.g. displacements too large for small strain)
 !>   /mesh        see pecplas_io_results_mesh
@@ -289,6 +289,7 @@ contains
          text_or_empty(model%deck_text), error)
       if (.not. allocated(error)) call h5_attr(file, 'analysis', analysis, error)
       if (.not. allocated(error)) call h5_attr(file, 'thickness', model%analysis%thickness, error)
+      if (.not. allocated(error)) call h5_attr(file, 'threads', model%solver%threads, error)
       if (.not. allocated(error)) call h5_attr(file, 'created', timestamp(), error)
       if (.not. allocated(error)) call h5_attr(file, 'status', 'running', error)
       if (.not. allocated(error)) call h5_attr(file, 'complete', 0, error)
