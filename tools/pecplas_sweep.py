@@ -4,7 +4,7 @@
     pecplas-sweep make TEMPLATE TABLE -o DIR      one deck per table row: DIR/<case>.inp
     pecplas-sweep run DIR [-j N]                  run them locally, N at a time
     pecplas-sweep slurm DIR [--partition P ...]   write DIR/sweep.sbatch, a Slurm job array
-    pecplas-sweep collect DIR -q NAME=SPEC ...    gather quantities -> DIR/collected.{csv,h5}
+    pecplas-sweep collect DIR -q NAME=QUANTITY ...    gather quantities -> DIR/collected.{csv,h5}
 
 The template is a deck with `{{NAME}}` placeholders; the table is a CSV file (header = names,
 one row per case) or a TOML file with one `[[case]]` table per row. A column `case` (optional)
@@ -252,7 +252,7 @@ QUANTITY = re.compile(r"^(?:(max|min|last):)?(factor|disp|reaction):([^@]+?)(?:@
 def parse_quantity(text):
     """NAME=[max:|min:|last:]KIND:ARGS[@PATTERN=VALUE] -> dict; see doc/sweep.md."""
     if "=" not in text:
-        raise InputError(f"--quantity {text}: expected NAME=SPEC")
+        raise InputError(f"--quantity {text}: expected NAME=QUANTITY")
     name, spec = text.split("=", 1)
     m = QUANTITY.match(spec.strip())
     if not name.strip() or not m:
