@@ -41,7 +41,17 @@ SCENES = {
 }
 ABBREV = {"diverged": "D", "limit load": "L", "singular K": "S", "timeout": "T",
           "failed": "F", "error": "E"}
-METHODS = ("modified_newton", "newton", "katona")
+METHODS = ("modified_newton", "newton", "quasi_newton", "chain", "katona")
+# The deck's *SOLVER line of each row: the thesis's methods alone (FALLBACK=NO, no line search:
+# the maps as they were), BFGS alone, and the default chain MODIFIED_NEWTON -> QUASI_NEWTON ->
+# NEWTON with line search (doc/theory.md §4).
+SOLVERS = {"modified_newton": "METHOD=MODIFIED_NEWTON, FALLBACK=NO, LINE_SEARCH=NO",
+           "newton": "METHOD=NEWTON, FALLBACK=NO, LINE_SEARCH=NO",
+           "quasi_newton": "METHOD=QUASI_NEWTON, FALLBACK=NO",
+           "chain": "METHOD=MODIFIED_NEWTON",
+           "katona": "METHOD=NEWTON"}
+LABELS = ["modified Newton", "full Newton", "quasi-Newton (BFGS)", "default chain",
+          "Katona (no K_n)"]
 HEADER = ["scene", "sweep", "method", "kn_over_e", "increments_requested", "status",
           "timed_out", "increments_done", "iter_mean", "iter_max", "cuts",
           "katona_states_total_max", "wall_s"]
@@ -53,12 +63,10 @@ def make_deck(scene, method, ratio, scale, cap):
     if method == "katona":
         text = (sc["katona"] or sc["deck"]).read_text()
         text = re.sub(r"(\*INTERFACE_LAW[^\n]*TYPE=)MOHR_COULOMB", r"\1KATONA", text)
-        solver = "NEWTON"
     else:
         text = sc["deck"].read_text()
         text = re.sub(r"\bKN = [^,]+,", f"KN = {ratio * sc['E']:g},", text)
-        solver = method.upper()
-    text = re.sub(r"^\*SOLVER.*$", f"*SOLVER, METHOD={solver}, TOLERANCE=1e-4, "
+    text = re.sub(r"^\*SOLVER.*$", f"*SOLVER, {SOLVERS[method]}, TOLERANCE=1e-4, "
                   f"MAX_ITERATIONS={cap}, MAX_CUTS=3", text, flags=re.M)
     text = re.sub(r"(\*STEP[^\n]*INCREMENTS=)(\d+)",
                   lambda m: m.group(1) + str(max(1, round(int(m.group(2)) * scale))), text)
@@ -160,7 +168,7 @@ def plot(scene, rows, ratios, scales, path):
                 ax.text(j, i, label, ha="center", va="center", fontsize=7,
                         color="w" if grid[i, j] < norm.vmax ** 0.5 else "k")
         ax.set_yticks(range(len(METHODS)))
-        ax.set_yticklabels(["modified Newton", "full Newton", "Katona (no K_n)"]
+        ax.set_yticklabels(LABELS
                            if sweep == "kn" else [])
         ax.set_xticks(range(len(xs)))
         if sweep == "kn":

@@ -70,7 +70,11 @@ def test_stability_deck_edits():
     text = bench_stability.make_deck("s1", "newton", 1e3, 2.0, 77)
     # E1 = 1e5: K_n = 1e3 E1; steps 5, 15, 15 doubled
     assert "KN = 1e+08," in text
-    assert "*SOLVER, METHOD=NEWTON, TOLERANCE=1e-4, MAX_ITERATIONS=77, MAX_CUTS=3" in text
+    # the old method alone (no fallback, no line search) beside the new chain
+    assert ("*SOLVER, METHOD=NEWTON, FALLBACK=NO, LINE_SEARCH=NO, TOLERANCE=1e-4, "
+            "MAX_ITERATIONS=77, MAX_CUTS=3") in text
+    chain = bench_stability.make_deck("s1", "chain", 1e3, 1.0, 50)
+    assert "*SOLVER, METHOD=MODIFIED_NEWTON, TOLERANCE=1e-4" in chain
     assert bench_stability.requested_increments(text) == 70
     k = bench_stability.make_deck("s1", "katona", 1.0, 0.2, 10)
     assert "TYPE=KATONA" in k and "TYPE=MOHR_COULOMB" not in k
