@@ -1,4 +1,4 @@
-!> Shared fixtures of the MODJOIN tests: the parameter sets of the thesis tables (SPEC §4,
+!> Shared fixtures of the MODJOIN tests: the parameter sets of the thesis tables (doc/theory.md §6.4,
 !> "Parameter sets", in kPa and mm: LENGTH_UNIT=MM) built through the factory as a deck
 !> would, optionally with one parameter changed; and paths run by the point driver.
 module fixtures_modjoin

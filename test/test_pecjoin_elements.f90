@@ -1,5 +1,5 @@
 !> Joint elements of PECJOIN against Annex B: D matrices of (B.8), (B.10) (last entry of
-!> row 1 read as N3 C, SPEC §10) and (B.17) for an element inclined at 30 degrees, rigid
+!> row 1 read as N3 C, doc/theory.md §6.4) and (B.17) for an element inclined at 30 degrees, rigid
 !> motions giving no relative displacement, a pure opening / slip giving g_n / eps_t with
 !> the right signs, point measures (length, 2 pi r length, thin layer thickness), stiffness
 !> and internal force consistent with each other, spring tributaries, the factory.

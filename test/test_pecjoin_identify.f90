@@ -35,7 +35,7 @@ contains
    !> Over alpha in {0.5, 0.7, 0.84, 1}, s in {0.3, 0.84, 2} mm and gamma in {1, 2.4, 4} mm
    !> (the hyperbola alone is below 1 there since alpha <= 1), (III.20)'s A, B satisfy both
    !> conditions of (III.19, corrected) to 1e-12, and B gamma > 2 (A > 0). The thesis's example
-   !> (alpha 0.7, beta 1.5 mm, sigma_n0 56 kPa, gamma 2.4 mm) gives B = 0.95 mm^-1 (SPEC §4;
+   !> (alpha 0.7, beta 1.5 mm, sigma_n0 56 kPa, gamma 2.4 mm) gives B = 0.95 mm^-1 (doc/theory.md §6.4;
    !> table III.2 prints the three-test mean 0.96).
    subroutine test_ab(error)
       type(error_t), allocatable, intent(out) :: error
@@ -78,7 +78,7 @@ contains
 
    !> (III.18) with c = 0: beta = alpha tan(phi) P_a / G0, the same at every sigma_n0:
    !> 0.7 tan41 100/40 = 1.52 (III.2), 0.84 tan37 100/35 = 1.81 (III.5),
-   !> 0.75 tan37 100/45 = 1.26 (III.6, Dr 80 %) -- the SPEC's reading of the printed metres.
+   !> 0.75 tan37 100/45 = 1.26 (III.6, Dr 80 %) -- our reading of the printed metres.
    subroutine test_beta(error)
       type(error_t), allocatable, intent(out) :: error
       real(wp), parameter :: SIGS(3) = [31.0_wp, 56.0_wp, 122.0_wp]

@@ -1,8 +1,8 @@
-!> MODJOIN cyclic version (table III.6, both sets) on the cyclic CNL paths of scene S4 (SPEC §7)
+!> MODJOIN cyclic version (table III.6, both sets) on the cyclic CNL paths of scene S4 (doc/validation.md)
 !> at sigma_n0 = 100 kPa, 10 cycles after the primary loading, integrated by the point driver
 !> with 200 increments per segment as the decks input/s4/s4_iii6_*_cyclic_cnl_10*.inp.
 !> The amplitude is not given by the thesis (Desai et al. 1985 varied it). At +-1 mm (decks
-!> *_a1) both sets show the thesis's cyclic behaviour; at SPEC's +-2 mm the dense set passes
+!> *_a1) both sets show the thesis's cyclic behaviour; at the assumed +-2 mm the dense set passes
 !> the peak of its primary hardening and the test asserts what the law does instead.
 module test_pecjoin_modjoin_cyclic
    use pecplas_kinds, only: wp
@@ -108,7 +108,7 @@ contains
       end do
    end subroutine test_a2_loose
 
-   !> +-2 mm, dense set (SPEC's assumed amplitude). Every half-cycle reaches the primary
+   !> +-2 mm, dense set (the assumed amplitude, doc/validation.md). Every half-cycle reaches the primary
    !> surface, so the primary slip k accumulates over the cycles and passes the peak of R_m
    !> (k_peak, from dR_m/dk = 0, 3.56 mm for beta' = 1.2 mm at 100 kPa); past it R_m softens
    !> and the end-of-cycle shear falls (46.4, 59.0, 60.0, 59.3, 56.8, 53.4 ... 53.4 kPa): the

@@ -1,4 +1,4 @@
-!> MODJOIN on the homogeneous paths of scene S4 (SPEC §7) with the point driver: the
+!> MODJOIN on the homogeneous paths of scene S4 (doc/validation.md) with the point driver: the
 !> response does not depend on the increment size, and the computed curves have the shapes
 !> the thesis reports (improved version: peak then plateau, contraction then dilation,
 !> normal stress dip under constant normal displacement; cyclic version: discrete memory).

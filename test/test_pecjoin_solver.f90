@@ -1,5 +1,5 @@
 !> Joints in the nonlinear solution: a pad pressed on a plane with Mohr–Coulomb joints
-!> (mu = 0.3, SPEC §8) sticks under T = 0.99 mu N — the run converges with the interface
+!> (mu = 0.3, doc/validation.md) sticks under T = 0.99 mu N — the run converges with the interface
 !> forces in equilibrium, sum(tau dA) = T and sum(sigma_n dA) = N — and cannot be pushed
 !> past mu N at T = 1.01 mu N; the spring (Frank) law without stiffnesses gets the default
 !> penalty 1e5 E_ryg R_max / (mean tributary), with R_max checked against the Q4 stiffness,

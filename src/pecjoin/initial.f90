@@ -1,4 +1,4 @@
-!> Initial joint stresses (SPEC §5, §II.1.1): a joint point takes the stress of the massif
+!> Initial joint stresses (thesis §II.1.1): a joint point takes the stress of the massif
 !> around it projected on its frame, sigma_n = -n.sigma.n (compression positive) and
 !> tau = t.sigma.n, and its law history is initialised from that stress (e.g. MODJOIN's
 !> sigma_n0). The initial-stress driver calls `initial_joint_stress` with the same field it

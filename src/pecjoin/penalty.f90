@@ -1,5 +1,5 @@
 !> Default penalty stiffness of the laws that enforce continuity with springs (Frank,
-!> SPEC §4.2, (I.10)): K = 1e5 E_ryg R_max, R_max the largest diagonal term of the massif
+!> doc/theory.md §7, (I.10)): K = 1e5 E_ryg R_max, R_max the largest diagonal term of the massif
 !> stiffness (a force per displacement). Laws take stiffness per unit measure (they map a
 !> relative displacement to a stress, the element multiplies by the tributary measure), so
 !> K is divided by the mean measure of the joint points that use the law.

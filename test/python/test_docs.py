@@ -23,36 +23,7 @@ TOOLS = ROOT / "tools"
 # Source files that may still cite the specification, issues or sessions (to be rewritten to
 # cite the thesis or doc/; remove a file from this list once it is clean). Only src/ and
 # test/*.f90 may appear here.
-ALLOWED_INTERNAL_CITATIONS = {
-    "src/pecjoin/identify/closed_forms.f90",
-    "src/pecjoin/identify/curves.f90",
-    "src/pecjoin/identify/method.f90",
-    "src/pecjoin/initial.f90",
-    "src/pecjoin/katona/increment.f90",
-    "src/pecjoin/katona/type.f90",
-    "src/pecjoin/laws/coulomb.f90",
-    "src/pecjoin/laws/ghaboussi.f90",
-    "src/pecjoin/laws/katona.f90",
-    "src/pecjoin/laws/modjoin.f90",
-    "src/pecjoin/laws/modjoin_build.f90",
-    "src/pecjoin/laws/modjoin_kernel.f90",
-    "src/pecjoin/laws/mohr_coulomb.f90",
-    "src/pecjoin/laws/type.f90",
-    "src/pecjoin/path/deck.f90",
-    "src/pecjoin/path/driver.f90",
-    "src/pecjoin/penalty.f90",
-    "src/pecjoin/sensitivity/core.f90",
-    "src/pecjoin/sensitivity/thesis.f90",
-    "src/pecplas/driver/advise.f90",
-    "src/pecplas/model/refine.f90",
-    "test/fixtures_modjoin.f90",
-    "test/test_pecjoin_elements.f90",
-    "test/test_pecjoin_identify.f90",
-    "test/test_pecjoin_katona.f90",
-    "test/test_pecjoin_modjoin_cyclic.f90",
-    "test/test_pecjoin_modjoin_paths.f90",
-    "test/test_pecjoin_solver.f90",
-}
+ALLOWED_INTERNAL_CITATIONS = set()
 CITATION = re.compile(r"\bSPEC\b|SPEC\.md|\b[Ii]ssues? #?[0-9]|\b[Ss]ession [0-9]")
 
 

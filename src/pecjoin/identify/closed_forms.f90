@@ -1,11 +1,11 @@
 !> Closed forms of MODJOIN's hardening function and of its identification (thesis §III.3.1,
-!> SPEC §4 law 6 and §6), in kPa and mm:
+!> doc/theory.md §6.4), in kPa and mm:
 !>
 !>     R_m(k) = alpha k / (s + k) + A k^2 exp(-B k),      s = beta sigma_n0 / P_a   (III.16)
 !>
 !> (III.5, the initial version: alpha = 1, A = 0). Identification: beta from the initial slope
 !> (III.18), A and B from R_m(gamma) = 1 and dR_m/dk(gamma) = 0 at the hardening variable
-!> gamma of the peak (III.19 with the SPEC §10 correction; closed form III.20), and the
+!> gamma of the peak (III.19 with the correction of doc/theory.md; closed form III.20), and the
 !> starting value k0 of the hardening variable from R_m(k0) = R0 (III.6 generalised).
 module pecjoin_identify_closed_forms
    use pecplas_kinds, only: wp

@@ -1,5 +1,5 @@
 !> Test curves for the identification: one CNL test = (eps_t, tau, eps_n) at an initial
-!> normal stress sigma_n0, in mm and kPa, eps_n closure positive (SPEC §1: dilation < 0).
+!> normal stress sigma_n0, in mm and kPa, eps_n closure positive (doc/theory.md §6: dilation < 0).
 !> Read from CSV: a header row naming the columns (any order, case-insensitive; others are
 !> ignored, so the point driver's `step,eps_t,eps_n,sigma_n,tau,mode,plastic_slip` is read
 !> as it is), then one row per point. sigma_n0 is the first row's `sigma_n` when that column

@@ -1,5 +1,5 @@
 !> Identification of MODJOIN's parameters from CNL tests (thesis §III.3.1, III.17–III.20,
-!> SPEC §6 with the §10 correction dR_m/dk = 0 at the peak), test by test and averaged as
+!> doc/theory.md §6.4 with its correction dR_m/dk = 0 at the peak), test by test and averaged as
 !> the thesis did. On each curve (kPa, mm):
 !>
 !> - G0: secant modulus at 0.2 mm (least squares through the origin over [0, 0.2] mm),

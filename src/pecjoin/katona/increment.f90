@@ -1,4 +1,4 @@
-!> One load increment of a model with Katona contact (SPEC §5 (c), the Katona incremental-
+!> One load increment of a model with Katona contact (doc/theory.md §6.5, the Katona incremental-
 !> iterative path with a bordered saddle-point solve). Replaces the driver's Newton loop for
 !> such models only (pecplas_driver_increments dispatches here); the rest of the driver
 !> (cuts, limit loads, output) is shared.

@@ -1,4 +1,4 @@
-!> Katona contact (SPEC §4 law 5, thesis (I.12)–(I.14)): the node doublets of every joint set
+!> Katona contact (doc/theory.md §6.5, thesis (I.12)–(I.14)): the node doublets of every joint set
 !> whose law is KATONA, their contact states and multipliers, and the run counters. Held by
 !> the driver's problem_t; built by pecjoin_katona_doublets, solved by
 !> pecjoin_katona_increment.

@@ -14,7 +14,7 @@
 !> trial s_tr = sigma_old + C deps; if f(s_tr) > 0, s = sign(tau_tr),
 !>     dlambda = f(s_tr) / (K_t + K_n mu_g mu_f),
 !>     sigma_n = sigma_n,tr + K_n mu_g dlambda,  tau = s (|tau_tr| - K_t dlambda),
-!> and the consistent tangent is (C.15 as corrected in SPEC §10, H = 0)
+!> and the consistent tangent is (C.15 as corrected in doc/theory.md, H = 0)
 !>     C_ep = C - (C m)(n^T C) / (n^T C m),  n = (-mu_f, s),
 !> non-symmetric when mu_g /= mu_f. Stiffness adaptation laws add `kt_slip` to C_ep(2,2) in slip
 !> (Goodman's small K_t): the update does not contain it, the returned stress stays capped.

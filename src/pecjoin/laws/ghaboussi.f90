@@ -1,5 +1,5 @@
 !> Ghaboussi's thin-layer interface law (Ghaboussi, Wilson & Isenberg 1973; thesis §I.2.2,
-!> fig. I.10; SPEC §3), on the Coulomb kernel (pecjoin_laws_coulomb). The joint element
+!> fig. I.10; doc/theory.md §6.2), on the Coulomb kernel (pecjoin_laws_coulomb). The joint element
 !> divides the relative displacements by the layer thickness e, so eps are strains and
 !> KN, KT are the unit stiffnesses of the layer (stress per unit strain).
 !>

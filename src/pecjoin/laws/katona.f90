@@ -1,4 +1,4 @@
-!> Katona contact (thesis (I.12)–(I.14), SPEC §4 law 5): the joints of a set whose law is
+!> Katona contact (thesis (I.12)–(I.14), doc/theory.md §6.5): the joints of a set whose law is
 !> KATONA are not penalty elements but node-doublet constraints D U = d enforced by Lagrange
 !> multipliers, solved by the bordered saddle-point solver (pecjoin_katona_*). This type only
 !> carries the parameters; the penalty assembly skips its sets (`is_katona`), so `update` is

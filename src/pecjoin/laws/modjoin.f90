@@ -1,7 +1,7 @@
-!> MODJOIN, the interface law of thesis chapter III (SPEC §4 law 6), in its three versions:
+!> MODJOIN, the interface law of thesis chapter III (doc/theory.md §6.4), in its three versions:
 !> initial (III.4–III.11, linear elasticity, hardening III.5), improved (III.15 elasticity,
 !> hardening with peak and softening III.16) and cyclic (kinematic hardening with discrete
-!> memory, III.22–III.25 as corrected in SPEC §10). Theory, corrections and the algorithm:
+!> memory, III.22–III.25 as corrected in doc/theory.md). Theory, corrections and the algorithm:
 !> doc/theory.md §6.4. The parameters (`p`, model units: the builders of
 !> pecjoin_laws_modjoin_build convert once at input), the history layout and the
 !> integration are in pecjoin_laws_modjoin_step; this module binds them to interface_law_t.

@@ -7,7 +7,7 @@
 !>     B_CYC = 0.9                                   ! MODJOIN_CYCLIC (b of III.25)
 !>     [PA = 100] [SIGMA_MIN = 1] [SUBSTEP = 0.001]
 !>
-!> Units (SPEC §1 and "Units of the thesis tables"): every length-dimensioned parameter is
+!> Units (doc/theory.md §6.4, "Units of the thesis tables"): every length-dimensioned parameter is
 !> given in LENGTH_UNIT (required: never guessed): BETA, B_CYC, SUBSTEP in it, K0, G0 in
 !> stress/LENGTH_UNIT, A in LENGTH_UNIT^-2, B and A_G in LENGTH_UNIT^-1. With LENGTH_UNIT=MM
 !> the thesis tables read K0 = 80 (printed "80 MPa" = kPa/mm) and BETA = 1.5 (printed 0.0015,

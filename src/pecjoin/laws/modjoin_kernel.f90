@@ -1,4 +1,4 @@
-!> Pure numerical kernel of the MODJOIN interface law (thesis chapter III; SPEC §4 law 6):
+!> Pure numerical kernel of the MODJOIN interface law (thesis chapter III; doc/theory.md §6.4):
 !> the hardening function, the elastic relations and one backward-Euler substep with its
 !> full Jacobian (the law module pecjoin_laws_modjoin chains substeps and mechanisms).
 !>
@@ -19,7 +19,7 @@
 !> with m_n = (M_g - |tau|/max(s_n, s_min)) exp(-a_g (kappa - k_ref)) (III.9–III.11; k_ref =
 !> the start of kappa, so A_g = 1 when the mechanism starts to flow). The primary
 !> surface (III.4) is shift = 0, factor = 1; the active side of the kinematic surface
-!> (III.22–III.24 as corrected in SPEC §10) is shift = s R_i, factor = 2.
+!> (III.22–III.24 as corrected in doc/theory.md) is shift = s R_i, factor = 2.
 module pecjoin_laws_modjoin_kernel
    use pecplas_kinds, only: wp
    implicit none (type, external)

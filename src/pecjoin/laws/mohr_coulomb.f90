@@ -1,5 +1,5 @@
 !> Non-associated Mohr–Coulomb interface (Meimon et al.; thesis (I.11), fig. I.9, Annex C
-!> (C.11)–(C.16) with the correction of SPEC §10), on the Coulomb kernel
+!> (C.11)–(C.16) with the correction of doc/theory.md §6.1), on the Coulomb kernel
 !> (pecjoin_laws_coulomb, which holds the return and the tangent):
 !>
 !>     elastic   d sigma_n = K_n d eps_n^e,  d tau = K_t d eps_t^e

@@ -1,7 +1,7 @@
 !> The PECJOIN dispatch: abstract interface law. Every law maps a relative-displacement
 !> increment and its stored state to the interface stress, a tangent and a contact mode.
 !>
-!> Conventions (soil mechanics, SPEC §1): strain-like vector eps = (eps_n, eps_t) with the
+!> Conventions (soil mechanics, doc/theory.md §6): strain-like vector eps = (eps_n, eps_t) with the
 !> normal relative displacement **closure positive** (eps_n = -g_n, g_n the opening of (B.8)
 !> row 1) and eps_t = U_t(2) - U_t(1); stress vector sigma = (sigma_n, tau) with sigma_n
 !> **compression positive**. So d sigma = C d eps with C = diag(K_n, K_t) in the elastic range.

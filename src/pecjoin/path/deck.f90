@@ -1,4 +1,4 @@
-!> The small deck of the point driver `pecplas-path` (SPEC §6), read with the main reader's
+!> The small deck of the point driver `pecplas-path` (doc/path.md), read with the main reader's
 !> line and field tools (includes, comments, strict numbers, file:line errors):
 !>
 !>     *INTERFACE_LAW, NAME=j, TYPE=MOHR_COULOMB

@@ -1,4 +1,4 @@
-!> Point driver (SPEC §6, thesis §III.2.1.6): integrates one interface law, through the
+!> Point driver (doc/path.md, thesis §III.2.1.6): integrates one interface law, through the
 !> abstract interface_law_t (the very code the joint elements call), on a homogeneous path
 !> with eps_t imposed and a mixed normal control per increment:
 !>

@@ -1,5 +1,5 @@
 !> Sensitivity of an interface law to its parameters on homogeneous paths (thesis §III.3.2,
-!> SPEC §6): each parameter p is perturbed by +/- a fraction of its value, the paths are run
+!> doc/identify.md): each parameter p is perturbed by +/- a fraction of its value, the paths are run
 !> with the reference and both perturbed sets, and for every output curve y(eps_t)
 !>
 !>     Q_p = sum_i (y_i^+ - y_i^-)^2 / sum_i (y_i^0)^2                     (III.21)

@@ -1,6 +1,6 @@
 !> The thesis's sensitivity study (§III.3.2): the improved MODJOIN set of table III.2 at
 !> sigma_n0 = 56 kPa on CNL and CND paths, the perturbations of tables III.3 and III.4 (they
-!> differ for beta only: +/-50 % in III.3, +/-15 % in III.4, SPEC §10) and table III.4's
+!> differ for beta only: +/-50 % in III.3, +/-15 % in III.4, doc/theory.md §6.4) and table III.4's
 !> normalised Q_p (%), copied as printed, as the reference column of the reports.
 module pecjoin_sensitivity_thesis
    use pecplas_kinds, only: wp

@@ -1,4 +1,4 @@
-!> Advice mode (`pecplas --advise DECK`, issue 7): a quick study of a deck's first loading
+!> Advice mode (`pecplas --advise DECK`): a quick study of a deck's first loading
 !> step under cheaper and finer configurations, run in-process, and the cheapest one whose
 !> error is below 1 % and below 5 %.
 !>

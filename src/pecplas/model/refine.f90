@@ -1,5 +1,5 @@
 !> Uniform refinement (h/2) of a model read from a deck, in memory (the mesh level of
-!> `pecplas --advise`, issue 7). Q4 -> 4 Q4 (edge midpoints and centre), T3 -> 4 T3 (edge
+!> `pecplas --advise`). Q4 -> 4 Q4 (edge midpoints and centre), T3 -> 4 T3 (edge
 !> midpoints). Original nodes keep their internal numbers and ids; new nodes come after them,
 !> with ids above the largest. What refers to nodes is rebuilt:
 !> - a midpoint of a boundary edge (one element) joins a node set, a support or an imposed
