@@ -22,6 +22,7 @@ program tester
    use test_io_deck_fields, only: collect_io_deck_fields
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
+   use test_io_deck_trust, only: collect_io_deck_trust
    use test_massif_materials_factory, only: collect_massif_materials_factory
    use test_pecjoin_elements, only: collect_pecjoin_elements
    use test_pecjoin_patch, only: collect_pecjoin_patch
@@ -100,6 +101,7 @@ program tester
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
    suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
    suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]
+   suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
