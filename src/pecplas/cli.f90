@@ -26,7 +26,8 @@ module pecplas_cli
 
    public :: pecplas_main, run_deck
 
-   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] | '// &
+   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
+      '[--strict] | '// &
       'pecplas --advise DECK [--advise-node N]'
 
 contains
@@ -35,7 +36,7 @@ contains
    integer function pecplas_main(args) result(code)
       character(len=*), intent(in) :: args(:)
       character(len=:), allocatable :: deck, outfile
-      logical :: quiet, advise
+      logical :: quiet, advise, strict
       type(model_t) :: model
       type(problem_t) :: problem
       integer :: i, node, ios
@@ -43,6 +44,7 @@ contains
       advise = .false.
       node = 0
       quiet = .false.
+      strict = .false.
       deck = ''
       outfile = ''
       i = 0
@@ -51,6 +53,8 @@ contains
          select case (trim(args(i)))
          case ('--quiet', '-q')
             quiet = .true.
+         case ('--strict')
+            strict = .true.
          case ('--advise')
             advise = .true.
          case ('--advise-node')
@@ -74,6 +78,8 @@ contains
             write (*, '(a)') '  Runs the keyword deck DECK and writes HDF5 results (default '// &
                'output/<deck>.h5) with an XDMF sidecar.'
             write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early.'
+            write (*, '(a)') '  --strict: any warning (printed as "file:line: warning: ...") '// &
+               'is an input error: exit 2, no results file.'
             write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
                'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
                'Q4/T3 decks), prints their cost and error (reference: the finest, NEWTON x2 '// &
@@ -104,14 +110,16 @@ contains
          code = advise_main(deck, node)
          return
       end if
-      code = run_deck(deck, outfile, quiet, model, problem)
+      code = run_deck(deck, outfile, quiet, model, problem, strict)
    end function pecplas_main
 
    !> Runs `deck`, writing `outfile` (empty: the deck's *OUTPUT file or output/<deck>.h5).
    !> Returns the exit code; `model` and `problem` hold the final state (for tests).
-   integer function run_deck(deck, outfile_in, quiet, model, problem) result(code)
+   integer function run_deck(deck, outfile_in, quiet, model, problem, strict) result(code)
       character(len=*), intent(in) :: deck, outfile_in
       logical, intent(in) :: quiet
+      !> Warnings found before the run are input errors (exit 2, no results file).
+      logical, intent(in), optional :: strict
       type(model_t), intent(out) :: model
       type(problem_t), intent(out) :: problem
       type(results_file_t) :: results
@@ -126,6 +134,10 @@ contains
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
+      if (.not. allocated(error)) call model%warnings%print(0)
+      if (.not. allocated(error) .and. present(strict)) then
+         if (strict) call model%warnings%as_error(error)
+      end if
       if (allocated(error)) then
          code = command_error(COMMAND, error%exit_code(), error%text())
          return

@@ -74,6 +74,11 @@ contains
                problem%dofs%describe(model, problem%solver%bad_equation)// &
                ' can move without resistance (a mechanism: missing supports in *BOUNDARY?). '// &
                'Solver said: '//error%message
+            ! name the line that defines that node
+            if (problem%solver%bad_equation >= 1 .and. &
+                problem%solver%bad_equation <= problem%dofs%neq) &
+               call model%provenance%locate(error, model%provenance%node( &
+               problem%dofs%eq_node(problem%solver%bad_equation)), '*NODES')
          end if
          return
       end if

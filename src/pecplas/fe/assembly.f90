@@ -6,6 +6,7 @@ module pecplas_fe_assembly
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
+   use pecplas_model_provenance, only: place_t
    use pecplas_fe_dofs, only: dofs_t
    use pecplas_fe_state, only: fe_state_t
    use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
@@ -63,7 +64,7 @@ contains
                call massif_stiffness(rules(s), model%analysis%kind, model%analysis%thickness, &
                   xe, d, ke, error)
                if (allocated(error)) then
-                  call element_context(error, set%name, set%ids(e))
+                  call element_context(error, model, s, e)
                   return
                end if
                call builder%coo%add_block(idx, ke)
@@ -111,7 +112,7 @@ contains
                   call massif_gauss_point(rules(s), g, model%analysis%kind, &
                      model%analysis%thickness, xe, pt, error)
                   if (allocated(error)) then
-                     call element_context(error, set%name, set%ids(e))
+                     call element_context(error, model, s, e)
                      return
                   end if
                   eps = matmul(pt%b(:, 1:nd), ue)
@@ -122,7 +123,7 @@ contains
                      st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
                   if (timed) tlaw = tlaw + (wall_time() - t0)
                   if (allocated(error)) then
-                     call element_context(error, set%name, set%ids(e))
+                     call element_context(error, model, s, e)
                      return
                   end if
                   st%strain_trial(:, g, e) = eps
@@ -141,13 +142,19 @@ contains
    end subroutine internal_forces
 
    !> Prefixes an element-level error with the element set and user id.
-   subroutine element_context(error, set_name, id)
+   !> Prefixes the element id and set, and gives the error the element's deck line.
+   subroutine element_context(error, model, s, e)
       type(error_t), allocatable, intent(inout) :: error
-      character(len=*), intent(in) :: set_name
-      integer, intent(in) :: id
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s, e
+      type(place_t) :: p
+      character(len=:), allocatable :: keyword
       character(len=32) :: buf
-      write (buf, '(i0)') id
-      error%message = 'element '//trim(buf)//' of set '//set_name//': '//error%message
+      write (buf, '(i0)') model%mesh%esets(s)%ids(e)
+      error%message = 'element '//trim(buf)//' of set '//model%mesh%esets(s)%name//': '// &
+         error%message
+      call model%provenance%element(s, e, p, keyword)
+      call model%provenance%locate(error, p, keyword)
    end subroutine element_context
 
 end module pecplas_fe_assembly

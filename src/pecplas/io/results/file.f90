@@ -1,7 +1,7 @@
 !> The results file of a run (HDF5), written while the run goes on:
 !>   /            attributes program, version, format_version, title, units, deck_file,
 !>                deck_text, analysis, thickness, created, status, complete,
-!>                status_message (+ finished, and completed when status = 'completed')
+!>                status_message, warnings (+ finished, and completed when status = 'completed')
 !>   /mesh        see pecplas_io_results_mesh
 !>   /history     one row per converged increment: step, increment, global_increment, time,
 !>                iterations, residual, cpu_time, fields (1 = field group written) and
@@ -193,7 +193,17 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'status', 'running', error)
       if (.not. allocated(error)) call h5_attr(file, 'complete', 0, error)
       if (.not. allocated(error)) call h5_attr(file, 'status_message', '', error)
+      if (.not. allocated(error)) call write_warnings(file, model%warnings%lines(), error)
    end subroutine write_root
+
+   !> Root attribute `warnings`: one string per warning, "file:line: warning: text" (an
+   !> empty list when there is none). Written again with the whole list when more come.
+   subroutine write_warnings(file, list, error)
+      integer(hid_t), intent(in) :: file
+      character(len=*), intent(in) :: list(:)
+      type(error_t), allocatable, intent(out) :: error
+      call h5_attr(file, 'warnings', list, error)
+   end subroutine write_warnings
 
    subroutine create_history(file, model, error)
       integer(hid_t), intent(in) :: file

@@ -1,0 +1,91 @@
+"""Warnings channel and errors with deck lines, through the `pecplas` command.
+
+- test/data/trust/warn_all.inp runs to completion (exit 0) with one warning of each deck-time
+  kind; each is printed on stderr as "file:line: warning: ..." and stored in the results
+  file's root attribute `warnings` (a list of strings, doc/results.md).
+- --strict turns the first warning into an input error: exit 2, no results file.
+- errors found after reading (a concave element, a singular stiffness) name the deck line of
+  the element or node."""
+import subprocess
+from pathlib import Path
+
+import h5py
+import pytest
+from pecplas_exe import pecplas_cmd
+
+ROOT = Path(__file__).resolve().parents[2]
+TRUST = ROOT / "test" / "data" / "trust"
+
+# line of warn_all.inp each warning must name, and a phrase of its text
+WARNINGS = [(24, "PHI = 0.5236"), (25, "material 'spare' is used by no *SECTION"),
+            (30, "node set 'lonely' is used by no"), (38, "load pattern 'forgotten'"),
+            (42, "step 'again' changes no load factor"), (45, "geostatic y_surface"),
+            (17, "element 2 of set 'thin' is distorted")]
+
+
+def run(deck, *options, out=None):
+    args = [*pecplas_cmd(), str(deck), "--quiet", *options]
+    if out is not None:
+        args += ["-o", str(out)]
+    return subprocess.run(args, cwd=ROOT, capture_output=True, text=True, timeout=120)
+
+
+def test_warnings_printed_and_stored(tmp_path):
+    out = tmp_path / "w.h5"
+    r = run(TRUST / "warn_all.inp", out=out)
+    assert r.returncode == 0, r.stderr  # a warning never changes the exit code
+    lines = [s for s in r.stderr.splitlines() if ": warning: " in s]
+    assert len(lines) == len(WARNINGS), r.stderr
+    with h5py.File(out) as f:
+        stored = [s.decode() if isinstance(s, bytes) else s for s in f.attrs["warnings"]]
+        assert f.attrs["status"] in ("completed", b"completed")
+    assert stored == lines  # the file holds exactly what was printed
+    for line, phrase in WARNINGS:
+        hits = [s for s in lines if s.startswith(f"{TRUST / 'warn_all.inp'}:{line}: warning: ")
+                or f"warn_all.inp:{line}: warning: " in s]
+        assert any(phrase in s for s in hits), (line, phrase, lines)
+
+
+def test_no_warning_stores_empty_list(tmp_path):
+    out = tmp_path / "b.h5"
+    r = run(TRUST / "good_bom.inp", out=out)
+    assert r.returncode == 0, r.stderr
+    assert ": warning: " not in r.stderr
+    with h5py.File(out) as f:
+        assert len(f.attrs["warnings"]) == 0
+
+
+@pytest.mark.parametrize("deck, line, phrase", [
+    ("warn_all.inp", 24, "PHI = 0.5236"),
+    ("warn_duplicate_joint.inp", 24, "and 7 more warning(s)"),
+])
+def test_strict_turns_warnings_into_errors(tmp_path, deck, line, phrase):
+    out = tmp_path / "s.h5"
+    r = run(TRUST / deck, "--strict", out=out)
+    assert r.returncode == 2, r.stderr
+    assert f"{deck}:{line}: warning treated as an error (--strict)" in r.stderr, r.stderr
+    assert phrase in r.stderr
+    assert not out.exists()  # no results file for an input error
+
+
+def test_duplicate_joint_warning_names_both_lines(tmp_path):
+    r = run(TRUST / "warn_duplicate_joint.inp", out=tmp_path / "d.h5")
+    assert "warn_duplicate_joint.inp:51: warning: joint 20 of set 'j2' is on the same " \
+           "nodes as joint 10 of set 'j1' (" in r.stderr, r.stderr
+    assert "warn_duplicate_joint.inp:49)" in r.stderr
+
+
+@pytest.mark.parametrize("deck, where, phrase", [
+    (TRUST / "bad_not_convex.inp", "bad_not_convex.inp:13: [*ELEMENTS]", "not convex at node 7"),
+    (TRUST / "bad_joint_overlap.inp", "bad_joint_overlap.inp:27: [*JOINTS]",
+     "overlaps joint 10 of set 'j1'"),
+    # node 4 is the first free node of the mechanism; line 8 of the deck defines it
+    (ROOT / "test" / "data" / "cli" / "floating.inp", "floating.inp:8: [*NODES]",
+     "the stiffness matrix is singular: node 4"),
+])
+def test_errors_after_reading_name_the_line(tmp_path, deck, where, phrase):
+    out = tmp_path / "e.h5"
+    r = run(deck, out=out)
+    assert r.returncode == 2, r.stderr
+    assert where in r.stderr and phrase in r.stderr, r.stderr
+    assert not out.exists()
