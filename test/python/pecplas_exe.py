@@ -11,3 +11,12 @@ def pecplas_cmd():
     if exe and Path(exe).exists():
         return [exe]
     return ["fpm", "run", "--target", "pecplas", "--"]
+
+
+def program_cmd(name):
+    """Command prefix of another program of the project (e.g. "pecplas-path"): the one next
+    to $PECPLAS_BIN when it exists, else `fpm run`."""
+    exe = os.environ.get("PECPLAS_BIN")
+    if exe and (Path(exe).parent / name).exists():
+        return [str(Path(exe).parent / name)]
+    return ["fpm", "run", "--target", name, "--"]

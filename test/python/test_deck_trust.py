@@ -89,3 +89,42 @@ def test_errors_after_reading_name_the_line(tmp_path, deck, where, phrase):
     assert r.returncode == 2, r.stderr
     assert where in r.stderr and phrase in r.stderr, r.stderr
     assert not out.exists()
+
+
+# ---- pecplas-path: bounded runs, progress, and a status on every file ----
+from pecplas_exe import program_cmd  # noqa: E402
+
+
+def run_path(deck, out, *options):
+    return subprocess.run([*program_cmd("pecplas-path"), str(deck), "-o", str(out), *options],
+                          cwd=ROOT, capture_output=True, text=True, timeout=120)
+
+
+def test_path_time_limit_stops_with_status(tmp_path):
+    # eps_t = 1e4 mm in 0.001 mm substeps would run for hours: stopped after 1 s, exit 3,
+    # the rows done are kept and the file says it is not complete
+    out = tmp_path / "huge"
+    r = run_path(TRUST / "path_huge_target.inp", out, "--max-seconds", "1")
+    assert r.returncode == 3, r.stderr
+    assert "time limit of 1.000 s reached" in r.stderr
+    with h5py.File(out.with_suffix(".h5")) as f:
+        assert f.attrs["status"] == "stopped" and f.attrs["complete"] == 0
+        assert "time limit" in f.attrs["status_message"]
+        assert 1 <= len(f["step"]) < 801  # fewer rows than the 800 increments asked
+
+
+def test_path_completed_status(tmp_path):
+    out = tmp_path / "short"
+    r = run_path(TRUST / "path_short.inp", out, "--quiet")
+    assert r.returncode == 0, r.stderr
+    with h5py.File(out.with_suffix(".h5")) as f:
+        assert f.attrs["status"] == "completed" and f.attrs["complete"] == 1
+        assert len(f["step"]) == 21  # 20 increments and the initial state
+
+
+def test_path_increment_cap(tmp_path):
+    out = tmp_path / "big"
+    r = run_path(TRUST / "path_bad_steps.inp", out)
+    assert r.returncode == 2
+    assert "path_bad_steps.inp:6: [*PATH] STEPS x targets must be <= 1000000" in r.stderr
+    assert not out.with_suffix(".h5").exists()
