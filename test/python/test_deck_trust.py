@@ -77,6 +77,8 @@ def test_duplicate_joint_warning_names_both_lines(tmp_path):
 
 @pytest.mark.parametrize("deck, where, phrase", [
     (TRUST / "bad_not_convex.inp", "bad_not_convex.inp:13: [*ELEMENTS]", "not convex at node 7"),
+    (TRUST / "bad_q8_midside.inp", "bad_q8_midside.inp:13: [*ELEMENTS]",
+     "element 1 of set soil: massif element inverted"),
     (TRUST / "bad_joint_overlap.inp", "bad_joint_overlap.inp:27: [*JOINTS]",
      "overlaps joint 10 of set 'j1'"),
     # node 4 is the first free node of the mechanism; line 8 of the deck defines it

@@ -6,7 +6,7 @@ module pecplas_fe_assembly
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
-   use pecplas_model_provenance, only: place_t
+   use pecplas_fe_element_context, only: element_context
    use pecplas_fe_dofs, only: dofs_t
    use pecplas_fe_state, only: fe_state_t
    use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
@@ -140,21 +140,5 @@ contains
       call add_joint_forces(model, u, state%joints, fint, error)
       if (timed) law_time = law_time + tlaw + (wall_time() - t0)
    end subroutine internal_forces
-
-   !> Prefixes an element-level error with the element set and user id.
-   !> Prefixes the element id and set, and gives the error the element's deck line.
-   subroutine element_context(error, model, s, e)
-      type(error_t), allocatable, intent(inout) :: error
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: s, e
-      type(place_t) :: p
-      character(len=:), allocatable :: keyword
-      character(len=32) :: buf
-      write (buf, '(i0)') model%mesh%esets(s)%ids(e)
-      error%message = 'element '//trim(buf)//' of set '//model%mesh%esets(s)%name//': '// &
-         error%message
-      call model%provenance%element(s, e, p, keyword)
-      call model%provenance%locate(error, p, keyword)
-   end subroutine element_context
 
 end module pecplas_fe_assembly
