@@ -11,7 +11,7 @@ by the release `pecplas` with a timeout, and the outcome classified:
   file left (exit 2 with a results file written)
 
 Usage: tools/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
-       [--seed 1] [--keep DIR] [--jobs 1]
+       [--seed 1] [--keep DIR] [--jobs 1] [--json FILE] [--sources DECK ...]
 Only source decks whose unmutated run takes less than --max-source-seconds are used, so
 that the run stays short. Failing cases are copied to --keep (default
 build/mutate_decks) with their stderr, to reproduce them. Exit 1 when any crash, hang, no
@@ -167,6 +167,8 @@ def main():
     p.add_argument("--jobs", type=int, default=1)
     p.add_argument("--keep", default=str(ROOT / "build" / "mutate_decks"))
     p.add_argument("--json", help="write the counts to this file")
+    p.add_argument("--sources", nargs="*", help="source decks (default: every pecplas deck "
+                   "under input/ that runs in under --max-source-seconds)")
     args = p.parse_args()
     if not args.exe:
         cands = sorted(ROOT.glob("build/*/app/pecplas"), key=lambda q: q.stat().st_mtime)
@@ -175,7 +177,10 @@ def main():
                      "give --exe")
         args.exe = str(cands[-1])
     args.exe = str(Path(args.exe).resolve())
-    srcs = sources(args.exe, args.max_source_seconds, args.timeout)
+    if args.sources:
+        srcs = [Path(q).resolve() for q in args.sources]
+    else:
+        srcs = sources(args.exe, args.max_source_seconds, args.timeout)
     print(f"{len(srcs)} source decks, {args.n} mutations, timeout {args.timeout:g} s",
           flush=True)
     counts, slowest, examples = {}, 0.0, {}
