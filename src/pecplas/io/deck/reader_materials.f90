@@ -11,6 +11,7 @@ module pecplas_io_deck_reader_materials
    use pecplas_model, only: model_t
    use pecplas_model_params, only: params_t
    use pecplas_warnings, only: warnings_t
+   use pecplas_strings, only: decimal_text
    use pecplas_massif_materials_type, only: material_t, material_box_t
    implicit none (type, external)
    private
@@ -134,23 +135,13 @@ contains
       character(len=*), intent(in) :: key
       real(wp), intent(in) :: value
       type(warnings_t), intent(inout) :: warnings
-      character(len=32) :: buf
       if (key /= 'PHI' .and. key /= 'PSI') return
       if (.not. (value > 0.0_wp .and. value < 1.0_wp)) return
-      write (buf, '(g0.4)') value*180.0_wp/acos(-1.0_wp)
-      call warnings%add(key//' = '//decimal(value)// &
-         ' degree is below 1 degree: angles are in degrees (radians by mistake? '// &
-         decimal(value)//' rad = '//trim(adjustl(buf))//' degrees)', &
-         state%lines(at)%file, state%lines(at)%line)
+      call warnings%add(key//' = '//decimal_text(value, 6)//' degree is below 1 degree: '// &
+         'angles are in degrees (radians by mistake? '//decimal_text(value, 6)//' rad = '// &
+         decimal_text(value*180.0_wp/acos(-1.0_wp), 2)//' degrees)', state%lines(at)%file, &
+         state%lines(at)%line)
    end subroutine check_angle
-
-   function decimal(v) result(s)
-      real(wp), intent(in) :: v
-      character(len=:), allocatable :: s
-      character(len=32) :: buf
-      write (buf, '(g0.6)') v
-      s = trim(adjustl(buf))
-   end function decimal
 
    !> *SECTION, SET=eset, MATERIAL=name -- no data lines; resolved at the end.
    subroutine read_section(state, block, error)
