@@ -56,6 +56,7 @@ module pecplas_io_results_file
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
+      procedure :: warnings => results_warnings
       procedure :: is_open => results_is_open
       procedure :: free => results_free
       final :: results_final
@@ -195,6 +196,20 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'status_message', '', error)
       if (.not. allocated(error)) call write_warnings(file, model%warnings%lines(), error)
    end subroutine write_root
+
+   !> Replaces the root attribute `warnings` of an open file by `list` (the deck's warnings
+   !> and those found during the run, e.g. by the driver), one "file:line: warning: text"
+   !> string each.
+   subroutine results_warnings(this, list, error)
+      class(results_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: list(:)
+      type(error_t), allocatable, intent(out) :: error
+      if (this%file < 0) then
+         call fatal_error(error, 'results file: warnings written to a file not open')
+         return
+      end if
+      call write_warnings(this%file, list, error)
+   end subroutine results_warnings
 
    !> Root attribute `warnings`: one string per warning, "file:line: warning: text" (an
    !> empty list when there is none). Written again with the whole list when more come.
