@@ -130,3 +130,21 @@ def test_path_increment_cap(tmp_path):
     assert r.returncode == 2
     assert "path_bad_steps.inp:6: [*PATH] STEPS x targets must be <= 1000000" in r.stderr
     assert not out.with_suffix(".h5").exists()
+
+
+def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
+    # reproducer found by tools/mutate_decks.py: spring 552 of input/s2/s2_katona.inp joined
+    # to node 7 instead of 71, a doublet whose face-2 node lies behind face 1
+    src = ROOT / "input" / "s2" / "s2_katona.inp"
+    lines = src.read_text().splitlines()
+    assert lines[185] == "552, 20, 71"
+    lines[185] = "552, 20, 7"
+    for sib in src.parent.iterdir():
+        if sib.name != src.name:
+            (tmp_path / sib.name).symlink_to(sib)
+    deck = tmp_path / src.name
+    deck.write_text("\n".join(lines) + "\n")
+    r = run(deck, out=tmp_path / "k.h5")
+    assert r.returncode == 2, r.stderr
+    assert "s2_katona.inp:186: [*JOINTS] Katona doublet (nodes 20, 7) of joint set below " \
+           "starts interpenetrated" in r.stderr, r.stderr
