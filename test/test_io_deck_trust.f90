@@ -39,7 +39,8 @@ contains
          bad('generate_huge', 10, '*NSET', 'lists 100000000 ids', 'more than the 4 nodes'), &
          bad('increments_huge', 18, '*STEP', 'INCREMENTS must be <= 100000', 'Limits'), &
          bad('gmsh_count', 50, '$Elements', '1000000 elements announced', &
-         'cannot hold them', file='header_count.msh')], error)
+         'cannot hold them', file='header_count.msh'), &
+         bad('mesh_directory', 3, '*MESH', 'cannot read', 'Is a directory')], error)
    end subroutine test_caps
 
    !> A UTF-8 byte order mark before the first keyword is skipped, not "a data line before

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Mutation testing of the deck reader and the run: random mutations of the decks under
 input/ (lines deleted, duplicated or swapped, numbers swapped or replaced by huge, negative,
-NaN or garbage values, truncated files, random keyword lines, a byte order mark), each run
+NaN or garbage values, truncated files, random keyword lines, a byte order mark; for a deck
+with *MESH, half of the time its Gmsh file is mutated instead), each run
 by the release `pecplas` with a timeout, and the outcome classified:
 
   completed (exit 0) | input error (exit 2) | stopped (exit 3)
@@ -41,6 +42,7 @@ KEYWORDS = ["*NODES", "*ELEMENTS, TYPE=Q4, SET=x", "*NSET, NAME=g, GENERATE", "*
             "*OUTPUT, EVERY=0", "*FOO", "*", "**", "*EDGES, NAME=e", "*INTERFACE_LAW"]
 NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?")
 WHERE = re.compile(r"\S+:\d+: ")
+MESH = re.compile(r"^\*MESH\s*,\s*FILE\s*=\s*(\S+)", re.I | re.M)
 
 
 def mutate_once(lines, rng):
@@ -146,7 +148,23 @@ def one_case(args, srcs, case):
             if sib != src:
                 (tmp / sib.name).symlink_to(sib)
         deck = tmp / src.name
-        deck.write_text(mutate(src.read_text(errors="replace"), rng), errors="replace")
+        text = src.read_text(errors="replace")
+        mesh = MESH.search(text)
+        if mesh:
+            # the mesh as an absolute path (it may sit above the deck's folder), or half of
+            # the time a mutated copy of it under a new name
+            msh = (src.parent / mesh.group(1)).resolve()
+            name = str(msh)
+            if rng.random() < 0.5:
+                name = "mutated.msh"
+                (tmp / name).write_text(mutate(msh.read_text(errors="replace"), rng),
+                                        errors="replace")
+            text = text[:mesh.start(1)] + name + text[mesh.end(1):]
+            if name == str(msh):
+                text = mutate(text, rng)
+        else:
+            text = mutate(text, rng)
+        deck.write_text(text, errors="replace")
         kind, err, secs = run(args.exe, deck, tmp / "out" / "r.h5", args.timeout)
         if kind in ("crash", "hang", "no line", "file left"):
             keep = Path(args.keep) / f"{kind.replace(' ', '_')}_{case}"

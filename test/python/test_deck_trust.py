@@ -148,3 +148,20 @@ def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
     assert r.returncode == 2, r.stderr
     assert "s2_katona.inp:186: [*JOINTS] Katona doublet (nodes 20, 7) of joint set below " \
            "starts interpenetrated" in r.stderr, r.stderr
+
+
+def test_singular_on_split_node_names_the_joints_line(tmp_path):
+    # reproducer found by tools/mutate_decks.py: KN = 1e308 in test/data/joints/
+    # gmsh_interface.inp; the free node is a duplicate made for the generated joints, so the
+    # error names the *JOINTS line that made it
+    src = ROOT / "test" / "data" / "joints" / "gmsh_interface.inp"
+    lines = src.read_text().splitlines()
+    assert lines[12] == "KN = 1e5, KT = 1e4"
+    lines[12] = "KN = 1e308, KT = 1e4"
+    (tmp_path / "interface.msh").symlink_to(src.parent / "interface.msh")
+    deck = tmp_path / src.name
+    deck.write_text("\n".join(lines) + "\n")
+    r = run(deck, out=tmp_path / "j.h5")
+    assert r.returncode == 2, r.stderr
+    assert "gmsh_interface.inp:14: [*JOINTS] the stiffness matrix is singular" in r.stderr, \
+        r.stderr

@@ -5,6 +5,7 @@ module pecplas_driver_stiffness
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, ERR_SINGULAR
    use pecplas_model, only: model_t
+   use pecplas_model_provenance, only: place_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
@@ -49,6 +50,7 @@ contains
       logical, intent(in) :: tangent
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: t0
+      type(place_t) :: p
 
       t0 = wall_time()
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
@@ -76,9 +78,10 @@ contains
                'Solver said: '//error%message
             ! name the line that defines that node
             if (problem%solver%bad_equation >= 1 .and. &
-                problem%solver%bad_equation <= problem%dofs%neq) &
-               call model%provenance%locate(error, model%provenance%node( &
-               problem%dofs%eq_node(problem%solver%bad_equation)), '*NODES')
+                problem%solver%bad_equation <= problem%dofs%neq) then
+               p = model%provenance%node(problem%dofs%eq_node(problem%solver%bad_equation))
+               call model%provenance%locate(error, p, trim(p%keyword))
+            end if
          end if
          return
       end if

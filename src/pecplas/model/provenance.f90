@@ -8,9 +8,11 @@ module pecplas_model_provenance
 
    public :: provenance_t, place_t
 
-   !> A deck position: index into provenance_t%files and line (0: unknown).
+   !> A deck position: index into provenance_t%files, line (0: unknown) and the keyword
+   !> in force there.
    type :: place_t
       integer :: file = 0, line = 0
+      character(len=16) :: keyword = ''
    end type place_t
 
    type :: file_name_t

@@ -15,7 +15,8 @@ contains
    subroutine record_places(state, model)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
-      integer :: i, s, k, e, nel
+      integer :: i, s, k, e, nel, n0
+      type(place_t), allocatable :: split(:)
       associate (pv => model%provenance)
          allocate (pv%nodes(size(state%mesh_node_at)))
          do i = 1, size(state%mesh_node_at)
@@ -45,6 +46,7 @@ contains
          end do
          if (.not. allocated(model%joint_sets)) return
          allocate (pv%joint_sets(size(model%joint_sets)))
+         n0 = size(pv%nodes)
          do s = 1, size(model%joint_sets)
             nel = size(model%joint_sets(s)%conn, 2)
             allocate (pv%joint_sets(s)%at(nel))
@@ -61,6 +63,22 @@ contains
                end if
             end associate
          end do
+         ! nodes split for generated joints (after the deck's nodes): the joint's line
+         if (model%mesh%nnode() > n0) then
+            allocate (split(model%mesh%nnode()))
+            split(1:n0) = pv%nodes
+            do s = 1, size(model%joint_sets)
+               do e = 1, size(model%joint_sets(s)%conn, 2)
+                  do i = 1, size(model%joint_sets(s)%conn, 1)
+                     k = model%joint_sets(s)%conn(i, e)
+                     if (k > n0 .and. k <= size(split)) then
+                        if (split(k)%line == 0) split(k) = pv%joint_sets(s)%at(e)
+                     end if
+                  end do
+               end do
+            end do
+            call move_alloc(split, pv%nodes)
+         end if
       end associate
    end subroutine record_places
 
@@ -72,6 +90,7 @@ contains
       type(place_t) :: p
       if (at < 1 .or. at > size(state%lines)) return
       p = model%provenance%place(state%lines(at)%file, state%lines(at)%line)
+      p%keyword = state%lines(at)%keyword
    end function here
 
 end module pecplas_io_deck_record_places
