@@ -40,7 +40,8 @@ contains
          bad('increments_huge', 18, '*STEP', 'INCREMENTS must be <= 100000', 'Limits'), &
          bad('gmsh_count', 50, '$Elements', '1000000 elements announced', &
          'cannot hold them', file='header_count.msh'), &
-         bad('mesh_directory', 3, '*MESH', 'cannot read', 'Is a directory')], error)
+         bad('mesh_directory', 3, '*MESH', 'cannot read', 'Is a directory'), &
+         bad('load_huge', 17, '*LOAD', 'load value above 1e100')], error)
    end subroutine test_caps
 
    !> A UTF-8 byte order mark before the first keyword is skipped, not "a data line before

@@ -2,6 +2,7 @@
 !> of the deck can ask for, so that a typo cannot exhaust memory or run for hours; every
 !> cap is checked before anything is allocated or run.
 module pecplas_io_deck_caps
+   use pecplas_kinds, only: wp
    implicit none (type, external)
    private
 
@@ -13,5 +14,10 @@ module pecplas_io_deck_caps
    !> Increment cuts (*SOLVER, MAX_CUTS=): each halves the increment, 2**40 is far below
    !> any meaningful load step.
    integer, parameter, public :: MAX_CUTS_CAP = 40
+
+   !> Magnitude of a load value (*LOAD) or a step's target factor (*STEP): far above any
+   !> physical load in any unit, low enough that the products of assembly (a load times
+   !> a factor times a stiffness) stay finite.
+   real(wp), parameter, public :: MAX_LOAD_MAGNITUDE = 1.0e100_wp
 
 end module pecplas_io_deck_caps

@@ -3,7 +3,8 @@
 module pecplas_io_deck_reader_options
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_caps, only: MAX_INCREMENTS, MAX_ITERATIONS_CAP, MAX_CUTS_CAP
+   use pecplas_io_deck_caps, only: MAX_INCREMENTS, MAX_ITERATIONS_CAP, MAX_CUTS_CAP, &
+      MAX_LOAD_MAGNITUDE
    use pecplas_io_deck_fields, only: field_t, split_fields, field_real, &
       check_count, parse_real, parse_int, same_name, upper, add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
@@ -163,6 +164,11 @@ contains
          item%at = i
          call field_real(state%lines(i), f, 2, 'target factor', item%value(1), error)
          if (allocated(error)) return
+         if (abs(item%value(1)) > MAX_LOAD_MAGNITUDE) then
+            call line_error(state, i, 'target factor above 1e100 in magnitude (see '// &
+               'doc/deck.md, Limits)', error)
+            return
+         end if
          call push_item(step%items, step%n, item)
       end do
       allocate (tmp(n + 1))
