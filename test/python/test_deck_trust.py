@@ -165,3 +165,21 @@ def test_singular_on_split_node_names_the_joints_line(tmp_path):
     assert r.returncode == 2, r.stderr
     assert "gmsh_interface.inp:14: [*JOINTS] the stiffness matrix is singular" in r.stderr, \
         r.stderr
+
+
+def test_huge_modjoin_increment_stops_fast(tmp_path):
+    # reproducer found by tools/mutate_decks.py (a hang beyond its 20 s bound): the pile of
+    # input/s6/s6_modjoin_ag.inp pulled by a factor of -2147483649 asked MODJOIN for ~1e12
+    # substeps per increment; such an increment is now refused and cut, and the run stops
+    src = ROOT / "input" / "s6" / "s6_modjoin_ag.inp"
+    lines = src.read_text().splitlines()
+    assert lines[471] == "pull, 0.05"
+    lines[471] = "pull, -2147483649"
+    for sib in src.parent.iterdir():
+        if sib.name != src.name:
+            (tmp_path / sib.name).symlink_to(sib)
+    deck = tmp_path / src.name
+    deck.write_text("\n".join(lines) + "\n")
+    r = run(deck, out=tmp_path / "s6.h5")  # the 120 s timeout of run() is the hang bound
+    assert r.returncode == 3, r.stderr
+    assert "did not converge" in r.stderr
