@@ -22,6 +22,7 @@ program tester
    use test_io_deck_fields, only: collect_io_deck_fields
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
+   use test_io_deck_trust, only: collect_io_deck_trust
    use test_massif_materials_factory, only: collect_massif_materials_factory
    use test_pecjoin_elements, only: collect_pecjoin_elements
    use test_pecjoin_patch, only: collect_pecjoin_patch
@@ -110,6 +111,7 @@ program tester
    suites = [suites, new_testsuite('massif_q8r', collect_massif_q8r)]
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
+   suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -36,7 +36,7 @@ module pecplas_cli
    public :: pecplas_main, run_deck
 
    character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
-      '[--restart OLD.h5] | '// &
+      '[--restart OLD.h5] [--strict] | '// &
       'pecplas --advise DECK [--advise-node N]'
 
 contains
@@ -45,7 +45,7 @@ contains
    integer function pecplas_main(args) result(code)
       character(len=*), intent(in) :: args(:)
       character(len=:), allocatable :: deck, outfile, restart
-      logical :: quiet, advise
+      logical :: quiet, advise, strict
       type(model_t) :: model
       type(problem_t) :: problem
       integer :: i, node, ios, stop_after
@@ -55,6 +55,7 @@ contains
       advise = .false.
       node = 0
       quiet = .false.
+      strict = .false.
       deck = ''
       outfile = ''
       i = 0
@@ -63,6 +64,8 @@ contains
          select case (trim(args(i)))
          case ('--quiet', '-q')
             quiet = .true.
+         case ('--strict')
+            strict = .true.
          case ('--advise')
             advise = .true.
          case ('--advise-node')
@@ -105,6 +108,8 @@ contains
                'output/<deck>.h5) with an XDMF sidecar.'
             write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early '// &
                '(or results not writable), 4 interrupted (SIGTERM, SIGINT, SIGHUP).'
+            write (*, '(a)') '  --strict: any warning (printed as "file:line: warning: ...") '// &
+               'is an input error: exit 2, no results file.'
             write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
                'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
                'Q4/T3 decks), prints their cost and error (reference: the finest, NEWTON x2 '// &
@@ -135,19 +140,21 @@ contains
          code = advise_main(deck, node)
          return
       end if
-      code = run_deck(deck, outfile, quiet, model, problem, restart, stop_after)
+      code = run_deck(deck, outfile, quiet, model, problem, restart, stop_after, strict)
    end function pecplas_main
 
    !> Runs `deck`, writing `outfile` (empty: the deck's *OUTPUT file or output/<deck>.h5).
    !> Returns the exit code; `model` and `problem` hold the final state (for tests).
    !> restart: a results file of the same deck to continue from (its last converged
-   !> increment); stop_after: stop as interrupted after that many increments (test hook).
-   integer function run_deck(deck, outfile_in, quiet, model, problem, restart, stop_after) &
-         result(code)
+   !> increment); stop_after: stop as interrupted after that many increments (test hook);
+   !> strict: warnings found before the run are input errors (exit 2, no results file).
+   integer function run_deck(deck, outfile_in, quiet, model, problem, restart, stop_after, &
+         strict) result(code)
       character(len=*), intent(in) :: deck, outfile_in
       logical, intent(in) :: quiet
       character(len=*), intent(in), optional :: restart
       integer, intent(in), optional :: stop_after
+      logical, intent(in), optional :: strict
       type(model_t), intent(out) :: model
       type(problem_t), intent(out) :: problem
       type(results_file_t) :: results
@@ -168,6 +175,10 @@ contains
          model%solver%threads = threads%n
       end if
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
+      if (.not. allocated(error)) call model%warnings%print(0)
+      if (.not. allocated(error) .and. present(strict)) then
+         if (strict) call model%warnings%as_error(error)
+      end if
       if (.not. allocated(error) .and. present(restart)) then
          if (len(restart) > 0) call restore_restart(restart, model, problem, error)
       end if
@@ -225,7 +236,8 @@ contains
          write (0, '(a)') COMMAND//': warning: '//warning
          if (len(message) > 0) message = message//'; '
          message = message//'warning: '//warning
-         call results%set_warnings(warning, error)
+         call model%warnings%add(warning)
+         call results%warnings(model%warnings%lines(), error)
          if (allocated(error)) then
             code = command_error(COMMAND, EXIT_INTERNAL, 'cannot write results: '//error%text())
             return

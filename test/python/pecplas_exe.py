@@ -85,3 +85,8 @@ def exe_cmd(target):
 def pecplas_cmd():
     """Command prefix (a list) to which the deck and options of `pecplas` are appended."""
     return exe_cmd("pecplas")
+
+
+def program_cmd(name):
+    """Command prefix of another program of the project (e.g. "pecplas-path")."""
+    return exe_cmd(name)

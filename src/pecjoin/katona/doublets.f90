@@ -13,6 +13,7 @@ module pecjoin_katona_doublets
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, input_error
    use pecplas_model, only: model_t
+   use pecplas_model_provenance, only: place_t
    use pecjoin_state, only: joint_state_t
    use pecjoin_laws_type, only: MODE_OPEN
    use pecjoin_laws_katona, only: katona_law_t
@@ -38,6 +39,7 @@ contains
       real(wp), allocatable :: s0(:, :)
       real(wp) :: size_model, tol, n(2)
       integer :: s, k, k0
+      character(len=32) :: buf
       allocate (kt%node(2, 0), kt%set_of(0), kt%t(2, 0), kt%area(0), s0(2, 0))
       allocate (kt%mu(0), kt%cohesion(0), kt%tension(0))
       if (.not. allocated(model%joint_sets)) return
@@ -63,9 +65,12 @@ contains
          n = [-kt%t(2, k), kt%t(1, k)]
          kt%gap0(k) = dot_product(n, model%mesh%x(:, kt%node(2, k)) - model%mesh%x(:, kt%node(1, k)))
          if (kt%gap0(k) < -tol) then
-            call input_error(error, 'Katona doublet of joint set '// &
+            write (buf, '(i0,a,i0)') model%mesh%node_id(kt%node(1, k)), ', ', &
+               model%mesh%node_id(kt%node(2, k))
+            call input_error(error, 'Katona doublet (nodes '//trim(buf)//') of joint set '// &
                model%joint_sets(kt%set_of(k))%name//' starts interpenetrated: its face-2 node '// &
                'lies behind face 1 (swap the faces, or move the nodes)')
+            call locate_doublet(model, kt%set_of(k), kt%node(:, k), error)
             return
          end if
          if (kt%gap0(k) <= tol) then
@@ -170,5 +175,24 @@ contains
          wgt(j) = -dot_product(pt%d(2, 2*face1(j) - 1:2*face1(j)), pt%t)
       end do
    end function doublet_weights
+
+   !> Gives `error` the deck line of the first joint of set s holding both doublet nodes.
+   subroutine locate_doublet(model, s, nodes, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s, nodes(2)
+      type(error_t), intent(inout) :: error
+      type(place_t) :: p
+      character(len=:), allocatable :: keyword
+      integer :: e
+      associate (conn => model%joint_sets(s)%conn)
+         do e = 1, size(conn, 2)
+            if (any(conn(:, e) == nodes(1)) .and. any(conn(:, e) == nodes(2))) then
+               call model%provenance%joint(s, e, p, keyword)
+               call model%provenance%locate(error, p, keyword)
+               return
+            end if
+         end do
+      end associate
+   end subroutine locate_doublet
 
 end module pecjoin_katona_doublets

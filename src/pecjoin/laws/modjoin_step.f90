@@ -32,6 +32,8 @@ module pecjoin_laws_modjoin_step
       MJ_MECH, MJ_KC, MJ_RI, MJ_NC, MJ_BETAC, MJ_PREV, NSTATE_MJ, NSTATE_MJ_CYCLIC, MJ_STATE_NAMES
 
    integer, parameter :: MJ_INITIAL = 1, MJ_IMPROVED = 2, MJ_CYCLIC = 3
+   !> Substeps of one increment beyond which it is refused (the caller cuts it).
+   integer, parameter :: MAX_SUBSTEPS = 100000
    character(len=*), parameter :: MJ_VERSION_NAMES(3) = [character(len=15) :: &
       'MODJOIN_INITIAL', 'MODJOIN', 'MODJOIN_CYCLIC']
 
@@ -105,9 +107,15 @@ contains
          end if
       end if
       saved = state
+      ! an increment of more than MAX_SUBSTEPS substeps (100 mm at the default 0.001 mm) is
+      ! refused at once: the caller cuts it, instead of integrating for hours
+      ok = .false.
+      sigma = s0
+      tangent = jac(1:2, 4:5)
+      mode = MODE_STICK
+      if (.not. (maxval(abs(de))/this%substep <= real(MAX_SUBSTEPS, wp))) return
       ! the slack keeps n the same when the units are scaled (0.02/0.001 vs 2e-5/1e-6)
-      ! (capped: an absurd increment must not overflow the count)
-      n = max(1, ceiling(min(maxval(abs(de))/this%substep*(1.0_wp - 1.0e-10_wp), 1.0e7_wp)))
+      n = max(1, ceiling(maxval(abs(de))/this%substep*(1.0_wp - 1.0e-10_wp)))
       do attempt = 1, 4
          call substeps(this, s0, de, n, state, sigma, tangent, mode, ok)
          if (ok) return

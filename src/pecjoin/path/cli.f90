@@ -21,7 +21,8 @@ module pecjoin_path_cli
 
    public :: path_main, run_path_deck
 
-   character(len=*), parameter :: USAGE = 'usage: pecplas-path DECK [-o BASE] [--quiet]'
+   character(len=*), parameter :: USAGE = 'usage: pecplas-path DECK [-o BASE] [--quiet] '// &
+      '[--max-seconds S]'
 
 contains
 
@@ -31,8 +32,10 @@ contains
       character(len=:), allocatable :: deck, base
       type(path_result_t) :: res
       logical :: quiet
-      integer :: i
+      integer :: i, ios
+      real(wp) :: max_seconds
       quiet = .false.
+      max_seconds = 0.0_wp
       deck = ''
       base = ''
       i = 0
@@ -41,6 +44,15 @@ contains
          select case (trim(args(i)))
          case ('--quiet', '-q')
             quiet = .true.
+         case ('--max-seconds')
+            ios = 1
+            if (i < size(args)) read (args(i + 1), *, iostat=ios) max_seconds
+            if (ios /= 0 .or. .not. (max_seconds > 0.0_wp)) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --max-seconds needs a '// &
+                  'number of seconds > 0. '//USAGE)
+               return
+            end if
+            i = i + 1
          case ('-o', '--output')
             if (i == size(args)) then
                code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
@@ -54,6 +66,9 @@ contains
                'writes BASE.csv and BASE.h5'
             write (*, '(a)') '  (default: the *OUTPUT file of the deck, else output/<deck>).'
             write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 path stopped early.'
+            write (*, '(a)') '  --max-seconds S: stop after S seconds of wall time (exit 3, '// &
+               'files written with status "stopped", complete = 0).'
+            write (*, '(a)') '  A progress line with the time left is printed every 5 s.'
             code = EXIT_OK
             return
          case ('--version')
@@ -76,15 +91,18 @@ contains
          code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
          return
       end if
-      code = run_path_deck(deck, base, quiet, res)
+      code = run_path_deck(deck, base, quiet, res, max_seconds)
    end function path_main
 
    !> Runs the path deck `deck`, writing `base_in`.csv/.h5 (empty: *OUTPUT or
    !> output/<deck>); returns the exit code and the rows computed (for tests).
-   integer function run_path_deck(deck, base_in, quiet, res) result(code)
+   integer function run_path_deck(deck, base_in, quiet, res, max_seconds) result(code)
       character(len=*), intent(in) :: deck, base_in
       logical, intent(in) :: quiet
       type(path_result_t), intent(out) :: res
+      !> Wall-time limit (seconds, 0 or absent: none): the path then stops with status
+      !> 'stopped' (exit 3) and its files hold the increments done.
+      real(wp), intent(in), optional :: max_seconds
       type(path_deck_t) :: d
       type(error_t), allocatable :: error, run_err
       character(len=:), allocatable :: base
@@ -107,9 +125,15 @@ contains
       if (.not. quiet .and. len(d%law%describe()) > 0) write (*, '(a)') ' '//d%law%describe()
 
       call run_path(d%law, d%control, [d%sigma_n0, d%tau0], d%ks, d%targets, d%steps, res, &
-         run_err)
+         run_err, progress=.not. quiet, max_seconds=limit(max_seconds))
       call write_path_csv(base//'.csv', res, error)
-      if (.not. allocated(error)) call write_path_h5(base//'.h5', d, res, VERSION, error)
+      if (.not. allocated(error)) then
+         if (allocated(run_err)) then
+            call write_path_h5(base//'.h5', d, res, VERSION, error, 'stopped', run_err%text())
+         else
+            call write_path_h5(base//'.h5', d, res, VERSION, error, 'completed', '')
+         end if
+      end if
       if (allocated(error)) then
          code = command_error(COMMAND, EXIT_INTERNAL, 'cannot write results: '//error%text())
          return
@@ -126,6 +150,12 @@ contains
          trim(MODE_NAMES(res%mode(n)))
       code = EXIT_OK
    end function run_path_deck
+
+   pure real(wp) function limit(x)
+      real(wp), intent(in), optional :: x
+      limit = 0.0_wp
+      if (present(x)) limit = x
+   end function limit
 
    function num(x) result(s)
       real(wp), intent(in) :: x

@@ -10,6 +10,7 @@
 !> Everything that can be checked (law parameters, initial stress inside the strength) is
 !> checked here, before any output exists.
 module pecjoin_path_deck
+   use iso_fortran_env, only: int64
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error
    use pecplas_model_params, only: params_t
@@ -27,6 +28,8 @@ module pecjoin_path_deck
 
    !> Normal control of a path: constant normal load, displacement or stiffness.
    integer, parameter :: PATH_CNL = 1, PATH_CND = 2, PATH_CNS = 3
+   !> Increments of one path (STEPS x number of targets), doc/deck.md "Limits".
+   integer, parameter, public :: MAX_PATH_INCREMENTS = 1000000
    character(len=*), parameter :: PATH_NAMES(3) = [character(len=3) :: 'CNL', 'CND', 'CNS']
 
    type :: path_deck_t
@@ -283,6 +286,12 @@ contains
       if (size(deck%targets) == 0) call deck_error(error, lines(at)%file, lines(at)%line, &
          '*PATH', 'no target of eps_t: add a data line such as "2.0" (monotonic) or '// &
          '"2, -2, 2" (cycles)')
+      if (allocated(error)) return
+      ! one row of 7 columns per increment is kept in memory: a cap against typos
+      if (int(deck%steps, int64)*size(deck%targets) > MAX_PATH_INCREMENTS) &
+         call deck_error(error, lines(at)%file, lines(at)%line, '*PATH', 'STEPS x targets '// &
+         'must be <= '//itoa(MAX_PATH_INCREMENTS)//' increments, found '//itoa(deck%steps)// &
+         ' x '//itoa(size(deck%targets))//' (see doc/deck.md, Limits)')
    end subroutine read_path
 
    subroutine real_param(line, kw, key, required, value, error)

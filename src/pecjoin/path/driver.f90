@@ -17,6 +17,8 @@ module pecjoin_path_driver
    use pecjoin_laws_type, only: interface_law_t, MODE_STICK
    use pecjoin_laws_coulomb, only: plastic_slip
    use pecjoin_path_deck, only: PATH_CNL, PATH_CND, PATH_CNS, PATH_NAMES
+   use pecplas_driver_timers, only: wall_time
+   use pecplas_driver_progress_eta, only: progress_eta_t
    implicit none (type, external)
    private
 
@@ -38,15 +40,22 @@ contains
 
    !> Runs `law` from sigma0 = (sigma_n0, tau0) to the successive eps_t `targets`, each
    !> segment in `steps` equal increments; eps are measured from the initial state.
-   subroutine run_path(law, control, sigma0, ks, targets, steps, res, error)
+   !> With `progress`, a line with the time left is printed every 5 s; with
+   !> `max_seconds` > 0 the path stops (a run error) once that wall time is spent.
+   subroutine run_path(law, control, sigma0, ks, targets, steps, res, error, progress, &
+         max_seconds)
       class(interface_law_t), intent(in) :: law
       integer, intent(in) :: control, steps
       real(wp), intent(in) :: sigma0(2), ks, targets(:)
       type(path_result_t), intent(out) :: res
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: progress
+      real(wp), intent(in), optional :: max_seconds
       real(wp), allocatable :: state(:)
-      real(wp) :: sigma(2), sigma_new(2), eps(2), deps_t, deps_n
+      real(wp) :: sigma(2), sigma_new(2), eps(2), deps_t, deps_n, now
       integer :: n, k, seg, i, mode, iters
+      type(progress_eta_t) :: eta
+      character(len=32) :: buf
 
       n = steps*size(targets)
       allocate (res%step(0:n), res%mode(0:n), res%eps_t(0:n), res%eps_n(0:n), &
@@ -57,6 +66,7 @@ contains
       eps = 0.0_wp
       k = 0
       call record(res, k, eps, sigma, MODE_STICK, plastic_slip(law, state))
+      call eta%start(wall_time(), n)
       do seg = 1, size(targets)
          deps_t = (targets(seg) - eps(2))/steps
          do i = 1, steps
@@ -73,6 +83,19 @@ contains
             if (i == steps) eps(2) = targets(seg)
             sigma = sigma_new
             call record(res, k, eps, sigma, mode, plastic_slip(law, state))
+            now = wall_time()
+            if (present(max_seconds)) then
+               if (max_seconds > 0.0_wp .and. now - eta%t0 > max_seconds .and. k < n) then
+                  write (buf, '(g0.4)') max_seconds
+                  call run_error(error, 'time limit of '//trim(buf)//' s reached (--max-'// &
+                     'seconds); '//eta%line(k, now))
+                  call shrink(res, k)
+                  return
+               end if
+            end if
+            if (present(progress)) then
+               if (progress .and. eta%due(now)) write (*, '(a)') ' '//eta%line(k, now)
+            end if
          end do
       end do
    end subroutine run_path

@@ -41,11 +41,14 @@ contains
    end subroutine write_path_csv
 
    !> Writes `res` and the run's description to the HDF5 file `path`.
-   subroutine write_path_h5(path, deck, res, version, error)
+   !> Root attributes status ('completed' or 'stopped'), complete (1 or 0) and
+   !> status_message say whether the path reached its last target.
+   subroutine write_path_h5(path, deck, res, version, error, status, message)
       character(len=*), intent(in) :: path, version
       type(path_deck_t), intent(in) :: deck
       type(path_result_t), intent(in) :: res
       type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: status, message
       integer(hid_t) :: file, law
       integer :: err, i
       call h5_init(error)
@@ -60,6 +63,13 @@ contains
          call h5_attr(file, 'program', 'pecplas-path '//version, error)
          if (allocated(error)) exit body
          call h5_attr(file, 'deck_file', deck%file, error)
+         if (allocated(error)) exit body
+         call h5_attr(file, 'status', optval_text(status, 'completed'), error)
+         if (allocated(error)) exit body
+         call h5_attr(file, 'complete', merge(1, 0, optval_text(status, 'completed') == &
+            'completed'), error)
+         if (allocated(error)) exit body
+         call h5_attr(file, 'status_message', optval_text(message, ''), error)
          if (allocated(error)) exit body
          call h5_attr(file, 'deck_text', deck%raw, error)
          if (allocated(error)) exit body
@@ -120,5 +130,13 @@ contains
       name = '?'
       if (mode >= 1 .and. mode <= size(MODE_NAMES)) name = MODE_NAMES(mode)
    end function mode_name
+
+   function optval_text(x, default) result(s)
+      character(len=*), intent(in), optional :: x
+      character(len=*), intent(in) :: default
+      character(len=:), allocatable :: s
+      s = default
+      if (present(x)) s = x
+   end function optval_text
 
 end module pecjoin_path_writers

@@ -4,6 +4,8 @@
 module pecplas_driver_prepare
    use pecplas_error, only: error_t, deck_error
    use pecplas_model, only: model_t
+   use pecplas_model_provenance, only: place_t
+   use pecplas_model_geometry, only: check_geometry
    use pecplas_model_mesh_tools, only: orient_edge_sets, check_elements
    use pecplas_driver_problem, only: problem_t, setup_problem, initialise_stresses
    use pecplas_driver_stiffness, only: factorise_stiffness
@@ -25,7 +27,18 @@ contains
       integer, intent(out) :: nflipped
       type(joint_points_t), allocatable, intent(out) :: jpoints(:)
       type(error_t), allocatable, intent(out) :: error
-      call check_elements(model%mesh, nflipped, error)
+      type(place_t) :: p
+      character(len=:), allocatable :: keyword
+      integer :: bad(2)
+      call check_elements(model%mesh, nflipped, error, bad)
+      if (allocated(error)) then
+         if (bad(2) > 0) then
+            call model%provenance%element(bad(1), bad(2), p, keyword)
+            call model%provenance%locate(error, p, keyword, as_input=.true.)
+         end if
+         return
+      end if
+      call check_geometry(model, error)
       if (.not. allocated(error)) call orient_edge_sets(model%mesh, error)
       if (.not. allocated(error)) call setup_problem(model, problem, error)
       if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &

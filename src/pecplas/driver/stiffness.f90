@@ -5,6 +5,7 @@ module pecplas_driver_stiffness
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, ERR_SINGULAR
    use pecplas_model, only: model_t
+   use pecplas_model_provenance, only: place_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
@@ -56,6 +57,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: tangent_solver
       real(wp) :: t0
+      type(place_t) :: p
       logical :: separate
 
       separate = .false.
@@ -89,6 +91,12 @@ contains
                problem%dofs%describe(model, problem%solver%bad_equation)// &
                ' can move without resistance (a mechanism: missing supports in *BOUNDARY?). '// &
                'Solver said: '//error%message
+            ! name the line that defines that node
+            if (problem%solver%bad_equation >= 1 .and. &
+                problem%solver%bad_equation <= problem%dofs%neq) then
+               p = model%provenance%node(problem%dofs%eq_node(problem%solver%bad_equation))
+               call model%provenance%locate(error, p, trim(p%keyword))
+            end if
          end if
          return
       end if

@@ -16,6 +16,7 @@ module pecplas_fe_assembly
    use pecjoin_assembly, only: add_joint_stiffness, add_joint_forces
    use pecplas_driver_timers, only: wall_time
    use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
+   use pecplas_fe_element_context, only: element_context
    implicit none (type, external)
    private
 
@@ -93,7 +94,7 @@ contains
                if (tangent) d = st%tangent(:, :, :, bad)
                call element_stiffness(model, rules(s), set%conn(:, bad), d, ke, error)
                if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
-               call element_context(error, set%name, set%ids(bad))
+               call element_context(error, model, s, bad)
                return
             end if
          end associate
@@ -167,7 +168,7 @@ contains
                ! again, serially, for the message of the first failing element
                call element_forces(model, rules(s), s, bad, u, st, fe(:, bad), .false., t0, error)
                if (.not. allocated(error)) call fatal_error(error, 'element update failed')
-               call element_context(error, set%name, set%ids(bad))
+               call element_context(error, model, s, bad)
                return
             end if
             do e = 1, nel
@@ -223,15 +224,5 @@ contains
          end do
       end associate
    end subroutine element_forces
-
-   !> Prefixes an element-level error with the element set and user id.
-   subroutine element_context(error, set_name, id)
-      type(error_t), allocatable, intent(inout) :: error
-      character(len=*), intent(in) :: set_name
-      integer, intent(in) :: id
-      character(len=32) :: buf
-      write (buf, '(i0)') id
-      error%message = 'element '//trim(buf)//' of set '//set_name//': '//error%message
-   end subroutine element_context
 
 end module pecplas_fe_assembly

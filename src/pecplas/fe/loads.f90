@@ -4,6 +4,7 @@ module pecplas_fe_loads
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_model, only: model_t
+   use pecplas_fe_element_context, only: element_context
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_massif_element_matrices, only: massif_body_force
    use pecplas_massif_edge_load, only: edge_pressure_forces
@@ -81,7 +82,10 @@ contains
             xe = model%mesh%x(:, set%conn(:, e))
             call massif_body_force(rules(s), model%analysis%kind, model%analysis%thickness, &
                xe, bf, fe, error)
-            if (allocated(error)) return
+            if (allocated(error)) then
+               call element_context(error, model, s, e)
+               return
+            end if
             do j = 1, nn
                force(:, set%conn(j, e)) = force(:, set%conn(j, e)) + fe(2*j - 1:2*j)
             end do

@@ -13,6 +13,7 @@
 !> Edge sets keep Gmsh's direction and elements their node order: call check_elements and
 !> orient_edge_sets (pecplas_model_mesh_tools) once the whole mesh is assembled.
 module pecplas_io_gmsh
+   use iso_fortran_env, only: int64
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_model_mesh, only: mesh_t
@@ -117,6 +118,12 @@ contains
       integer :: n, i
       call sc%get_int(n, kw, error)
       if (allocated(error)) return
+      ! a name line takes at least 8 bytes ('d t "n"' + newline)
+      if (n < 0 .or. n > sc%remaining()/8) then
+         call sc%fail(error, kw, itoa(n)//' physical names announced, more than the rest of'// &
+            ' the file can hold (truncated file or wrong count?)')
+         return
+      end if
       allocate (g%names(max(n, 0)))
       do i = 1, n
          call sc%get_int(g%names(i)%dim, kw, error)
@@ -140,6 +147,13 @@ contains
          call sc%get_int(counts(d), '$Entities', error)
          if (allocated(error)) return
       end do
+      ! an entity line takes at least 8 bytes (tag, a bounding box, a count)
+      if (any(counts < 0) .or. sum(int(counts, int64)) > sc%remaining()/8) then
+         call sc%fail(error, '$Entities', 'entity counts '//itoa(counts(0))//' '// &
+            itoa(counts(1))//' '//itoa(counts(2))//' '//itoa(counts(3))//' do not fit in'// &
+            ' the rest of the file (truncated file or wrong count?)')
+         return
+      end if
       do d = 0, 2
          call read_entity_list(sc, d, counts(d), tag, ptr, phys, error)
          if (allocated(error)) return
@@ -177,6 +191,10 @@ contains
          end do
          if (.not. allocated(error)) call sc%get_int(nph, kw, error)
          if (allocated(error)) return
+         if (nph < 0 .or. nph > sc%remaining()/2) then
+            call sc%fail(error, kw, 'bad physical tag count '//itoa(nph))
+            return
+         end if
          call grow(phys, np + nph)
          do j = 1, nph
             call sc%get_int(phys(np + j), kw, error)
@@ -217,6 +235,13 @@ contains
       nnode = h(2)
       if (nnode < 0) then
          call sc%fail(error, kw, 'negative node count')
+         return
+      end if
+      ! a node takes at least 8 bytes ("t" + newline + "x y z" + newline)
+      if (nnode > sc%remaining()/8) then
+         call sc%fail(error, kw, itoa(nnode)//' nodes announced, but the rest of the file ('// &
+            itoa64(sc%remaining())//' bytes) holds at most '//itoa64(sc%remaining()/8)// &
+            ' (truncated file or wrong count?)')
          return
       end if
       allocate (mesh%x(2, nnode), mesh%node_id(nnode))
@@ -274,14 +299,28 @@ contains
       type(gmsh_data_t), intent(inout) :: g
       type(error_t), allocatable, intent(out) :: error
       character(len=*), parameter :: kw = '$Elements'
-      integer :: h(4), nblock, b, edim, gtype, nb, ie, npe, i, j, nb0, nc0, tag
+      integer :: h(4), nblock, b, edim, gtype, nb, ie, npe, i, j, nb0, nc0, tag, nel, seen
       call get_ints(sc, kw, h, error)
       if (allocated(error)) return
-      nblock = h(1)
+      nblock = h(1); nel = h(2); seen = 0
+      ! an element takes at least 4 bytes ("t n" + newline), a block header 8
+      if (nblock < 0 .or. nel < 0 .or. nel > sc%remaining()/4 .or. &
+          nblock > sc%remaining()/8) then
+         call sc%fail(error, kw, itoa(nblock)//' blocks and '//itoa(nel)// &
+            ' elements announced, but the rest of the file ('//itoa64(sc%remaining())// &
+            ' bytes) cannot hold them (truncated file or wrong count?)')
+         return
+      end if
       do b = 1, nblock
          call get_ints(sc, kw, h, error)
          if (allocated(error)) return
          edim = h(1); gtype = h(3); nb = h(4)
+         if (nb < 0 .or. seen + nb > nel) then
+            call sc%fail(error, kw, 'bad entity block header: '//itoa(nb)//' elements, '// &
+               itoa(seen)//' already read of the '//itoa(nel)//' announced')
+            return
+         end if
+         seen = seen + nb
          ie = 0
          if (edim >= 0 .and. edim <= 2) ie = g%ents(edim)%lookup%index(h(2))
          if (.not. g%used(edim, ie)) then
@@ -313,8 +352,20 @@ contains
             nc0 = nc0 + npe
          end do
       end do
+      if (seen /= nel) then
+         call sc%fail(error, kw, itoa(nel)//' elements announced, '//itoa(seen)//' found')
+         return
+      end if
       call expect(sc, '$EndElements', error)
    end subroutine read_elements
+
+   pure function itoa64(n) result(s)
+      integer(int64), intent(in) :: n
+      character(len=:), allocatable :: s
+      character(len=24) :: buf
+      write (buf, '(i0)') n
+      s = trim(buf)
+   end function itoa64
 
    pure function unsupported_hint(edim) result(s)
       integer, intent(in) :: edim

@@ -36,6 +36,7 @@ module pecplas_io_scanner
       procedure :: get_word => scanner_get_word
       procedure :: get_name => scanner_get_name
       procedure :: skip_lines => scanner_skip_lines
+      procedure :: remaining => scanner_remaining
       procedure :: fail => scanner_fail
    end type scanner_t
 
@@ -61,6 +62,10 @@ contains
       if (n > 0) read (u, iostat=ios, iomsg=msg) this%buf
       close (u)
       if (ios /= 0) call input_error(error, 'cannot read '''//path//''': '//trim(msg))
+      ! skip a UTF-8 byte order mark
+      if (n >= 3) then
+         if (this%buf(1:3) == achar(239)//achar(187)//achar(191)) this%pos = 4
+      end if
    end subroutine scanner_open
 
    !> Moves to the next token; .false. at end of file.
@@ -270,6 +275,13 @@ contains
       w = this%buf(this%t1 + 1:p - 1)
       this%pos = p + 1
    end subroutine scanner_get_name
+
+   !> Bytes of the file after the cursor: a bound on what a count announced in a header
+   !> can hold, checked before allocating for it.
+   pure integer(int64) function scanner_remaining(this) result(n)
+      class(scanner_t), intent(in) :: this
+      n = max(len(this%buf, kind=int64) - this%pos + 1, 0_int64)
+   end function scanner_remaining
 
    !> Skips the rest of the current line, then `n` more lines.
    subroutine scanner_skip_lines(this, n, keyword, error)

@@ -118,14 +118,17 @@ contains
    !> Checks every element: known type, node numbers in range and distinct, non-zero area,
    !> convex quadrilaterals. Clockwise elements are renumbered counter-clockwise in place
    !> (midside nodes follow); `nflipped` counts them so the caller can report it.
-   subroutine check_elements(mesh, nflipped, error)
+   subroutine check_elements(mesh, nflipped, error, bad)
       type(mesh_t), intent(inout) :: mesh
       integer, intent(out) :: nflipped
       type(error_t), allocatable, intent(out) :: error
+      !> Set and element of the failing element ([0, 0] when none or not one element).
+      integer, intent(out), optional :: bad(2)
       integer :: s, j, i, k, nc, npe, nn
       integer :: c(8)
       real(wp) :: area, h2, xc(2, 4), e1(2), e2(2)
       nflipped = 0
+      if (present(bad)) bad = 0
       if (.not. allocated(mesh%esets)) return
       nn = mesh%nnode()
       do s = 1, size(mesh%esets)
@@ -138,6 +141,7 @@ contains
                return
             end if
             do j = 1, size(es%conn, 2)
+               if (present(bad)) bad = [s, j]
                c(1:npe) = es%conn(:, j)
                if (any(c(1:npe) < 1) .or. any(c(1:npe) > nn)) then
                   call fatal_error(error, 'element '//eid(es, j)//' of set '''//es%name// &
@@ -183,6 +187,7 @@ contains
             end do
          end associate
       end do
+      if (present(bad)) bad = 0
    end subroutine check_elements
 
    !> Orders the nodes of every edge of every edge set (end, end, [mid]) so that an element

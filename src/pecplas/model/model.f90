@@ -8,6 +8,8 @@ module pecplas_model
    use pecplas_model_joints, only: joint_set_t
    use pecplas_model_initial, only: initial_stress_t
    use pecjoin_laws_type, only: interface_law_box_t
+   use pecplas_model_provenance, only: provenance_t
+   use pecplas_warnings, only: warnings_t
    implicit none (type, external)
    private
 
@@ -32,6 +34,10 @@ module pecplas_model
       type(step_t), allocatable :: steps(:)
       type(solver_options_t) :: solver
       type(output_options_t) :: output
+      !> Deck line of every node, element and joint (for checks after reading).
+      type(provenance_t) :: provenance
+      !> Suspicious input found while reading and checking (pecplas_warnings).
+      type(warnings_t) :: warnings
    end type model_t
 
 end module pecplas_model

@@ -12,6 +12,7 @@ module pecplas_io_deck_lines
    public :: deck_line_t, read_deck_lines, read_text_file, join_path, dir_name
 
    character(len=*), parameter :: NL = new_line('a')
+   character(len=*), parameter :: BOM = achar(239)//achar(187)//achar(191)
 
 contains
 
@@ -59,6 +60,10 @@ contains
                "cannot read include file '"//path//"'")
          end if
          return
+      end if
+      ! a UTF-8 byte order mark (written by some Windows editors) is not part of the text
+      if (len(text) >= 3) then
+         if (text(1:3) == BOM) text = text(4:)
       end if
       raw = raw//'** ---- file: '//path//NL//text
       if (len(text) > 0) then

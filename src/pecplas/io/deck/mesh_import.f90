@@ -2,7 +2,7 @@
 !> model mesh when the mesh is built (after the deck nodes, before the deck element sets),
 !> so that deck keywords can use its node ids and set names.
 module pecplas_io_deck_mesh_import
-   use pecplas_error, only: error_t
+   use pecplas_error, only: error_t, ERR_INPUT
    use pecplas_io_deck_fields, only: itoa
    use pecplas_io_deck_lines, only: join_path, dir_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error
@@ -42,6 +42,14 @@ contains
       call read_gmsh(file, mesh, error)
       if (allocated(error)) then
          if (.not. allocated(error%message)) error%message = ''
+         ! a file that cannot be opened (a directory...) has no line of its own
+         if (error%line <= 0) then
+            error%file = state%lines(block%at)%file
+            error%line = state%lines(block%at)%line
+            error%keyword = '*MESH'
+            error%kind = ERR_INPUT
+            return
+         end if
          error%message = error%message//' (mesh read by *MESH at '// &
             state%lines(block%at)%file//':'//itoa(state%lines(block%at)%line)//')'
          return

@@ -22,6 +22,8 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_resolve_joints, only: resolve_joints
    use pecjoin_laws_factory, only: law_registry_t, default_law_registry
    use pecplas_model, only: model_t
+   use pecplas_io_deck_record_places, only: record_places
+   use pecplas_io_deck_usage, only: check_usage
    implicit none (type, external)
    private
 
@@ -108,6 +110,9 @@ contains
       if (allocated(error)) return
       ! last: splitting nodes for generated joints extends supports and patterns
       call resolve_joints(state, model, error)
+      if (allocated(error)) return
+      call record_places(state, model)
+      call check_usage(state, model)
    end subroutine read_deck_with
 
    !> Hands one keyword block to its handler.

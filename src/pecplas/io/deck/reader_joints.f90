@@ -95,7 +95,7 @@ contains
          call params%add(trim(LENGTH_UNIT_KEYS(i)), metres)
       end do
       do i = block%first, block%last
-         call read_pairs(state, i, params, error)
+         call read_pairs(state, i, params, error, model%warnings)
          if (allocated(error)) return
       end do
       call state%laws%new_law(upper(ltype), name, params, law, error)

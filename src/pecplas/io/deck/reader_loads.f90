@@ -2,6 +2,7 @@
 !> written and resolved by pecplas_io_deck_resolve_loads once the mesh is built.
 module pecplas_io_deck_reader_loads
    use pecplas_kinds, only: wp
+   use pecplas_io_deck_caps, only: MAX_LOAD_MAGNITUDE
    use pecplas_error, only: error_t
    use pecplas_io_deck_fields, only: field_t, split_fields, field_real, check_count, &
       parse_int, same_name, upper, add_name
@@ -198,6 +199,11 @@ contains
          end if
       end select
       if (allocated(error)) return
+      if (any(abs(item%value) > MAX_LOAD_MAGNITUDE)) then
+         call line_error(state, at, 'load value above 1e100 in magnitude (see doc/deck.md, '// &
+            'Limits)', error)
+         return
+      end if
       call push_item(pat%items, pat%n, item)
    end subroutine read_load_line
 

@@ -10,6 +10,8 @@ module pecplas_io_deck_reader_materials
    use pecplas_io_deck_reader_mesh, only: check_name
    use pecplas_model, only: model_t
    use pecplas_model_params, only: params_t
+   use pecplas_warnings, only: warnings_t
+   use pecplas_strings, only: decimal_text
    use pecplas_massif_materials_type, only: material_t, material_box_t
    implicit none (type, external)
    private
@@ -63,7 +65,7 @@ contains
       params%keyword = '*MATERIAL'
       allocate (params%keys(0), params%values(0))
       do i = block%first, block%last
-         call read_pairs(state, i, params, error)
+         call read_pairs(state, i, params, error, model%warnings)
          if (allocated(error)) return
       end do
       call state%registry%new_material(upper(mtype), name, params, mat, error)
@@ -79,11 +81,13 @@ contains
    end subroutine read_material
 
    !> One data line of `KEY = value` pairs (also used by *INTERFACE_LAW).
-   subroutine read_pairs(state, at, params, error)
+   subroutine read_pairs(state, at, params, error, warnings)
       type(deck_state_t), intent(in) :: state
       integer, intent(in) :: at
       type(params_t), intent(inout) :: params
       type(error_t), allocatable, intent(out) :: error
+      !> Receives suspicious values (an angle in (0, 1) degree: radians by mistake?).
+      type(warnings_t), intent(inout), optional :: warnings
       type(field_t), allocatable :: f(:)
       real(wp) :: value
       logical :: ok
@@ -119,9 +123,25 @@ contains
             return
          end if
          call params%add(f(j)%s, value)
+         if (present(warnings)) call check_angle(state, at, upper(f(j)%s), value, warnings)
          j = j + 3
       end do
    end subroutine read_pairs
+
+   !> PHI and PSI are in degrees: a value in (0, 1) is most likely radians.
+   subroutine check_angle(state, at, key, value, warnings)
+      type(deck_state_t), intent(in) :: state
+      integer, intent(in) :: at
+      character(len=*), intent(in) :: key
+      real(wp), intent(in) :: value
+      type(warnings_t), intent(inout) :: warnings
+      if (key /= 'PHI' .and. key /= 'PSI') return
+      if (.not. (value > 0.0_wp .and. value < 1.0_wp)) return
+      call warnings%add(key//' = '//decimal_text(value, 6)//' degree is below 1 degree: '// &
+         'angles are in degrees (radians by mistake? '//decimal_text(value, 6)//' rad = '// &
+         decimal_text(value*180.0_wp/acos(-1.0_wp), 2)//' degrees)', state%lines(at)%file, &
+         state%lines(at)%line)
+   end subroutine check_angle
 
    !> *SECTION, SET=eset, MATERIAL=name -- no data lines; resolved at the end.
    subroutine read_section(state, block, error)

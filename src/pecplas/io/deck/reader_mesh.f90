@@ -190,7 +190,8 @@ contains
          k = size(state%nsets)
          state%nsets(k)%name = name
          state%nsets(k)%at = block%at
-         allocate (state%nsets(k)%ids(0), state%nsets(k)%where(0))
+         allocate (state%nsets(k)%ids(0), state%nsets(k)%upto(0), state%nsets(k)%step(0), &
+            state%nsets(k)%where(0))
       end if
 
       associate (ns => state%nsets(k))
@@ -211,9 +212,7 @@ contains
                      itoa(first)//', last = '//itoa(last), error)
                   return
                end if
-               do id = first, last, step
-                  call add_id(ns, id, i)
-               end do
+               call add_id(ns, first, i, last, step)
             else
                do j = 1, size(f)
                   call positive_id(state, i, f, j, 'node id', id, error)
@@ -322,13 +321,21 @@ contains
          itoa(id), error)
    end subroutine positive_id
 
-   pure subroutine add_id(ns, id, at)
+   !> Appends id (or the range id, id + step, ..., upto) read at line `at`.
+   pure subroutine add_id(ns, id, at, upto, step)
       type(raw_nset_t), intent(inout) :: ns
       integer, intent(in) :: id, at
+      integer, intent(in), optional :: upto, step
       ns%n = ns%n + 1
       call grow_int(ns%ids, ns%n)
+      call grow_int(ns%upto, ns%n)
+      call grow_int(ns%step, ns%n)
       call grow_int(ns%where, ns%n)
       ns%ids(ns%n) = id
+      ns%upto(ns%n) = id
+      ns%step(ns%n) = 1
+      if (present(upto)) ns%upto(ns%n) = upto
+      if (present(step)) ns%step(ns%n) = step
       ns%where(ns%n) = at
    end subroutine add_id
 

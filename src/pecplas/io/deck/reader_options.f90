@@ -3,6 +3,8 @@
 module pecplas_io_deck_reader_options
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
+   use pecplas_io_deck_caps, only: MAX_INCREMENTS, MAX_ITERATIONS_CAP, MAX_CUTS_CAP, &
+      MAX_LOAD_MAGNITUDE
    use pecplas_io_deck_fields, only: field_t, split_fields, field_real, &
       check_count, parse_real, parse_int, same_name, upper, add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
@@ -93,9 +95,11 @@ contains
          call line_error(state, block%at, 'TOLERANCE must be between 0 and 1', error)
          return
       end if
-      call param_int(state, block, 'MAX_ITERATIONS', 1, model%solver%max_iterations, error)
+      call param_int(state, block, 'MAX_ITERATIONS', 1, model%solver%max_iterations, error, &
+         MAX_ITERATIONS_CAP, 'a cap against runs that never end')
       if (allocated(error)) return
-      call param_int(state, block, 'MAX_CUTS', 0, model%solver%max_cuts, error)
+      call param_int(state, block, 'MAX_CUTS', 0, model%solver%max_cuts, error, &
+         MAX_CUTS_CAP, 'each cut halves the increment')
       if (allocated(error)) return
       call param_yes_no(state, block, 'FALLBACK', model%solver%fallback, error)
       if (allocated(error)) return
@@ -157,7 +161,8 @@ contains
             return
          end if
       end do
-      call param_int(state, block, 'INCREMENTS', 1, step%increments, error)
+      call param_int(state, block, 'INCREMENTS', 1, step%increments, error, MAX_INCREMENTS, &
+         'a cap against runs of hours: split the step or use fewer increments')
       if (allocated(error)) return
       call read_step_control(state, block, step, error)
       if (allocated(error)) return
@@ -175,6 +180,11 @@ contains
          item%at = i
          call field_real(state%lines(i), f, 2, 'target factor', item%value(1), error)
          if (allocated(error)) return
+         if (abs(item%value(1)) > MAX_LOAD_MAGNITUDE) then
+            call line_error(state, i, 'target factor above 1e100 in magnitude (see '// &
+               'doc/deck.md, Limits)', error)
+            return
+         end if
          call push_item(step%items, step%n, item)
       end do
       allocate (tmp(n + 1))
@@ -265,13 +275,16 @@ contains
    end subroutine param_real
 
    !> Integer parameter, kept unchanged when absent; error below `minimum`.
-   subroutine param_int(state, block, key, minimum, value, error)
+   subroutine param_int(state, block, key, minimum, value, error, maximum, why)
       type(deck_state_t), intent(in) :: state
       type(deck_block_t), intent(in) :: block
       character(len=*), intent(in) :: key
       integer, intent(in) :: minimum
       integer, intent(inout) :: value
       type(error_t), allocatable, intent(out) :: error
+      !> Documented cap (doc/deck.md, Limits) and the reason given with the error.
+      integer, intent(in), optional :: maximum
+      character(len=*), intent(in), optional :: why
       character(len=:), allocatable :: text
       integer :: v
       logical :: ok, found
@@ -287,6 +300,13 @@ contains
          call line_error(state, block%at, key//' must be >= '//itoa(minimum)//', found '// &
             itoa(v), error)
          return
+      end if
+      if (present(maximum)) then
+         if (v > maximum) then
+            call line_error(state, block%at, key//' must be <= '//itoa(maximum)//', found '// &
+               itoa(v)//' ('//why//'; see doc/deck.md, Limits)', error)
+            return
+         end if
       end if
       value = v
    end subroutine param_int

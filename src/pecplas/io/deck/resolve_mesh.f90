@@ -2,6 +2,7 @@
 !> user id -> internal number lookup, element sets with internal connectivity, node sets
 !> and edge sets. Every unknown or repeated id is reported at the line that wrote it.
 module pecplas_io_deck_resolve_mesh
+   use iso_fortran_env, only: int64
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error
    use pecplas_io_deck_fields, only: itoa, same_name
@@ -224,7 +225,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(node_set_t) :: ns
       logical, allocatable :: seen(:)
-      integer :: i, j, n, node
+      integer :: i, j, n, node, id
+      integer(int64) :: count
       if (.not. allocated(state%nsets)) return
       allocate (seen(mesh%nnode()))
       do i = 1, size(state%nsets)
@@ -236,20 +238,33 @@ contains
             end if
             ns%name = raw%name
             if (allocated(ns%nodes)) deallocate (ns%nodes)
-            allocate (ns%nodes(raw%n))
+            ! a set holds each node once, so no range can list more ids than there are nodes
+            do j = 1, raw%n
+               count = (int(raw%upto(j), int64) - raw%ids(j))/raw%step(j) + 1
+               if (count > mesh%nnode()) then
+                  call line_error(state, raw%where(j), 'GENERATE range '//itoa(raw%ids(j))// &
+                     ', '//itoa(raw%upto(j))//', '//itoa(raw%step(j))//' lists '// &
+                     itoa(int(count))//" ids, more than the "//itoa(mesh%nnode())// &
+                     ' nodes of the mesh (every id of a node set must be a node)', error)
+                  return
+               end if
+            end do
+            allocate (ns%nodes(mesh%nnode()))
             n = 0
             seen = .false.
             do j = 1, raw%n
-               node = state%node_lookup%index(raw%ids(j))
-               if (node == 0) then
-                  call line_error(state, raw%where(j), 'undefined node '//itoa(raw%ids(j))// &
-                     " in node set '"//raw%name//"': no *NODES line defines it", error)
-                  return
-               end if
-               if (seen(node)) cycle
-               seen(node) = .true.
-               n = n + 1
-               ns%nodes(n) = node
+               do id = raw%ids(j), raw%upto(j), raw%step(j)
+                  node = state%node_lookup%index(id)
+                  if (node == 0) then
+                     call line_error(state, raw%where(j), 'undefined node '//itoa(id)// &
+                        " in node set '"//raw%name//"': no *NODES line defines it", error)
+                     return
+                  end if
+                  if (seen(node)) cycle
+                  seen(node) = .true.
+                  n = n + 1
+                  ns%nodes(n) = node
+               end do
             end do
             ns%nodes = ns%nodes(1:n)
             call append_nset(mesh, ns)

@@ -31,11 +31,13 @@ module pecplas_io_deck_state
       integer, allocatable :: ids(:), conn(:, :), where(:)
    end type raw_eset_t
 
-   !> Node ids of one set, where(k) = line of id k.
+   !> Node ids of one set as ranges ids(k), ids(k) + step(k), ..., upto(k) (upto = ids and
+   !> step = 1 for a single id), where(k) = line of range k. GENERATE ranges are expanded
+   !> only when the mesh is built, after their size is checked against its node count.
    type :: raw_nset_t
       character(len=:), allocatable :: name
       integer :: at = 0, n = 0
-      integer, allocatable :: ids(:), where(:)
+      integer, allocatable :: ids(:), upto(:), step(:), where(:)
    end type raw_nset_t
 
    !> Edges as node ids (3, n); nen = 2 or 3 nodes per edge, the same for the whole set

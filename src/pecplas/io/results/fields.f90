@@ -71,6 +71,12 @@ contains
                call check_array3(f%stress, [4, ngauss(s), layout%sets(s)%nel], &
                   where//'stress of set '//name, error)
                if (allocated(error)) return
+               ! what is written must be checked too: stress_mean is a derived array
+               if (.not. all(ieee_is_finite(stress_mean(f%stress)))) then
+                  call fatal_error(error, where//'stress_mean of set '//name// &
+                     ' has a non-finite value')
+                  return
+               end if
             end if
             if (strains) then
                call check_array3(f%strain, [4, ngauss(s), layout%sets(s)%nel], &
@@ -203,7 +209,8 @@ contains
    pure function stress_mean(stress) result(mean)
       real(wp), intent(in) :: stress(:, :, :)
       real(wp), allocatable :: mean(:, :)
-      mean = sum(stress, dim=2)/real(size(stress, 2), wp)
+      ! dividing first keeps the mean of finite stresses finite (the sum may overflow)
+      mean = sum(stress/real(size(stress, 2), wp), dim=2)
    end function stress_mean
 
    !> (2, n) -> (3, n) with a zero third row.

@@ -1,8 +1,7 @@
 !> The results file of a run (HDF5), written while the run goes on:
 !>   /            attributes program, version, format_version, title, units, deck_file,
 !>                deck_text, analysis, thickness, threads, created, status, complete,
-!>                status_message (+ finished, and completed when status = 'completed';
-!>                warnings when the run has any, e.g. displacements too large for small strain)
+!>                status_message, warnings (+ finished, and completed when status = 'completed')
 !>   /mesh        see pecplas_io_results_mesh
 !>   /history     one row per converged increment: step, increment, global_increment, time,
 !>                iterations, residual, cpu_time, fields (1 = field group written) and
@@ -88,7 +87,7 @@ module pecplas_io_results_file
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
       procedure :: write_limit => results_write_limit
-      procedure :: set_warnings => results_set_warnings
+      procedure :: warnings => results_warnings
       procedure :: write_restart => results_write_restart
       procedure :: is_open => results_is_open
       procedure :: working_path => results_working_path
@@ -294,7 +293,31 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'status', 'running', error)
       if (.not. allocated(error)) call h5_attr(file, 'complete', 0, error)
       if (.not. allocated(error)) call h5_attr(file, 'status_message', '', error)
+      if (.not. allocated(error)) call write_warnings(file, model%warnings%lines(), error)
    end subroutine write_root
+
+   !> Replaces the root attribute `warnings` of an open file by `list` (the deck's warnings
+   !> and those found during the run, e.g. by the driver), one "file:line: warning: text"
+   !> string each.
+   subroutine results_warnings(this, list, error)
+      class(results_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: list(:)
+      type(error_t), allocatable, intent(out) :: error
+      if (this%file < 0) then
+         call fatal_error(error, 'results file: warnings written to a file not open')
+         return
+      end if
+      call write_warnings(this%file, list, error)
+   end subroutine results_warnings
+
+   !> Root attribute `warnings`: one string per warning, "file:line: warning: text" (an
+   !> empty list when there is none). Written again with the whole list when more come.
+   subroutine write_warnings(file, list, error)
+      integer(hid_t), intent(in) :: file
+      character(len=*), intent(in) :: list(:)
+      type(error_t), allocatable, intent(out) :: error
+      call h5_attr(file, 'warnings', list, error)
+   end subroutine write_warnings
 
    subroutine create_history(file, model, error)
       integer(hid_t), intent(in) :: file
@@ -501,19 +524,6 @@ contains
          error)
       call h5_close_group(g)
    end subroutine results_write_limit
-
-   !> Stores `text` (warnings of the run, one per line) as the root attribute `warnings`;
-   !> call before `finish`. Files without warnings have no such attribute.
-   subroutine results_set_warnings(this, text, error)
-      class(results_file_t), intent(inout) :: this
-      character(len=*), intent(in) :: text
-      type(error_t), allocatable, intent(out) :: error
-      if (this%file <= 0) then
-         call fatal_error(error, 'results file is not open')
-         return
-      end if
-      call h5_attr(this%file, 'warnings', text, error)
-   end subroutine results_set_warnings
 
    !> Replaces the /restart group with `data` (pecplas_io_results_restart).
    subroutine results_write_restart(this, data, error)
