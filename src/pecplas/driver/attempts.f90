@@ -20,6 +20,7 @@ module pecplas_driver_attempts
       METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_driver_residual, only: free_part
    use pecplas_strings, only: itoa
+   use pecplas_driver_progress_eta, only: progress_eta_t
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: limit_point_t
    use pecjoin_katona_increment, only: katona_increment
@@ -40,6 +41,8 @@ module pecplas_driver_attempts
       real(wp) :: k_first = 0.0_wp
       !> Where the load had its maximum, when the run stops at a limit load.
       type(limit_point_t) :: limit
+      !> Time-left estimate, printed every few seconds of a long run (not with --quiet).
+      type(progress_eta_t) :: eta
    end type run_t
 
 contains
@@ -172,6 +175,8 @@ contains
       if (out%line_searches > 0) how = how//'  ls '//itoa(out%line_searches)
       if (control == 1) how = how//'  arc'
       call progress_line(model, problem, istep, inc, out%tau, out%iterations, out%residual, how)
+      if (run%eta%due(wall_time())) write (*, '(a)') ' progress: '// &
+         run%eta%line(problem%increments, wall_time())
    end subroutine accept_increment
 
 end module pecplas_driver_attempts

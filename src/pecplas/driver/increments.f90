@@ -24,6 +24,7 @@ module pecplas_driver_increments
       END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_io_results_file, only: results_file_t
    use pecplas_strings, only: itoa
+   use pecplas_driver_timers, only: wall_time
    use pecplas_signals, only: interrupt_requested, interrupt_signal
    implicit none (type, external)
    private
@@ -47,6 +48,7 @@ contains
 
       call cpu_time(run%cpu_start)
       run%quiet = quiet
+      call run%eta%start(wall_time(), sum(model%steps%increments), 10.0_wp)
       status = 'completed'
       message = 'all steps completed'
       ! the initial stresses are in equilibrium with their own nodal forces
