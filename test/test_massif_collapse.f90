@@ -200,7 +200,7 @@ contains
       ! the root attribute `warnings` is a list of strings (tested through h5py in
       ! test_results_file.py); the status message, also in the file, carries the same text
       warnings = ''
-      if (index(message, 'warning: ') > 0) warnings = message(index(message, 'warning: '):)
+      if (index(message, 'warning: ') > 0) warnings = message(index(message, 'warning: ') + 9:)
       call rd%close()
    end subroutine read_ending
 
