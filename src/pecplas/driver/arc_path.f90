@@ -28,9 +28,10 @@ module pecplas_driver_arc_path
       END_MAX = 5, END_FAILED = 6, END_UNLOADED = 7, END_INTERRUPTED = 8
 
    !> The path has become flat when |current stiffness parameter| stays below this for
-   !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau).
+   !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
+   !> limit is where the plateau began, traced FLAT_COUNT - 1 increments beyond.
    real(wp), parameter :: SP_FLAT = 2.0e-3_wp
-   integer, parameter :: FLAT_COUNT = 2
+   integer, parameter :: FLAT_COUNT = 3
    !> A maximum counts once the load has fallen in this many increments after it.
    integer, parameter :: BEYOND_PEAK = 2
 
@@ -57,6 +58,10 @@ module pecplas_driver_arc_path
       integer :: peak_increment = 0, beyond = 0
       real(wp), allocatable :: peak_factors(:)
       logical :: flat = .false.
+      !> Plateau: first increment of the flat run, its step fraction and factors.
+      integer :: flat_increment = 0
+      real(wp) :: tau_flat = 0.0_wp
+      real(wp), allocatable :: flat_factors(:)
       character(len=:), allocatable :: reason
    end type arc_end_t
 
@@ -151,6 +156,11 @@ contains
                res%beyond = res%beyond + 1
             end if
             nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
+            if (nflat == 1) then
+               res%flat_increment = problem%increments
+               res%tau_flat = tau
+               res%flat_factors = problem%state%factors
+            end if
             res%flat = nflat >= FLAT_COUNT
             if (landed) then
                res%kind = END_TARGET

@@ -268,27 +268,32 @@ contains
       character(len=:), allocatable, intent(inout) :: status, message
       integer :: p
       status = 'limit load'
-      run%limit%kind = merge('flat  ', 'passed', res%flat .and. res%beyond < 2)
-      run%limit%kind = trim(run%limit%kind)
       run%limit%step = istep
-      run%limit%global_increment = res%peak_increment
-      run%limit%fraction = res%tau_peak
       run%limit%stiffness_parameter = res%sp
-      run%limit%pattern_factors = res%peak_factors
       message = 'limit load in step '//itoa(istep)//' ('//step%name//'): '
-      if (run%limit%kind == 'passed') then
+      if (res%beyond >= 2 .or. .not. res%flat) then
+         run%limit%kind = 'passed'
+         run%limit%global_increment = res%peak_increment
+         run%limit%fraction = res%tau_peak
+         run%limit%pattern_factors = res%peak_factors
          message = message//'the load-displacement path has a maximum at step fraction '// &
             num(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
             itoa(res%beyond)//' increments beyond it'
       else
+         run%limit%kind = 'flat'
+         run%limit%global_increment = res%flat_increment
+         run%limit%fraction = res%tau_flat
+         run%limit%pattern_factors = res%flat_factors
          message = message//'the load-displacement path is flat (current stiffness '// &
-            'parameter '//num(res%sp)//') from step fraction '//num(res%tau_peak)// &
-            ' (increment '//itoa(res%peak_increment)//')'
+            'parameter '//num(res%sp)//') from step fraction '//num(res%tau_flat)// &
+            ' (increment '//itoa(res%flat_increment)//'), traced '// &
+            itoa(problem%increments - res%flat_increment)//' increments along it'
       end if
       message = message//'; load factors at the peak:'
-      do p = 1, size(res%peak_factors)
-         if (res%peak_factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
-            message = message//' '//model%patterns(p)%name//' = '//num(res%peak_factors(p))
+      do p = 1, size(run%limit%pattern_factors)
+         if (run%limit%pattern_factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
+            message = message//' '//model%patterns(p)%name//' = '// &
+            num(run%limit%pattern_factors(p))
       end do
       if (problem%increments > 0) message = message//'; every converged increment is in '// &
          'the results file (/limit says where the peak is)'

@@ -46,6 +46,54 @@ def geometric(length, n, ratio):
     return out
 
 
+def build_mesh(elem, nf, bias, grow):
+    """Structured graded mesh of the half model: nodes [(x, y)], elements (node ids), the
+    grid coordinates xs, the id map ids[(i, j)] of the quadratic grid and its top row index."""
+    b, width, depth = 1.0, 5.0, 4.0
+    # fine zone: nf elements under the footing, 2 nf beyond its edge to x = 3b, nf down
+    # to y = -b, sizes growing by `bias` away from the footing edge (b, 0)
+    under = [b - x for x in geometric(b, nf, bias)][::-1]
+    beyond = [b + x for x in geometric(2.0 * b, 2 * nf, bias)]
+    last = beyond[-1] - beyond[-2]
+    far = graded(3.0 * b, width, last, grow, 3.0 * b)
+    xs = under + beyond[1:] + far[1:]
+    down = geometric(b, nf, bias)
+    deep = graded(b, depth, down[-1] - down[-2], grow, b)
+    ys = [-y for y in down + deep[1:]][::-1]  # bottom to top
+    nx, ny = len(xs) - 1, len(ys) - 1
+
+    # quadratic grid: (2nx+1) x (2ny+1) points; Q8 skips the element centres
+    ids = {}
+    nodes = []
+    for j in range(2 * ny + 1):
+        for i in range(2 * nx + 1):
+            if elem == "Q8" and i % 2 == 1 and j % 2 == 1:
+                continue
+            x = xs[i // 2] if i % 2 == 0 else 0.5 * (xs[i // 2] + xs[i // 2 + 1])
+            y = ys[j // 2] if j % 2 == 0 else 0.5 * (ys[j // 2] + ys[j // 2 + 1])
+            ids[(i, j)] = len(nodes) + 1
+            nodes.append((x, y))
+    elements = []
+    for ej in range(ny):
+        for ei in range(nx):
+            i, j = 2 * ei, 2 * ej
+            if elem == "Q8":
+                corners = [(i, j), (i + 2, j), (i + 2, j + 2), (i, j + 2)]
+                mids = [(i + 1, j), (i + 2, j + 1), (i + 1, j + 2), (i, j + 1)]
+                elements.append([ids[p] for p in corners + mids])
+            else:
+                # alternate the diagonal so that the mesh has no preferred direction
+                if (ei + ej) % 2 == 0:
+                    tris = [[(i, j), (i + 2, j), (i + 2, j + 2)], [(i, j), (i + 2, j + 2), (i, j + 2)]]
+                else:
+                    tris = [[(i, j), (i + 2, j), (i, j + 2)], [(i + 2, j), (i + 2, j + 2), (i, j + 2)]]
+                for t in tris:
+                    mids = [((t[k][0] + t[(k + 1) % 3][0]) // 2, (t[k][1] + t[(k + 1) % 3][1]) // 2)
+                            for k in range(3)]
+                    elements.append([ids[p] for p in t + mids])
+    return nodes, elements, xs, ids, nx, ny
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--elem", choices=["Q8", "T6"], default="T6")
@@ -61,50 +109,8 @@ def main():
     ap.add_argument("-o", "--output", default="footing_t6.inp")
     a = ap.parse_args()
 
-    b, width, depth = 1.0, 5.0, 4.0
-    h = b / a.nf
-    # fine zone: nf elements under the footing, 2 nf beyond its edge to x = 3b, nf down
-    # to y = -b, sizes growing by `bias` away from the footing edge (b, 0)
-    under = [b - x for x in geometric(b, a.nf, a.bias)][::-1]
-    beyond = [b + x for x in geometric(2.0 * b, 2 * a.nf, a.bias)]
-    last = beyond[-1] - beyond[-2]
-    far = graded(3.0 * b, width, last, a.grow, 3.0 * b)
-    xs = under + beyond[1:] + far[1:]
-    down = geometric(b, a.nf, a.bias)
-    deep = graded(b, depth, down[-1] - down[-2], a.grow, b)
-    ys = [-y for y in down + deep[1:]][::-1]  # bottom to top
-    nx, ny = len(xs) - 1, len(ys) - 1
-
-    # quadratic grid: (2nx+1) x (2ny+1) points; Q8 skips the element centres
-    ids = {}
-    nodes = []
-    for j in range(2 * ny + 1):
-        for i in range(2 * nx + 1):
-            if a.elem == "Q8" and i % 2 == 1 and j % 2 == 1:
-                continue
-            x = xs[i // 2] if i % 2 == 0 else 0.5 * (xs[i // 2] + xs[i // 2 + 1])
-            y = ys[j // 2] if j % 2 == 0 else 0.5 * (ys[j // 2] + ys[j // 2 + 1])
-            ids[(i, j)] = len(nodes) + 1
-            nodes.append((x, y))
-    elements = []
-    for ej in range(ny):
-        for ei in range(nx):
-            i, j = 2 * ei, 2 * ej
-            if a.elem == "Q8":
-                corners = [(i, j), (i + 2, j), (i + 2, j + 2), (i, j + 2)]
-                mids = [(i + 1, j), (i + 2, j + 1), (i + 1, j + 2), (i, j + 1)]
-                elements.append([ids[p] for p in corners + mids])
-            else:
-                # alternate the diagonal so that the mesh has no preferred direction
-                if (ei + ej) % 2 == 0:
-                    tris = [[(i, j), (i + 2, j), (i + 2, j + 2)], [(i, j), (i + 2, j + 2), (i, j + 2)]]
-                else:
-                    tris = [[(i, j), (i + 2, j), (i, j + 2)], [(i + 2, j), (i + 2, j + 2), (i, j + 2)]]
-                for t in tris:
-                    mids = [((t[k][0] + t[(k + 1) % 3][0]) // 2, (t[k][1] + t[(k + 1) % 3][1]) // 2)
-                            for k in range(3)]
-                    elements.append([ids[p] for p in t + mids])
-
+    b = 1.0
+    nodes, elements, xs, ids, nx, ny = build_mesh(a.elem, a.nf, a.bias, a.grow)
     top = 2 * ny
     footing = [ids[(i, top)] for i in range(2 * nx + 1) if node_x(xs, i) <= b + 1e-9]
     left = [ids[(0, j)] for j in range(2 * ny + 1)]
