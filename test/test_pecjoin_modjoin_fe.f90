@@ -37,6 +37,7 @@ contains
                new_unittest('fe_cnl_goodman6', test_cnl_goodman6), &
                new_unittest('fe_cnl_spring', test_cnl_spring), &
                new_unittest('fe_cyclic_equals_point_driver', test_cyclic), &
+               new_unittest('fe_cnl_force_arc_length', test_force_arc), &
                new_unittest('fe_model_unit_required', test_model_unit), &
                new_unittest('fe_thin_layer_refused', test_thin_layer)]
    end subroutine collect_pecjoin_modjoin_fe
@@ -45,6 +46,15 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call compare('fe_cnl', 'III.2', 56.0_wp, [6.0_wp], error)
    end subroutine test_cnl
+
+   !> The same path under force control: the slider is pulled by a force above the peak of
+   !> tau with arc-length control, which follows tau through the peak and down the softening
+   !> branch to 6 mm of slip; the run ends as a limit load (the load fell after its maximum)
+   !> and every increment lies on the point driver's CNL curve (within 0.5 %).
+   subroutine test_force_arc(error)
+      type(error_t), allocatable, intent(out) :: error
+      call compare('fe_cnl_force_arc', 'III.2', 56.0_wp, [6.0_wp], error, 'limit load')
+   end subroutine test_force_arc
 
    !> The same with Q8 blocks and a GOODMAN6 joint (3 Gauss points).
    subroutine test_cnl_goodman6(error)
@@ -89,10 +99,12 @@ contains
 
    !> Runs deck `name`, reads (eps, sigma) of both joint points at every increment and
    !> compares them with the point driver on the targets (mm) at the same eps_t.
-   subroutine compare(name, table, sigma_n0, targets, error)
+   !> `status`: the status the run must end with ('completed' when absent).
+   subroutine compare(name, table, sigma_n0, targets, error, status)
       character(len=*), intent(in) :: name, table
       real(wp), intent(in) :: sigma_n0, targets(:)
       type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: status
       type(model_t) :: model
       type(problem_t) :: problem
       type(results_reader_t) :: rd
@@ -101,9 +113,19 @@ contains
       real(wp), allocatable :: eps(:, :, :), sig(:, :, :)
       real(wp) :: e_t, tau_ref, en_ref, dtau, den, dsn, prev
       integer :: code, n, k, ip, e, seg, nseg
+      character(len=:), allocatable :: ended
       call make_directories(DIR)
       code = run_deck(DATA//name//'.inp', DIR//'/'//name//'.h5', .true., model, problem)
-      call check(error, code == 0, name//': the run completes')
+      if (present(status)) then
+         call rd%open(DIR//'/'//name//'.h5', error)
+         if (allocated(error)) return
+         call rd%attribute('/', 'status', ended, error)
+         call rd%close()
+         if (allocated(error)) return
+         call check(error, ended == status, name//': the run ends as '//status//', not '//ended)
+      else
+         call check(error, code == 0, name//': the run completes')
+      end if
       if (allocated(error)) return
       call check(error, problem%iterations <= 3*problem%increments, name// &
          ': full Newton with the law tangent, at most 3 iterations per increment on average')

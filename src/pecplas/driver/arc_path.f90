@@ -58,10 +58,9 @@ module pecplas_driver_arc_path
       integer :: peak_increment = 0, beyond = 0
       real(wp), allocatable :: peak_factors(:)
       logical :: flat = .false.
-      !> Plateau: first increment of the flat run, its step fraction and factors.
+      !> Plateau: first increment of the flat run and its step fraction.
       integer :: flat_increment = 0
       real(wp) :: tau_flat = 0.0_wp
-      real(wp), allocatable :: flat_factors(:)
       character(len=:), allocatable :: reason
    end type arc_end_t
 
@@ -159,7 +158,6 @@ contains
             if (nflat == 1) then
                res%flat_increment = problem%increments
                res%tau_flat = tau
-               res%flat_factors = problem%state%factors
             end if
             res%flat = nflat >= FLAT_COUNT
             if (landed) then

@@ -280,14 +280,16 @@ contains
             num(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
             itoa(res%beyond)//' increments beyond it'
       else
+         ! the plateau: where it began, and the largest load traced on it
          run%limit%kind = 'flat'
          run%limit%global_increment = res%flat_increment
-         run%limit%fraction = res%tau_flat
-         run%limit%pattern_factors = res%flat_factors
+         run%limit%fraction = res%tau_peak
+         run%limit%pattern_factors = res%peak_factors
          message = message//'the load-displacement path is flat (current stiffness '// &
             'parameter '//num(res%sp)//') from step fraction '//num(res%tau_flat)// &
             ' (increment '//itoa(res%flat_increment)//'), traced '// &
-            itoa(problem%increments - res%flat_increment)//' increments along it'
+            itoa(problem%increments - res%flat_increment)//' increments along it, its '// &
+            'largest load at step fraction '//num(res%tau_peak)
       end if
       message = message//'; load factors at the peak:'
       do p = 1, size(run%limit%pattern_factors)

@@ -67,7 +67,9 @@ module pecplas_io_results_increment
 
    !> The largest load of a path that has a maximum: step, global increment and step
    !> fraction where it was reached, the pattern factors there, and how the maximum showed
-   !> ('passed': the load fell after it; 'flat': the current stiffness parameter ~ 0).
+   !> ('passed': the load fell after it; 'flat': the current stiffness parameter ~ 0 — then
+   !> the increment is where the plateau began and the fraction and factors are the largest
+   !> load traced on it).
    type :: limit_point_t
       character(len=:), allocatable :: kind
       integer :: step = 0, global_increment = 0
