@@ -198,3 +198,20 @@ def test_s6_modjoin_force_control_arc_length(tmp_path):
           f"uplift at 2.83 kN: arc-length {a * 1e3:.4f} mm, imposed uplift {d * 1e3:.4f} mm; "
           f"status {status}, largest pull {load.max():.3f} kN")
     assert abs(a / d - 1.0) <= 0.01
+
+
+def test_katona_limit_under_force_control(tmp_path):
+    """Katona friction pad pushed by 1.01 mu N: the limit load at mu N / T = 0.990099 (the
+    pad becomes a mechanism in full slip), under plain force control (the probe) and under
+    arc-length control."""
+    text = (ROOT / "test/data/katona/pad_slip.inp").read_text()
+    p, status, _, limit, _ = run(text, tmp_path, "pad_force")
+    assert status == "limit load", p.stderr
+    assert abs(limit["factors"][-1] / (60.0 / 60.6) - 1.0) <= 1e-4
+    arc = text.replace("*STEP, NAME=push, INCREMENTS=4",
+                       "*STEP, NAME=push, INCREMENTS=4, CONTROL=ARC_LENGTH, MAX_INCREMENTS=300")
+    assert arc != text
+    p, status, _, limit, _ = run(arc, tmp_path, "pad_arc")
+    print(f"Katona pad: arc-length limit {limit['factors'][-1]:.6f} (exact {60 / 60.6:.6f})")
+    assert status == "limit load", p.stderr
+    assert abs(limit["factors"][-1] / (60.0 / 60.6) - 1.0) <= 2e-3

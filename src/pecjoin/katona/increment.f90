@@ -25,10 +25,26 @@ module pecjoin_katona_increment
       apply_d_free, add_dt_free, build_flexibility
    use pecjoin_katona_states, only: solve_states
    use pecjoin_katona_results, only: katona_joint_fields
+   use pecplas_driver_arc_length, only: arc_root, arc_predictor_sign
    implicit none (type, external)
    private
 
-   public :: katona_increment
+   public :: katona_increment, katona_arc_t
+
+   !> Arc-length data of a Katona increment: the free step load q (per unit step fraction)
+   !> and its nodal form fq, the length dl and the previous converged increment (the
+   !> predictor's direction, may be empty); on exit the step
+   !> fraction reached, the free increment du, ok / reason.
+   type :: katona_arc_t
+      real(wp), allocatable :: q(:), fq(:, :), vq(:), du(:), du_prev(:)
+      real(wp) :: dl = 0.0_wp, tau = 0.0_wp, dtau = 0.0_wp
+      integer :: vq_stamp = -1
+      logical :: ok = .true.
+      character(len=:), allocatable :: reason
+   end type katona_arc_t
+
+   !> Fixed-point rounds of contact states and load step per outer iteration.
+   integer, parameter :: MAX_ARC_LOOPS = 30
 
    !> Residual accepted whatever the loads when below this fraction of the internal forces.
    real(wp), parameter :: ROUNDOFF_FLOOR = 1.0e-10_wp
@@ -37,8 +53,13 @@ contains
 
    !> Same contract as the driver's solve_increment: u, fint (without contact forces),
    !> reaction (with them) at the end; converged / blowup / iterations / residual.
+   !> Arc-length control (pecplas_driver_arc_length) when `arc` is present: the loads grow
+   !> from those of `factors` by dtau fq, dtau an unknown held by ||Δu|| = arc%dl; the
+   !> load-factor row and column border the same saddle-point system: per outer iteration
+   !> v_q = R^-1 q joins v_r = R^-1 r, and the contact states and dtau are solved together
+   !> by a short fixed point (states for dtau, dtau for the states' forces).
    subroutine katona_increment(model, problem, factors, fint_conv, newton, u, fint, reaction, &
-         converged, blowup, iters, residual, error)
+         converged, blowup, iters, residual, error, arc)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       real(wp), intent(in) :: factors(:), fint_conv(:, :)
@@ -49,8 +70,11 @@ contains
       integer, intent(out) :: iters
       real(wp), intent(out) :: residual
       type(error_t), allocatable, intent(out) :: error
+      type(katona_arc_t), intent(inout), optional :: arc
       real(wp), allocatable :: fext(:, :), up(:, :), fc(:, :), r(:), rhs(:), v(:), w(:), &
          zj(:, :), h(:)
+      !> Arc-length work vectors (arc_states, phi_at).
+      real(wp), allocatable :: vr(:), base(:), tmp(:), dirn(:)
       integer, allocatable :: flips(:)
       real(wp) :: rnorm, ref, t0
       integer :: p, i, d, k, nstates, nit, n2
@@ -138,20 +162,27 @@ contains
             t0 = wall_time()
             call problem%solver%solve(rhs, v, error)
             if (allocated(error)) return
-            call apply_d_free(kt, dofs, v, w)
             call relative_displacements(kt, u, zj)
             problem%time%solve = problem%time%solve + (wall_time() - t0)
-            t0 = wall_time()
-            call solve_states(kt, w, reshape(zj, [n2]), h, flips, nit, error)
-            kt%time_states = kt%time_states + (wall_time() - t0)
-            nstates = nstates + nit
-            if (allocated(error)) return
-            t0 = wall_time()
-            call add_dt_free(kt, dofs, -h, rhs)
-            call problem%solver%solve(rhs, v, error)
-            problem%time%solve = problem%time%solve + (wall_time() - t0)
-            if (allocated(error)) return
-            problem%solves = problem%solves + 2
+            if (present(arc)) then
+               call arc_states(arc, iters == 0, v, error)
+               if (allocated(error)) return
+               if (.not. arc%ok) return
+               fext = fext + arc%dtau*arc%fq
+            else
+               call apply_d_free(kt, dofs, v, w)
+               t0 = wall_time()
+               call solve_states(kt, w, reshape(zj, [n2]), h, flips, nit, error)
+               kt%time_states = kt%time_states + (wall_time() - t0)
+               nstates = nstates + nit
+               if (allocated(error)) return
+               t0 = wall_time()
+               call add_dt_free(kt, dofs, -h, rhs)
+               call problem%solver%solve(rhs, v, error)
+               problem%time%solve = problem%time%solve + (wall_time() - t0)
+               if (allocated(error)) return
+               problem%solves = problem%solves + 2
+            end if
             iters = iters + 1
             do k = 1, dofs%neq
                u(dofs%eq_dir(k), dofs%eq_node(k)) = u(dofs%eq_dir(k), dofs%eq_node(k)) + v(k)
@@ -176,6 +207,111 @@ contains
          if (allocated(error)) return
          call kt%commit()
       end associate
+
+   contains
+
+      !> One arc-length outer iteration: v = v_r on entry (R^-1 of the residual at the current
+      !> load), the displacement step on exit; arc%dtau the load step, arc%ok false when the
+      !> constraint has no real root or the states and dtau do not settle.
+      subroutine arc_states(arc, first, v, err)
+         type(katona_arc_t), intent(inout) :: arc
+         logical, intent(in) :: first
+         real(wp), intent(inout) :: v(:)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp) :: dtau, dnew, x, xa, fa, fb, fx
+         integer :: loop, side
+         logical :: bracketed
+         associate (kt => problem%katona, dofs => problem%dofs)
+            if (.not. allocated(arc%vq) .or. arc%vq_stamp /= problem%factorisations) then
+               if (allocated(arc%vq)) deallocate (arc%vq)
+               allocate (arc%vq(dofs%neq))
+               call problem%solver%solve(arc%q, arc%vq, err)
+               if (allocated(err)) return
+               arc%vq_stamp = problem%factorisations
+               problem%solves = problem%solves + 1
+            end if
+            if (.not. allocated(arc%du)) allocate (arc%du(dofs%neq), source=0.0_wp)
+            vr = v
+            dtau = 0.0_wp
+            dirn = arc%du
+            if (first) then
+               dtau = arc%dl/norm2(arc%vq)
+               if (allocated(arc%du_prev)) dtau = arc_predictor_sign(arc%du_prev, arc%vq)*dtau
+               dirn = dtau*arc%vq
+            end if
+            if (allocated(tmp)) deallocate (tmp)
+            allocate (tmp(dofs%neq))
+            ! the constraint phi(x) = ||Δu + v(x)||^2 - dl^2, v(x) with the contact states of
+            ! load step x: fixed-point proposals (the quadratic's root for the states at x),
+            ! regula falsi (Illinois) once two iterates bracket the root
+            arc%ok = .false.
+            call phi_at(arc, dtau, fb, dnew, err)
+            if (allocated(err) .or. .not. arc%ok) return
+            xa = dtau
+            fa = fb
+            bracketed = .false.
+            side = 0
+            do loop = 1, MAX_ARC_LOOPS
+               if (abs(fb) <= 1.0e-10_wp*arc%dl**2 .and. abs(dnew - dtau) <= 1.0e-8_wp* &
+                   max(abs(dtau), 1.0e-12_wp)) exit
+               if (bracketed) then
+                  x = dtau - fb*(dtau - xa)/(fb - fa)
+               else
+                  x = dnew
+               end if
+               call phi_at(arc, x, fx, dnew, err)
+               if (allocated(err) .or. .not. arc%ok) return
+               if (fx*fb < 0.0_wp) then
+                  xa = dtau
+                  fa = fb
+                  bracketed = .true.
+                  side = 0
+               else if (bracketed) then
+                  ! the retained end stays: halve its value (Illinois)
+                  side = side + 1
+                  if (side >= 1) fa = 0.5_wp*fa
+               end if
+               dtau = x
+               fb = fx
+            end do
+            arc%ok = abs(fb) <= 1.0e-8_wp*arc%dl**2
+            if (.not. arc%ok) then
+               arc%reason = 'contact states and the arc-length load step do not settle'
+               return
+            end if
+            v = base + dtau*arc%vq
+            arc%du = arc%du + v
+            arc%tau = arc%tau + dtau
+            arc%dtau = dtau
+         end associate
+
+
+      end subroutine arc_states
+
+      !> Contact states for load step xx; base = v_r - R^-1 D^T h, phi of the constraint,
+      !> the quadratic's root for these states (arc%ok false when it has none).
+      subroutine phi_at(arc, xx, phi, root, e2)
+         type(katona_arc_t), intent(inout) :: arc
+         real(wp), intent(in) :: xx
+         real(wp), intent(out) :: phi, root
+         type(error_t), allocatable, intent(out) :: e2
+         associate (kt => problem%katona, dofs => problem%dofs)
+            call apply_d_free(kt, dofs, vr + xx*arc%vq, w)
+            call solve_states(kt, w, reshape(zj, [n2]), h, flips, nit, e2)
+            nstates = nstates + nit
+            if (allocated(e2)) return
+            tmp = 0.0_wp
+            call add_dt_free(kt, dofs, -h, tmp)
+            call problem%solver%solve(tmp, v, e2)
+            if (allocated(e2)) return
+            problem%solves = problem%solves + 1
+            base = vr + v
+            phi = sum((arc%du + base + xx*arc%vq)**2) - arc%dl**2
+            call arc_root(arc%du, base, arc%vq, arc%dl, root, arc%ok, dirn)
+            if (.not. arc%ok) arc%reason = 'the arc-length constraint has no real root'
+         end associate
+      end subroutine phi_at
+
    end subroutine katona_increment
 
    !> A material that cannot return cuts the increment (as in the driver).

@@ -6,8 +6,9 @@
 !> with dtau a root of  a dtau^2 + b dtau + c = 0,  a = v_q.v_q, b = 2 v_q.(Δu + v_r),
 !> c = (Δu + v_r).(Δu + v_r) - dl^2. Of the two roots the one whose new Δu makes the
 !> smallest angle with the Δu of the previous iteration is taken, so the path does not
-!> turn back on itself; no real root means the iteration cannot stay on the constraint
-!> (the caller shortens dl). The predictor's sign follows the previous converged increment
+!> turn back on itself; without a real root the iteration takes the vertex -b/(2a), the
+!> point of the line closest to the constraint, which the next iterations restore (the
+!> caller shortens dl when the increment still fails). The predictor's sign follows the previous converged increment
 !> (sign of Δu_prev . v_q), +1 for the first one.
 module pecplas_driver_arc_length
    use pecplas_kinds, only: wp
@@ -19,8 +20,11 @@ module pecplas_driver_arc_length
 contains
 
    !> dtau of the corrector (see the module); ok false when the roots are complex.
-   subroutine arc_root(du, vr, vq, dl, dtau, ok)
+   !> `direction` (default du): the increment the new one should not turn back from (the
+   !> predictor's direction when du is still zero).
+   subroutine arc_root(du, vr, vq, dl, dtau, ok, direction)
       real(wp), intent(in) :: du(:), vr(:), vq(:), dl
+      real(wp), intent(in), optional :: direction(:)
       real(wp), intent(out) :: dtau
       logical, intent(out) :: ok
       real(wp) :: a, b, c, disc, r1, r2, cos1, cos2, q
@@ -33,7 +37,14 @@ contains
       ok = .false.
       if (.not. (a > 0.0_wp)) return
       disc = b*b - 4.0_wp*a*c
-      if (disc < 0.0_wp) return
+      if (disc < 0.0_wp) then
+         ! no point of the line dtau -> du + v_r + dtau v_q lies on the sphere (a sharp turn
+         ! of the path, a change of slip or contact states): its point closest to the sphere,
+         ! the vertex of the quadratic; the next iterations restore the length
+         dtau = -b/(2.0_wp*a)
+         ok = dtau == dtau
+         return
+      end if
       ! roots without cancellation
       q = -0.5_wp*(b + sign(sqrt(disc), b))
       if (q /= 0.0_wp) then
@@ -43,8 +54,13 @@ contains
          r1 = 0.0_wp
          r2 = 0.0_wp
       end if
-      cos1 = dot_product(du, w + r1*vq)
-      cos2 = dot_product(du, w + r2*vq)
+      if (present(direction)) then
+         cos1 = dot_product(direction, w + r1*vq)
+         cos2 = dot_product(direction, w + r2*vq)
+      else
+         cos1 = dot_product(du, w + r1*vq)
+         cos2 = dot_product(du, w + r2*vq)
+      end if
       dtau = merge(r1, r2, cos1 >= cos2)
       ok = dtau == dtau
    end subroutine arc_root

@@ -34,6 +34,8 @@ module pecplas_driver_arc_path
    integer, parameter :: FLAT_COUNT = 3
    !> A maximum counts once the load has fallen in this many increments after it.
    integer, parameter :: BEYOND_PEAK = 2
+   !> Load-controlled step that tests a singular tangent for a mechanism (step fraction).
+   real(wp), parameter :: PROBE_STEP = 1.0e-3_wp
 
    type :: arc_request_t
       !> Start: step fraction of the converged state; pass: stop as soon as the path is
@@ -118,6 +120,24 @@ contains
                if (allocated(error)) return
                landed = out%converged
             end if
+            if (.not. out%converged .and. .not. landed .and. index(out%reason, 'singular') > 0) then
+               ! the states the arc iteration tried make the tangent singular: is the
+               ! structure a mechanism here, or did the iteration pick wrong states? A
+               ! load-controlled step a little further decides (it converges: go on)
+               call problem%state%rollback()
+               att%arc = .false.
+               att%tau1 = min(tau + PROBE_STEP, 1.0_wp)
+               call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+               if (allocated(error)) return
+               landed = out%converged .and. att%tau1 >= 1.0_wp
+               if (out%converged) then
+                  level = 0
+               else
+                  out%reason = 'the tangent with the next slip/contact states is singular and '// &
+                     'no equilibrium exists a little further (step fraction '// &
+                     trim(fraction_text(att%tau1))//'): '//out%reason
+               end if
+            end if
             if (.not. out%converged) then
                call problem%state%rollback()
                if (level >= model%solver%max_cuts .or. dl <= step%min_length*dl0) then
@@ -197,6 +217,12 @@ contains
          if (res%beyond >= BEYOND_PEAK .or. res%flat) res%kind = END_LIMIT
       end associate
    end subroutine trace_arc
+
+   pure function fraction_text(x) result(t)
+      real(wp), intent(in) :: x
+      character(len=24) :: t
+      write (t, '(g0.6)') x
+   end function fraction_text
 
    !> Length of an increment that would raise the step fraction by dtau along the response
    !> of the run's factorised matrix to the step's load.

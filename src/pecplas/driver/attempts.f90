@@ -18,12 +18,12 @@ module pecplas_driver_attempts
    use pecplas_driver_timers, only: wall_time
    use pecplas_driver_iterate, only: attempt_t, outcome_t, iterate_increment, &
       METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
-   use pecplas_driver_residual, only: free_part
+   use pecplas_driver_residual, only: free_part, load_vectors
    use pecplas_strings, only: itoa
    use pecplas_driver_progress_eta, only: progress_eta_t
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: limit_point_t
-   use pecjoin_katona_increment, only: katona_increment
+   use pecjoin_katona_increment, only: katona_increment, katona_arc_t
    implicit none (type, external)
    private
 
@@ -114,7 +114,7 @@ contains
       out%reason = reasons
    end subroutine try_chain
 
-   !> A load-controlled Katona increment (pecjoin_katona_increment).
+   !> A Katona increment (pecjoin_katona_increment), under load or arc-length control.
    subroutine katona_attempt(model, problem, run, att, u, fint, reaction, out, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
@@ -123,14 +123,33 @@ contains
       real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
       type(outcome_t), intent(out) :: out
       type(error_t), allocatable, intent(out) :: error
-      call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau1, &
-         run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
-         out%blowup, out%iterations, out%residual, error)
-      out%tau = att%tau1
+      type(katona_arc_t) :: arc
+      real(wp), allocatable :: fbase(:, :), up(:, :)
       out%reason = ''
+      if (att%arc) then
+         call load_vectors(problem, att%f0, att%ftarget, att%tau0, fbase, arc%fq, up)
+         arc%q = free_part(problem, arc%fq)
+         arc%dl = att%dl
+         arc%tau = att%tau0
+         if (allocated(att%du_prev)) then
+            if (size(att%du_prev) > 0) arc%du_prev = att%du_prev
+         end if
+         call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau0, &
+            run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
+            out%blowup, out%iterations, out%residual, error, arc)
+         out%tau = arc%tau
+         if (.not. arc%ok) out%reason = arc%reason
+      else
+         call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau1, &
+            run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
+            out%blowup, out%iterations, out%residual, error)
+         out%tau = att%tau1
+      end if
       if (allocated(error)) return
       if (out%converged) then
          out%du = free_part(problem, u - problem%state%u)
+      else if (len(out%reason) > 0) then
+         continue
       else if (out%blowup) then
          out%reason = 'the residual became infinite or NaN'
       else

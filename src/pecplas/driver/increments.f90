@@ -129,7 +129,7 @@ contains
                      '   no convergence: increment cut to ', dt, ' of the step'
                   cycle
                end if
-               if (.not. probe_allowed(model, problem, f0, ftarget)) then
+               if (.not. probe_allowed(model, f0, ftarget)) then
                   call diverged(step, istep, tau + dt, level, out%reason, status, message)
                   return
                end if
@@ -159,6 +159,14 @@ contains
                   cycle
                case (END_LIMIT, END_UNLOADED)
                   call limit_reached(model, problem, run, step, istep, res, status, message)
+               case (END_FAILED)
+                  if (mechanism(res)) then
+                     call limit_reached(model, problem, run, step, istep, res, status, message)
+                  else
+                     call diverged(step, istep, tau + dt, level, out%reason//'; the '// &
+                        'arc-length probe from fraction '//num(tau)//' '//probe_failure(res), &
+                        status, message)
+                  end if
                case default
                   call diverged(step, istep, tau + dt, level, out%reason//'; the arc-length '// &
                      'probe from fraction '//num(tau)//' '//probe_failure(res), status, message)
@@ -224,6 +232,13 @@ contains
             end if
          case (END_LIMIT, END_UNLOADED)
             call limit_reached(model, problem, run, step, istep, res, status, message)
+         case (END_FAILED)
+            if (mechanism(res)) then
+               call limit_reached(model, problem, run, step, istep, res, status, message)
+            else
+               call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
+                  message)
+            end if
          case (END_MAX)
             status = 'stopped'
             message = 'step '//itoa(istep)//' ('//step%name//'): MAX_INCREMENTS='// &
@@ -237,13 +252,12 @@ contains
    end subroutine arc_step
 
    !> A probe needs a growing force and no changing imposed displacement (unloading that
-   !> fails is no limit), the arc-length path (not with Katona contact), and a budget.
-   logical function probe_allowed(model, problem, f0, ftarget) result(ok)
+   !> fails is no limit), and a budget.
+   logical function probe_allowed(model, f0, ftarget) result(ok)
       type(model_t), intent(in) :: model
-      type(problem_t), intent(in) :: problem
       real(wp), intent(in) :: f0(:), ftarget(:)
       integer :: p
-      ok = model%solver%limit_probe > 0 .and. .not. problem%katona%active
+      ok = model%solver%limit_probe > 0
       if (.not. ok) return
       ok = .false.
       do p = 1, size(f0)
@@ -271,7 +285,17 @@ contains
       run%limit%step = istep
       run%limit%stiffness_parameter = res%sp
       message = 'limit load in step '//itoa(istep)//' ('//step%name//'): '
-      if (res%beyond >= 2 .or. .not. res%flat) then
+      if (mechanism(res)) then
+         ! the path rose to here; the next states make the tangent singular
+         run%limit%kind = 'mechanism'
+         run%limit%global_increment = res%peak_increment
+         run%limit%fraction = res%tau_peak
+         run%limit%pattern_factors = res%peak_factors
+         message = message//'the structure becomes a mechanism at step fraction '// &
+            num(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'): beyond it the '// &
+            'tangent with the next slip/contact states is singular and no equilibrium exists '// &
+            'a little further'
+      else if (res%beyond >= 2 .or. .not. res%flat) then
          run%limit%kind = 'passed'
          run%limit%global_increment = res%peak_increment
          run%limit%fraction = res%tau_peak
@@ -327,6 +351,16 @@ contains
             '(--stop-after-increments); continue with --restart'
       end if
    end subroutine interrupted_status
+
+   !> An arc-length path that rose to its last converged point and cannot go on because the
+   !> tangent with the next slip/contact states is singular, and a load-controlled step a
+   !> little further (1e-3 of the step) finds no equilibrium either: the load-displacement
+   !> path ends at a mechanism (a zero pivot: the limit of a rigid-plastic interface).
+   logical function mechanism(res)
+      type(arc_end_t), intent(in) :: res
+      mechanism = res%kind == END_FAILED .and. res%increments > 0 .and. res%beyond == 0 .and. &
+         index(res%reason, 'no equilibrium exists a little further') > 0
+   end function mechanism
 
    subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)
       type(step_t), intent(in) :: step

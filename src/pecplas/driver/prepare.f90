@@ -2,7 +2,7 @@
 !> set-up, default penalties, initial stresses, first factorisation, joint points), shared by
 !> the batch command (pecplas_cli: run_deck) and the advice mode (pecplas_driver_advise).
 module pecplas_driver_prepare
-   use pecplas_error, only: error_t, deck_error
+   use pecplas_error, only: error_t
    use pecplas_model, only: model_t
    use pecplas_model_provenance, only: place_t
    use pecplas_model_geometry, only: check_geometry
@@ -44,27 +44,8 @@ contains
       if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &
          problem%state%joints, error)
       if (.not. allocated(error)) call initialise_stresses(model, problem, error)
-      if (.not. allocated(error)) call check_arc_steps(model, problem, error)
       if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
       if (.not. allocated(error)) call joint_points(model, jpoints, error)
    end subroutine prepare_run
-
-   !> Arc-length control borders the stiffness with the load factor; with Katona contact the
-   !> contact rows already border it, and that combination is not available.
-   subroutine check_arc_steps(model, problem, error)
-      type(model_t), intent(in) :: model
-      type(problem_t), intent(in) :: problem
-      type(error_t), allocatable, intent(out) :: error
-      integer :: s
-      if (.not. problem%katona%active) return
-      do s = 1, size(model%steps)
-         if (model%steps(s)%arc_length) then
-            call deck_error(error, model%steps(s)%file, model%steps(s)%line, '*STEP', &
-               'CONTROL=ARC_LENGTH is not available with Katona contact (TYPE=KATONA): use '// &
-               'load control, or penalty joints')
-            return
-         end if
-      end do
-   end subroutine check_arc_steps
 
 end module pecplas_driver_prepare

@@ -67,7 +67,8 @@ module pecplas_io_results_increment
 
    !> The largest load of a path that has a maximum: step, global increment and step
    !> fraction where it was reached, the pattern factors there, and how the maximum showed
-   !> ('passed': the load fell after it; 'flat': the current stiffness parameter ~ 0 — then
+   !> ('passed': the load fell after it; 'mechanism': the tangent of the next states is
+   !> singular (a rigid-plastic interface in full slip); 'flat': the current stiffness parameter ~ 0 — then
    !> the increment is where the plateau began and the fraction and factors are the largest
    !> load traced on it).
    type :: limit_point_t
