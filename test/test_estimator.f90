@@ -31,7 +31,9 @@ contains
                new_unittest('lame_q8_plane', test_q8_plane), &
                new_unittest('lame_q8_axi', test_q8_axi), &
                new_unittest('lame_t6_plane', test_t6_plane), &
-               new_unittest('lame_t6_axi', test_t6_axi)]
+               new_unittest('lame_t6_axi', test_t6_axi), &
+               new_unittest('plastic_footing_finite', test_plastic), &
+               new_unittest('joint_uniform_traction', test_joint_uniform)]
    end subroutine collect_estimator
 
    !> Exact Lamé stresses at x in the analysis' components (xx, yy, zz, xy) or (rr, zz,
@@ -172,5 +174,56 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call check_estimator('T6', .true., 2.0_wp, error)
    end subroutine test_t6_axi
+
+   !> After plastic flow (Mohr–Coulomb footing): the estimate runs, is finite and positive,
+   !> and the global value is the root sum of squares of the element indicators (1e-12,
+   !> rounding). The geostatic state of the same deck (linear stresses) is checked in
+   !> test/python/test_estimator.py.
+   subroutine test_plastic(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(error_estimate_t) :: est
+      character(len=80) :: buf
+      call make_directories(DIR)
+      if (run_deck('test/data/estimator/footing_mc.inp', DIR//'/est_footing_mc.h5', .true., &
+         model, problem) /= 0) then
+         call fatal_error(error, 'run of test/data/estimator/footing_mc.inp failed')
+         return
+      end if
+      call check(error, any(problem%state%sets(1)%hist /= 0.0_wp), 'no plastic flow in the deck')
+      if (allocated(error)) return
+      call estimate_error(model, problem, est, error)
+      if (allocated(error)) return
+      write (buf, '(a,2es11.3)') ' eta, energy norm', est%eta, est%energy
+      write (*, '(a)') '        plastic footing'//trim(buf)
+      call check(error, est%eta > 0.0_wp .and. est%eta <= huge(1.0_wp) .and. &
+         all(est%sets(1)%eta >= 0.0_wp), 'estimate not finite and positive:'//trim(buf))
+      if (allocated(error)) return
+      call check(error, abs(sqrt(sum(est%sets(1)%eta**2)) - est%eta) <= 1.0e-12_wp*est%eta, &
+         'global estimate is not the root sum of squares of the indicators')
+   end subroutine test_plastic
+
+   !> Joint patch test (uniform contact pressure 100 at every joint point): a traction
+   !> field linear along the joint is recovered exactly, so every joint indicator vanishes
+   !> (1e-8 against a joint traction energy of order sqrt(100^2 / 1e5 * area) ~ 1).
+   subroutine test_joint_uniform(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(error_estimate_t) :: est
+      character(len=*), parameter :: DECK = 'test/data/joints/patch_goodman6_axi_gen.inp'
+      call make_directories(DIR)
+      if (run_deck(DECK, DIR//'/est_joint_patch.h5', .true., model, problem) /= 0) then
+         call fatal_error(error, 'run of '//DECK//' failed')
+         return
+      end if
+      call estimate_error(model, problem, est, error)
+      if (allocated(error)) return
+      call check(error, size(est%joints) == 1, 'one joint set expected')
+      if (allocated(error)) return
+      call check(error, size(est%joints(1)%eta) == size(model%joint_sets(1)%conn, 2) .and. &
+         maxval(est%joints(1)%eta) <= 1.0e-8_wp, 'joint indicator of a uniform traction not 0')
+   end subroutine test_joint_uniform
 
 end module test_estimator
