@@ -4,7 +4,10 @@
 !> the file holds one copy whatever the number of increments and a run killed while writing
 !> it keeps the previous one.
 module pecplas_io_results_restart
-   use hdf5, only: hid_t, h5lexists_f, h5ldelete_f, h5lmove_f, h5fflush_f, H5F_SCOPE_GLOBAL_F
+   use, intrinsic :: iso_c_binding, only: c_loc
+   use hdf5, only: hid_t, hsize_t, h5lexists_f, h5ldelete_f, h5lmove_f, h5fflush_f, &
+      H5F_SCOPE_GLOBAL_F, h5gopen_f, h5dopen_f, h5dclose_f, h5dget_space_f, h5sclose_f, &
+      h5sget_simple_extent_dims_f, h5dwrite_f, H5T_NATIVE_DOUBLE
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write
@@ -75,26 +78,64 @@ contains
       integer(hid_t), intent(in) :: file
       type(restart_data_t), intent(in) :: data
       type(error_t), allocatable, intent(out) :: error
-      character(len=*), parameter :: NEXT = RESTART_GROUP//'_next'
+      ! Two buffers that keep their datasets: the new state overwrites /restart_next in
+      ! place, a flush makes it durable, then the names swap by link moves. No storage is
+      ! freed and reused, so a process killed at any moment leaves the file's other data as
+      ! last flushed and /restart (or, inside the swap, /restart_next) complete.
+      character(len=*), parameter :: NEXT = RESTART_GROUP//'_next', SWAP = RESTART_GROUP//'_swap'
       integer(hid_t) :: g
       logical :: found
       integer :: i, err
       call h5lexists_f(file, NEXT, found, err)
-      if (found) call h5ldelete_f(file, NEXT, err)
-      call h5_group(file, NEXT, g, error)
-      if (allocated(error)) return
+      if (found) then
+         call h5gopen_f(file, NEXT, g, err)
+      else
+         call h5_group(file, NEXT, g, error)
+         if (allocated(error)) return
+      end if
       do i = 1, size(data%items)
-         call h5_write(g, data%items(i)%name, data%items(i)%v, error)
+         call overwrite(g, data%items(i)%name, data%items(i)%v, error)
          if (allocated(error)) exit
       end do
       call h5_close_group(g)
       if (allocated(error)) return
+      call h5fflush_f(file, H5F_SCOPE_GLOBAL_F, err)
       call h5lexists_f(file, RESTART_GROUP, found, err)
-      if (found) call h5ldelete_f(file, RESTART_GROUP, err)
-      call h5lmove_f(file, NEXT, file, RESTART_GROUP, err)
+      if (found) call h5lmove_f(file, RESTART_GROUP, file, SWAP, err)
+      if (err == 0) call h5lmove_f(file, NEXT, file, RESTART_GROUP, err)
+      if (err == 0 .and. found) call h5lmove_f(file, SWAP, file, NEXT, err)
       if (err == 0) call h5fflush_f(file, H5F_SCOPE_GLOBAL_F, err)
       if (err /= 0) call fatal_error(error, 'cannot write the restart group')
    end subroutine write_restart_group
+
+   !> Writes v as dataset `name` of group g: in place when it exists with the same length,
+   !> else (re)created.
+   subroutine overwrite(g, name, v, error)
+      integer(hid_t), intent(in) :: g
+      character(len=*), intent(in) :: name
+      real(wp), intent(in), target, contiguous :: v(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, space
+      integer(hsize_t) :: dims(1), maxdims(1)
+      logical :: found
+      integer :: err, e2
+      call h5lexists_f(g, name, found, err)
+      if (found) then
+         call h5dopen_f(g, name, dset, err)
+         call h5dget_space_f(dset, space, err)
+         call h5sget_simple_extent_dims_f(space, dims, maxdims, e2)
+         call h5sclose_f(space, e2)
+         if (e2 == 1 .and. dims(1) == size(v, kind=hsize_t)) then
+            if (size(v) > 0) call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, c_loc(v), err)
+            call h5dclose_f(dset, e2)
+            if (err /= 0) call fatal_error(error, 'HDF5: cannot write restart dataset '//name)
+            return
+         end if
+         call h5dclose_f(dset, e2)
+         call h5ldelete_f(g, name, err)
+      end if
+      call h5_write(g, name, v, error)
+   end subroutine overwrite
 
    !> Reads /restart of the results file `path` into `data` (items named by `names`) and its
    !> deck text. An error when the file cannot be read or holds no restart group.
