@@ -94,6 +94,8 @@ s2 s3: build
 	  echo "make $@: $$n exit $$rc"; \
 	done
 	@$(PYTHON) tools/plot_s2.py output
+	@if [ -d output/s2 ] && [ -d output/s3 ]; then $(PYTHON) tools/s2_report.py output; \
+	  else echo "make $@: run make s2 s3 to write the S2/S3 numbers of the docs"; fi
 # S4: every path deck, then the identification of the CNL curves (thesis III.17-III.20) and
 # the sensitivity table (III.4), then the figures; tools/s4_report.py then writes the S4
 # numbers of doc/validation.md. The tables are also kept as .txt files.
