@@ -124,6 +124,7 @@ s5: build
 	@$(FPM) run --profile release --target pecplas -- input/s5/s5_shear_box.inp \
 	  -o output/s5/s5_shear_box.h5 --quiet && echo "make s5: s5_shear_box completed"
 	@$(PYTHON) tools/plot_s5.py output/s5
+	@$(PYTHON) tools/s5_report.py output/s5
 
 s6: build
 	@mkdir -p output/s6
