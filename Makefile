@@ -135,6 +135,7 @@ s6: build
 	  echo "make s6: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
 	@$(PYTHON) tools/plot_s6.py output/s6
+	@$(PYTHON) tools/s6_report.py output/s6
 
 bench: deps
 	@bash tools/bench.sh
