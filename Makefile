@@ -84,6 +84,7 @@ s1: build
 	  echo "make s1: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
 	@$(PYTHON) tools/plot_s1.py output/s1
+	@$(PYTHON) tools/s1_report.py output/s1
 
 s2 s3: build
 	@mkdir -p output/$@
