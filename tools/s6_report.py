@@ -122,7 +122,17 @@ def blocks(runs):
         "of MODJOIN's limit, the end being out of MODJOIN's reach) "
         f"{a * 1e3:.2f} vs {b * 1e3:.2f} mm, {pct(a / b - 1, 0)} — Mohr–Coulomb's ψ = 6° "
         "dilates from the first slip, MODJOIN first contracts.")
-    return {"s6-results": "\n".join(rows), "s6-checks": checks, "s6-table-iv1": table,
+    dips = []
+    for n, label in (("s6_modjoin", "base"), ("s6_modjoin_k0", "K0 +50 %"),
+                     ("s6_modjoin_beta", "β +50 %")):
+        qn, un = head_curve(runs[n])
+        i = int(np.argmax(qn * (un < 0.5e-3)))            # the early local peak
+        j = i + int(np.argmin(qn[i:] + 1e9 * (un[i:] > 2e-3)))   # the dip after it
+        dips.append(f"{label}: peak {qn[i]:.2f} kN at {un[i] * 1e3:.2f} mm, dip {qn[j]:.2f} kN "
+                    f"at {un[j] * 1e3:.2f} mm")
+    dip = wrap("Imposed uplift, the early local peak of the head load and the dip after it: "
+               + "; ".join(dips) + ".")
+    return {"s6-results": "\n".join(rows), "s6-dip": dip, "s6-checks": checks, "s6-table-iv1": table,
             "s6-versus": versus}
 
 
