@@ -9,6 +9,7 @@
   to be emptied as they are rewritten.
 """
 import filecmp
+import json
 import re
 import subprocess
 import sys
@@ -111,3 +112,59 @@ def test_s4_generated_blocks_match_fresh_runs(tmp_path):
                         "--run", "--check", *bin_args], cwd=ROOT, capture_output=True,
                        text=True, timeout=600)
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def _s1_stability():
+    sys.path.insert(0, str(TOOLS))
+    import s1_stability
+    return s1_stability
+
+
+def test_s1_stability_table_is_the_stored_reference():
+    """The S1 stability table of doc/validation.md is rendered from
+    test/reference/s1_stability.json (72 runs take minutes: too slow to rerun here)."""
+    diff = _s1_stability().doc_block(check=True)
+    assert not diff, diff + "\nregenerate: python3 tools/s1_stability.py --doc"
+
+
+def test_s1_stability_reference_physics():
+    """The stored rows pass their physics checks: full Newton completes at every stiffness;
+    the penalty joint's interpenetration in compression is sigma_n / K_n, so interpenetration
+    times K_n / E1 is the same for every stiffness from 1e2 E1 on (5 %; softer joints carry
+    part of the load elsewhere); both tolerances give the same interpenetration (1e-3)."""
+    rows = json.loads(_s1_stability().REFERENCE.read_text())["rows"]
+    assert len(rows) == 9 * 3 * 2
+    newton = [r for r in rows if r["method"] == "newton"]
+    assert all(r["status"] == "completed" for r in newton)
+    scaled = [r["max_interpenetration_mm"] * 10.0 ** r["kn_over_e1_exp"] for r in newton
+              if r["kn_over_e1_exp"] >= 2]
+    assert max(scaled) == pytest.approx(min(scaled), rel=0.05), scaled
+    for r in rows:
+        twin = [s for s in rows if s["kn_over_e1_exp"] == r["kn_over_e1_exp"]
+                and s["status"] == "completed" and s["method"] == "newton"][0]
+        if r["status"] == "completed":
+            assert r["max_interpenetration_mm"] == pytest.approx(
+                twin["max_interpenetration_mm"], rel=1e-3)
+
+
+@pytest.mark.parametrize("exponent,method,fallback", [(0, "MODIFIED_NEWTON", "NO"),
+                                                      (1, "MODIFIED_NEWTON", "YES"),
+                                                      (4, "NEWTON", "YES")])
+def test_s1_stability_rows_rerun(tmp_path, exponent, method, fallback):
+    """A few rows of the stored table rerun (cheap ones, one per method): same status,
+    increment, method and iteration counts, interpenetration within 1e-3."""
+    s1 = _s1_stability()
+    cmd = exe_cmd("pecplas")
+    exe = cmd[0] if cmd[0] != "fpm" else subprocess.run(
+        ["fpm", "run", "--profile", "release", "--target", "pecplas", "--runner", "echo"],
+        cwd=ROOT, capture_output=True, text=True).stdout.split()[-1]
+    ref = json.loads(s1.REFERENCE.read_text())
+    want = [r for r in ref["rows"] if r["kn_over_e1_exp"] == exponent and r["tol"] == 1e-3
+            and r["method"] == method.lower() and r["fallback"] == fallback][0]
+    got = s1.row(exponent, method, fallback, 1e-3,
+                 *s1.run(exe, 10.0**exponent, method, 1e-3, ref["max_iterations"], tmp_path,
+                         fallback))
+    for key in ("status", "increments", "by_method", "max_iterations", "total_iterations"):
+        assert got[key] == want[key], key
+    assert got["max_interpenetration_mm"] == pytest.approx(want["max_interpenetration_mm"],
+                                                           rel=1e-3)
