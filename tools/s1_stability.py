@@ -64,7 +64,10 @@ def doc_block(check):
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from doc_blocks import update
     rows = json.loads(REFERENCE.read_text())["rows"]
-    return update(DOC, "s1_stability.py", {"s1-stability": table(rows)}, check)
+    note = ("<!-- from test/reference/s1_stability.json (written by tools/s1_stability.py "
+            "--json): its runs take minutes, too slow for make test; test/python/test_docs.py "
+            "reruns three rows against the file and checks its physics -->")
+    return update(DOC, "s1_stability.py", {"s1-stability": note + "\n" + table(rows)}, check)
 
 
 def run(exe, ratio, method, tol, maxit, tmp, fallback="YES"):

@@ -168,3 +168,19 @@ def test_s1_stability_rows_rerun(tmp_path, exponent, method, fallback):
         assert got[key] == want[key], key
     assert got["max_interpenetration_mm"] == pytest.approx(want["max_interpenetration_mm"],
                                                            rel=1e-3)
+
+
+def test_rounding_diff_tolerates_only_the_last_digit():
+    """The comparison of generated blocks: a number may differ by one unit of its last printed
+    digit (a value on a rounding boundary between builds), not more; counts must be equal;
+    words must be equal."""
+    sys.path.insert(0, str(TOOLS))
+    from doc_blocks import rounding_diff
+    assert rounding_diff("a 78.3 mm, 6.92e-01", "a 78.3 mm, 6.92e-01") == []
+    assert rounding_diff("a 78.3 mm, 6.92e-01", "a 78.2 mm, 6.93e-01") == []
+    assert rounding_diff("a 78.3 mm", "a 78.5 mm") != []
+    assert rounding_diff("a 6.92e-01", "a 6.94e-01") != []
+    assert rounding_diff("36 increments", "37 increments") != []
+    assert rounding_diff("−1.91 mm", "−1.92 mm") == []
+    assert rounding_diff("a 78.3 mm", "b 78.3 mm") != []
+    assert rounding_diff("one\ntwo", "one") != []
