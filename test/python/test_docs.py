@@ -136,6 +136,17 @@ def test_s1_stability_reference_physics():
     assert len(rows) == 9 * 3 * 2
     newton = [r for r in rows if r["method"] == "newton"]
     assert all(r["status"] == "completed" for r in newton)
+    # the default chain completes at every stiffness; only modified Newton alone may stop
+    assert all(r["status"] == "completed" for r in rows if r["fallback"] == "YES")
+    # modified Newton alone: each iteration removes ~E1 / (E1 + K_n h) of the error, so its
+    # count grows about tenfold per decade of K_n once K_n dominates (asserted: > 3x)
+    alone = {(r["kn_over_e1_exp"], r["tol"]): r for r in rows if r["fallback"] == "NO"}
+    for tol in (1e-3, 1e-4):
+        counts = [alone[(e, tol)]["total_iterations"] for e in range(4)
+                  if alone[(e, tol)]["status"] == "completed"]
+        assert len(counts) == 4 and all(b > 3 * a for a, b in zip(counts[1:], counts[2:])), \
+            counts
+        assert counts[1] > counts[0]
     scaled = [r["max_interpenetration_mm"] * 10.0 ** r["kn_over_e1_exp"] for r in newton
               if r["kn_over_e1_exp"] >= 2]
     assert max(scaled) == pytest.approx(min(scaled), rel=0.05), scaled
