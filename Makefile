@@ -84,6 +84,7 @@ s1: build
 	  echo "make s1: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
 	@$(PYTHON) tools/plot_s1.py output/s1
+	@$(PYTHON) tools/s1_report.py output/s1
 
 s2 s3: build
 	@mkdir -p output/$@
@@ -94,6 +95,8 @@ s2 s3: build
 	  echo "make $@: $$n exit $$rc"; \
 	done
 	@$(PYTHON) tools/plot_s2.py output
+	@if [ -d output/s2 ] && [ -d output/s3 ]; then $(PYTHON) tools/s2_report.py output; \
+	  else echo "make $@: run make s2 s3 to write the S2/S3 numbers of the docs"; fi
 # S4: every path deck, then the identification of the CNL curves (thesis III.17-III.20) and
 # the sensitivity table (III.4), then the figures; tools/s4_report.py then writes the S4
 # numbers of doc/validation.md. The tables are also kept as .txt files.
@@ -122,6 +125,7 @@ s5: build
 	@$(FPM) run --profile release --target pecplas -- input/s5/s5_shear_box.inp \
 	  -o output/s5/s5_shear_box.h5 --quiet && echo "make s5: s5_shear_box completed"
 	@$(PYTHON) tools/plot_s5.py output/s5
+	@$(PYTHON) tools/s5_report.py output/s5
 
 s6: build
 	@mkdir -p output/s6
@@ -132,6 +136,7 @@ s6: build
 	  echo "make s6: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
 	@$(PYTHON) tools/plot_s6.py output/s6
+	@$(PYTHON) tools/s6_report.py output/s6
 
 bench: deps
 	@bash tools/bench.sh

@@ -39,3 +39,49 @@ def update(doc, script, blocks, check):
     if new != old:
         path.write_text(new)
     return ""
+
+
+NUMBER = re.compile(r"[-+−]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def _last_digit(token):
+    """One unit of the last printed digit of a number token (0 for an integer: exact)."""
+    mantissa, _, exponent = token.partition("e")
+    if "." not in mantissa:
+        return 0.0
+    return 10.0 ** (-len(mantissa.split(".")[1]) + (int(exponent) if exponent else 0))
+
+
+def _value(token):
+    return float(token.replace("−", "-"))
+
+
+def rounding_diff(old, new):
+    """The lines of two versions of a text that differ by more than the rounding of their
+    numbers: the words must be equal and each number equal to within one unit of its last
+    printed digit (a value on a rounding boundary may round either way between builds);
+    integers (counts) must be equal."""
+    bad = []
+    old_lines, new_lines = old.splitlines(), new.splitlines()
+    if len(old_lines) != len(new_lines):
+        return ["".join(difflib.unified_diff(old.splitlines(True), new.splitlines(True),
+                                             "committed", "from the runs"))]
+    for a, b in zip(old_lines, new_lines):
+        if a == b:
+            continue
+        ta, tb = NUMBER.findall(a), NUMBER.findall(b)
+        same = NUMBER.sub("#", a) == NUMBER.sub("#", b) and len(ta) == len(tb) and all(
+            abs(_value(x) - _value(y)) <= 1.0001 * max(_last_digit(x), _last_digit(y))
+            and (_last_digit(x) > 0 or x == y) for x, y in zip(ta, tb))
+        if not same:
+            bad.append(f"- {a}\n+ {b}")
+    return bad
+
+
+def check_close(doc, script, blocks):
+    """Like `update(..., check=True)` but tolerant of the last printed digit (see
+    rounding_diff): returns the differing lines, empty when the doc matches the runs."""
+    old = Path(doc).read_text()
+    new = replace_blocks(old, script, blocks)
+    bad = rounding_diff(old, new)
+    return "" if not bad else f"{doc} (committed -) differs from the runs (+):\n" + "\n".join(bad)

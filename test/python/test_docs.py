@@ -9,6 +9,7 @@
   to be emptied as they are rewritten.
 """
 import filecmp
+import json
 import re
 import subprocess
 import sys
@@ -111,3 +112,89 @@ def test_s4_generated_blocks_match_fresh_runs(tmp_path):
                         "--run", "--check", *bin_args], cwd=ROOT, capture_output=True,
                        text=True, timeout=600)
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def _s1_stability():
+    sys.path.insert(0, str(TOOLS))
+    import s1_stability
+    return s1_stability
+
+
+def test_s1_stability_table_is_the_stored_reference():
+    """The S1 stability table of doc/validation.md is rendered from
+    test/reference/s1_stability.json (72 runs take minutes: too slow to rerun here)."""
+    diff = _s1_stability().doc_block(check=True)
+    assert not diff, diff + "\nregenerate: python3 tools/s1_stability.py --doc"
+
+
+def test_s1_stability_reference_physics():
+    """The stored rows pass their physics checks: full Newton completes at every stiffness;
+    the penalty joint's interpenetration in compression is sigma_n / K_n, so interpenetration
+    times K_n / E1 is the same for every stiffness from 1e2 E1 on (5 %; softer joints carry
+    part of the load elsewhere); both tolerances give the same interpenetration (1e-3)."""
+    rows = json.loads(_s1_stability().REFERENCE.read_text())["rows"]
+    assert len(rows) == 9 * 3 * 2
+    newton = [r for r in rows if r["method"] == "newton"]
+    assert all(r["status"] == "completed" for r in newton)
+    # the default chain completes at every stiffness; only modified Newton alone may stop
+    assert all(r["status"] == "completed" for r in rows if r["fallback"] == "YES")
+    # modified Newton alone: each iteration removes ~E1 / (E1 + K_n h) of the error, so its
+    # count grows about tenfold per decade of K_n once K_n dominates (asserted: > 3x)
+    alone = {(r["kn_over_e1_exp"], r["tol"]): r for r in rows if r["fallback"] == "NO"}
+    for tol in (1e-3, 1e-4):
+        counts = [alone[(e, tol)]["total_iterations"] for e in range(4)
+                  if alone[(e, tol)]["status"] == "completed"]
+        assert len(counts) == 4 and all(b > 3 * a for a, b in zip(counts[1:], counts[2:])), \
+            counts
+        assert counts[1] > counts[0]
+    scaled = [r["max_interpenetration_mm"] * 10.0 ** r["kn_over_e1_exp"] for r in newton
+              if r["kn_over_e1_exp"] >= 2]
+    assert max(scaled) == pytest.approx(min(scaled), rel=0.05), scaled
+    for r in rows:
+        twin = [s for s in rows if s["kn_over_e1_exp"] == r["kn_over_e1_exp"]
+                and s["status"] == "completed" and s["method"] == "newton"][0]
+        if r["status"] == "completed":
+            assert r["max_interpenetration_mm"] == pytest.approx(
+                twin["max_interpenetration_mm"], rel=1e-3)
+
+
+@pytest.mark.parametrize("exponent,method,fallback", [(0, "MODIFIED_NEWTON", "NO"),
+                                                      (2, "MODIFIED_NEWTON", "NO"),
+                                                      (4, "MODIFIED_NEWTON", "NO")])
+def test_s1_stability_rows_rerun(tmp_path, exponent, method, fallback):
+    """A few rows of the stored table rerun, the cheap ones (about a second each: modified
+    Newton alone, completed and diverged): same status, increment, method and iteration counts,
+    interpenetration within 1e-3. The rows of the chain and of full Newton cost 10-20 s each
+    (the attempts that fail before the cut run the later methods up to MAX_ITERATIONS = 10000)
+    and are rerun by `python3 tools/s1_stability.py --json` only."""
+    s1 = _s1_stability()
+    cmd = exe_cmd("pecplas")
+    exe = cmd[0] if cmd[0] != "fpm" else subprocess.run(
+        ["fpm", "run", "--profile", "release", "--target", "pecplas", "--runner", "echo"],
+        cwd=ROOT, capture_output=True, text=True).stdout.split()[-1]
+    ref = json.loads(s1.REFERENCE.read_text())
+    want = [r for r in ref["rows"] if r["kn_over_e1_exp"] == exponent and r["tol"] == 1e-3
+            and r["method"] == method.lower() and r["fallback"] == fallback][0]
+    got = s1.row(exponent, method, fallback, 1e-3,
+                 *s1.run(exe, 10.0**exponent, method, 1e-3, ref["max_iterations"], tmp_path,
+                         fallback))
+    for key in ("status", "increments", "by_method", "max_iterations", "total_iterations"):
+        assert got[key] == want[key], key
+    assert got["max_interpenetration_mm"] == pytest.approx(want["max_interpenetration_mm"],
+                                                           rel=1e-3)
+
+
+def test_rounding_diff_tolerates_only_the_last_digit():
+    """The comparison of generated blocks: a number may differ by one unit of its last printed
+    digit (a value on a rounding boundary between builds), not more; counts must be equal;
+    words must be equal."""
+    sys.path.insert(0, str(TOOLS))
+    from doc_blocks import rounding_diff
+    assert rounding_diff("a 78.3 mm, 6.92e-01", "a 78.3 mm, 6.92e-01") == []
+    assert rounding_diff("a 78.3 mm, 6.92e-01", "a 78.2 mm, 6.93e-01") == []
+    assert rounding_diff("a 78.3 mm", "a 78.5 mm") != []
+    assert rounding_diff("a 6.92e-01", "a 6.94e-01") != []
+    assert rounding_diff("36 increments", "37 increments") != []
+    assert rounding_diff("−1.91 mm", "−1.92 mm") == []
+    assert rounding_diff("a 78.3 mm", "b 78.3 mm") != []
+    assert rounding_diff("one\ntwo", "one") != []

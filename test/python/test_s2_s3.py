@@ -216,3 +216,11 @@ def test_committed_decks_match_the_generator(tmp_path):
     default = (ROOT / "input" / "default.inp").read_text()
     assert default == (tmp_path / "default.inp").read_text()
     assert default.endswith((ROOT / "input" / "s2" / "s2_goodman.inp").read_text())
+
+
+def test_docs_match_fresh_runs(runs):
+    """The S2/S3 numbers of doc/validation.md and README.md (generated blocks written by
+    tools/s2_report.py) equal those of these fresh runs to the last printed digit."""
+    import s2_report
+    diff = s2_report.check_docs({c: runs[c] for c in CASES})
+    assert not diff, diff + "\nregenerate: make s2 s3 (tools/s2_report.py output)"

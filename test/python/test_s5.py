@@ -79,3 +79,12 @@ def test_regression_values(run):
                       ("mid_sigma_n_at_reversals_kPa", sn[rows])):
         r = ref[name]
         assert got == pytest.approx(np.array(r["value"]), rel=r["tol"]), name
+
+
+def test_docs_match_fresh_run(run):
+    """The S5 numbers of doc/validation.md (generated block written by tools/s5_report.py)
+    equal those of this fresh run to the last printed digit."""
+    import s5_report
+    h5, out = run
+    diff = s5_report.check_doc(h5, out)
+    assert not diff, diff + "\nregenerate: make s5 (tools/s5_report.py output/s5)"

@@ -138,3 +138,11 @@ def test_modjoin_vs_mohr_coulomb_reported(runs):
     print(f"S6 at {q:.2f} kN: MODJOIN {a * 1e3:.2f} mm, Mohr-Coulomb {b * 1e3:.2f} mm "
           f"({100 * (a / b - 1):+.0f} %, thesis 6 % at the end)")
     assert a > b > 0, "MODJOIN near its limit, Mohr-Coulomb still rising linearly"
+
+
+def test_docs_match_fresh_runs(runs):
+    """The S6 numbers of doc/validation.md (generated blocks written by tools/s6_report.py)
+    equal those of these fresh runs to the last printed digit."""
+    import s6_report
+    diff = s6_report.check_doc(runs)
+    assert not diff, diff + "\nregenerate: make s6 (tools/s6_report.py output/s6)"
