@@ -109,7 +109,7 @@ def run_opensees(mesh):
         load(n, 0.0, f)
     t["build"] = time.perf_counter()
     ops.system("UmfPack")
-    ops.numberer("RCM")
+    ops.numberer("Plain")
     ops.constraints("Plain")
     ops.integrator("LoadControl", 1.0)
     ops.algorithm("Linear")
