@@ -107,3 +107,23 @@ def test_opensees_runner_agrees_with_ours(tmp_path):
     assert r.returncode == 0, r.stdout + r.stderr
     tip, field = bpo.compare(u, np.load(tmp_path / "o.npz")["displacement"], m["tip"])
     assert tip < 1e-12 and field < 1e-12
+
+
+def _row(ndof, code, wall, load, paired=("", "", "")):
+    # the column order of bench_peer_opensees.HEADER
+    return ["1e+06", 998, 499, ndof, ndof - 1000, code, 3, f"{wall:.3f}", f"{wall:.3f}",
+            f"{wall:.3f}", "1.0", "-3.5e-02", "1e-11", "1e-11", "phases", "threads",
+            f"{load:.2f}", *paired]
+
+
+def test_fragment_states_the_target_and_the_load():
+    assert len(_row(1, "ours", 1.0, 0.0)) == len(bpo.HEADER)
+    rows = [_row(999000, "ours", 10.0, 0.5, ("", "", "")),
+            _row(999000, "OpenSees", 25.0, 0.5, ("2.40", "2.30", "2.60"))]
+    text = bpo.fragment(rows, "3.7.1.2", quick=False)
+    assert "2.50x, met" in text and "2.40 [2.30 - 2.60]" in text
+    assert "Not final" not in text
+    rows[0][16] = rows[1][16] = "99.00"     # more than any machine's cores
+    rows[1][7] = "15.000"
+    text = bpo.fragment(rows, "3.7.1.2", quick=False)
+    assert "1.50x, not met" in text and "Not final" in text
