@@ -44,8 +44,8 @@ help:
 	@echo "  make s6       scene S6 (pile pull-out, MODJOIN and Mohr-Coulomb, table IV.1 variants),"
 	@echo "                PNGs in output/s6"
 	@echo "  make bench    benchmark suite (tools/bench.sh, <30 min): overhead vs bare CHOLMOD,"
-	@echo "                stability maps, scaling, work-precision + advice, CalculiX side by"
-	@echo "                side; CSV/PNG and README.md in doc/bench/ (BENCH=quick: minutes)"
+	@echo "                stability maps, scaling, work-precision + advice, CalculiX and"
+	@echo "                OpenSees side by side; CSV/PNG and README.md in doc/bench/ (BENCH=quick: minutes)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
 

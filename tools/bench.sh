@@ -7,6 +7,7 @@
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
 #   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
+#      and OpenSees on the elastic block, 1e4 .. 1e6 dofs       (tools/bench_peer_opensees.py)
 #   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
@@ -26,9 +27,15 @@ if ! command -v ccx >/dev/null; then
     exit 1
   fi
 fi
+# the second peer (OpenSees): openseespy 3.8.0.0 needs an openseespylinux 3.8 that PyPI lacks,
+# so the 3.7.1.2 pair (wrapper + 58 MB binary wheel) is pinned
+if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('openseespy') is None)"; then
+  echo "== make bench: installing openseespy 3.7.1.2 (the peer of tools/bench_peer_opensees.py)"
+  $PYTHON -m pip install --quiet openseespy==3.7.1.2 openseespylinux==3.7.1.2
+fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver stability scaling work_precision peer; do
+for part in solver stability scaling work_precision peer peer_opensees; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"
