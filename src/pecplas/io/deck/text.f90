@@ -3,6 +3,7 @@
 module pecplas_io_deck_text
    use pecplas_kinds, only: wp
    use pecplas_strings, only: upper, same_name, itoa
+   use pecplas_io_number, only: decimal_real, decimal_int
    implicit none (type, external)
    private
 
@@ -15,7 +16,7 @@ contains
       character(len=*), intent(in) :: s
       real(wp), intent(out) :: value
       logical, intent(out) :: ok
-      integer :: i, n, ndig, nexp, ios
+      integer :: i, n, ndig, nexp
       value = 0.0_wp
       ok = .false.
       n = len_trim(s)
@@ -50,9 +51,10 @@ contains
          end do
          if (nexp == 0) return
       end if
-      read (s(1:n), *, iostat=ios) value
-      ok = ios == 0
-      if (ok) ok = abs(value) <= huge(value)
+      ! checked: convert without Fortran internal I/O (the same correctly rounded value)
+      value = decimal_real(s(1:n))
+      ok = abs(value) <= huge(value)
+      if (.not. ok) value = 0.0_wp
    end subroutine parse_real
 
    !> Strict integer: [sign] digits, within the default integer range.
@@ -60,7 +62,7 @@ contains
       character(len=*), intent(in) :: s
       integer, intent(out) :: value
       logical, intent(out) :: ok
-      integer :: i, n, i0, ios
+      integer :: i, n, i0
       value = 0
       ok = .false.
       n = len_trim(s)
@@ -72,8 +74,8 @@ contains
          if (.not. is_digit(s(i:i))) return
       end do
       if (n - i0 + 1 > 9) return
-      read (s(1:n), *, iostat=ios) value
-      ok = ios == 0
+      value = int(decimal_int(s(1:n)))
+      ok = .true.
    end subroutine parse_int
 
    !> Appends ' name' to a blank-separated list used in messages.
