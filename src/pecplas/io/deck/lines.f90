@@ -33,7 +33,8 @@ contains
       keyword = ''
       call read_one(join_path('', path), '', origin, buf, n, raw, keyword, error)
       if (allocated(error)) return
-      lines = buf(1:n)
+      call resize(buf, n, n)
+      call move_alloc(buf, lines)
    end subroutine read_deck_lines
 
    !> Appends the lines of `path`; `stack` holds the files being read (newline separated)
@@ -48,7 +49,7 @@ contains
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: start, stop_, lineno
+      integer :: start, stop_, lineno, i1, i2
       logical :: found
 
       call read_text_file(path, text, found)
@@ -70,6 +71,12 @@ contains
          if (text(len(text):len(text)) /= NL) raw = raw//NL
       end if
 
+      ! tabs and carriage returns are blanks (the raw text above keeps them)
+      do start = 1, len(text)
+         if (text(start:start) == achar(9) .or. text(start:start) == achar(13)) &
+            text(start:start) = ' '
+      end do
+
       start = 1
       lineno = 0
       do while (start <= len(text))
@@ -80,10 +87,16 @@ contains
             stop_ = start + stop_ - 1
          end if
          lineno = lineno + 1
-         line = clean(text(start:stop_ - 1))
+         call clean_bounds(text, start, stop_ - 1, i1, i2)
          start = stop_ + 1
-         if (len(line) == 0) cycle
+         if (i2 < i1) cycle
 
+         if (text(i1:i1) /= '*') then
+            ! a data line (most of a mesh deck): stored in place, no temporaries
+            call push(lines, n, path, lineno, keyword, text(i1:i2))
+            cycle
+         end if
+         line = text(i1:i2)
          here = deck_line_t(file=path, line=lineno, keyword=keyword, text=line)
          name = keyword_name(line)
          if (name == '*INCLUDE') then
@@ -104,34 +117,42 @@ contains
             if (allocated(error)) return
             cycle
          end if
-         if (len(name) > 0) then
-            keyword = name
-            here%keyword = name
-         end if
-         call push(lines, n, here)
+         if (len(name) > 0) keyword = name
+         call push(lines, n, path, lineno, keyword, line)
       end do
    end subroutine read_one
 
-   !> Text of a line without comments ('**' lines, '#' or '!' to end of line), tabs and
-   !> carriage returns turned into blanks, blanks trimmed on both sides.
-   pure function clean(raw_line) result(line)
-      character(len=*), intent(in) :: raw_line
-      character(len=:), allocatable :: line
-      integer :: i, k
-      line = raw_line
-      do i = 1, len(line)
-         if (line(i:i) == achar(9) .or. line(i:i) == achar(13)) line(i:i) = ' '
+   !> Bounds i1:i2 of the text of line text(first:last) without comments ('**' lines, '#' or
+   !> '!' to end of line) and without blanks on both sides (tabs and carriage returns are
+   !> already blanks); i2 < i1 for a line left empty.
+   pure subroutine clean_bounds(text, first, last, i1, i2)
+      character(len=*), intent(in) :: text
+      integer, intent(in) :: first, last
+      integer, intent(out) :: i1, i2
+      integer :: k
+      i1 = first
+      i2 = last
+      do while (i1 <= i2)
+         if (text(i1:i1) /= ' ') exit
+         i1 = i1 + 1
       end do
-      line = trim(adjustl(line))
-      if (len(line) >= 2) then
-         if (line(1:2) == '**') then
-            line = ''
+      if (i2 - i1 >= 1) then
+         if (text(i1:i1 + 1) == '**') then
+            i2 = i1 - 1
             return
          end if
       end if
-      k = scan(line, '#!')
-      if (k > 0) line = trim(line(1:k - 1))
-   end function clean
+      do k = i1, i2
+         if (text(k:k) == '#' .or. text(k:k) == '!') then
+            i2 = k - 1
+            exit
+         end if
+      end do
+      do while (i2 >= i1)
+         if (text(i2:i2) /= ' ') exit
+         i2 = i2 - 1
+      end do
+   end subroutine clean_bounds
 
    !> 'a.inp -> b.inp -> c.inp' from the newline-separated stack and the current file.
    pure function chain(stack, path) result(s)
@@ -150,19 +171,35 @@ contains
       s = s//path
    end function chain
 
-   subroutine push(lines, n, line)
+   !> Appends a line; the list doubles when full, its strings moved, not copied.
+   subroutine push(lines, n, file, lineno, keyword, text)
       type(deck_line_t), allocatable, intent(inout) :: lines(:)
       integer, intent(inout) :: n
-      type(deck_line_t), intent(in) :: line
-      type(deck_line_t), allocatable :: tmp(:)
-      if (n == size(lines)) then
-         allocate (tmp(2*n))
-         tmp(1:n) = lines(1:n)
-         call move_alloc(tmp, lines)
-      end if
+      character(len=*), intent(in) :: file, keyword, text
+      integer, intent(in) :: lineno
+      if (n == size(lines)) call resize(lines, n, 2*n)
       n = n + 1
-      lines(n) = line
+      lines(n)%file = file
+      lines(n)%line = lineno
+      lines(n)%keyword = keyword
+      lines(n)%text = text
    end subroutine push
+
+   !> lines(1:n) into a list of `capacity` entries (>= n), moving the strings.
+   subroutine resize(lines, n, capacity)
+      type(deck_line_t), allocatable, intent(inout) :: lines(:)
+      integer, intent(in) :: n, capacity
+      type(deck_line_t), allocatable :: tmp(:)
+      integer :: i
+      allocate (tmp(capacity))
+      do i = 1, n
+         call move_alloc(lines(i)%file, tmp(i)%file)
+         tmp(i)%line = lines(i)%line
+         call move_alloc(lines(i)%keyword, tmp(i)%keyword)
+         call move_alloc(lines(i)%text, tmp(i)%text)
+      end do
+      call move_alloc(tmp, lines)
+   end subroutine resize
 
    !> Whole content of a text file; found = .false. if it cannot be opened or read.
    subroutine read_text_file(path, text, found)
