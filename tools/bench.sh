@@ -7,6 +7,7 @@
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
 #   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
+#   5b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
 #   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
@@ -28,7 +29,7 @@ if ! command -v ccx >/dev/null; then
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver stability scaling work_precision peer; do
+for part in solver stability scaling work_precision peer deck; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"
