@@ -6,7 +6,7 @@ module test_io_deck_fields
    use pecplas_error, only: error_t
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, field_t, parse_keyword_line, &
       split_fields, parse_real, parse_int
-   use pecplas_io_deck_lines, only: join_path
+   use pecplas_io_deck_lines, only: join_path, read_deck_lines
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
@@ -24,7 +24,8 @@ contains
                new_unittest('data_fields', test_fields), &
                new_unittest('include_paths', test_paths), &
                new_unittest('first_repeat', test_repeat), &
-               new_unittest('numbers_as_fortran_read', test_numbers_as_read)]
+               new_unittest('numbers_as_fortran_read', test_numbers_as_read), &
+               new_unittest('deck_lines_cleaned', test_lines_cleaned)]
    end subroutine collect_io_deck_fields
 
    subroutine test_numbers_ok(error)
@@ -237,5 +238,53 @@ contains
       next = 0
       if (m > 0) next = int(modulo(ishft(seed, -33), int(m, int64)))
    end function next
+
+   !> Logical lines of a deck written with a byte order mark, CRLF ends, tabs, comments of
+   !> every kind and blank lines: exactly the texts, line numbers and keywords in force
+   !> that the deck language defines (doc/deck.md), over more lines than the first
+   !> capacity of the list (its growth keeps every line).
+   subroutine test_lines_cleaned(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: path = 'build/test_io_deck_lines.inp'
+      character(len=*), parameter :: crlf = achar(13)//achar(10), tab = achar(9)
+      type(deck_line_t), allocatable :: lines(:)
+      character(len=:), allocatable :: text, raw
+      character(len=12) :: buf
+      integer :: u, k
+      text = achar(239)//achar(187)//achar(191)//'** header comment'//crlf// &
+         '  *Nodes'//tab//crlf// &
+         tab//'1,'//tab//'0.0, 0.0   # a comment'//crlf// &
+         crlf//'   '//crlf// &
+         '2, 1.0, 0.0 ! another'//crlf
+      do k = 3, 100
+         write (buf, '(i0)') k
+         text = text//trim(buf)//', 2.0, 0.0'//achar(10)
+      end do
+      text = text//'*elements, type=Q4, set=s # end'
+      open (newunit=u, file=path, access='stream', form='unformatted', status='replace', &
+         action='write')
+      write (u) text
+      close (u)
+      call read_deck_lines(path, lines, raw, error)
+      if (allocated(error)) return
+      call check(error, size(lines) == 102, 'a keyword, 100 nodes and a keyword: 102 lines')
+      if (allocated(error)) return
+      call check(error, lines(1)%text == '*Nodes' .and. lines(1)%line == 2 .and. &
+         lines(1)%keyword == '*NODES' .and. lines(1)%file == path, &
+         "line 1: '*Nodes' at line 2 under *NODES, found '"//lines(1)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(2)%text == '1,'//' '//'0.0, 0.0' .and. lines(2)%line == 3 .and. &
+         lines(2)%keyword == '*NODES', "tab as blank, comment cut: found '"//lines(2)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(3)%text == '2, 1.0, 0.0' .and. lines(3)%line == 6, &
+         "blank lines skipped, '!' comment cut: found '"//lines(3)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(101)%text == '100, 2.0, 0.0' .and. lines(101)%line == 104, &
+         "line 101 after the list grew: found '"//lines(101)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(102)%text == '*elements, type=Q4, set=s' .and. &
+         lines(102)%keyword == '*ELEMENTS' .and. lines(102)%line == 105, &
+         "last line without a line end: found '"//lines(102)%text//"'")
+   end subroutine test_lines_cleaned
 
 end module test_io_deck_fields

@@ -71,11 +71,15 @@ contains
          if (text(len(text):len(text)) /= NL) raw = raw//NL
       end if
 
-      ! tabs and carriage returns are blanks (the raw text above keeps them)
+      ! tabs and carriage returns are blanks (the raw text above keeps them); room for all
+      ! the lines of the file at once
+      lineno = 1
       do start = 1, len(text)
+         if (text(start:start) == NL) lineno = lineno + 1
          if (text(start:start) == achar(9) .or. text(start:start) == achar(13)) &
             text(start:start) = ' '
       end do
+      if (n + lineno > size(lines)) call resize(lines, n, n + lineno)
 
       start = 1
       lineno = 0
@@ -177,7 +181,7 @@ contains
       integer, intent(inout) :: n
       character(len=*), intent(in) :: file, keyword, text
       integer, intent(in) :: lineno
-      if (n == size(lines)) call resize(lines, n, 2*n)
+      if (n == size(lines)) call resize(lines, n, max(2*n, 64))
       n = n + 1
       lines(n)%file = file
       lines(n)%line = lineno
