@@ -235,18 +235,18 @@ contains
       character(len=*), intent(in) :: text
       integer, intent(out) :: b(:, :)
       integer, intent(out) :: n
-      integer :: i, start
-      character :: c
+      integer :: i, start, c
       n = 0
       start = 0
       do i = 1, len(text) + 1
-         c = ' '
-         if (i <= len(text)) c = text(i:i)
-         if (c == '=') then
+         ! character codes: gfortran turns a test against ' ' into a len_trim call
+         c = 32
+         if (i <= len(text)) c = iachar(text(i:i))
+         if (c == 61) then
             n = -1
             return
          end if
-         if (c /= ',' .and. c /= ' ') then
+         if (c /= 44 .and. c /= 32) then
             if (start == 0) start = i
             cycle
          end if

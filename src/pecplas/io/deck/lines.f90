@@ -27,13 +27,14 @@ contains
       character(len=:), allocatable :: keyword
       type(deck_line_t) :: origin
       integer :: n
-      allocate (buf(64))
+      allocate (buf(0))
       n = 0
       raw = ''
       keyword = ''
       call read_one(join_path('', path), '', origin, buf, n, raw, keyword, error)
       if (allocated(error)) return
-      call resize(buf, n, n)
+      ! exact already unless includes took places
+      if (size(buf) /= n) call resize(buf, n, n)
       call move_alloc(buf, lines)
    end subroutine read_deck_lines
 
@@ -49,7 +50,8 @@ contains
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: start, stop_, lineno, i1, i2
+      integer :: start, stop_, lineno, i1, i2, nkeep
+      integer, allocatable :: bounds(:, :)
       logical :: found
 
       call read_text_file(path, text, found)
@@ -71,28 +73,30 @@ contains
          if (text(len(text):len(text)) /= NL) raw = raw//NL
       end if
 
-      ! tabs and carriage returns are blanks (the raw text above keeps them); room for all
-      ! the lines of the file at once
-      lineno = 1
-      do start = 1, len(text)
-         if (text(start:start) == NL) lineno = lineno + 1
-         if (text(start:start) == achar(9) .or. text(start:start) == achar(13)) &
-            text(start:start) = ' '
-      end do
-      if (n + lineno > size(lines)) call resize(lines, n, n + lineno)
-
+      ! pass 1: the text bounds of every line, tabs and carriage returns turned into blanks
+      ! (the raw text above keeps them); then room for the lines kept, at once
+      allocate (bounds(2, count_lines(text)))
+      nkeep = 0
       start = 1
       lineno = 0
       do while (start <= len(text))
-         stop_ = index(text(start:), NL)
-         if (stop_ == 0) then
-            stop_ = len(text) + 1
-         else
-            stop_ = start + stop_ - 1
-         end if
+         stop_ = start
+         do while (stop_ <= len(text))
+            if (text(stop_:stop_) == NL) exit
+            if (text(stop_:stop_) == achar(9) .or. text(stop_:stop_) == achar(13)) &
+               text(stop_:stop_) = ' '
+            stop_ = stop_ + 1
+         end do
          lineno = lineno + 1
-         call clean_bounds(text, start, stop_ - 1, i1, i2)
+         call clean_bounds(text, start, stop_ - 1, bounds(1, lineno), bounds(2, lineno))
+         if (bounds(2, lineno) >= bounds(1, lineno)) nkeep = nkeep + 1
          start = stop_ + 1
+      end do
+      if (n + nkeep > size(lines)) call resize(lines, n, size(lines) + nkeep)
+
+      do lineno = 1, size(bounds, 2)
+         i1 = bounds(1, lineno)
+         i2 = bounds(2, lineno)
          if (i2 < i1) cycle
 
          if (text(i1:i1) /= '*') then
@@ -126,6 +130,19 @@ contains
       end do
    end subroutine read_one
 
+   !> Number of lines of a text (the last one may lack its line end).
+   pure integer function count_lines(text) result(k)
+      character(len=*), intent(in) :: text
+      integer :: i
+      k = 0
+      do i = 1, len(text)
+         if (text(i:i) == NL) k = k + 1
+      end do
+      if (len(text) > 0) then
+         if (text(len(text):len(text)) /= NL) k = k + 1
+      end if
+   end function count_lines
+
    !> Bounds i1:i2 of the text of line text(first:last) without comments ('**' lines, '#' or
    !> '!' to end of line) and without blanks on both sides (tabs and carriage returns are
    !> already blanks); i2 < i1 for a line left empty.
@@ -136,8 +153,9 @@ contains
       integer :: k
       i1 = first
       i2 = last
+      ! character codes: gfortran turns a test against ' ' into a len_trim call
       do while (i1 <= i2)
-         if (text(i1:i1) /= ' ') exit
+         if (iachar(text(i1:i1)) /= 32) exit
          i1 = i1 + 1
       end do
       if (i2 - i1 >= 1) then
@@ -153,7 +171,7 @@ contains
          end if
       end do
       do while (i2 >= i1)
-         if (text(i2:i2) /= ' ') exit
+         if (iachar(text(i2:i2)) /= 32) exit
          i2 = i2 - 1
       end do
    end subroutine clean_bounds

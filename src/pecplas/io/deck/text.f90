@@ -19,7 +19,7 @@ contains
       integer :: i, n, ndig, nexp
       value = 0.0_wp
       ok = .false.
-      n = len_trim(s)
+      n = trimmed_len(s)
       if (n == 0) return
       i = 1
       if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
@@ -65,7 +65,7 @@ contains
       integer :: i, n, i0
       value = 0
       ok = .false.
-      n = len_trim(s)
+      n = trimmed_len(s)
       if (n == 0) return
       i0 = 1
       if (s(1:1) == '+' .or. s(1:1) == '-') i0 = 2
@@ -77,6 +77,16 @@ contains
       value = int(decimal_int(s(1:n)))
       ok = .true.
    end subroutine parse_int
+
+   !> len_trim without the library call (fields of mesh lines end in no blank: one test).
+   pure integer function trimmed_len(s) result(n)
+      character(len=*), intent(in) :: s
+      n = len(s)
+      do while (n > 0)
+         if (iachar(s(n:n)) /= 32) exit  ! a test against ' ' would call len_trim
+         n = n - 1
+      end do
+   end function trimmed_len
 
    !> Appends ' name' to a blank-separated list used in messages.
    pure subroutine add_name(list, name)
