@@ -7,7 +7,7 @@ reads each one in the same process, checks that both give the same mesh, and pri
 read times. At the largest size the keyword deck is also run through the whole program
 (elastic, one increment) to give the share of its reading in the run. Each case is run
 REPEATS times (median, with the 1-minute load average when the case started: timings on a
-loaded machine are not headline figures).
+loaded machine are not headline figures); the whole run once.
 
 Writes doc/bench/deck.csv and the fragment doc/bench/deck.md.
 
@@ -35,20 +35,26 @@ def load1():
         return float("nan")
 
 
+def run_case(exe, args):
+    r = run_timed([exe, *args])
+    f = r["stdout"].split()
+    if r["rc"] != 0 or len(f) < 4:
+        raise RuntimeError(f"pecplas-bench-deck {args} failed:\n{r['stdout']}{r['stderr']}")
+    return [float(x) for x in f]
+
+
 def case(exe, n, tmp, run):
-    """Median over REPEATS runs of (equations, keyword read, *MESH read[, run, share])."""
+    """Medians over REPEATS reads of (equations, keyword read, *MESH read, ratio); with
+    `run`, one whole elastic run of the keyword deck and the share of the median read in
+    it."""
     load = load1()
-    runs = []
-    for _ in range(REPEATS):
-        r = run_timed([exe, n, tmp] + (["--run"] if run else []))
-        f = r["stdout"].split()
-        if r["rc"] != 0 or len(f) < (6 if run else 4):
-            raise RuntimeError(f"pecplas-bench-deck {n} failed:\n{r['stdout']}{r['stderr']}")
-        runs.append([float(x) for x in f])
-    med = [statistics.median(r[k] for r in runs) for k in range(len(runs[0]))]
-    if not run:
-        med += [float("nan"), float("nan")]
-    return [n, int(med[0]), *med[1:], len(runs), load]
+    runs = [run_case(exe, [n, tmp]) for _ in range(REPEATS)]
+    med = [statistics.median(r[k] for r in runs) for k in range(4)]
+    total = share = float("nan")
+    if run:
+        total = run_case(exe, [n, tmp, "--run"])[4]
+        share = 100.0 * med[1] / total
+    return [n, int(med[0]), med[1], med[2], med[3], total, share, len(runs), load]
 
 
 def main():
@@ -68,7 +74,7 @@ def main():
           "(`*NODES`, `*ELEMENTS`, `*NSET`, `*EDGES`) and from a Gmsh file through `*MESH`, "
           "in one process (`pecplas-bench-deck`), median of " + str(REPEATS) + " runs; "
           "wall seconds; load = 1-minute load average when the case started. The share is "
-          "the keyword read in the whole elastic run of the keyword deck (largest size).", "",
+          "the keyword read in one whole elastic run of the keyword deck (largest size).", "",
           "| equations | load | keyword read | *MESH read | ratio | elastic run | share |",
           "|---|---|---|---|---|---|---|"]
     for r in rows:
