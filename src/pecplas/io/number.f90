@@ -4,7 +4,7 @@
 !> strtod, which is what a Fortran list-directed read calls underneath (same value, without
 !> the cost of Fortran internal I/O; mesh files hold millions of numbers).
 module pecplas_io_number
-   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_ptr, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_ptr, c_null_char, c_null_ptr
    use iso_fortran_env, only: int64
    use pecplas_kinds, only: wp
    implicit none (type, external)
@@ -57,10 +57,10 @@ contains
          end if
          if (c < 48 .or. c > 57) exit
          if (mant > 0 .or. c > 48) nd = nd + 1
+         ! beyond 18 significant digits the value goes to strtod: mant is not used
          if (nd <= 18) mant = 10*mant + (c - 48)
          i = i + 1
       end do
-      if (nd > 18) e10 = e10 + nd - 18
       if (i > 1) then
          if (s(i - 1:i - 1) == '.') then
             do while (i <= n)
@@ -105,7 +105,7 @@ contains
             if (buf(i:i) == 'd' .or. buf(i:i) == 'D') buf(i:i) = 'e'
          end do
          buf(n + 1:n + 1) = c_null_char
-         v = real(c_strtod(buf, c_null_ptr_value()), wp)
+         v = real(c_strtod(buf, c_null_ptr), wp)
          return
       end if
       if (neg) v = -v
@@ -124,11 +124,5 @@ contains
       end do
       if (s(1:1) == '-') v = -v
    end function decimal_int
-
-   pure function c_null_ptr_value() result(p)
-      use, intrinsic :: iso_c_binding, only: c_null_ptr
-      type(c_ptr) :: p
-      p = c_null_ptr
-   end function c_null_ptr_value
 
 end module pecplas_io_number
