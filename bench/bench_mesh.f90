@@ -4,7 +4,7 @@ module bench_mesh
    use pecplas_kinds, only: wp
    implicit none (type, external)
    private
-   public :: write_square_msh, write_square_deck
+   public :: write_square_msh, write_square_deck, write_square_keywords
 
 contains
 
@@ -95,5 +95,57 @@ contains
          '*LOAD, NAME=p, TYPE=PRESSURE', 'top, 100', '*STEP, NAME=load, INCREMENTS=1', 'p, 1'
       close (u)
    end subroutine write_square_deck
+
+   !> The Q4 mesh of write_square_msh(path, 'Q4', n) as a keyword deck (*NODES, *ELEMENTS,
+   !> *NSET, *EDGES: the same node ids, coordinates, sets and load as write_square_deck).
+   subroutine write_square_keywords(path, n)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: n
+      integer :: u, i, j, k
+      real(wp) :: h
+      h = 10.0_wp/n
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'benchmark: elastic square under a top pressure (keywords)', &
+         '*NODES'
+      k = 0
+      do j = 0, n
+         do i = 0, n
+            k = k + 1
+            write (u, '(i0,a,es23.16,a,es23.16)') k, ', ', i*h, ', ', j*h
+         end do
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=soil'
+      k = 0
+      do j = 0, n - 1
+         do i = 0, n - 1
+            k = k + 1
+            write (u, '(*(i0,:,", "))') k, node(i, j), node(i + 1, j), node(i + 1, j + 1), &
+               node(i, j + 1)
+         end do
+      end do
+      write (u, '(a)') '*NSET, NAME=base, GENERATE', '1, '//itoa(n + 1)//', 1'
+      write (u, '(a)') '*NSET, NAME=sides'
+      write (u, '(*(i0,:,", "))') (node(0, j), node(n, j), j=0, n)
+      write (u, '(a)') '*EDGES, NAME=top'
+      do i = 0, n - 1
+         write (u, '(i0,", ",i0)') node(i, n), node(i + 1, n)
+      end do
+      write (u, '(a)') '*MATERIAL, NAME=soil', 'E = 1e5, NU = 0.3', &
+         '*SECTION, SET=soil, MATERIAL=soil', '*BOUNDARY', 'base, XY', 'sides, X', &
+         '*LOAD, NAME=p, TYPE=PRESSURE', 'top, 100', '*STEP, NAME=load, INCREMENTS=1', 'p, 1'
+      close (u)
+   contains
+      integer function node(ii, jj)
+         integer, intent(in) :: ii, jj
+         node = 1 + ii + jj*(n + 1)
+      end function node
+      function itoa(v) result(s)
+         integer, intent(in) :: v
+         character(len=:), allocatable :: s
+         character(len=12) :: buf
+         write (buf, '(i0)') v
+         s = trim(buf)
+      end function itoa
+   end subroutine write_square_keywords
 
 end module bench_mesh

@@ -1,11 +1,12 @@
 !> Deck building blocks: strict number parsing (what Fortran writes is accepted, anything
 !> else refused), keyword lines, data fields, include path folding and repeated ids.
 module test_io_deck_fields
+   use iso_fortran_env, only: int64
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, field_t, parse_keyword_line, &
       split_fields, parse_real, parse_int
-   use pecplas_io_deck_lines, only: join_path
+   use pecplas_io_deck_lines, only: join_path, read_deck_lines
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
@@ -22,7 +23,9 @@ contains
                new_unittest('keyword_line', test_keyword_line), &
                new_unittest('data_fields', test_fields), &
                new_unittest('include_paths', test_paths), &
-               new_unittest('first_repeat', test_repeat)]
+               new_unittest('first_repeat', test_repeat), &
+               new_unittest('numbers_as_fortran_read', test_numbers_as_read), &
+               new_unittest('deck_lines_cleaned', test_lines_cleaned)]
    end subroutine collect_io_deck_fields
 
    subroutine test_numbers_ok(error)
@@ -147,5 +150,141 @@ contains
       if (allocated(error)) return
       call check(error, all(first_repeat([5, 5, 5]) == [1, 2]), 'triple: first two')
    end subroutine test_repeat
+
+   !> The reader converts numbers without Fortran I/O (exact short forms, strtod for the
+   !> rest); every value must equal, bit for bit, what a list-directed read gives: edge
+   !> cases (2**53 + 1, halfway cases, subnormals, 17-20 digits, underflow) and 20000
+   !> pseudo-random decimals of every form (fixed seed: a failure is reproducible).
+   subroutine test_numbers_as_read(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=24), parameter :: edge(14) = [character(len=24) :: '9007199254740993', &
+         '9007199254740992.5', '0.1', '2.2250738585072011e-308', '4.9406564584124654d-324', &
+         '1e-400', '1.7976931348623157e308', '123456789012345678901', '0.30000000000000004', &
+         '-0.0', '1e22', '1e23', '8.5e-6', '70.71067811865476']
+      character(len=40) :: s
+      integer(int64) :: seed
+      integer :: i
+      do i = 1, size(edge)
+         call same_as_read(trim(edge(i)), error)
+         if (allocated(error)) return
+      end do
+      seed = 20240611_int64
+      do i = 1, 20000
+         call random_decimal(seed, s)
+         call same_as_read(trim(s), error)
+         if (allocated(error)) return
+      end do
+   end subroutine test_numbers_as_read
+
+   subroutine same_as_read(s, error)
+      character(len=*), intent(in) :: s
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: v, r
+      logical :: ok
+      integer :: ios
+      call parse_real(s, v, ok)
+      read (s, *, iostat=ios) r
+      if (ios == 0) ios = merge(0, 1, abs(r) <= huge(r))
+      call check(error, ok .eqv. (ios == 0), "accepted/refused differently from a read: '"// &
+         s//"'")
+      if (allocated(error) .or. .not. ok) return
+      call check(error, transfer(v, 0_int64) == transfer(r, 0_int64), &
+         "not the value a Fortran read gives: '"//s//"'")
+   end subroutine same_as_read
+
+   !> A decimal with 1..20 digits, a point anywhere (or none), maybe an exponent e/E/d/D.
+   subroutine random_decimal(seed, s)
+      integer(int64), intent(inout) :: seed
+      character(len=*), intent(out) :: s
+      integer :: nd, dot, k, p
+      s = ''
+      p = 0
+      if (next(seed, 3) == 0) call put('-')
+      nd = 1 + next(seed, 20)
+      dot = next(seed, nd + 2)
+      do k = 1, nd
+         if (k == dot) call put('.')
+         call put(achar(48 + next(seed, 10)))
+      end do
+      select case (next(seed, 4))
+      case (0)
+      case default
+         k = next(seed, 4) + 1
+         call put('eEdD'(k:k))
+         if (next(seed, 2) == 0) call put('-')
+         call put_int(next(seed, 330))
+      end select
+   contains
+      subroutine put(c)
+         character(len=*), intent(in) :: c
+         s(p + 1:p + len(c)) = c
+         p = p + len(c)
+      end subroutine put
+      subroutine put_int(v)
+         integer, intent(in) :: v
+         character(len=8) :: buf
+         write (buf, '(i0)') v
+         call put(trim(buf))
+      end subroutine put_int
+   end subroutine random_decimal
+
+   !> Integer in 0..m-1 from a xorshift64 generator (no integer overflow; 0 if m <= 0).
+   integer function next(seed, m)
+      integer(int64), intent(inout) :: seed
+      integer, intent(in) :: m
+      seed = ieor(seed, ishft(seed, 13))
+      seed = ieor(seed, ishft(seed, -7))
+      seed = ieor(seed, ishft(seed, 17))
+      next = 0
+      if (m > 0) next = int(modulo(ishft(seed, -33), int(m, int64)))
+   end function next
+
+   !> Logical lines of a deck written with a byte order mark, CRLF ends, tabs, comments of
+   !> every kind and blank lines: exactly the texts, line numbers and keywords in force
+   !> that the deck language defines (doc/deck.md), over more lines than the first
+   !> capacity of the list (its growth keeps every line).
+   subroutine test_lines_cleaned(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: path = 'build/test_io_deck_lines.inp'
+      character(len=*), parameter :: crlf = achar(13)//achar(10), tab = achar(9)
+      type(deck_line_t), allocatable :: lines(:)
+      character(len=:), allocatable :: text, raw
+      character(len=12) :: buf
+      integer :: u, k
+      text = achar(239)//achar(187)//achar(191)//'** header comment'//crlf// &
+         '  *Nodes'//tab//crlf// &
+         tab//'1,'//tab//'0.0, 0.0   # a comment'//crlf// &
+         crlf//'   '//crlf// &
+         '2, 1.0, 0.0 ! another'//crlf
+      do k = 3, 100
+         write (buf, '(i0)') k
+         text = text//trim(buf)//', 2.0, 0.0'//achar(10)
+      end do
+      text = text//'*elements, type=Q4, set=s # end'
+      open (newunit=u, file=path, access='stream', form='unformatted', status='replace', &
+         action='write')
+      write (u) text
+      close (u)
+      call read_deck_lines(path, lines, raw, error)
+      if (allocated(error)) return
+      call check(error, size(lines) == 102, 'a keyword, 100 nodes and a keyword: 102 lines')
+      if (allocated(error)) return
+      call check(error, lines(1)%text == '*Nodes' .and. lines(1)%line == 2 .and. &
+         lines(1)%keyword == '*NODES' .and. lines(1)%file == path, &
+         "line 1: '*Nodes' at line 2 under *NODES, found '"//lines(1)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(2)%text == '1,'//' '//'0.0, 0.0' .and. lines(2)%line == 3 .and. &
+         lines(2)%keyword == '*NODES', "tab as blank, comment cut: found '"//lines(2)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(3)%text == '2, 1.0, 0.0' .and. lines(3)%line == 6, &
+         "blank lines skipped, '!' comment cut: found '"//lines(3)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(101)%text == '100, 2.0, 0.0' .and. lines(101)%line == 104, &
+         "line 101 after the list grew: found '"//lines(101)%text//"'")
+      if (allocated(error)) return
+      call check(error, lines(102)%text == '*elements, type=Q4, set=s' .and. &
+         lines(102)%keyword == '*ELEMENTS' .and. lines(102)%line == 105, &
+         "last line without a line end: found '"//lines(102)%text//"'")
+   end subroutine test_lines_cleaned
 
 end module test_io_deck_fields

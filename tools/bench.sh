@@ -8,6 +8,7 @@
 #                                                                     (tools/bench_work_precision.py)
 #   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
 #      and OpenSees on the elastic block, 1e4 .. 1e6 dofs       (tools/bench_peer_opensees.py)
+#   5b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
 #   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
@@ -35,7 +36,7 @@ if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('opensees
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver stability scaling work_precision peer peer_opensees; do
+for part in solver stability scaling work_precision peer peer_opensees deck; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

@@ -6,6 +6,7 @@ module pecplas_io_scanner
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error, input_error
+   use pecplas_io_deck_text, only: parse_real
    implicit none (type, external)
    private
 
@@ -149,7 +150,8 @@ contains
 
    !> Next token as a real. Decimal mantissas up to 2**53 with |exponent| <= 22 are
    !> converted by one correctly rounded product or quotient (Clinger's fast path), so the
-   !> result equals what a Fortran read gives; other forms fall back to a Fortran read.
+   !> result equals what a Fortran read gives; other plain decimals by strtod (the same
+   !> value again, pecplas_io_number); other forms fall back to a Fortran read.
    subroutine scanner_get_real(this, v, keyword, error)
       class(scanner_t), intent(inout) :: this
       real(wp), intent(out) :: v
@@ -219,6 +221,9 @@ contains
          end if
          if (neg) v = -v
       else
+         ! long mantissas (17-digit coordinates): strtod when the form is a plain decimal
+         call parse_real(this%buf(this%t1:this%t2), v, fast)
+         if (fast) return
          read (this%buf(this%t1:this%t2), *, iostat=ios) v
          if (ios /= 0) then
             call this%fail(error, keyword, 'expected a real number, got '''//this%token()//'''')

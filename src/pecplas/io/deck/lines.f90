@@ -27,13 +27,15 @@ contains
       character(len=:), allocatable :: keyword
       type(deck_line_t) :: origin
       integer :: n
-      allocate (buf(64))
+      allocate (buf(0))
       n = 0
       raw = ''
       keyword = ''
       call read_one(join_path('', path), '', origin, buf, n, raw, keyword, error)
       if (allocated(error)) return
-      lines = buf(1:n)
+      ! exact already unless includes took places
+      if (size(buf) /= n) call resize(buf, n, n)
+      call move_alloc(buf, lines)
    end subroutine read_deck_lines
 
    !> Appends the lines of `path`; `stack` holds the files being read (newline separated)
@@ -48,7 +50,8 @@ contains
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: start, stop_, lineno
+      integer :: start, stop_, lineno, i1, i2, nkeep
+      integer, allocatable :: bounds(:, :)
       logical :: found
 
       call read_text_file(path, text, found)
@@ -70,20 +73,38 @@ contains
          if (text(len(text):len(text)) /= NL) raw = raw//NL
       end if
 
+      ! pass 1: the text bounds of every line, tabs and carriage returns turned into blanks
+      ! (the raw text above keeps them); then room for the lines kept, at once
+      allocate (bounds(2, count_lines(text)))
+      nkeep = 0
       start = 1
       lineno = 0
       do while (start <= len(text))
-         stop_ = index(text(start:), NL)
-         if (stop_ == 0) then
-            stop_ = len(text) + 1
-         else
-            stop_ = start + stop_ - 1
-         end if
+         stop_ = start
+         do while (stop_ <= len(text))
+            if (text(stop_:stop_) == NL) exit
+            if (text(stop_:stop_) == achar(9) .or. text(stop_:stop_) == achar(13)) &
+               text(stop_:stop_) = ' '
+            stop_ = stop_ + 1
+         end do
          lineno = lineno + 1
-         line = clean(text(start:stop_ - 1))
+         call clean_bounds(text, start, stop_ - 1, bounds(1, lineno), bounds(2, lineno))
+         if (bounds(2, lineno) >= bounds(1, lineno)) nkeep = nkeep + 1
          start = stop_ + 1
-         if (len(line) == 0) cycle
+      end do
+      if (n + nkeep > size(lines)) call resize(lines, n, size(lines) + nkeep)
 
+      do lineno = 1, size(bounds, 2)
+         i1 = bounds(1, lineno)
+         i2 = bounds(2, lineno)
+         if (i2 < i1) cycle
+
+         if (text(i1:i1) /= '*') then
+            ! a data line (most of a mesh deck): stored in place, no temporaries
+            call push(lines, n, path, lineno, keyword, text(i1:i2))
+            cycle
+         end if
+         line = text(i1:i2)
          here = deck_line_t(file=path, line=lineno, keyword=keyword, text=line)
          name = keyword_name(line)
          if (name == '*INCLUDE') then
@@ -104,34 +125,56 @@ contains
             if (allocated(error)) return
             cycle
          end if
-         if (len(name) > 0) then
-            keyword = name
-            here%keyword = name
-         end if
-         call push(lines, n, here)
+         if (len(name) > 0) keyword = name
+         call push(lines, n, path, lineno, keyword, line)
       end do
    end subroutine read_one
 
-   !> Text of a line without comments ('**' lines, '#' or '!' to end of line), tabs and
-   !> carriage returns turned into blanks, blanks trimmed on both sides.
-   pure function clean(raw_line) result(line)
-      character(len=*), intent(in) :: raw_line
-      character(len=:), allocatable :: line
-      integer :: i, k
-      line = raw_line
-      do i = 1, len(line)
-         if (line(i:i) == achar(9) .or. line(i:i) == achar(13)) line(i:i) = ' '
+   !> Number of lines of a text (the last one may lack its line end).
+   pure integer function count_lines(text) result(k)
+      character(len=*), intent(in) :: text
+      integer :: i
+      k = 0
+      do i = 1, len(text)
+         if (text(i:i) == NL) k = k + 1
       end do
-      line = trim(adjustl(line))
-      if (len(line) >= 2) then
-         if (line(1:2) == '**') then
-            line = ''
+      if (len(text) > 0) then
+         if (text(len(text):len(text)) /= NL) k = k + 1
+      end if
+   end function count_lines
+
+   !> Bounds i1:i2 of the text of line text(first:last) without comments ('**' lines, '#' or
+   !> '!' to end of line) and without blanks on both sides (tabs and carriage returns are
+   !> already blanks); i2 < i1 for a line left empty.
+   pure subroutine clean_bounds(text, first, last, i1, i2)
+      character(len=*), intent(in) :: text
+      integer, intent(in) :: first, last
+      integer, intent(out) :: i1, i2
+      integer :: k
+      i1 = first
+      i2 = last
+      ! character codes: gfortran turns a test against ' ' into a len_trim call
+      do while (i1 <= i2)
+         if (iachar(text(i1:i1)) /= 32) exit
+         i1 = i1 + 1
+      end do
+      if (i2 - i1 >= 1) then
+         if (text(i1:i1 + 1) == '**') then
+            i2 = i1 - 1
             return
          end if
       end if
-      k = scan(line, '#!')
-      if (k > 0) line = trim(line(1:k - 1))
-   end function clean
+      do k = i1, i2
+         if (text(k:k) == '#' .or. text(k:k) == '!') then
+            i2 = k - 1
+            exit
+         end if
+      end do
+      do while (i2 >= i1)
+         if (iachar(text(i2:i2)) /= 32) exit
+         i2 = i2 - 1
+      end do
+   end subroutine clean_bounds
 
    !> 'a.inp -> b.inp -> c.inp' from the newline-separated stack and the current file.
    pure function chain(stack, path) result(s)
@@ -150,19 +193,35 @@ contains
       s = s//path
    end function chain
 
-   subroutine push(lines, n, line)
+   !> Appends a line; the list doubles when full, its strings moved, not copied.
+   subroutine push(lines, n, file, lineno, keyword, text)
       type(deck_line_t), allocatable, intent(inout) :: lines(:)
       integer, intent(inout) :: n
-      type(deck_line_t), intent(in) :: line
-      type(deck_line_t), allocatable :: tmp(:)
-      if (n == size(lines)) then
-         allocate (tmp(2*n))
-         tmp(1:n) = lines(1:n)
-         call move_alloc(tmp, lines)
-      end if
+      character(len=*), intent(in) :: file, keyword, text
+      integer, intent(in) :: lineno
+      if (n == size(lines)) call resize(lines, n, max(2*n, 64))
       n = n + 1
-      lines(n) = line
+      lines(n)%file = file
+      lines(n)%line = lineno
+      lines(n)%keyword = keyword
+      lines(n)%text = text
    end subroutine push
+
+   !> lines(1:n) into a list of `capacity` entries (>= n), moving the strings.
+   subroutine resize(lines, n, capacity)
+      type(deck_line_t), allocatable, intent(inout) :: lines(:)
+      integer, intent(in) :: n, capacity
+      type(deck_line_t), allocatable :: tmp(:)
+      integer :: i
+      allocate (tmp(capacity))
+      do i = 1, n
+         call move_alloc(lines(i)%file, tmp(i)%file)
+         tmp(i)%line = lines(i)%line
+         call move_alloc(lines(i)%keyword, tmp(i)%keyword)
+         call move_alloc(lines(i)%text, tmp(i)%text)
+      end do
+      call move_alloc(tmp, lines)
+   end subroutine resize
 
    !> Whole content of a text file; found = .false. if it cannot be opened or read.
    subroutine read_text_file(path, text, found)

@@ -4,7 +4,7 @@ module pecplas_io_deck_reader_mesh
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_io_deck_fields, only: field_t, split_fields, field_int, field_real, &
-      check_count, parse_int, same_name, upper, itoa, add_name
+      check_count, parse_int, parse_real, field_bounds, same_name, upper, itoa, add_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_eset_t, raw_nset_t, &
       raw_edge_set_t, line_error, where_text, grow_int, grow_int2, grow_real2
    implicit none (type, external)
@@ -43,15 +43,18 @@ contains
       call no_data_error(state, block, 'id, x, y', error)
       if (allocated(error)) return
       do i = block%first, block%last
-         call split_fields(state%lines(i)%text, f)
-         call check_count(state%lines(i), f, 3, 3, 'id, x, y', error)
-         if (allocated(error)) return
-         call positive_id(state, i, f, 1, 'node id', id, error)
-         if (allocated(error)) return
-         call field_real(state%lines(i), f, 2, 'x', x, error)
-         if (allocated(error)) return
-         call field_real(state%lines(i), f, 3, 'y', y, error)
-         if (allocated(error)) return
+         if (.not. quick_node(state%lines(i)%text, id, x, y)) then
+            ! the general path: its checks say what is wrong with the line
+            call split_fields(state%lines(i)%text, f)
+            call check_count(state%lines(i), f, 3, 3, 'id, x, y', error)
+            if (allocated(error)) return
+            call positive_id(state, i, f, 1, 'node id', id, error)
+            if (allocated(error)) return
+            call field_real(state%lines(i), f, 2, 'x', x, error)
+            if (allocated(error)) return
+            call field_real(state%lines(i), f, 3, 'y', y, error)
+            if (allocated(error)) return
+         end if
          n = state%nnode + 1
          call grow_int(state%node_ids, n)
          call grow_int(state%node_at, n)
@@ -71,7 +74,7 @@ contains
       type(field_t), allocatable :: f(:)
       character(len=:), allocatable :: etype, name, form, list
       type(raw_eset_t), allocatable :: tmp(:)
-      integer :: i, j, k, nen, id, node
+      integer :: i, j, k, nen, id, node, ids(9)
       associate (kwline => state%lines(block%at))
          call block%kw%check_keys(kwline, [character(len=4) :: 'TYPE', 'SET'], error)
          if (allocated(error)) return
@@ -123,6 +126,17 @@ contains
 
       associate (es => state%esets(k))
          do i = block%first, block%last
+            if (quick_ids(state%lines(i)%text, ids(1:nen + 1))) then
+               es%n = es%n + 1
+               call grow_int(es%ids, es%n)
+               call grow_int(es%where, es%n)
+               call grow_int2(es%conn, nen, es%n)
+               es%ids(es%n) = ids(1)
+               es%where(es%n) = i
+               es%conn(:, es%n) = ids(2:nen + 1)
+               cycle
+            end if
+            ! the general path: its checks say what is wrong with the line
             call split_fields(state%lines(i)%text, f)
             if (size(f) /= nen + 1) then
                call line_error(state, i, 'wrong number of nodes for a '//etype// &
@@ -282,6 +296,36 @@ contains
          end do
       end associate
    end subroutine read_edges
+
+   !> A well-formed node line `id, x, y` (positive id, two finite numbers) read without
+   !> allocating; .false. for anything else, left to the general path and its messages.
+   logical function quick_node(text, id, x, y) result(ok)
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: id
+      real(wp), intent(out) :: x, y
+      integer :: b(2, 3), n
+      call field_bounds(text, b, n)
+      ok = n == 3
+      if (ok) call parse_int(text(b(1, 1):b(2, 1)), id, ok)
+      if (ok) ok = id > 0
+      if (ok) call parse_real(text(b(1, 2):b(2, 2)), x, ok)
+      if (ok) call parse_real(text(b(1, 3):b(2, 3)), y, ok)
+   end function quick_node
+
+   !> A line of exactly size(ids) positive integers read without allocating; .false. for
+   !> anything else, left to the general path and its messages.
+   logical function quick_ids(text, ids) result(ok)
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: ids(:)
+      integer :: b(2, 9), n, k
+      call field_bounds(text, b, n)
+      ok = n == size(ids)
+      do k = 1, n
+         if (.not. ok) exit
+         call parse_int(text(b(1, k):b(2, k)), ids(k), ok)
+         if (ok) ok = ids(k) > 0
+      end do
+   end function quick_ids
 
    !> Error for a keyword that needs data lines and has none.
    subroutine no_data_error(state, block, form, error)

@@ -3,6 +3,7 @@
 module pecplas_io_deck_text
    use pecplas_kinds, only: wp
    use pecplas_strings, only: upper, same_name, itoa
+   use pecplas_io_number, only: decimal_real, decimal_int
    implicit none (type, external)
    private
 
@@ -15,10 +16,10 @@ contains
       character(len=*), intent(in) :: s
       real(wp), intent(out) :: value
       logical, intent(out) :: ok
-      integer :: i, n, ndig, nexp, ios
+      integer :: i, n, ndig, nexp
       value = 0.0_wp
       ok = .false.
-      n = len_trim(s)
+      n = trimmed_len(s)
       if (n == 0) return
       i = 1
       if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
@@ -50,9 +51,10 @@ contains
          end do
          if (nexp == 0) return
       end if
-      read (s(1:n), *, iostat=ios) value
-      ok = ios == 0
-      if (ok) ok = abs(value) <= huge(value)
+      ! checked: convert without Fortran internal I/O (the same correctly rounded value)
+      value = decimal_real(s(1:n))
+      ok = abs(value) <= huge(value)
+      if (.not. ok) value = 0.0_wp
    end subroutine parse_real
 
    !> Strict integer: [sign] digits, within the default integer range.
@@ -60,10 +62,10 @@ contains
       character(len=*), intent(in) :: s
       integer, intent(out) :: value
       logical, intent(out) :: ok
-      integer :: i, n, i0, ios
+      integer :: i, n, i0
       value = 0
       ok = .false.
-      n = len_trim(s)
+      n = trimmed_len(s)
       if (n == 0) return
       i0 = 1
       if (s(1:1) == '+' .or. s(1:1) == '-') i0 = 2
@@ -72,9 +74,19 @@ contains
          if (.not. is_digit(s(i:i))) return
       end do
       if (n - i0 + 1 > 9) return
-      read (s(1:n), *, iostat=ios) value
-      ok = ios == 0
+      value = int(decimal_int(s(1:n)))
+      ok = .true.
    end subroutine parse_int
+
+   !> len_trim without the library call (fields of mesh lines end in no blank: one test).
+   pure integer function trimmed_len(s) result(n)
+      character(len=*), intent(in) :: s
+      n = len(s)
+      do while (n > 0)
+         if (iachar(s(n:n)) /= 32) exit  ! a test against ' ' would call len_trim
+         n = n - 1
+      end do
+   end function trimmed_len
 
    !> Appends ' name' to a blank-separated list used in messages.
    pure subroutine add_name(list, name)
