@@ -21,7 +21,8 @@ module pecplas_io_results_joints
    use pecplas_model, only: model_t
    use pecplas_io_results_increment, only: joint_fields_t, joint_points_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, safe_name, &
-      increment_group
+      increment_group, h5_describe
+   use pecplas_io_results_describe, only: results_units_t, JOINT_EPS, JOINT_SIGMA, MIXED_UNITS
    implicit none (type, external)
    private
 
@@ -158,12 +159,14 @@ contains
       end do
    end subroutine check_joint_fields
 
-   !> /increments/<NNNNNN>/joints/<set> (the increment group exists already).
-   subroutine write_joint_fields(file, global_increment, fields, layout, error)
+   !> /increments/<NNNNNN>/joints/<set> (the increment group exists already), each dataset
+   !> with its `units` (and `components` for the two-component ones).
+   subroutine write_joint_fields(file, global_increment, fields, layout, units, error)
       integer(hid_t), intent(in) :: file
       integer, intent(in) :: global_increment
       type(joint_fields_t), intent(in) :: fields(:)
       type(joint_layout_t), intent(in) :: layout(:)
+      type(results_units_t), intent(in) :: units
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: gall, g
       integer :: s
@@ -180,6 +183,20 @@ contains
             if (.not. allocated(error)) call h5_write(g, 'plastic_slip', f%slip, error)
             if (.not. allocated(error) .and. layout(s)%nstate > 0) &
                call h5_write(g, 'state', f%state, error)
+         end associate
+         associate (u => units%joints(s))
+            if (.not. allocated(error)) call h5_describe(g, 'relative_displacement', u%eps, &
+               error, JOINT_EPS)
+            if (.not. allocated(error)) call h5_describe(g, 'stress', units%stress, error, &
+               JOINT_SIGMA)
+            if (.not. allocated(error)) call h5_describe(g, 'plastic_slip', u%eps, error)
+            if (.not. allocated(error) .and. layout(s)%nstate > 0) then
+               if (size(u%state) == layout(s)%nstate) then
+                  call h5_describe(g, 'state', MIXED_UNITS, error, u%state)
+               else
+                  call h5_describe(g, 'state', MIXED_UNITS, error)
+               end if
+            end if
          end associate
          call h5_close_group(g)
          if (allocated(error)) exit
