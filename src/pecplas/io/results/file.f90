@@ -132,6 +132,7 @@ contains
       call plan_joints(model, points, this%joints, error)
       if (allocated(error)) return
       call plan_units(model, this%units)
+      call plan_xdmf_joints(this)
       call h5_init(error)
       if (allocated(error)) return
       this%path = path
@@ -217,6 +218,19 @@ contains
       character(len=:), allocatable :: path
       path = this%work(1:len(this%work) - 4)//'.new'
    end function staging_h5
+
+   !> The joint sets as the XDMF sees them.
+   subroutine plan_xdmf_joints(this)
+      class(results_file_t), intent(inout) :: this
+      integer :: s
+      if (allocated(this%layout%joints)) deallocate (this%layout%joints)
+      allocate (this%layout%joints(size(this%joints)))
+      do s = 1, size(this%joints)
+         this%layout%joints(s)%name = this%joints(s)%name
+         this%layout%joints(s)%npoint = this%joints(s)%npoint
+         this%layout%joints(s)%nel = this%joints(s)%nel
+      end do
+   end subroutine plan_xdmf_joints
 
    !> Checks the model and gauss_xy and records the layout of the file.
    subroutine plan(this, model, gauss_xy, error)

@@ -3,6 +3,7 @@
 !>        state_names (the law's history variables, when the law names them),
 !>        law_description (the law's own summary, e.g. MODJOIN's unit conversion, if any)
 !>        connectivity (npe, nel) 0-based in (B.8) order, element_ids (nel),
+!>        point_connectivity (np, nel): 0-based numbers of the points (for the XDMF grid),
 !>        point_coordinates (2, np, nel), point_tangents (2, np, nel) (n = (-t_y, t_x)),
 !>        tributary (nel, springs only)
 !>   /increments/<NNNNNN>/joints/<set>
@@ -101,6 +102,8 @@ contains
             if (.not. allocated(error)) call h5_write(g, 'connectivity', conn0, error)
             if (.not. allocated(error)) call h5_write(g, 'element_ids', ids, error)
             if (.not. allocated(error)) call h5_write(g, 'point_coordinates', points(s)%xy, error)
+            if (.not. allocated(error)) call h5_write(g, 'point_connectivity', &
+               point_numbers(size(points(s)%xy, 2), size(points(s)%xy, 3)), error)
             if (.not. allocated(error)) call h5_write(g, 'point_tangents', points(s)%tangent, &
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
@@ -117,6 +120,18 @@ contains
       end do
       call h5_close_group(gall)
    end subroutine write_joint_mesh
+
+   !> 0-based numbers of the (np, nel) points in storage order.
+   pure function point_numbers(np, nel) result(k)
+      integer, intent(in) :: np, nel
+      integer :: k(np, nel)
+      integer :: i, e
+      do e = 1, nel
+         do i = 1, np
+            k(i, e) = (e - 1)*np + i - 1
+         end do
+      end do
+   end function point_numbers
 
    !> Shapes and finite values of the joint fields of one increment.
    subroutine check_joint_fields(fields, layout, where, error)
