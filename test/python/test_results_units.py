@@ -139,17 +139,65 @@ def test_bad_units_line(tmp_path, text, phrase):
     assert not out.exists()
 
 
-def test_committed_decks_units_parse(tmp_path):
-    """Every *UNITS line of the decks in input/ and test/data is understood: each distinct
-    text runs in the small block deck."""
-    texts = set()
+def committed_units():
+    """{*UNITS text: is a path deck} of the decks in input/ and test/data."""
+    texts = {}
     for deck in list((ROOT / "input").rglob("*.inp")) + list((ROOT / "test/data").rglob("*.inp")):
         lines = deck.read_text(errors="replace").splitlines()
+        path = any(s.strip().upper().startswith("*PATH") for s in lines)
         for i, s in enumerate(lines[:-1]):
             if s.strip().upper() == "*UNITS":
-                texts.add(lines[i + 1].strip())
-    assert texts  # the decks do state their units
-    for text in sorted(texts):
-        deck, _ = with_units(tmp_path, text)
-        r = run(deck, tmp_path / "ok.h5")
-        assert r.returncode == 0, (text, r.stderr)
+                texts[(lines[i + 1].strip(), path)] = deck
+    return texts
+
+
+def test_committed_decks_units_parse(tmp_path):
+    """Every *UNITS line of the decks in input/ and test/data is understood: each distinct
+    text runs in the small block deck (path decks: in the example path deck)."""
+    texts = committed_units()
+    assert any(not path for _, path in texts)  # the decks do state their units
+    for text, path in sorted(texts):
+        if path:
+            deck = tmp_path / "p.inp"
+            deck.write_text(PATH_DECK.read_text().replace("mm, kPa", text))
+            r = run_path(deck, tmp_path / "p")
+        else:
+            deck, _ = with_units(tmp_path, text)
+            r = run(deck, tmp_path / "ok.h5")
+        assert r.returncode == 0, (text, texts[(text, path)], r.stderr)
+
+
+# ---- pecplas-path: *UNITS names a length and a stress (a point has no force) ----
+from pecplas_exe import program_cmd  # noqa: E402
+
+PATH_DECK = ROOT / "input" / "paths" / "cnl_mohr_coulomb.inp"
+
+
+def run_path(deck, out):
+    return subprocess.run([*program_cmd("pecplas-path"), str(deck), "-o", str(out), "--quiet"],
+                          cwd=ROOT, capture_output=True, text=True, timeout=120)
+
+
+def test_path_units_as_text(tmp_path):
+    """The example path deck says "mm, kPa": its columns carry those units as text."""
+    r = run_path(PATH_DECK, tmp_path / "p")
+    assert r.returncode == 0, r.stderr
+    with h5py.File(tmp_path / "p.h5") as f:
+        assert (attr(f, "length_unit"), attr(f, "stress_unit")) == ("mm", "kPa")
+        assert attr(f, "force_unit") == "(not stated)"
+        units = {k: attr(f[k], "units") for k in ("eps_t", "eps_n", "plastic_slip", "targets",
+                                                    "sigma_n", "tau")}
+        assert units == {"eps_t": "mm", "eps_n": "mm", "plastic_slip": "mm", "targets": "mm",
+                         "sigma_n": "kPa", "tau": "kPa"}
+
+
+def test_path_units_with_a_force(tmp_path):
+    """A force in a path deck's *UNITS is an input error at its line; nothing is written."""
+    text = PATH_DECK.read_text().replace("mm, kPa", "kN, m, kPa")
+    deck = tmp_path / "p.inp"
+    deck.write_text(text)
+    line = text.splitlines().index("kN, m, kPa") + 1
+    r = run_path(deck, tmp_path / "p")
+    assert r.returncode == 2
+    assert f"p.inp:{line}: [*UNITS] a path deck has no force" in r.stderr, r.stderr
+    assert not (tmp_path / "p.h5").exists()

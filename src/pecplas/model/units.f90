@@ -42,11 +42,14 @@ module pecplas_model_units
 contains
 
    !> Reads `text` (the *UNITS data line). On success `message` is empty; otherwise it says
-   !> what is wrong and what was expected, and `units` is not stated.
-   subroutine parse_units(text, units, message)
+   !> what is wrong and what was expected, and `units` is not stated. With `no_force`
+   !> (the point driver, which has no force), the line names a length and a stress unit only
+   !> and the force is UNITS_NOT_STATED.
+   subroutine parse_units(text, units, message, no_force)
       character(len=*), intent(in) :: text
       type(units_t), intent(out) :: units
       character(len=:), allocatable, intent(out) :: message
+      logical, intent(in), optional :: no_force
       character(len=:), allocatable :: word, length, force, stress, expected
       real(wp) :: si_stress, si_length, si_force, si
       integer :: start, i, n
@@ -65,6 +68,12 @@ contains
          end if
          start = i + 1
       end do
+      if (present(no_force)) then
+         if (no_force) then
+            call lengths_and_stress(text, length, force, stress, units, message)
+            return
+         end if
+      end if
       if (.not. allocated(length)) then
          message = 'no length unit in "'//trim(text)//'"; expected one of m, cm, mm'
       else if (.not. allocated(force)) then
@@ -90,6 +99,27 @@ contains
       units%force = force
       units%stress = stress
    end subroutine parse_units
+
+   !> The point driver's line: a length and a stress unit, no force.
+   subroutine lengths_and_stress(text, length, force, stress, units, message)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable, intent(in) :: length, force, stress
+      type(units_t), intent(inout) :: units
+      character(len=:), allocatable, intent(inout) :: message
+      if (allocated(force)) then
+         message = 'a path deck has no force: give a length and a stress unit only, e.g. '// &
+            '"mm, kPa"'
+      else if (.not. allocated(length)) then
+         message = 'no length unit in "'//trim(text)//'"; expected one of m, cm, mm'
+      else if (.not. allocated(stress)) then
+         message = 'no stress unit in "'//trim(text)//'"; expected one of Pa, kPa, MPa, GPa'
+      end if
+      if (len(message) > 0) return
+      units%stated = .true.
+      units%length = length
+      units%force = UNITS_NOT_STATED
+      units%stress = stress
+   end subroutine lengths_and_stress
 
    !> Files `word` as a length, force or stress unit; message names a repeat or an unknown word.
    subroutine classify(word, length, force, stress, message)
