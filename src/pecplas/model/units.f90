@@ -10,6 +10,7 @@
 !> then force/length**2, named Pa..GPa when one of those is equal).
 module pecplas_model_units
    use pecplas_kinds, only: wp
+   use pecplas_strings, only: same_name
    implicit none (type, external)
    private
 
@@ -217,20 +218,10 @@ contains
    pure integer function known(names, word) result(k)
       character(len=*), intent(in) :: names(:), word
       do k = 1, size(names)
-         if (lower(trim(names(k))) == lower(word)) return
+         if (same_name(names(k), word)) return
       end do
       k = 0
    end function known
-
-   pure function lower(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i
-      t = s
-      do i = 1, len(s)
-         if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
-      end do
-   end function lower
 
    !> Unit of `quantity` ('length', 'force', 'stress'; anything else is dimensionless '1');
    !> UNITS_NOT_STATED for a dimensional quantity when the deck has no *UNITS.
