@@ -54,6 +54,7 @@ program tester
    use test_massif_q8r, only: collect_massif_q8r
    use test_driver_sanity, only: collect_driver_sanity
    use test_linalg_threads, only: collect_linalg_threads
+   use test_model_units, only: collect_model_units
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -114,6 +115,7 @@ program tester
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
    suites = [suites, new_testsuite('driver_estimator', collect_estimator)]
+   suites = [suites, new_testsuite('model_units', collect_model_units)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -9,8 +9,12 @@ dataset has the same number of rows, that no float dataset or attribute holds Na
 that the status attribute is a known value consistent with `complete`, that each history
 row flagged with fields has its /increments group, that joint sets (/mesh/joint_sets, when
 present) have their datasets and, in every field increment, joint fields of matching shapes
-with modes 1 (stick), 2 (slip) or 3 (open), and that the .xmf parses as XML and each
-"file.h5:/path" DataItem names an existing dataset of the declared dimensions.
+with modes 1 (stick), 2 (slip) or 3 (open), that every float dataset (except the driver's
+packed /restart state) carries a `units` attribute and, where it has a component axis (its
+last), a `components` attribute of that length, with displacements, reactions and stresses
+in the root length_unit, force_unit and stress_unit, and that the .xmf parses as XML, each
+"file.h5:/path" DataItem names an existing dataset of the declared dimensions, HyperSlab
+items select inside their dataset, and every joint set has its grid in each increment.
 Exit status 0 when everything holds, 1 otherwise (each problem is printed).
 """
 
@@ -22,8 +26,9 @@ import xml.etree.ElementTree as ET
 import h5py
 import numpy as np
 
-ROOT_ATTRS = ["program", "version", "title", "units", "deck_file", "deck_text", "analysis",
-              "created", "status", "complete", "status_message"]
+ROOT_ATTRS = ["program", "version", "title", "units", "length_unit", "force_unit",
+              "stress_unit", "deck_file", "deck_text", "analysis", "created", "status",
+              "complete", "status_message"]
 STATUSES = ["running", "completed", "limit load", "diverged", "failed", "interrupted"]
 HISTORY_1D = ["step", "increment", "global_increment", "time", "iterations", "residual",
               "cpu_time", "fields", "method", "line_searches", "control"]
@@ -210,6 +215,44 @@ def check_finite(f, problems):
     f.visititems(visit)
 
 
+# datasets (by name) with a component axis, and the root attribute naming their unit
+COMPONENT_DATASETS = {
+    "coordinates": "length_unit", "gauss_coordinates": "length_unit",
+    "point_coordinates": "length_unit", "point_tangents": None,
+    "displacement": "length_unit", "displacement3": "length_unit",
+    "reaction": "force_unit", "reaction3": "force_unit",
+    "stress": "stress_unit", "stress_mean": "stress_unit", "strain": None,
+    "relative_displacement": None, "pattern_factors": None}
+
+
+def check_units(f, problems):
+    """Every float dataset says its units; component axes are named."""
+    root = {k: as_text(f.attrs[k]) for k in ("length_unit", "force_unit", "stress_unit")
+            if k in f.attrs}
+
+    def visit(name, obj):
+        if not isinstance(obj, h5py.Dataset) or obj.dtype.kind != "f":
+            return
+        if name.startswith("restart/") or name.startswith("restart_next/"):
+            return  # the driver's packed state, read back only by --restart
+        leaf = name.rsplit("/", 1)[-1]
+        units = obj.attrs.get("units")
+        if units is None or not as_text(units):
+            problems.append(f"/{name} has no 'units' attribute")
+        unit_attr = COMPONENT_DATASETS.get(leaf)
+        if unit_attr and unit_attr in root and units is not None \
+                and as_text(units) != root[unit_attr]:
+            problems.append(f"/{name} is in {as_text(units)!r}, not in the file's "
+                            f"{unit_attr} {root[unit_attr]!r}")
+        components = obj.attrs.get("components")
+        if leaf in COMPONENT_DATASETS and components is None:
+            problems.append(f"/{name} has no 'components' attribute")
+        if components is not None and (not obj.shape or len(components) != obj.shape[-1]):
+            problems.append(f"/{name} names {len(components)} components for shape "
+                            f"{obj.shape}")
+    f.visititems(visit)
+
+
 def check_status(f, expect, problems):
     if "status" not in f.attrs or "complete" not in f.attrs:
         return
@@ -259,7 +302,45 @@ def check_xdmf(h5_path, xmf_path, f, problems):
         if dims != f[path].shape:
             problems.append(f"DataItem {text!r}: Dimensions {dims} but dataset shape "
                             f"{f[path].shape}")
+    check_hyperslabs(root, problems)
+    check_joint_grids(root, f, problems)
     return len(items)
+
+
+def check_hyperslabs(root, problems):
+    """A HyperSlab item: start/stride/count rows inside its HDF item, count = Dimensions."""
+    for slab in root.iter("DataItem"):
+        if slab.get("ItemType") != "HyperSlab":
+            continue
+        kids = slab.findall("DataItem")
+        if len(kids) != 2:
+            problems.append("HyperSlab DataItem without its two DataItems")
+            continue
+        rows = np.array((kids[0].text or "").split(), dtype=int)
+        shape = tuple(int(x) for x in kids[1].get("Dimensions", "").split())
+        out = tuple(int(x) for x in slab.get("Dimensions", "").split())
+        if rows.size != 3 * len(shape):
+            problems.append(f"HyperSlab of {kids[1].text!r}: {rows.size} numbers for rank "
+                            f"{len(shape)}")
+            continue
+        start, stride, count = rows.reshape(3, len(shape))
+        last = start + stride * (count - 1)
+        if tuple(count) != out or np.any(start < 0) or np.any(last >= np.array(shape)):
+            problems.append(f"HyperSlab of {kids[1].text!r}: start {start}, stride {stride}, "
+                            f"count {count} does not fit {shape} or Dimensions {out}")
+
+
+def check_joint_grids(root, f, problems):
+    """Each spatial collection holds a grid 'joints_<set>' per joint set of the file."""
+    if "mesh/joint_sets" not in f:
+        return
+    wanted = {f"joints_{name}" for name in f["mesh/joint_sets"]}
+    for grid in root.iter("Grid"):
+        if grid.get("CollectionType") != "Spatial":
+            continue
+        names = {g.get("Name") for g in grid.findall("Grid")}
+        for name in sorted(wanted - names):
+            problems.append(f"XDMF increment {grid.get('Name')}: no grid {name}")
 
 
 def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):
@@ -274,6 +355,7 @@ def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):
         with_fields = check_history(f, problems)
         check_increments(f, with_fields, problems)
         check_finite(f, problems)
+        check_units(f, problems)
         check_status(f, expect_status, problems)
         nitems = 0
         if xdmf:

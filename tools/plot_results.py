@@ -68,9 +68,11 @@ def load_curve(f):
     node = nodes[int(np.argmax(np.abs(u_peak)))]
     u = np.array([f["increments"][key]["displacement"][node] @ direction for key in keys])
     load = factors[:, k] * np.linalg.norm(resultant)
-    units = f["/"].attrs.get("units", "")
-    units = units.decode() if isinstance(units, bytes) else str(units)
-    force, length = (units.split(",")[:2] + ["", ""])[:2] if units else ("", "")
+    def unit(name):  # the units read from *UNITS; "" when the deck did not state them
+        text = f["/"].attrs.get(name, "")
+        text = text.decode() if isinstance(text, bytes) else str(text)
+        return "" if text == "(not stated)" else text
+    force, length = unit("force_unit"), unit("length_unit")
     label = (f"'{names[k]}' (node {int(f['mesh/node_ids'][node])})",
              force.strip(), length.strip())
     return label, np.r_[0.0, load], np.r_[0.0, u]

@@ -6,6 +6,8 @@
 !>     *PATH, TYPE=CNL|CND|CNS, SIGMA_N0=100 [, KS=k (CNS only)] [, STEPS=n] [, TAU0=t]
 !>     2, -2, 2          ! successive eps_t targets (one = monotonic, several = cycles)
 !>     *OUTPUT, FILE=output/paths/name     ! -> name.csv and name.h5
+!>     *UNITS                                ! optional: length and stress (doc/path.md)
+!>     mm, kPa
 !>
 !> Everything that can be checked (law parameters, initial stress inside the strength) is
 !> checked here, before any output exists.
@@ -20,6 +22,7 @@ module pecjoin_path_deck
    use pecjoin_laws_type, only: interface_law_t, MODE_OPEN
    use pecjoin_laws_factory, only: law_registry_t, default_law_registry
    use pecjoin_laws_checks, only: length_unit_metres, LENGTH_UNIT_KEYS
+   use pecplas_model_units, only: units_t, parse_units
    implicit none (type, external)
    private
 
@@ -47,6 +50,8 @@ module pecjoin_path_deck
       real(wp), allocatable :: targets(:)
       !> Output path without extension ('' when not given).
       character(len=:), allocatable :: output
+      !> *UNITS (not stated when the deck has none): written next to the results.
+      type(units_t) :: units
    end type path_deck_t
 
 contains
@@ -100,9 +105,11 @@ contains
             if (.not. allocated(error)) call no_data(lines, first, last, error)
             if (.not. allocated(error)) call kw%require(lines(i), 'FILE', deck%output, error)
             if (.not. allocated(error)) call strip_extension(deck%output)
+         case ('*UNITS')
+            call read_units(lines, i, first, last, deck, error)
          case default
             call deck_error(error, lines(i)%file, lines(i)%line, name, 'unknown keyword '// &
-               name//' in a path deck; known keywords: *INTERFACE_LAW *PATH *OUTPUT')
+               name//' in a path deck; known keywords: *INTERFACE_LAW *PATH *OUTPUT *UNITS')
          end select
          if (allocated(error)) return
          i = last + 1
@@ -115,6 +122,24 @@ contains
       end if
       call check_initial_stress(deck, lines(path_at), error)
    end subroutine read_path_deck
+
+   !> *UNITS: one data line naming a length and a stress unit (pecplas_model_units; a point
+   !> has no force).
+   subroutine read_units(lines, at, first, last, deck, error)
+      type(deck_line_t), intent(in) :: lines(:)
+      integer, intent(in) :: at, first, last
+      type(path_deck_t), intent(inout) :: deck
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: message
+      if (last /= first) then
+         call deck_error(error, lines(at)%file, lines(at)%line, '*UNITS', 'expected exactly '// &
+            'one data line after *UNITS, found '//itoa(last - first + 1))
+         return
+      end if
+      call parse_units(lines(first)%text, deck%units, message, no_force=.true.)
+      if (len(message) > 0) call deck_error(error, lines(first)%file, lines(first)%line, &
+         '*UNITS', message)
+   end subroutine read_units
 
    subroutine once(line, seen_at, error)
       type(deck_line_t), intent(in) :: line

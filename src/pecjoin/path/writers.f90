@@ -1,11 +1,15 @@
 !> Output of the point driver: a CSV table (one row per increment, full precision) and an
 !> HDF5 file with the same columns as 1-D datasets at the root, described by attributes
-!> (program, deck text, law name/type/parameters, path type and its data).
+!> (program, deck text, law name/type/parameters, path type and its data). Each real
+!> dataset has a text attribute `units` (from the deck's *UNITS: length for eps_t, eps_n,
+!> plastic_slip and targets, stress for sigma_n and tau; "(not stated)" without *UNITS) and
+!> the root has length_unit, force_unit and stress_unit.
 module pecjoin_path_writers
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
-   use pecplas_io_results_h5, only: h5_init, h5_write, h5_attr, h5_group, h5_close_group
+   use pecplas_io_results_h5, only: h5_init, h5_write, h5_attr, h5_group, h5_close_group, &
+      h5_describe
    use pecjoin_laws_type, only: MODE_NAMES
    use pecjoin_path_deck, only: path_deck_t, PATH_NAMES, PATH_CNS
    use pecjoin_path_driver, only: path_result_t
@@ -103,6 +107,8 @@ contains
          if (allocated(error)) exit body
          call h5_write(file, 'plastic_slip', res%slip, error)
          if (allocated(error)) exit body
+         call write_units(file, deck, error)
+         if (allocated(error)) exit body
          ! the law: group /law with its name and type, one real attribute per parameter
          call h5_group(file, 'law', law, error)
          if (allocated(error)) exit body
@@ -123,6 +129,27 @@ contains
       call h5fclose_f(file, err)
       if (err /= 0 .and. .not. allocated(error)) call fatal_error(error, 'cannot close '//path)
    end subroutine write_path_h5
+
+   !> Root length_unit, force_unit, stress_unit and the `units` of each real dataset.
+   subroutine write_units(file, deck, error)
+      integer(hid_t), intent(in) :: file
+      type(path_deck_t), intent(in) :: deck
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: LENGTHS(4) = [character(len=12) :: 'targets', 'eps_t', &
+         'eps_n', 'plastic_slip']
+      integer :: i
+      associate (u => deck%units)
+         call h5_attr(file, 'length_unit', u%of('length'), error)
+         if (.not. allocated(error)) call h5_attr(file, 'force_unit', u%of('force'), error)
+         if (.not. allocated(error)) call h5_attr(file, 'stress_unit', u%of('stress'), error)
+         do i = 1, size(LENGTHS)
+            if (.not. allocated(error)) call h5_describe(file, trim(LENGTHS(i)), &
+               u%of('length'), error)
+         end do
+         if (.not. allocated(error)) call h5_describe(file, 'sigma_n', u%of('stress'), error)
+         if (.not. allocated(error)) call h5_describe(file, 'tau', u%of('stress'), error)
+      end associate
+   end subroutine write_units
 
    pure function mode_name(mode) result(name)
       integer, intent(in) :: mode

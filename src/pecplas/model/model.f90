@@ -10,6 +10,7 @@ module pecplas_model
    use pecjoin_laws_type, only: interface_law_box_t
    use pecplas_model_provenance, only: provenance_t
    use pecplas_warnings, only: warnings_t
+   use pecplas_model_units, only: units_t
    implicit none (type, external)
    private
 
@@ -17,8 +18,10 @@ module pecplas_model
 
    type :: model_t
       character(len=:), allocatable :: title
-      !> Free-text units note (e.g. "kN, m, kPa"); printed and stored, never used to convert.
+      !> The *UNITS line as written (e.g. "kN, m, kPa") and the units read from it (checked,
+      !> written next to every results dataset, never used to convert).
       character(len=:), allocatable :: units
+      type(units_t) :: unit_system
       !> Path of the main deck and the full deck text (includes expanded) for provenance.
       character(len=:), allocatable :: deck_file, deck_text
       type(analysis_t) :: analysis

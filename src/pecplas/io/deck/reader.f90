@@ -12,7 +12,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_mesh_import, only: read_mesh
    use pecplas_io_deck_reader_materials, only: read_material, read_section, resolve_sections
    use pecplas_io_deck_reader_loads, only: read_boundary, read_load
-   use pecplas_io_deck_reader_options, only: read_text, read_analysis, read_solver, &
+   use pecplas_io_deck_reader_options, only: read_text, read_units, read_analysis, read_solver, &
       read_output, read_step
    use pecplas_io_deck_resolve_mesh, only: build_mesh
    use pecplas_io_deck_reader_initial, only: read_initial_stress, resolve_initial_stress
@@ -127,7 +127,7 @@ contains
       case ('*TITLE')
          call read_text(state, block, model%title, error)
       case ('*UNITS')
-         call read_text(state, block, model%units, error)
+         call read_units(state, model, block, error)
       case ('*ANALYSIS')
          call no_data(state, block, error)
          if (.not. allocated(error)) call read_analysis(state, model, block, error)

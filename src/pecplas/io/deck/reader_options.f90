@@ -10,12 +10,13 @@ module pecplas_io_deck_reader_options
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
       line_error, where_text, push_item
    use pecplas_model, only: model_t
+   use pecplas_model_units, only: parse_units
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
       NONLINEAR_METHODS
    implicit none (type, external)
    private
 
-   public :: read_text, read_analysis, read_solver, read_output, read_step
+   public :: read_text, read_units, read_analysis, read_solver, read_output, read_step
 
 contains
 
@@ -34,6 +35,20 @@ contains
       end if
       text = state%lines(block%first)%text
    end subroutine read_text
+
+   !> *UNITS -- one data line naming the length, force and stress units (module
+   !> pecplas_model_units, doc/deck.md); kept as written and read into model%unit_system.
+   subroutine read_units(state, model, block, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: message
+      call read_text(state, block, model%units, error)
+      if (allocated(error)) return
+      call parse_units(model%units, model%unit_system, message)
+      if (len(message) > 0) call line_error(state, block%first, message, error)
+   end subroutine read_units
 
    !> *ANALYSIS, TYPE=PLANE_STRAIN|AXISYMMETRIC [, THICKNESS=t] (thickness: plane strain)
    subroutine read_analysis(state, model, block, error)

@@ -7,7 +7,8 @@ module pecplas_io_results_fields
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_increment, only: increment_result_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, h5_append, &
-      increment_group
+      increment_group, h5_describe
+   use pecplas_io_results_describe, only: results_units_t, XY, XYZ, STRESS_COMPONENTS
    use pecplas_io_results_xdmf, only: xdmf_layout_t
    implicit none (type, external)
    private
@@ -157,12 +158,14 @@ contains
       end if
    end subroutine write_history_row
 
-   !> Writes the field group of `inc` (already checked by check_increment).
-   subroutine write_fields(file, inc, layout, strains, error)
+   !> Writes the field group of `inc` (already checked by check_increment), each dataset
+   !> with its `units` and `components`.
+   subroutine write_fields(file, inc, layout, strains, units, error)
       integer(hid_t), intent(in) :: file
       type(increment_result_t), intent(in) :: inc
       type(xdmf_layout_t), intent(in) :: layout
       logical, intent(in) :: strains
+      type(results_units_t), intent(in) :: units
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: g, gsets, gs
       integer :: s
@@ -179,9 +182,13 @@ contains
       end if
       if (.not. allocated(error)) call h5_write(g, 'displacement', inc%displacement, error)
       if (.not. allocated(error)) call h5_write(g, 'displacement3', pad3(inc%displacement), error)
+      if (.not. allocated(error)) call h5_describe(g, 'displacement', units%length, error, XY)
+      if (.not. allocated(error)) call h5_describe(g, 'displacement3', units%length, error, XYZ)
       if (layout%reactions) then
          if (.not. allocated(error)) call h5_write(g, 'reaction', inc%reaction, error)
          if (.not. allocated(error)) call h5_write(g, 'reaction3', pad3(inc%reaction), error)
+         if (.not. allocated(error)) call h5_describe(g, 'reaction', units%force, error, XY)
+         if (.not. allocated(error)) call h5_describe(g, 'reaction3', units%force, error, XYZ)
       end if
       if (.not. allocated(error) .and. (layout%stresses .or. strains .or. inc%estimated)) &
          call h5_group(g, 'sets', gsets, error)
@@ -194,10 +201,19 @@ contains
                   call h5_write(gs, 'stress', f%stress, error)
                   if (.not. allocated(error)) &
                      call h5_write(gs, 'stress_mean', stress_mean(f%stress), error)
+                  if (.not. allocated(error)) call h5_describe(gs, 'stress', units%stress, &
+                     error, STRESS_COMPONENTS)
+                  if (.not. allocated(error)) call h5_describe(gs, 'stress_mean', &
+                     units%stress, error, STRESS_COMPONENTS)
                end if
-               if (strains .and. .not. allocated(error)) call h5_write(gs, 'strain', f%strain, error)
+               if (strains .and. .not. allocated(error)) then
+                  call h5_write(gs, 'strain', f%strain, error)
+                  if (.not. allocated(error)) call h5_describe(gs, 'strain', '1', error, &
+                     STRESS_COMPONENTS)
+               end if
                if (allocated(f%state) .and. .not. allocated(error)) then
-                  if (size(f%state) > 0) call h5_write(gs, 'state', f%state, error)
+                  if (size(f%state) > 0) call write_state(gs, f%state, units%sets(s)%state, &
+                     error)
                end if
                if (allocated(f%error_indicator) .and. .not. allocated(error)) &
                   call h5_write(gs, 'error_indicator', f%error_indicator, error)
@@ -209,6 +225,22 @@ contains
       call h5_close_group(gsets)
       call h5_close_group(g)
    end subroutine write_fields
+
+   !> A soil history dataset: all its values are strains or a return kind ("1"); its
+   !> components are the material's state names when they match its first axis.
+   subroutine write_state(gs, state, names, error)
+      integer(hid_t), intent(in) :: gs
+      real(wp), intent(in), contiguous :: state(:, :, :)
+      character(len=*), intent(in) :: names(:)
+      type(error_t), allocatable, intent(out) :: error
+      call h5_write(gs, 'state', state, error)
+      if (allocated(error)) return
+      if (size(names) == size(state, 1)) then
+         call h5_describe(gs, 'state', '1', error, names)
+      else
+         call h5_describe(gs, 'state', '1', error)
+      end if
+   end subroutine write_state
 
    !> Plain average over the Gauss points of each element, mean(4, nel): a cell value for
    !> ParaView, not a volume average.

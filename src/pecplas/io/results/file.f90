@@ -1,5 +1,6 @@
 !> The results file of a run (HDF5), written while the run goes on:
-!>   /            attributes program, version, format_version, title, units, deck_file,
+!>   /            attributes program, version, format_version, title, units (the *UNITS line),
+!>                length_unit, force_unit, stress_unit (as read from it), deck_file,
 !>                deck_text, analysis, thickness, threads, created, status, complete,
 !>                status_message, warnings (+ finished, and completed when status = 'completed')
 !>   /mesh        see pecplas_io_results_mesh
@@ -33,7 +34,7 @@ module pecplas_io_results_file
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
       joint_points_t, limit_point_t
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
-      h5_history_dataset, safe_name, h5_write
+      h5_history_dataset, safe_name, h5_write, h5_describe
    use pecplas_io_results_mesh, only: write_mesh
    use pecplas_io_results_restart, only: restart_data_t, write_restart_group
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
@@ -41,6 +42,8 @@ module pecplas_io_results_file
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
       check_joint_fields, write_joint_fields
+   use pecplas_io_results_describe, only: results_units_t, plan_units, describe_mesh, &
+      describe_history
    implicit none (type, external)
    private
 
@@ -78,6 +81,8 @@ module pecplas_io_results_file
       integer, allocatable :: ngauss(:)
       !> Joint sets (PECJOIN): points, elements and history size of each.
       type(joint_layout_t), allocatable :: joints(:)
+      !> Units and component names written next to the datasets.
+      type(results_units_t) :: units
       logical :: strains = .true.
       !> Global numbers and times of the increments with fields (for the XDMF).
       integer, allocatable :: written(:)
@@ -126,6 +131,8 @@ contains
       end if
       call plan_joints(model, points, this%joints, error)
       if (allocated(error)) return
+      call plan_units(model, this%units)
+      call plan_xdmf_joints(this)
       call h5_init(error)
       if (allocated(error)) return
       this%path = path
@@ -152,6 +159,8 @@ contains
       if (.not. allocated(error)) call write_mesh(this%file, model%mesh, gauss_xy, error)
       if (.not. allocated(error)) call write_joint_mesh(this%file, model, points, error)
       if (.not. allocated(error)) call create_history(this%file, model, error)
+      if (.not. allocated(error)) call describe_mesh(this%file, model, this%units, error)
+      if (.not. allocated(error)) call describe_history(this%file, this%units, error)
       if (.not. allocated(error)) then
          call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
          if (err /= 0) call fatal_error(error, 'HDF5: cannot flush results file '// &
@@ -209,6 +218,19 @@ contains
       character(len=:), allocatable :: path
       path = this%work(1:len(this%work) - 4)//'.new'
    end function staging_h5
+
+   !> The joint sets as the XDMF sees them.
+   subroutine plan_xdmf_joints(this)
+      class(results_file_t), intent(inout) :: this
+      integer :: s
+      if (allocated(this%layout%joints)) deallocate (this%layout%joints)
+      allocate (this%layout%joints(size(this%joints)))
+      do s = 1, size(this%joints)
+         this%layout%joints(s)%name = this%joints(s)%name
+         this%layout%joints(s)%npoint = this%joints(s)%npoint
+         this%layout%joints(s)%nel = this%joints(s)%nel
+      end do
+   end subroutine plan_xdmf_joints
 
    !> Checks the model and gauss_xy and records the layout of the file.
    subroutine plan(this, model, gauss_xy, error)
@@ -283,6 +305,12 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'format_version', 1, error)
       if (.not. allocated(error)) call h5_attr(file, 'title', text_or_empty(model%title), error)
       if (.not. allocated(error)) call h5_attr(file, 'units', text_or_empty(model%units), error)
+      if (.not. allocated(error)) call h5_attr(file, 'length_unit', &
+         model%unit_system%of('length'), error)
+      if (.not. allocated(error)) call h5_attr(file, 'force_unit', &
+         model%unit_system%of('force'), error)
+      if (.not. allocated(error)) call h5_attr(file, 'stress_unit', &
+         model%unit_system%of('stress'), error)
       if (.not. allocated(error)) call h5_attr(file, 'deck_file', &
          text_or_empty(model%deck_file), error)
       if (.not. allocated(error)) call h5_attr(file, 'deck_text', &
@@ -419,10 +447,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(int64) :: nbytes
       if (inc%write_fields) then
-         call write_fields(this%file, inc, this%layout, this%strains, error)
+         call write_fields(this%file, inc, this%layout, this%strains, this%units, error)
          if (allocated(error)) return
          if (size(this%joints) > 0) call write_joint_fields(this%file, inc%global_increment, &
-            inc%joint_fields, this%joints, error)
+            inc%joint_fields, this%joints, this%units, error)
          if (allocated(error)) return
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
@@ -523,6 +551,8 @@ contains
          limit%stiffness_parameter, error)
       if (.not. allocated(error)) call h5_write(g, 'pattern_factors', limit%pattern_factors, &
          error)
+      if (.not. allocated(error)) call h5_describe(g, 'pattern_factors', '1', error, &
+         this%units%patterns)
       call h5_close_group(g)
    end subroutine results_write_limit
 

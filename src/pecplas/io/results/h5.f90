@@ -16,14 +16,14 @@ module pecplas_io_results_h5
       h5awrite_f, h5aclose_f, h5tcopy_f, h5tset_cset_f, h5tclose_f, h5pcreate_f, &
       h5pset_chunk_f, h5pclose_f, h5eset_auto_f, H5T_STRING, H5T_CSET_UTF8_F, H5T_IEEE_F64LE, H5T_STD_I32LE, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
-      H5P_DATASET_CREATE_F
+      H5P_DATASET_CREATE_F, h5oopen_f, h5oclose_f
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    implicit none (type, external)
    private
 
    public :: h5_init, h5_group, h5_close_group, h5_write, h5_attr, h5_history_dataset, h5_append
-   public :: safe_name, increment_group
+   public :: safe_name, increment_group, h5_describe, h5_object_attr
 
    !> Rows per chunk of the extendible history datasets.
    integer(hsize_t), parameter :: HISTORY_CHUNK = 64
@@ -286,6 +286,42 @@ contains
       if (dset > 0) call h5dclose_f(dset, e2)
       if (err /= 0) call fatal_error(error, 'HDF5: cannot append to history dataset '//name)
    end subroutine append_ptr
+
+   !> Attributes `units` and (when given) `components` of the object (dataset or group) at
+   !> `path` under `loc`, which must exist.
+   subroutine h5_describe(loc, path, units, error, components)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: path, units
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: components(:)
+      integer(hid_t) :: obj
+      integer :: err
+      call h5oopen_f(loc, path, obj, err)
+      if (err /= 0) then
+         call fatal_error(error, 'HDF5: cannot open '//path//' to describe it')
+         return
+      end if
+      call attr_string(obj, 'units', units, error)
+      if (.not. allocated(error) .and. present(components)) &
+         call attr_strings(obj, 'components', components, error)
+      call h5oclose_f(obj, err)
+   end subroutine h5_describe
+
+   !> String-list attribute `name` of the object (dataset or group) at `path` under `loc`.
+   subroutine h5_object_attr(loc, path, name, values, error)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: path, name, values(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj
+      integer :: err
+      call h5oopen_f(loc, path, obj, err)
+      if (err /= 0) then
+         call fatal_error(error, 'HDF5: cannot open '//path)
+         return
+      end if
+      call attr_strings(obj, name, values, error)
+      call h5oclose_f(obj, err)
+   end subroutine h5_object_attr
 
    !> Scalar variable-length UTF-8 string attribute.
    subroutine attr_string(loc, name, value, error)

@@ -3,6 +3,7 @@
 !>        state_names (the law's history variables, when the law names them),
 !>        law_description (the law's own summary, e.g. MODJOIN's unit conversion, if any)
 !>        connectivity (npe, nel) 0-based in (B.8) order, element_ids (nel),
+!>        point_connectivity (np, nel): 0-based numbers of the points (for the XDMF grid),
 !>        point_coordinates (2, np, nel), point_tangents (2, np, nel) (n = (-t_y, t_x)),
 !>        tributary (nel, springs only)
 !>   /increments/<NNNNNN>/joints/<set>
@@ -21,7 +22,8 @@ module pecplas_io_results_joints
    use pecplas_model, only: model_t
    use pecplas_io_results_increment, only: joint_fields_t, joint_points_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, safe_name, &
-      increment_group
+      increment_group, h5_describe
+   use pecplas_io_results_describe, only: results_units_t, JOINT_EPS, JOINT_SIGMA, MIXED_UNITS
    implicit none (type, external)
    private
 
@@ -100,6 +102,8 @@ contains
             if (.not. allocated(error)) call h5_write(g, 'connectivity', conn0, error)
             if (.not. allocated(error)) call h5_write(g, 'element_ids', ids, error)
             if (.not. allocated(error)) call h5_write(g, 'point_coordinates', points(s)%xy, error)
+            if (.not. allocated(error)) call h5_write(g, 'point_connectivity', &
+               point_numbers(size(points(s)%xy, 2), size(points(s)%xy, 3)), error)
             if (.not. allocated(error)) call h5_write(g, 'point_tangents', points(s)%tangent, &
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
@@ -116,6 +120,18 @@ contains
       end do
       call h5_close_group(gall)
    end subroutine write_joint_mesh
+
+   !> 0-based numbers of the (np, nel) points in storage order.
+   pure function point_numbers(np, nel) result(k)
+      integer, intent(in) :: np, nel
+      integer :: k(np, nel)
+      integer :: i, e
+      do e = 1, nel
+         do i = 1, np
+            k(i, e) = (e - 1)*np + i - 1
+         end do
+      end do
+   end function point_numbers
 
    !> Shapes and finite values of the joint fields of one increment.
    subroutine check_joint_fields(fields, layout, where, error)
@@ -158,12 +174,14 @@ contains
       end do
    end subroutine check_joint_fields
 
-   !> /increments/<NNNNNN>/joints/<set> (the increment group exists already).
-   subroutine write_joint_fields(file, global_increment, fields, layout, error)
+   !> /increments/<NNNNNN>/joints/<set> (the increment group exists already), each dataset
+   !> with its `units` (and `components` for the two-component ones).
+   subroutine write_joint_fields(file, global_increment, fields, layout, units, error)
       integer(hid_t), intent(in) :: file
       integer, intent(in) :: global_increment
       type(joint_fields_t), intent(in) :: fields(:)
       type(joint_layout_t), intent(in) :: layout(:)
+      type(results_units_t), intent(in) :: units
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: gall, g
       integer :: s
@@ -182,6 +200,20 @@ contains
                call h5_write(g, 'error_indicator', f%error_indicator, error)
             if (.not. allocated(error) .and. layout(s)%nstate > 0) &
                call h5_write(g, 'state', f%state, error)
+         end associate
+         associate (u => units%joints(s))
+            if (.not. allocated(error)) call h5_describe(g, 'relative_displacement', u%eps, &
+               error, JOINT_EPS)
+            if (.not. allocated(error)) call h5_describe(g, 'stress', units%stress, error, &
+               JOINT_SIGMA)
+            if (.not. allocated(error)) call h5_describe(g, 'plastic_slip', u%eps, error)
+            if (.not. allocated(error) .and. layout(s)%nstate > 0) then
+               if (size(u%state) == layout(s)%nstate) then
+                  call h5_describe(g, 'state', MIXED_UNITS, error, u%state)
+               else
+                  call h5_describe(g, 'state', MIXED_UNITS, error)
+               end if
+            end if
          end associate
          call h5_close_group(g)
          if (allocated(error)) exit

@@ -5,6 +5,13 @@
 !> ParaView's XDMF reader takes a "Vector" attribute only with 3 components, so the file
 !> stores displacement3 / reaction3 (z = 0) next to the 2-component arrays and the XDMF
 !> references those. stress_mean (4 components xx, yy, zz, xy) is a "Matrix" attribute.
+!>
+!> Each joint set is a grid of its own in every increment: its integration points as a
+!> Polyline per joint element (a Polyvertex for springs, one point each) through
+!> /mesh/joint_sets/<set>/point_connectivity, with node attributes sigma_n, tau, eps_n, eps_t
+!> (HyperSlabs of the two-component stress and relative_displacement), mode and
+!> plastic_slip, so that ParaView plots them along the interface (Plot Over Line, or a
+!> spreadsheet sorted by the coordinates).
 module pecplas_io_results_xdmf
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
@@ -14,7 +21,7 @@ module pecplas_io_results_xdmf
    implicit none (type, external)
    private
 
-   public :: xdmf_set_t, xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, write_xdmf
+   public :: xdmf_set_t, xdmf_joint_t, xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, write_xdmf
 
    !> One element set as the XDMF sees it.
    type :: xdmf_set_t
@@ -25,10 +32,17 @@ module pecplas_io_results_xdmf
       integer :: nel = 0, npe = 0
    end type xdmf_set_t
 
+   !> One joint set: group name under /mesh/joint_sets, points per element, elements.
+   type :: xdmf_joint_t
+      character(len=:), allocatable :: name
+      integer :: npoint = 0, nel = 0
+   end type xdmf_joint_t
+
    !> What the results file holds: enough to write the XDMF without reading the HDF5 file.
    type :: xdmf_layout_t
       integer :: nnode = 0
       type(xdmf_set_t), allocatable :: sets(:)
+      type(xdmf_joint_t), allocatable :: joints(:)
       logical :: reactions = .true., stresses = .true.
       !> Cell attribute error_indicator (*OUTPUT, ERROR_ESTIMATE=YES).
       logical :: error_estimate = .false.
@@ -202,8 +216,64 @@ contains
             call put(b, '    </Grid>')
          end associate
       end do
+      if (allocated(layout%joints)) then
+         do s = 1, size(layout%joints)
+            call put_joint_grid(b, layout%joints(s), h5, group, inc)
+         end do
+      end if
       call put(b, '   </Grid>')
    end subroutine put_increment
+
+   !> The grid of the points of one joint set; inc = 0: the points without attributes.
+   subroutine put_joint_grid(b, joint, h5, group, inc)
+      type(text_buffer_t), intent(inout) :: b
+      type(xdmf_joint_t), intent(in) :: joint
+      character(len=*), intent(in) :: h5, group
+      integer, intent(in) :: inc
+      character(len=:), allocatable :: mesh, fields, topology, dims
+      mesh = h5//'/mesh/joint_sets/'//joint%name
+      fields = h5//group//'/joints/'//joint%name
+      topology = 'Polyline'
+      if (joint%npoint == 1) topology = 'Polyvertex'
+      dims = itoa(joint%nel)//' '//itoa(joint%npoint)
+      call put(b, '    <Grid Name="joints_'//joint%name//'" GridType="Uniform">')
+      call put(b, '     <Topology TopologyType="'//topology//'" NumberOfElements="'// &
+         itoa(joint%nel)//'" NodesPerElement="'//itoa(joint%npoint)//'">')
+      call data_item(b, mesh//'/point_connectivity', joint%nel, joint%npoint, 'Int', 4)
+      call put(b, '     </Topology>')
+      call put(b, '     <Geometry GeometryType="XY">')
+      call put(b, '      <DataItem Dimensions="'//dims//' 2" NumberType="Float" '// &
+         'Precision="8" Format="HDF">'//mesh//'/point_coordinates</DataItem>')
+      call put(b, '     </Geometry>')
+      if (inc > 0) then
+         call component(b, 'sigma_n', fields//'/stress', dims, 0)
+         call component(b, 'tau', fields//'/stress', dims, 1)
+         call component(b, 'eps_n', fields//'/relative_displacement', dims, 0)
+         call component(b, 'eps_t', fields//'/relative_displacement', dims, 1)
+         call put(b, '     <Attribute Name="mode" AttributeType="Scalar" Center="Node">')
+         call data_item(b, fields//'/mode', joint%nel, joint%npoint, 'Int', 4)
+         call put(b, '     </Attribute>')
+         call attribute(b, 'plastic_slip', 'Scalar', 'Node', fields//'/plastic_slip', &
+            joint%nel, joint%npoint)
+      end if
+      call put(b, '    </Grid>')
+   end subroutine put_joint_grid
+
+   !> Scalar node attribute: component k (0-based) of a (nel, npoint, 2) dataset.
+   subroutine component(b, name, ref, dims, k)
+      type(text_buffer_t), intent(inout) :: b
+      character(len=*), intent(in) :: name, ref, dims
+      integer, intent(in) :: k
+      call put(b, '     <Attribute Name="'//name//'" AttributeType="Scalar" Center="Node">')
+      call put(b, '      <DataItem ItemType="HyperSlab" Dimensions="'//dims//' 1" '// &
+         'Type="HyperSlab">')
+      call put(b, '       <DataItem Dimensions="3 3" Format="XML">0 0 '//itoa(k)// &
+         ' 1 1 1 '//dims//' 1</DataItem>')
+      call put(b, '       <DataItem Dimensions="'//dims//' 2" NumberType="Float" '// &
+         'Precision="8" Format="HDF">'//ref//'</DataItem>')
+      call put(b, '      </DataItem>')
+      call put(b, '     </Attribute>')
+   end subroutine component
 
    subroutine attribute(b, name, kind, center, ref, rows, cols)
       type(text_buffer_t), intent(inout) :: b

@@ -10,7 +10,8 @@ module pecplas_massif_materials_drucker_prager
    use pecplas_model_params, only: params_t
    use pecplas_massif_materials_type, only: material_t, NCOMP
    use pecplas_massif_materials_soil, only: soil_params_t, read_soil_params, soil_hooke, &
-      soil_plastic_state, NSTATE_SOIL, RETURN_ELASTIC, RETURN_SMOOTH, RETURN_APEX
+      soil_plastic_state, NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC, RETURN_SMOOTH, &
+      RETURN_APEX
    implicit none (type, external)
    private
 
@@ -24,6 +25,7 @@ module pecplas_massif_materials_drucker_prager
       real(wp) :: eta = 0.0_wp, xi = 0.0_wp, etabar = 0.0_wp
    contains
       procedure :: nstate => drucker_prager_nstate
+      procedure :: state_names => drucker_prager_state_names
       procedure :: elastic_tangent => drucker_prager_elastic_tangent
       procedure :: update => drucker_prager_update
       procedure :: symmetric_tangent => drucker_prager_symmetric_tangent
@@ -88,6 +90,13 @@ contains
       class(drucker_prager_t), intent(in) :: this
       n = NSTATE_SOIL
    end function drucker_prager_nstate
+
+   pure subroutine drucker_prager_state_names(this, names)
+      class(drucker_prager_t), intent(in) :: this
+      character(len=16), allocatable, intent(out) :: names(:)
+      allocate (names(NSTATE_SOIL))
+      names = SOIL_STATE_NAMES
+   end subroutine drucker_prager_state_names
 
    pure subroutine drucker_prager_elastic_tangent(this, tangent)
       class(drucker_prager_t), intent(in) :: this

@@ -9,7 +9,7 @@ module pecplas_massif_materials_mohr_coulomb
    use pecplas_model_params, only: params_t
    use pecplas_massif_materials_type, only: material_t, NCOMP
    use pecplas_massif_materials_soil, only: soil_params_t, read_soil_params, soil_hooke, &
-      soil_plastic_state, NSTATE_SOIL, RETURN_ELASTIC
+      soil_plastic_state, NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC
    use pecplas_massif_materials_principal, only: principal_axes_t, principal_decompose, &
       principal_compose, principal_tangent
    use pecplas_massif_materials_mohr_coulomb_return, only: mohr_coulomb_return, &
@@ -26,6 +26,7 @@ module pecplas_massif_materials_mohr_coulomb
       real(wp) :: tension = huge(1.0_wp)
    contains
       procedure :: nstate => mohr_coulomb_nstate
+      procedure :: state_names => mohr_coulomb_state_names
       procedure :: elastic_tangent => mohr_coulomb_elastic_tangent
       procedure :: update => mohr_coulomb_update
       procedure :: symmetric_tangent => mohr_coulomb_symmetric_tangent
@@ -60,6 +61,13 @@ contains
       class(mohr_coulomb_t), intent(in) :: this
       n = NSTATE_SOIL
    end function mohr_coulomb_nstate
+
+   pure subroutine mohr_coulomb_state_names(this, names)
+      class(mohr_coulomb_t), intent(in) :: this
+      character(len=16), allocatable, intent(out) :: names(:)
+      allocate (names(NSTATE_SOIL))
+      names = SOIL_STATE_NAMES
+   end subroutine mohr_coulomb_state_names
 
    pure subroutine mohr_coulomb_elastic_tangent(this, tangent)
       class(mohr_coulomb_t), intent(in) :: this

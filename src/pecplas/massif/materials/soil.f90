@@ -14,10 +14,13 @@ module pecplas_massif_materials_soil
    private
 
    public :: soil_params_t, read_soil_params, soil_hooke, soil_plastic_state
-   public :: NSTATE_SOIL, RETURN_ELASTIC, RETURN_SMOOTH, RETURN_EDGE, RETURN_APEX
+   public :: NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC, RETURN_SMOOTH, RETURN_EDGE, RETURN_APEX
 
    !> Number of history values of a soil point.
    integer, parameter :: NSTATE_SOIL = 6
+   !> Names of the history values (results file `state_names`), in the order above.
+   character(len=*), parameter :: SOIL_STATE_NAMES(NSTATE_SOIL) = [character(len=11) :: &
+      'eps_p_xx', 'eps_p_yy', 'eps_p_zz', 'eps_p_xy', 'eps_p_eq', 'return_kind']
    !> Kinds of return, stored in state(6): elastic, one active surface (smooth part of the
    !> cone, Mohr–Coulomb main plane or tension plane), two (edge), three or the apex.
    integer, parameter :: RETURN_ELASTIC = 0, RETURN_SMOOTH = 1, RETURN_EDGE = 2, RETURN_APEX = 3

@@ -28,6 +28,8 @@ module pecplas_massif_materials_type
       !> False when the consistent tangent can be non-symmetric (non-associated flow):
       !> full Newton then factorises with UMFPACK instead of CHOLMOD.
       procedure :: symmetric_tangent => material_symmetric_tangent
+      !> Names of the history variables (results file `state_names`); none by default.
+      procedure :: state_names => material_state_names
    end type material_t
 
    !> Holder so that arrays of polymorphic materials can be built.
@@ -64,5 +66,11 @@ contains
       class(material_t), intent(in) :: this
       material_symmetric_tangent = .true.
    end function material_symmetric_tangent
+
+   pure subroutine material_state_names(this, names)
+      class(material_t), intent(in) :: this
+      character(len=16), allocatable, intent(out) :: names(:)
+      allocate (names(0))
+   end subroutine material_state_names
 
 end module pecplas_massif_materials_type
