@@ -43,6 +43,7 @@ program tester
    use test_pecjoin_modjoin_cyclic, only: collect_pecjoin_modjoin_cyclic
    use test_advise, only: collect_advise
    use test_refine, only: collect_refine
+   use test_refine_local, only: collect_refine_local
    use test_pecjoin_katona, only: collect_pecjoin_katona
    use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
    use test_pecjoin_identify, only: collect_pecjoin_identify
@@ -112,6 +113,7 @@ program tester
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
+   suites = [suites, new_testsuite('refine_local', collect_refine_local)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

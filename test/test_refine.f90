@@ -20,7 +20,7 @@ module test_refine
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
-   public :: collect_refine
+   public :: collect_refine, run_model, total_area
 
    character(len=*), parameter :: DATA = 'test/data/joints/'
    character(len=*), parameter :: DIR = 'build/test_out/refine'

@@ -253,6 +253,7 @@ contains
       real(wp), allocatable, intent(inout) :: fpr(:)
       integer :: k, ed
       call split_edge_list(le, e, f)
+      if (allocated(fpr)) deallocate (fpr)
       allocate (fpr(0))
       do k = 1, size(e, 2)
          ed = edge_of(le, e(1, k), e(2, k))

@@ -111,9 +111,7 @@ contains
                if (size(ed) == 3) then
                   k = longest(model, ed, le)
                   if (.not. le%marked(ed(k))) call mark(le, ed(k), changed)
-               else if (.not. (all(le%marked(ed)) .or. (le%marked(ed(1)) .eqv. &
-                  le%marked(ed(3)) .and. (le%marked(ed(2)) .eqv. le%marked(ed(4))) .and. &
-                  (le%marked(ed(1)) .neqv. le%marked(ed(2)))))) then
+               else if (.not. quad_admissible(le%marked(ed))) then
                   do k = 1, 4
                      call mark(le, ed(k), changed)
                   end do
@@ -159,6 +157,13 @@ contains
          end do
       end do
    end subroutine spring_pairs
+
+   !> No mark, all four, or exactly two opposite sides.
+   pure logical function quad_admissible(mk) result(ok)
+      logical, intent(in) :: mk(4)
+      ok = all(mk) .or. .not. any(mk) .or. &
+         ((mk(1) .eqv. mk(3)) .and. (mk(2) .eqv. mk(4)) .and. (mk(1) .neqv. mk(2)))
+   end function quad_admissible
 
    subroutine mark(le, e, changed)
       type(local_edges_t), intent(inout) :: le
