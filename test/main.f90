@@ -9,6 +9,7 @@ program tester
    use test_initial, only: collect_initial
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
+   use test_estimator, only: collect_estimator
    use test_model_mesh_tools, only: collect_model_mesh_tools
    use test_io_gmsh, only: collect_io_gmsh
    use test_massif_shapes, only: collect_massif_shapes
@@ -113,6 +114,7 @@ program tester
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
+   suites = [suites, new_testsuite('driver_estimator', collect_estimator)]
    suites = [suites, new_testsuite('refine_local', collect_refine_local)]
 
    nargs = command_argument_count()

@@ -9,6 +9,7 @@ module pecplas_driver_output
    use pecplas_io_results_increment, only: increment_result_t
    use pecjoin_laws_coulomb, only: plastic_slip
    use pecplas_driver_restart, only: pack_restart
+   use pecplas_driver_estimator, only: error_estimate_t, estimate_error
    implicit none (type, external)
    private
 
@@ -54,11 +55,35 @@ contains
             r%set_fields(s)%state = problem%state%sets(s)%hist
          end do
          call joint_fields(model, problem, r)
+         if (model%output%error_estimate) call add_estimate(model, problem, r, error)
+         if (allocated(error)) return
       end if
       call results%write_increment(r, error)
       ! the state to restart from, replaced at every converged increment
       if (.not. allocated(error)) call results%write_restart(pack_restart(problem), error)
    end subroutine write_increment
+
+   !> Error indicators of the massif and joint elements with the fields.
+   subroutine add_estimate(model, problem, r, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(increment_result_t), intent(inout) :: r
+      type(error_t), allocatable, intent(out) :: error
+      type(error_estimate_t) :: est
+      integer :: s
+      call estimate_error(model, problem, est, error)
+      if (allocated(error)) return
+      r%estimated = .true.
+      r%error_estimate = est%eta
+      r%energy_norm = est%energy
+      do s = 1, size(r%set_fields)
+         r%set_fields(s)%error_indicator = est%sets(s)%eta
+      end do
+      if (.not. allocated(r%joint_fields)) return
+      do s = 1, size(r%joint_fields)
+         r%joint_fields(s)%error_indicator = est%joints(s)%eta
+      end do
+   end subroutine add_estimate
 
    !> Converged joint fields of every joint set; the plastic slip is the law's own
    !> (pecjoin_laws_coulomb: plastic_slip, 0 for a law without one).

@@ -51,6 +51,8 @@ module pecplas_model_options
       !> Write fields every `every` increments (and always the last of each step).
       integer :: every = 1
       logical :: stresses = .true., strains = .true., reactions = .true.
+      !> Zienkiewicz–Zhu error estimate with the fields (*OUTPUT, ERROR_ESTIMATE=YES).
+      logical :: error_estimate = .false.
    end type output_options_t
 
 end module pecplas_model_options

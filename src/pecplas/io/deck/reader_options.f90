@@ -111,6 +111,7 @@ contains
    end subroutine read_solver
 
    !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]
+   !> [, ERROR_ESTIMATE=YES|NO]
    subroutine read_output(state, model, block, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -118,8 +119,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: file
       logical :: found
-      call block%kw%check_keys(state%lines(block%at), [character(len=9) :: 'FILE', 'EVERY', &
-         'STRESSES', 'STRAINS', 'REACTIONS'], error)
+      call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'FILE', 'EVERY', &
+         'STRESSES', 'STRAINS', 'REACTIONS', 'ERROR_ESTIMATE'], error)
       if (allocated(error)) return
       call block%kw%get('FILE', file, found)
       if (found) model%output%file = file
@@ -130,6 +131,8 @@ contains
       call param_yes_no(state, block, 'STRAINS', model%output%strains, error)
       if (allocated(error)) return
       call param_yes_no(state, block, 'REACTIONS', model%output%reactions, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'ERROR_ESTIMATE', model%output%error_estimate, error)
    end subroutine read_output
 
    !> *STEP [, NAME=name] [, INCREMENTS=n] [, CONTROL=LOAD|ARC_LENGTH] -- data: pattern,

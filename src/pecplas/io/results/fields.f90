@@ -173,13 +173,17 @@ contains
       if (.not. allocated(error)) call h5_attr(g, 'increment', inc%increment, error)
       if (.not. allocated(error)) call h5_attr(g, 'global_increment', inc%global_increment, error)
       if (.not. allocated(error)) call h5_attr(g, 'time', inc%time, error)
+      if (inc%estimated .and. .not. allocated(error)) then
+         call h5_attr(g, 'error_estimate', inc%error_estimate, error)
+         if (.not. allocated(error)) call h5_attr(g, 'energy_norm', inc%energy_norm, error)
+      end if
       if (.not. allocated(error)) call h5_write(g, 'displacement', inc%displacement, error)
       if (.not. allocated(error)) call h5_write(g, 'displacement3', pad3(inc%displacement), error)
       if (layout%reactions) then
          if (.not. allocated(error)) call h5_write(g, 'reaction', inc%reaction, error)
          if (.not. allocated(error)) call h5_write(g, 'reaction3', pad3(inc%reaction), error)
       end if
-      if (.not. allocated(error) .and. (layout%stresses .or. strains)) &
+      if (.not. allocated(error) .and. (layout%stresses .or. strains .or. inc%estimated)) &
          call h5_group(g, 'sets', gsets, error)
       if (.not. allocated(error) .and. gsets > 0) then
          do s = 1, size(layout%sets)
@@ -195,6 +199,8 @@ contains
                if (allocated(f%state) .and. .not. allocated(error)) then
                   if (size(f%state) > 0) call h5_write(gs, 'state', f%state, error)
                end if
+               if (allocated(f%error_indicator) .and. .not. allocated(error)) &
+                  call h5_write(gs, 'error_indicator', f%error_indicator, error)
             end associate
             call h5_close_group(gs)
             if (allocated(error)) exit

@@ -233,6 +233,7 @@ contains
       this%layout%nnode = model%mesh%nnode()
       this%layout%reactions = model%output%reactions
       this%layout%stresses = model%output%stresses
+      this%layout%error_estimate = model%output%error_estimate
       this%strains = model%output%strains
       this%npattern = 0
       if (allocated(model%patterns)) this%npattern = size(model%patterns)

@@ -16,6 +16,8 @@ module pecplas_io_results_increment
       !> Material history state(nstate, ngauss, nel) (e.g. plastic strains); unallocated or
       !> empty when the material has none.
       real(wp), allocatable :: state(:, :, :)
+      !> Error indicator of each element (nel), with *OUTPUT, ERROR_ESTIMATE=YES.
+      real(wp), allocatable :: error_indicator(:)
    end type set_fields_t
 
    !> Coordinates of the Gauss points of one element set, xy(2, ngauss, nel); given once to
@@ -32,6 +34,8 @@ module pecplas_io_results_increment
    type :: joint_fields_t
       real(wp), allocatable :: eps(:, :, :), sigma(:, :, :), slip(:, :), state(:, :, :)
       integer, allocatable :: mode(:, :)
+      !> Error indicator of each joint element (nel), with *OUTPUT, ERROR_ESTIMATE=YES.
+      real(wp), allocatable :: error_indicator(:)
    end type joint_fields_t
 
    !> Coordinates and unit tangents (2, np, nel) of the points of one joint set.
@@ -63,6 +67,9 @@ module pecplas_io_results_increment
       type(set_fields_t), allocatable :: set_fields(:)
       !> One entry per joint set, in model%joint_sets order (absent: no joints).
       type(joint_fields_t), allocatable :: joint_fields(:)
+      !> Global error estimate and energy norm of the solution (when estimated).
+      logical :: estimated = .false.
+      real(wp) :: error_estimate = 0.0_wp, energy_norm = 0.0_wp
    end type increment_result_t
 
    !> The largest load of a path that has a maximum: step, global increment and step

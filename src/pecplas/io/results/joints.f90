@@ -178,6 +178,8 @@ contains
             if (.not. allocated(error)) call h5_write(g, 'stress', f%sigma, error)
             if (.not. allocated(error)) call h5_write(g, 'mode', f%mode, error)
             if (.not. allocated(error)) call h5_write(g, 'plastic_slip', f%slip, error)
+            if (allocated(f%error_indicator) .and. .not. allocated(error)) &
+               call h5_write(g, 'error_indicator', f%error_indicator, error)
             if (.not. allocated(error) .and. layout(s)%nstate > 0) &
                call h5_write(g, 'state', f%state, error)
          end associate

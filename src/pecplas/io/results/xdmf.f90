@@ -30,6 +30,8 @@ module pecplas_io_results_xdmf
       integer :: nnode = 0
       type(xdmf_set_t), allocatable :: sets(:)
       logical :: reactions = .true., stresses = .true.
+      !> Cell attribute error_indicator (*OUTPUT, ERROR_ESTIMATE=YES).
+      logical :: error_estimate = .false.
    end type xdmf_layout_t
 
    !> A growing text (amortised doubling).
@@ -194,6 +196,8 @@ contains
                   h5//group//'/reaction3', layout%nnode, 3)
                if (layout%stresses) call attribute(b, 'stress_mean', 'Matrix', 'Cell', &
                   h5//group//'/sets/'//set%name//'/stress_mean', set%nel, 4)
+               if (layout%error_estimate) call scalar_attribute(b, 'error_indicator', &
+                  h5//group//'/sets/'//set%name//'/error_indicator', set%nel)
             end if
             call put(b, '    </Grid>')
          end associate
@@ -210,6 +214,17 @@ contains
       call data_item(b, ref, rows, cols, 'Float', 8)
       call put(b, '     </Attribute>')
    end subroutine attribute
+
+   !> A cell scalar of a one-dimensional dataset (n).
+   subroutine scalar_attribute(b, name, ref, n)
+      type(text_buffer_t), intent(inout) :: b
+      integer, intent(in) :: n
+      character(len=*), intent(in) :: name, ref
+      call put(b, '     <Attribute Name="'//name//'" AttributeType="Scalar" Center="Cell">')
+      call put(b, '      <DataItem Dimensions="'//itoa(n)//'" NumberType="Float" '// &
+         'Precision="8" Format="HDF">'//ref//'</DataItem>')
+      call put(b, '     </Attribute>')
+   end subroutine scalar_attribute
 
    !> An HDF5 DataItem; Dimensions are the h5py (C-order) shape of the dataset.
    subroutine data_item(b, ref, rows, cols, number_type, precision)
