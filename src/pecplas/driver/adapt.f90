@@ -3,7 +3,8 @@
 !> error of the goal is below the target or the DOF budget is reached.
 !> Goals: the energy norm (estimate eta / ||sigma_h||), or one displacement component of a
 !> node, whose error is estimated by Aitken extrapolation over the last three levels (the
-!> difference to the last level when the sequence is not yet contracting).
+!> difference to the last level when the sequence is not yet contracting), taking the larger
+!> of the estimates at the last two levels so that one lucky level does not stop the loop.
 !> Nonlinear and history-dependent runs: the whole load history is re-run on each new mesh
 !> (no state transfer): the plastic state of a refined mesh then is that of its own
 !> equilibrium path, with no transfer error, at a cost below twice that of the last level
@@ -34,8 +35,12 @@ module pecplas_driver_adapt
       integer :: max_dofs = 100000, max_levels = 12
       !> Goal: 0 = energy norm; else the internal node and its component (1 x/r, 2 y/z).
       integer :: goal_node = 0, goal_dof = 0
-      !> Scratch results file of the runs (rewritten at each level).
+      !> Results file of the runs (rewritten at each level: the last level stays when
+      !> `keep`, else it is deleted).
       character(len=:), allocatable :: scratch
+      logical :: keep = .false.
+      !> Print a line per level.
+      logical :: verbose = .false.
    end type adapt_options_t
 
    type :: adapt_level_t
@@ -61,7 +66,7 @@ contains
       integer :: k
       allocate (levels(0))
       do k = 1, opts%max_levels
-         call run_level(model, opts%scratch, problem, lev%wall, error)
+         call run_level(model, opts%scratch, problem, lev%wall, error, opts%keep)
          if (allocated(error)) return
          call estimate_error(model, problem, est, error)
          if (allocated(error)) return
@@ -75,10 +80,14 @@ contains
          end if
          levels = [levels, lev]
          if (opts%goal_node > 0) then
-            levels(k)%goal_error = goal_extrapolation([levels%goal])
+            ! the larger of the last two Aitken estimates: one lucky level does not stop
+            levels(k)%goal_error = -1.0_wp
+            if (k >= 3) levels(k)%goal_error = max(goal_extrapolation([levels%goal]), &
+               goal_extrapolation([levels(1:k - 1)%goal]))
          else
             levels(k)%goal_error = levels(k)%eta_rel
          end if
+         if (opts%verbose) call print_level(k, levels(k))
          if (levels(k)%goal_error >= 0.0_wp .and. levels(k)%goal_error <= opts%target) return
          if (4*lev%ndof > 3*opts%max_dofs .or. k == opts%max_levels) return
          call refine_marked(model, bulk_marking(indicators(est), opts%theta), fine, reason)
@@ -122,29 +131,53 @@ contains
    end function goal_extrapolation
 
    !> One quiet run of the whole load history to a scratch results file (discarded).
-   subroutine run_level(model, scratch, problem, wall, error)
+   subroutine run_level(model, scratch, problem, wall, error, keep)
       type(model_t), intent(inout) :: model
       character(len=*), intent(in) :: scratch
       type(problem_t), intent(out) :: problem
       real(wp), intent(out) :: wall
       type(error_t), allocatable, intent(out) :: error
+      !> Keep the results file (default: deleted).
+      logical, intent(in), optional :: keep
       type(results_file_t) :: results
       type(joint_points_t), allocatable :: jpoints(:)
       character(len=:), allocatable :: status, message
       integer :: nflipped
       wall = wall_time()
-      model%output%every = huge(1)
+      if (.not. present(keep)) model%output%every = huge(1)
       call prepare_run(model, problem, nflipped, jpoints, error)
       if (allocated(error)) return
       call results%create(scratch, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
       if (allocated(error)) return
       call run_increments(model, problem, results, .true., status, message, error)
-      call results%discard()
+      if (present(keep)) then
+         if (keep .and. .not. allocated(error)) then
+            call results%finish(status, message, error)
+         else
+            call results%discard()
+         end if
+      else
+         call results%discard()
+      end if
       if (allocated(error)) return
       if (status /= 'completed') call fatal_error(error, 'adaptive level did not complete: '// &
          status//' '//message)
       wall = wall_time() - wall
    end subroutine run_level
+
+   !> level, DOFs, elements, eta / ||sigma_h|| [%], goal, goal error [%], wall [s].
+   subroutine print_level(k, lev)
+      integer, intent(in) :: k
+      type(adapt_level_t), intent(in) :: lev
+      character(len=12) :: est
+      if (lev%goal_error < 0.0_wp) then
+         est = '-'
+      else
+         write (est, '(f11.4)') 100*lev%goal_error
+      end if
+      write (*, '(2x,i5,2x,i10,2x,i9,2x,f10.4,2x,es14.6,2x,a12,2x,f9.2)') k, lev%ndof, &
+         lev%nelem, 100*lev%eta_rel, lev%goal, adjustr(est), lev%wall
+   end subroutine print_level
 
 end module pecplas_driver_adapt
