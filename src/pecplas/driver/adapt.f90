@@ -89,12 +89,14 @@ contains
          end if
          if (opts%verbose) call print_level(k, levels(k))
          if (levels(k)%goal_error >= 0.0_wp .and. levels(k)%goal_error <= opts%target) return
-         if (4*lev%ndof > 3*opts%max_dofs .or. k == opts%max_levels) return
+         if (k == opts%max_levels) return
          call refine_marked(model, bulk_marking(indicators(est), opts%theta), fine, reason)
          if (allocated(reason)) then
             call fatal_error(error, 'adaptive refinement refused: '//reason)
             return
          end if
+         ! the next level would exceed the budget (at most 2 DOFs per node)
+         if (2*fine%mesh%nnode() > opts%max_dofs) return
          model = fine
       end do
    end subroutine adapt_model

@@ -17,10 +17,12 @@
 module pecplas_model_refine_local
    use pecplas_kinds, only: wp
    use pecplas_model, only: model_t
+   use pecplas_model_mesh, only: element_set_t
    use pecplas_model_mesh_tools, only: corner_count
    use pecplas_model_refine_local_edges, only: local_edges_t, build_local_edges, edge_of, &
       element_edges, close_marks, longest
-   use pecplas_model_refine_local_children, only: quad_children, triangle_children, parent_map
+   use pecplas_model_refine_local_children, only: quad_children, quad_transition, &
+      triangle_children, parent_map
    use pecplas_model_refine_local_carry, only: node_store_t, add_node, carry_sets, &
       carry_loads, split_joints
    use pecplas_model_refine_local_springs, only: spring_measures
@@ -40,6 +42,7 @@ contains
       character(len=:), allocatable, intent(out) :: reason
       type(local_edges_t) :: le
       type(node_store_t) :: store
+      type(element_set_t), allocatable :: trans(:)
       integer :: s, j, g, next_eid, nn0
       if (size(marked) /= model%mesh%nelem()) then
          reason = 'marks do not match the elements'
@@ -67,9 +70,15 @@ contains
          if (size(model%joint_sets(s)%ids) > 0) next_eid = max(next_eid, &
             maxval(model%joint_sets(s)%ids))
       end do
+      allocate (trans(size(model%mesh%esets)))
       do s = 1, size(model%mesh%esets)
          call refine_set(model, s, le, store, next_eid, fine%mesh%esets(s)%conn, &
-            fine%mesh%esets(s)%ids)
+            fine%mesh%esets(s)%ids, trans(s)%conn, trans(s)%ids)
+      end do
+      ! after all sets: a companion set made at an earlier level is itself refined above
+      do s = 1, size(model%mesh%esets)
+         if (size(trans(s)%ids) > 0) call add_to_companion(fine, s, trans(s)%conn, &
+            trans(s)%ids)
       end do
       call split_joints(model, le, next_eid, fine, reason)
       if (allocated(reason)) return
@@ -84,19 +93,21 @@ contains
    end subroutine refine_marked
 
    !> Children of every element of set s (unmarked elements are copied).
-   subroutine refine_set(model, s, le, store, next_eid, conn, ids)
+   subroutine refine_set(model, s, le, store, next_eid, conn, ids, tconn, tids)
       type(model_t), intent(in) :: model
       integer, intent(in) :: s
       type(local_edges_t), intent(inout) :: le
       type(node_store_t), intent(inout) :: store
       integer, intent(inout) :: next_eid
       integer, allocatable, intent(inout) :: conn(:, :), ids(:)
+      !> Transition triangles of the set's quadrilaterals (T3, or T6 under Q8).
+      integer, allocatable, intent(out) :: tconn(:, :), tids(:)
       integer, allocatable :: ed(:), c(:, :), id(:), inner(:)
       real(wp), allocatable :: ref(:, :, :), inner_ref(:, :), xe(:, :)
       integer :: j, k, nc, npe, n, i
       nc = corner_count(model%mesh%esets(s)%etype)
       npe = size(model%mesh%esets(s)%conn, 1)
-      allocate (c(npe, 0), id(0))
+      allocate (c(npe, 0), id(0), tconn(merge(6, 3, npe > nc), 0), tids(0))
       do j = 1, size(model%mesh%esets(s)%conn, 2)
          ed = element_edges(le, model, s, j)
          if (.not. any(le%marked(ed))) then
@@ -105,7 +116,28 @@ contains
             id = [id, model%mesh%esets(s)%ids(j)]
             cycle
          end if
-         if (nc == 4) then
+         if (nc == 4 .and. count(le%marked(ed)) == 1) then
+            call quad_transition(findloc(le%marked(ed), .true., 1), ref)
+            xe = model%mesh%x(:, model%mesh%esets(s)%conn(:, j))
+            allocate (inner(0), inner_ref(2, 0))
+            do k = 1, 3
+               block
+                  integer :: cc(size(tconn, 1))
+                  do i = 1, 3
+                     cc(i) = node_at(ref(:, i, k))
+                     if (size(cc) == 6) cc(3 + i) = node_at(0.5_wp*(ref(:, i, k) + &
+                        ref(:, mod(i, 3) + 1, k)))
+                  end do
+                  tconn = reshape([reshape(tconn, [size(tconn)]), cc], &
+                     [size(cc), size(tconn, 2) + 1])
+               end block
+            end do
+            deallocate (inner, inner_ref)
+            ! the first triangle keeps the quadrilateral's id (in the companion set)
+            tids = [tids, model%mesh%esets(s)%ids(j), next_eid + 1, next_eid + 2]
+            next_eid = next_eid + 2
+            cycle
+         else if (nc == 4) then
             call quad_children(le%marked(ed), ref)
          else
             call triangle_children(le%marked(ed), longest(model, ed, le), ref)
@@ -166,6 +198,51 @@ contains
          inner_ref = reshape([reshape(inner_ref, [size(inner_ref)]), r], [2, size(inner) ])
       end function node_at
    end subroutine refine_set
+
+   !> Appends the transition triangles of quadrilateral set s to its companion set
+   !> (name_T3 or name_T6: same material), made at the first transition with the set's
+   !> initial stresses and body loads.
+   subroutine add_to_companion(fine, s, tconn, tids)
+      type(model_t), intent(inout) :: fine
+      integer, intent(in) :: s
+      integer, intent(in) :: tconn(:, :), tids(:)
+      type(element_set_t) :: comp
+      character(len=:), allocatable :: name
+      integer :: c, k
+      name = fine%mesh%esets(s)%name//merge('_T6', '_T3', size(tconn, 1) == 6)
+      c = fine%mesh%find_eset(name)
+      if (c > 0) then
+         fine%mesh%esets(c)%conn = reshape([reshape(fine%mesh%esets(c)%conn, &
+            [size(fine%mesh%esets(c)%conn)]), reshape(tconn, [size(tconn)])], &
+            [size(tconn, 1), size(fine%mesh%esets(c)%ids) + size(tids)])
+         fine%mesh%esets(c)%ids = [fine%mesh%esets(c)%ids, tids]
+         return
+      end if
+      comp = fine%mesh%esets(s)
+      comp%name = name
+      comp%etype = merge('T6', 'T3', size(tconn, 1) == 6)
+      comp%conn = tconn
+      comp%ids = tids
+      fine%mesh%esets = [fine%mesh%esets, comp]
+      c = size(fine%mesh%esets)
+      if (allocated(fine%initial_stresses)) then
+         do k = 1, size(fine%initial_stresses)
+            if (fine%initial_stresses(k)%eset /= s) cycle
+            fine%initial_stresses = [fine%initial_stresses, fine%initial_stresses(k)]
+            fine%initial_stresses(size(fine%initial_stresses))%eset = c
+            fine%initial_stresses(size(fine%initial_stresses))%set = name
+         end do
+      end if
+      do k = 1, size(fine%patterns)
+         if (.not. allocated(fine%patterns(k)%eset)) cycle
+         if (.not. any(fine%patterns(k)%eset == s)) cycle
+         associate (p => fine%patterns(k))
+            p%vector = reshape([reshape(p%vector, [size(p%vector)]), &
+               p%vector(:, findloc(p%eset, s, 1))], [2, size(p%eset) + 1])
+            p%eset = [p%eset, c]
+         end associate
+      end do
+   end subroutine add_to_companion
 
    !> Side (0: interior) and position t along it (from its first corner) of reference point
    !> r; the children's points are dyadic fractions, so the tests are exact.

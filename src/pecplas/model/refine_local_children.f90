@@ -9,7 +9,7 @@ module pecplas_model_refine_local_children
    implicit none (type, external)
    private
 
-   public :: quad_children, triangle_children, parent_map, REF_QUAD, REF_TRI
+   public :: quad_children, quad_transition, triangle_children, parent_map, REF_QUAD, REF_TRI
 
    real(wp), parameter :: REF_QUAD(2, 4) = reshape([-1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp, &
       1.0_wp, 1.0_wp, -1.0_wp, 1.0_wp], [2, 4])
@@ -46,6 +46,22 @@ contains
          ref(:, :, 2) = reshape([m(:, 4), m(:, 2), p(:, 3), p(:, 4)], [2, 4])
       end if
    end subroutine quad_children
+
+   !> Transition of a quadrilateral with only side i marked: three triangles ref(2, 3, 3)
+   !> fanned from the side's midpoint M: (M, P_i+1, P_i+2), (M, P_i+2, P_i+3), (M, P_i+3, P_i).
+   subroutine quad_transition(i, ref)
+      integer, intent(in) :: i
+      real(wp), allocatable, intent(out) :: ref(:, :, :)
+      real(wp) :: m(2)
+      integer :: k, c(4)
+      c = [(mod(i + k - 1, 4) + 1, k=0, 3)]
+      m = 0.5_wp*(REF_QUAD(:, c(1)) + REF_QUAD(:, c(2)))
+      allocate (ref(2, 3, 3))
+      do k = 1, 3
+         ref(:, :, k) = reshape([m, REF_QUAD(:, c(k + 1)), REF_QUAD(:, c(mod(k + 1, 4) + 1))], &
+            [2, 3])
+      end do
+   end subroutine quad_transition
 
    !> Children corners ref(2, 3, n) of a triangle with marked sides `mk`, bisected first on
    !> side `k` (its longest, marked), then each child on its marked parent side.

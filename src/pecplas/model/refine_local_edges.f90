@@ -5,7 +5,8 @@
 !> `close_marks` makes the marks admissible (conforming closure, no hanging node):
 !> - a triangle with a marked edge has its longest edge marked (it is bisected there first,
 !>   which bounds the angles of repeated refinements);
-!> - a quadrilateral has no mark, all four, or two opposite ones (split in two);
+!> - a quadrilateral has no mark, all four, two opposite ones (split in two) or one (split
+!>   into three triangles from the side's midpoint: the refinement stays local);
 !> - the two faces of a joint are marked together (the joint is split with its neighbours),
 !>   and so are the two edges between the doublets of springs.
 module pecplas_model_refine_local_edges
@@ -158,10 +159,11 @@ contains
       end do
    end subroutine spring_pairs
 
-   !> No mark, all four, or exactly two opposite sides.
+   !> No mark, all four, exactly two opposite sides, or one side (a transition into
+   !> triangles).
    pure logical function quad_admissible(mk) result(ok)
       logical, intent(in) :: mk(4)
-      ok = all(mk) .or. .not. any(mk) .or. &
+      ok = all(mk) .or. count(mk) <= 1 .or. &
          ((mk(1) .eqv. mk(3)) .and. (mk(2) .eqv. mk(4)) .and. (mk(1) .neqv. mk(2)))
    end function quad_admissible
 
