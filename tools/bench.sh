@@ -6,6 +6,7 @@
 #   3. scaling of an elastic-plastic mesh, 1e4 .. 1e6 DOFs            (tools/bench_scaling.py)
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
+#   5. adaptive refinement on the S2 pile, beside the uniform series   (tools/bench_adapt.py)
 #   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
 #   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
@@ -28,7 +29,7 @@ if ! command -v ccx >/dev/null; then
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver stability scaling work_precision peer; do
+for part in solver stability scaling work_precision adapt peer; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"
