@@ -7,8 +7,8 @@
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
 #   5. adaptive refinement on the S2 pile, beside the uniform series   (tools/bench_adapt.py)
-#   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
-#   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
+#   6. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
+#   7. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
