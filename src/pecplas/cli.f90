@@ -138,7 +138,7 @@ contains
                'below E, or --max-dofs (default 100000) is reached; writes the last level.'
             write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
                'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
-               'Q4/T3 decks), prints their cost and error (reference: the finest, NEWTON x2 '// &
+               'every element and joint type), prints their cost and error (reference: the finest, NEWTON x2 '// &
                'on h/2) and the cheapest within 1 % and 5 %; writes no results.'
             code = EXIT_OK
             return
