@@ -44,6 +44,8 @@ program tester
    use test_pecjoin_modjoin_cyclic, only: collect_pecjoin_modjoin_cyclic
    use test_advise, only: collect_advise
    use test_refine, only: collect_refine
+   use test_refine_local, only: collect_refine_local
+   use test_adapt, only: collect_adapt
    use test_pecjoin_katona, only: collect_pecjoin_katona
    use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
    use test_pecjoin_identify, only: collect_pecjoin_identify
@@ -116,6 +118,8 @@ program tester
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
    suites = [suites, new_testsuite('driver_estimator', collect_estimator)]
    suites = [suites, new_testsuite('model_units', collect_model_units)]
+   suites = [suites, new_testsuite('refine_local', collect_refine_local)]
+   suites = [suites, new_testsuite('adapt', collect_adapt)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -1,7 +1,8 @@
 !> The uniform refiner (pecplas_model_refine): counts, area, ids and node-set growth on the
 !> GOODMAN4 joint patch deck and on a T3 square; a refined patch under uniform pressure still
 !> gives the exact uniform stress in the massif and in the joints (plane, and axisymmetric
-!> with generated joints); what cannot be refined is refused with its reason.
+!> with generated joints); Q8 and springs refine; point forces on an edge are refused with
+!> their reason.
 module test_refine
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
@@ -20,7 +21,7 @@ module test_refine
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
-   public :: collect_refine
+   public :: collect_refine, run_model, total_area
 
    character(len=*), parameter :: DATA = 'test/data/joints/'
    character(len=*), parameter :: DIR = 'build/test_out/refine'
@@ -34,7 +35,7 @@ contains
       tests = [new_unittest('q4_joint_patch_counts', test_counts), &
                new_unittest('t3_square', test_t3), &
                new_unittest('refined_patch_exact', test_patch), &
-               new_unittest('refused_with_reason', test_refused)]
+               new_unittest('quadratic_springs_refused_forces', test_refused)]
    end subroutine collect_refine
 
    !> patch_goodman4_plane: 12 nodes, 2 + 2 Q4 (two 2 x 1 bodies), 2 GOODMAN4 joints between
@@ -150,7 +151,9 @@ contains
       end associate
    end subroutine patch_case
 
-   !> Quadratic elements, springs and point forces on both ends of an edge are refused.
+   !> Quadratic elements and springs refine (the strip footing: 8 Q8 -> 32 Q8, area kept; the
+   !> spring patch: 3 springs on 2 face edges -> 5); point forces on both ends of an edge are
+   !> refused.
    subroutine test_refused(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model, fine
@@ -158,15 +161,20 @@ contains
       integer :: n
       call read_refine('input/examples/strip_footing.inp', model, fine, reason, error)
       if (allocated(error)) return
-      call check(error, allocated(reason), 'strip footing (Q8) refused')
+      call check(error, .not. allocated(reason), 'strip footing (Q8) refines')
       if (allocated(error)) return
-      call check(error, reason == 'element type Q8', 'reason: element type Q8')
+      call check(error, fine%mesh%nelem() == 4*model%mesh%nelem() .and. &
+         abs(total_area(fine%mesh) - total_area(model%mesh)) < 1.0e-12_wp* &
+         total_area(model%mesh), 'Q8: four children each, area kept (1e-12)')
       if (allocated(error)) return
       call read_refine(DATA//'patch_spring_plane.inp', model, fine, reason, error)
       if (allocated(error)) return
-      call check(error, allocated(reason), 'springs refused')
+      call check(error, .not. allocated(reason), 'springs refine')
       if (allocated(error)) return
-      call check(error, reason == 'joint type SPRING', 'reason: joint type SPRING')
+      call check(error, size(fine%joint_sets(1)%conn, 2) == 5 .and. &
+         abs(sum(fine%joint_sets(1)%tributary) - sum(model%joint_sets(1)%tributary)) < &
+         1.0e-12_wp*sum(model%joint_sets(1)%tributary), &
+         'springs 3 -> 5, total tributary length kept (1e-12)')
       if (allocated(error)) return
       ! two point forces on the top nodes 10 and 11 (one edge): the total would grow
       call read_deck(DATA//'patch_goodman4_plane.inp', model, error)

@@ -6,10 +6,11 @@
 #   3. scaling of an elastic-plastic mesh, 1e4 .. 1e6 DOFs            (tools/bench_scaling.py)
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
-#   5. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
+#   5. adaptive refinement on the S2 pile, beside the uniform series   (tools/bench_adapt.py)
+#   6. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
 #      and OpenSees on the elastic block, 1e4 .. 1e6 dofs       (tools/bench_peer_opensees.py)
-#   5b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
-#   6. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
+#   6b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
+#   7. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,7 +37,7 @@ if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('opensees
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver stability scaling work_precision peer peer_opensees deck; do
+for part in solver stability scaling work_precision adapt peer peer_opensees deck; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

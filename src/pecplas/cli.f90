@@ -18,6 +18,7 @@ module pecplas_cli
    use pecplas_driver_sanity, only: large_displacement_warning
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_driver_advise, only: advise_main
+   use pecplas_driver_adapt_main, only: adapt_main
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_xdmf, only: xdmf_path
    use pecplas_signals, only: install_signal_handlers, interrupt_signal
@@ -37,20 +38,24 @@ module pecplas_cli
 
    character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
       '[--restart OLD.h5] [--strict] | '// &
-      'pecplas --advise DECK [--advise-node N]'
+      'pecplas --advise DECK [--advise-node N] | '// &
+      'pecplas DECK --target-error E% [--goal node:N:x|y] [--max-dofs N] [-o FILE.h5]'
 
 contains
 
    !> Runs the program for the command-line words `args`; returns the exit code.
    integer function pecplas_main(args) result(code)
       character(len=*), intent(in) :: args(:)
-      character(len=:), allocatable :: deck, outfile, restart
+      character(len=:), allocatable :: deck, outfile, restart, target, goal
       logical :: quiet, advise, strict
       type(model_t) :: model
       type(problem_t) :: problem
-      integer :: i, node, ios, stop_after
+      integer :: i, node, ios, stop_after, max_dofs
 
       restart = ''
+      target = ''
+      goal = ''
+      max_dofs = 0
       stop_after = 0
       advise = .false.
       node = 0
@@ -77,6 +82,23 @@ contains
                return
             end if
             i = i + 1
+         case ('--target-error', '--goal', '--max-dofs')
+            if (i == size(args)) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))// &
+                  ' needs a value. '//USAGE)
+               return
+            end if
+            i = i + 1
+            if (trim(args(i - 1)) == '--target-error') target = trim(args(i))
+            if (trim(args(i - 1)) == '--goal') goal = trim(args(i))
+            if (trim(args(i - 1)) == '--max-dofs') then
+               read (args(i), *, iostat=ios) max_dofs
+               if (ios /= 0 .or. max_dofs <= 0) then
+                  code = command_error(COMMAND, EXIT_INPUT, 'option --max-dofs needs a '// &
+                     'number > 0. '//USAGE)
+                  return
+               end if
+            end if
          case ('--restart')
             if (i == size(args)) then
                code = command_error(COMMAND, EXIT_INPUT, 'option --restart needs the results '// &
@@ -110,9 +132,13 @@ contains
                '(or results not writable), 4 interrupted (SIGTERM, SIGINT, SIGHUP).'
             write (*, '(a)') '  --strict: any warning (printed as "file:line: warning: ...") '// &
                'is an input error: exit 2, no results file.'
+            write (*, '(a)') '  --target-error E: adaptive refinement (solve, estimate, '// &
+               'refine the elements with the largest indicators, re-solve) until the '// &
+               'estimated error of the goal (--goal node:N:x|y, default the energy norm) is '// &
+               'below E, or --max-dofs (default 100000) is reached; writes the last level.'
             write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
                'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
-               'Q4/T3 decks), prints their cost and error (reference: the finest, NEWTON x2 '// &
+               'every element and joint type), prints their cost and error (reference: the finest, NEWTON x2 '// &
                'on h/2) and the cheapest within 1 % and 5 %; writes no results.'
             code = EXIT_OK
             return
@@ -138,6 +164,14 @@ contains
       end if
       if (advise) then
          code = advise_main(deck, node)
+         return
+      end if
+      if (len(target) > 0) then
+         code = adapt_main(deck, target, goal, max_dofs, outfile)
+         return
+      else if (len(goal) > 0 .or. max_dofs > 0) then
+         code = command_error(COMMAND, EXIT_INPUT, '--goal and --max-dofs need '// &
+            '--target-error. '//USAGE)
          return
       end if
       code = run_deck(deck, outfile, quiet, model, problem, restart, stop_after, strict)

@@ -8,7 +8,7 @@
 !> gravity). One mesh level more: the deck's model refined uniformly once (h/2,
 !> pecplas_model_refine) with NEWTON x1 and x2. The reference is the finest, NEWTON x2 on the
 !> refined mesh, so the errors of the deck's mesh include its discretisation error; when the
-!> model cannot be refined (quadratic elements, springs, point loads on a refined set, ...) the
+!> model cannot be refined (point loads on both ends of an edge, supports across the body) the
 !> mesh level is not varied (a one-line reason) and the reference is NEWTON x2 on the deck's
 !> mesh; the same when the refined reference does not complete the step. The error of a
 !> variant is |u - u_ref| / |u_ref| at the monitored node, at the end of the first step: the

@@ -1,0 +1,129 @@
+!> `pecplas DECK --target-error E[%] [--goal node:N:x|y] [--max-dofs N] [-o FILE]`: the
+!> adaptive loop of pecplas_driver_adapt from the command line. Prints a line per level and
+!> writes the results of the last level (the one that met the target, or the last within
+!> the DOF budget) to FILE (default output/<deck>.h5).
+module pecplas_driver_adapt_main
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED
+   use pecplas_model, only: model_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_driver_problem, only: problem_t
+   use pecplas_driver_adapt, only: adapt_options_t, adapt_level_t, adapt_model
+   use pecplas_files, only: make_directories, path_stem, path_dir
+   use pecplas_command, only: command_error
+   use pecplas_strings, only: itoa
+   implicit none (type, external)
+   private
+
+   public :: adapt_main, parse_target, parse_goal
+
+contains
+
+   integer function adapt_main(deck, target, goal, max_dofs, outfile_in) result(code)
+      character(len=*), intent(in) :: deck, target, goal, outfile_in
+      integer, intent(in) :: max_dofs
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(adapt_options_t) :: opts
+      type(adapt_level_t), allocatable :: levels(:)
+      type(error_t), allocatable :: error
+      character(len=:), allocatable :: msg
+      integer :: node_id, n
+      call parse_target(target, opts%target, msg)
+      if (allocated(msg)) then
+         code = command_error('pecplas', EXIT_INPUT, '--target-error: '//msg)
+         return
+      end if
+      call parse_goal(goal, node_id, opts%goal_dof, msg)
+      if (allocated(msg)) then
+         code = command_error('pecplas', EXIT_INPUT, '--goal: '//msg)
+         return
+      end if
+      call read_deck(deck, model, error)
+      if (allocated(error)) then
+         code = command_error('pecplas', error%exit_code(), error%text())
+         return
+      end if
+      if (node_id > 0) then
+         opts%goal_node = findloc(model%mesh%node_id, node_id, 1)
+         if (opts%goal_node == 0) then
+            code = command_error('pecplas', EXIT_INPUT, '--goal: the deck has no node '// &
+               itoa(node_id))
+            return
+         end if
+      end if
+      if (max_dofs > 0) opts%max_dofs = max_dofs
+      opts%scratch = outfile_in
+      if (len(opts%scratch) == 0) opts%scratch = 'output/'//path_stem(deck)//'.h5'
+      if (len(path_dir(opts%scratch)) > 0) call make_directories(path_dir(opts%scratch))
+      opts%keep = .true.
+      opts%verbose = .true.
+      msg = 'the energy norm'
+      if (node_id > 0) msg = 'node '//itoa(node_id)//' '//merge('x', 'y', opts%goal_dof == 1)
+      write (*, '(a)') 'pecplas '//deck//': adaptive refinement to '//trim(target)//' on '// &
+         msg//', at most '//itoa(opts%max_dofs)//' DOFs'
+      write (*, '(2x,a5,2x,a10,2x,a9,2x,a10,2x,a14,2x,a12,2x,a9)') 'level', 'DOFs', &
+         'elements', 'eta/|s| %', 'goal', 'goal error %', 'wall [s]'
+      call adapt_model(model, opts, levels, problem, error)
+      if (allocated(error)) then
+         code = command_error('pecplas', EXIT_STOPPED, error%text())
+         return
+      end if
+      n = size(levels)
+      if (levels(n)%goal_error >= 0.0_wp .and. levels(n)%goal_error <= opts%target) then
+         write (*, '(a)') 'target met at level '//itoa(n)//'; results of that level: '// &
+            opts%scratch
+         code = EXIT_OK
+      else
+         write (*, '(a)') 'target not met within the DOF budget (or the level limit); '// &
+            'results of the last level: '//opts%scratch
+         code = EXIT_STOPPED
+      end if
+   end function adapt_main
+
+   !> "1%", "1 %" or "0.01": a relative error in (0, 1).
+   subroutine parse_target(text, value, msg)
+      character(len=*), intent(in) :: text
+      real(wp), intent(out) :: value
+      character(len=:), allocatable, intent(out) :: msg
+      integer :: ios, p
+      p = index(text, '%')
+      value = 0.0_wp
+      if (p > 0) then
+         read (text(1:p - 1), *, iostat=ios) value
+         value = value/100.0_wp
+      else
+         read (text, *, iostat=ios) value
+      end if
+      if (ios /= 0 .or. .not. (value > 0.0_wp .and. value < 1.0_wp)) msg = &
+         "expected a relative error such as 1% or 0.01, got '"//trim(text)//"'"
+   end subroutine parse_target
+
+   !> "" or "energy" (node_id 0) or "node:N:x|y|r|z|1|2".
+   subroutine parse_goal(text, node_id, dof, msg)
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: node_id, dof
+      character(len=:), allocatable, intent(out) :: msg
+      integer :: p, q, ios
+      node_id = 0
+      dof = 0
+      if (len_trim(text) == 0 .or. trim(text) == 'energy') return
+      msg = "expected node:N:x, node:N:y (r, z, 1, 2 too) or energy, got '"//trim(text)//"'"
+      if (index(text, 'node:') /= 1) return
+      p = 6
+      q = index(text(p:), ':')
+      if (q == 0) return
+      read (text(p:p + q - 2), *, iostat=ios) node_id
+      if (ios /= 0 .or. node_id <= 0) return
+      select case (trim(text(p + q:)))
+      case ('x', 'X', 'r', 'R', '1')
+         dof = 1
+      case ('y', 'Y', 'z', 'Z', '2')
+         dof = 2
+      case default
+         return
+      end select
+      deallocate (msg)
+   end subroutine parse_goal
+
+end module pecplas_driver_adapt_main
