@@ -26,6 +26,7 @@ module pecplas_cli
    use pecplas_driver_restart, only: restore_restart
    use pecplas_provenance, only: version_lines
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_parallel, only: parallel_rank
    implicit none (type, external)
    private
 
@@ -215,6 +216,8 @@ contains
       if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
          ' clockwise elements renumbered counter-clockwise'
 
+      ! an MPI run (doc/mpi.md): every rank runs the analysis, rank 0 alone writes the file
+      results%detached = parallel_rank() > 0
       call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
       if (allocated(error)) then

@@ -10,6 +10,7 @@ module pecplas_io_deck_reader_options
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
       line_error, where_text, push_item
    use pecplas_model, only: model_t
+   use pecplas_parallel, only: parallel_built
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
       NONLINEAR_METHODS
    implicit none (type, external)
@@ -86,6 +87,12 @@ contains
       if (allocated(error)) return
       call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
       if (allocated(error)) return
+      if (model%solver%linear == 'MUMPS' .and. .not. parallel_built()) then
+         call line_error(state, block%at, 'LINEAR=MUMPS: this build has no MUMPS; build '// &
+            'with make build-mpi (CMake -DPECPLAS_MPI=ON, doc/mpi.md) and run with mpirun, '// &
+            'or choose LINEAR=AUTO, CHOLMOD or UMFPACK', error)
+         return
+      end if
       call param_choice(state, block, 'METHOD', NONLINEAR_METHODS, model%solver%method, error)
       if (allocated(error)) return
       call param_real(state, block, 'TOLERANCE', model%solver%tolerance, found, error)
