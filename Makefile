@@ -146,7 +146,8 @@ build-mpi:
 	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas
 
 test-mpi: build-mpi
-	$(PYTHON) tools/mpi_check.py $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2
+	$(PYTHON) tools/mpi_check.py $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
+	  --singular test/data/cli/roller_only.inp
 
 bench: deps
 	@bash tools/bench.sh

@@ -53,6 +53,7 @@ program tester
    use test_massif_q8r, only: collect_massif_q8r
    use test_driver_sanity, only: collect_driver_sanity
    use test_linalg_threads, only: collect_linalg_threads
+   use test_linalg_mumps, only: collect_linalg_mumps
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -112,6 +113,7 @@ program tester
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
+   suites = [suites, new_testsuite('linalg_mumps', collect_linalg_mumps)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''
