@@ -354,6 +354,7 @@ contains
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
          trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
+      if (allocated(problem%solver)) write (*, '(a)') ' linear solver: '//problem%solver%report()
       if (problem%katona%active) then
          associate (k => problem%katona)
             write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &

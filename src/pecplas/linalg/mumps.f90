@@ -16,7 +16,7 @@ module pecplas_linalg_mumps
    use pecplas_kinds, only: wp, ik8
    use pecplas_error, only: error_t, fatal_error, singular_error
    use pecplas_linalg_sparse, only: csc_t
-   use pecplas_linalg_solver_type, only: linear_solver_t
+   use pecplas_linalg_solver_type, only: linear_solver_t, solver_report
    use pecplas_parallel, only: parallel_rank, parallel_size
    implicit none (type, external)
    private
@@ -78,6 +78,7 @@ module pecplas_linalg_mumps
       procedure :: solve_raw => mumps_solve_raw
       procedure :: free => mumps_free
       procedure :: name => mumps_name
+      procedure :: report => mumps_report
       final :: mumps_final
    end type mumps_solver_t
 
@@ -93,6 +94,21 @@ contains
       character(len=:), allocatable :: name
       name = 'MUMPS'
    end function mumps_name
+
+   !> The common statistics, then MUMPS's own: ranks, its analysis estimates of the factor
+   !> entries (INFOG(3)), flops (RINFOG(1)) and megabytes on the largest rank (INFOG(16)),
+   !> and the megabytes used on the largest rank and on all (INFOG(21), INFOG(22)).
+   function mumps_report(this) result(line)
+      class(mumps_solver_t), intent(in) :: this
+      character(len=:), allocatable :: line
+      character(len=256) :: buf
+      integer(ik8) :: entries
+      entries = merge(int(this%infog(3), ik8), -1000000_ik8*this%infog(3), this%infog(3) >= 0)
+      write (buf, '(a,i0,a,i0,a,es10.3,a,i0,a,i0,a,i0)') ' ranks=', parallel_size(), &
+         ' est_factor_entries=', entries, ' est_flops=', this%rinfog(1), ' est_mb_rank=', &
+         this%infog(16), ' mb_rank=', this%infog(21), ' mb_total=', this%infog(22)
+      line = solver_report(this)//trim(buf)
+   end function mumps_report
 
    subroutine mumps_analyse(this, a, error)
       class(mumps_solver_t), intent(inout) :: this
