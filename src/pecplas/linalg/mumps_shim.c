@@ -25,6 +25,13 @@ typedef struct {
 
 int pecplas_mumps_available(void) { return 1; }
 
+/* MPI_Finalize at exit, for a program that let the first MUMPS solver start MPI. */
+static void finalize_at_exit(void) {
+    int done = 0;
+    MPI_Finalized(&done);
+    if (!done) MPI_Finalize();
+}
+
 /* sym: 0 unsymmetric, 2 general symmetric; tol: null-pivot threshold (CNTL(3)). */
 void *pecplas_mumps_new(int sym, double tol, int *status) {
     pecplas_mumps_t *h = calloc(1, sizeof *h);
@@ -34,7 +41,10 @@ void *pecplas_mumps_new(int sym, double tol, int *status) {
     }
     int started = 0;
     MPI_Initialized(&started);
-    if (!started) MPI_Init(NULL, NULL); /* a program that did not start MPI: one rank */
+    if (!started) { /* a program that did not start MPI (a test driver): start it here */
+        MPI_Init(NULL, NULL);
+        atexit(finalize_at_exit);
+    }
     h->id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(MPI_COMM_WORLD);
     h->id.par = 1; /* rank 0 takes part in the factorisation */
     h->id.sym = sym;
