@@ -27,7 +27,8 @@ contains
       tests = [new_unittest('deck_linear_mumps', test_deck), &
                new_unittest('factory', test_factory), &
                new_unittest('symmetric_and_unsymmetric', test_solves), &
-               new_unittest('mechanism_flagged', test_singular)]
+               new_unittest('mechanism_flagged', test_singular), &
+               new_unittest('symmetry_lost', test_symmetry_lost)]
    end subroutine collect_linalg_mumps
 
    !> input/default.inp with LINEAR=MUMPS on its *SOLVER line; `at`: that line's number.
@@ -170,5 +171,42 @@ contains
       call check(error, s%bad_equation >= 1 .and. s%bad_equation <= a%n .and. &
          .not. s%factorised, 'a free equation named, no factor kept')
    end subroutine test_singular
+
+   !> Analysed symmetric (LDL^T), then factorised with unsymmetric values on the same
+   !> pattern (convection added): analysed again as LU, and x = x_ref within 1e-10.
+   subroutine test_symmetry_lost(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(linear_solver_t), allocatable :: s
+      type(error_t), allocatable :: e
+      type(csc_t) :: a0, a1
+      real(wp), allocatable :: xref(:), b(:), x(:)
+      if (.not. mumps_available()) then
+         call new_linear_solver('MUMPS', s, e)
+         call check(error, allocated(e), 'serial build: MUMPS refused')
+         return
+      end if
+      call convection_diffusion(10, 0.0_wp, 0.0_wp, a0, error)
+      if (.not. allocated(error)) call convection_diffusion(10, 3.0_wp, -2.0_wp, a1, error)
+      if (allocated(error)) return
+      call check(error, a0%is_symmetric(1.0e-13_wp) .and. .not. a1%is_symmetric(1.0e-13_wp) &
+         .and. all(a0%rowind == a1%rowind), 'fixtures: symmetric then not, same pattern')
+      if (allocated(error)) return
+      call new_linear_solver('MUMPS', s, error)
+      if (allocated(error)) return
+      call s%analyse(a0, error)
+      if (.not. allocated(error)) call s%factorise(a0, error)
+      if (.not. allocated(error)) call s%factorise(a1, error)
+      if (allocated(error)) return
+      xref = det_vector(a1%n, 5)
+      allocate (b(a1%n), x(a1%n))
+      call a1%matvec(xref, b)
+      call s%solve(b, x, error)
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS x after LU', &
+         atol=1.0e-10_wp*maxval(abs(xref)))
+      if (allocated(error)) return
+      call check(error, s%n_analyses == 2 .and. index(s%ordering, 'LU') > 0, &
+         'analysed again as LU, got ordering '//s%ordering)
+   end subroutine test_symmetry_lost
 
 end module test_linalg_mumps

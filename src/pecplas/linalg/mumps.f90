@@ -4,9 +4,12 @@
 !> Every rank holds the same assembled matrix (replicated model); each rank hands MUMPS only
 !> its share of the entries, a block of whole columns with about nnz/N entries, as
 !> distributed assembled input (ICNTL(18) = 3). The analysis is done once per pattern and
-!> reused by every factorisation, as with CHOLMOD. A symmetric matrix stored as its upper
-!> triangle is factorised as general symmetric (SYM = 2, LDL^T, also for the indefinite
-!> Katona bordered systems), a full one as unsymmetric (SYM = 0, LU).
+!> reused by every factorisation, as with CHOLMOD. A symmetric matrix (its upper triangle
+!> stored, or full storage found symmetric to 1e-13 of its largest entry) is factorised as
+!> general symmetric (SYM = 2, LDL^T, also for the indefinite Katona bordered systems), from
+!> its upper triangle; any other as unsymmetric (SYM = 0, LU). A matrix analysed as
+!> symmetric whose values later are not (a tangent that loses symmetry when an interface
+!> slips or a non-associated material yields) is analysed again as unsymmetric, for good.
 !>
 !> Singularity (method): MUMPS's null-pivot detection (ICNTL(24) = 1) with the threshold
 !> CNTL(3) = rcond_tol, relative to the norm of the scaled matrix; a null pivot, or the
@@ -22,6 +25,9 @@ module pecplas_linalg_mumps
    private
 
    public :: mumps_solver_t, mumps_available
+
+   !> Relative asymmetry (of the largest entry) below which a full matrix is symmetric.
+   real(wp), parameter :: SYM_TOL = 1.0e-13_wp
 
    interface
       integer(c_int) function c_available() bind(C, name='pecplas_mumps_available')
@@ -65,9 +71,11 @@ module pecplas_linalg_mumps
    !> MUMPS with distributed assembled input. Do not copy a solver that holds a factor.
    type, extends(linear_solver_t) :: mumps_solver_t
       type(c_ptr), private :: handle = c_null_ptr
-      !> This rank's entries: positions first+1 .. last of the CSC values.
+      !> This rank's entries: positions first+1 .. last of the CSC values, of which `pick`
+      !> (1-based) go to MUMPS (all of them, or the upper triangle for SYM = 2).
       integer, private :: first = 0, last = 0
-      logical, private :: upper = .false.
+      integer, allocatable, private :: pick(:)
+      logical, private :: upper = .false., symmetric = .false., force_lu = .false.
       integer(ik8), private :: nnz = 0
       !> MUMPS's global statistics of the last call (INFOG, RINFOG; 1-based as in its guide).
       integer :: infog(80) = 0
@@ -116,7 +124,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(c_int) :: status
       integer(c_int), allocatable :: irn(:), jcn(:)
-      integer :: j, k, null_pivot
+      integer :: j, k, m, null_pivot
       call this%free()
       if (.not. mumps_available()) then
          call fatal_error(error, 'this build has no MUMPS (build it with make build-mpi)')
@@ -126,20 +134,28 @@ contains
          call fatal_error(error, 'MUMPS analyse: empty matrix')
          return
       end if
-      this%handle = c_new(merge(2_c_int, 0_c_int, a%upper), this%rcond_tol, status)
+      this%symmetric = a%upper
+      if (.not. this%force_lu .and. .not. a%upper) this%symmetric = a%is_symmetric(SYM_TOL)
+      this%handle = c_new(merge(2_c_int, 0_c_int, this%symmetric), this%rcond_tol, status)
       if (status < 0) then
          call fatal_error(error, 'MUMPS initialisation failed: '//status_text(int(status), 0))
          return
       end if
       call share(a, parallel_rank(), parallel_size(), this%first, this%last)
-      allocate (irn(this%last - this%first), jcn(this%last - this%first))
+      allocate (irn(this%last - this%first), jcn(this%last - this%first), &
+         this%pick(this%last - this%first))
+      m = 0
       do j = 1, a%n
          do k = max(a%colptr(j), this%first), min(a%colptr(j + 1), this%last) - 1
-            irn(k - this%first + 1) = a%rowind(k + 1) + 1
-            jcn(k - this%first + 1) = j
+            if (this%symmetric .and. a%rowind(k + 1) + 1 > j) cycle ! lower: not given
+            m = m + 1
+            irn(m) = a%rowind(k + 1) + 1
+            jcn(m) = j
+            this%pick(m) = k + 1
          end do
       end do
-      status = c_analyse(this%handle, a%n, size(irn), irn, jcn)
+      this%pick = this%pick(:m)
+      status = c_analyse(this%handle, a%n, m, irn, jcn)
       call c_info(this%handle, this%infog, this%rinfog, null_pivot)
       if (status < 0) then
          call fatal_error(error, 'MUMPS analysis failed: '//status_text(int(status), this%infog(2)))
@@ -148,7 +164,8 @@ contains
       this%n = a%n
       this%upper = a%upper
       this%nnz = a%nnz()
-      this%ordering = ordering_name(this%infog(7))
+      this%ordering = ordering_name(this%infog(7))//trim(merge(' (LDL^T)', ' (LU)   ', &
+         this%symmetric))
       this%n_analyses = this%n_analyses + 1
    end subroutine mumps_analyse
 
@@ -194,7 +211,14 @@ contains
          call fatal_error(error, 'MUMPS factorise: pattern differs from the analysed one')
          return
       end if
-      status = c_factorise(this%handle, a%values(this%first + 1:this%last))
+      if (this%symmetric .and. .not. a%upper) then
+         if (.not. a%is_symmetric(SYM_TOL)) then
+            this%force_lu = .true.
+            call this%analyse(a, error)
+            if (allocated(error)) return
+         end if
+      end if
+      status = c_factorise(this%handle, a%values(this%pick))
       call c_info(this%handle, this%infog, this%rinfog, null_pivot)
       this%n_factorisations = this%n_factorisations + 1
       if (status < 0 .and. status /= -10) then
@@ -238,6 +262,7 @@ contains
       this%handle = c_null_ptr
       this%factorised = .false.
       this%n = 0
+      if (allocated(this%pick)) deallocate (this%pick)
    end subroutine mumps_free
 
    subroutine mumps_final(this)
