@@ -2,7 +2,7 @@
 """Distributed solve: CHOLMOD on 1 and 2 threads against MUMPS on 1 and 2 MPI ranks.
 
 Two problems from tools/make_default_deck.py (Q8, plane strain, half strip footing 10 m x 5 m):
-`elastic` (the deck as written, linear: 2 increments) and `dp_footing` (the Drucker-Prager
+`elastic` (the deck as written, linear: 6 increments) and `dp_footing` (the Drucker-Prager
 footing of tools/bench_scaling.py: geostatic stress, then 300 kPa in 2 increments, full
 Newton; associated, so the tangent is symmetric: CHOLMOD, and MUMPS as LDL^T). Sizes: 1e5,
 1e6 and 3e6 equations (--quick: 1e4 and 3e4, minutes on a busy machine). Each run uses the
@@ -137,7 +137,7 @@ def fit(n, y):
 
 def fragment(rows, quick, wall):
     L = ["## Distributed solve: MUMPS against CHOLMOD (`tools/bench_mumps.py`)", "",
-         "Q8 plane strain, half strip footing: `elastic` (linear, 2 increments) and "
+         "Q8 plane strain, half strip footing: `elastic` (linear, the steps of tools/make_default_deck.py: 6 increments) and "
          "`dp_footing` (Drucker–Prager, geostatic stress then 300 kPa in 2 increments, full "
          "Newton). CHOLMOD on 1 and 2 threads; MUMPS (LDL^T, distributed assembled input) on 1 "
          "and 2 MPI ranks of 1 thread, every rank holding the whole model (doc/mpi.md). "
