@@ -22,7 +22,7 @@ JOBS ?= 2
 PREFIX ?= $(HOME)/.local
 export FPM CMAKE_DIR JOBS
 
-.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5 s6 install test-slurm
+.PHONY: help deps build run test bench clean s1 s2 s3 s4 s5 s6 install test-slurm build-mpi test-mpi
 
 help:
 	@echo "PECPLAS/PECJOIN make targets (details: doc/build.md)"
@@ -34,6 +34,9 @@ help:
 	@echo "                pecplas-sensitivity and pecplas-sweep into PREFIX/bin (PREFIX=$(PREFIX))"
 	@echo "  make test-slurm  start a one-node Slurm here and run the S2 mesh series as a job"
 	@echo "                array through pecplas-sweep (doc/sweep.md; needs root or Slurm)"
+	@echo "  make build-mpi  the MPI build with the MUMPS solver in $(MPI_DIR) (installs OpenMPI"
+	@echo "                and MUMPS as root; doc/mpi.md): mpirun -np N $(MPI_DIR)/pecplas DECK"
+	@echo "  make test-mpi MUMPS on 1 and 2 ranks against the serial solvers (3 decks, 1e-8)"
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
 	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
 	@echo "  make s2, s3   scenes S2 (pile, interface models) and S3 (dilatancy), PNGs in output/"
@@ -137,6 +140,19 @@ s6: build
 	done
 	@$(PYTHON) tools/plot_s6.py output/s6
 	@$(PYTHON) tools/s6_report.py output/s6
+
+# The optional MPI build (doc/mpi.md): CMake with -DPECPLAS_MPI=ON in its own tree, so the
+# default serial builds stay as they are.
+MPI_DIR ?= build/cmake-mpi
+MPI_DECKS ?= input/default.inp test/data/plasticity/footing_t6.inp input/s2/s2_katona.inp
+build-mpi:
+	@PECPLAS_MPI=1 bash tools/install_deps.sh
+	cmake -S . -B $(MPI_DIR) -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas
+
+test-mpi: build-mpi
+	$(PYTHON) tools/mpi_check.py $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
+	  --singular test/data/cli/roller_only.inp
 
 bench: deps
 	@bash tools/bench.sh

@@ -57,6 +57,7 @@ program tester
    use test_driver_sanity, only: collect_driver_sanity
    use test_linalg_threads, only: collect_linalg_threads
    use test_model_units, only: collect_model_units
+   use test_linalg_mumps, only: collect_linalg_mumps
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -120,6 +121,7 @@ program tester
    suites = [suites, new_testsuite('model_units', collect_model_units)]
    suites = [suites, new_testsuite('refine_local', collect_refine_local)]
    suites = [suites, new_testsuite('adapt', collect_adapt)]
+   suites = [suites, new_testsuite('linalg_mumps', collect_linalg_mumps)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

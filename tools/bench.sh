@@ -11,6 +11,8 @@
 #      and OpenSees on the elastic block, 1e4 .. 1e6 dofs       (tools/bench_peer_opensees.py)
 #   6b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
 #   7. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
+#   with MPI and MUMPS installed (make build-mpi): CHOLMOD vs MUMPS on 1 and 2 ranks, before 7
+#                                                                     (tools/bench_mumps.py)
 # BENCH=quick runs every part in its quick mode (a few minutes in all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,5 +45,15 @@ for part in solver stability scaling work_precision adapt peer peer_opensees dec
   $PYTHON "tools/bench_$part.py" "${mode[@]}"
   echo "== make bench: $part took $(( $(date +%s) - t0 )) s"
 done
+if PECPLAS_MPI=1 bash tools/install_deps.sh --check >/dev/null 2>&1; then
+  t0=$(date +%s)
+  echo "== make bench: MPI build and tools/bench_mumps.py ${mode[*]}"
+  cmake -S . -B build/cmake-mpi -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build/cmake-mpi -j2 --target pecplas >/dev/null
+  $PYTHON tools/bench_mumps.py "${mode[@]}" --pecplas build/cmake-mpi/pecplas
+  echo "== make bench: mumps took $(( $(date +%s) - t0 )) s"
+else
+  echo "== make bench: no MPI/MUMPS (PECPLAS_MPI=1 tools/install_deps.sh): MUMPS part skipped"
+fi
 $PYTHON tools/bench_summary.py --wall $(( $(date +%s) - start ))
 echo "== make bench: doc/bench/README.md ($(( $(date +%s) - start )) s in all)"

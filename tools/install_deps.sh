@@ -3,11 +3,15 @@
 # installs what is missing when run as root; otherwise prints the commands and exits 1.
 #   tools/install_deps.sh            check, install as root
 #   tools/install_deps.sh --check    check only (exit 1 when something is missing)
+#   PECPLAS_MPI=1 tools/install_deps.sh   also OpenMPI and MUMPS, for the MPI build
+#                                         (make build-mpi, doc/mpi.md); never otherwise
 # Quiet and fast when all is present: cheap file and PATH tests, one python start-up.
 # Runs unattended (CI=true, no stdin): apt-get -y with DEBIAN_FRONTEND=noninteractive.
 set -euo pipefail
 
 APT_PACKAGES=(gfortran libhdf5-dev libsuitesparse-dev libopenblas-dev liblapack-dev pkg-config cmake)
+MPI_APT_PACKAGES=(libmumps-dev libopenmpi-dev openmpi-bin)
+if [[ ${PECPLAS_MPI:-0} == 1 ]]; then APT_PACKAGES+=("${MPI_APT_PACKAGES[@]}"); fi
 PIP_PACKAGES=(fpm numpy h5py matplotlib pytest)
 PYTHON=${PYTHON:-python3}
 export DEBIAN_FRONTEND=noninteractive
@@ -82,6 +86,11 @@ check() {
   have_lib cholmod && have_lib umfpack && have_lib suitesparseconfig \
     || missing_apt+=("SuiteSparse libraries (cholmod, umfpack)")
   have_lib lapack || missing_apt+=("LAPACK")
+  if [[ ${PECPLAS_MPI:-0} == 1 ]]; then
+    have_header dmumps_c.h && have_lib dmumps mumps_common || missing_apt+=("MUMPS (libmumps-dev)")
+    command -v mpirun >/dev/null && command -v mpicc >/dev/null \
+      || missing_apt+=("OpenMPI (libopenmpi-dev, openmpi-bin)")
+  fi
   have_lib blas openblas || missing_apt+=("BLAS")
 
   local facts=()

@@ -27,6 +27,7 @@ module pecplas_cli
    use pecplas_driver_restart, only: restore_restart
    use pecplas_provenance, only: version_lines
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_parallel, only: parallel_rank
    implicit none (type, external)
    private
 
@@ -249,6 +250,8 @@ contains
       if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
          ' clockwise elements renumbered counter-clockwise'
 
+      ! an MPI run (doc/mpi.md): every rank runs the analysis, rank 0 alone writes the file
+      results%detached = parallel_rank() > 0
       call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
       if (allocated(error)) then
@@ -385,6 +388,7 @@ contains
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
          trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
+      if (allocated(problem%solver)) write (*, '(a)') ' linear solver: '//problem%solver%report()
       if (problem%katona%active) then
          associate (k => problem%katona)
             write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &

@@ -1,18 +1,22 @@
-!> Linear solvers by deck name: the abstract type, its two implementations and the factory.
+!> Linear solvers by deck name: the abstract type, its implementations and the factory.
 module pecplas_linalg_solver
    use pecplas_error, only: error_t, input_error
    use pecplas_linalg_solver_type, only: linear_solver_t
    use pecplas_linalg_cholmod, only: cholmod_solver_t
    use pecplas_linalg_umfpack, only: umfpack_solver_t
+   use pecplas_linalg_mumps, only: mumps_solver_t, mumps_available
    use pecplas_strings, only: upper
    implicit none (type, external)
    private
 
-   public :: linear_solver_t, cholmod_solver_t, umfpack_solver_t
+   public :: linear_solver_t, cholmod_solver_t, umfpack_solver_t, mumps_solver_t
+   public :: mumps_available
    public :: new_linear_solver, KNOWN_SOLVERS
 
-   !> Solver names accepted by `new_linear_solver` (any letter case).
-   character(len=7), parameter :: KNOWN_SOLVERS(2) = [character(len=7) :: 'CHOLMOD', 'UMFPACK']
+   !> Solver names accepted by `new_linear_solver` (any letter case); MUMPS only in the MPI
+   !> build (`make build-mpi`).
+   character(len=7), parameter :: KNOWN_SOLVERS(3) = [character(len=7) :: 'CHOLMOD', 'UMFPACK', &
+      'MUMPS']
 
 contains
 
@@ -31,6 +35,13 @@ contains
          allocate (cholmod_solver_t :: solver)
       case ('UMFPACK')
          allocate (umfpack_solver_t :: solver)
+      case ('MUMPS')
+         if (.not. mumps_available()) then
+            call input_error(error, 'LINEAR=MUMPS: this build has no MUMPS; build with '// &
+               'make build-mpi (CMake -DPECPLAS_MPI=ON) and run with mpirun')
+            return
+         end if
+         allocate (mumps_solver_t :: solver)
       case default
          list = ''
          do i = 1, size(KNOWN_SOLVERS)

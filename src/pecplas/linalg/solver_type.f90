@@ -11,7 +11,7 @@ module pecplas_linalg_solver_type
    implicit none (type, external)
    private
 
-   public :: linear_solver_t, RCOND_TOL_DEFAULT
+   public :: linear_solver_t, RCOND_TOL_DEFAULT, solver_report
 
    !> A scaled pivot ratio (rcond estimate) below this means numerically singular: 1e-8.
    !> Measured here (Q4 elastic squares and 5-point Laplacians): the roundoff pivot of a
@@ -128,6 +128,7 @@ contains
       end if
    end subroutine check_ready
 
+   !> The statistics line of any solver (extensions append their own to it).
    function solver_report(this) result(line)
       class(linear_solver_t), intent(in) :: this
       character(len=:), allocatable :: line

@@ -10,8 +10,9 @@ module pecplas_model_options
    integer, parameter :: PLANE_STRAIN = 1, AXISYMMETRIC = 2
 
    !> Linear solver names: AUTO picks CHOLMOD for symmetric positive definite systems.
-   character(len=*), parameter :: LINEAR_SOLVERS(3) = [character(len=8) :: 'AUTO', 'CHOLMOD', &
-      'UMFPACK']
+   !> MUMPS: the distributed solver of the MPI build (`mpirun -np N pecplas DECK`).
+   character(len=*), parameter :: LINEAR_SOLVERS(4) = [character(len=8) :: 'AUTO', 'CHOLMOD', &
+      'UMFPACK', 'MUMPS']
    !> MODIFIED_NEWTON: the run's stiffness factorised once (the thesis); QUASI_NEWTON: the
    !> same with BFGS updates; NEWTON: the consistent tangent every iteration.
    character(len=*), parameter :: NONLINEAR_METHODS(3) = [character(len=16) :: &

@@ -11,6 +11,7 @@ module pecplas_io_deck_reader_options
       line_error, where_text, push_item
    use pecplas_model, only: model_t
    use pecplas_model_units, only: parse_units
+   use pecplas_parallel, only: parallel_built
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
       NONLINEAR_METHODS
    implicit none (type, external)
@@ -101,6 +102,12 @@ contains
       if (allocated(error)) return
       call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
       if (allocated(error)) return
+      if (model%solver%linear == 'MUMPS' .and. .not. parallel_built()) then
+         call line_error(state, block%at, 'LINEAR=MUMPS: this build has no MUMPS; build '// &
+            'with make build-mpi (CMake -DPECPLAS_MPI=ON, doc/mpi.md) and run with mpirun, '// &
+            'or choose LINEAR=AUTO, CHOLMOD or UMFPACK', error)
+         return
+      end if
       call param_choice(state, block, 'METHOD', NONLINEAR_METHODS, model%solver%method, error)
       if (allocated(error)) return
       call param_real(state, block, 'TOLERANCE', model%solver%tolerance, found, error)

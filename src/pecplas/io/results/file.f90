@@ -73,6 +73,8 @@ module pecplas_io_results_file
       !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
       character(len=:), allocatable :: failure
       logical :: broken = .false.
+      !> Detached: every write does nothing (the ranks above 0 of an MPI run; rank 0 writes).
+      logical, public :: detached = .false.
       !> Size of the temporary file after the last increment and what that increment added.
       integer(int64) :: bytes = 0, growth = 0
       type(xdmf_layout_t) :: layout
@@ -118,6 +120,7 @@ contains
       type(joint_points_t), intent(in), optional :: joint_points(:)
       type(joint_points_t), allocatable :: points(:)
       integer :: err
+      if (this%detached) return
       if (this%file > 0) then
          call fatal_error(error, 'results file '//this%path//' is already open')
          return
@@ -332,6 +335,7 @@ contains
       class(results_file_t), intent(inout) :: this
       character(len=*), intent(in) :: list(:)
       type(error_t), allocatable, intent(out) :: error
+      if (this%detached) return
       if (this%file < 0) then
          call fatal_error(error, 'results file: warnings written to a file not open')
          return
@@ -403,6 +407,7 @@ contains
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
+      if (this%detached) return
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
          return
@@ -484,6 +489,7 @@ contains
       character(len=*), intent(in) :: status, message
       type(error_t), allocatable, intent(out) :: error
       integer :: complete, err
+      if (this%detached) return
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
          return
@@ -536,6 +542,7 @@ contains
       type(limit_point_t), intent(in) :: limit
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: g
+      if (this%detached) return
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
          return
@@ -561,6 +568,7 @@ contains
       class(results_file_t), intent(inout) :: this
       type(restart_data_t), intent(in) :: data
       type(error_t), allocatable, intent(out) :: error
+      if (this%detached) return
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
          return

@@ -1,0 +1,52 @@
+"""The pure-Python pieces of the MPI check and benchmark (tools/mpi_check.py,
+tools/bench_mumps.py) on synthetic data: no MPI needed."""
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
+import bench_mumps  # noqa: E402
+import mpi_check  # noqa: E402
+
+
+def test_mumps_deck_replaces_the_solver_choice():
+    text = "*NODES\n1, 0, 0\n*SOLVER, LINEAR=CHOLMOD, METHOD=NEWTON\n*STEP, NAME=a\n"
+    out = mpi_check.mumps_deck(text)
+    assert "*SOLVER, LINEAR=MUMPS, METHOD=NEWTON" in out
+    assert "CHOLMOD" not in out
+
+
+def test_mumps_deck_adds_a_solver_line_before_the_first_step():
+    out = mpi_check.mumps_deck("*NODES\n1, 0, 0\n*STEP, NAME=a\n*STEP, NAME=b\n")
+    lines = out.splitlines()
+    assert lines.index("*SOLVER, LINEAR=MUMPS") == lines.index("*STEP, NAME=a") - 1
+    assert out.count("*SOLVER") == 1
+
+
+def test_mumps_deck_without_steps_is_refused():
+    with pytest.raises(ValueError):
+        mpi_check.mumps_deck("*NODES\n1, 0, 0\n")
+
+
+def test_power_fit_recovers_exponent_and_20gb_size():
+    # memory = 2e-3 N^1.1 MB: the fit returns p = 1.1 (to roundoff) and solving for 20 GB
+    # gives back the N of that memory
+    n = np.array([1e4, 3e4, 1e5, 3e5])
+    p, a = bench_mumps.fit(n, 2e-3 * n**1.1)
+    assert p == pytest.approx(1.1, rel=1e-10)
+    n20 = (bench_mumps.GB20_MB / a) ** (1 / p)
+    assert 2e-3 * n20**1.1 == pytest.approx(bench_mumps.GB20_MB, rel=1e-8)
+
+
+def test_power_fit_needs_two_valid_points():
+    assert bench_mumps.fit([1e4, 2e4], [5.0, float("nan")]) is None
+
+
+def test_summary_numbers_are_read():
+    line = (" linear solver: MUMPS n=30000 nnz(factor)=5318710 flops= 8.564E+08 ranks=2 "
+            "est_factor_entries=5318710 est_flops= 8.564E+08 est_mb_rank=71 mb_rank=62")
+    assert bench_mumps.number(r"est_flops=\s*([0-9.E+-]+)", line) == 8.564e8
+    assert bench_mumps.number(r" mb_rank=(\d+)", line) == 62
+    assert np.isnan(bench_mumps.number(r"absent=(\d+)", line))

@@ -1,0 +1,212 @@
+!> The MUMPS solver and LINEAR=MUMPS. Each test checks what holds in the build at hand: in
+!> the default serial build, that MUMPS is refused as an input error naming the deck line and
+!> how to build with it; in the MPI build (one rank here; `make test-mpi` runs whole decks
+!> on 1 and 2 ranks), that MUMPS solves and flags mechanisms like CHOLMOD and UMFPACK.
+module test_linalg_mumps
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, ERR_SINGULAR, ERR_INPUT
+   use pecplas_linalg_sparse, only: csc_t
+   use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver, mumps_available
+   use pecplas_model, only: model_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_files, only: make_directories
+   use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_linalg, only: convection_diffusion, elastic_square, det_vector, &
+      SUPPORT_NONE, SUPPORT_FIXED
+   implicit none (type, external)
+   private
+   public :: collect_linalg_mumps
+
+   !> Where the test writes its deck (the default deck with LINEAR=MUMPS).
+   character(len=*), parameter :: DECK = 'build/test-data/mumps_default.inp'
+
+contains
+
+   subroutine collect_linalg_mumps(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('deck_linear_mumps', test_deck), &
+               new_unittest('factory', test_factory), &
+               new_unittest('symmetric_and_unsymmetric', test_solves), &
+               new_unittest('mechanism_flagged', test_singular), &
+               new_unittest('symmetry_lost', test_symmetry_lost)]
+   end subroutine collect_linalg_mumps
+
+   !> input/default.inp with LINEAR=MUMPS on its *SOLVER line; `at`: that line's number.
+   subroutine write_deck(at, error)
+      integer, intent(out) :: at
+      type(error_t), allocatable, intent(out) :: error
+      character(len=512) :: line
+      integer :: in, out, ios, n
+      call make_directories('build/test-data')
+      open (newunit=in, file='input/default.inp', status='old', action='read', iostat=ios)
+      call check(error, ios == 0, 'input/default.inp readable')
+      if (allocated(error)) return
+      open (newunit=out, file=DECK, status='replace', action='write')
+      at = 0
+      n = 0
+      do
+         read (in, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         n = n + 1
+         if (index(line, '*SOLVER,') == 1) then
+            line = '*SOLVER, LINEAR=MUMPS,'//line(9:)
+            at = n
+         end if
+         write (out, '(a)') trim(line)
+      end do
+      close (in)
+      close (out)
+      call check(error, at > 0, 'input/default.inp has a *SOLVER line')
+   end subroutine write_deck
+
+   !> Serial build: exit 2 with "deck:line: [*SOLVER] ... make build-mpi"; MPI build: read.
+   subroutine test_deck(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      type(model_t) :: model
+      character(len=16) :: where
+      integer :: at
+      call write_deck(at, error)
+      if (allocated(error)) return
+      call read_deck(DECK, model, e)
+      if (mumps_available()) then
+         call check(error, .not. allocated(e), 'MPI build reads LINEAR=MUMPS')
+         if (allocated(error)) return
+         call check(error, model%solver%linear == 'MUMPS', 'LINEAR=MUMPS kept')
+         return
+      end if
+      call check(error, allocated(e), 'serial build refuses LINEAR=MUMPS')
+      if (allocated(error)) return
+      write (where, '(a,i0,a)') ':', at, ':'
+      call check(error, e%exit_code() == 2, 'an input error: exit 2')
+      if (allocated(error)) return
+      call check(error, index(e%text(), DECK//trim(where)) == 1, 'message starts with '// &
+         'deck:line, got: '//e%text())
+      if (allocated(error)) return
+      call check(error, index(e%text(), 'make build-mpi') > 0, 'message says how to build '// &
+         'with MUMPS, got: '//e%text())
+   end subroutine test_deck
+
+   subroutine test_factory(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(linear_solver_t), allocatable :: s
+      type(error_t), allocatable :: e
+      call new_linear_solver('mumps', s, e)
+      if (mumps_available()) then
+         call check(error, .not. allocated(e), 'MUMPS made in the MPI build')
+         if (allocated(error)) return
+         call check(error, s%name() == 'MUMPS', 'solver named MUMPS')
+      else
+         call check(error, allocated(e), 'no MUMPS in the serial build')
+         if (allocated(error)) return
+         call check(error, e%kind == ERR_INPUT .and. index(e%text(), 'build-mpi') > 0, &
+            'input error saying how to build with MUMPS, got: '//e%text())
+      end if
+   end subroutine test_factory
+
+   !> A x = A x_ref for a symmetric (upper triangle, LDL^T) and an unsymmetric (LU) matrix:
+   !> x = x_ref within 1e-10 relative (both well conditioned; backward-stable factorisations).
+   subroutine test_solves(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(linear_solver_t), allocatable :: s
+      type(error_t), allocatable :: e
+      type(csc_t) :: a
+      logical, allocatable :: is_x(:)
+      real(wp), allocatable :: xref(:), b(:), x(:)
+      integer :: k
+      if (.not. mumps_available()) then
+         call new_linear_solver('MUMPS', s, e)
+         call check(error, allocated(e) .and. .not. allocated(s), 'serial build: no solver')
+         return
+      end if
+      do k = 1, 2
+         if (k == 1) call elastic_square(8, SUPPORT_FIXED, a, is_x, error)
+         if (k == 2) call convection_diffusion(12, 3.0_wp, -2.0_wp, a, error)
+         if (allocated(error)) return
+         call new_linear_solver('MUMPS', s, error)
+         if (allocated(error)) return
+         call s%analyse(a, error)
+         if (.not. allocated(error)) call s%factorise(a, error)
+         ! a second factorisation on the same analysis (the Newton loop's reuse)
+         if (.not. allocated(error)) call s%factorise(a, error)
+         if (allocated(error)) return
+         xref = det_vector(a%n, 11)
+         allocate (b(a%n), x(a%n))
+         call a%matvec(xref, b)
+         call s%solve(b, x, error)
+         if (allocated(error)) return
+         call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS error in x', &
+            atol=1.0e-10_wp*maxval(abs(xref)))
+         if (allocated(error)) return
+         call check(error, s%n_analyses == 1 .and. s%n_factorisations == 2, &
+            'one analysis reused by two factorisations')
+         if (allocated(error)) return
+         deallocate (b, x, s)
+      end do
+   end subroutine test_solves
+
+   !> A floating elastic square (rigid-body modes) is reported singular, with a free equation.
+   subroutine test_singular(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(linear_solver_t), allocatable :: s
+      type(error_t), allocatable :: e
+      type(csc_t) :: a
+      logical, allocatable :: is_x(:)
+      if (.not. mumps_available()) then
+         call new_linear_solver('MUMPS', s, e)
+         call check(error, allocated(e), 'serial build: MUMPS refused')
+         return
+      end if
+      call elastic_square(8, SUPPORT_NONE, a, is_x, error)
+      if (allocated(error)) return
+      call new_linear_solver('MUMPS', s, error)
+      if (allocated(error)) return
+      call s%analyse(a, error)
+      if (allocated(error)) return
+      call s%factorise(a, e)
+      call check(error, allocated(e), 'floating square flagged')
+      if (allocated(error)) return
+      call check(error, e%kind == ERR_SINGULAR, 'as a singular matrix: '//e%text())
+      if (allocated(error)) return
+      call check(error, s%bad_equation >= 1 .and. s%bad_equation <= a%n .and. &
+         .not. s%factorised, 'a free equation named, no factor kept')
+   end subroutine test_singular
+
+   !> Analysed symmetric (LDL^T), then factorised with unsymmetric values on the same
+   !> pattern (convection added): analysed again as LU, and x = x_ref within 1e-10.
+   subroutine test_symmetry_lost(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(linear_solver_t), allocatable :: s
+      type(error_t), allocatable :: e
+      type(csc_t) :: a0, a1
+      real(wp), allocatable :: xref(:), b(:), x(:)
+      if (.not. mumps_available()) then
+         call new_linear_solver('MUMPS', s, e)
+         call check(error, allocated(e), 'serial build: MUMPS refused')
+         return
+      end if
+      call convection_diffusion(10, 0.0_wp, 0.0_wp, a0, error)
+      if (.not. allocated(error)) call convection_diffusion(10, 3.0_wp, -2.0_wp, a1, error)
+      if (allocated(error)) return
+      call check(error, a0%is_symmetric(1.0e-13_wp) .and. .not. a1%is_symmetric(1.0e-13_wp) &
+         .and. all(a0%rowind == a1%rowind), 'fixtures: symmetric then not, same pattern')
+      if (allocated(error)) return
+      call new_linear_solver('MUMPS', s, error)
+      if (allocated(error)) return
+      call s%analyse(a0, error)
+      if (.not. allocated(error)) call s%factorise(a0, error)
+      if (.not. allocated(error)) call s%factorise(a1, error)
+      if (allocated(error)) return
+      xref = det_vector(a1%n, 5)
+      allocate (b(a1%n), x(a1%n))
+      call a1%matvec(xref, b)
+      call s%solve(b, x, error)
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS x after LU', &
+         atol=1.0e-10_wp*maxval(abs(xref)))
+      if (allocated(error)) return
+      call check(error, s%n_analyses == 2 .and. index(s%ordering, 'LU') > 0, &
+         'analysed again as LU, got ordering '//s%ordering)
+   end subroutine test_symmetry_lost
+
+end module test_linalg_mumps
