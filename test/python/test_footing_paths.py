@@ -17,7 +17,6 @@ arc-length (doc/theory.md §4).
 """
 import math
 import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -26,31 +25,18 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from footing_decks import deck  # noqa: E402
-from pecplas_exe import pecplas_cmd  # noqa: E402
-
-ROOT = Path(__file__).resolve().parents[2]
+from deck_runs import run as run_deck  # noqa: E402
 
 
 def run(text, tmp_path, name):
-    path = tmp_path / f"{name}.inp"
-    path.write_text(text)
-    out = tmp_path / f"{name}.h5"
-    p = subprocess.run(pecplas_cmd() + [str(path), "-o", str(out), "--quiet"],
-                       capture_output=True, text=True, cwd=ROOT, timeout=300)
-    assert out.exists(), p.stderr
+    """deck_runs.run, with the footing's vertical reaction (kN/m) at every written increment
+    instead of the displacements."""
+    p, status, hist, limit, _ = run_deck(text, tmp_path, name)
     ids = [int(v) for v in re.search(r"\*NSET, NAME=footing\n([\d, \n]+?)\*", text)
            .group(1).replace("\n", ",").split(",") if v.strip()]
-    with h5py.File(out, "r") as f:
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
-        hist = {k: f["history"][k][()] for k in f["history"]}
-        limit = None
-        if "limit" in f:
-            limit = {"factors": f["limit/pattern_factors"][()],
-                     "increment": int(f["limit"].attrs["global_increment"])}
-        keys = sorted(f["increments"].keys())
+    with h5py.File(tmp_path / f"{name}.h5", "r") as f:
         reaction = [-f["increments"][k]["reaction"][()][[i - 1 for i in ids], 1].sum()
-                    for k in keys]
+                    for k in sorted(f["increments"].keys())]
     return p, status, hist, limit, np.array(reaction)
 
 

@@ -17,7 +17,6 @@ honest statuses (doc/theory.md, 'Nonlinear solution').
   45 iterations per increment (measured 29.5 on S1, 36.9 on S2).
 """
 import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -26,29 +25,9 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from pecplas_exe import pecplas_cmd  # noqa: E402
+from deck_runs import run  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def run(text, tmp_path, name):
-    deck = tmp_path / f"{name}.inp"
-    deck.write_text(text)
-    out = tmp_path / f"{name}.h5"
-    p = subprocess.run(pecplas_cmd() + [str(deck), "-o", str(out), "--quiet"],
-                       capture_output=True, text=True, cwd=ROOT, timeout=300)
-    assert out.exists(), p.stderr
-    with h5py.File(out, "r") as f:
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
-        hist = {k: f["history"][k][()] for k in f["history"]}
-        limit = None
-        if "limit" in f:
-            limit = {"factors": f["limit/pattern_factors"][()],
-                     "increment": int(f["limit"].attrs["global_increment"])}
-        last = sorted(f["increments"].keys())
-        u = {k: f["increments"][k]["displacement"][()] for k in last}
-    return p, status, hist, limit, u
 
 
 def with_solver(text, solver):
