@@ -23,6 +23,7 @@ advice.csv and the fragments work_precision.md, advice.md.
 """
 import argparse
 import math
+import re
 import sys
 import tempfile
 import time
@@ -70,6 +71,8 @@ def plan(quick):
         add("s6", "mohr_coulomb", "Q4", "NEWTON", n, incs, "mesh")
         if n <= lv6[2]:
             add("s6", "modjoin", "Q4", "NEWTON", n, incs, "mesh")
+            # the same pull under force control with arc-length (past the early local peak)
+            add("s6", "modjoin_arc", "Q4", "NEWTON", n, incs, "mesh")
             add("s6", "mohr_coulomb", "Q8", "NEWTON", n, incs, "mesh")
         if n <= lv6[1]:
             add("s6", "mohr_coulomb", "Q4", "MODIFIED_NEWTON", n, incs, "mesh")
@@ -78,7 +81,7 @@ def plan(quick):
         for model in ("spring", "mohr_coulomb", "katona"):
             add("s2", model, "Q4", "MODIFIED_NEWTON" if model == "katona" else "NEWTON",
                 mid2, k, "increments")
-        for model in ("mohr_coulomb", "modjoin"):
+        for model in ("mohr_coulomb", "modjoin", "modjoin_arc"):
             add("s6", model, "Q4", "NEWTON", mid6, k, "increments")
     return runs
 
@@ -96,6 +99,8 @@ def make_deck(r):
         return wd.set_solver(wd.scale_steps(text, r["increments"] / 10.0, last_target=0.2,
                                             last_increments=15), r["method"],
                              5000 if r["method"] == "MODIFIED_NEWTON" else None)
+    elif r["model"] == "modjoin_arc":
+        text = modjoin_arc_deck(r)
     else:
         text = g6.deck(g6.Mesh(r["level"]), r["model"], r["level"])
         text = wd.first_step_only(text, factor=Q_FIX / g6.Q_END, increments=r["increments"])
@@ -108,9 +113,24 @@ def make_deck(r):
     return text
 
 
+def modjoin_arc_deck(r):
+    """S6 MODJOIN pulled by the Mohr-Coulomb deck's head pressure to Q_FIX under arc-length
+    control (doc/theory.md §4): the path passes the early local peak of the load-uplift curve
+    that stops plain force control, and the step lands on Q_FIX exactly."""
+    mesh = g6.Mesh(r["level"])
+    text = g6.deck(mesh, "modjoin", r["level"])
+    pull = re.search(r"\*LOAD, NAME=pull, TYPE=PRESSURE\nhead, [-0-9.e+]+\n",
+                     g6.deck(mesh, "mohr_coulomb", r["level"])).group(0)
+    i, j = text.index("*LOAD, NAME=pull, TYPE=DISPLACEMENT"), text.index("*SOLVER")
+    return (text[:i] + pull + f"*STEP, NAME=pull, INCREMENTS={r['increments']}, "
+            f"CONTROL=ARC_LENGTH, MAX_INCREMENTS={40 * r['increments']}\n"
+            f"pull, {Q_FIX / g6.Q_END!r}\n" + text[j:])
+
+
 def estimate(r):
     kind = ("KATONA" if r["model"] == "katona" else
-            "MODJOIN" if r["model"] == "modjoin" and r["method"] == "NEWTON" else r["method"])
+            "MODJOIN" if r["model"] in ("modjoin", "modjoin_arc") and r["method"] == "NEWTON"
+            else r["method"])
     return 0.05 + RATE[kind] * r["dofs"] * 10.0 * math.sqrt(r["increments"] / 10.0)
 
 

@@ -10,7 +10,8 @@ SOLVER_NAME = {("NEWTON", False): "full Newton", ("MODIFIED_NEWTON", False): "mo
                ("NEWTON", True): "Katona, refactorised", ("MODIFIED_NEWTON", True):
                "Katona bordered"}
 JOINT = {"goodman": "GOODMAN", "mohr_coulomb": "GOODMAN", "ghaboussi": "THIN_LAYER",
-         "spring": "SPRING", "katona": "doublets", "modjoin": "GOODMAN"}
+         "spring": "SPRING", "katona": "doublets", "modjoin": "GOODMAN",
+         "modjoin_arc": "GOODMAN"}
 # the scene's reference model, in order of preference (the next one when it has no reference)
 SCENE_REF = {"s2": ("mohr_coulomb",), "s6": ("modjoin", "mohr_coulomb")}
 
