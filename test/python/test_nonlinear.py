@@ -194,3 +194,22 @@ def test_katona_limit_under_force_control(tmp_path):
     print(f"Katona pad: arc-length limit {limit['factors'][-1]:.6f} (exact {60 / 60.6:.6f})")
     assert status == "limit load", p.stderr
     assert abs(limit["factors"][-1] / (60.0 / 60.6) - 1.0) <= 2e-3
+
+
+def test_katona_pile_arc_length_equals_load_control(tmp_path):
+    """S2 with Katona contact (no limit) under arc-length: the step ends at 2000 kN with the
+    load-controlled run's head settlement (through the full-slip transition, where the arc
+    iterations meet singular contact states and load control carries the path)."""
+    text = (ROOT / "input/s2/s2_katona.inp").read_text()
+    arc = text.replace("*STEP, NAME=load, INCREMENTS=20",
+                       "*STEP, NAME=load, INCREMENTS=20, CONTROL=ARC_LENGTH")
+    assert arc != text
+    _, s_arc, h_arc, limit, u_arc = run(arc, tmp_path, "katona_arc")
+    _, s_lc, h_lc, _, u_lc = run(text, tmp_path, "katona_load")
+    assert s_arc == "completed" and s_lc == "completed" and limit is None
+    k_arc = int(np.argmax(h_arc["pattern_factors"][:, -1]))
+    k_lc = int(np.argmax(h_lc["pattern_factors"][:, -1]))
+    a = -list(u_arc.values())[k_arc][:, 1].min()
+    b = -list(u_lc.values())[k_lc][:, 1].min()
+    print(f"Katona S2 at 2000 kN: arc-length {a * 1e3:.6f} mm, load control {b * 1e3:.6f} mm")
+    assert abs(a / b - 1.0) <= 1e-8

@@ -85,7 +85,7 @@ contains
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
       real(wp) :: dl, dl0, tau, k_inc, time
       integer :: level, method, nflat, wanted
-      logical :: landed
+      logical :: landed, lc_mode
 
       associate (step => model%steps(istep))
          att%f0 = f0
@@ -100,42 +100,61 @@ contains
          wanted = step%iterations_wanted
          level = 0
          nflat = 0
+         lc_mode = .false.
          res%tau = tau
          res%reason = ''
          do while (res%increments < req%max_increments)
-            att%arc = .true.
-            att%dl = dl
-            att%tau0 = tau
-            att%tau1 = tau
-            if (allocated(run%du_prev)) att%du_prev = run%du_prev
-            call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
-            if (allocated(error)) return
-            landed = .false.
-            if (out%converged .and. out%tau > 1.0_wp + 1.0e-12_wp) then
-               ! beyond the step's target: land on it with one load-controlled increment
-               call problem%state%rollback()
+            if (lc_mode) then
+               ! load control where it converges (after a singular arc iteration that a
+               ! load-controlled step passed): increments of 1/INCREMENTS of the step
                att%arc = .false.
-               att%tau1 = 1.0_wp
+               att%tau0 = tau
+               att%tau1 = min(tau + 1.0_wp/step%increments, 1.0_wp)
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
-               landed = out%converged
-            end if
-            if (.not. out%converged .and. .not. landed .and. index(out%reason, 'singular') > 0) then
-               ! the states the arc iteration tried make the tangent singular: is the
-               ! structure a mechanism here, or did the iteration pick wrong states? A
-               ! load-controlled step a little further decides (it converges: go on)
-               call problem%state%rollback()
-               att%arc = .false.
-               att%tau1 = min(tau + PROBE_STEP, 1.0_wp)
+               if (.not. out%converged) then
+                  call problem%state%rollback()
+                  lc_mode = .false.
+                  dl = dl0
+                  cycle
+               end if
+               landed = att%tau1 >= 1.0_wp
+            else
+               att%arc = .true.
+               att%dl = dl
+               att%tau0 = tau
+               att%tau1 = tau
+               if (allocated(run%du_prev)) att%du_prev = run%du_prev
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
-               landed = out%converged .and. att%tau1 >= 1.0_wp
-               if (out%converged) then
-                  level = 0
-               else
-                  out%reason = 'the tangent with the next slip/contact states is singular and '// &
-                     'no equilibrium exists a little further (step fraction '// &
-                     trim(fraction_text(att%tau1))//'): '//out%reason
+               landed = .false.
+               if (out%converged .and. out%tau > 1.0_wp + 1.0e-12_wp) then
+                  ! beyond the step's target: land on it with one load-controlled increment
+                  call problem%state%rollback()
+                  att%arc = .false.
+                  att%tau1 = 1.0_wp
+                  call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+                  if (allocated(error)) return
+                  landed = out%converged
+               end if
+               if (.not. out%converged .and. .not. landed .and. index(out%reason, 'singular') > 0) then
+                  ! the states the arc iteration tried make the tangent singular: is the
+                  ! structure a mechanism here, or did the iteration pick wrong states? A
+                  ! load-controlled step a little further decides (it converges: go on)
+                  call problem%state%rollback()
+                  att%arc = .false.
+                  att%tau1 = min(tau + PROBE_STEP, 1.0_wp)
+                  call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+                  if (allocated(error)) return
+                  landed = out%converged .and. att%tau1 >= 1.0_wp
+                  if (out%converged) then
+                     level = 0
+                     lc_mode = .true.
+                  else
+                     out%reason = 'the tangent with the next slip/contact states is singular and '// &
+                        'no equilibrium exists a little further (step fraction '// &
+                        trim(fraction_text(att%tau1))//'): '//out%reason
+                  end if
                end if
             end if
             if (.not. out%converged) then
@@ -163,7 +182,8 @@ contains
             call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
                0.0_wp, f0, fint)
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
-               reaction, istep, inc_in_step, time, landed, merge(0, 1, landed), error)
+               reaction, istep, inc_in_step, time, landed, merge(0, 1, landed .or. .not. att%arc), &
+               error)
             if (allocated(error)) return
             ! the load's maximum along the path, and whether it is flat
             if (tau > res%tau_peak) then
