@@ -204,6 +204,18 @@ contains
       w0 = wall_time()
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
+      if (.not. allocated(error) .and. model%adapt%given) then
+         ! *ADAPT in the deck: the adaptive loop instead of one analysis (not for a restart)
+         if (.not. present(restart)) then
+            code = adapt_main(deck, model%adapt%target, model%adapt%goal, &
+               model%adapt%max_dofs, outfile_in)
+            return
+         else if (len(restart) == 0) then
+            code = adapt_main(deck, model%adapt%target, model%adapt%goal, &
+               model%adapt%max_dofs, outfile_in)
+            return
+         end if
+      end if
       if (.not. allocated(error)) then
          threads = resolve_threads(model%solver%threads)
          call apply_threads(threads)

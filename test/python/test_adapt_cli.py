@@ -56,3 +56,35 @@ def test_bad_options_exit_2_nothing_written(pecplas, tmp_path, args, expected):
     assert r.returncode == 2
     assert expected in r.stderr
     assert not out.exists()
+
+
+def test_adapt_keyword_runs_the_loop(pecplas, tmp_path):
+    """*ADAPT, TARGET=15% in the deck: `pecplas DECK` runs the same levels as
+    --target-error 15% (same DOFs and estimates) and meets the target."""
+    deck = tmp_path / "l_adapt.inp"
+    deck.write_text(DECK.read_text() + "*ADAPT, TARGET=15%\n")
+    r = run(pecplas, deck, "-o", tmp_path / "deck.h5")
+    c = run(pecplas, DECK, "--target-error", "15%", "-o", tmp_path / "cli.h5")
+    assert r.returncode == 0 and c.returncode == 0, r.stderr + c.stderr
+
+    def levels(out):
+        return [m.groups()[1:6] for m in map(LEVEL.match, out.splitlines()) if m]
+    assert levels(r.stdout) == levels(c.stdout) and len(levels(r.stdout)) >= 2
+
+
+@pytest.mark.parametrize("line, expected", [
+    ("*ADAPT, TARGET=150%", "TARGET: expected a relative error such as 1% or 0.01"),
+    ("*ADAPT, GOAL=node:21:y", "expected TARGET=<relative error>"),
+    ("*ADAPT, TARGET=1%, GOAL=node:21:w", "GOAL: expected node:N:x, node:N:y"),
+    ("*ADAPT, TARGET=1%, MAX_DOFS=0", "MAX_DOFS"),
+])
+def test_adapt_keyword_errors_name_the_line(pecplas, tmp_path, line, expected):
+    text = DECK.read_text()
+    deck = tmp_path / "bad.inp"
+    deck.write_text(text + line + "\n")
+    out = tmp_path / "bad.h5"
+    r = run(pecplas, deck, "-o", out)
+    nline = len(text.splitlines()) + 1
+    assert r.returncode == 2 and expected in r.stderr, r.stderr
+    assert f"bad.inp:{nline}:" in r.stderr and "*ADAPT" in r.stderr
+    assert not out.exists()

@@ -11,6 +11,7 @@ module pecplas_model
    use pecplas_model_provenance, only: provenance_t
    use pecplas_warnings, only: warnings_t
    use pecplas_model_units, only: units_t
+   use pecplas_model_adapt_request, only: adapt_request_t
    implicit none (type, external)
    private
 
@@ -37,6 +38,8 @@ module pecplas_model
       type(step_t), allocatable :: steps(:)
       type(solver_options_t) :: solver
       type(output_options_t) :: output
+      !> *ADAPT: run the adaptive loop (pecplas_driver_adapt) instead of one analysis.
+      type(adapt_request_t) :: adapt
       !> Deck line of every node, element and joint (for checks after reading).
       type(provenance_t) :: provenance
       !> Suspicious input found while reading and checking (pecplas_warnings).

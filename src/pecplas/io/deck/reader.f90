@@ -13,6 +13,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_reader_materials, only: read_material, read_section, resolve_sections
    use pecplas_io_deck_reader_loads, only: read_boundary, read_load
    use pecplas_io_deck_reader_options, only: read_text, read_units, read_analysis, read_solver, &
+      read_adapt, &
       read_output, read_step
    use pecplas_io_deck_resolve_mesh, only: build_mesh
    use pecplas_io_deck_reader_initial, only: read_initial_stress, resolve_initial_stress
@@ -30,10 +31,10 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(20) = [character(len=15) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(21) = [character(len=15) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
-      '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS']
+      '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT']
 
 contains
 
@@ -163,6 +164,9 @@ contains
       case ('*OUTPUT')
          call no_data(state, block, error)
          if (.not. allocated(error)) call read_output(state, model, block, error)
+      case ('*ADAPT')
+         call no_data(state, block, error)
+         if (.not. allocated(error)) call read_adapt(state, model, block, error)
       case ('*INITIAL_STRESS')
          call read_initial_stress(state, model, block, error)
       case ('*INTERFACE_LAW')

@@ -12,12 +12,13 @@ module pecplas_io_deck_reader_options
    use pecplas_model, only: model_t
    use pecplas_model_units, only: parse_units
    use pecplas_parallel, only: parallel_built
+   use pecplas_model_adapt_request, only: parse_target, parse_goal
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
       NONLINEAR_METHODS
    implicit none (type, external)
    private
 
-   public :: read_text, read_units, read_analysis, read_solver, read_output, read_step
+   public :: read_text, read_units, read_analysis, read_solver, read_output, read_step, read_adapt
 
 contains
 
@@ -156,6 +157,51 @@ contains
       if (allocated(error)) return
       call param_yes_no(state, block, 'ERROR_ESTIMATE', model%output%error_estimate, error)
    end subroutine read_output
+
+   !> *ADAPT, TARGET=1% [, GOAL=energy|node:N:x|y] [, MAX_DOFS=n]: `pecplas DECK` runs the
+   !> adaptive loop (the command line's --target-error, --goal, --max-dofs win over it).
+   subroutine read_adapt(state, model, block, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text, msg
+      real(wp) :: value
+      integer :: node, dof
+      logical :: found
+      call block%kw%check_keys(state%lines(block%at), [character(len=8) :: 'TARGET', 'GOAL', &
+         'MAX_DOFS'], error)
+      if (allocated(error)) return
+      if (model%adapt%given) then
+         call line_error(state, block%at, '*ADAPT is given twice', error)
+         return
+      end if
+      call block%kw%get('TARGET', text, found)
+      if (.not. found) then
+         call line_error(state, block%at, 'expected TARGET=<relative error>, e.g. TARGET=1%', &
+            error)
+         return
+      end if
+      call parse_target(text, value, msg)
+      if (allocated(msg)) then
+         call line_error(state, block%at, 'TARGET: '//msg, error)
+         return
+      end if
+      model%adapt%target = text
+      model%adapt%goal = ''
+      call block%kw%get('GOAL', text, found)
+      if (found) then
+         call parse_goal(text, node, dof, msg)
+         if (allocated(msg)) then
+            call line_error(state, block%at, 'GOAL: '//msg, error)
+            return
+         end if
+         model%adapt%goal = text
+      end if
+      call param_int(state, block, 'MAX_DOFS', 1, model%adapt%max_dofs, error)
+      if (allocated(error)) return
+      model%adapt%given = .true.
+   end subroutine read_adapt
 
    !> *STEP [, NAME=name] [, INCREMENTS=n] [, CONTROL=LOAD|ARC_LENGTH] -- data: pattern,
    !> target_factor. Arc-length options: MAX_INCREMENTS=m, ITERATIONS=i (wanted per
