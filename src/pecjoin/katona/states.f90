@@ -21,7 +21,7 @@
 !> on supported dofs only (G(i, i) = 0) has a zero multiplier: its supports carry the force.
 module pecjoin_katona_states
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, run_error
+   use pecplas_error, only: error_t, run_error, singular_error
    use pecplas_linalg_lapack, only: dgetrf, dgetrs
    use pecjoin_laws_type, only: MODE_STICK, MODE_SLIP, MODE_OPEN
    use pecjoin_katona_type, only: katona_t
@@ -186,7 +186,7 @@ contains
          call consistent_solution(a0, b0, b, consistent)
          if (consistent) return
          write (buf, '(a,es9.2,a)') ' (rcond ', rcond, ')'
-         call run_error(error, 'Katona contact: the constrained system is singular under '// &
+         call singular_error(error, 'Katona contact: the constrained system is singular under '// &
             'the current contact states: a body can move freely (sliding away)'//trim(buf))
          return
       end if

@@ -60,6 +60,8 @@ module pecplas_driver_arc_path
       integer :: peak_increment = 0, beyond = 0
       real(wp), allocatable :: peak_factors(:)
       logical :: flat = .false.
+      !> The arc iteration met singular states and no equilibrium exists a little further.
+      logical :: mechanism = .false.
       !> Plateau: first increment of the flat run and its step fraction.
       integer :: flat_increment = 0
       real(wp) :: tau_flat = 0.0_wp
@@ -137,7 +139,7 @@ contains
                   if (allocated(error)) return
                   landed = out%converged
                end if
-               if (.not. out%converged .and. .not. landed .and. index(out%reason, 'singular') > 0) then
+               if (.not. out%converged .and. .not. landed .and. out%singular) then
                   ! the states the arc iteration tried make the tangent singular: is the
                   ! structure a mechanism here, or did the iteration pick wrong states? A
                   ! load-controlled step a little further decides (it converges: go on)
@@ -151,6 +153,7 @@ contains
                      level = 0
                      lc_mode = .true.
                   else
+                     res%mechanism = .true.
                      out%reason = 'the tangent with the next slip/contact states is singular and '// &
                         'no equilibrium exists a little further (step fraction '// &
                         trim(fraction_text(att%tau1))//'): '//out%reason
@@ -170,6 +173,7 @@ contains
                if (.not. run%quiet) write (*, '(a,es9.2)') '   no convergence: arc length cut to ', dl
                cycle
             end if
+            res%mechanism = .false.
             k_inc = (out%tau - tau)/max(norm2(out%du), tiny(1.0_wp))
             if (run%k_first == 0.0_wp) run%k_first = k_inc
             res%sp = k_inc/run%k_first

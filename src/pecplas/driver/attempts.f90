@@ -11,7 +11,7 @@
 !> modified or full Newton (its quasi-Newton is modified Newton).
 module pecplas_driver_attempts
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, ERR_RUN
+   use pecplas_error, only: error_t, ERR_RUN, ERR_SINGULAR
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_output, only: write_increment, progress_line
@@ -99,9 +99,13 @@ contains
                error)
          end if
          if (allocated(error)) then
-            if (error%kind /= ERR_RUN) return
+            ! a failed material return or a singular system of trial states fails the attempt
+            if (error%kind /= ERR_RUN .and. error%kind /= ERR_SINGULAR) return
             out%converged = .false.
-            out%reason = 'a material or law could not return: '//error%message
+            out%singular = error%kind == ERR_SINGULAR
+            out%reason = error%message
+            if (.not. out%singular) out%reason = 'a material or law could not return: '// &
+               error%message
             deallocate (error)
          end if
          problem%iterations = problem%iterations + out%iterations

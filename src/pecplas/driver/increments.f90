@@ -359,7 +359,7 @@ contains
    logical function mechanism(res)
       type(arc_end_t), intent(in) :: res
       mechanism = res%kind == END_FAILED .and. res%increments > 0 .and. res%beyond == 0 .and. &
-         index(res%reason, 'no equilibrium exists a little further') > 0
+         res%mechanism
    end function mechanism
 
    subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)

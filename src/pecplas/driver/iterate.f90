@@ -52,8 +52,10 @@ module pecplas_driver_iterate
       real(wp) :: residual = 0.0_wp
       !> Step fraction reached (tau1 under load control).
       real(wp) :: tau = 0.0_wp
-      !> Why it failed ('' when converged).
+      !> Why it failed ('' when converged); singular: the system of the states the iteration
+      !> reached has no unique solution (a mechanism under those states).
       character(len=:), allocatable :: reason
+      logical :: singular = .false.
       !> Free displacement increment of the increment.
       real(wp), allocatable :: du(:)
    end type outcome_t
