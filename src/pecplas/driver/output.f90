@@ -58,9 +58,8 @@ contains
          if (model%output%error_estimate) call add_estimate(model, problem, r, error)
          if (allocated(error)) return
       end if
-      call results%write_increment(r, error)
-      ! the state to restart from, replaced at every converged increment
-      if (.not. allocated(error)) call results%write_restart(pack_restart(problem), error)
+      ! with the state to restart from, replaced at every converged increment
+      call results%write_increment(r, error, pack_restart(problem))
    end subroutine write_increment
 
    !> Error indicators of the massif and joint elements with the fields.

@@ -36,7 +36,7 @@ module pecplas_io_results_file
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
       h5_history_dataset, safe_name, h5_write, h5_describe
    use pecplas_io_results_mesh, only: write_mesh
-   use pecplas_io_results_restart, only: restart_data_t, write_restart_group
+   use pecplas_io_results_restart, only: restart_data_t, write_restart_next, swap_restart
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
       write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
@@ -95,7 +95,6 @@ module pecplas_io_results_file
       procedure :: finish => results_finish
       procedure :: write_limit => results_write_limit
       procedure :: warnings => results_warnings
-      procedure :: write_restart => results_write_restart
       procedure :: is_open => results_is_open
       procedure :: working_path => results_working_path
       procedure :: write_failure => results_write_failure
@@ -403,10 +402,12 @@ contains
    !> then flushes the file (and, when due, rewrites the running XDMF). Refuses non-finite
    !> values and wrong shapes before writing anything. A failed write (disk full,
    !> permissions) is also kept as `write_failure`.
-   subroutine results_write_increment(this, inc, error)
+   !> `restart`: the state to restart from, written in the same flush as the increment.
+   subroutine results_write_increment(this, inc, error, restart)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
+      type(restart_data_t), intent(in), optional :: restart
       if (this%detached) return
       if (this%file <= 0) then
          call fatal_error(error, 'results file is not open')
@@ -425,7 +426,7 @@ contains
          if (.not. allocated(this%failure)) this%failure = error%text()
          return
       end if
-      call write_checked(this, inc, error)
+      call write_checked(this, inc, error, restart)
       if (allocated(error)) then
          this%broken = .true.
          if (.not. allocated(this%failure)) this%failure = error%text()
@@ -446,11 +447,16 @@ contains
    end subroutine check_space
 
    !> The writing part of write_increment.
-   subroutine write_checked(this, inc, error)
+   subroutine write_checked(this, inc, error, restart)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
+      type(restart_data_t), intent(in), optional :: restart
       integer(int64) :: nbytes
+      if (present(restart)) then
+         call write_restart_next(this%file, restart, error)
+         if (allocated(error)) return
+      end if
       if (inc%write_fields) then
          call write_fields(this%file, inc, this%layout, this%strains, this%units, error)
          if (allocated(error)) return
@@ -465,6 +471,10 @@ contains
       this%nrows = this%nrows + 1
       call commit(this, .false., error)
       if (allocated(error)) return
+      if (present(restart)) then
+         call swap_restart(this%file, error)
+         if (allocated(error)) return
+      end if
       inquire (file=this%work, size=nbytes)
       if (nbytes > 0) then
          this%growth = max(0_int64, nbytes - this%bytes)
@@ -562,19 +572,6 @@ contains
          this%units%patterns)
       call h5_close_group(g)
    end subroutine results_write_limit
-
-   !> Replaces the /restart group with `data` (pecplas_io_results_restart).
-   subroutine results_write_restart(this, data, error)
-      class(results_file_t), intent(inout) :: this
-      type(restart_data_t), intent(in) :: data
-      type(error_t), allocatable, intent(out) :: error
-      if (this%detached) return
-      if (this%file <= 0) then
-         call fatal_error(error, 'results file is not open')
-         return
-      end if
-      call write_restart_group(this%file, data, error)
-   end subroutine results_write_restart
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)

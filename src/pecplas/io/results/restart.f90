@@ -15,10 +15,11 @@ module pecplas_io_results_restart
    implicit none (type, external)
    private
 
-   public :: restart_item_t, restart_data_t, write_restart_group, read_restart_group
+   public :: restart_item_t, restart_data_t, write_restart_next, swap_restart, read_restart_group
 
    !> Group name in the results file.
    character(len=*), parameter, public :: RESTART_GROUP = 'restart'
+   character(len=*), parameter :: NEXT = RESTART_GROUP//'_next', SWAP = RESTART_GROUP//'_swap'
 
    type :: restart_item_t
       character(len=:), allocatable :: name
@@ -74,15 +75,15 @@ contains
    end subroutine data_get
 
    !> Writes `data` as /restart of the open file `file`, replacing the previous one.
-   subroutine write_restart_group(file, data, error)
+   !> The state of the converged increment into /restart_next, overwritten in place (both
+   !> restart groups keep their datasets, so no file space is freed and reused). The results
+   !> file's flush of the increment makes it durable; swap_restart then renames it /restart.
+   !> A process killed at any moment leaves /restart (or, inside the swap, /restart_next)
+   !> complete.
+   subroutine write_restart_next(file, data, error)
       integer(hid_t), intent(in) :: file
       type(restart_data_t), intent(in) :: data
       type(error_t), allocatable, intent(out) :: error
-      ! Two buffers that keep their datasets: the new state overwrites /restart_next in
-      ! place, a flush makes it durable, then the names swap by link moves. No storage is
-      ! freed and reused, so a process killed at any moment leaves the file's other data as
-      ! last flushed and /restart (or, inside the swap, /restart_next) complete.
-      character(len=*), parameter :: NEXT = RESTART_GROUP//'_next', SWAP = RESTART_GROUP//'_swap'
       integer(hid_t) :: g
       logical :: found
       integer :: i, err
@@ -98,15 +99,22 @@ contains
          if (allocated(error)) exit
       end do
       call h5_close_group(g)
-      if (allocated(error)) return
-      call h5fflush_f(file, H5F_SCOPE_GLOBAL_F, err)
+   end subroutine write_restart_next
+
+   !> After the flush that made /restart_next durable: the two names swap by link moves,
+   !> flushed at once (the next write_restart_next overwrites what was /restart).
+   subroutine swap_restart(file, error)
+      integer(hid_t), intent(in) :: file
+      type(error_t), allocatable, intent(out) :: error
+      logical :: found
+      integer :: err
       call h5lexists_f(file, RESTART_GROUP, found, err)
       if (found) call h5lmove_f(file, RESTART_GROUP, file, SWAP, err)
       if (err == 0) call h5lmove_f(file, NEXT, file, RESTART_GROUP, err)
       if (err == 0 .and. found) call h5lmove_f(file, SWAP, file, NEXT, err)
       if (err == 0) call h5fflush_f(file, H5F_SCOPE_GLOBAL_F, err)
       if (err /= 0) call fatal_error(error, 'cannot write the restart group')
-   end subroutine write_restart_group
+   end subroutine swap_restart
 
    !> Writes v as dataset `name` of group g: in place when it exists with the same length,
    !> else (re)created.
