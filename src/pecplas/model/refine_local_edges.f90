@@ -100,7 +100,7 @@ contains
       type(model_t), intent(in) :: model
       type(local_edges_t), intent(inout) :: le
       logical :: changed
-      integer :: s, j, k, e1, e2
+      integer :: s, j, k
       integer, allocatable :: ed(:)
       changed = .true.
       do while (changed)
@@ -126,13 +126,8 @@ contains
                   cycle
                end if
                do j = 1, size(c, 2)
-                  e1 = edge_of(le, c(1, j), c(2, j))
-                  e2 = edge_of(le, c(3, j), c(4, j))
-                  if (e1 == 0 .or. e2 == 0) cycle
-                  if (le%marked(e1) .neqv. le%marked(e2)) then
-                     call mark(le, e1, changed)
-                     call mark(le, e2, changed)
-                  end if
+                  call mark_together(le, edge_of(le, c(1, j), c(2, j)), &
+                     edge_of(le, c(3, j), c(4, j)), changed)
                end do
             end associate
          end do
@@ -145,19 +140,26 @@ contains
       integer, intent(in) :: c(:, :)
       type(local_edges_t), intent(inout) :: le
       logical, intent(inout) :: changed
-      integer :: i, j, e1, e2
+      integer :: i, j
       do i = 1, size(c, 2)
          do j = i + 1, size(c, 2)
-            e1 = edge_of(le, c(1, i), c(1, j))
-            e2 = edge_of(le, c(2, i), c(2, j))
-            if (e1 == 0 .or. e2 == 0) cycle
-            if (le%marked(e1) .neqv. le%marked(e2)) then
-               call mark(le, e1, changed)
-               call mark(le, e2, changed)
-            end if
+            call mark_together(le, edge_of(le, c(1, i), c(1, j)), &
+               edge_of(le, c(2, i), c(2, j)), changed)
          end do
       end do
    end subroutine spring_pairs
+
+   !> The two faces' edges of a joint are split together: one marked marks both (0: no edge).
+   subroutine mark_together(le, e1, e2, changed)
+      type(local_edges_t), intent(inout) :: le
+      integer, intent(in) :: e1, e2
+      logical, intent(inout) :: changed
+      if (e1 == 0 .or. e2 == 0) return
+      if (le%marked(e1) .neqv. le%marked(e2)) then
+         call mark(le, e1, changed)
+         call mark(le, e2, changed)
+      end if
+   end subroutine mark_together
 
    !> No mark, all four, exactly two opposite sides, or one side (a transition into
    !> triangles).
