@@ -12,6 +12,7 @@
 import functools
 import hashlib
 import os
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -85,6 +86,18 @@ def exe_cmd(target):
 def pecplas_cmd():
     """Command prefix (a list) to which the deck and options of `pecplas` are appended."""
     return exe_cmd("pecplas")
+
+
+def exe_path(target="pecplas"):
+    """Path of the executable `target` for tools that take one (not a command prefix): the
+    checked binary of this make test, else fpm's release build (built if needed)."""
+    cmd = exe_cmd(target)
+    if cmd[0] != "fpm":
+        return cmd[0]
+    r = subprocess.run(["fpm", "run", "--profile", "release", "--target", target, "--runner",
+                        "echo"], cwd=Path(__file__).resolve().parents[2], capture_output=True,
+                       text=True, check=True)
+    return r.stdout.split()[-1]
 
 
 def program_cmd(name):

@@ -2,28 +2,18 @@
 test): 40 mutated copies of three fast decks must give no crash, no hang beyond the 20 s
 bound, no input error without file:line and no results file after an input error."""
 import json
-import os
 import subprocess
 import sys
 from pathlib import Path
 
-import pytest
+from pecplas_exe import exe_path
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def pecplas_exe():
-    exe = os.environ.get("PECPLAS_BIN")
-    if exe and Path(exe).exists():
-        return exe
-    found = sorted(ROOT.glob("build/*/app/pecplas"), key=lambda q: q.stat().st_mtime)
-    return str(found[-1]) if found else None
-
-
 def test_mutation_sample(tmp_path):
-    exe = pecplas_exe()
-    if exe is None:
-        pytest.skip("no built pecplas executable")
+    # the binary of this make test (a stale build is refused, never picked)
+    exe = exe_path()
     out = tmp_path / "counts.json"
     r = subprocess.run([sys.executable, str(ROOT / "tools" / "mutate_decks.py"), "-n", "40",
                         "--seed", "7", "--exe", exe, "--keep", str(tmp_path / "keep"),
