@@ -392,6 +392,12 @@ contains
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%increments, &
          ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
          problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', sec(cpu), ' s CPU'
+      ! which method converged the increments (doc/theory.md §4, the chain)
+      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
+         problem%by_method(1), ', quasi-Newton ', problem%by_method(2), ', Newton ', &
+         problem%by_method(3), '; under arc-length ', problem%arc_increments, &
+         '; line-search residuals ', problem%line_searches, '; singular tangents ', &
+         problem%singular_tangents, ' (elastic stiffness used)'
       associate (t => problem%time)
          write (*, '(a,8(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
             sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
