@@ -61,6 +61,10 @@ module pecplas_driver_iterate
    end type outcome_t
 
    !> Early give-up of a method that is not the chain's last (see `hopeless`).
+   !> Memory of the BFGS pairs (2 n reals each): every pair of the increment while they fit
+   !> in BFGS_BYTES, else the newest ones (at least BFGS_MIN_PAIRS; limited memory).
+   real(wp), parameter :: BFGS_BYTES = 256.0_wp*2.0_wp**20
+   integer, parameter :: BFGS_MIN_PAIRS = 10
    integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
 
 contains
@@ -110,7 +114,8 @@ contains
       allocate (hist(0:model%solver%max_iterations + 1), states(0:model%solver%max_iterations + 1))
       hist = 0.0_wp
       states = 0
-      if (att%method == METHOD_QUASI) call bfgs%reset(neq, model%solver%max_iterations)
+      if (att%method == METHOD_QUASI) call bfgs%reset(neq, min(model%solver%max_iterations, &
+         max(BFGS_MIN_PAIRS, int(BFGS_BYTES/(16.0_wp*max(neq, 1))))))
       q = free_part(problem, fq)
       fint = fint_conv
       if (any(u /= problem%state%u)) then
