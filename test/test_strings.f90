@@ -2,7 +2,7 @@
 module test_strings
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_strings, only: upper, same_name, itoa, decimal_text
+   use pecplas_strings, only: upper, same_name, itoa, decimal_text, g6
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
@@ -29,6 +29,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call check(error, itoa(0) == '0' .and. itoa(-42) == '-42' .and. &
          itoa(huge(1)) == '2147483647', 'itoa: no blanks, sign, largest integer')
+      if (allocated(error)) return
+      call check(error, g6(0.990099_wp) == '0.990099' .and. g6(-2.5_wp) == '-2.50000', &
+         'g6: six significant digits, no blanks, got '//g6(0.990099_wp)//' '//g6(-2.5_wp))
    end subroutine test_integers
 
    !> Each case is a text a person reads in a table: no trailing zeros, a leading 0, no '-0'.

@@ -5,7 +5,7 @@ module pecplas_strings
    implicit none (type, external)
    private
 
-   public :: upper, same_name, itoa, decimal_text
+   public :: upper, same_name, itoa, decimal_text, g6
 
 contains
 
@@ -62,5 +62,14 @@ contains
          if (s(1:2) == '-.') s = '-0'//s(2:)
       end if
    end function decimal_text
+
+   !> Six significant digits, no blanks ("0.990099", "0.438107E-5").
+   pure function g6(x) result(s)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+      write (buf, '(g0.6)') x
+      s = trim(adjustl(buf))
+   end function g6
 
 end module pecplas_strings

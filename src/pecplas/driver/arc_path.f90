@@ -17,6 +17,7 @@ module pecplas_driver_arc_path
    use pecplas_driver_residual, only: load_vectors, free_part
    use pecplas_io_results_file, only: results_file_t
    use pecplas_signals, only: interrupt_requested
+   use pecplas_strings, only: g6
    implicit none (type, external)
    private
 
@@ -156,7 +157,7 @@ contains
                      res%mechanism = .true.
                      out%reason = 'the tangent with the next slip/contact states is singular and '// &
                         'no equilibrium exists a little further (step fraction '// &
-                        trim(fraction_text(att%tau1))//'): '//out%reason
+                        g6(att%tau1)//'): '//out%reason
                   end if
                end if
             end if
@@ -241,12 +242,6 @@ contains
          if (res%beyond >= BEYOND_PEAK .or. res%flat) res%kind = END_LIMIT
       end associate
    end subroutine trace_arc
-
-   pure function fraction_text(x) result(t)
-      real(wp), intent(in) :: x
-      character(len=24) :: t
-      write (t, '(g0.6)') x
-   end function fraction_text
 
    !> Length of an increment that would raise the step fraction by dtau along the response
    !> of the run's factorised matrix to the step's load.

@@ -23,7 +23,7 @@ module pecplas_driver_increments
    use pecplas_driver_arc_path, only: arc_request_t, arc_end_t, trace_arc, END_TARGET, &
       END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_io_results_file, only: results_file_t
-   use pecplas_strings, only: itoa
+   use pecplas_strings, only: itoa, g6
    use pecplas_driver_timers, only: wall_time
    use pecplas_signals, only: interrupt_requested, interrupt_signal
    implicit none (type, external)
@@ -164,12 +164,12 @@ contains
                      call limit_reached(model, problem, run, step, istep, res, status, message)
                   else
                      call diverged(step, istep, tau + dt, level, out%reason//'; the '// &
-                        'arc-length probe from fraction '//num(tau)//' '//probe_failure(res), &
+                        'arc-length probe from fraction '//g6(tau)//' '//probe_failure(res), &
                         status, message)
                   end if
                case default
                   call diverged(step, istep, tau + dt, level, out%reason//'; the arc-length '// &
-                     'probe from fraction '//num(tau)//' '//probe_failure(res), status, message)
+                     'probe from fraction '//g6(tau)//' '//probe_failure(res), status, message)
                end select
                return
             end if
@@ -243,7 +243,7 @@ contains
             status = 'stopped'
             message = 'step '//itoa(istep)//' ('//step%name//'): MAX_INCREMENTS='// &
                itoa(step%max_increments)//' arc-length increments used at step fraction '// &
-               num(res%tau)//' before the target (no maximum of the load on the way)'
+               g6(res%tau)//' before the target (no maximum of the load on the way)'
          case default
             call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
                message)
@@ -292,7 +292,7 @@ contains
          run%limit%fraction = res%tau_peak
          run%limit%pattern_factors = res%peak_factors
          message = message//'the structure becomes a mechanism at step fraction '// &
-            num(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'): beyond it the '// &
+            g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'): beyond it the '// &
             'tangent with the next slip/contact states is singular and no equilibrium exists '// &
             'a little further'
       else if (res%beyond >= 2 .or. .not. res%flat) then
@@ -301,7 +301,7 @@ contains
          run%limit%fraction = res%tau_peak
          run%limit%pattern_factors = res%peak_factors
          message = message//'the load-displacement path has a maximum at step fraction '// &
-            num(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
+            g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
             itoa(res%beyond)//' increments beyond it'
       else
          ! the plateau: where it began, and the largest load traced on it
@@ -310,16 +310,16 @@ contains
          run%limit%fraction = res%tau_peak
          run%limit%pattern_factors = res%peak_factors
          message = message//'the load-displacement path is flat (current stiffness '// &
-            'parameter '//num(res%sp)//') from step fraction '//num(res%tau_flat)// &
+            'parameter '//g6(res%sp)//') from step fraction '//g6(res%tau_flat)// &
             ' (increment '//itoa(res%flat_increment)//'), traced '// &
             itoa(problem%increments - res%flat_increment)//' increments along it, its '// &
-            'largest load at step fraction '//num(res%tau_peak)
+            'largest load at step fraction '//g6(res%tau_peak)
       end if
       message = message//'; load factors at the peak:'
       do p = 1, size(run%limit%pattern_factors)
          if (run%limit%pattern_factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
             message = message//' '//model%patterns(p)%name//' = '// &
-            num(run%limit%pattern_factors(p))
+            g6(run%limit%pattern_factors(p))
       end do
       if (problem%increments > 0) message = message//'; every converged increment is in '// &
          'the results file (/limit says where the peak is)'
@@ -370,7 +370,7 @@ contains
       character(len=:), allocatable, intent(inout) :: status, message
       status = 'diverged'
       message = 'step '//itoa(istep)//' ('//step%name//') did not converge at step '// &
-         'fraction '//num(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
+         'fraction '//g6(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
          '); last converged state kept in the results file'
    end subroutine diverged
 
@@ -379,7 +379,7 @@ contains
       character(len=:), allocatable :: text
       select case (res%kind)
       case (END_MAX)
-         text = 'traced '//itoa(res%increments)//' increments to fraction '//num(res%tau)// &
+         text = 'traced '//itoa(res%increments)//' increments to fraction '//g6(res%tau)// &
             ' without passing the failed load or a maximum'
       case (END_NODE)
          text = 'reached the step''s target displacement'
@@ -387,14 +387,5 @@ contains
          text = 'failed after '//itoa(res%increments)//' increments: '//res%reason
       end select
    end function probe_failure
-
-   !> Six significant digits.
-   function num(x) result(s)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: s
-      character(len=32) :: buf
-      write (buf, '(g0.6)') x
-      s = trim(adjustl(buf))
-   end function num
 
 end module pecplas_driver_increments
