@@ -183,3 +183,25 @@ def test_huge_modjoin_increment_stops_fast(tmp_path):
     r = run(deck, out=tmp_path / "s6.h5")  # the 120 s timeout of run() is the hang bound
     assert r.returncode == 3, r.stderr
     assert "did not converge" in r.stderr
+
+
+def test_large_displacement_warning_joins_the_list(tmp_path):
+    """A unit square of E = 1 kPa pulled by 10 kN moves ~10 m (7 times its diagonal): the run
+    completes (exit 0) with the small-strain warning printed, in the status message and in
+    the file's `warnings` list (found at the end of the run, after the deck's warnings)."""
+    deck = tmp_path / "soft.inp"
+    deck.write_text("*UNITS\nkN, m, kPa\n*NODES\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n"
+                    "*ELEMENTS, TYPE=Q4, SET=block\n1, 1, 2, 3, 4\n"
+                    "*MATERIAL, NAME=soft\nE = 1, NU = 0.3\n*SECTION, SET=block, MATERIAL=soft\n"
+                    "*NSET, NAME=base\n1, 2\n*NSET, NAME=top\n3, 4\n*BOUNDARY\nbase, XY\n"
+                    "*LOAD, NAME=pull, TYPE=FORCE\ntop, Y, 5\n*STEP, NAME=pull\npull, 1\n")
+    out = tmp_path / "soft.h5"
+    r = run(deck, out=out)
+    assert r.returncode == 0, r.stderr
+    assert "small-strain theory no longer holds" in r.stderr
+    with h5py.File(out) as f:
+        stored = [s.decode() if isinstance(s, bytes) else s for s in f.attrs["warnings"]]
+        message = f.attrs["status_message"]
+        message = message.decode() if isinstance(message, bytes) else str(message)
+    assert any("small-strain theory no longer holds" in s for s in stored), stored
+    assert "small-strain theory no longer holds" in message

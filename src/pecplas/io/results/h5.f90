@@ -12,7 +12,7 @@ module pecplas_io_results_h5
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_null_char, c_null_ptr, c_char
    use hdf5, only: hid_t, hsize_t, h5open_f, h5screate_simple_f, h5screate_f, h5sclose_f, &
       h5dcreate_f, h5dwrite_f, h5dclose_f, h5dopen_f, h5dset_extent_f, h5dget_space_f, &
-      h5sselect_hyperslab_f, h5gcreate_f, h5gclose_f, h5acreate_f, h5aopen_f, h5aexists_f, &
+      h5sselect_hyperslab_f, h5gcreate_f, h5gclose_f, h5acreate_f, h5adelete_f, h5aexists_f, &
       h5awrite_f, h5aclose_f, h5tcopy_f, h5tset_cset_f, h5tclose_f, h5pcreate_f, &
       h5pset_chunk_f, h5pclose_f, h5eset_auto_f, H5T_STRING, H5T_CSET_UTF8_F, H5T_IEEE_F64LE, H5T_STD_I32LE, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
@@ -411,18 +411,18 @@ contains
       logical :: exists
       integer :: e2
       space = -1; attr = -1
+      ! an existing attribute is replaced: reopening it would keep its old shape and type
+      ! (a list written again with more entries would lose them)
       call h5aexists_f(loc, name, exists, err)
       if (err /= 0) return
-      if (exists) then
-         call h5aopen_f(loc, name, attr, err)
+      if (exists) call h5adelete_f(loc, name, err)
+      if (err /= 0) return
+      if (size(dims) == 0) then
+         call h5screate_f(H5S_SCALAR_F, space, err)
       else
-         if (size(dims) == 0) then
-            call h5screate_f(H5S_SCALAR_F, space, err)
-         else
-            call h5screate_simple_f(size(dims), dims, space, err)
-         end if
-         if (err == 0) call h5acreate_f(loc, name, ftype, space, attr, err)
+         call h5screate_simple_f(size(dims), dims, space, err)
       end if
+      if (err == 0) call h5acreate_f(loc, name, ftype, space, attr, err)
       if (err == 0 .and. product(dims) > 0) then
          if (present(mtype)) then
             call h5awrite_f(attr, mtype, ptr, err)
