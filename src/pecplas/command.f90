@@ -1,13 +1,14 @@
 !> What every command-line program (pecplas, pecplas-path, pecplas-identify,
 !> pecplas-sensitivity) does with an error that ends it: one line on standard error,
 !> "<program>: error: <text>", and the exit code to return. Standard error is flushed at
-!> once: gfortran buffers it when it is redirected to a file.
+!> once: gfortran buffers it when it is redirected to a file. Also the command-line
+!> arguments as one array, which every program's main hands to its entry function.
 module pecplas_command
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none (type, external)
    private
 
-   public :: command_error
+   public :: command_error, command_arguments
 
 contains
 
@@ -19,5 +20,21 @@ contains
       flush (0)
       exit_code = code
    end function command_error
+
+   !> The command-line arguments, padded to the longest one (an empty array when there are none).
+   function command_arguments() result(args)
+      character(len=:), allocatable :: args(:)
+      integer :: i, n, length, arg_length
+      n = command_argument_count()
+      length = 1
+      do i = 1, n
+         call get_command_argument(i, length=arg_length)
+         length = max(length, arg_length)
+      end do
+      allocate (character(len=length) :: args(n))
+      do i = 1, n
+         call get_command_argument(i, args(i))
+      end do
+   end function command_arguments
 
 end module pecplas_command
