@@ -56,20 +56,36 @@ def median_row(runs, threads, load):
 
 
 def laws():
-    r = run_timed([executable("pecplas-bench-laws")])
+    """MODJOIN law speed: pecplas-bench-laws run REPEATS times; per version the median of
+    each column with the spread (min-max) and the load average before the runs."""
+    load = load1()
+    runs = {}
+    for _ in range(REPEATS):
+        r = run_timed([executable("pecplas-bench-laws")])
+        for line in r["stdout"].splitlines():
+            m = re.match(r"\s*(MODJOIN\w*)\s+([-+.\dEe]+)\s+([-+.\dEe]+)\s+([-+.\dEe]+)\s",
+                         line)
+            if m:
+                runs.setdefault(m.group(1), []).append([float(m.group(k)) for k in (2, 3, 4)])
     rows = []
-    for line in r["stdout"].splitlines():
-        m = re.match(r"\s*(MODJOIN\w*)\s+([-+.\dEe]+)\s+([-+.\dEe]+)\s+([-+.\dEe]+)\s", line)
-        if m:
-            rows.append([m.group(1), float(m.group(2)), float(m.group(3)), float(m.group(4))])
+    for v, rs in runs.items():
+        cols = list(zip(*rs))
+        rows.append([v] + [statistics.median(c) for c in cols]
+                    + [min(cols[0]), max(cols[0]), len(rs), load])
     write_csv(BENCH_DIR / "laws.csv", ["version", "updates_per_s_0.001mm",
-                                       "updates_per_s_0.1mm", "cnl_8000_steps_s"], rows)
+                                       "updates_per_s_0.1mm", "cnl_8000_steps_s",
+                                       "updates_per_s_0.001mm_min",
+                                       "updates_per_s_0.001mm_max", "repeats", "load1"], rows)
     md = ["## Interface-law speed (MODJOIN, single core)", "",
           "One update = one law call including the consistent tangent, on a CNL path "
-          "(substeps of at most 0.001 mm, so a 0.1 mm increment costs ~100 substeps).", "",
+          "(substeps of at most 0.001 mm, so a 0.1 mm increment costs ~100 substeps). "
+          f"Median of {REPEATS} runs of `pecplas-bench-laws`, spread [min - max]; one thread; "
+          f"load average {load:.2f} before the runs (on {os.cpu_count()} cores; above the "
+          "core count the rates are not final).", "",
           "| version | updates/s (0.001 mm) | updates/s (0.1 mm) | 8000-step CNL path [s] |",
           "|---|---|---|---|"]
-    md += [f"| {v} | {a:.3g} | {b:.3g} | {c:.4f} |" for v, a, b, c in rows]
+    md += [f"| {v} | {a:.3g} [{lo:.3g} - {hi:.3g}] | {b:.3g} | {c:.4f} |"
+           for v, a, b, c, lo, hi, _, _ in rows]
     write_fragment("laws", "\n".join(md))
     return rows
 
@@ -124,8 +140,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="skip the 1e6-equation cases")
     a = ap.parse_args()
-    for v, up, up1, t in laws():
-        print(f"{v}: {up:.3g} updates/s, 8000-step CNL {t:.4f} s", flush=True)
+    for v, up, up1, t, lo, hi, _, _ in laws():
+        print(f"{v}: {up:.3g} [{lo:.3g} - {hi:.3g}] updates/s, 8000-step CNL {t:.4f} s",
+              flush=True)
     solver(a.quick)
 
 
