@@ -141,7 +141,7 @@ def katona_block(v):
         "| floating upper block (SPRING plane, GOODMAN6 axisymmetric), pressure P | `σ_n = P` "
         "exactly, augmented path taken | exact to roundoff |",
         f"| CGS-4 inclined plane (the Mohr–Coulomb deck with TYPE=KATONA) | slip limit F/G = "
-        f"{CGS4:.6f} within 0.1 % | {f_k:.6f} ({f_k / CGS4 - 1:+.0e}) |",
+        f"{CGS4:.6f} within 0.1 % | {f_k:.6f} ({e2(f_k / CGS4 - 1)}) |",
         "| pad at 0.99 / 1.01 μN | 0.99 converges with Σ T = push and Σ N = 200 to 1e-9, "
         "`|T| ≤ μN`; 1.01 stops (exit 3) | both |",
         "| Hertz line contact, h = 0.1 mm (8 074 elements, 81 candidate doublets, cylinder "
@@ -159,7 +159,7 @@ def katona_block(v):
         "| penalty → Lagrange (Frank springs K = 1e6 … 1e9 on the patch mesh with PHI = 15, "
         "partly sticking) | error of Σ N and the penalty's largest penetration fall ≥ 5× per "
         "decade; resultant within 1e-4 at 1e9 | errors "
-        f"{', '.join(e3(x) for x in err)}; penetrations {e2(pens[0])} … {e2(pens[-1])} m |",
+        f"{', '.join(e3(x) for x in err)}; penetrations {e2(pens[0])} … {e2(pens[-1])} m (O(1/K)) |",
     ]
     return "\n".join(rows)
 
