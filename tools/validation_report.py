@@ -26,12 +26,13 @@ ROOT = Path(__file__).resolve().parents[1]
 SCRIPT = "validation_report.py"
 DOCS = {"validation": ROOT / "doc" / "validation.md", "theory": ROOT / "doc" / "theory.md"}
 #: (suite, test) of pecplas_tests whose values the docs quote (release build: ~10 s in all)
-TESTS = [("lame", None)] + [("estimator", f"lame_{e}_{k}") for e in ("q4", "t3", "q8", "t6")
+TESTS = [("lame", None)] + [("driver_estimator", f"lame_{e}_{k}") for e in ("q4", "t3", "q8", "t6")
                             for k in ("plane", "axi")] + [
     ("pecjoin_friction", "inclined_plane_cgs4"),
     ("pecjoin_katona_friction", "inclined_plane_cgs4"),
     ("pecjoin_katona_friction", "penalty_to_lagrange"),
     ("pecjoin_katona", "hertz_line_contact"),
+    ("pecjoin_katona", "s1_open_close"),
     ("massif_plasticity_fe", "strip_footing_prandtl")]
 VALUES = "values.txt"
 CGS4 = (0.1 + 0.3) / (1.0 - 0.3 * 0.1)  # (tan a + mu)/(1 - mu tan a), tan a = 0.1, mu = 0.3
@@ -83,10 +84,20 @@ def e3(x):
 
 
 def below(x):
-    """A roundoff-level value as the power of ten above it ('1e-13'): the digits themselves
-    change between builds."""
+    """A roundoff-level value as a bound, the power of ten above it with an exponent that is a
+    multiple of 3 ('1e-12' for 1.2e-13): its digits change between builds, the bound does not."""
     import math
-    return f"1e{math.ceil(math.log10(abs(x)))}" if x else "0"
+    return f"1e{3 * math.ceil(math.log10(abs(x)) / 3)}" if x else "0"
+
+
+def minus(text):
+    """The typographic minus of the docs."""
+    return "−" + text[1:] if text.startswith("-") else text
+
+
+def rel(x):
+    """A relative deviation: two digits, or a bound when it is at the solver's tolerance."""
+    return f"within {below(x)}" if abs(x) < 1e-6 else minus(e2(x))
 
 
 def orders(errors):
@@ -141,13 +152,13 @@ def katona_block(v):
         "| floating upper block (SPRING plane, GOODMAN6 axisymmetric), pressure P | `σ_n = P` "
         "exactly, augmented path taken | exact to roundoff |",
         f"| CGS-4 inclined plane (the Mohr–Coulomb deck with TYPE=KATONA) | slip limit F/G = "
-        f"{CGS4:.6f} within 0.1 % | {f_k:.6f} ({e2(f_k / CGS4 - 1)}) |",
+        f"{CGS4:.6f} within 0.1 % | {f_k:.6f} ({rel(f_k / CGS4 - 1)}) |",
         "| pad at 0.99 / 1.01 μN | 0.99 converges with Σ T = push and Σ N = 200 to 1e-9, "
         "`|T| ≤ μN`; 1.01 stops (exit 3) | both |",
         "| Hertz line contact, h = 0.1 mm (8 074 elements, 81 candidate doublets, cylinder "
         "floating) | a, p0 within 2 %, profile within 5 % of p0, resultant = F/2 to 1e-8 | "
-        f"a = {a_fe:.3f} ({100 * (a_fe / a - 1):+.2f} %, node spacing), p0 = {p_fe:.1f} "
-        f"({100 * (p_fe / p0 - 1):+.2f} %), profile ≤ {100 * p_err:.2f} % p0, resultant "
+        f"a = {a_fe:.3f} ({minus(f'{100 * (a_fe / a - 1):+.2f}')} %, node spacing), "
+        f"p0 = {p_fe:.1f} ({minus(f'{100 * (p_fe / p0 - 1):+.2f}')} %), profile ≤ {100 * p_err:.2f} % p0, resultant "
         f"within {below(res)} |",
         "| S1 compression–opening–closing (TYPE=KATONA, else the K_n = 1e8 deck) | every "
         "doublet separates and re-closes compressed, penetration ≤ 1e-15 m, ≤ 5 state "
@@ -159,7 +170,8 @@ def katona_block(v):
         "| penalty → Lagrange (Frank springs K = 1e6 … 1e9 on the patch mesh with PHI = 15, "
         "partly sticking) | error of Σ N and the penalty's largest penetration fall ≥ 5× per "
         "decade; resultant within 1e-4 at 1e9 | errors "
-        f"{', '.join(e3(x) for x in err)}; penetrations {e2(pens[0])} … {e2(pens[-1])} m (O(1/K)) |",
+        f"{', '.join(e3(x) for x in err)}; penetrations {e2(pens[0])} … {e2(pens[-1])} m "
+        "(O(1/K)) |",
     ]
     return "\n".join(rows)
 
