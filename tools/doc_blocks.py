@@ -87,6 +87,18 @@ def check_close(doc, script, blocks):
     return "" if not bad else f"{doc} (committed -) differs from the runs (+):\n" + "\n".join(bad)
 
 
+def check_docs(docs, script, blocks):
+    """check_close over several docs: `blocks` is {doc key: {name: text}}, `docs` is
+    {doc key: path}; returns the differences ('' when every doc matches)."""
+    return "\n".join(d for key, b in blocks.items() if (d := check_close(docs[key], script, b)))
+
+
+def write_docs(docs, script, blocks):
+    """Writes {doc key: {name: text}} into the docs {doc key: path}."""
+    for key, b in blocks.items():
+        update(docs[key], script, b, check=False)
+
+
 def report_main(script, make, default_dir, load, check, write, what="doc/validation.md",
                 add_arguments=None, prepare=None, argv=None):
     """The command line shared by the scene report scripts (tools/s*_report.py):

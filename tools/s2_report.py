@@ -14,7 +14,8 @@ import textwrap
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from doc_blocks import check_close, report_main, update  # noqa: E402
+import doc_blocks  # noqa: E402
+from doc_blocks import report_main  # noqa: E402
 from s2_results import head_curve, scene_values  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -92,13 +93,11 @@ DOCS = {"validation": ROOT / "doc" / "validation.md", "readme": ROOT / "README.m
 
 def check_docs(runs):
     """The differences between the committed docs and the blocks of `runs` ('' if none)."""
-    return "\n".join(d for key, b in blocks(runs).items()
-                     if (d := check_close(DOCS[key], SCRIPT, b)))
+    return doc_blocks.check_docs(DOCS, SCRIPT, blocks(runs))
 
 
 def write_docs(runs):
-    for key, b in blocks(runs).items():
-        update(DOCS[key], SCRIPT, b, check=False)
+    doc_blocks.write_docs(DOCS, SCRIPT, blocks(runs))
 
 
 def main(argv=None):

@@ -20,7 +20,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from doc_blocks import check_close, report_main, update  # noqa: E402
+import doc_blocks  # noqa: E402
+from doc_blocks import report_main  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SCRIPT = "validation_report.py"
@@ -209,13 +210,11 @@ def blocks(v):
 
 def check_docs(v):
     """The differences between the committed docs and the blocks of `v` ('' if none)."""
-    return "\n".join(d for key, b in blocks(v).items()
-                     if (d := check_close(DOCS[key], SCRIPT, b)))
+    return doc_blocks.check_docs(DOCS, SCRIPT, blocks(v))
 
 
 def write_docs(v):
-    for key, b in blocks(v).items():
-        update(DOCS[key], SCRIPT, b, check=False)
+    doc_blocks.write_docs(DOCS, SCRIPT, blocks(v))
 
 
 def main(argv=None):
