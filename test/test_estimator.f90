@@ -12,6 +12,7 @@ module test_estimator
    use pecplas_driver_estimator, only: error_estimate_t, estimate_error, set_compliance
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_massif_kinematics, only: massif_point_t, massif_gauss_point
+   use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check
    use lame_mesh, only: write_lame_deck, A, B, P, NU
    implicit none (type, external)
@@ -124,6 +125,8 @@ contains
       write (buf, '(a,3es10.3,a,3f6.3,a,2f6.3)') ' eta', eta, ' effectivity', eta/exact, &
          ' orders', rate
       write (*, '(a)') '        '//etype//merge(' axi  ', ' plane', axi)//trim(buf)
+      call report('estimator/'//etype//trim(merge('_axi  ', '_plane', axi))//'/eta', eta)
+      call report('estimator/'//etype//trim(merge('_axi  ', '_plane', axi))//'/exact', exact)
       call check(error, theta >= 0.8_wp .and. theta <= 1.25_wp, etype// &
          ' effectivity on the finest mesh outside [0.8, 1.25]:'//trim(buf))
       if (allocated(error)) return

@@ -12,6 +12,7 @@ module test_lame
    use pecplas_massif_kinematics, only: massif_point_t, massif_gauss_point
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use lame_mesh, only: write_lame_deck, lame_exact, A, B
+   use doc_report, only: report
    implicit none (type, external)
    private
    public :: collect_lame
@@ -119,6 +120,7 @@ contains
       if (allocated(error)) return
       write (*, '(a,2es10.3)') '        '//etype//merge(' axi  ', ' plane', axi)// &
          ' 8x8: max relative error u_r, hoop', eu, eh
+      call report('lame/'//etype//trim(merge('_axi  ', '_plane', axi))//'/n8_err_u_hoop', [eu, eh])
       call check_close(error, eu, 0.0_wp, 0.0_wp, etype//' u_r relative error <= 0.5%', atol=5.0e-3_wp)
       if (allocated(error)) return
       call check_close(error, eh, 0.0_wp, 0.0_wp, etype//' hoop relative error <= 0.5%', atol=5.0e-3_wp)
@@ -144,6 +146,7 @@ contains
       rate = log(l2(1:2)/l2(2:3))/log(2.0_wp)
       write (buf, '(a,3es10.3,a,2f6.3)') ' L2 errors', l2, ' orders', rate
       write (*, '(a)') '        '//etype//merge(' axi  ', ' plane', axi)//trim(buf)
+      call report('lame/'//etype//trim(merge('_axi  ', '_plane', axi))//'/l2', l2)
       call check(error, all(rate >= lo .and. rate <= hi), etype//' convergence order outside ['// &
          trim(adjustl(real_str(lo)))//', '//trim(adjustl(real_str(hi)))//']:'//trim(buf))
    end subroutine check_order

@@ -11,6 +11,7 @@ module test_massif_plasticity_fe
    use pecplas_driver_stiffness, only: linear_solver_name
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_massif_materials_soil, only: RETURN_SMOOTH, RETURN_EDGE
+   use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_plasticity, only: mc_strength, PI
    implicit none (type, external)
@@ -136,6 +137,7 @@ contains
       n = size(load)
       q = -load(n)/1.0_wp ! half-width b = 1: the half model carries q b
       qu = (2.0_wp + PI)*COH
+      call report('footing/t6_nf4_q_over_c', q/COH)
       call check_close(error, q, qu, 0.05_wp, 'footing pressure vs Prandtl (2 + pi) c')
       if (allocated(error)) return
       call check(error, abs(load(n) - load(n - 10)) <= 2.0e-3_wp*abs(load(n)), &

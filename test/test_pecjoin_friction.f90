@@ -8,6 +8,7 @@ module test_pecjoin_friction
    use pecplas_cli, only: run_deck
    use pecplas_files, only: make_directories
    use pecplas_driver_problem, only: problem_t
+   use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -31,6 +32,7 @@ contains
          'build/test_out/friction/inclined_plane.h5', .true., model, problem)
       call check(error, code == 3, 'force control beyond the slip limit stops (exit 3)')
       if (allocated(error)) return
+      call report('cgs4/penalty_f_over_g', problem%state%factors(2))
       ! pattern 2 (push) is F/G: F = 10 kN * factor, G = 10 kN
       call check_close(error, problem%state%factors(2), (ta + mu)/(1.0_wp - mu*ta), 1.0e-3_wp, &
          'F/G at the limit = (tan a + mu)/(1 - mu tan a)')

@@ -11,6 +11,7 @@ module test_pecjoin_katona
    use pecplas_files, only: make_directories
    use pecplas_driver_problem, only: problem_t
    use pecjoin_laws_type, only: MODE_OPEN
+   use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -174,6 +175,9 @@ contains
             end if
          end do
          a_fe = 0.5_wp*(xclosed + xopen)
+         k = minloc(abs(model%mesh%x(1, kt%node(1, :))), dim=1)
+         call report('hertz/h01', [a_fe, a, kt%f(1, k)/kt%area(k), p0, p_err/p0, &
+            resultant/(0.5_wp*f) - 1.0_wp, kt%max_penetration])
          call check_close(error, a_fe, a, 0.02_wp, 'contact half-width a = 6.21 mm')
          if (allocated(error)) return
          k = minloc(abs(model%mesh%x(1, kt%node(1, :))), dim=1)
@@ -210,6 +214,8 @@ contains
          if (allocated(error)) return
          call check(error, kt%max_penetration <= 1.0e-15_wp, 'zero interpenetration')
          if (allocated(error)) return
+         call report('katona/s1_open_close', [real(kt%max_state_iterations, wp), &
+            kt%max_penetration])
          call check(error, kt%max_state_iterations <= 5, '<= 5 state iterations per increment')
       end associate
    end subroutine test_s1_open_close

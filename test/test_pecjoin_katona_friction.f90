@@ -10,6 +10,7 @@ module test_pecjoin_katona_friction
    use pecplas_files, only: make_directories
    use pecplas_driver_problem, only: problem_t
    use pecjoin_laws_type, only: MODE_SLIP, MODE_STICK
+   use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -47,6 +48,7 @@ contains
       call run(DATA//'inclined_plane.inp', 'inclined_plane', model, problem, code)
       call check(error, code == 3, 'force control beyond the slip limit stops (exit 3)')
       if (allocated(error)) return
+      call report('cgs4/katona_f_over_g', problem%state%factors(2))
       call check_close(error, problem%state%factors(2), (ta + mu)/(1.0_wp - mu*ta), 1.0e-3_wp, &
          'F/G at the limit = (tan a + mu)/(1 - mu tan a)')
    end subroutine test_inclined_plane
@@ -124,6 +126,8 @@ contains
       end do
       write (buf, '(a,4es9.2,a,4es9.2)') ' resultant errors', err, ' penetrations', pen
       write (*, '(a)') '       '//trim(buf)
+      call report('katona/penalty_resultant_errors', err)
+      call report('katona/penalty_penetrations', pen)
       call check(error, all(err(2:) <= err(:3)/5.0_wp) .and. all(pen(2:) <= pen(:3)/5.0_wp), &
          'penalty error O(1/K):'//trim(buf))
       if (allocated(error)) return

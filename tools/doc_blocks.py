@@ -85,3 +85,53 @@ def check_close(doc, script, blocks):
     new = replace_blocks(old, script, blocks)
     bad = rounding_diff(old, new)
     return "" if not bad else f"{doc} (committed -) differs from the runs (+):\n" + "\n".join(bad)
+
+
+def check_docs(docs, script, blocks):
+    """check_close over several docs: `blocks` is {doc key: {name: text}}, `docs` is
+    {doc key: path}; returns the differences ('' when every doc matches)."""
+    return "\n".join(d for key, b in blocks.items() if (d := check_close(docs[key], script, b)))
+
+
+def write_docs(docs, script, blocks):
+    """Writes {doc key: {name: text}} into the docs {doc key: path}."""
+    for key, b in blocks.items():
+        update(docs[key], script, b, check=False)
+
+
+def report_main(script, make, default_dir, load, check, write, what="doc/validation.md",
+                add_arguments=None, prepare=None, argv=None):
+    """The command line shared by the scene report scripts (tools/s*_report.py):
+
+        SCRIPT [DIR]            rewrite the blocks from the results in DIR (default_dir)
+        SCRIPT DIR --check      compare only: print the differences, exit 1 when there are any
+
+    `load(args)` returns the runs of DIR (or raises SystemExit naming what is missing and the
+    `make` target that writes it); `check(runs)` returns the differences ('' when the docs
+    match) and `write(runs)` writes the blocks. `add_arguments(parser)` adds a script's own
+    options, `prepare(args)` runs before `load` (e.g. to run the decks first)."""
+    import argparse
+    import __main__
+    name = Path(script).stem
+    p = argparse.ArgumentParser(prog=f"tools/{script}", description=__main__.__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("dir", nargs="?", default=default_dir,
+                   help=f"results of the runs (default {default_dir})")
+    p.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
+    if add_arguments:
+        add_arguments(p)
+    a = p.parse_args(argv)
+    if prepare:
+        prepare(a)
+    runs = load(a)
+    if a.check:
+        diff = check(runs)
+        if diff:
+            print(diff.rstrip("\n") + f"\n{name}: regenerate with `make {make}` "
+                  f"(or tools/{script} {a.dir})")
+            return 1
+    else:
+        write(runs)
+    print(f"{name}: {what} " + ("matches" if a.check else "updated from")
+          + f" the runs in {a.dir}")
+    return 0

@@ -9,13 +9,12 @@ test/python/test_s1.py runs the decks afresh and fails when the committed doc di
     python3 tools/s1_report.py [DIR]          # default output/s1; rewrites the doc
     python3 tools/s1_report.py DIR --check    # exit 1 when the doc differs from the runs
 """
-import argparse
 import sys
 import textwrap
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from doc_blocks import check_close, update  # noqa: E402
+from doc_blocks import check_close, report_main, update  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SCRIPT = "s1_report.py"
@@ -73,26 +72,17 @@ def check_doc(runs):
     return check_close(DOC, SCRIPT, blocks(runs))
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("dir", nargs="?", default="output/s1", help="S1 results (default output/s1)")
-    p.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
-    a = p.parse_args()
+def load(a):
     runs = {n: Path(a.dir) / f"{n}.h5" for n in DILATANCY}
     missing = [str(f) for f in runs.values() if not f.exists()]
     if missing:
         raise SystemExit(f"s1_report: no {', '.join(missing)} (run `make s1` first)")
-    if a.check:
-        diff = check_doc(runs)
-        if diff:
-            print(diff + f"\ns1_report: regenerate with `make s1` (or {SCRIPT} {a.dir})")
-            return 1
-    else:
-        update(DOC, SCRIPT, blocks(runs), check=False)
-    print("s1_report: doc/validation.md " + ("matches" if a.check else "updated from")
-          + f" the runs in {a.dir}")
-    return 0
+    return runs
+
+
+def main(argv=None):
+    return report_main(SCRIPT, "s1", "output/s1", load, check_doc,
+                       lambda runs: update(DOC, SCRIPT, blocks(runs), check=False), argv=argv)
 
 
 if __name__ == "__main__":

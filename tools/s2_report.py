@@ -9,13 +9,13 @@ committed docs differ (beyond the last printed digit).
     python3 tools/s2_report.py [OUTPUT_DIR]          # default output (output/s2, output/s3)
     python3 tools/s2_report.py OUTPUT_DIR --check    # exit 1 when a doc differs from the runs
 """
-import argparse
 import sys
 import textwrap
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from doc_blocks import check_close, update  # noqa: E402
+import doc_blocks  # noqa: E402
+from doc_blocks import report_main  # noqa: E402
 from s2_results import head_curve, scene_values  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -93,27 +93,16 @@ DOCS = {"validation": ROOT / "doc" / "validation.md", "readme": ROOT / "README.m
 
 def check_docs(runs):
     """The differences between the committed docs and the blocks of `runs` ('' if none)."""
-    return "\n".join(d for key, b in blocks(runs).items()
-                     if (d := check_close(DOCS[key], SCRIPT, b)))
+    return doc_blocks.check_docs(DOCS, SCRIPT, blocks(runs))
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("dir", nargs="?", default="output", help="holds s2/ and s3/ (default output)")
-    p.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
-    a = p.parse_args()
-    runs = files(a.dir)
-    if a.check:
-        diff = check_docs(runs)
-        if diff:
-            print(diff + f"\ns2_report: regenerate with `make s2 s3` (or {SCRIPT} {a.dir})")
-            return 1
-    else:
-        for key, b in blocks(runs).items():
-            update(DOCS[key], SCRIPT, b, check=False)
-    print(f"s2_report: docs " + ("match" if a.check else "updated from") + f" the runs in {a.dir}")
-    return 0
+def write_docs(runs):
+    doc_blocks.write_docs(DOCS, SCRIPT, blocks(runs))
+
+
+def main(argv=None):
+    return report_main(SCRIPT, "s2 s3", "output", lambda a: files(a.dir), check_docs,
+                       write_docs, what="doc/validation.md and README.md", argv=argv)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,6 @@ a statement of the thesis shows as a cross.
     python3 tools/s4_report.py DIR --check           # exit 1 with a diff when the doc differs
     python3 tools/s4_report.py DIR --run [--bin B]   # first run the S4 decks into DIR
 """
-import argparse
 import csv
 import subprocess
 import sys
@@ -19,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from doc_blocks import update
+from doc_blocks import report_main, update
 
 ROOT = Path(__file__).resolve().parents[1]
 SCRIPT = "s4_report.py"
@@ -273,27 +272,24 @@ def blocks(d):
     }
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("dir", nargs="?", default="output/s4", help="S4 results (default output/s4)")
+def s4_arguments(p):
     p.add_argument("--doc", default=str(ROOT / "doc" / "validation.md"))
-    p.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
     p.add_argument("--run", action="store_true", help="run the S4 decks into DIR first")
     p.add_argument("--bin", help="directory of pecplas-path, -identify, -sensitivity "
                    "(default: fpm run --profile release)")
-    a = p.parse_args()
-    d = Path(a.dir)
-    if a.run:
-        run_scene(d, a.bin)
-    diff = update(a.doc, SCRIPT, blocks(d), a.check)
-    if diff:
-        sys.stdout.write(diff)
-        print(f"s4_report: {a.doc} differs from the runs in {d}; "
-              "regenerate with `make s4` (or tools/s4_report.py DIR --run)")
-        return 1
-    print(f"s4_report: {a.doc} " + ("matches the runs" if a.check else "updated") + f" ({d})")
-    return 0
+
+
+def main(argv=None):
+    args = {}
+
+    def prepare(a):
+        args["doc"] = a.doc
+        if a.run:
+            run_scene(Path(a.dir), a.bin)
+    return report_main(SCRIPT, "s4", "output/s4", lambda a: Path(a.dir),
+                       lambda d: update(args["doc"], SCRIPT, blocks(d), True),
+                       lambda d: update(args["doc"], SCRIPT, blocks(d), False),
+                       add_arguments=s4_arguments, prepare=prepare, argv=argv)
 
 
 if __name__ == "__main__":

@@ -10,14 +10,13 @@ committed doc differs (beyond the last printed digit).
     python3 tools/s5_report.py [DIR]          # default output/s5; rewrites the doc
     python3 tools/s5_report.py DIR --check    # exit 1 when the doc differs from the run
 """
-import argparse
 import sys
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from doc_blocks import check_close, update  # noqa: E402
+from doc_blocks import check_close, report_main, update  # noqa: E402
 from s5_results import (L, SIGMA_N0, compare, interface, keys_and_steps,  # noqa: E402
                         mid_history, point_driver, step_ends)
 
@@ -83,26 +82,16 @@ def check_doc(h5, workdir):
     return check_close(DOC, SCRIPT, blocks(h5, workdir))
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("dir", nargs="?", default="output/s5", help="S5 results (default output/s5)")
-    p.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
-    a = p.parse_args()
-    d = Path(a.dir)
-    h5 = d / "s5_shear_box.h5"
+def load(a):
+    h5 = Path(a.dir) / "s5_shear_box.h5"
     if not h5.exists():
         raise SystemExit(f"s5_report: no {h5} (run `make s5` first)")
-    if a.check:
-        diff = check_doc(h5, d)
-        if diff:
-            print(diff + f"\ns5_report: regenerate with `make s5` (or {SCRIPT} {d})")
-            return 1
-    else:
-        update(DOC, SCRIPT, blocks(h5, d), check=False)
-    print("s5_report: doc/validation.md " + ("matches" if a.check else "updated from")
-          + f" the run in {d}")
-    return 0
+    return h5, Path(a.dir)
+
+
+def main(argv=None):
+    return report_main(SCRIPT, "s5", "output/s5", load, lambda r: check_doc(*r),
+                       lambda r: update(DOC, SCRIPT, blocks(*r), check=False), argv=argv)
 
 
 if __name__ == "__main__":

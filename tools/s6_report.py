@@ -9,7 +9,6 @@ committed doc differs (beyond the last printed digit).
     python3 tools/s6_report.py [DIR]          # default output/s6; rewrites the doc
     python3 tools/s6_report.py DIR --check    # exit 1 when the doc differs from the runs
 """
-import argparse
 import math
 import sys
 import textwrap
@@ -18,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from doc_blocks import check_close, update  # noqa: E402
+from doc_blocks import check_close, report_main, update  # noqa: E402
 from s6_results import head_curve, keys_and_loads, shaft, uplift_at  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -141,23 +140,9 @@ def check_doc(runs):
     return check_close(DOC, SCRIPT, blocks(runs))
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("dir", nargs="?", default="output/s6", help="S6 results (default output/s6)")
-    p.add_argument("--check", action="store_true", help="compare only; exit 1 on a difference")
-    a = p.parse_args()
-    runs = files(a.dir)
-    if a.check:
-        diff = check_doc(runs)
-        if diff:
-            print(diff + f"\ns6_report: regenerate with `make s6` (or {SCRIPT} {a.dir})")
-            return 1
-    else:
-        update(DOC, SCRIPT, blocks(runs), check=False)
-    print("s6_report: doc/validation.md " + ("matches" if a.check else "updated from")
-          + f" the runs in {a.dir}")
-    return 0
+def main(argv=None):
+    return report_main(SCRIPT, "s6", "output/s6", lambda a: files(a.dir), check_doc,
+                       lambda runs: update(DOC, SCRIPT, blocks(runs), check=False), argv=argv)
 
 
 if __name__ == "__main__":
