@@ -88,9 +88,9 @@ contains
       type(model_t), intent(inout) :: model
       integer, intent(in) :: at
       type(place_t) :: p
-      if (at < 1 .or. at > size(state%lines)) return
-      p = model%provenance%place(state%lines(at)%file, state%lines(at)%line)
-      p%keyword = state%lines(at)%keyword
+      if (at < 1 .or. at > state%lines%n) return
+      p = model%provenance%place(state%lines%file(at), state%lines%line(at))
+      p%keyword = state%lines%keyword(at)
    end function here
 
 end module pecplas_io_deck_record_places
