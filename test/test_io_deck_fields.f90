@@ -25,6 +25,7 @@ contains
                new_unittest('include_paths', test_paths), &
                new_unittest('first_repeat', test_repeat), &
                new_unittest('numbers_as_fortran_read', test_numbers_as_read), &
+               new_unittest('long_numbers_as_fortran_read', test_long_numbers_as_read), &
                new_unittest('deck_lines_cleaned', test_lines_cleaned)]
    end subroutine collect_io_deck_fields
 
@@ -175,6 +176,39 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_numbers_as_read
+
+   !> The extended-precision path (16-18 significant digits, |decimal exponent| <= 27, the
+   !> form of 17-digit mesh coordinates): bit for bit what a list-directed read gives, on
+   !> exact halfway cases between doubles (2**53 + 1, + 3: the path must hand them to
+   !> strtod) and 20000 pseudo-random mantissas of 16 to 18 digits (fixed seed).
+   subroutine test_long_numbers_as_read(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=28), parameter :: edge(8) = [character(len=28) :: '9007199254740993', &
+         '9007199254740995', '18014398509481986', '4.4843049327354258E-02', &
+         '123456789012345678', '1e27', '9.99999999999999999e26', &
+         '0.000000000000000000000000001']
+      character(len=40) :: s
+      character(len=4) :: ex
+      integer(int64) :: seed
+      integer :: i, k, nd
+      do i = 1, size(edge)
+         call same_as_read(trim(edge(i)), error)
+         if (allocated(error)) return
+      end do
+      seed = 20261124_int64
+      do i = 1, 20000
+         nd = 16 + next(seed, 3)
+         s = achar(49 + next(seed, 9))//'.'
+         do k = 2, nd
+            s = trim(s)//achar(48 + next(seed, 10))
+         end do
+         write (ex, '(i0)') next(seed, 21) - 10
+         s = trim(s)//'E'//trim(ex)
+         if (next(seed, 2) == 0) s = '-'//trim(s)
+         call same_as_read(trim(s), error)
+         if (allocated(error)) return
+      end do
+   end subroutine test_long_numbers_as_read
 
    subroutine same_as_read(s, error)
       character(len=*), intent(in) :: s

@@ -2,7 +2,12 @@
 !> ([sign] digits[.digits] | .digits, optional exponent e/E/d/D with digits): the common
 !> short forms by exact integer arithmetic, the others by the C library's correctly rounded
 !> strtod, which is what a Fortran list-directed read calls underneath (same value, without
-!> the cost of Fortran internal I/O; mesh files hold millions of numbers).
+!> the cost of Fortran internal I/O; mesh files hold millions of numbers). Mantissas of up
+!> to 18 digits (17-digit coordinates written by mesh generators) with a decimal exponent
+!> |e| <= 27 go through one product or quotient in extended precision (64-bit significand),
+!> rounded once more to double; the one case where that second rounding can differ from
+!> the correct one (the extended result falls exactly halfway between two doubles) is sent
+!> to strtod.
 module pecplas_io_number
    use, intrinsic :: iso_c_binding, only: c_char, c_double, c_ptr, c_null_char, c_null_ptr
    use iso_fortran_env, only: int64
@@ -11,6 +16,18 @@ module pecplas_io_number
    private
 
    public :: decimal_real, decimal_int
+
+   !> Extended precision with a significand of at least 64 bits (x87 real(10), or quad),
+   !> when the compiler has one; HAVE_XP is .false. otherwise (all long forms to strtod).
+   integer, parameter :: XP_WANTED = selected_real_kind(18)
+   integer, parameter :: xp = merge(XP_WANTED, wp, XP_WANTED > 0)
+   logical, parameter :: HAVE_XP = XP_WANTED > 0 .and. digits(1.0_xp) >= 64
+
+   !> Powers of ten 1e0..1e27, exact in a 64-bit significand (5**27 < 2**63).
+   real(xp), parameter :: pow10x(0:27) = [1.0e0_xp, 1.0e1_xp, 1.0e2_xp, 1.0e3_xp, 1.0e4_xp, &
+      1.0e5_xp, 1.0e6_xp, 1.0e7_xp, 1.0e8_xp, 1.0e9_xp, 1.0e10_xp, 1.0e11_xp, 1.0e12_xp, &
+      1.0e13_xp, 1.0e14_xp, 1.0e15_xp, 1.0e16_xp, 1.0e17_xp, 1.0e18_xp, 1.0e19_xp, 1.0e20_xp, &
+      1.0e21_xp, 1.0e22_xp, 1.0e23_xp, 1.0e24_xp, 1.0e25_xp, 1.0e26_xp, 1.0e27_xp]
 
    !> Exact powers of ten 1e0..1e22 (all representable in double precision).
    real(wp), parameter :: pow10(0:22) = [1.0e0_wp, 1.0e1_wp, 1.0e2_wp, 1.0e3_wp, 1.0e4_wp, &
@@ -39,7 +56,7 @@ contains
       integer(int64), parameter :: max_exact = 2_int64**53
       integer(int64) :: mant
       integer :: i, n, c, nd, e10, ex
-      logical :: neg, negx
+      logical :: neg, negx, ok
       character(kind=c_char, len=len(s) + 1) :: buf
       n = len(s)
       i = 1
@@ -100,6 +117,12 @@ contains
             v = real(mant, wp)/pow10(-e10)
          end if
       else
+         ok = .false.
+         if (HAVE_XP .and. nd <= 18 .and. abs(e10) <= 27) call extended(mant, e10, v, ok)
+         if (ok) then
+            if (neg) v = -v
+            return
+         end if
          buf(1:n) = s
          do i = 1, n
             if (buf(i:i) == 'd' .or. buf(i:i) == 'D') buf(i:i) = 'e'
@@ -110,6 +133,29 @@ contains
       end if
       if (neg) v = -v
    end function decimal_real
+
+   !> mant * 10**e10 rounded to double through one extended-precision operation: exact
+   !> operands (mant < 2**60, 10**|e10| <= 10**27), one correct rounding to 64 bits, then
+   !> one to 53. Double rounding errs only when the first result lies exactly halfway
+   !> between two doubles (a halfway point strictly between the exact value and its nearest
+   !> 64-bit neighbour cannot exist); then ok = .false. and strtod decides.
+   pure subroutine extended(mant, e10, v, ok)
+      integer(int64), intent(in) :: mant
+      integer, intent(in) :: e10
+      real(wp), intent(out) :: v
+      logical, intent(out) :: ok
+      real(xp) :: r, gap, ulp
+      if (e10 >= 0) then
+         r = real(mant, xp)*pow10x(e10)
+      else
+         r = real(mant, xp)/pow10x(-e10)
+      end if
+      v = real(r, wp)
+      gap = abs(r - real(v, xp))
+      ulp = real(spacing(v), xp)
+      ! halfway above |v| (half its spacing) or below a power of two (a quarter of it)
+      ok = gap /= 0.5_xp*ulp .and. gap /= 0.25_xp*ulp
+   end subroutine extended
 
    !> Value of the checked digit string `s` ([sign] digits, at most 18 digits).
    pure function decimal_int(s) result(v)

@@ -1,15 +1,18 @@
 !> Reads a deck and its `*INCLUDE` files into one list of logical lines (file, line number,
-!> keyword in force, text without comments), and keeps the raw text of every file read for
-!> provenance. An *INCLUDE is replaced by the lines of its file, so an included file may
-!> hold only data lines that continue the keyword in force (a generated node list).
+!> keyword in force, text without comments: offsets into one buffer, see
+!> pecplas_io_deck_line_store), and keeps the raw text of every file read for provenance.
+!> An *INCLUDE is replaced by the lines of its file, so an included file may hold only
+!> data lines that continue the keyword in force (a generated node list).
 module pecplas_io_deck_lines
    use pecplas_error, only: error_t, deck_error, input_error
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, parse_keyword_line, &
       keyword_name
+   use pecplas_io_deck_line_store, only: deck_lines_t, add_name
    implicit none (type, external)
    private
 
-   public :: deck_line_t, read_deck_lines, read_text_file, join_path, dir_name
+   public :: deck_line_t, deck_lines_t, read_deck_lines, read_deck_store, read_text_file
+   public :: join_path, dir_name
 
    character(len=*), parameter :: NL = new_line('a')
    character(len=*), parameter :: BOM = achar(239)//achar(187)//achar(191)
@@ -17,49 +20,65 @@ module pecplas_io_deck_lines
 contains
 
    !> Logical lines of the deck `path` with includes expanded, and the raw text of all
-   !> files read, each preceded by a `** ---- file: <path>` line.
+   !> files read, each preceded by a `** ---- file: <path>` line (one record per line: for
+   !> small decks; the deck reader keeps them in a deck_lines_t).
    subroutine read_deck_lines(path, lines, raw, error)
       character(len=*), intent(in) :: path
       type(deck_line_t), allocatable, intent(out) :: lines(:)
       character(len=:), allocatable, intent(out) :: raw
       type(error_t), allocatable, intent(out) :: error
-      type(deck_line_t), allocatable :: buf(:)
-      character(len=:), allocatable :: keyword
-      type(deck_line_t) :: origin
-      integer :: n
-      allocate (buf(0))
-      n = 0
-      raw = ''
-      keyword = ''
-      call read_one(join_path('', path), '', origin, buf, n, raw, keyword, error)
+      type(deck_lines_t) :: store
+      integer :: i
+      call read_deck_store(path, store, raw, error)
       if (allocated(error)) return
-      ! exact already unless includes took places
-      if (size(buf) /= n) call resize(buf, n, n)
-      call move_alloc(buf, lines)
+      allocate (lines(store%n))
+      do i = 1, store%n
+         lines(i) = store%get(i)
+      end do
    end subroutine read_deck_lines
 
+   !> Logical lines of the deck `path` with includes expanded, in one text buffer, and the
+   !> raw text of all files read as in read_deck_lines.
+   subroutine read_deck_store(path, store, raw, error)
+      character(len=*), intent(in) :: path
+      type(deck_lines_t), intent(out) :: store
+      character(len=:), allocatable, intent(out) :: raw
+      type(error_t), allocatable, intent(out) :: error
+      integer :: kw_id
+      raw = ''
+      store%buf = ''
+      allocate (store%i1(0), store%i2(0), store%num(0), store%file_of(0), store%kw_of(0))
+      allocate (store%files(0), store%keywords(0))
+      kw_id = 0
+      call read_one(join_path('', path), '', '', 0, store, raw, kw_id, error)
+      if (allocated(error)) return
+      if (size(store%i1) /= store%n) call store%resize(store%n)
+   end subroutine read_deck_store
+
    !> Appends the lines of `path`; `stack` holds the files being read (newline separated)
-   !> to detect recursion; `origin` is the *INCLUDE line (line 0 for the main deck).
-   recursive subroutine read_one(path, stack, origin, lines, n, raw, keyword, error)
-      character(len=*), intent(in) :: path, stack
-      type(deck_line_t), intent(in) :: origin
-      type(deck_line_t), allocatable, intent(inout) :: lines(:)
-      integer, intent(inout) :: n
-      character(len=:), allocatable, intent(inout) :: raw, keyword
+   !> to detect recursion; `origin_file`:`origin_line` is the *INCLUDE line (line 0 for the
+   !> main deck); `kw_id` the keyword in force (index in store%keywords, 0 before any).
+   recursive subroutine read_one(path, stack, origin_file, origin_line, store, raw, kw_id, &
+         error)
+      character(len=*), intent(in) :: path, stack, origin_file
+      integer, intent(in) :: origin_line
+      type(deck_lines_t), intent(inout) :: store
+      character(len=:), allocatable, intent(inout) :: raw
+      integer, intent(inout) :: kw_id
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: start, stop_, lineno, i1, i2, nkeep
+      integer :: start, stop_, lineno, i1, i2, nkeep, nlines, base, file_id, c
       integer, allocatable :: bounds(:, :)
       logical :: found
 
       call read_text_file(path, text, found)
       if (.not. found) then
-         if (origin%line == 0) then
+         if (origin_line == 0) then
             call input_error(error, "cannot read deck file '"//path//"'")
          else
-            call deck_error(error, origin%file, origin%line, '*INCLUDE', &
+            call deck_error(error, origin_file, origin_line, '*INCLUDE', &
                "cannot read include file '"//path//"'")
          end if
          return
@@ -72,19 +91,23 @@ contains
       if (len(text) > 0) then
          if (text(len(text):len(text)) /= NL) raw = raw//NL
       end if
+      file_id = size(store%files) + 1
+      call add_name(store%files, path)
 
       ! pass 1: the text bounds of every line, tabs and carriage returns turned into blanks
       ! (the raw text above keeps them); then room for the lines kept, at once
-      allocate (bounds(2, count_lines(text)))
+      nlines = count_lines(text)
+      allocate (bounds(2, nlines))
       nkeep = 0
       start = 1
       lineno = 0
       do while (start <= len(text))
          stop_ = start
          do while (stop_ <= len(text))
-            if (text(stop_:stop_) == NL) exit
-            if (text(stop_:stop_) == achar(9) .or. text(stop_:stop_) == achar(13)) &
-               text(stop_:stop_) = ' '
+            ! character codes: gfortran turns a test against ' ' into a len_trim call
+            c = iachar(text(stop_:stop_))
+            if (c == 10) exit
+            if (c == 9 .or. c == 13) text(stop_:stop_) = ' '
             stop_ = stop_ + 1
          end do
          lineno = lineno + 1
@@ -92,23 +115,28 @@ contains
          if (bounds(2, lineno) >= bounds(1, lineno)) nkeep = nkeep + 1
          start = stop_ + 1
       end do
-      if (n + nkeep > size(lines)) call resize(lines, n, size(lines) + nkeep)
+      if (store%n + nkeep > size(store%i1)) call store%resize(store%n + nkeep)
+      ! the cleaned text joins the buffer whole: lines are offsets into it
+      base = len(store%buf)
+      if (base == 0) then
+         call move_alloc(text, store%buf)
+      else
+         store%buf = store%buf//text
+      end if
 
-      do lineno = 1, size(bounds, 2)
+      do lineno = 1, nlines
          i1 = bounds(1, lineno)
          i2 = bounds(2, lineno)
          if (i2 < i1) cycle
-
-         if (text(i1:i1) /= '*') then
-            ! a data line (most of a mesh deck): stored in place, no temporaries
-            call push(lines, n, path, lineno, keyword, text(i1:i2))
+         if (store%buf(base + i1:base + i1) /= '*') then
+            ! a data line (most of a mesh deck): offsets only
+            call store%push(base + i1, base + i2, lineno, file_id, kw_id)
             cycle
          end if
-         line = text(i1:i2)
-         here = deck_line_t(file=path, line=lineno, keyword=keyword, text=line)
+         line = store%buf(base + i1:base + i2)
          name = keyword_name(line)
          if (name == '*INCLUDE') then
-            here%keyword = name
+            here = deck_line_t(file=path, line=lineno, keyword=name, text=line)
             call parse_keyword_line(here, kw, error)
             if (allocated(error)) return
             call kw%check_keys(here, ['FILE'], error)
@@ -121,12 +149,15 @@ contains
                   "' is already being read (include chain: "//chain(stack, path)//')')
                return
             end if
-            call read_one(incl, stack//NL//path, here, lines, n, raw, keyword, error)
+            call read_one(incl, stack//NL//path, path, lineno, store, raw, kw_id, error)
             if (allocated(error)) return
             cycle
          end if
-         if (len(name) > 0) keyword = name
-         call push(lines, n, path, lineno, keyword, line)
+         if (len(name) > 0) then
+            call add_name(store%keywords, name)
+            kw_id = size(store%keywords)
+         end if
+         call store%push(base + i1, base + i2, lineno, file_id, kw_id)
       end do
    end subroutine read_one
 
@@ -192,36 +223,6 @@ contains
       if (len(s) > 0) s = s//' -> '
       s = s//path
    end function chain
-
-   !> Appends a line; the list doubles when full, its strings moved, not copied.
-   subroutine push(lines, n, file, lineno, keyword, text)
-      type(deck_line_t), allocatable, intent(inout) :: lines(:)
-      integer, intent(inout) :: n
-      character(len=*), intent(in) :: file, keyword, text
-      integer, intent(in) :: lineno
-      if (n == size(lines)) call resize(lines, n, max(2*n, 64))
-      n = n + 1
-      lines(n)%file = file
-      lines(n)%line = lineno
-      lines(n)%keyword = keyword
-      lines(n)%text = text
-   end subroutine push
-
-   !> lines(1:n) into a list of `capacity` entries (>= n), moving the strings.
-   subroutine resize(lines, n, capacity)
-      type(deck_line_t), allocatable, intent(inout) :: lines(:)
-      integer, intent(in) :: n, capacity
-      type(deck_line_t), allocatable :: tmp(:)
-      integer :: i
-      allocate (tmp(capacity))
-      do i = 1, n
-         call move_alloc(lines(i)%file, tmp(i)%file)
-         tmp(i)%line = lines(i)%line
-         call move_alloc(lines(i)%keyword, tmp(i)%keyword)
-         call move_alloc(lines(i)%text, tmp(i)%text)
-      end do
-      call move_alloc(tmp, lines)
-   end subroutine resize
 
    !> Whole content of a text file; found = .false. if it cannot be opened or read.
    subroutine read_text_file(path, text, found)

@@ -3,7 +3,7 @@
 !> so that deck keywords can use its node ids and set names.
 module pecplas_io_deck_mesh_import
    use pecplas_error, only: error_t, ERR_INPUT
-   use pecplas_io_deck_fields, only: itoa
+   use pecplas_io_deck_fields, only: deck_line_t, itoa
    use pecplas_io_deck_lines, only: join_path, dir_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error
    use pecplas_io_gmsh, only: read_gmsh
@@ -21,18 +21,18 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       character(len=:), allocatable :: file
       type(mesh_t), allocatable :: tmp(:)
       type(mesh_t) :: mesh
       logical :: exists
       integer :: n
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=4) :: 'FILE'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'FILE', file, error)
-         if (allocated(error)) return
-         file = join_path(dir_name(kwline%file), file)
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'FILE'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'FILE', file, error)
+      if (allocated(error)) return
+      file = join_path(dir_name(kwline%file), file)
       inquire (file=file, exist=exists)
       if (.not. exists) then
          call line_error(state, block%at, "cannot read mesh file '"//file//"'", error)
@@ -44,14 +44,14 @@ contains
          if (.not. allocated(error%message)) error%message = ''
          ! a file that cannot be opened (a directory...) has no line of its own
          if (error%line <= 0) then
-            error%file = state%lines(block%at)%file
-            error%line = state%lines(block%at)%line
+            error%file = state%lines%file(block%at)
+            error%line = state%lines%line(block%at)
             error%keyword = '*MESH'
             error%kind = ERR_INPUT
             return
          end if
          error%message = error%message//' (mesh read by *MESH at '// &
-            state%lines(block%at)%file//':'//itoa(state%lines(block%at)%line)//')'
+            state%lines%file(block%at)//':'//itoa(state%lines%line(block%at))//')'
          return
       end if
       if (.not. allocated(state%imported)) allocate (state%imported(0), state%imported_at(0))

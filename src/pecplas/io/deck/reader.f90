@@ -6,7 +6,7 @@
 module pecplas_io_deck_reader
    use pecplas_error, only: error_t, deck_error
    use pecplas_io_deck_fields, only: add_name, parse_keyword_line
-   use pecplas_io_deck_lines, only: read_deck_lines
+   use pecplas_io_deck_lines, only: read_deck_store
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error
    use pecplas_io_deck_reader_mesh, only: read_nodes, read_elements, read_nset, read_edges
    use pecplas_io_deck_mesh_import, only: read_mesh
@@ -67,21 +67,21 @@ contains
       model%deck_file = path
       model%solver%linear = 'AUTO'
       model%solver%method = 'MODIFIED_NEWTON'
-      call read_deck_lines(path, state%lines, model%deck_text, error)
+      call read_deck_store(path, state%lines, model%deck_text, error)
       if (allocated(error)) return
-      n = size(state%lines)
+      n = state%lines%n
       i = 1
       do while (i <= n)
-         if (len(state%lines(i)%keyword) == 0) then
+         if (len(state%lines%keyword(i)) == 0) then
             call line_error(state, i, "data line before the first keyword: '"// &
-               state%lines(i)%text//"' (a keyword line starts with *)", error)
+               state%lines%text(i)//"' (a keyword line starts with *)", error)
             return
          end if
-         call parse_keyword_line(state%lines(i), block%kw, error)
+         call parse_keyword_line(state%lines%get(i), block%kw, error)
          if (allocated(error)) return
          j = i + 1
          do while (j <= n)
-            if (state%lines(j)%text(1:1) == '*') exit
+            if (state%lines%is_keyword(j)) exit
             j = j + 1
          end do
          block%at = i
@@ -156,7 +156,7 @@ contains
          call read_step(state, block, error)
       case ('*END STEP')
          call no_data(state, block, error)
-         if (.not. allocated(error)) call block%kw%check_keys(state%lines(block%at), &
+         if (.not. allocated(error)) call block%kw%check_keys(state%lines%get(block%at), &
             [character(len=1) ::], error)
       case ('*SOLVER')
          call no_data(state, block, error)
@@ -192,7 +192,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       if (block%last < block%first) return
       call line_error(state, block%first, block%kw%name//" takes no data lines, found '"// &
-         state%lines(block%first)%text//"'", error)
+         state%lines%text(block%first)//"'", error)
    end subroutine no_data
 
 end module pecplas_io_deck_reader

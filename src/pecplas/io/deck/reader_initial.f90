@@ -4,7 +4,8 @@
 module pecplas_io_deck_reader_initial
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, field_real, check_count, upper, &
+   use pecplas_io_deck_fields, only: deck_line_t, &
+      field_t, split_fields, field_real, check_count, upper, &
       add_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error
    use pecplas_io_deck_reader_mesh, only: no_data_error
@@ -22,12 +23,14 @@ contains
       type(model_t), intent(inout) :: model
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(field_t), allocatable :: f(:)
       type(initial_stress_t) :: init
       type(initial_stress_t), allocatable :: tmp(:)
       character(len=:), allocatable :: kind, form
       integer :: i, k, n
-      associate (kwline => state%lines(block%at), kw => block%kw)
+      kwline = state%lines%get(block%at)
+      associate (kw => block%kw)
          call kw%check_keys(kwline, [character(len=4) :: 'TYPE'], error)
          if (allocated(error)) return
          call kw%require(kwline, 'TYPE', kind, error)
@@ -47,27 +50,28 @@ contains
       if (allocated(error)) return
       if (.not. allocated(model%initial_stresses)) allocate (model%initial_stresses(0))
       do i = block%first, block%last
-         call split_fields(state%lines(i)%text, f)
+         call split_fields(state%lines%text(i), f)
          init = initial_stress_t()
          init%kind = upper(kind)
-         init%file = state%lines(i)%file
-         init%line = state%lines(i)%line
+         init%file = state%lines%file(i)
+         init%line = state%lines%line(i)
          if (init%kind == 'HOMOGENEOUS') then
-            call check_count(state%lines(i), f, 5, 5, form, error)
+            call check_count(state%lines%get(i), f, 5, 5, form, error)
             if (allocated(error)) return
             do k = 1, 4
-               call field_real(state%lines(i), f, k + 1, 'stress component', init%stress(k), error)
+               call field_real(state%lines%get(i), f, k + 1, 'stress component', &
+                  init%stress(k), error)
                if (allocated(error)) return
             end do
          else
-            call check_count(state%lines(i), f, 3, 4, form, error)
+            call check_count(state%lines%get(i), f, 3, 4, form, error)
             if (allocated(error)) return
-            call field_real(state%lines(i), f, 2, 'y_surface', init%surface, error)
+            call field_real(state%lines%get(i), f, 2, 'y_surface', init%surface, error)
             if (allocated(error)) return
-            call field_real(state%lines(i), f, 3, 'K0', init%k0, error)
+            call field_real(state%lines%get(i), f, 3, 'K0', init%k0, error)
             if (allocated(error)) return
             if (size(f) == 4) then
-               call field_real(state%lines(i), f, 4, 'q_surface', init%surcharge, error)
+               call field_real(state%lines%get(i), f, 4, 'q_surface', init%surcharge, error)
                if (allocated(error)) return
             end if
             if (init%k0 < 0.0_wp) then
@@ -118,8 +122,8 @@ contains
       type(deck_state_t), intent(in) :: state
       character(len=*), intent(in) :: file
       integer, intent(in) :: line
-      do k = 1, size(state%lines)
-         if (state%lines(k)%line == line .and. state%lines(k)%file == file) return
+      do k = 1, state%lines%n
+         if (state%lines%line(k) == line .and. state%lines%file(k) == file) return
       end do
       k = 1
    end function find_line

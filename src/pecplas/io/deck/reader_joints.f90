@@ -8,7 +8,8 @@
 module pecplas_io_deck_reader_joints
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, field_int, parse_real, same_name, &
+   use pecplas_io_deck_fields, only: deck_line_t, &
+      field_t, split_fields, field_int, parse_real, same_name, &
       upper, add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error, where_text, &
       grow_int, grow_int2
@@ -34,6 +35,7 @@ contains
       type(model_t), intent(inout) :: model
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       character(len=:), allocatable :: name, ltype, text
       type(params_t) :: params
       class(interface_law_t), allocatable :: law
@@ -41,15 +43,14 @@ contains
       integer :: i, n, at
       real(wp) :: metres
       logical :: found, ok
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=11) :: 'NAME', 'TYPE', &
-            LENGTH_UNIT_KEYS], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'NAME', name, error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'TYPE', ltype, error)
-         if (allocated(error)) return
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=11) :: 'NAME', 'TYPE', &
+         LENGTH_UNIT_KEYS], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'NAME', name, error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'TYPE', ltype, error)
+      if (allocated(error)) return
       call check_name(state, block%at, name, error)
       if (allocated(error)) return
       if (index(state%laws%names()//' ', ' '//upper(ltype)//' ') == 0) then
@@ -70,8 +71,8 @@ contains
 
       at = block%at
       if (block%last >= block%first) at = block%first
-      params%file = state%lines(at)%file
-      params%line = state%lines(at)%line
+      params%file = state%lines%file(at)
+      params%line = state%lines%line(at)
       params%keyword = '*INTERFACE_LAW'
       allocate (params%keys(0), params%values(0))
       ! LENGTH_UNIT=MM|M, MODEL_UNIT=MM|M: passed to the law as the unit's size in metres.
@@ -116,13 +117,15 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(raw_joint_set_t) :: js
       type(raw_joint_set_t), allocatable :: tmp(:)
       character(len=:), allocatable :: text, list
       logical :: found, has_edges, has_side, ok
       integer :: i, n
 
-      associate (kwline => state%lines(block%at), kw => block%kw)
+      kwline = state%lines%get(block%at)
+      associate (kw => block%kw)
          call kw%check_keys(kwline, [character(len=11) :: 'TYPE', 'SET', 'LAW', 'INTEGRATION', &
             'THICKNESS', 'ANGLE', 'EDGES', 'SIDE'], error)
          if (allocated(error)) return
@@ -210,7 +213,7 @@ contains
          if (block%last >= block%first) then
             call line_error(state, block%first, '*JOINTS with EDGES= and SIDE= generates '// &
                "its elements and takes no data lines, found '"// &
-               state%lines(block%first)%text//"'", error)
+               state%lines%text(block%first)//"'", error)
             return
          end if
          allocate (js%ids(0), js%nodes(0, 0), js%where(0))
@@ -253,7 +256,7 @@ contains
       allocate (js%ids(0), js%where(0))
       do i = block%first, block%last
          allocate (f(0))
-         call split_fields(state%lines(i)%text, f)
+         call split_fields(state%lines%text(i), f)
          nen = size(f) - 1
          select case (js%etype)
          case ('SPRING')
@@ -284,7 +287,7 @@ contains
          call grow_int(js%where, js%n)
          call grow_int2(js%nodes, nen, js%n)
          do j = 1, nen + 1
-            call field_int(state%lines(i), f, j, trim(merge('joint id', 'node id ', j == 1)), &
+            call field_int(state%lines%get(i), f, j, trim(merge('joint id', 'node id ', j == 1)), &
                id, error)
             if (allocated(error)) return
             if (id <= 0) then

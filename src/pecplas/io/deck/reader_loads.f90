@@ -4,7 +4,7 @@ module pecplas_io_deck_reader_loads
    use pecplas_kinds, only: wp
    use pecplas_io_deck_caps, only: MAX_LOAD_MAGNITUDE
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, field_real, check_count, &
+   use pecplas_io_deck_fields, only: deck_line_t, field_t, split_fields, field_real, check_count, &
       parse_int, same_name, upper, add_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_pattern_t, &
       line_error, where_text, push_item
@@ -25,13 +25,13 @@ contains
       type(field_t), allocatable :: f(:)
       type(raw_item_t) :: item
       integer :: i
-      call block%kw%check_keys(state%lines(block%at), [character(len=1) ::], error)
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
       if (allocated(error)) return
       call no_data_error(state, block, 'target, dof_first[, dof_last]', error)
       if (allocated(error)) return
       do i = block%first, block%last
-         call split_fields(state%lines(i)%text, f)
-         call check_count(state%lines(i), f, 2, 3, 'target, dof_first[, dof_last]', error)
+         call split_fields(state%lines%text(i), f)
+         call check_count(state%lines%get(i), f, 2, 3, 'target, dof_first[, dof_last]', error)
          if (allocated(error)) return
          item%target = f(1)%s
          item%at = i
@@ -87,18 +87,18 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(raw_pattern_t) :: pat
       type(raw_pattern_t), allocatable :: tmp(:)
       character(len=:), allocatable :: kind, list, form
       integer :: i, n
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'NAME', pat%name, error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'TYPE', kind, error)
-         if (allocated(error)) return
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'NAME', pat%name, error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'TYPE', kind, error)
+      if (allocated(error)) return
       call check_name(state, block%at, pat%name, error)
       if (allocated(error)) return
       pat%kind = upper(kind)
@@ -153,14 +153,14 @@ contains
       type(raw_item_t) :: item
       real(wp) :: norm
       allocate (f(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
-      call split_fields(state%lines(at)%text, f)
-      call check_count(state%lines(at), f, 1, 3, form, error)
+      call split_fields(state%lines%text(at), f)
+      call check_count(state%lines%get(at), f, 1, 3, form, error)
       if (allocated(error)) return
       item%at = at
       item%target = f(1)%s
       select case (pat%kind)
       case ('FORCE', 'DISPLACEMENT')
-         call check_count(state%lines(at), f, 3, 3, form, error)
+         call check_count(state%lines%get(at), f, 3, 3, form, error)
          if (allocated(error)) return
          call parse_dofs(state, at, f(2)%s, '', item%dof, error)
          if (allocated(error)) return
@@ -169,26 +169,26 @@ contains
                ' line takes one dof: 1, 2, X, Y, R or Z', error)
             return
          end if
-         call field_real(state%lines(at), f, 3, 'value', item%value(1), error)
+         call field_real(state%lines%get(at), f, 3, 'value', item%value(1), error)
       case ('PRESSURE')
-         call check_count(state%lines(at), f, 2, 2, form, error)
+         call check_count(state%lines%get(at), f, 2, 2, form, error)
          if (allocated(error)) return
-         call field_real(state%lines(at), f, 2, 'pressure', item%value(1), error)
+         call field_real(state%lines%get(at), f, 2, 'pressure', item%value(1), error)
       case ('BODY_FORCE')
-         call check_count(state%lines(at), f, 3, 3, form, error)
+         call check_count(state%lines%get(at), f, 3, 3, form, error)
          if (allocated(error)) return
-         call field_real(state%lines(at), f, 2, 'bx', item%value(1), error)
+         call field_real(state%lines%get(at), f, 2, 'bx', item%value(1), error)
          if (allocated(error)) return
-         call field_real(state%lines(at), f, 3, 'by', item%value(2), error)
+         call field_real(state%lines%get(at), f, 3, 'by', item%value(2), error)
       case default
          if (size(f) == 1) then
             item%value = [0.0_wp, -1.0_wp]
          else
-            call check_count(state%lines(at), f, 3, 3, form, error)
+            call check_count(state%lines%get(at), f, 3, 3, form, error)
             if (allocated(error)) return
-            call field_real(state%lines(at), f, 2, 'dx', item%value(1), error)
+            call field_real(state%lines%get(at), f, 2, 'dx', item%value(1), error)
             if (allocated(error)) return
-            call field_real(state%lines(at), f, 3, 'dy', item%value(2), error)
+            call field_real(state%lines%get(at), f, 3, 'dy', item%value(2), error)
             if (allocated(error)) return
             norm = norm2(item%value)
             if (.not. (norm > 0.0_wp)) then

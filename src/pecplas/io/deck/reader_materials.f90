@@ -3,7 +3,8 @@
 module pecplas_io_deck_reader_materials
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, parse_real, same_name, upper, &
+   use pecplas_io_deck_fields, only: deck_line_t, &
+      field_t, split_fields, parse_real, same_name, upper, &
       add_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_section_t, line_error, &
       where_text
@@ -27,20 +28,20 @@ contains
       type(model_t), intent(inout) :: model
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       character(len=:), allocatable :: name, mtype
       type(params_t) :: params
       class(material_t), allocatable :: mat
       type(material_box_t), allocatable :: tmp(:)
       logical :: found
       integer :: i, n, at
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'NAME', name, error)
-         if (allocated(error)) return
-         call block%kw%get('TYPE', mtype, found)
-         if (.not. found) mtype = 'ELASTIC'
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'NAME', name, error)
+      if (allocated(error)) return
+      call block%kw%get('TYPE', mtype, found)
+      if (.not. found) mtype = 'ELASTIC'
       call check_name(state, block%at, name, error)
       if (allocated(error)) return
       if (.not. state%registry%has(mtype)) then
@@ -60,8 +61,8 @@ contains
 
       at = block%at
       if (block%last >= block%first) at = block%first
-      params%file = state%lines(at)%file
-      params%line = state%lines(at)%line
+      params%file = state%lines%file(at)
+      params%line = state%lines%line(at)
       params%keyword = '*MATERIAL'
       allocate (params%keys(0), params%values(0))
       do i = block%first, block%last
@@ -93,7 +94,7 @@ contains
       logical :: ok
       integer :: j
       allocate (f(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
-      call split_fields(state%lines(at)%text, f)
+      call split_fields(state%lines%text(at), f)
       j = 1
       do while (j <= size(f))
          if (f(j)%s == '=') then
@@ -139,8 +140,8 @@ contains
       if (.not. (value > 0.0_wp .and. value < 1.0_wp)) return
       call warnings%add(key//' = '//decimal_text(value, 6)//' degree is below 1 degree: '// &
          'angles are in degrees (radians by mistake? '//decimal_text(value, 6)//' rad = '// &
-         decimal_text(value*180.0_wp/acos(-1.0_wp), 2)//' degrees)', state%lines(at)%file, &
-         state%lines(at)%line)
+         decimal_text(value*180.0_wp/acos(-1.0_wp), 2)//' degrees)', state%lines%file(at), &
+         state%lines%line(at))
    end subroutine check_angle
 
    !> *SECTION, SET=eset, MATERIAL=name -- no data lines; resolved at the end.
@@ -148,17 +149,17 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(raw_section_t) :: sec
       type(raw_section_t), allocatable :: tmp(:)
       integer :: n
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=8) :: 'SET', 'MATERIAL'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'SET', sec%set, error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'MATERIAL', sec%material, error)
-         if (allocated(error)) return
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=8) :: 'SET', 'MATERIAL'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'SET', sec%set, error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'MATERIAL', sec%material, error)
+      if (allocated(error)) return
       sec%at = block%at
       if (.not. allocated(state%sections)) allocate (state%sections(0))
       n = size(state%sections)

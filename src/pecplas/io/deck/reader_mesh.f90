@@ -2,8 +2,8 @@
 !> collect user ids; references are resolved by pecplas_io_deck_resolve_mesh.
 module pecplas_io_deck_reader_mesh
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, field_int, field_real, &
+   use pecplas_error, only: error_t, deck_error
+   use pecplas_io_deck_fields, only: deck_line_t, field_t, split_fields, field_int, field_real, &
       check_count, parse_int, parse_real, field_bounds, same_name, upper, itoa, add_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_eset_t, raw_nset_t, &
       raw_edge_set_t, line_error, where_text, grow_int, grow_int2, grow_real2
@@ -36,29 +36,35 @@ contains
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
       type(field_t), allocatable :: f(:)
+      type(deck_line_t) :: ln
       integer :: i, id, n
       real(wp) :: x, y
-      call block%kw%check_keys(state%lines(block%at), [character(len=1) ::], error)
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
       if (allocated(error)) return
       call no_data_error(state, block, 'id, x, y', error)
       if (allocated(error)) return
+      ! room for the whole block at once
+      n = state%nnode + block%last - block%first + 1
+      call grow_int(state%node_ids, n)
+      call grow_int(state%node_at, n)
+      call grow_real2(state%x, 2, n)
       do i = block%first, block%last
-         if (.not. quick_node(state%lines(i)%text, id, x, y)) then
+         ! the line read in place in the deck's buffer
+         if (.not. quick_node(state%lines%buf(state%lines%i1(i):state%lines%i2(i)), id, x, &
+               y)) then
             ! the general path: its checks say what is wrong with the line
-            call split_fields(state%lines(i)%text, f)
-            call check_count(state%lines(i), f, 3, 3, 'id, x, y', error)
+            ln = state%lines%get(i)
+            call split_fields(ln%text, f)
+            call check_count(ln, f, 3, 3, 'id, x, y', error)
             if (allocated(error)) return
-            call positive_id(state, i, f, 1, 'node id', id, error)
+            call positive_id(ln, f, 1, 'node id', id, error)
             if (allocated(error)) return
-            call field_real(state%lines(i), f, 2, 'x', x, error)
+            call field_real(ln, f, 2, 'x', x, error)
             if (allocated(error)) return
-            call field_real(state%lines(i), f, 3, 'y', y, error)
+            call field_real(ln, f, 3, 'y', y, error)
             if (allocated(error)) return
          end if
          n = state%nnode + 1
-         call grow_int(state%node_ids, n)
-         call grow_int(state%node_at, n)
-         call grow_real2(state%x, 2, n)
          state%node_ids(n) = id
          state%node_at(n) = i
          state%x(:, n) = [x, y]
@@ -71,18 +77,19 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(field_t), allocatable :: f(:)
+      type(deck_line_t) :: ln
       character(len=:), allocatable :: etype, name, form, list
       type(raw_eset_t), allocatable :: tmp(:)
       integer :: i, j, k, nen, id, node, ids(9)
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=4) :: 'TYPE', 'SET'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'TYPE', etype, error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'SET', name, error)
-         if (allocated(error)) return
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'TYPE', 'SET'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'TYPE', etype, error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'SET', name, error)
+      if (allocated(error)) return
       etype = upper(etype)
       nen = element_nodes(etype)
       if (nen == 0) then
@@ -125,35 +132,36 @@ contains
       end if
 
       associate (es => state%esets(k))
+         ! room for the whole block at once
+         call grow_int(es%ids, es%n + block%last - block%first + 1)
+         call grow_int(es%where, es%n + block%last - block%first + 1)
+         call grow_int2(es%conn, nen, es%n + block%last - block%first + 1)
          do i = block%first, block%last
-            if (quick_ids(state%lines(i)%text, ids(1:nen + 1))) then
+            ! the line read in place in the deck's buffer
+            if (quick_ids(state%lines%buf(state%lines%i1(i):state%lines%i2(i)), &
+                  ids(1:nen + 1))) then
                es%n = es%n + 1
-               call grow_int(es%ids, es%n)
-               call grow_int(es%where, es%n)
-               call grow_int2(es%conn, nen, es%n)
                es%ids(es%n) = ids(1)
                es%where(es%n) = i
                es%conn(:, es%n) = ids(2:nen + 1)
                cycle
             end if
             ! the general path: its checks say what is wrong with the line
-            call split_fields(state%lines(i)%text, f)
+            ln = state%lines%get(i)
+            call split_fields(ln%text, f)
             if (size(f) /= nen + 1) then
                call line_error(state, i, 'wrong number of nodes for a '//etype// &
                   ' element: expected "'//form//'" ('//itoa(nen)//' nodes), found '// &
                   itoa(size(f) - 1)//' node(s)', error)
                return
             end if
-            call positive_id(state, i, f, 1, 'element id', id, error)
+            call positive_id(ln, f, 1, 'element id', id, error)
             if (allocated(error)) return
             es%n = es%n + 1
-            call grow_int(es%ids, es%n)
-            call grow_int(es%where, es%n)
-            call grow_int2(es%conn, nen, es%n)
             es%ids(es%n) = id
             es%where(es%n) = i
             do j = 1, nen
-               call positive_id(state, i, f, j + 1, 'node id', node, error)
+               call positive_id(ln, f, j + 1, 'node id', node, error)
                if (allocated(error)) return
                es%conn(j, es%n) = node
             end do
@@ -166,18 +174,19 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(field_t), allocatable :: f(:)
+      type(deck_line_t) :: ln
       character(len=:), allocatable :: name, flag
       type(raw_nset_t), allocatable :: tmp(:)
       logical :: generate
       integer :: i, j, k, first, last, step, id
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=8) :: 'NAME', 'GENERATE'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'NAME', name, error)
-         if (allocated(error)) return
-         call block%kw%get('GENERATE', flag, generate)
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=8) :: 'NAME', 'GENERATE'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'NAME', name, error)
+      if (allocated(error)) return
+      call block%kw%get('GENERATE', flag, generate)
       if (generate .and. len(flag) > 0) then
          call line_error(state, block%at, "GENERATE takes no value, found 'GENERATE="//flag// &
             "'", error)
@@ -210,16 +219,17 @@ contains
 
       associate (ns => state%nsets(k))
          do i = block%first, block%last
-            call split_fields(state%lines(i)%text, f)
+            ln = state%lines%get(i)
+            call split_fields(ln%text, f)
             if (generate) then
-               call check_count(state%lines(i), f, 2, 3, 'first, last, step', error)
+               call check_count(ln, f, 2, 3, 'first, last, step', error)
                if (allocated(error)) return
-               call positive_id(state, i, f, 1, 'first node id', first, error)
+               call positive_id(ln, f, 1, 'first node id', first, error)
                if (allocated(error)) return
-               call positive_id(state, i, f, 2, 'last node id', last, error)
+               call positive_id(ln, f, 2, 'last node id', last, error)
                if (allocated(error)) return
                step = 1
-               if (size(f) == 3) call positive_id(state, i, f, 3, 'step', step, error)
+               if (size(f) == 3) call positive_id(ln, f, 3, 'step', step, error)
                if (allocated(error)) return
                if (last < first) then
                   call line_error(state, i, 'GENERATE needs first <= last, found first = '// &
@@ -229,7 +239,7 @@ contains
                call add_id(ns, first, i, last, step)
             else
                do j = 1, size(f)
-                  call positive_id(state, i, f, j, 'node id', id, error)
+                  call positive_id(ln, f, j, 'node id', id, error)
                   if (allocated(error)) return
                   call add_id(ns, id, i)
                end do
@@ -243,16 +253,17 @@ contains
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       type(field_t), allocatable :: f(:)
+      type(deck_line_t) :: ln
       character(len=:), allocatable :: name
       type(raw_edge_set_t), allocatable :: tmp(:)
       integer :: i, j, k, id
-      associate (kwline => state%lines(block%at))
-         call block%kw%check_keys(kwline, [character(len=4) :: 'NAME'], error)
-         if (allocated(error)) return
-         call block%kw%require(kwline, 'NAME', name, error)
-         if (allocated(error)) return
-      end associate
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'NAME', name, error)
+      if (allocated(error)) return
       call check_name(state, block%at, name, error)
       if (allocated(error)) return
       call no_data_error(state, block, 'n1, n2[, n3]', error)
@@ -273,8 +284,9 @@ contains
       end if
       associate (es => state%edge_sets(k))
          do i = block%first, block%last
-            call split_fields(state%lines(i)%text, f)
-            call check_count(state%lines(i), f, 2, 3, 'n1, n2[, n3] (end, end, mid)', error)
+            ln = state%lines%get(i)
+            call split_fields(ln%text, f)
+            call check_count(ln, f, 2, 3, 'n1, n2[, n3] (end, end, mid)', error)
             if (allocated(error)) return
             if (es%nen == 0) es%nen = size(f)
             if (size(f) /= es%nen) then
@@ -289,7 +301,7 @@ contains
             es%nodes(:, es%n) = 0
             es%where(es%n) = i
             do j = 1, size(f)
-               call positive_id(state, i, f, j, 'node id', id, error)
+               call positive_id(ln, f, j, 'node id', id, error)
                if (allocated(error)) return
                es%nodes(j, es%n) = id
             end do
@@ -352,17 +364,18 @@ contains
          "contain blanks or '=', or be ALL", error)
    end subroutine check_name
 
-   subroutine positive_id(state, at, f, k, what, id, error)
-      type(deck_state_t), intent(in) :: state
-      integer, intent(in) :: at, k
+   !> Field k of line `ln` as a positive integer.
+   subroutine positive_id(ln, f, k, what, id, error)
+      type(deck_line_t), intent(in) :: ln
+      integer, intent(in) :: k
       type(field_t), intent(in) :: f(:)
       character(len=*), intent(in) :: what
       integer, intent(out) :: id
       type(error_t), allocatable, intent(out) :: error
-      call field_int(state%lines(at), f, k, what, id, error)
+      call field_int(ln, f, k, what, id, error)
       if (allocated(error)) return
-      if (id <= 0) call line_error(state, at, what//' must be a positive integer, found '// &
-         itoa(id), error)
+      if (id <= 0) call deck_error(error, ln%file, ln%line, ln%keyword, what// &
+         ' must be a positive integer, found '//itoa(id))
    end subroutine positive_id
 
    !> Appends id (or the range id, id + step, ..., upto) read at line `at`.

@@ -5,7 +5,7 @@ module pecplas_io_deck_reader_options
    use pecplas_error, only: error_t
    use pecplas_io_deck_caps, only: MAX_INCREMENTS, MAX_ITERATIONS_CAP, MAX_CUTS_CAP, &
       MAX_LOAD_MAGNITUDE
-   use pecplas_io_deck_fields, only: field_t, split_fields, field_real, &
+   use pecplas_io_deck_fields, only: deck_line_t, field_t, split_fields, field_real, &
       check_count, parse_real, parse_int, same_name, upper, add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
       line_error, where_text, push_item
@@ -28,14 +28,14 @@ contains
       type(deck_block_t), intent(in) :: block
       character(len=:), allocatable, intent(out) :: text
       type(error_t), allocatable, intent(out) :: error
-      call block%kw%check_keys(state%lines(block%at), [character(len=1) ::], error)
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
       if (allocated(error)) return
       if (block%last /= block%first) then
          call line_error(state, block%at, 'expected exactly one data line after '// &
             block%kw%name//', found '//itoa(block%last - block%first + 1), error)
          return
       end if
-      text = state%lines(block%first)%text
+      text = state%lines%text(block%first)
    end subroutine read_text
 
    !> *UNITS -- one data line naming the length, force and stress units (module
@@ -58,9 +58,11 @@ contains
       type(model_t), intent(inout) :: model
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
       character(len=:), allocatable :: kind
       logical :: found
-      associate (kwline => state%lines(block%at), kw => block%kw)
+      kwline = state%lines%get(block%at)
+      associate (kw => block%kw)
          call kw%check_keys(kwline, [character(len=9) :: 'TYPE', 'THICKNESS'], error)
          if (allocated(error)) return
          call kw%require(kwline, 'TYPE', kind, error)
@@ -97,9 +99,9 @@ contains
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
       logical :: found
-      call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'LINEAR', 'METHOD', &
-         'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'FALLBACK', 'LINE_SEARCH', 'LIMIT_PROBE', &
-         'THREADS'], error)
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'LINEAR', &
+         'METHOD', 'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'FALLBACK', 'LINE_SEARCH', &
+         'LIMIT_PROBE', 'THREADS'], error)
       if (allocated(error)) return
       call param_choice(state, block, 'LINEAR', LINEAR_SOLVERS, model%solver%linear, error)
       if (allocated(error)) return
@@ -142,7 +144,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: file
       logical :: found
-      call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'FILE', 'EVERY', &
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'FILE', 'EVERY', &
          'STRESSES', 'STRAINS', 'REACTIONS', 'ERROR_ESTIMATE'], error)
       if (allocated(error)) return
       call block%kw%get('FILE', file, found)
@@ -169,7 +171,7 @@ contains
       real(wp) :: value
       integer :: node, dof
       logical :: found
-      call block%kw%check_keys(state%lines(block%at), [character(len=8) :: 'TARGET', 'GOAL', &
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=8) :: 'TARGET', 'GOAL', &
          'MAX_DOFS'], error)
       if (allocated(error)) return
       if (model%adapt%given) then
@@ -217,7 +219,7 @@ contains
       type(raw_item_t) :: item
       logical :: found
       integer :: i, n
-      call block%kw%check_keys(state%lines(block%at), [character(len=14) :: 'NAME', &
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'NAME', &
          'INCREMENTS', 'CONTROL', 'MAX_INCREMENTS', 'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', &
          'NODE', 'DOF', 'DISPLACEMENT'], error)
       if (allocated(error)) return
@@ -244,12 +246,12 @@ contains
          return
       end if
       do i = block%first, block%last
-         call split_fields(state%lines(i)%text, f)
-         call check_count(state%lines(i), f, 2, 2, 'pattern, target_factor', error)
+         call split_fields(state%lines%text(i), f)
+         call check_count(state%lines%get(i), f, 2, 2, 'pattern, target_factor', error)
          if (allocated(error)) return
          item%target = f(1)%s
          item%at = i
-         call field_real(state%lines(i), f, 2, 'target factor', item%value(1), error)
+         call field_real(state%lines%get(i), f, 2, 'target factor', item%value(1), error)
          if (allocated(error)) return
          if (abs(item%value(1)) > MAX_LOAD_MAGNITUDE) then
             call line_error(state, i, 'target factor above 1e100 in magnitude (see '// &

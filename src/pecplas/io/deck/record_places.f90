@@ -88,9 +88,16 @@ contains
       type(model_t), intent(inout) :: model
       integer, intent(in) :: at
       type(place_t) :: p
-      if (at < 1 .or. at > size(state%lines)) return
-      p = model%provenance%place(state%lines(at)%file, state%lines(at)%line)
-      p%keyword = state%lines(at)%keyword
+      if (at < 1 .or. at > state%lines%n) return
+      ! names from the line store's tables: no temporary per node
+      associate (ln => state%lines)
+         p = model%provenance%place(ln%files(ln%file_of(at))%s, ln%num(at))
+         if (ln%kw_of(at) == 0) then
+            p%keyword = ''
+         else
+            p%keyword = ln%keywords(ln%kw_of(at))%s
+         end if
+      end associate
    end function here
 
 end module pecplas_io_deck_record_places

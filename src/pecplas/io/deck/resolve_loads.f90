@@ -157,8 +157,8 @@ contains
          associate (raw => state%steps(s), step => model%steps(s))
             step%name = raw%name
             step%increments = raw%increments
-            step%file = state%lines(raw%at)%file
-            step%line = state%lines(raw%at)%line
+            step%file = state%lines%file(raw%at)
+            step%line = state%lines%line(raw%at)
             step%arc_length = raw%arc_length
             step%max_increments = raw%max_increments
             step%iterations_wanted = raw%iterations_wanted

@@ -5,7 +5,8 @@
 module pecplas_io_deck_state
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error
-   use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, itoa
+   use pecplas_io_deck_fields, only: keyword_line_t, itoa
+   use pecplas_io_deck_line_store, only: deck_lines_t
    use pecplas_model_mesh, only: mesh_t
    use pecplas_massif_materials_factory, only: material_registry_t
    use pecplas_model_node_lookup, only: node_lookup_t
@@ -83,7 +84,7 @@ module pecplas_io_deck_state
 
    !> Everything collected while reading, before references are resolved.
    type :: deck_state_t
-      type(deck_line_t), allocatable :: lines(:)
+      type(deck_lines_t) :: lines
       !> Nodes of *NODES: user ids, coordinates (2, n), line of each.
       integer :: nnode = 0
       integer, allocatable :: node_ids(:), node_at(:)
@@ -126,9 +127,8 @@ contains
       integer, intent(in) :: at
       character(len=*), intent(in) :: message
       type(error_t), allocatable, intent(out) :: error
-      associate (ln => state%lines(at))
-         call deck_error(error, ln%file, ln%line, ln%keyword, message)
-      end associate
+      call deck_error(error, state%lines%file(at), state%lines%line(at), &
+         state%lines%keyword(at), message)
    end subroutine line_error
 
    !> 'file:line' of line index `at`, for messages that point back to a definition.
@@ -136,7 +136,7 @@ contains
       type(deck_state_t), intent(in) :: state
       integer, intent(in) :: at
       character(len=:), allocatable :: s
-      s = state%lines(at)%file//':'//itoa(state%lines(at)%line)
+      s = state%lines%file(at)//':'//itoa(state%lines%line(at))
    end function where_text
 
    !> Makes room for at least n entries (capacity doubles).

@@ -181,10 +181,10 @@ contains
       type(model_t), intent(inout) :: model
       integer, intent(in) :: at
       character(len=*), intent(in) :: text
-      if (at < 1 .or. at > size(state%lines)) then
+      if (at < 1 .or. at > state%lines%n) then
          call model%warnings%add(text)
       else
-         call model%warnings%add(text, state%lines(at)%file, state%lines(at)%line)
+         call model%warnings%add(text, state%lines%file(at), state%lines%line(at))
       end if
    end subroutine warn_at
 

@@ -1,0 +1,138 @@
+!> The logical lines of a deck held as offsets into one text buffer: each line is a slice
+!> buf(i1:i2) with its line number, file and keyword in force as small integers. A mesh
+!> block of a million lines thus costs no allocation per line; `get` builds the one-line
+!> record (deck_line_t) that messages and keyword handlers use.
+module pecplas_io_deck_line_store
+   use pecplas_io_deck_fields, only: deck_line_t
+   implicit none (type, external)
+   private
+
+   public :: deck_lines_t, name_t, add_name
+
+   !> One name of a table (a file path, a keyword).
+   type :: name_t
+      character(len=:), allocatable :: s
+   end type name_t
+
+   !> Lines 1..n of a deck with its includes expanded.
+   type :: deck_lines_t
+      !> Cleaned text of every file read (tabs and carriage returns as blanks), back to back.
+      character(len=:), allocatable :: buf
+      integer :: n = 0
+      !> Line k is buf(i1(k):i2(k)), line num(k) of files(file_of(k)), under the keyword
+      !> keywords(kw_of(k)) (kw_of = 0 before the first keyword).
+      integer, allocatable :: i1(:), i2(:), num(:), file_of(:), kw_of(:)
+      type(name_t), allocatable :: files(:), keywords(:)
+   contains
+      procedure :: text => lines_text
+      procedure :: file => lines_file
+      procedure :: keyword => lines_keyword
+      procedure :: line => lines_line
+      procedure :: get => lines_get
+      procedure :: is_keyword => lines_is_keyword
+      procedure :: push => lines_push
+      procedure :: resize => lines_resize
+   end type deck_lines_t
+
+contains
+
+   !> Text of line k (comments and outer blanks removed).
+   function lines_text(this, k) result(s)
+      class(deck_lines_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=:), allocatable :: s
+      s = this%buf(this%i1(k):this%i2(k))
+   end function lines_text
+
+   !> File holding line k (the include file when inside one).
+   function lines_file(this, k) result(s)
+      class(deck_lines_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=:), allocatable :: s
+      s = this%files(this%file_of(k))%s
+   end function lines_file
+
+   !> Keyword in force on line k (upper case), '' before the first one.
+   function lines_keyword(this, k) result(s)
+      class(deck_lines_t), intent(in) :: this
+      integer, intent(in) :: k
+      character(len=:), allocatable :: s
+      if (this%kw_of(k) == 0) then
+         s = ''
+      else
+         s = this%keywords(this%kw_of(k))%s
+      end if
+   end function lines_keyword
+
+   !> Line number of line k in its file.
+   pure integer function lines_line(this, k) result(num)
+      class(deck_lines_t), intent(in) :: this
+      integer, intent(in) :: k
+      num = this%num(k)
+   end function lines_line
+
+   !> Line k as a record of its own.
+   function lines_get(this, k) result(line)
+      class(deck_lines_t), intent(in) :: this
+      integer, intent(in) :: k
+      type(deck_line_t) :: line
+      line%file = this%file(k)
+      line%line = this%num(k)
+      line%keyword = this%keyword(k)
+      line%text = this%buf(this%i1(k):this%i2(k))
+   end function lines_get
+
+   !> Whether line k is a keyword line (starts with '*').
+   pure logical function lines_is_keyword(this, k) result(yes)
+      class(deck_lines_t), intent(in) :: this
+      integer, intent(in) :: k
+      yes = this%buf(this%i1(k):this%i1(k)) == '*'
+   end function lines_is_keyword
+
+   !> Appends line buf(i1:i2); the arrays double when full.
+   pure subroutine lines_push(this, i1, i2, num, file_id, kw_id)
+      class(deck_lines_t), intent(inout) :: this
+      integer, intent(in) :: i1, i2, num, file_id, kw_id
+      if (this%n == size(this%i1)) call this%resize(max(2*this%n, 64))
+      this%n = this%n + 1
+      this%i1(this%n) = i1
+      this%i2(this%n) = i2
+      this%num(this%n) = num
+      this%file_of(this%n) = file_id
+      this%kw_of(this%n) = kw_id
+   end subroutine lines_push
+
+   !> Room for `capacity` lines (>= n).
+   pure subroutine lines_resize(this, capacity)
+      class(deck_lines_t), intent(inout) :: this
+      integer, intent(in) :: capacity
+      call resize_int(this%i1, this%n, capacity)
+      call resize_int(this%i2, this%n, capacity)
+      call resize_int(this%num, this%n, capacity)
+      call resize_int(this%file_of, this%n, capacity)
+      call resize_int(this%kw_of, this%n, capacity)
+   end subroutine lines_resize
+
+   pure subroutine resize_int(a, n, capacity)
+      integer, allocatable, intent(inout) :: a(:)
+      integer, intent(in) :: n, capacity
+      integer, allocatable :: tmp(:)
+      allocate (tmp(capacity))
+      tmp(1:n) = a(1:n)
+      call move_alloc(tmp, a)
+   end subroutine resize_int
+
+   !> Appends `s` to a name table.
+   pure subroutine add_name(list, s)
+      type(name_t), allocatable, intent(inout) :: list(:)
+      character(len=*), intent(in) :: s
+      type(name_t), allocatable :: tmp(:)
+      integer :: k
+      k = size(list)
+      allocate (tmp(k + 1))
+      tmp(1:k) = list
+      tmp(k + 1)%s = s
+      call move_alloc(tmp, list)
+   end subroutine add_name
+
+end module pecplas_io_deck_line_store
