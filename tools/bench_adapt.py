@@ -245,6 +245,11 @@ def write_fragment(prov, load, wp, ada, fruns, fada, frich, quick):
              f"{1e3 * frich['ref']:.4f} mm (observed order "
              f"{'none' if frich['p'] is None else format(frich['p'], '.2f')}, uncertainty "
              f"{frich['uncertainty'] / abs(frich['ref']):.1e}), adaptive from nx = 10. S2 uniform wall times are those of the work-precision run (its own commit and load), the adaptive ones of this run. "
+             "The wall times of the two kinds are not measured alike: an adaptive level's is "
+             "the program's own time for that level (solve, estimate, results written), a "
+             "uniform run's the whole process (start, deck read, solve, results) timed by the "
+             "script; together with the different loads this makes the 'either' rows "
+             "indicative only, while the DOF counts compare exactly. "
              "Data: `adapt.csv`.", "",
              "| scene | model | element | levels (DOFs) | value [mm] | error | estimate | "
              "wall [s] |", "|---|---|---|---|---|---|---|---|"]
