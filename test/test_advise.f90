@@ -1,120 +1,104 @@
-!> The advice mode (`pecplas --advise`, pecplas_driver_advise) in-process: on S3's pile deck
-!> (elastoplastic soil, Goodman joints; modified Newton does not converge there, Newton does)
-!> and on the default deck (a geostatic step before the loading one). S3 is Q4 with GOODMAN4
-!> joints and the footing Q8: both have the refined-mesh rows and their reference.
+!> The advice mode (`pecplas --advise`, pecplas_driver_advise) in-process, on the strip-footing
+!> example deck (Q8, elastic, a geostatic step before the loading one): the structure of the
+!> advice (levels of the adaptive sequence, reference rows, errors, cost, the cheapest within
+!> each tolerance) and its input errors. Whether the advised configuration really meets its
+!> claim against an independent reference is tested in test/python/test_advise.py.
 module test_advise
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, ERR_INPUT
-   use pecplas_driver_advise, only: advise_row_t, advise_deck, ADVISE_METHODS, ADVISE_FACTORS, &
-      ADVISE_FINE_FACTORS
-   use pecplas_model, only: model_t
-   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_driver_advise, only: advice_t, advise_deck, ADVISE_METHODS, ADVISE_FACTORS, &
+      ADVISE_TOLERANCES, REF_TARGET
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
    public :: collect_advise
 
+   character(len=*), parameter :: DECK = 'input/examples/strip_footing.inp'
+
 contains
 
    subroutine collect_advise(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
-      tests = [new_unittest('s3_reference_and_advice', test_s3), &
-               new_unittest('default_deck_loading_step', test_default), &
-               new_unittest('bad_node_is_input_error', test_bad_node)]
+      tests = [new_unittest('footing_sequence_and_advice', test_footing), &
+               new_unittest('bad_goal_is_input_error', test_bad_goal)]
    end subroutine collect_advise
 
-   !> Every configuration is run, NEWTON x1 and x2 on the refined mesh (h/2) too; the reference
-   !> (NEWTON x2 on the refined mesh) has error exactly 0 (it is compared with itself); every
-   !> completed run has a finite error >= 0; the advice for 1 % and 5 % names a completed
-   !> configuration whose error is below the threshold and whose wall time is the smallest of
-   !> those below it (the definition of the advice). The monitored node is a node of the deck.
-   subroutine test_s3(error)
+   !> The sequence has at least three levels (the extrapolation needs them) and ends below the
+   !> reference target or with a reason; each level has its NEWTON x2 reference row, the level 1
+   !> every configuration, with the increments of the loading step (5 in the deck: 3, 5, 10 for
+   !> x1/2, x1, x2), not of the one-increment geostatic step; every error is at least the
+   !> reference's own estimate (the definition: distance + that estimate); the cost of a row is
+   !> its wall time plus that of the same configuration on the coarser levels; the advice is the
+   !> completed row of least cost below each tolerance. The goal is the footing centre, node 29
+   !> (largest displacement), vertical.
+   subroutine test_footing(error)
       type(error_t), allocatable, intent(out) :: error
-      type(advise_row_t), allocatable :: rows(:)
-      type(model_t) :: model
-      integer :: ref, best(2), node
-      call check_advice('input/s3/s3_psi5.inp', .true., error)
+      type(advice_t) :: adv
+      integer :: k, m, i, nconf
+      nconf = size(ADVISE_METHODS)*size(ADVISE_FACTORS)
+      call advise_deck(DECK, '', 0, 0, adv, error)
       if (allocated(error)) return
-      call advise_deck('input/s3/s3_psi5.inp', 0, rows, ref, best, node, error)
+      call check(error, adv%node_id == 29 .and. adv%dof == 2, 'goal: node 29, y')
       if (allocated(error)) return
-      call read_deck('input/s3/s3_psi5.inp', model, error)
+      call check(error, adv%nlevels >= 3 .and. size(adv%level_dofs) == adv%nlevels .and. &
+         allocated(adv%stop_reason), 'three levels at least, and why the sequence ended')
       if (allocated(error)) return
-      call check(error, findloc(model%mesh%node_id, node, 1) > 0, &
-         'the monitored node is a node of the deck')
-   end subroutine test_s3
+      call check(error, adv%ref_error <= REF_TARGET .and. adv%ref_error >= 0.0_wp, &
+         'the reference reached its target (0.2 %)')
+      if (allocated(error)) return
+      call check(error, all(adv%level_dofs(2:) > adv%level_dofs(:adv%nlevels - 1)), &
+         'the DOFs grow along the sequence')
+      if (allocated(error)) return
+      call check(error, count(adv%rows%level == 1) == nconf .and. &
+         all(adv%rows(1:3)%increments == [3, 5, 10]), 'level 1: every configuration, '// &
+         'increments of the loading step 3, 5, 10')
+      if (allocated(error)) return
+      do k = 1, adv%nlevels
+         call check(error, count(adv%rows%level == k .and. adv%rows%method == 'NEWTON' .and. &
+            adv%rows%factor == 2.0_wp) == 1, 'a reference row on every level')
+         if (allocated(error)) return
+      end do
+      do i = 1, size(adv%rows)
+         associate (r => adv%rows(i))
+            call check(error, r%ok .and. ieee_is_finite(r%err) .and. &
+               r%err >= adv%ref_error .and. r%wall >= 0.0_wp .and. r%cost >= r%wall - 1e-12_wp, &
+               'completed, finite error >= the reference''s estimate, cost >= wall')
+            if (allocated(error)) return
+            ! the cost sums the same configuration's wall times up to this level
+            call check(error, abs(r%cost - sum(adv%rows%wall, mask=adv%rows%method == r%method &
+               .and. adv%rows%factor == r%factor .and. adv%rows%level <= r%level)) <= &
+               1e-12_wp*max(1.0_wp, r%cost), 'cost = wall times on levels 1 .. level')
+            if (allocated(error)) return
+         end associate
+      end do
+      do m = 1, size(ADVISE_TOLERANCES)
+         call check(error, adv%best(m) > 0, 'an advice within each tolerance')
+         if (allocated(error)) return
+         call check(error, adv%rows(adv%best(m))%err < ADVISE_TOLERANCES(m) .and. &
+            adv%rows(adv%best(m))%cost <= minval(adv%rows%cost, mask=adv%rows%ok .and. &
+            adv%rows%err < ADVISE_TOLERANCES(m)), 'the advice: the cheapest within tolerance')
+         if (allocated(error)) return
+      end do
+   end subroutine test_footing
 
-   !> The same on the strip-footing example deck; the increments reported are those of its
-   !> loading step (5 in the deck: 3, 5, 10 for x1/2, x1, x2), not of its one-increment
-   !> geostatic step. Its Q8 mesh is refined (h/2) like a Q4 one.
-   subroutine test_default(error)
+   !> An unknown node (by --goal or --advise-node) or a goal that is not a node's displacement:
+   !> an input error, no advice.
+   subroutine test_bad_goal(error)
       type(error_t), allocatable, intent(out) :: error
-      type(advise_row_t), allocatable :: rows(:)
-      character(len=:), allocatable :: note
-      integer :: ref, best(2), node
-      call check_advice('input/examples/strip_footing.inp', .true., error)
-      if (allocated(error)) return
-      call advise_deck('input/examples/strip_footing.inp', 0, rows, ref, best, node, error, note)
-      if (allocated(error)) return
-      call check(error, all(rows(1:3)%increments == [3, 5, 10]), &
-         'increments of the loading step: 3, 5, 10')
-      if (allocated(error)) return
-      call check(error, .not. allocated(note), 'Q8: the mesh level is varied')
-   end subroutine test_default
-
-   !> --advise-node with an id that is not in the mesh: an input error, no advice.
-   subroutine test_bad_node(error)
-      type(error_t), allocatable, intent(out) :: error
-      type(advise_row_t), allocatable :: rows(:)
+      type(advice_t) :: adv
       type(error_t), allocatable :: e
-      integer :: ref, best(2), node
-      call advise_deck('input/examples/strip_footing.inp', 999999, rows, ref, best, node, e)
-      call check(error, allocated(e), 'an unknown node is reported')
+      call advise_deck(DECK, '', 999999, 0, adv, e)
+      call check(error, allocated(e), '--advise-node 999999 is reported')
       if (allocated(error)) return
       call check(error, e%kind == ERR_INPUT, 'as an input error')
-   end subroutine test_bad_node
-
-   subroutine check_advice(deck, refined, error)
-      character(len=*), intent(in) :: deck
-      !> The deck's model refines: the fine rows exist and hold the reference.
-      logical, intent(in) :: refined
-      type(error_t), allocatable, intent(out) :: error
-      type(advise_row_t), allocatable :: rows(:)
-      real(wp), parameter :: TOL(2) = [0.01_wp, 0.05_wp]
-      integer :: ref, best(2), node, i, m
-      call advise_deck(deck, 0, rows, ref, best, node, error)
       if (allocated(error)) return
-      call check(error, size(rows) == size(ADVISE_METHODS)*size(ADVISE_FACTORS) + &
-         merge(size(ADVISE_FINE_FACTORS), 0, refined), deck//': one row per configuration')
+      deallocate (e)
+      call advise_deck(DECK, 'energy', 0, 0, adv, e)
+      call check(error, allocated(e), '--goal energy is reported')
       if (allocated(error)) return
-      call check(error, count(rows%fine) == merge(size(ADVISE_FINE_FACTORS), 0, refined) .and. &
-         all(rows%fine .eqv. [(i > size(ADVISE_METHODS)*size(ADVISE_FACTORS), i=1, size(rows))]), &
-         deck//': the refined-mesh rows come last')
-      if (allocated(error)) return
-      call check(error, rows(ref)%ok .and. rows(ref)%err == 0.0_wp .and. &
-         rows(ref)%method == 'NEWTON' .and. rows(ref)%factor == 2.0_wp .and. &
-         (rows(ref)%fine .eqv. refined) .and. ref == size(rows), &
-         deck//': reference NEWTON x2 (refined mesh when it refines), error exactly 0')
-      if (allocated(error)) return
-      do i = 1, size(rows)
-         if (.not. rows(i)%ok) cycle
-         call check(error, ieee_is_finite(rows(i)%err) .and. rows(i)%err >= 0.0_wp .and. &
-            rows(i)%wall >= 0.0_wp, deck//': finite errors and times')
-         if (allocated(error)) return
-      end do
-      do m = 1, 2
-         call check(error, best(m) > 0, deck//': an advice exists (the reference qualifies)')
-         if (allocated(error)) return
-         call check(error, rows(best(m))%ok .and. rows(best(m))%err < TOL(m), &
-            deck//': the advised configuration is below the threshold')
-         if (allocated(error)) return
-         do i = 1, size(rows)
-            if (.not. rows(i)%ok .or. .not. rows(i)%err < TOL(m)) cycle
-            call check(error, rows(best(m))%wall <= rows(i)%wall, &
-               deck//': the advised configuration is the cheapest below the threshold')
-            if (allocated(error)) return
-         end do
-      end do
-   end subroutine check_advice
+      call check(error, e%kind == ERR_INPUT .and. index(e%text(), 'node goal') > 0, &
+         'as an input error asking for a node goal')
+   end subroutine test_bad_goal
 
 end module test_advise

@@ -34,31 +34,35 @@ def plot(runs, scene, path, tols=(0.01, 0.05)):
     fams = {}
     for r in runs:
         if r["scene"] == scene and r["status"] == "ok" and math.isfinite(r["error"]):
-            fams.setdefault((label(r), r["series"]), []).append(r)
+            name = label(r) if r["scene"] in ("s2", "s6") else f"{r['model']} {r['element']}"
+            fams.setdefault((name, r["series"]), []).append(r)
     for i, ((name, series), rs) in enumerate(sorted(fams.items())):
-        key = "level" if series == "mesh" else "increments"
+        key = "increments" if series == "increments" else "level"
         rs.sort(key=lambda r: r[key])
         x = [r["wall"] for r in rs]
         # an error below the reference's own uncertainty is not resolved: drawn hollow at
         # that uncertainty (the finest level of a series is the reference's source)
         y = [r["error"] if r["resolved"] else r["floor"] for r in rs]
         colour = plt.cm.tab20(i % 20)   # up to 20 families with their own colour
-        mk = "o" if series == "mesh" else "s"
+        mk = {"mesh": "o", "increments": "s", "adaptive": "^"}[series]
         hollow = [(xi, yi) for r, xi, yi in zip(rs, x, y) if not r["resolved"]]
         if hollow:
             ax.loglog(*zip(*hollow), mk, mfc="none", color=colour, ms=7)
-        ax.loglog(x, y, "-o" if series == "mesh" else "--s", color=colour, ms=4,
-                  label=name + (" (mesh levels)" if series == "mesh"
-                                else f" (increments, n={rs[0]['level']})"))
+        style = {"mesh": "-o", "increments": "--s", "adaptive": "-.^"}[series]
+        ax.loglog(x, y, style, color=colour, ms=4, lw=1.8 if series == "adaptive" else 1.0,
+                  label=name + {"mesh": " (mesh levels)", "adaptive": " (adaptive levels)"}.get(
+                      series, f" (increments, n={rs[0]['level']})"))
         for r, xi, yi in zip(rs, x, y):
             ax.annotate(str(r[key]), (xi, yi), fontsize=6, color=colour,
                         xytext=(2, 2), textcoords="offset points")
     for t in tols:
         ax.axhline(t, color="grey", lw=0.7, ls=":")
     ax.set_xlabel("wall time [s]")
-    what = "head settlement at 2000 kN" if scene == "s2" else f"head uplift at {Q_FIX} kN"
+    what = {"s2": "head settlement at 2000 kN", "footing": "footing settlement"}.get(
+        scene, f"head uplift at {Q_FIX} kN")
     ax.set_ylabel(f"relative error of the {what}")
-    ax.set_title(f"{scene.upper()} work-precision (labels: mesh refinement n or increments)")
+    ax.set_title(f"{'Strip footing' if scene == 'footing' else scene.upper()} work-precision "
+                 "(labels: mesh n, adaptive level or increments)")
     ax.legend(fontsize=6, loc="lower left")
     ax.grid(True, which="both", lw=0.3)
     fig.tight_layout()

@@ -17,7 +17,7 @@ module pecplas_cli
    use pecplas_driver_gauss, only: gauss_coordinates
    use pecplas_driver_sanity, only: large_displacement_warning
    use pecplas_io_results_increment, only: joint_points_t
-   use pecplas_driver_advise, only: advise_main
+   use pecplas_driver_advise_report, only: advise_main
    use pecplas_driver_adapt_main, only: adapt_main
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_xdmf, only: xdmf_path
@@ -39,7 +39,7 @@ module pecplas_cli
 
    character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
       '[--restart OLD.h5] [--strict] | '// &
-      'pecplas --advise DECK [--advise-node N] | '// &
+      'pecplas --advise DECK [--goal node:N:x|y | --advise-node N] [--max-dofs N] | '// &
       'pecplas DECK --target-error E% [--goal node:N:x|y] [--max-dofs N] [-o FILE.h5]'
 
 contains
@@ -137,10 +137,10 @@ contains
                'refine the elements with the largest indicators, re-solve) until the '// &
                'estimated error of the goal (--goal node:N:x|y, default the energy norm) is '// &
                'below E, or --max-dofs (default 100000) is reached; writes the last level.'
-            write (*, '(a)') '  --advise: runs the first step under MODIFIED_NEWTON/NEWTON and '// &
-               'x1/2, x1, x2 increments, and NEWTON x1, x2 on the mesh refined once (h/2, '// &
-               'every element and joint type), prints their cost and error (reference: the finest, NEWTON x2 '// &
-               'on h/2) and the cheapest within 1 % and 5 %; writes no results.'
+            write (*, '(a)') '  --advise: runs the first loading step under MODIFIED_NEWTON/'// &
+               'NEWTON and x1/2, x1, x2 increments on each mesh of the adaptive sequence '// &
+               '(reference: NEWTON x2, refined until the goal''s estimated error is 0.2 %), '// &
+               'prints their cost and error and the cheapest within 1 % and 5 %; writes no results.'
             code = EXIT_OK
             return
          case ('--version')
@@ -164,7 +164,7 @@ contains
          return
       end if
       if (advise) then
-         code = advise_main(deck, node)
+         code = advise_main(deck, node, goal, max_dofs)
          return
       end if
       if (len(target) > 0) then

@@ -1,343 +1,286 @@
-!> Advice mode (`pecplas --advise DECK`): a quick study of a deck's first loading
-!> step under cheaper and finer configurations, run in-process, and the cheapest one whose
-!> error is below 1 % and below 5 %.
+!> Advice mode (`pecplas --advise DECK`): a study of a deck's first loading step over
+!> nonlinear method x increments x mesh, the mesh axis being the adaptive sequence of
+!> pecplas_driver_adapt (solve, estimate, bulk marking, local refinement), and the cheapest
+!> configuration whose estimated error is below 1 % and below 5 %.
 !>
-!> Variants on the deck's mesh: the nonlinear method (MODIFIED_NEWTON, NEWTON; Katona decks run
-!> their contact iteration inside either) times the number of increments of every step (x1/2,
-!> x1, x2), run up to the end of the first loading step (the first one that applies more than
-!> gravity). One mesh level more: the deck's model refined uniformly once (h/2,
-!> pecplas_model_refine) with NEWTON x1 and x2. The reference is the finest, NEWTON x2 on the
-!> refined mesh, so the errors of the deck's mesh include its discretisation error; when the
-!> model cannot be refined (point loads on both ends of an edge, supports across the body) the
-!> mesh level is not varied (a one-line reason) and the reference is NEWTON x2 on the deck's
-!> mesh; the same when the refined reference does not complete the step. The error of a
-!> variant is |u - u_ref| / |u_ref| at the monitored node, at the end of the first step: the
-!> node of the deck (refinement keeps its ids and numbers) with the largest free (not imposed)
-!> displacement of the reference, or a node given by id; only the free components of its
-!> displacement count (an imposed one is the same in every run). Each run writes a scratch
-!> results file (the driver writes as it goes) that is deleted afterwards; its writing time is
-!> not counted.
+!> Goal: one displacement component of one node at the end of the first loading step (the first
+!> step that applies more than gravity): `--goal node:N:x|y`, else the node of `--advise-node`,
+!> else the deck's node of largest free displacement in the first reference run, with its
+!> larger free (not imposed) component.
+!>
+!> 1. Reference sequence: NEWTON with x2 increments on the deck's mesh, then on each mesh of
+!>    the adaptive sequence, until the goal's estimated error (Aitken over the levels, the
+!>    larger of the last two estimates, as the adaptive loop does) is below REF_TARGET (a fifth
+!>    of the 1 % tolerance), or the DOF budget, the level limit, a refusal of the refiner or a
+!>    run that stops ends it.
+!> 2. Variants: every method x increment factor on every level of the sequence; a
+!>    configuration that met 1 % at a level is not run on finer ones (they cost it more; the
+!>    reference configuration has run on every level anyway).
+!> 3. Error of a run: |q - q_ref| / |q_ref| + e_ref, q_ref the goal of the finest reference run
+!>    and e_ref its own estimated error: a bound by the triangle inequality, never below what
+!>    the reference resolves. With one level only (the deck's mesh is not refined) e_ref = 0
+!>    and the errors are those of the method and increments alone (said in the output).
+!> 4. Cost of a configuration at level k: its wall times on levels 1 .. k summed (reaching the
+!>    mesh adaptively with that configuration); the advice is the cheapest by this cost.
 module pecplas_driver_advise
-   use pecplas_kinds, only: wp, ik8
-   use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT
-   use pecplas_version, only: VERSION
+   use pecplas_kinds, only: wp
+   use pecplas_error, only: error_t, input_error
    use pecplas_model, only: model_t
-   use pecplas_model_refine, only: refine_model
-   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_model_refine_local, only: refine_marked
+   use pecplas_model_refine_mark, only: bulk_marking
+   use pecplas_model_adapt_request, only: parse_goal
    use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_prepare, only: prepare_run
-   use pecplas_driver_increments, only: run_increments
-   use pecplas_driver_gauss, only: gauss_coordinates
-   use pecplas_io_results_increment, only: joint_points_t
-   use pecplas_io_results_file, only: results_file_t
-   use pecplas_driver_timers, only: wall_time
-   use pecplas_files, only: path_stem
-   use pecplas_command, only: command_error
-   use pecplas_strings, only: itoa, decimal_text
+   use pecplas_driver_estimator, only: error_estimate_t, estimate_error
+   use pecplas_driver_adapt, only: adapt_options_t, goal_extrapolation
+   use pecplas_driver_advise_run, only: advise_row_t, loading_model, run_configuration
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
 
-   public :: advise_row_t, advise_deck, advise_main, ADVISE_METHODS, ADVISE_FACTORS, &
-      ADVISE_FINE_FACTORS
+   public :: advise_row_t, advice_t, advise_deck, ADVISE_METHODS, ADVISE_FACTORS, REF_TARGET, &
+      ADVISE_TOLERANCES
 
    !> Nonlinear methods tried (model%solver%method).
    character(len=*), parameter :: ADVISE_METHODS(2) = [character(len=15) :: 'MODIFIED_NEWTON', &
       'NEWTON']
-   !> Factors on the number of increments of every step (at least one increment).
+   !> Factors on the number of increments of every step (at least one increment); the last
+   !> one with the last method is the reference configuration.
    real(wp), parameter :: ADVISE_FACTORS(3) = [0.5_wp, 1.0_wp, 2.0_wp]
-   !> Factors tried with NEWTON on the refined mesh (the last one is the reference).
-   real(wp), parameter :: ADVISE_FINE_FACTORS(2) = [1.0_wp, 2.0_wp]
+   !> Estimated error at which the reference sequence stops: a fifth of the 1 % tolerance.
+   real(wp), parameter :: REF_TARGET = 0.002_wp
+   real(wp), parameter :: ADVISE_TOLERANCES(2) = [0.01_wp, 0.05_wp]
 
-   !> One configuration and what it gave.
-   type :: advise_row_t
-      character(len=15) :: method = ''
-      real(wp) :: factor = 1.0_wp
-      !> On the refined mesh (h/2) rather than the deck's.
-      logical :: fine = .false.
-      !> Increments of the first step, wall time [s] without result writing, relative error.
-      integer :: increments = 0
-      real(wp) :: wall = 0.0_wp, err = huge(1.0_wp)
-      !> The run completed its first step.
-      logical :: ok = .false.
-      character(len=:), allocatable :: status
-   end type advise_row_t
+   !> What the advice found.
+   type :: advice_t
+      !> Every run, by level then configuration.
+      type(advise_row_t), allocatable :: rows(:)
+      !> Rows of the cheapest configuration within 1 % and 5 % (0: none).
+      integer :: best(2) = 0
+      !> Goal: deck node id and component (1 x/r, 2 y/z).
+      integer :: node_id = 0, dof = 0
+      !> DOFs of each level of the sequence.
+      integer, allocatable :: level_dofs(:)
+      !> Levels of the sequence, the reference goal value (finest level, NEWTON x2) and its
+      !> estimated relative error (0 with one level: discretisation not assessed).
+      integer :: nlevels = 0
+      real(wp) :: reference = 0.0_wp, ref_error = 0.0_wp
+      !> Why the sequence ended.
+      character(len=:), allocatable :: stop_reason
+   end type advice_t
 
 contains
 
-   !> Runs the variants of `deck`; `node_id` > 0 monitors that node, else the node of largest
-   !> reference displacement (`monitored` returns its id). `ref` is the reference row, `best`
-   !> the cheapest row within 1 % and within 5 % (0 when none). `mesh_note` is allocated with
-   !> the reason when the mesh level is not varied.
-   subroutine advise_deck(deck, node_id, rows, ref, best, monitored, error, mesh_note)
-      character(len=*), intent(in) :: deck
-      integer, intent(in) :: node_id
-      type(advise_row_t), allocatable, intent(out) :: rows(:)
-      integer, intent(out) :: ref, best(2), monitored
+   !> Runs the advice on `deck`. goal: '' or node:N:x|y; node_id: --advise-node (0: none);
+   !> max_dofs: the sequence's DOF budget (0: the adaptive loop's default).
+   subroutine advise_deck(deck, goal, node_id, max_dofs, adv, error)
+      character(len=*), intent(in) :: deck, goal
+      integer, intent(in) :: node_id, max_dofs
+      type(advice_t), intent(out) :: adv
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable, intent(out), optional :: mesh_note
-      real(wp), allocatable :: u(:, :, :)
-      logical, allocatable :: free(:, :)
-      type(model_t) :: model, fine
-      character(len=:), allocatable :: reason
-      integer :: m, f, i, n, inode, nn0
-      real(wp) :: uref(2)
-      real(wp), parameter :: TOL(2) = [0.01_wp, 0.05_wp]
+      type(adapt_options_t) :: opts
+      type(model_t), allocatable :: meshes(:)
+      type(advise_row_t), allocatable :: refs(:)
+      real(wp), allocatable :: q(:), cost(:, :)
+      logical, allocatable :: met(:, :)
+      integer :: inode, k, m, f, tag
 
-      ! the deck's own mesh fixes which nodes may be monitored, and whether it refines
-      call read_deck(deck, model, error)
+      if (max_dofs > 0) opts%max_dofs = max_dofs
+      allocate (meshes(opts%max_levels))
+      call loading_model(deck, meshes(1), error)
       if (allocated(error)) return
-      nn0 = model%mesh%nnode()
-      call refine_model(model, fine, reason)
-      if (present(mesh_note) .and. allocated(reason)) mesh_note = reason
-      n = size(ADVISE_METHODS)*size(ADVISE_FACTORS)
-      if (.not. allocated(reason)) n = n + size(ADVISE_FINE_FACTORS)
-      allocate (rows(n))
-      n = 0
-      do m = 1, size(ADVISE_METHODS)
-         do f = 1, size(ADVISE_FACTORS)
-            n = n + 1
-            rows(n)%method = ADVISE_METHODS(m)
-            rows(n)%factor = ADVISE_FACTORS(f)
-         end do
-      end do
-      if (.not. allocated(reason)) then
-         do f = 1, size(ADVISE_FINE_FACTORS)
-            n = n + 1
-            rows(n)%method = 'NEWTON'
-            rows(n)%factor = ADVISE_FINE_FACTORS(f)
-            rows(n)%fine = .true.
-         end do
-      end if
-      ref = n
-      ! the reference first: it fixes the monitored node
-      call one_run(deck, n, n, rows(ref), model, u, error, free)
+      call goal_node(meshes(1), goal, node_id, inode, adv%dof, error)
       if (allocated(error)) return
-      if (.not. rows(ref)%ok .and. rows(ref)%fine) then
-         ! the refined model stops (e.g. a limit load reached earlier): the deck's mesh only
-         reason = 'the refined reference stopped ('//rows(ref)%status//')'
-         if (present(mesh_note)) mesh_note = reason
-         n = size(ADVISE_METHODS)*size(ADVISE_FACTORS)
-         rows = rows(1:n)
-         ref = n
-         deallocate (u)
-         call one_run(deck, n, n, rows(ref), model, u, error, free)
-         if (allocated(error)) return
+      call reference_sequence(deck, opts, meshes, inode, adv, refs, error)
+      if (allocated(error)) return
+      q = refs%goal
+      adv%level_dofs = refs%ndof
+      adv%reference = q(adv%nlevels)
+      if (adv%nlevels >= 3) then
+         adv%ref_error = max(goal_extrapolation(q), goal_extrapolation(q(1:adv%nlevels - 1)))
+      else if (adv%nlevels == 2) then
+         adv%ref_error = goal_extrapolation(q)
       end if
-      if (.not. rows(ref)%ok) then
-         call input_error(error, 'advise: the reference run ('//row_name(rows(ref))// &
-            ') did not complete its first step ('//rows(ref)%status//'): no advice')
-         return
-      end if
-      if (node_id > 0) then
-         inode = findloc(model%mesh%node_id(1:nn0), node_id, dim=1)
-         if (inode == 0) then
-            call input_error(error, 'advise: --advise-node: no node '//itoa(node_id)// &
-               ' in the mesh')
-            return
-         end if
-      else
-         ! imposed displacements say nothing of the accuracy: the free components count
-         if (.not. any(free(:, 1:nn0) .and. u(:, 1:nn0, ref) /= 0.0_wp)) free = .true.
-         inode = maxloc(norm2(merge(u(:, 1:nn0, ref), 0.0_wp, free(:, 1:nn0)), dim=1), dim=1)
-      end if
-      if (.not. any(free(:, inode))) free(:, inode) = .true.
-      monitored = model%mesh%node_id(inode)
-      uref = merge(u(:, inode, ref), 0.0_wp, free(:, inode))
-      do i = 1, n - 1
-         call one_run(deck, i, n, rows(i), model, u, error)
-         if (allocated(error)) return
-      end do
-      do i = 1, n
-         if (.not. rows(i)%ok) cycle
-         rows(i)%err = norm2(merge(u(:, inode, i), 0.0_wp, free(:, inode)) - uref)/ &
-            max(norm2(uref), tiny(1.0_wp))
-      end do
-      rows(ref)%err = 0.0_wp
-      do m = 1, 2
-         best(m) = 0
-         do i = 1, n
-            if (.not. rows(i)%ok .or. .not. rows(i)%err < TOL(m)) cycle
-            if (best(m) == 0) then
-               best(m) = i
-            else if (rows(i)%wall < rows(best(m))%wall) then
-               best(m) = i
-            end if
+      allocate (adv%rows(0))
+      allocate (cost(size(ADVISE_FACTORS), size(ADVISE_METHODS)), source=0.0_wp)
+      allocate (met(size(ADVISE_FACTORS), size(ADVISE_METHODS)), source=.false.)
+      tag = adv%nlevels
+      do k = 1, adv%nlevels
+         do m = 1, size(ADVISE_METHODS)
+            do f = 1, size(ADVISE_FACTORS)
+               if (m == size(ADVISE_METHODS) .and. f == size(ADVISE_FACTORS)) then
+                  adv%rows = [adv%rows, refs(k)]
+               else if (met(f, m)) then
+                  cycle
+               else
+                  tag = tag + 1
+                  adv%rows = [adv%rows, config_row(m, f, k)]
+                  call run_goal(deck, meshes(k), inode, adv%dof, tag, &
+                     adv%rows(size(adv%rows)), error)
+                  if (allocated(error)) return
+               end if
+               associate (row => adv%rows(size(adv%rows)))
+                  cost(f, m) = cost(f, m) + row%wall
+                  row%cost = cost(f, m)
+                  if (row%ok) row%err = abs(row%goal - adv%reference)/ &
+                     max(abs(adv%reference), tiny(1.0_wp)) + adv%ref_error
+                  met(f, m) = row%ok .and. row%err < ADVISE_TOLERANCES(1)
+               end associate
+            end do
          end do
+      end do
+      adv%node_id = meshes(1)%mesh%node_id(inode)
+      do m = 1, size(ADVISE_TOLERANCES)
+         adv%best(m) = cheapest(adv%rows, ADVISE_TOLERANCES(m))
       end do
    end subroutine advise_deck
 
-   !> Reads `deck` afresh (refined once for a row on the fine mesh), keeps its steps up to the
-   !> first loading step, applies the configuration of `row` and runs it quietly to a scratch
-   !> results file (deleted); u(:, 1:nnode, i) = the displacements at the end (u allocated for
-   !> `nvar` variants by the first run, the reference: the largest mesh).
-   subroutine one_run(deck, i, nvar, row, model, u, error, free)
+   !> NEWTON x2 on the deck's mesh and on each new mesh of the adaptive sequence (meshes(k)),
+   !> until its goal error estimate is below REF_TARGET or the sequence cannot go on
+   !> (adv%stop_reason). refs(k): the reference row of level k; inode and dof are chosen from
+   !> the first run when not given (dof 0).
+   subroutine reference_sequence(deck, opts, meshes, inode, adv, refs, error)
       character(len=*), intent(in) :: deck
-      integer, intent(in) :: i, nvar
-      type(advise_row_t), intent(inout) :: row
-      type(model_t), intent(out) :: model
-      real(wp), allocatable, intent(inout) :: u(:, :, :)
+      type(adapt_options_t), intent(in) :: opts
+      type(model_t), intent(inout) :: meshes(:)
+      integer, intent(inout) :: inode
+      type(advice_t), intent(inout) :: adv
+      type(advise_row_t), allocatable, intent(out) :: refs(:)
       type(error_t), allocatable, intent(out) :: error
-      !> The free displacement components (not supported nor imposed).
-      logical, allocatable, intent(out), optional :: free(:, :)
+      type(model_t) :: ran
       type(problem_t) :: problem
-      type(results_file_t) :: results
-      type(joint_points_t), allocatable :: jpoints(:)
-      type(error_t), allocatable :: run_err
-      character(len=:), allocatable :: status, message, scratch
-      real(wp) :: w0
-      integer :: nflipped, last, s
-      type(model_t) :: coarse
+      type(error_estimate_t) :: est
       character(len=:), allocatable :: reason
-
-      if (row%fine) then
-         call read_deck(deck, coarse, error)
+      real(wp) :: eref
+      integer :: k, s
+      allocate (refs(0))
+      do k = 1, size(meshes)
+         refs = [refs, config_row(size(ADVISE_METHODS), size(ADVISE_FACTORS), k)]
+         call run_configuration(deck, meshes(k), refs(k), k, ran, problem, error)
          if (allocated(error)) return
-         call refine_model(coarse, model, reason)
+         if (.not. refs(k)%ok) then
+            if (k == 1) then
+               call input_error(error, 'advise: the reference run (NEWTON x2 on the deck''s '// &
+                  'mesh) did not complete its first loading step ('//refs(k)%status// &
+                  '): no advice')
+               return
+            end if
+            adv%stop_reason = 'NEWTON x2 stopped on level '//itoa(k)//' ('//refs(k)%status//')'
+            refs = refs(1:k - 1)
+            exit
+         end if
+         if (adv%dof == 0) call pick_goal(meshes(1)%mesh%nnode(), problem, inode, adv%dof)
+         refs(k)%goal = problem%state%u(adv%dof, inode)
+         adv%nlevels = k
+         eref = -1.0_wp
+         if (k >= 3) eref = max(goal_extrapolation(refs%goal), &
+            goal_extrapolation(refs(1:k - 1)%goal))
+         if (eref >= 0.0_wp .and. eref <= REF_TARGET) then
+            adv%stop_reason = 'estimated error of the reference below the 0.2 % aimed at'
+            exit
+         end if
+         if (k == size(meshes)) then
+            adv%stop_reason = 'level limit ('//itoa(k)//')'
+            exit
+         end if
+         call estimate_error(ran, problem, est, error)
+         if (allocated(error)) return
+         call refine_marked(meshes(k), bulk_marking([(est%sets(s)%eta, s=1, size(est%sets))], &
+            opts%theta), meshes(k + 1), reason)
          if (allocated(reason)) then
-            call input_error(error, 'advise: the refinement failed: '//reason)
+            adv%stop_reason = 'the mesh of level '//itoa(k)//' is not refined: '//reason
+            exit
+         end if
+         if (2*meshes(k + 1)%mesh%nnode() > opts%max_dofs) then
+            adv%stop_reason = 'the next level would exceed the DOF budget ('// &
+               itoa(opts%max_dofs)//', --max-dofs)'
+            exit
+         end if
+      end do
+   end subroutine reference_sequence
+
+   !> The configuration (method m, factor f) on level k, not yet run.
+   function config_row(m, f, k) result(row)
+      integer, intent(in) :: m, f, k
+      type(advise_row_t) :: row
+      row%method = ADVISE_METHODS(m)
+      row%factor = ADVISE_FACTORS(f)
+      row%level = k
+      row%status = 'not run'
+   end function config_row
+
+   !> Runs `row` on `mesh` and reads the goal.
+   subroutine run_goal(deck, mesh, inode, dof, tag, row, error)
+      character(len=*), intent(in) :: deck
+      type(model_t), intent(in) :: mesh
+      integer, intent(in) :: inode, dof, tag
+      type(advise_row_t), intent(inout) :: row
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: ran
+      type(problem_t) :: problem
+      call run_configuration(deck, mesh, row, tag, ran, problem, error)
+      if (allocated(error)) return
+      if (row%ok) row%goal = problem%state%u(dof, inode)
+   end subroutine run_goal
+
+   !> The goal's internal node (0 when to be chosen) and component (0 when to be chosen)
+   !> from --goal or --advise-node; an unknown node or a goal that is not a node's
+   !> displacement is an input error.
+   subroutine goal_node(model, goal, node_id, inode, dof, error)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: goal
+      integer, intent(in) :: node_id
+      integer, intent(out) :: inode, dof
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: msg
+      integer :: id
+      id = node_id
+      dof = 0
+      inode = 0
+      if (len_trim(goal) > 0) then
+         call parse_goal(goal, id, dof, msg)
+         if (.not. allocated(msg) .and. id == 0) msg = 'the advice needs a node goal '// &
+            '(node:N:x or node:N:y), got '''//trim(goal)//''''
+         if (allocated(msg)) then
+            call input_error(error, 'advise: --goal: '//msg)
             return
          end if
-      else
-         call read_deck(deck, model, error)
       end if
-      if (allocated(error)) return
-      if (size(model%steps) < 1) then
-         call input_error(error, 'advise: the deck has no *STEP')
-         return
-      end if
-      last = first_loading_step(model)
-      model%steps = model%steps(1:last)
-      do s = 1, last
-         model%steps(s)%increments = max(1, nint(row%factor*model%steps(s)%increments))
-      end do
-      row%increments = model%steps(last)%increments
-      model%solver%method = trim(row%method)
-      model%output%every = huge(1)
-      w0 = wall_time()
-      call prepare_run(model, problem, nflipped, jpoints, error)
-      if (allocated(error)) return
-      if (.not. allocated(u)) allocate (u(2, size(problem%state%u, 2), nvar), source=0.0_wp)
-      scratch = scratch_name(deck, i)
-      call results%create(scratch, model, VERSION, gauss_coordinates(model, problem), error, &
-         jpoints)
-      if (allocated(error)) then
-         call input_error(error, 'advise: cannot write the scratch file '//scratch//': '// &
-            error%text())
-         return
-      end if
-      call run_increments(model, problem, results, .true., status, message, run_err)
-      row%wall = wall_time() - w0 - problem%time%output
-      if (allocated(run_err)) status = 'failed'
-      call results%discard()
-      row%status = status
-      row%ok = status == 'completed'
-      if (row%ok) u(:, 1:size(problem%state%u, 2), i) = problem%state%u
-      if (present(free)) free = problem%dofs%eq > 0
-   end subroutine one_run
+      if (id == 0) return
+      inode = findloc(model%mesh%node_id, id, 1)
+      if (inode == 0) call input_error(error, 'advise: no node '//itoa(id)//' in the mesh')
+   end subroutine goal_node
 
-   !> The first step that applies something else than gravity (a geostatic step only sets the
-   !> initial state up); the last step when every step is gravity only.
-   integer function first_loading_step(model) result(s)
-      type(model_t), intent(in) :: model
-      integer :: j
-      do s = 1, size(model%steps)
-         associate (st => model%steps(s))
-            do j = 1, size(st%pattern)
-               if (model%patterns(st%pattern(j))%kind /= 'GRAVITY') return
-            end do
-         end associate
-      end do
-      s = size(model%steps)
-   end function first_loading_step
+   !> The node of largest free displacement among the deck's nnode0 nodes (unless inode is
+   !> given) and its larger free component; imposed components say nothing of the accuracy.
+   subroutine pick_goal(nnode0, problem, inode, dof)
+      integer, intent(in) :: nnode0
+      type(problem_t), intent(in) :: problem
+      integer, intent(inout) :: inode
+      integer, intent(out) :: dof
+      logical, allocatable :: free(:, :)
+      real(wp), allocatable :: u(:, :)
+      free = problem%dofs%eq(:, 1:nnode0) > 0
+      if (.not. any(free .and. problem%state%u(:, 1:nnode0) /= 0.0_wp)) free = .true.
+      u = merge(problem%state%u(:, 1:nnode0), 0.0_wp, free)
+      if (inode == 0) inode = maxloc(norm2(u, dim=1), dim=1)
+      if (.not. any(free(:, inode))) u(:, inode) = problem%state%u(:, inode)
+      dof = maxloc(abs(u(:, inode)), dim=1)
+   end subroutine pick_goal
 
-   !> `pecplas --advise DECK [--advise-node N]`: prints the table and the two advice lines;
-   !> exit code 0, or 2 when the deck or the reference run fails.
-   integer function advise_main(deck, node_id) result(code)
-      character(len=*), intent(in) :: deck
-      integer, intent(in) :: node_id
-      type(advise_row_t), allocatable :: rows(:)
-      type(error_t), allocatable :: error
-      character(len=:), allocatable :: note
-      integer :: ref, best(2), monitored, i
-      character(len=*), parameter :: FMT = '(2x,a15,2x,a4,2x,a5,2x,i10,2x,f10.4,2x,a12,2x,a)'
-      call advise_deck(deck, node_id, rows, ref, best, monitored, error, note)
-      if (allocated(error)) then
-         code = command_error('pecplas', error%exit_code(), error%text())
-         return
-      end if
-      write (*, '(a)') 'pecplas --advise '//deck//': first loading step, monitored node '// &
-         itoa(monitored)//', reference '//row_name(rows(ref))
-      if (allocated(note)) write (*, '(a)') 'mesh level not varied: '//note
-      write (*, '(2x,a15,2x,a4,2x,a5,2x,a10,2x,a10,2x,a12,2x,a)') 'method', 'mesh', 'incr.', &
-         'increments', 'wall [s]', 'error', 'status'
-      do i = 1, size(rows)
-         write (*, FMT) rows(i)%method, merge('h/2 ', 'deck', rows(i)%fine), &
-            decimal_text(rows(i)%factor, 2), rows(i)%increments, rows(i)%wall, err_text(rows(i)), &
-            rows(i)%status
-      end do
-      write (*, '(a)') advice_line('1 %', rows, best(1))
-      write (*, '(a)') advice_line('5 %', rows, best(2))
-      code = EXIT_OK
-   end function advise_main
-
-   function advice_line(what, rows, b) result(line)
-      character(len=*), intent(in) :: what
+   !> The completed row of least cost whose error is below tol (0: none).
+   integer function cheapest(rows, tol) result(b)
       type(advise_row_t), intent(in) :: rows(:)
-      integer, intent(in) :: b
-      character(len=:), allocatable :: line
-      if (b == 0) then
-         line = 'advice (error < '//what//'): none of the configurations'
-         return
-      end if
-      line = 'advice (error < '//what//'): METHOD='//trim(rows(b)%method)//', INCREMENTS='// &
-         itoa(rows(b)%increments)//' in the first loading step (x'// &
-         decimal_text(rows(b)%factor, 2)//')'
-      if (rows(b)%fine) line = line//', mesh refined once (h/2)'
-      line = line//', error '//err_text(rows(b))
-   end function advice_line
-
-   !> 'deck' (the deck's mesh) or 'h/2' (refined once).
-   pure function mesh_text(row) result(s)
-      type(advise_row_t), intent(in) :: row
-      character(len=:), allocatable :: s
-      s = merge('h/2 ', 'deck', row%fine)
-      s = trim(s)
-   end function mesh_text
-
-   !> The configuration in words, e.g. 'NEWTON x2 increments, mesh h/2'.
-   function row_name(row) result(s)
-      type(advise_row_t), intent(in) :: row
-      character(len=:), allocatable :: s
-      s = trim(row%method)//' x'//decimal_text(row%factor, 2)//' increments, mesh '//mesh_text(row)
-   end function row_name
-
-   !> '0.5', '1', '2': the factor with no trailing zeros.
-
-   function err_text(row) result(s)
-      type(advise_row_t), intent(in) :: row
-      character(len=:), allocatable :: s
-      character(len=12) :: buf
-      if (.not. row%ok) then
-         s = '-'
-         return
-      end if
-      write (buf, '(es10.3)') row%err
-      s = trim(adjustl(buf))
-   end function err_text
-
-   !> A scratch results path unique to this run (TMPDIR or /tmp, deck stem, clock, variant).
-   function scratch_name(deck, i) result(path)
-      character(len=*), intent(in) :: deck
-      integer, intent(in) :: i
-      character(len=:), allocatable :: path
-      character(len=512) :: dir
-      integer(ik8) :: count
-      integer :: n, stat
-      call get_environment_variable('TMPDIR', dir, n, stat)
-      if (stat /= 0 .or. n == 0) dir = '/tmp'
-      call system_clock(count)
-      path = trim(dir)//'/pecplas_advise_'//path_stem(deck)//'_'//itoa(int(mod(count, &
-         1000000000_ik8)))//'_'//itoa(i)//'.h5'
-   end function scratch_name
+      real(wp), intent(in) :: tol
+      integer :: i
+      b = 0
+      do i = 1, size(rows)
+         if (.not. rows(i)%ok .or. .not. rows(i)%err < tol) cycle
+         if (b == 0) then
+            b = i
+         else if (rows(i)%cost < rows(b)%cost) then
+            b = i
+         end if
+      end do
+   end function cheapest
 
 end module pecplas_driver_advise
