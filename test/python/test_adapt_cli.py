@@ -46,7 +46,7 @@ def test_energy_target_met_last_level_written(pecplas, tmp_path):
 @pytest.mark.parametrize("args, expected", [
     (["--target-error", "1x"], "expected a relative error such as 1% or 0.01"),
     (["--target-error", "150%"], "expected a relative error such as 1% or 0.01"),
-    (["--target-error", "1%", "--goal", "node:0:y"], "expected node:N:x, node:N:y"),
+    (["--target-error", "1%", "--goal", "node:0:y"], "expected energy, node:N:x, node:N:y, reaction:SET"),
     (["--target-error", "1%", "--goal", "node:9999:y"], "the deck has no node 9999"),
     (["--goal", "node:21:y"], "--goal and --max-dofs need --target-error"),
 ])
@@ -75,7 +75,7 @@ def test_adapt_keyword_runs_the_loop(pecplas, tmp_path):
 @pytest.mark.parametrize("line, expected", [
     ("*ADAPT, TARGET=150%", "TARGET: expected a relative error such as 1% or 0.01"),
     ("*ADAPT, GOAL=node:21:y", "expected TARGET=<relative error>"),
-    ("*ADAPT, TARGET=1%, GOAL=node:21:w", "GOAL: expected node:N:x, node:N:y"),
+    ("*ADAPT, TARGET=1%, GOAL=node:21:w", "GOAL: expected energy, node:N:x, node:N:y, reaction:SET"),
     ("*ADAPT, TARGET=1%, MAX_DOFS=0", "MAX_DOFS"),
 ])
 def test_adapt_keyword_errors_name_the_line(pecplas, tmp_path, line, expected):
