@@ -1,6 +1,6 @@
 """Goal-oriented adaptive runs (`doc/adapt.md`) through the release executable.
 
-- S2 pile at 2000 kN (thesis chapter IV; the decks of doc/bench's work-precision series):
+- S2 pile at 2000 kN (thesis chapter II §2; the decks of doc/bench's work-precision series):
   `--target-error 1% --goal node:1:y` on the head settlement ends within 1 % of the model's
   Richardson reference (doc/bench/work_precision.md) at fewer DOFs than the uniform mesh series
   needs for the same error, for the Mohr-Coulomb interface (Q4 + GOODMAN4), Katona contact (Q4)
@@ -163,3 +163,22 @@ def test_limit_goal_converges_to_prandtl(tmp_path):
     assert errors[-1] <= 0.02
     estimate = levels[-1][2] / 100.0
     assert errors[-1] / 3.0 <= estimate <= 3.0 * errors[-1]
+
+
+def test_strip_footing_example(tmp_path):
+    """input/examples/strip_footing.inp (elastic, Q8, self-weight then 100 kPa): the energy
+    goal is met at 1 % with one line per level; the base reaction is the weight plus the
+    footing load on every level."""
+    text = (ROOT / "input/examples/strip_footing.inp").read_text()
+    rc, out, err, levels = run(text, tmp_path, "energy", "--target-error", "1%")
+    assert rc == 0 and "target met" in out, out + err
+    dofs = [lv[0] for lv in levels]
+    assert len(levels) >= 3 and dofs == sorted(set(dofs))
+    # the energy estimate is the goal error: only the last level is below 1 %
+    assert levels[-1][2] <= 1.0 and all(lv[2] > 1.0 for lv in levels[:-1])
+    rc, out, err, levels = run(text, tmp_path, "base", "--target-error", "1%",
+                               "--goal", "reaction:base")
+    assert rc == 0, out + err
+    # equilibrium: 18 kN/m3 x 4 m x 2 m + 100 kPa x 1 m = 244 kN/m; elastic runs converge
+    # in one iteration, so only round-off (1e-9 relative) separates the two
+    assert all(abs(value - 244.0) <= 1e-9 * 244.0 for _, value, _ in levels), levels
