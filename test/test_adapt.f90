@@ -16,6 +16,8 @@ module test_adapt
    use pecplas_driver_adapt, only: adapt_options_t, adapt_level_t, adapt_model, run_level, &
       goal_extrapolation
    use pecplas_testing, only: unittest_t, new_unittest, check
+   use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec, GOAL_ENERGY, &
+      GOAL_NODE, GOAL_REACTION, GOAL_LIMIT
    implicit none (type, external)
    private
    public :: collect_adapt
@@ -28,6 +30,7 @@ contains
    subroutine collect_adapt(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('aitken_geometric', test_aitken), &
+               new_unittest('goal_forms', test_goal_forms), &
                new_unittest('lshape_fewer_dofs', test_lshape), &
                new_unittest('goal_target_stops', test_goal)]
    end subroutine collect_adapt
@@ -40,6 +43,43 @@ contains
       if (allocated(error)) return
       call check(error, goal_extrapolation([1.0_wp]) < 0.0_wp, 'one level: unknown (-1)')
    end subroutine test_aitken
+
+   !> Every accepted goal form gives its kind, node, set and component; malformed ones a
+   !> message naming the accepted forms.
+   subroutine test_goal_forms(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(goal_spec_t) :: g
+      character(len=:), allocatable :: msg
+      character(len=20), parameter :: bad(8) = [character(len=20) :: 'node:0:y', 'node:3', &
+         'node:3:w', 'node:x3:y', 'reaction:', 'reaction:a:w', 'limits', 'reaction:a b']
+      integer :: i
+      call parse_goal_spec('', g, msg)
+      call check(error, .not. allocated(msg) .and. g%kind == GOAL_ENERGY, "'' is energy")
+      if (allocated(error)) return
+      call parse_goal_spec('node:12:z', g, msg)
+      call check(error, .not. allocated(msg) .and. g%kind == GOAL_NODE .and. g%node_id == 12 &
+         .and. g%dof == 2, 'node:12:z')
+      if (allocated(error)) return
+      call parse_goal_spec('reaction:base', g, msg)
+      call check(error, .not. allocated(msg) .and. g%kind == GOAL_REACTION .and. &
+         g%set == 'base' .and. g%dof == 0, 'reaction:base: the loaded direction (dof 0)')
+      if (allocated(error)) return
+      call parse_goal_spec('reaction:base:x', g, msg)
+      call check(error, .not. allocated(msg) .and. g%set == 'base' .and. g%dof == 1, &
+         'reaction:base:x')
+      if (allocated(error)) return
+      call parse_goal_spec('limit', g, msg)
+      call check(error, .not. allocated(msg) .and. g%kind == GOAL_LIMIT, 'limit')
+      if (allocated(error)) return
+      do i = 1, size(bad)
+         call parse_goal_spec(trim(bad(i)), g, msg)
+         call check(error, allocated(msg), 'refused: '//trim(bad(i)))
+         if (allocated(error)) return
+         call check(error, index(msg, 'reaction:SET') > 0 .and. index(msg, 'limit') > 0, &
+            'the message names the accepted forms: '//msg)
+         if (allocated(error)) return
+      end do
+   end subroutine test_goal_forms
 
    !> Uniform levels 0..4 (all marked) and the adaptive sequence (theta 0.5) up to half the
    !> DOFs of uniform level 4. The energy error is ||e||^2 = ||u||^2 - ||u_h||^2 (Galerkin,

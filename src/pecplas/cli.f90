@@ -40,7 +40,8 @@ module pecplas_cli
    character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
       '[--restart OLD.h5] [--strict] | '// &
       'pecplas --advise DECK [--goal node:N:x|y | --advise-node N] [--max-dofs N] | '// &
-      'pecplas DECK --target-error E% [--goal node:N:x|y] [--max-dofs N] [-o FILE.h5]'
+      'pecplas DECK --target-error E% [--goal node:N:x|y | reaction:SET[:x|y] | limit] '// &
+      '[--max-dofs N] [-o FILE.h5]'
 
 contains
 
@@ -135,7 +136,8 @@ contains
                'is an input error: exit 2, no results file.'
             write (*, '(a)') '  --target-error E: adaptive refinement (solve, estimate, '// &
                'refine the elements with the largest indicators, re-solve) until the '// &
-               'estimated error of the goal (--goal node:N:x|y, default the energy norm) is '// &
+               'estimated error of the goal (--goal node:N:x|y, reaction:SET[:x|y] the support '// &
+               'reactions on a node set, limit the limit load; default the energy norm) is '// &
                'below E, or --max-dofs (default 100000) is reached; writes the last level.'
             write (*, '(a)') '  --advise: runs the first loading step under MODIFIED_NEWTON/'// &
                'NEWTON and x1/2, x1, x2 increments on each mesh of the adaptive sequence '// &

@@ -46,9 +46,14 @@ def test_energy_target_met_last_level_written(pecplas, tmp_path):
 @pytest.mark.parametrize("args, expected", [
     (["--target-error", "1x"], "expected a relative error such as 1% or 0.01"),
     (["--target-error", "150%"], "expected a relative error such as 1% or 0.01"),
-    (["--target-error", "1%", "--goal", "node:0:y"], "expected node:N:x, node:N:y"),
+    (["--target-error", "1%", "--goal", "node:0:y"], "expected energy, node:N:x, node:N:y, reaction:SET"),
     (["--target-error", "1%", "--goal", "node:9999:y"], "the deck has no node 9999"),
     (["--goal", "node:21:y"], "--goal and --max-dofs need --target-error"),
+    (["--target-error", "1%", "--goal", "reaction:"], "reaction:SET:y (r, z, 1, 2 for x, y) "
+                                                    "or limit, got 'reaction:'"),
+    (["--target-error", "1%", "--goal", "reaction:base:w"], "got 'reaction:base:w'"),
+    (["--target-error", "1%", "--goal", "reaction:nosuch"], "no set 'nosuch'"),
+    (["--target-error", "1%", "--goal", "limits"], "expected energy, node:N:x"),
 ])
 def test_bad_options_exit_2_nothing_written(pecplas, tmp_path, args, expected):
     out = tmp_path / "l.h5"
@@ -72,11 +77,28 @@ def test_adapt_keyword_runs_the_loop(pecplas, tmp_path):
     assert levels(r.stdout) == levels(c.stdout) and len(levels(r.stdout)) >= 2
 
 
+def test_adapt_keyword_reaction_goal(pecplas, tmp_path):
+    """*ADAPT, GOAL=reaction:base runs the same levels as --goal reaction:base."""
+    deck = tmp_path / "l_reaction.inp"
+    deck.write_text(DECK.read_text() + "*ADAPT, TARGET=1%, GOAL=reaction:base, MAX_DOFS=400\n")
+    r = run(pecplas, deck, "-o", tmp_path / "deck.h5")
+    c = run(pecplas, DECK, "--target-error", "1%", "--goal", "reaction:base", "--max-dofs",
+            400, "-o", tmp_path / "cli.h5")
+    assert "reaction on node set 'base'" in r.stdout, r.stdout + r.stderr
+    lv = [m.groups()[1:6] for m in map(LEVEL.match, r.stdout.splitlines()) if m]
+    assert lv == [m.groups()[1:6] for m in map(LEVEL.match, c.stdout.splitlines()) if m]
+    assert len(lv) >= 1 and r.returncode == c.returncode
+
+
 @pytest.mark.parametrize("line, expected", [
     ("*ADAPT, TARGET=150%", "TARGET: expected a relative error such as 1% or 0.01"),
     ("*ADAPT, GOAL=node:21:y", "expected TARGET=<relative error>"),
-    ("*ADAPT, TARGET=1%, GOAL=node:21:w", "GOAL: expected node:N:x, node:N:y"),
+    ("*ADAPT, TARGET=1%, GOAL=node:21:w", "GOAL: expected energy, node:N:x, node:N:y, reaction:SET"),
     ("*ADAPT, TARGET=1%, MAX_DOFS=0", "MAX_DOFS"),
+    ("*ADAPT, TARGET=1%, GOAL=reaction:nosuch", "GOAL: expected reaction:SET with SET a node "
+                                                "set of the deck (*NSET), no set 'nosuch'"),
+    ("*ADAPT, TARGET=1%, GOAL=node:9999:y", "GOAL: the deck has no node 9999"),
+    ("*ADAPT, TARGET=1%, GOAL=limit:2", "GOAL: expected energy"),
 ])
 def test_adapt_keyword_errors_name_the_line(pecplas, tmp_path, line, expected):
     text = DECK.read_text()

@@ -1,4 +1,4 @@
-!> `pecplas DECK --target-error E[%] [--goal node:N:x|y] [--max-dofs N] [-o FILE]`: the
+!> `pecplas DECK --target-error E[%] [--goal GOAL] [--max-dofs N] [-o FILE]`: the
 !> adaptive loop of pecplas_driver_adapt from the command line. Prints a line per level and
 !> writes the results of the last level (the one that met the target, or the last within
 !> the DOF budget) to FILE (default output/<deck>.h5).
@@ -12,7 +12,9 @@ module pecplas_driver_adapt_main
    use pecplas_files, only: make_directories, path_stem, path_dir
    use pecplas_command, only: command_error
    use pecplas_strings, only: itoa
-   use pecplas_model_adapt_request, only: parse_target, parse_goal
+   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_model_adapt_request, only: parse_target, parse_goal, parse_goal_spec, &
+      goal_spec_t, GOAL_NODE, GOAL_REACTION, GOAL_LIMIT
    implicit none (type, external)
    private
 
@@ -29,13 +31,15 @@ contains
       type(adapt_level_t), allocatable :: levels(:)
       type(error_t), allocatable :: error
       character(len=:), allocatable :: msg
-      integer :: node_id, n
+      type(goal_spec_t) :: spec
+      type(thread_setting_t) :: threads
+      integer :: n
       call parse_target(target, opts%target, msg)
       if (allocated(msg)) then
          code = command_error('pecplas', EXIT_INPUT, '--target-error: '//msg)
          return
       end if
-      call parse_goal(goal, node_id, opts%goal_dof, msg)
+      call parse_goal_spec(goal, spec, msg)
       if (allocated(msg)) then
          code = command_error('pecplas', EXIT_INPUT, '--goal: '//msg)
          return
@@ -45,22 +49,41 @@ contains
          code = command_error('pecplas', error%exit_code(), error%text())
          return
       end if
-      if (node_id > 0) then
-         opts%goal_node = findloc(model%mesh%node_id, node_id, 1)
+      ! the deck's *SOLVER THREADS= or OMP_NUM_THREADS, else one thread, as for one run
+      threads = resolve_threads(model%solver%threads)
+      call apply_threads(threads)
+      model%solver%threads = threads%n
+      opts%goal_kind = spec%kind
+      opts%goal_dof = spec%dof
+      msg = 'the energy norm'
+      select case (spec%kind)
+      case (GOAL_NODE)
+         opts%goal_node = findloc(model%mesh%node_id, spec%node_id, 1)
          if (opts%goal_node == 0) then
             code = command_error('pecplas', EXIT_INPUT, '--goal: the deck has no node '// &
-               itoa(node_id))
+               itoa(spec%node_id))
             return
          end if
-      end if
+         msg = 'node '//itoa(spec%node_id)//' '//merge('x', 'y', opts%goal_dof == 1)
+      case (GOAL_REACTION)
+         if (model%mesh%find_nset(spec%set) == 0) then
+            code = command_error('pecplas', EXIT_INPUT, '--goal: expected reaction:SET '// &
+               "with SET a node set of the deck (*NSET), no set '"//spec%set//"'")
+            return
+         end if
+         opts%goal_set = spec%set
+         msg = "the reaction on node set '"//spec%set//"' (the loaded direction)"
+         if (spec%dof > 0) msg = "the reaction on node set '"//spec%set//"' ("// &
+            merge('x', 'y', spec%dof == 1)//')'
+      case (GOAL_LIMIT)
+         msg = 'the limit load'
+      end select
       if (max_dofs > 0) opts%max_dofs = max_dofs
       opts%scratch = outfile_in
       if (len(opts%scratch) == 0) opts%scratch = 'output/'//path_stem(deck)//'.h5'
       if (len(path_dir(opts%scratch)) > 0) call make_directories(path_dir(opts%scratch))
       opts%keep = .true.
       opts%verbose = .true.
-      msg = 'the energy norm'
-      if (node_id > 0) msg = 'node '//itoa(node_id)//' '//merge('x', 'y', opts%goal_dof == 1)
       write (*, '(a)') 'pecplas '//deck//': adaptive refinement to '//trim(target)//' on '// &
          msg//', at most '//itoa(opts%max_dofs)//' DOFs'
       write (*, '(2x,a5,2x,a10,2x,a9,2x,a10,2x,a14,2x,a12,2x,a9)') 'level', 'DOFs', &

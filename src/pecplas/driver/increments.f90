@@ -23,6 +23,7 @@ module pecplas_driver_increments
    use pecplas_driver_arc_path, only: arc_request_t, arc_end_t, trace_arc, END_TARGET, &
       END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_increment, only: limit_point_t
    use pecplas_strings, only: itoa, g6
    use pecplas_driver_timers, only: wall_time
    use pecplas_signals, only: interrupt_requested, interrupt_signal
@@ -35,13 +36,15 @@ contains
 
    !> Runs every step. `status`: 'completed', 'limit load', 'diverged' or 'stopped';
    !> `message` says why a run stopped. Converged increments are written as they come.
-   subroutine run_increments(model, problem, results, quiet, status, message, error)
+   !> `limit`: where the limit is, when the status is 'limit load' (as written to /limit).
+   subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(results_file_t), intent(inout) :: results
       logical, intent(in) :: quiet
       character(len=:), allocatable, intent(out) :: status, message
       type(error_t), allocatable, intent(out) :: error
+      type(limit_point_t), intent(out), optional :: limit
       type(run_t) :: run
       real(wp), allocatable :: f0(:), ftarget(:)
       integer :: istep, istep0
@@ -77,6 +80,7 @@ contains
       end do
       if (allocated(error)) return
       if (status == 'limit load') call results%write_limit(run%limit, error)
+      if (present(limit) .and. status == 'limit load') limit = run%limit
    end subroutine run_increments
 
    !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and

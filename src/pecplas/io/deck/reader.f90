@@ -13,7 +13,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_reader_materials, only: read_material, read_section, resolve_sections
    use pecplas_io_deck_reader_loads, only: read_boundary, read_load
    use pecplas_io_deck_reader_options, only: read_text, read_units, read_analysis, read_solver, &
-      read_adapt, &
+      read_adapt, resolve_adapt_goal, &
       read_output, read_step
    use pecplas_io_deck_resolve_mesh, only: build_mesh
    use pecplas_io_deck_reader_initial, only: read_initial_stress, resolve_initial_stress
@@ -111,6 +111,8 @@ contains
       if (allocated(error)) return
       ! last: splitting nodes for generated joints extends supports and patterns
       call resolve_joints(state, model, error)
+      if (allocated(error)) return
+      call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return
       call record_places(state, model)
       call check_usage(state, model)

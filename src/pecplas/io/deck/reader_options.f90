@@ -12,13 +12,15 @@ module pecplas_io_deck_reader_options
    use pecplas_model, only: model_t
    use pecplas_model_units, only: parse_units
    use pecplas_parallel, only: parallel_built
-   use pecplas_model_adapt_request, only: parse_target, parse_goal
+   use pecplas_model_adapt_request, only: parse_target, parse_goal_spec, goal_spec_t, &
+      GOAL_NODE, GOAL_REACTION
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
       NONLINEAR_METHODS
    implicit none (type, external)
    private
 
-   public :: read_text, read_units, read_analysis, read_solver, read_output, read_step, read_adapt
+   public :: read_text, read_units, read_analysis, read_solver, read_output, read_step, read_adapt, &
+      resolve_adapt_goal
 
 contains
 
@@ -160,7 +162,8 @@ contains
       call param_yes_no(state, block, 'ERROR_ESTIMATE', model%output%error_estimate, error)
    end subroutine read_output
 
-   !> *ADAPT, TARGET=1% [, GOAL=energy|node:N:x|y] [, MAX_DOFS=n]: `pecplas DECK` runs the
+   !> *ADAPT, TARGET=1% [, GOAL=energy|node:N:x|y|reaction:SET[:x|y]|limit] [, MAX_DOFS=n]:
+   !> `pecplas DECK` runs the
    !> adaptive loop (the command line's --target-error, --goal, --max-dofs win over it).
    subroutine read_adapt(state, model, block, error)
       type(deck_state_t), intent(in) :: state
@@ -169,7 +172,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: text, msg
       real(wp) :: value
-      integer :: node, dof
+      type(goal_spec_t) :: goal
       logical :: found
       call block%kw%check_keys(state%lines%get(block%at), [character(len=8) :: 'TARGET', 'GOAL', &
          'MAX_DOFS'], error)
@@ -193,7 +196,7 @@ contains
       model%adapt%goal = ''
       call block%kw%get('GOAL', text, found)
       if (found) then
-         call parse_goal(text, node, dof, msg)
+         call parse_goal_spec(text, goal, msg)
          if (allocated(msg)) then
             call line_error(state, block%at, 'GOAL: '//msg, error)
             return
@@ -203,7 +206,28 @@ contains
       call param_int(state, block, 'MAX_DOFS', 1, model%adapt%max_dofs, error)
       if (allocated(error)) return
       model%adapt%given = .true.
+      model%adapt%at = block%at
    end subroutine read_adapt
+
+   !> Once the mesh is built: the node or node set that *ADAPT's GOAL names exists.
+   subroutine resolve_adapt_goal(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      type(goal_spec_t) :: goal
+      character(len=:), allocatable :: msg
+      if (.not. model%adapt%given) return
+      call parse_goal_spec(model%adapt%goal, goal, msg)
+      select case (goal%kind)
+      case (GOAL_NODE)
+         if (findloc(model%mesh%node_id, goal%node_id, 1) == 0) call line_error(state, &
+            model%adapt%at, 'GOAL: the deck has no node '//itoa(goal%node_id), error)
+      case (GOAL_REACTION)
+         if (model%mesh%find_nset(goal%set) == 0) call line_error(state, model%adapt%at, &
+            "GOAL: expected reaction:SET with SET a node set of the deck (*NSET), no set '"// &
+            goal%set//"'", error)
+      end select
+   end subroutine resolve_adapt_goal
 
    !> *STEP [, NAME=name] [, INCREMENTS=n] [, CONTROL=LOAD|ARC_LENGTH] -- data: pattern,
    !> target_factor. Arc-length options: MAX_INCREMENTS=m, ITERATIONS=i (wanted per
