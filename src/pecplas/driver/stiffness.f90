@@ -13,7 +13,7 @@ module pecplas_driver_stiffness
    use pecjoin_katona_operator, only: add_augmentation
    use pecplas_fe_share, only: share_of_run
    use pecplas_linalg_mumps, only: mumps_summed_input
-   use pecplas_parallel, only: parallel_size, parallel_rank, parallel_sum, parallel_max_int
+   use pecplas_parallel, only: parallel_size, parallel_rank, parallel_sum, parallel_max, parallel_max_int
    implicit none (type, external)
    private
 
@@ -61,7 +61,8 @@ contains
       logical, intent(in), optional :: tangent_solver
       real(wp) :: t0
       type(place_t) :: p
-      logical :: separate, parts
+      logical :: separate, parts, mumps
+      real(wp) :: c0
 
       separate = .false.
       if (present(tangent_solver)) separate = tangent_solver .and. problem%separate_tangent
@@ -71,9 +72,12 @@ contains
       end if
 
       parts = partitioned(model)
+      mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
+      if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
          problem%kbuild, problem%k, error, share_of_run(parts))
+      if (mumps) call rank_times(problem, wall_time() - t0, c0)
       if (parts) call agree_on_error(error)
       if (allocated(error)) return
       if (problem%katona%alpha > 0.0_wp .and. (.not. parts .or. parallel_rank() == 0)) then
@@ -115,13 +119,16 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: t0
-      logical :: parts
+      real(wp) :: t0, c0
+      logical :: parts, mumps
       parts = partitioned(model)
+      mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
       problem%tangent_factorised = .false.
+      if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .true., &
          problem%kbuild, problem%k, error, share_of_run(parts))
+      if (mumps) call rank_times(problem, wall_time() - t0, c0)
       if (parts) call agree_on_error(error)
       if (allocated(error)) return
       problem%time%assembly = problem%time%assembly + (wall_time() - t0)
@@ -173,6 +180,26 @@ contains
       type(model_t), intent(in) :: model
       partitioned = model%solver%linear == 'MUMPS' .and. parallel_size() > 1
    end function partitioned
+
+   !> Adds this assembly's `wall` seconds and the CPU seconds since `cpu0` to the rank's
+   !> times and updates their smallest and largest over the ranks (measured before any rank
+   !> waits for another). The CPU time is the work done even when ranks share busy cores.
+   subroutine rank_times(problem, wall, cpu0)
+      type(problem_t), intent(inout) :: problem
+      real(wp), intent(in) :: wall, cpu0
+      real(wp) :: t(4), c1
+      call cpu_time(c1)
+      associate (tm => problem%time)
+         tm%rank_wall = tm%rank_wall + wall
+         tm%rank_cpu = tm%rank_cpu + (c1 - cpu0)
+         t = [tm%rank_wall, -tm%rank_wall, tm%rank_cpu, -tm%rank_cpu]
+         call parallel_max(t)
+         tm%rank_wall_max = t(1)
+         tm%rank_wall_min = -t(2)
+         tm%rank_cpu_max = t(3)
+         tm%rank_cpu_min = -t(4)
+      end associate
+   end subroutine rank_times
 
    !> The same outcome on every rank after a partitioned assembly: a rank whose elements
    !> all passed takes the failure of another (its own message is on that rank's stderr).
