@@ -133,16 +133,14 @@ def main():
                 extra = sorted(set(os.listdir(rundir)) - {"results.h5", "results.xmf"})
                 if extra:
                     problems.append(f"files written besides rank 0's results: {extra}")
-                split = re.search(r"ranks: (\d+), each assembles the stiffness of its own "
-                                  r"elements: wall [\d.]+ to [\d.]+ s, CPU ([\d.]+) to "
-                                  r"([\d.]+) s", proc.stdout)
-                if n > 1 and not (split and int(split.group(1)) == n):
+                split = assembly_split(proc.stdout)
+                if n > 1 and not (split and split[0] == n):
                     problems.append("summary does not report a partitioned assembly")
                 if problems:
                     failures += 1
                     print(f"FAIL {deck} np={n}:\n  " + "\n  ".join(problems))
                 else:
-                    where = (f"; assembly CPU per rank {split.group(2)}-{split.group(3)} s"
+                    where = (f"; assembly CPU per rank {split[1]}-{split[2]} s"
                              if split else "")
                     print(f"ok   {deck} np={n}: MUMPS = serial within {worst:.1e} "
                           f"(tolerance {TOL:.0e}); {t:.2f} s vs serial {t_ref:.2f} s{where}")
@@ -155,6 +153,20 @@ def main():
     return 1 if failures else 0
 
 
+def assembly_split(stdout):
+    """(ranks, smallest CPU s, largest CPU s) from the summary's 'ranks:' line, or None."""
+    m = re.search(r"ranks: (\d+), each assembles the stiffness of its own elements: "
+                  r"wall [\d.]+ to [\d.]+ s, CPU ([\d.]+) to ([\d.]+) s", stdout)
+    return (int(m.group(1)), float(m.group(2)), float(m.group(3))) if m else None
+
+
+def unit_passed(returncode, stdout, nranks):
+    """True when the test program exited 0 and each of the ranks passed tests, none failed."""
+    tallies = re.findall(r"^(\d+) passed, (\d+) failed$", stdout, re.M)
+    return (returncode == 0 and len(tallies) == nranks
+            and all(int(p) > 0 and int(f) == 0 for p, f in tallies))
+
+
 def check_unit(tests_bin, suites, nps, env):
     """Number of failed suite runs under mpirun (0: every rank passed every test)."""
     failures = 0
@@ -162,9 +174,7 @@ def check_unit(tests_bin, suites, nps, env):
         for n in nps:
             proc, t = run(["mpirun", "-np", str(n), tests_bin, suite], env)
             tallies = re.findall(r"^(\d+) passed, (\d+) failed$", proc.stdout, re.M)
-            ok = (proc.returncode == 0 and len(tallies) == n
-                  and all(int(p) > 0 and int(f) == 0 for p, f in tallies))
-            if ok:
+            if unit_passed(proc.returncode, proc.stdout, n):
                 print(f"ok   suite {suite} np={n}: {tallies[0][0]} tests passed on each of "
                       f"{n} rank(s) ({t:.1f} s)")
             else:
