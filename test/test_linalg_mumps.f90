@@ -125,7 +125,6 @@ contains
       type(error_t), allocatable :: e
       type(csc_t) :: a
       logical, allocatable :: is_x(:)
-      real(wp), allocatable :: xref(:), b(:), x(:)
       integer :: k
       if (.not. mumps_available()) then
          call new_linear_solver('MUMPS', s, e)
@@ -143,18 +142,12 @@ contains
          ! a second factorisation on the same analysis (the Newton loop's reuse)
          if (.not. allocated(error)) call s%factorise(a, error)
          if (allocated(error)) return
-         xref = det_vector(a%n, 11)
-         allocate (b(a%n), x(a%n))
-         call a%matvec(xref, b)
-         call s%solve(b, x, error)
-         if (allocated(error)) return
-         call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS error in x', &
-            atol=1.0e-10_wp*maxval(abs(xref)))
+         call check_solution(s, a, 11, 'MUMPS error in x', error)
          if (allocated(error)) return
          call check(error, s%n_analyses == 1 .and. s%n_factorisations == 2, &
             'one analysis reused by two factorisations')
          if (allocated(error)) return
-         deallocate (b, x, s)
+         deallocate (s)
       end do
    end subroutine test_solves
 
@@ -192,7 +185,6 @@ contains
       class(linear_solver_t), allocatable :: s
       type(error_t), allocatable :: e
       type(csc_t) :: a0, a1
-      real(wp), allocatable :: xref(:), b(:), x(:)
       if (.not. mumps_available()) then
          call new_linear_solver('MUMPS', s, e)
          call check(error, allocated(e), 'serial build: MUMPS refused')
@@ -210,13 +202,7 @@ contains
       if (.not. allocated(error)) call s%factorise(a0, error)
       if (.not. allocated(error)) call s%factorise(a1, error)
       if (allocated(error)) return
-      xref = det_vector(a1%n, 5)
-      allocate (b(a1%n), x(a1%n))
-      call a1%matvec(xref, b)
-      call s%solve(b, x, error)
-      if (allocated(error)) return
-      call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS x after LU', &
-         atol=1.0e-10_wp*maxval(abs(xref)))
+      call check_solution(s, a1, 5, 'MUMPS x after LU', error)
       if (allocated(error)) return
       call check(error, s%n_analyses == 2 .and. index(s%ordering, 'LU') > 0, &
          'analysed again as LU, got ordering '//s%ordering)
@@ -234,7 +220,6 @@ contains
       type(csc_t) :: a, part
       type(coo_t) :: coo
       logical, allocatable :: is_x(:)
-      real(wp), allocatable :: xref(:), b(:), x(:)
       integer :: k, j, p, i
       if (.not. mumps_available()) then
          call new_linear_solver('MUMPS', s, e)
@@ -262,19 +247,31 @@ contains
          call s%analyse(part, error)
          if (.not. allocated(error)) call s%factorise(part, error)
          if (allocated(error)) return
-         xref = det_vector(a%n, 7)
-         allocate (b(a%n), x(a%n))
-         call a%matvec(xref, b)
-         call s%solve(b, x, error)
-         if (allocated(error)) return
-         call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS x from summed '// &
-            'parts', atol=1.0e-10_wp*maxval(abs(xref)))
+         call check_solution(s, a, 7, 'MUMPS x from summed parts', error)
          if (allocated(error)) return
          call check(error, index(s%ordering, trim(merge('LDL^T', 'LU   ', k == 1))) > 0, &
             'factorisation kind agreed by the ranks, got '//s%ordering)
          if (allocated(error)) return
-         deallocate (b, x, s)
+         deallocate (s)
       end do
    end subroutine test_summed_parts
+
+   !> Solves A x = A x_ref with the factorised `s` (x_ref = det_vector(n, seed)): x = x_ref
+   !> within 1e-10 of max|x_ref| (well-conditioned fixtures, backward-stable factorisations).
+   subroutine check_solution(s, a, seed, what, error)
+      class(linear_solver_t), intent(inout) :: s
+      type(csc_t), intent(in) :: a
+      integer, intent(in) :: seed
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: xref(:), b(:), x(:)
+      xref = det_vector(a%n, seed)
+      allocate (b(a%n), x(a%n))
+      call a%matvec(xref, b)
+      call s%solve(b, x, error)
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, what, &
+         atol=1.0e-10_wp*maxval(abs(xref)))
+   end subroutine check_solution
 
 end module test_linalg_mumps
