@@ -2,10 +2,14 @@
 !> the default serial build, that MUMPS is refused as an input error naming the deck line and
 !> how to build with it; in the MPI build (one rank here; `make test-mpi` runs whole decks
 !> on 1 and 2 ranks), that MUMPS solves and flags mechanisms like CHOLMOD and UMFPACK.
+!> `make test-mpi` also runs this suite under `mpirun -np 1` and `-np 2`: every rank runs
+!> the same tests, so the collective MUMPS calls match.
 module test_linalg_mumps
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, ERR_SINGULAR, ERR_INPUT
-   use pecplas_linalg_sparse, only: csc_t
+   use pecplas_linalg_sparse, only: csc_t, coo_t, coo_to_csc
+   use pecplas_linalg_mumps, only: mumps_summed_input
+   use pecplas_parallel, only: parallel_rank, parallel_size
    use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver, mumps_available
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
@@ -17,8 +21,8 @@ module test_linalg_mumps
    private
    public :: collect_linalg_mumps
 
-   !> Where the test writes its deck (the default deck with LINEAR=MUMPS).
-   character(len=*), parameter :: DECK = 'build/test-data/mumps_default.inp'
+   !> Where the test writes its deck (the default deck with LINEAR=MUMPS), one per MPI rank.
+   character(len=*), parameter :: DECK_STEM = 'build/test-data/mumps_default'
 
 contains
 
@@ -28,8 +32,17 @@ contains
                new_unittest('factory', test_factory), &
                new_unittest('symmetric_and_unsymmetric', test_solves), &
                new_unittest('mechanism_flagged', test_singular), &
-               new_unittest('symmetry_lost', test_symmetry_lost)]
+               new_unittest('symmetry_lost', test_symmetry_lost), &
+               new_unittest('summed_parts', test_summed_parts)]
    end subroutine collect_linalg_mumps
+
+   !> This rank's copy of the deck (ranks of `mpirun -np 2` would otherwise write one file).
+   function deck() result(path)
+      character(len=:), allocatable :: path
+      character(len=16) :: buf
+      write (buf, '(a,i0)') '_r', parallel_rank()
+      path = DECK_STEM//trim(buf)//'.inp'
+   end function deck
 
    !> input/default.inp with LINEAR=MUMPS on its *SOLVER line; `at`: that line's number.
    subroutine write_deck(at, error)
@@ -41,7 +54,7 @@ contains
       open (newunit=in, file='input/default.inp', status='old', action='read', iostat=ios)
       call check(error, ios == 0, 'input/default.inp readable')
       if (allocated(error)) return
-      open (newunit=out, file=DECK, status='replace', action='write')
+      open (newunit=out, file=deck(), status='replace', action='write')
       at = 0
       n = 0
       do
@@ -68,7 +81,7 @@ contains
       integer :: at
       call write_deck(at, error)
       if (allocated(error)) return
-      call read_deck(DECK, model, e)
+      call read_deck(deck(), model, e)
       if (mumps_available()) then
          call check(error, .not. allocated(e), 'MPI build reads LINEAR=MUMPS')
          if (allocated(error)) return
@@ -80,7 +93,7 @@ contains
       write (where, '(a,i0,a)') ':', at, ':'
       call check(error, e%exit_code() == 2, 'an input error: exit 2')
       if (allocated(error)) return
-      call check(error, index(e%text(), DECK//trim(where)) == 1, 'message starts with '// &
+      call check(error, index(e%text(), deck()//trim(where)) == 1, 'message starts with '// &
          'deck:line, got: '//e%text())
       if (allocated(error)) return
       call check(error, index(e%text(), 'make build-mpi') > 0, 'message says how to build '// &
@@ -112,7 +125,6 @@ contains
       type(error_t), allocatable :: e
       type(csc_t) :: a
       logical, allocatable :: is_x(:)
-      real(wp), allocatable :: xref(:), b(:), x(:)
       integer :: k
       if (.not. mumps_available()) then
          call new_linear_solver('MUMPS', s, e)
@@ -130,18 +142,12 @@ contains
          ! a second factorisation on the same analysis (the Newton loop's reuse)
          if (.not. allocated(error)) call s%factorise(a, error)
          if (allocated(error)) return
-         xref = det_vector(a%n, 11)
-         allocate (b(a%n), x(a%n))
-         call a%matvec(xref, b)
-         call s%solve(b, x, error)
-         if (allocated(error)) return
-         call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS error in x', &
-            atol=1.0e-10_wp*maxval(abs(xref)))
+         call check_solution(s, a, 11, 'MUMPS error in x', error)
          if (allocated(error)) return
          call check(error, s%n_analyses == 1 .and. s%n_factorisations == 2, &
             'one analysis reused by two factorisations')
          if (allocated(error)) return
-         deallocate (b, x, s)
+         deallocate (s)
       end do
    end subroutine test_solves
 
@@ -179,7 +185,6 @@ contains
       class(linear_solver_t), allocatable :: s
       type(error_t), allocatable :: e
       type(csc_t) :: a0, a1
-      real(wp), allocatable :: xref(:), b(:), x(:)
       if (.not. mumps_available()) then
          call new_linear_solver('MUMPS', s, e)
          call check(error, allocated(e), 'serial build: MUMPS refused')
@@ -197,16 +202,76 @@ contains
       if (.not. allocated(error)) call s%factorise(a0, error)
       if (.not. allocated(error)) call s%factorise(a1, error)
       if (allocated(error)) return
-      xref = det_vector(a1%n, 5)
-      allocate (b(a1%n), x(a1%n))
-      call a1%matvec(xref, b)
-      call s%solve(b, x, error)
-      if (allocated(error)) return
-      call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, 'MUMPS x after LU', &
-         atol=1.0e-10_wp*maxval(abs(xref)))
+      call check_solution(s, a1, 5, 'MUMPS x after LU', error)
       if (allocated(error)) return
       call check(error, s%n_analyses == 2 .and. index(s%ordering, 'LU') > 0, &
          'analysed again as LU, got ordering '//s%ordering)
    end subroutine test_symmetry_lost
+
+   !> Summed input (the partitioned assembly of an MPI run): rank r gives MUMPS only the
+   !> entries (i, j) of A with mod(i + j, N) = r, N ranks (the whole A on one rank); MUMPS
+   !> adds the parts, so A x = A x_ref gives x = x_ref within 1e-10 (well-conditioned
+   !> fixtures, backward-stable factorisations). The split is symmetric in (i, j): the
+   !> symmetric fixture is still factorised as LDL^T, the convection one as LU.
+   subroutine test_summed_parts(error)
+      type(error_t), allocatable, intent(out) :: error
+      class(linear_solver_t), allocatable :: s
+      type(error_t), allocatable :: e
+      type(csc_t) :: a, part
+      type(coo_t) :: coo
+      logical, allocatable :: is_x(:)
+      integer :: k, j, p, i
+      if (.not. mumps_available()) then
+         call new_linear_solver('MUMPS', s, e)
+         call check(error, allocated(e), 'serial build: MUMPS refused')
+         return
+      end if
+      do k = 1, 2
+         if (k == 1) call elastic_square(8, SUPPORT_FIXED, a, is_x, error)
+         if (k == 2) call convection_diffusion(12, 3.0_wp, -2.0_wp, a, error)
+         if (allocated(error)) return
+         call coo%init(a%n, a%nnz(), a%upper)
+         do j = 1, a%n
+            do p = a%colptr(j) + 1, a%colptr(j + 1)
+               i = a%rowind(p) + 1
+               if (a%upper .and. i > j) cycle
+               if (modulo(i + j, parallel_size()) == parallel_rank()) &
+                  call coo%add(i, j, a%values(p))
+            end do
+         end do
+         call coo_to_csc(coo, part, error)
+         if (allocated(error)) return
+         call new_linear_solver('MUMPS', s, error)
+         if (allocated(error)) return
+         call mumps_summed_input(s, .true.)
+         call s%analyse(part, error)
+         if (.not. allocated(error)) call s%factorise(part, error)
+         if (allocated(error)) return
+         call check_solution(s, a, 7, 'MUMPS x from summed parts', error)
+         if (allocated(error)) return
+         call check(error, index(s%ordering, trim(merge('LDL^T', 'LU   ', k == 1))) > 0, &
+            'factorisation kind agreed by the ranks, got '//s%ordering)
+         if (allocated(error)) return
+         deallocate (s)
+      end do
+   end subroutine test_summed_parts
+
+   !> Solves A x = A x_ref with the factorised `s` (x_ref = det_vector(n, seed)): x = x_ref
+   !> within 1e-10 of max|x_ref| (well-conditioned fixtures, backward-stable factorisations).
+   subroutine check_solution(s, a, seed, what, error)
+      class(linear_solver_t), intent(inout) :: s
+      type(csc_t), intent(in) :: a
+      integer, intent(in) :: seed
+      character(len=*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: xref(:), b(:), x(:)
+      xref = det_vector(a%n, seed)
+      allocate (b(a%n), x(a%n))
+      call a%matvec(xref, b)
+      call s%solve(b, x, error)
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(x - xref)), 0.0_wp, 0.0_wp, what, &
+         atol=1.0e-10_wp*maxval(abs(xref)))
+   end subroutine check_solution
 
 end module test_linalg_mumps

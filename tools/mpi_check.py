@@ -9,9 +9,13 @@ largest absolute value (both solvers are backward stable; the converged Newton s
 by the residual tolerance times roundoff, far below 1e-8). Only rank 0 may write: the run's
 directory must hold only the results file and its .xmf afterwards. Decks given with
 --singular hold a mechanism: with MUMPS they must end as input errors (exit 2) that name the
-free node, as CHOLMOD and UMFPACK do, and write no results file.
+free node, as CHOLMOD and UMFPACK do, and write no results file. On more than one rank the
+run's summary must say that each rank assembled the stiffness of its own elements (the
+partitioned assembly, doc/mpi.md). --unit runs Fortran test suites of the MPI build's test
+program (e.g. linalg_mumps) under `mpirun -np N` for each N: every rank must pass them all.
 
 Usage: tools/mpi_check.py PECPLAS_BIN DECK... [--singular DECK...] [--np 1 2] [--work DIR]
+                          [--unit TESTS_BIN SUITE...]
 Exit status 0 when every comparison holds, 1 otherwise (each failure printed).
 """
 
@@ -85,7 +89,10 @@ def main():
     parser.add_argument("--np", nargs="+", type=int, default=[1, 2])
     parser.add_argument("--work", default=None)
     parser.add_argument("--singular", nargs="*", default=[])
+    parser.add_argument("--unit", nargs="+", default=[], metavar="TESTS_BIN SUITE")
     args = parser.parse_args()
+    if len(args.unit) == 1:
+        parser.error("--unit needs the test program and at least one suite")
     env = dict(os.environ, OMP_NUM_THREADS="1")
     # Debian's OpenMPI refuses root unless told (CI runs as root); 2 ranks on 1 core is allowed.
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
@@ -116,8 +123,7 @@ def main():
                 rundir = os.path.join(work, f"{stem}_np{n}")
                 os.makedirs(rundir, exist_ok=True)
                 out = os.path.join(rundir, "results.h5")
-                proc, t = run(["mpirun", "-np", str(n), args.binary, mdeck, "-o", out,
-                               "--quiet"], env)
+                proc, t = run(["mpirun", "-np", str(n), args.binary, mdeck, "-o", out], env)
                 if proc.returncode != 0:
                     print(f"FAIL {deck} np={n}: exit {proc.returncode}\n{proc.stdout}{proc.stderr}")
                     failures += 1
@@ -127,17 +133,55 @@ def main():
                 extra = sorted(set(os.listdir(rundir)) - {"results.h5", "results.xmf"})
                 if extra:
                     problems.append(f"files written besides rank 0's results: {extra}")
+                split = assembly_split(proc.stdout)
+                if n > 1 and not (split and split[0] == n):
+                    problems.append("summary does not report a partitioned assembly")
                 if problems:
                     failures += 1
                     print(f"FAIL {deck} np={n}:\n  " + "\n  ".join(problems))
                 else:
+                    where = (f"; assembly CPU per rank {split[1]}-{split[2]} s"
+                             if split else "")
                     print(f"ok   {deck} np={n}: MUMPS = serial within {worst:.1e} "
-                          f"(tolerance {TOL:.0e}); {t:.2f} s vs serial {t_ref:.2f} s")
+                          f"(tolerance {TOL:.0e}); {t:.2f} s vs serial {t_ref:.2f} s{where}")
         finally:
             os.remove(mdeck)
     for deck in args.singular:
         failures += check_singular(args.binary, deck, args.np, work, env)
+    if args.unit:
+        failures += check_unit(args.unit[0], args.unit[1:], args.np, env)
     return 1 if failures else 0
+
+
+def assembly_split(stdout):
+    """(ranks, smallest CPU s, largest CPU s) from the summary's 'ranks:' line, or None."""
+    m = re.search(r"ranks: (\d+), each assembles the stiffness of its own elements: "
+                  r"wall [\d.]+ to [\d.]+ s, CPU ([\d.]+) to ([\d.]+) s", stdout)
+    return (int(m.group(1)), float(m.group(2)), float(m.group(3))) if m else None
+
+
+def unit_passed(returncode, stdout, nranks):
+    """True when the test program exited 0 and each of the ranks passed tests, none failed."""
+    tallies = re.findall(r"^(\d+) passed, (\d+) failed$", stdout, re.M)
+    return (returncode == 0 and len(tallies) == nranks
+            and all(int(p) > 0 and int(f) == 0 for p, f in tallies))
+
+
+def check_unit(tests_bin, suites, nps, env):
+    """Number of failed suite runs under mpirun (0: every rank passed every test)."""
+    failures = 0
+    for suite in suites:
+        for n in nps:
+            proc, t = run(["mpirun", "-np", str(n), tests_bin, suite], env)
+            tallies = re.findall(r"^(\d+) passed, (\d+) failed$", proc.stdout, re.M)
+            if unit_passed(proc.returncode, proc.stdout, n):
+                print(f"ok   suite {suite} np={n}: {tallies[0][0]} tests passed on each of "
+                      f"{n} rank(s) ({t:.1f} s)")
+            else:
+                failures += 1
+                print(f"FAIL suite {suite} np={n}: exit {proc.returncode}, tallies {tallies}\n"
+                      f"{proc.stdout}{proc.stderr}")
+    return failures
 
 
 def check_singular(binary, deck, nps, work, env):

@@ -16,6 +16,7 @@ module pecjoin_assembly
    use pecjoin_points, only: joint_set_element, joint_element_points, element_context
    use pecjoin_laws_katona, only: is_katona
    use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
+   use pecplas_fe_share, only: share_t
    implicit none (type, external)
    private
 
@@ -90,21 +91,25 @@ contains
    !> consistent tangents of the last update (full Newton); otherwise the elastic tangent
    !> of each point's converged state (modified Newton). Elements run in parallel (OpenMP),
    !> each at a triplet offset counted beforehand: the triplet order is the serial one.
-   subroutine add_joint_stiffness(model, dofs, jstate, tangent, coo, error)
+   !> `share`: this rank's elements only (pecplas_fe_share; Katona sets whole on rank 0).
+   subroutine add_joint_stiffness(model, dofs, jstate, tangent, coo, error, share)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
       type(joint_state_t), intent(in) :: jstate
       logical, intent(in) :: tangent
       type(coo_t), intent(inout) :: coo
       type(error_t), allocatable, intent(out) :: error
+      type(share_t), intent(in), optional :: share
       type(error_t), allocatable :: err
+      type(share_t) :: part
       class(joint_element_t), allocatable :: elem
       type(joint_point_t), allocatable :: pts(:)
       real(wp), allocatable :: ke(:, :)
       integer, allocatable :: idx(:), offset(:)
       real(wp) :: c(2, 2)
-      integer :: s, e, ip, nd, nel, bad
+      integer :: s, e, ip, nd, nel, bad, e1, e2
       if (.not. allocated(model%joint_sets)) return
+      if (present(share)) part = share
       do s = 1, size(model%joint_sets)
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
                     law => model%laws(model%joint_sets(s)%law_index)%law)
@@ -114,20 +119,25 @@ contains
             if (allocated(error)) return
             nd = 2*elem%nnode()
             nel = size(set%conn, 2)
+            call part%range(nel, e1, e2)
+            if (is_katona(law) .and. .not. part%whole()) then
+               e1 = 1
+               e2 = merge(nel, 0, part%rank == 0)
+            end if
             allocate (idx(nd), offset(nel + 1))
-            offset(1) = coo%nnz
-            do e = 1, nel
+            offset(e1) = coo%nnz
+            do e = e1, e2
                call equations(dofs, set%conn(:, e), idx)
                offset(e + 1) = offset(e) + coo%block_size(idx)
             end do
             deallocate (idx) ! private in the loop below
-            call coo%reserve(offset(nel + 1) - coo%nnz)
+            call coo%reserve(offset(e2 + 1) - coo%nnz)
             bad = huge(bad)
             !$omp parallel default(shared) private(e, ip, c, pts, ke, idx, err) &
-            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
+            !$omp if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS)
             allocate (pts(elem%npoint()), ke(nd, nd), idx(nd))
             !$omp do schedule(static)
-            do e = 1, nel
+            do e = e1, e2
                call joint_element_points(model, set, elem, e, pts, err)
                if (allocated(err)) then
                   !$omp critical (pecjoin_assembly_bad)
@@ -150,7 +160,7 @@ contains
             !$omp end do
             deallocate (pts, ke, idx)
             !$omp end parallel
-            coo%nnz = offset(nel + 1)
+            coo%nnz = offset(e2 + 1)
             deallocate (offset)
             if (bad <= nel) then
                ! again, serially, for the message of the first failing element

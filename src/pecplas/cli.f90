@@ -27,7 +27,7 @@ module pecplas_cli
    use pecplas_driver_restart, only: restore_restart
    use pecplas_provenance, only: version_lines
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
-   use pecplas_parallel, only: parallel_rank
+   use pecplas_parallel, only: parallel_rank, parallel_size
    implicit none (type, external)
    private
 
@@ -405,6 +405,12 @@ contains
             sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
             '  residual ', sec(t%residual), ' (laws ', sec(t%laws)//')', '  output ', &
             sec(t%output), '  total ', sec(wall)
+      end associate
+      associate (t => problem%time)
+         if (t%rank_wall_max > 0.0_wp) write (*, '(a,i0,a)') ' ranks: ', parallel_size(), &
+            ', each assembles the stiffness of its own elements: wall '// &
+            sec(t%rank_wall_min)//' to '//sec(t%rank_wall_max)//' s, CPU '// &
+            sec(t%rank_cpu_min)//' to '//sec(t%rank_cpu_max)//' s'
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
          trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'

@@ -3,11 +3,13 @@
 !> MUMPS solver shares the matrix among the ranks. In the default serial build there is one
 !> rank and these procedures do nothing. MPI itself is called from parallel_shim.c.
 module pecplas_parallel
-   use, intrinsic :: iso_c_binding, only: c_int
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
+   use pecplas_kinds, only: wp
    implicit none (type, external)
    private
 
    public :: parallel_built, parallel_init, parallel_finalize, parallel_rank, parallel_size
+   public :: parallel_sum, parallel_min, parallel_max, parallel_max_int, parallel_any
 
    interface
       integer(c_int) function c_built() bind(C, name='pecplas_parallel_built')
@@ -22,6 +24,15 @@ module pecplas_parallel
       end function
       integer(c_int) function c_size() bind(C, name='pecplas_parallel_size')
          import :: c_int
+      end function
+      subroutine c_reduce(x, n, op) bind(C, name='pecplas_parallel_reduce')
+         import :: c_int, c_double
+         real(c_double), intent(inout) :: x(*)
+         integer(c_int), value :: n, op
+      end subroutine
+      integer(c_int) function c_max_int(value) bind(C, name='pecplas_parallel_max_int')
+         import :: c_int
+         integer(c_int), value :: value
       end function
    end interface
 
@@ -51,5 +62,36 @@ contains
    integer function parallel_size()
       parallel_size = int(c_size())
    end function parallel_size
+
+   !> x = its sum over the ranks, on every rank (nothing with one rank). Collective: every
+   !> rank must call it, in the same order, as for the procedures below.
+   subroutine parallel_sum(x)
+      real(wp), intent(inout) :: x(:)
+      call c_reduce(x, int(size(x), c_int), 0_c_int)
+   end subroutine parallel_sum
+
+   !> x = its smallest value over the ranks, element by element, on every rank.
+   subroutine parallel_min(x)
+      real(wp), intent(inout) :: x(:)
+      call c_reduce(x, int(size(x), c_int), 1_c_int)
+   end subroutine parallel_min
+
+   !> x = its largest value over the ranks, element by element, on every rank.
+   subroutine parallel_max(x)
+      real(wp), intent(inout) :: x(:)
+      call c_reduce(x, int(size(x), c_int), 2_c_int)
+   end subroutine parallel_max
+
+   !> The largest `value` over the ranks.
+   integer function parallel_max_int(value)
+      integer, intent(in) :: value
+      parallel_max_int = int(c_max_int(int(value, c_int)))
+   end function parallel_max_int
+
+   !> True on every rank when `flag` is true on some rank.
+   logical function parallel_any(flag)
+      logical, intent(in) :: flag
+      parallel_any = parallel_max_int(merge(1, 0, flag)) == 1
+   end function parallel_any
 
 end module pecplas_parallel

@@ -68,3 +68,40 @@ int pecplas_parallel_size(void) {
     return 1;
 #endif
 }
+
+#ifdef PECPLAS_MPI
+/* True when MPI runs with more than one rank (collectives are needed). */
+static int several(void) {
+    int started = 0, done = 0, size = 1;
+    MPI_Initialized(&started);
+    MPI_Finalized(&done);
+    if (!started || done) return 0;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return size > 1;
+}
+#endif
+
+/* x(1:n) = its sum (op 0), minimum (op 1) or maximum (op 2) over the ranks, on every rank. */
+void pecplas_parallel_reduce(double *x, int n, int op) {
+#ifdef PECPLAS_MPI
+    if (!several() || n < 1) return;
+    MPI_Op mop = op == 1 ? MPI_MIN : (op == 2 ? MPI_MAX : MPI_SUM);
+    MPI_Allreduce(MPI_IN_PLACE, x, n, MPI_DOUBLE, mop, MPI_COMM_WORLD);
+#else
+    (void)x;
+    (void)n;
+    (void)op;
+#endif
+}
+
+/* The largest of `value` over the ranks, on every rank. */
+int pecplas_parallel_max_int(int value) {
+#ifdef PECPLAS_MPI
+    if (!several()) return value;
+    int out = value;
+    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return out;
+#else
+    return value;
+#endif
+}

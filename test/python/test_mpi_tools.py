@@ -50,3 +50,21 @@ def test_summary_numbers_are_read():
     assert bench_mumps.number(r"est_flops=\s*([0-9.E+-]+)", line) == 8.564e8
     assert bench_mumps.number(r" mb_rank=(\d+)", line) == 62
     assert np.isnan(bench_mumps.number(r"absent=(\d+)", line))
+
+
+def test_assembly_split_read_from_the_summary():
+    out = (" wall time [s]: read+setup 0.456  assembly 3.346\n"
+           " ranks: 2, each assembles the stiffness of its own elements: wall 3.049 to 3.102 s,"
+           " CPU 0.676 to 0.681 s\n")
+    assert mpi_check.assembly_split(out) == (2, 0.676, 0.681)
+    assert mpi_check.assembly_split(" wall time [s]: assembly 1.0\n") is None
+
+
+def test_unit_runs_pass_only_when_every_rank_passed():
+    both = "6 passed, 0 failed\n6 passed, 0 failed\n"
+    assert mpi_check.unit_passed(0, both, 2)
+    assert not mpi_check.unit_passed(0, both, 1)  # a rank too many: not the run asked for
+    assert not mpi_check.unit_passed(0, "6 passed, 0 failed\n", 2)  # a rank said nothing
+    assert not mpi_check.unit_passed(0, "6 passed, 0 failed\n5 passed, 1 failed\n", 2)
+    assert not mpi_check.unit_passed(1, both, 2)  # mpirun's exit status counts
+    assert not mpi_check.unit_passed(0, "0 passed, 0 failed\n", 1)  # nothing ran

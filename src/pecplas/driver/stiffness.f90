@@ -3,7 +3,7 @@
 !> turns a singular factorisation into a message naming the free node and direction.
 module pecplas_driver_stiffness
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, ERR_SINGULAR
+   use pecplas_error, only: error_t, ERR_SINGULAR, fatal_error
    use pecplas_model, only: model_t
    use pecplas_model_provenance, only: place_t
    use pecplas_driver_problem, only: problem_t
@@ -11,10 +11,13 @@ module pecplas_driver_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
    use pecplas_driver_timers, only: wall_time
    use pecjoin_katona_operator, only: add_augmentation
+   use pecplas_fe_share, only: share_of_run
+   use pecplas_linalg_mumps, only: mumps_summed_input
+   use pecplas_parallel, only: parallel_size, parallel_rank, parallel_sum, parallel_max, parallel_max_int
    implicit none (type, external)
    private
 
-   public :: factorise_stiffness, linear_solver_name
+   public :: factorise_stiffness, linear_solver_name, partitioned
 
 contains
 
@@ -58,7 +61,8 @@ contains
       logical, intent(in), optional :: tangent_solver
       real(wp) :: t0
       type(place_t) :: p
-      logical :: separate
+      logical :: separate, parts, mumps
+      real(wp) :: c0
 
       separate = .false.
       if (present(tangent_solver)) separate = tangent_solver .and. problem%separate_tangent
@@ -67,11 +71,16 @@ contains
          return
       end if
 
+      parts = partitioned(model)
+      mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
+      if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
-         problem%kbuild, problem%k, error)
+         problem%kbuild, problem%k, error, share_of_run(parts))
+      if (mumps) call rank_times(problem, wall_time() - t0, c0)
+      if (parts) call agree_on_error(error)
       if (allocated(error)) return
-      if (problem%katona%alpha > 0.0_wp) then
+      if (problem%katona%alpha > 0.0_wp .and. (.not. parts .or. parallel_rank() == 0)) then
          call add_augmentation(problem%katona, problem%dofs, problem%k, error)
          if (allocated(error)) return
       end if
@@ -80,11 +89,12 @@ contains
       if (.not. allocated(problem%solver)) then
          call new_linear_solver(linear_solver_name(model), problem%solver, error)
          if (allocated(error)) return
+         call mumps_summed_input(problem%solver, parts)
          call problem%solver%analyse(problem%k, error)
          if (allocated(error)) return
       end if
       call problem%solver%factorise(problem%k, error)
-      if (allocated(error)) call katona_augment(problem, error)
+      if (allocated(error)) call katona_augment(model, problem, error)
       if (allocated(error)) then
          if (error%kind == ERR_SINGULAR) then
             error%message = 'the stiffness matrix is singular: '// &
@@ -109,17 +119,24 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: t0
+      real(wp) :: t0, c0
+      logical :: parts, mumps
+      parts = partitioned(model)
+      mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
       problem%tangent_factorised = .false.
+      if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .true., &
-         problem%kbuild, problem%k, error)
+         problem%kbuild, problem%k, error, share_of_run(parts))
+      if (mumps) call rank_times(problem, wall_time() - t0, c0)
+      if (parts) call agree_on_error(error)
       if (allocated(error)) return
       problem%time%assembly = problem%time%assembly + (wall_time() - t0)
       t0 = wall_time()
       if (.not. allocated(problem%tsolver)) then
          call new_linear_solver(linear_solver_name(model, .true.), problem%tsolver, error)
          if (allocated(error)) return
+         call mumps_summed_input(problem%tsolver, parts)
          call problem%tsolver%analyse(problem%k, error)
          if (allocated(error)) return
       end if
@@ -134,19 +151,68 @@ contains
    !> R_a = R + alpha D^T D instead, alpha = largest diagonal term of R. The Katona solve is
    !> written in unknowns that make its solution independent of alpha (pecjoin_katona_states);
    !> from then on every factorisation of the run is augmented.
-   subroutine katona_augment(problem, error)
+   subroutine katona_augment(model, problem, error)
+      type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(inout) :: error
       real(wp), allocatable :: diag(:)
+      logical :: parts
       if (error%kind /= ERR_SINGULAR .or. .not. problem%katona%active) return
       if (problem%katona%alpha > 0.0_wp) return
       deallocate (error)
+      parts = partitioned(model)
       allocate (diag(problem%k%n))
       call problem%k%diagonal(diag)
+      if (parts) call parallel_sum(diag) ! each rank holds a part of R
       problem%katona%alpha = maxval(diag)
-      call add_augmentation(problem%katona, problem%dofs, problem%k, error)
+      if (.not. parts .or. parallel_rank() == 0) then
+         call add_augmentation(problem%katona, problem%dofs, problem%k, error)
+      end if
+      if (parts) call agree_on_error(error)
       if (allocated(error)) return
       call problem%solver%factorise(problem%k, error)
    end subroutine katona_augment
+
+   !> True when each rank assembles only its share of the elements (pecplas_fe_share): an
+   !> MPI run on several ranks with MUMPS, which adds the ranks' parts. The serial solvers
+   !> need the whole matrix on every rank.
+   logical function partitioned(model)
+      type(model_t), intent(in) :: model
+      partitioned = model%solver%linear == 'MUMPS' .and. parallel_size() > 1
+   end function partitioned
+
+   !> Adds this assembly's `wall` seconds and the CPU seconds since `cpu0` to the rank's
+   !> times and updates their smallest and largest over the ranks (measured before any rank
+   !> waits for another). The CPU time is the work done even when ranks share busy cores.
+   subroutine rank_times(problem, wall, cpu0)
+      type(problem_t), intent(inout) :: problem
+      real(wp), intent(in) :: wall, cpu0
+      real(wp) :: t(4), c1
+      call cpu_time(c1)
+      associate (tm => problem%time)
+         tm%rank_wall = tm%rank_wall + wall
+         tm%rank_cpu = tm%rank_cpu + (c1 - cpu0)
+         t = [tm%rank_wall, -tm%rank_wall, tm%rank_cpu, -tm%rank_cpu]
+         call parallel_max(t)
+         tm%rank_wall_max = t(1)
+         tm%rank_wall_min = -t(2)
+         tm%rank_cpu_max = t(3)
+         tm%rank_cpu_min = -t(4)
+      end associate
+   end subroutine rank_times
+
+   !> The same outcome on every rank after a partitioned assembly: a rank whose elements
+   !> all passed takes the failure of another (its own message is on that rank's stderr).
+   subroutine agree_on_error(error)
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: kind
+      kind = 0
+      if (allocated(error)) kind = error%kind
+      kind = parallel_max_int(kind)
+      if (kind == 0 .or. allocated(error)) return
+      call fatal_error(error, 'the assembly failed on another MPI rank (its message is '// &
+         'on that rank''s standard error)')
+      error%kind = kind
+   end subroutine agree_on_error
 
 end module pecplas_driver_stiffness

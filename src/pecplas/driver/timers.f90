@@ -12,6 +12,11 @@ module pecplas_driver_timers
       !> Part of `residual` spent in the constitutive updates (stress integration at the
       !> massif Gauss points and the joint force routine, whose cost is its law updates).
       real(wp) :: laws = 0.0_wp
+      !> MUMPS runs (doc/mpi.md): this rank's stiffness assembly time (wall, CPU), and the
+      !> smallest and largest over the ranks (updated at each assembly; zero otherwise).
+      real(wp) :: rank_wall = 0.0_wp, rank_cpu = 0.0_wp
+      real(wp) :: rank_wall_min = 0.0_wp, rank_wall_max = 0.0_wp
+      real(wp) :: rank_cpu_min = 0.0_wp, rank_cpu_max = 0.0_wp
    end type timers_t
 
 contains

@@ -17,6 +17,7 @@ module pecplas_fe_assembly
    use pecplas_driver_timers, only: wall_time
    use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    use pecplas_fe_element_context, only: element_context
+   use pecplas_fe_share, only: share_t
    implicit none (type, external)
    private
 
@@ -30,7 +31,9 @@ contains
    !> matrix it built last time (or empty); a repeated triplet sequence only rescatters values.
    !> Elements run in parallel (OpenMP), each writing its triplets at an offset counted
    !> beforehand, so the triplet sequence, hence k, is that of the serial loop.
-   subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error)
+   !> `share`: only this rank's elements (pecplas_fe_share), for the ranks of an MPI run
+   !> whose solver adds the parts; default: every element.
+   subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error, share)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
       type(massif_rule_t), intent(in) :: rules(:)
@@ -39,38 +42,43 @@ contains
       type(csc_builder_t), intent(inout) :: builder
       type(csc_t), intent(inout) :: k
       type(error_t), allocatable, intent(out) :: error
+      type(share_t), intent(in), optional :: share
       type(error_t), allocatable :: err
+      type(share_t) :: part
       real(wp), allocatable :: ke(:, :), d(:, :, :)
       real(wp) :: delastic(NCOMP, NCOMP)
       integer, allocatable :: idx(:), offset(:)
-      integer :: s, e, nn, nd, nel, capacity, bad
+      integer :: s, e, nn, nd, nel, capacity, bad, e1, e2
 
+      if (present(share)) part = share
       capacity = 0
       do s = 1, size(rules)
          nd = 2*rules(s)%nnode
-         capacity = capacity + nd*nd*size(model%mesh%esets(s)%conn, 2)
+         call part%range(size(model%mesh%esets(s)%conn, 2), e1, e2)
+         capacity = capacity + nd*nd*(e2 - e1 + 1)
       end do
       call builder%start(dofs%neq, capacity)
       do s = 1, size(rules)
          associate (set => model%mesh%esets(s), st => state%sets(s), &
                     mat => model%materials(model%mesh%esets(s)%material_index)%m)
             nn = rules(s)%nnode; nd = 2*nn; nel = size(set%conn, 2)
+            call part%range(nel, e1, e2)
             allocate (idx(nd), offset(nel + 1))
-            offset(1) = builder%coo%nnz
-            do e = 1, nel
+            offset(e1) = builder%coo%nnz
+            do e = e1, e2
                call element_equations(dofs, set%conn(:, e), idx)
                offset(e + 1) = offset(e) + builder%coo%block_size(idx)
             end do
             deallocate (idx) ! private in the loop below
-            call builder%coo%reserve(offset(nel + 1) - builder%coo%nnz)
+            call builder%coo%reserve(offset(e2 + 1) - builder%coo%nnz)
             if (.not. tangent) call mat%elastic_tangent(delastic)
             bad = huge(bad)
             !$omp parallel default(shared) private(e, ke, idx, d, err) &
-            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
+            !$omp if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS)
             allocate (ke(nd, nd), idx(nd), d(NCOMP, NCOMP, st%ngauss))
             if (.not. tangent) d = spread(delastic, 3, st%ngauss)
             !$omp do schedule(static)
-            do e = 1, nel
+            do e = e1, e2
                if (tangent) d = st%tangent(:, :, :, e)
                call element_stiffness(model, rules(s), set%conn(:, e), d, ke, err)
                if (allocated(err)) then
@@ -85,7 +93,7 @@ contains
             !$omp end do
             deallocate (ke, idx, d)
             !$omp end parallel
-            builder%coo%nnz = offset(nel + 1)
+            builder%coo%nnz = offset(e2 + 1)
             deallocate (offset)
             if (bad <= nel) then
                ! again, serially, for the message of the first failing element
@@ -99,7 +107,7 @@ contains
             end if
          end associate
       end do
-      call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, error)
+      call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, error, part)
       if (allocated(error)) return
       call builder%finish(k, error)
    end subroutine assemble_stiffness

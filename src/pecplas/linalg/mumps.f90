@@ -1,9 +1,11 @@
 !> MUMPS distributed multifrontal LDL^T / LU behind `linear_solver_t`, for MPI runs
 !> (`mpirun -np N pecplas DECK` with *SOLVER, LINEAR=MUMPS; MPI build only, see doc/mpi.md).
 !>
-!> Every rank holds the same assembled matrix (replicated model); each rank hands MUMPS only
-!> its share of the entries, a block of whole columns with about nnz/N entries, as
-!> distributed assembled input (ICNTL(18) = 3). The analysis is done once per pattern and
+!> The matrix reaches MUMPS as distributed assembled input (ICNTL(18) = 3), in one of two
+!> ways. Summed input (`mumps_summed_input`, the partitioned assembly of an MPI run): each
+!> rank holds the part of the matrix assembled from its own elements and hands MUMPS all of
+!> it; MUMPS adds the parts. Replicated input (the default): every rank holds the same whole
+!> matrix and hands MUMPS only its share, a block of whole columns with about nnz/N entries. The analysis is done once per pattern and
 !> reused by every factorisation, as with CHOLMOD. A symmetric matrix (its upper triangle
 !> stored, or full storage found symmetric to 1e-13 of its largest entry) is factorised as
 !> general symmetric (SYM = 2, LDL^T, also for the indefinite Katona bordered systems), from
@@ -20,11 +22,11 @@ module pecplas_linalg_mumps
    use pecplas_error, only: error_t, fatal_error, singular_error
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_solver_type, only: linear_solver_t, solver_report
-   use pecplas_parallel, only: parallel_rank, parallel_size
+   use pecplas_parallel, only: parallel_rank, parallel_size, parallel_any
    implicit none (type, external)
    private
 
-   public :: mumps_solver_t, mumps_available
+   public :: mumps_solver_t, mumps_available, mumps_summed_input
 
    !> Relative asymmetry (of the largest entry) below which a full matrix is symmetric.
    real(wp), parameter :: SYM_TOL = 1.0e-13_wp
@@ -62,6 +64,8 @@ module pecplas_linalg_mumps
          integer(c_int), intent(out) :: infog(80), null_pivot
          real(c_double), intent(out) :: rinfog(40)
       end subroutine
+      subroutine c_start() bind(C, name='pecplas_mumps_start')
+      end subroutine
       subroutine c_free(h) bind(C, name='pecplas_mumps_free')
          import :: c_ptr
          type(c_ptr), value :: h
@@ -76,6 +80,9 @@ module pecplas_linalg_mumps
       integer, private :: first = 0, last = 0
       integer, allocatable, private :: pick(:)
       logical, private :: upper = .false., symmetric = .false., force_lu = .false.
+      !> Each rank gives its own part of the matrix, the sum over the ranks (else the whole
+      !> matrix on every rank).
+      logical :: summed = .false.
       integer(ik8), private :: nnz = 0
       !> MUMPS's global statistics of the last call (INFOG, RINFOG; 1-based as in its guide).
       integer :: infog(80) = 0
@@ -96,6 +103,17 @@ contains
    logical function mumps_available()
       mumps_available = c_available() == 1
    end function mumps_available
+
+   !> Marks `solver`, when it is MUMPS, as given each rank's part of a matrix summed over the
+   !> ranks (`summed`), instead of the whole matrix on every rank. Other solvers: nothing.
+   subroutine mumps_summed_input(solver, summed)
+      class(linear_solver_t), intent(inout) :: solver
+      logical, intent(in) :: summed
+      select type (solver)
+      type is (mumps_solver_t)
+         solver%summed = summed
+      end select
+   end subroutine mumps_summed_input
 
    function mumps_name(this) result(name)
       class(mumps_solver_t), intent(in) :: this
@@ -134,14 +152,22 @@ contains
          call fatal_error(error, 'MUMPS analyse: empty matrix')
          return
       end if
+      call c_start()
+      ! every rank must take the same decision (with summed input each sees its own part)
       this%symmetric = a%upper
-      if (.not. this%force_lu .and. .not. a%upper) this%symmetric = a%is_symmetric(SYM_TOL)
+      if (.not. this%force_lu .and. .not. a%upper) &
+         this%symmetric = .not. parallel_any(.not. a%is_symmetric(SYM_TOL))
       this%handle = c_new(merge(2_c_int, 0_c_int, this%symmetric), this%rcond_tol, status)
       if (status < 0) then
          call fatal_error(error, 'MUMPS initialisation failed: '//status_text(int(status), 0))
          return
       end if
-      call share(a, parallel_rank(), parallel_size(), this%first, this%last)
+      if (this%summed) then
+         this%first = 0
+         this%last = a%nnz()
+      else
+         call share(a, parallel_rank(), parallel_size(), this%first, this%last)
+      end if
       allocate (irn(this%last - this%first), jcn(this%last - this%first), &
          this%pick(this%last - this%first))
       m = 0
@@ -207,12 +233,13 @@ contains
          call fatal_error(error, 'MUMPS factorise: analyse the matrix first')
          return
       end if
-      if (a%n /= this%n .or. a%nnz() /= this%nnz .or. (a%upper .neqv. this%upper)) then
+      if (parallel_any(a%n /= this%n .or. a%nnz() /= this%nnz .or. &
+                       (a%upper .neqv. this%upper))) then
          call fatal_error(error, 'MUMPS factorise: pattern differs from the analysed one')
          return
       end if
       if (this%symmetric .and. .not. a%upper) then
-         if (.not. a%is_symmetric(SYM_TOL)) then
+         if (parallel_any(.not. a%is_symmetric(SYM_TOL))) then
             this%force_lu = .true.
             call this%analyse(a, error)
             if (allocated(error)) return

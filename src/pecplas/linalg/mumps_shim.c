@@ -32,6 +32,17 @@ static void finalize_at_exit(void) {
     if (!done) MPI_Finalize();
 }
 
+/* Starts MPI for a program that did not (a test driver), before the ranks agree on the
+ * matrix's symmetry and before the first handle. */
+void pecplas_mumps_start(void) {
+    int started = 0;
+    MPI_Initialized(&started);
+    if (!started) {
+        MPI_Init(NULL, NULL);
+        atexit(finalize_at_exit);
+    }
+}
+
 /* sym: 0 unsymmetric, 2 general symmetric; tol: null-pivot threshold (CNTL(3)). */
 void *pecplas_mumps_new(int sym, double tol, int *status) {
     pecplas_mumps_t *h = calloc(1, sizeof *h);
@@ -39,12 +50,7 @@ void *pecplas_mumps_new(int sym, double tol, int *status) {
         *status = -13;
         return NULL;
     }
-    int started = 0;
-    MPI_Initialized(&started);
-    if (!started) { /* a program that did not start MPI (a test driver): start it here */
-        MPI_Init(NULL, NULL);
-        atexit(finalize_at_exit);
-    }
+    pecplas_mumps_start();
     h->id.comm_fortran = (MUMPS_INT)MPI_Comm_c2f(MPI_COMM_WORLD);
     h->id.par = 1; /* rank 0 takes part in the factorisation */
     h->id.sym = sym;
@@ -134,6 +140,7 @@ void pecplas_mumps_free(void *hv) {
 #else
 
 int pecplas_mumps_available(void) { return 0; }
+void pecplas_mumps_start(void) {}
 void *pecplas_mumps_new(int sym, double tol, int *status) {
     (void)sym;
     (void)tol;
