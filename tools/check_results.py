@@ -161,23 +161,14 @@ def check_history(f, problems):
                             f"{pf.shape[1]} pattern_factors columns")
     n = min(lengths.values(), default=0)
     if len(set(lengths.values())) > 1:
-        # a run killed (kill -9) while appending a row leaves that row in some columns only:
-        # the file holds the rows every column has (a 'running' file, one row at most)
-        if not (running(f) and max(lengths.values()) - n <= 1):
-            problems.append("history datasets differ in length: "
-                            + ", ".join(f"{k}={v}" for k, v in lengths.items()))
-            return []
+        problems.append("history datasets differ in length: "
+                        + ", ".join(f"{k}={v}" for k, v in lengths.items()))
+        return []
     if "fields" in h and "global_increment" in h:
         fields = h["fields"][:n]
         glob = h["global_increment"][:n]
         return [int(g) for g, flag in zip(glob, fields) if flag == 1]
     return []
-
-
-def running(f):
-    status = f.attrs.get("status", b"")
-    status = status.decode() if isinstance(status, bytes) else str(status)
-    return status == "running"
 
 
 def check_increments(f, with_fields, problems):
@@ -187,11 +178,7 @@ def check_increments(f, with_fields, problems):
     expected = {f"{g:06d}" for g in with_fields}
     for name in sorted(expected - present):
         problems.append(f"history row of increment {name} has fields but no /increments/{name}")
-    extra = sorted(present - expected)
-    # killed between an increment's fields and its history row: that one group may be ahead
-    if running(f) and len(extra) == 1 and (not expected or extra[0] > max(expected)):
-        extra = []
-    for name in extra:
+    for name in sorted(present - expected):
         problems.append(f"/increments/{name} has no history row flagged with fields")
     shapes = joint_shapes(f, problems)
     for name in sorted(present):

@@ -567,10 +567,11 @@ contains
          call fatal_error(error, 'cannot rename '//this%staging//' onto '//this%xmf)
          return
       end if
-      ! the published copy: names first, then closed (a close may still write)
+      ! the running sidecar first (it names the published copy), then the published copy:
+      ! names first, then closed (a close may still write)
+      call remove_file(this%work_xmf)
       call this%copies%remove(.true.)
       call this%copies%close('both', err)
-      call remove_file(this%work_xmf)
    end subroutine results_finish
 
    !> /limit: where the load of the run had its maximum (written before `finish`).
