@@ -240,6 +240,9 @@ def test_kill9_at_random_moments(exe, s6_deck, tmp_path):
         outcomes["left rows"].append(rows)
         if restarted is None and h5 is not None and 0 < rows < total:
             restarted = rows
+            # the checker names the file to keep (doc/results.md, "After kill -9")
+            lines, sound = check_results.left_behind(str(out))
+            assert sound and len(lines) == 1 and f"keep {h5} with its sidecar" in lines[0], lines
             u_killed = restart_to_end(exe, s6_deck, h5, tmp_path / "restarted.h5", total - rows)
             # the same run stopped cleanly after as many increments, restarted too: both
             # restarts start from the state of that increment, so they agree to roundoff
