@@ -11,7 +11,7 @@ module test_io_results
    use pecplas_model, only: model_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t
    use pecplas_io_results_file, only: results_file_t, temporary_path
-   use pecplas_files, only: rename_file, remove_file, path_base
+   use pecplas_files, only: rename_file, remove_file, path_base, same_file
    use pecplas_io_results_reader, only: results_reader_t
    use test_io_results_data, only: sample_model, sample_gauss, sample_increment, &
       same_bits, OUT_DIR, make_out_dir, copy_file
@@ -25,6 +25,7 @@ contains
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('round_trip', test_round_trip), &
                new_unittest('crash_keeps_increments', test_crash), &
+               new_unittest('two_copies_one_published', test_two_copies), &
                new_unittest('limit_load_not_complete', test_limit_load), &
                new_unittest('refuses_bad_input', test_refuses), &
                new_unittest('finaliser_keeps_running', test_finaliser), &
@@ -257,6 +258,43 @@ contains
       call remove_file(temporary_path(OUT_DIR//'/io_results_running.xmf'))
       call check(error, rename_file(tmp, target), 'rename '//tmp)
    end subroutine test_crash
+
+   !> Between increments both copies of a running file hold every increment (their bytes,
+   !> copied as a kill would leave them, read back with all rows), the published name .tmp
+   !> is the same file as one of them, and `finish` leaves no temporary name behind.
+   subroutine test_two_copies(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(results_file_t) :: rf
+      character(len=:), allocatable :: tmp, stem
+      character(len=*), parameter :: SUFFIX(3) = ['.a  ', '.b  ', '.new']
+      logical :: exists
+      integer :: i
+      tmp = temporary_path(OUT_DIR//'/io_results_copies.h5')
+      stem = tmp(1:len(tmp) - 4)
+      call write_sample(rf, 'io_results_copies.h5', 1, 3, error)
+      if (allocated(error)) return
+      call check(error, same_file(tmp, stem//'.a') .neqv. same_file(tmp, stem//'.b'), &
+         tmp//' must be another name of exactly one copy')
+      do i = 1, 2
+         if (allocated(error)) return
+         call copy_file(stem//trim(SUFFIX(i)), OUT_DIR//'/crash/io_results_copy'// &
+            SUFFIX(i)(2:2)//'.h5', error)
+         if (allocated(error)) return
+         call check_running(OUT_DIR//'/crash/io_results_copy'//SUFFIX(i)(2:2)//'.h5', 3, error)
+      end do
+      if (allocated(error)) return
+      call rf%finish('completed', 'normal end', error)
+      if (allocated(error)) return
+      do i = 1, 3
+         inquire (file=stem//trim(SUFFIX(i)), exist=exists)
+         call check(error, .not. exists, 'finish leaves '//stem//trim(SUFFIX(i)))
+         if (allocated(error)) return
+      end do
+      inquire (file=tmp, exist=exists)
+      call check(error, .not. exists, 'finish leaves '//tmp)
+      call remove_file(OUT_DIR//'/crash/io_results_copya.h5')
+      call remove_file(OUT_DIR//'/crash/io_results_copyb.h5')
+   end subroutine test_two_copies
 
    subroutine check_running(path, nrow, error)
       character(len=*), intent(in) :: path

@@ -3,6 +3,7 @@
 
 Usage:
     python3 tools/check_results.py RESULTS.h5 [--expect-status STATUS] [--xmf FILE | --no-xdmf]
+    python3 tools/check_results.py --left RESULTS.h5
 
 Checks that the required attributes, groups and datasets exist, that every /history
 dataset has the same number of rows, that no float dataset or attribute holds NaN or Inf,
@@ -16,10 +17,15 @@ in the root length_unit, force_unit and stress_unit, and that the .xmf parses as
 "file.h5:/path" DataItem names an existing dataset of the declared dimensions, HyperSlab
 items select inside their dataset, and every joint set has its grid in each increment.
 Exit status 0 when everything holds, 1 otherwise (each problem is printed).
+
+--left RESULTS.h5: what runs killed before their end (kill -9, out-of-memory) left beside
+that target, one line per run: its results `.NAME.h5.<pid>.tmp` checked as above with its
+sidecar, the file to keep, and the temporary files to delete (doc/results.md, "Safety").
 """
 
 import argparse
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -161,23 +167,14 @@ def check_history(f, problems):
                             f"{pf.shape[1]} pattern_factors columns")
     n = min(lengths.values(), default=0)
     if len(set(lengths.values())) > 1:
-        # a run killed (kill -9) while appending a row leaves that row in some columns only:
-        # the file holds the rows every column has (a 'running' file, one row at most)
-        if not (running(f) and max(lengths.values()) - n <= 1):
-            problems.append("history datasets differ in length: "
-                            + ", ".join(f"{k}={v}" for k, v in lengths.items()))
-            return []
+        problems.append("history datasets differ in length: "
+                        + ", ".join(f"{k}={v}" for k, v in lengths.items()))
+        return []
     if "fields" in h and "global_increment" in h:
         fields = h["fields"][:n]
         glob = h["global_increment"][:n]
         return [int(g) for g, flag in zip(glob, fields) if flag == 1]
     return []
-
-
-def running(f):
-    status = f.attrs.get("status", b"")
-    status = status.decode() if isinstance(status, bytes) else str(status)
-    return status == "running"
 
 
 def check_increments(f, with_fields, problems):
@@ -187,11 +184,7 @@ def check_increments(f, with_fields, problems):
     expected = {f"{g:06d}" for g in with_fields}
     for name in sorted(expected - present):
         problems.append(f"history row of increment {name} has fields but no /increments/{name}")
-    extra = sorted(present - expected)
-    # killed between an increment's fields and its history row: that one group may be ahead
-    if running(f) and len(extra) == 1 and (not expected or extra[0] > max(expected)):
-        extra = []
-    for name in extra:
+    for name in sorted(present - expected):
         problems.append(f"/increments/{name} has no history row flagged with fields")
     shapes = joint_shapes(f, problems)
     for name in sorted(present):
@@ -371,15 +364,62 @@ def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):
     return problems, summary
 
 
+def left_behind(target):
+    """Lines describing what killed runs left beside `target`, and whether all is sound."""
+    directory = os.path.dirname(target)
+    name = os.path.basename(target)
+    stem = name[:-3] if name.endswith(".h5") else name
+    pattern = re.compile(rf"^\.({re.escape(name)}|{re.escape(stem)}\.xmf)\.(\d+)\.(\w+)$")
+    runs = {}
+    for entry in sorted(os.listdir(directory or ".")):
+        m = pattern.match(entry)
+        if m:
+            runs.setdefault(int(m.group(2)), []).append(os.path.join(directory, entry))
+    lines, sound = [], True
+    for pid, files in sorted(runs.items()):
+        h5 = os.path.join(directory, f".{name}.{pid}.tmp")
+        xmf = os.path.join(directory, f".{stem}.xmf.{pid}.tmp")
+        # a symbolic .tmp (file systems without hard links) needs the copy it names
+        kept = (h5, xmf, os.path.join(directory, os.readlink(h5))) if os.path.islink(h5) \
+            else (h5, xmf)
+        others = [f for f in files if f not in kept]
+        alive = os.path.exists(f"/proc/{pid}")
+        note = " (a process with this id is running: the run may not be over)" if alive else ""
+        if not os.path.exists(h5):
+            lines.append(f"run {pid}{note}: stopped before its first increment was published, "
+                         f"nothing to keep; delete {' '.join(files)}")
+            continue
+        problems, summary = check(h5, "running", xmf, os.path.exists(xmf))
+        if problems:
+            sound = False
+            lines.append(f"run {pid}{note}: {h5} has {len(problems)} problem(s): "
+                         + "; ".join(problems[:3]))
+            continue
+        sidecar = f" with its sidecar {xmf}" if os.path.exists(xmf) else ""
+        lines.append(f"run {pid}{note}: keep {h5}{sidecar} ({summary}); rename it, or continue "
+                     f"with pecplas DECK --restart {h5} -o NEW.h5"
+                     + (f"; delete {' '.join(others)}" if others else ""))
+    if not runs:
+        lines.append(f"no temporary files of {target} in {directory or '.'}")
+    return lines, sound
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description="Check a PECPLAS results file and its XDMF.")
     parser.add_argument("results", help="results file (.h5)")
+    parser.add_argument("--left", action="store_true",
+                        help="list what killed runs left beside RESULTS (the target) and "
+                             "which file of each to keep")
     parser.add_argument("--expect-status", choices=STATUSES,
                         help="fail unless the status attribute has this value")
     group = parser.add_mutually_exclusive_group()
     group.add_argument("--xmf", help="XDMF file (default: the .h5 path with .xmf)")
     group.add_argument("--no-xdmf", action="store_true", help="do not check the XDMF file")
     args = parser.parse_args(argv)
+    if args.left:
+        lines, sound = left_behind(args.results)
+        print("\n".join(lines))
+        return 0 if sound else 1
     problems, summary = check(args.results, args.expect_status, args.xmf, not args.no_xdmf)
     if problems:
         print(f"FAIL {args.results}: {len(problems)} problem(s)")

@@ -7,7 +7,7 @@ module pecplas_files
    private
 
    public :: make_directories, path_stem, path_dir, path_base, rename_file, remove_file, &
-      same_file, process_id, free_bytes, exit_now
+      link_file, symlink_file, same_file, process_id, free_bytes, exit_now
 
    interface
       integer(c_int) function c_mkdir(path, mode) bind(C, name='mkdir')
@@ -19,6 +19,14 @@ module pecplas_files
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: from(*), to(*)
       end function c_rename
+      integer(c_int) function c_link(from, to) bind(C, name='link')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: from(*), to(*)
+      end function c_link
+      integer(c_int) function c_symlink(target, to) bind(C, name='symlink')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: target(*), to(*)
+      end function c_symlink
       integer(c_int) function c_unlink(path) bind(C, name='unlink')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
@@ -88,6 +96,20 @@ contains
       character(len=*), intent(in) :: from, to
       ok = c_rename(from//c_null_char, to//c_null_char) == 0
    end function rename_file
+
+   !> Makes `to` (which must not exist) another name of the file `from` (a hard link);
+   !> false on failure (e.g. a file system without hard links).
+   logical function link_file(from, to) result(ok)
+      character(len=*), intent(in) :: from, to
+      ok = c_link(from//c_null_char, to//c_null_char) == 0
+   end function link_file
+
+   !> Makes `to` (which must not exist) a symbolic link to `from`'s base name: both must be
+   !> in the same directory; false on failure.
+   logical function symlink_file(from, to) result(ok)
+      character(len=*), intent(in) :: from, to
+      ok = c_symlink(path_base(from)//c_null_char, to//c_null_char) == 0
+   end function symlink_file
 
    !> Removes `path` if it exists (errors ignored).
    subroutine remove_file(path)

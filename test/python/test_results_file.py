@@ -109,6 +109,22 @@ def test_checker_catches_unequal_history(broken):
     assert run.returncode == 1 and "differ in length" in run.stdout
 
 
+def test_checker_catches_half_row_of_a_running_file(broken):
+    """A running file is read only when flushed after a whole increment (doc/results.md,
+    "Safety"): a row in some history columns only, or fields without their row, are
+    problems in a 'running' file too."""
+    with h5py.File(broken, "r+") as f:
+        f.attrs["status"], f.attrs["complete"] = "running", 0
+        f["history/residual"].resize((2,))
+    run = run_checker(broken)
+    assert run.returncode == 1 and "differ in length" in run.stdout
+    with h5py.File(broken, "r+") as f:
+        f["history/residual"].resize((3,))
+        f.copy("increments/000003", "increments/000004")
+    run = run_checker(broken)
+    assert run.returncode == 1 and "/increments/000004 has no history row" in run.stdout
+
+
 def test_checker_catches_bad_xdmf_reference(broken):
     xmf = broken.with_suffix(".xmf")
     text = xmf.read_text()

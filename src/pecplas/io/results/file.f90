@@ -11,12 +11,14 @@
 !>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
 !>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
 !>                joints/<set>/... (see pecplas_io_results_joints)
-!> While the run goes on, the file is written under a temporary name in the target's
-!> directory (`.NAME.h5.<pid>.tmp`, see `temporary_path`) with its XDMF sidecar
-!> (`.NAME.xmf.<pid>.tmp`); `finish` renames it onto the target, so an earlier result of the
-!> same name is replaced only by a finished file and never damaged by a run that dies.
-!> Every increment is flushed, so a run that crashes leaves a readable temporary file whose
-!> status is still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> While the run goes on, the file is written as two copies in the target's directory, one
+!> of them always published as `.NAME.h5.<pid>.tmp` (see `temporary_path` and
+!> pecplas_io_results_copies), with its XDMF sidecar (`.NAME.xmf.<pid>.tmp`); `finish`
+!> renames the finished copy onto the target, so an earlier result of the same name is
+!> replaced only by a finished file and never damaged by a run that dies. Every increment
+!> is flushed into both copies, and the published one is never written: a run killed at any
+!> moment leaves a `.tmp` file flushed after its last whole increment, whose status is
+!> still 'running' and complete = 0; only finish('completed') sets complete = 1.
 !> The sidecar is rewritten whole (through a staging file and a rename) at most once a
 !> second and at most 5 % of the time, and at the end: its cost stays linear in the number
 !> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
@@ -24,11 +26,12 @@
 module pecplas_io_results_file
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F
+   use hdf5, only: hid_t
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_strings, only: itoa
    use pecplas_files, only: rename_file, remove_file, process_id, path_base, free_bytes
+   use pecplas_io_results_copies, only: copies_t
    use pecplas_model, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
@@ -60,9 +63,10 @@ module pecplas_io_results_file
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
       private
-      integer(hid_t) :: file = -1
-      !> Targets (.h5 and .xmf), the temporary files written while the run goes on, and
-      !> the staging name through which every .xmf is written.
+      !> The two copies written while the run goes on (the published one is `work`).
+      type(copies_t) :: copies
+      !> Targets (.h5 and .xmf), the temporary files of the run (the published copy and its
+      !> sidecar), and the staging name through which every .xmf is written.
       character(len=:), allocatable :: path, xmf, work, work_xmf, staging
       !> Fields groups listed in the running .xmf; time of its last write and its cost [s].
       integer :: xmf_count = -1
@@ -75,7 +79,7 @@ module pecplas_io_results_file
       logical :: broken = .false.
       !> Detached: every write does nothing (the ranks above 0 of an MPI run; rank 0 writes).
       logical, public :: detached = .false.
-      !> Size of the temporary file after the last increment and what that increment added.
+      !> Size of a copy after the last increment and what that increment added.
       integer(int64) :: bytes = 0, growth = 0
       type(xdmf_layout_t) :: layout
       integer :: npattern = 0, nrows = 0
@@ -101,7 +105,6 @@ module pecplas_io_results_file
       procedure :: is_broken => results_is_broken
       procedure :: free => results_free
       procedure :: discard => abandon
-      procedure, private :: staging_h5
       final :: results_final
    end type results_file_t
 
@@ -118,9 +121,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(joint_points_t), intent(in), optional :: joint_points(:)
       type(joint_points_t), allocatable :: points(:)
-      integer :: err
+      integer :: i
       if (this%detached) return
-      if (this%file > 0) then
+      if (this%is_open()) then
          call fatal_error(error, 'results file '//this%path//' is already open')
          return
       end if
@@ -142,6 +145,7 @@ contains
       this%work = temporary_path(path)
       this%work_xmf = temporary_path(this%xmf)
       this%staging = this%work_xmf(1:len(this%work_xmf) - 4)//'.new'
+      call this%copies%init(this%work)
       this%xmf_count = -1
       this%nwrite = 0
       this%broken = .false.
@@ -149,29 +153,16 @@ contains
       this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
       this%fail_at = test_fail_at()
-      ! built under a staging name, then renamed: a .tmp file is always readable
-      call h5fcreate_f(this%staging_h5(), H5F_ACC_TRUNC_F, this%file, err)
-      if (err /= 0) then
-         this%file = -1
-         call fatal_error(error, 'cannot create results file '//this%staging_h5()// &
-            ' (does the directory of '//path//' exist and is it writable?)')
-         return
-      end if
-      call write_root(this%file, model, version, error)
-      if (.not. allocated(error)) call write_mesh(this%file, model%mesh, gauss_xy, error)
-      if (.not. allocated(error)) call write_joint_mesh(this%file, model, points, error)
-      if (.not. allocated(error)) call create_history(this%file, model, error)
-      if (.not. allocated(error)) call describe_mesh(this%file, model, this%units, error)
-      if (.not. allocated(error)) call describe_history(this%file, this%units, error)
-      if (.not. allocated(error)) then
-         call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
-         if (err /= 0) call fatal_error(error, 'HDF5: cannot flush results file '// &
-            this%staging_h5()//' (disk full?)')
-      end if
-      if (.not. allocated(error)) then
-         if (.not. rename_file(this%staging_h5(), this%work)) call fatal_error(error, &
-            'cannot rename '//this%staging_h5()//' onto '//this%work)
-      end if
+      ! both copies whole and flushed before the first is published: a .tmp is readable
+      do i = 1, 2
+         call this%copies%create(this%copies%next, error)
+         if (allocated(error)) exit
+         call write_start(this, model, version, gauss_xy, points, error)
+         if (.not. allocated(error)) call this%copies%flush(error)
+         if (allocated(error)) exit
+         if (i == 1) call this%copies%publish(error)
+         if (allocated(error)) exit
+      end do
       if (.not. allocated(error)) call commit(this, .true., error)
       if (allocated(error)) then
          this%broken = .true.
@@ -179,7 +170,26 @@ contains
       end if
    end subroutine results_create
 
-   !> Where the results of `path` are written while the run goes on: a hidden file of the
+   !> The first contents of a results file (into the copy written next): provenance, mesh,
+   !> empty history.
+   subroutine write_start(this, model, version, gauss_xy, points, error)
+      class(results_file_t), intent(inout) :: this
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: version
+      type(gauss_coordinates_t), intent(in) :: gauss_xy(:)
+      type(joint_points_t), intent(in) :: points(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: file
+      file = this%copies%id('next')
+      call write_root(file, model, version, error)
+      if (.not. allocated(error)) call write_mesh(file, model%mesh, gauss_xy, error)
+      if (.not. allocated(error)) call write_joint_mesh(file, model, points, error)
+      if (.not. allocated(error)) call create_history(file, model, error)
+      if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
+      if (.not. allocated(error)) call describe_history(file, this%units, error)
+   end subroutine write_start
+
+   !> Where the results of `path` can be read while the run goes on: a hidden file of the
    !> same directory named after the target and this process, 'out/a.h5' ->
    !> 'out/.a.h5.<pid>.tmp' (the same directory, so that the final rename is atomic).
    function temporary_path(path) result(tmp)
@@ -206,20 +216,11 @@ contains
    subroutine abandon(this)
       class(results_file_t), intent(inout) :: this
       integer :: err
-      if (this%file > 0) call h5fclose_f(this%file, err)
-      this%file = -1
-      call remove_file(this%staging_h5())
-      call remove_file(this%work)
-      call remove_file(this%work_xmf)
-      call remove_file(this%staging)
+      call this%copies%close('both', err)
+      call this%copies%remove(.true.)
+      if (allocated(this%work_xmf)) call remove_file(this%work_xmf)
+      if (allocated(this%staging)) call remove_file(this%staging)
    end subroutine abandon
-
-   !> Name under which the HDF5 file is built before its first flush.
-   function staging_h5(this) result(path)
-      class(results_file_t), intent(in) :: this
-      character(len=:), allocatable :: path
-      path = this%work(1:len(this%work) - 4)//'.new'
-   end function staging_h5
 
    !> The joint sets as the XDMF sees them.
    subroutine plan_xdmf_joints(this)
@@ -335,11 +336,12 @@ contains
       character(len=*), intent(in) :: list(:)
       type(error_t), allocatable, intent(out) :: error
       if (this%detached) return
-      if (this%file < 0) then
+      if (.not. this%is_open()) then
          call fatal_error(error, 'results file: warnings written to a file not open')
          return
       end if
-      call write_warnings(this%file, list, error)
+      ! into the copy that `finish` completes (the published one is never written)
+      call write_warnings(this%copies%id('next'), list, error)
    end subroutine results_warnings
 
    !> Root attribute `warnings`: one string per warning, "file:line: warning: text" (an
@@ -398,8 +400,9 @@ contains
       call h5_attr(g, 'patterns', names, error)
    end subroutine write_pattern_names
 
-   !> Appends one converged increment (history row, and fields when inc%write_fields),
-   !> then flushes the file (and, when due, rewrites the running XDMF). Refuses non-finite
+   !> Appends one converged increment (history row, and fields when inc%write_fields) to
+   !> both copies, one after the other, each flushed (and, when due, rewrites the running
+   !> XDMF). Refuses non-finite
    !> values and wrong shapes before writing anything. A failed write (disk full,
    !> permissions) is also kept as `write_failure`.
    !> `restart`: the state to restart from, written in the same flush as the increment.
@@ -409,7 +412,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
       if (this%detached) return
-      if (this%file <= 0) then
+      if (.not. this%is_open()) then
          call fatal_error(error, 'results file is not open')
          return
       end if
@@ -434,53 +437,72 @@ contains
    end subroutine results_write_increment
 
    !> Refuses to start an increment that may not fit on the disk (twice what the last one
-   !> took, plus 64 KiB): HDF5 cut short by a full disk leaves a damaged last increment.
+   !> took in both copies, plus 64 KiB): HDF5 cut short by a full disk leaves a damaged
+   !> last increment (in the copy being written; the published one stays whole).
    subroutine check_space(this, error)
       class(results_file_t), intent(in) :: this
       type(error_t), allocatable, intent(out) :: error
       integer(int64) :: free, need
       free = free_bytes(this%work)
-      need = 2*this%growth + 65536_int64
+      need = 4*this%growth + 65536_int64
       if (free >= 0 .and. free < need) call fatal_error(error, 'disk full: '// &
          itoa(int(free/1024))//' KiB left for '//this%work//', an increment needs about '// &
          itoa(int(need/1024))//' KiB')
    end subroutine check_space
 
-   !> The writing part of write_increment.
+   !> The writing part of write_increment: the copy written next gets the increment and is
+   !> flushed and published, then the other one (no longer published) gets it too. A copy
+   !> is written only while the other one is published, so the published copy is always
+   !> one flushed after a whole increment.
    subroutine write_checked(this, inc, error, restart)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
       integer(int64) :: nbytes
-      if (present(restart)) then
-         call write_restart_next(this%file, restart, error)
+      integer :: i
+      do i = 1, 2
+         call write_copy(this, this%copies%id('next'), inc, error, restart)
+         if (.not. allocated(error)) call this%copies%flush(error)
          if (allocated(error)) return
-      end if
+         if (i == 1) call this%copies%publish(error)
+         if (allocated(error)) return
+      end do
       if (inc%write_fields) then
-         call write_fields(this%file, inc, this%layout, this%strains, this%units, error)
-         if (allocated(error)) return
-         if (size(this%joints) > 0) call write_joint_fields(this%file, inc%global_increment, &
-            inc%joint_fields, this%joints, this%units, error)
-         if (allocated(error)) return
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
       end if
-      call write_history_row(this%file, this%nrows + 1, inc, error)
-      if (allocated(error)) return
       this%nrows = this%nrows + 1
       call commit(this, .false., error)
       if (allocated(error)) return
-      if (present(restart)) then
-         call swap_restart(this%file, error)
-         if (allocated(error)) return
-      end if
-      inquire (file=this%work, size=nbytes)
+      inquire (file=this%copies%name('next'), size=nbytes)
       if (nbytes > 0) then
          this%growth = max(0_int64, nbytes - this%bytes)
          this%bytes = nbytes
       end if
    end subroutine write_checked
+
+   !> One increment into the copy `file` (not flushed): restart state, fields, history row.
+   subroutine write_copy(this, file, inc, error, restart)
+      class(results_file_t), intent(in) :: this
+      integer(hid_t), intent(in) :: file
+      type(increment_result_t), intent(in) :: inc
+      type(error_t), allocatable, intent(out) :: error
+      type(restart_data_t), intent(in), optional :: restart
+      if (present(restart)) then
+         call write_restart_next(file, restart, error)
+         if (.not. allocated(error)) call swap_restart(file, error)
+         if (allocated(error)) return
+      end if
+      if (inc%write_fields) then
+         call write_fields(file, inc, this%layout, this%strains, this%units, error)
+         if (allocated(error)) return
+         if (size(this%joints) > 0) call write_joint_fields(file, inc%global_increment, &
+            inc%joint_fields, this%joints, this%units, error)
+         if (allocated(error)) return
+      end if
+      call write_history_row(file, this%nrows + 1, inc, error)
+   end subroutine write_copy
 
    !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
    subroutine test_hook(this, error)
@@ -491,16 +513,18 @@ contains
          ' failed on purpose: PECPLAS_TEST_FAIL_WRITE='//itoa(this%fail_at)//')')
    end subroutine test_hook
 
-   !> Records how the run ended, closes the file and renames it onto the target (then the
-   !> final XDMF, naming the target). status: one of RESULT_STATUSES; complete = 1 only for
-   !> 'completed'. On error the temporary file stays where `working_path` says.
+   !> Records how the run ended in the copy not published, closes it and renames it onto the
+   !> target (then the final XDMF, naming the target), then removes the published copy.
+   !> status: one of RESULT_STATUSES; complete = 1 only for 'completed'. On error the
+   !> temporary file stays where `working_path` says.
    subroutine results_finish(this, status, message, error)
       class(results_file_t), intent(inout) :: this
       character(len=*), intent(in) :: status, message
       type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: file
       integer :: complete, err
       if (this%detached) return
-      if (this%file <= 0) then
+      if (this%copies%id('next') <= 0) then
          call fatal_error(error, 'results file is not open')
          return
       end if
@@ -514,36 +538,40 @@ contains
       if (allocated(error)) return
       complete = 0
       if (status == 'completed') complete = 1
-      call h5_attr(this%file, 'status', status, error)
-      if (.not. allocated(error)) call h5_attr(this%file, 'status_message', message, error)
-      if (.not. allocated(error)) call h5_attr(this%file, 'finished', timestamp(), error)
+      file = this%copies%id('next')
+      call h5_attr(file, 'status', status, error)
+      if (.not. allocated(error)) call h5_attr(file, 'status_message', message, error)
+      if (.not. allocated(error)) call h5_attr(file, 'finished', timestamp(), error)
       if (.not. allocated(error) .and. complete == 1) &
-         call h5_attr(this%file, 'completed', timestamp(), error)
+         call h5_attr(file, 'completed', timestamp(), error)
       ! complete last: a crash in between leaves complete = 0
-      if (.not. allocated(error)) call h5_attr(this%file, 'complete', complete, error)
+      if (.not. allocated(error)) call h5_attr(file, 'complete', complete, error)
+      if (.not. allocated(error)) call this%copies%flush(error)
       if (allocated(error)) return
-      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
-      if (err == 0) call h5fclose_f(this%file, err)
+      call this%copies%close('next', err)
       if (err /= 0) then
-         call fatal_error(error, 'HDF5: cannot close results file '//this%work// &
-            ' (disk full?)')
+         call fatal_error(error, 'HDF5: cannot close results file '// &
+            this%copies%name('next')//' (disk full?)')
          return
       end if
-      this%file = -1
       ! the final sidecar is staged first: the two renames then follow each other closely
       call write_xdmf(this%staging, '', xdmf_text(this%layout, path_base(this%path), &
          this%written, this%written_time), error)
       if (allocated(error)) return
-      if (.not. rename_file(this%work, this%path)) then
-         call fatal_error(error, 'cannot rename '//this%work//' onto '//this%path// &
-            '; the results are in '//this%work)
+      if (.not. rename_file(this%copies%name('next'), this%path)) then
+         call fatal_error(error, 'cannot rename '//this%copies%name('next')//' onto '// &
+            this%path//'; the finished results are in '//this%copies%name('next'))
          return
       end if
       if (.not. rename_file(this%staging, this%xmf)) then
          call fatal_error(error, 'cannot rename '//this%staging//' onto '//this%xmf)
          return
       end if
+      ! the running sidecar first (it names the published copy), then the published copy:
+      ! names first, then closed (a close may still write)
       call remove_file(this%work_xmf)
+      call this%copies%remove(.true.)
+      call this%copies%close('both', err)
    end subroutine results_finish
 
    !> /limit: where the load of the run had its maximum (written before `finish`).
@@ -553,11 +581,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: g
       if (this%detached) return
-      if (this%file <= 0) then
+      if (.not. this%is_open()) then
          call fatal_error(error, 'results file is not open')
          return
       end if
-      call h5_group(this%file, 'limit', g, error)
+      ! into the copy that `finish` completes (the published one is never written)
+      call h5_group(this%copies%id('next'), 'limit', g, error)
       if (allocated(error)) return
       call h5_attr(g, 'kind', limit%kind, error)
       if (.not. allocated(error)) call h5_attr(g, 'step', limit%step, error)
@@ -576,7 +605,7 @@ contains
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)
       class(results_file_t), intent(in) :: this
-      results_is_open = this%file > 0
+      results_is_open = any(this%copies%ids > 0)
    end function results_is_open
 
    !> The file being written (temporary name) until `finish` renames it onto the target.
@@ -604,15 +633,24 @@ contains
 
    !> Closes the file without touching its status: a run stopped without `finish` keeps
    !> status 'running' and complete = 0, under its temporary name, next to an XDMF sidecar
-   !> (also temporary) that lists every increment written.
+   !> (also temporary) that lists every increment written. The copy not published, unless
+   !> a write into it failed, is closed and published in turn, then the other one goes.
    subroutine results_free(this)
       class(results_file_t), intent(inout) :: this
       type(error_t), allocatable :: error
       integer :: err
-      if (this%file <= 0) return
-      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
-      call h5fclose_f(this%file, err)
-      this%file = -1
+      if (.not. this%is_open()) return
+      if (this%copies%id('next') > 0) then
+         if (.not. this%broken) then
+            call this%copies%close('next', err)
+            if (err == 0) call this%copies%publish(error)
+         end if
+         ! the copy not published: its name first, then closed (a close may still write)
+         if (.not. allocated(error)) call this%copies%remove(.false.)
+         call this%copies%close('next', err)
+      end if
+      call this%copies%close('both', err)
+      if (allocated(error)) deallocate (error)
       if (.not. allocated(this%failure) .and. this%xmf_count /= size(this%written)) &
          call write_running_xmf(this, error)
    end subroutine results_free
@@ -622,19 +660,13 @@ contains
       call this%free()
    end subroutine results_final
 
-   !> Flushes to disk (the commit point of an increment) and rewrites the running XDMF when
-   !> it lacks increments and `force` or its period has passed (see XMF_PERIOD, XMF_SHARE).
+   !> After an increment is in both copies: rewrites the running XDMF when it lacks
+   !> increments and `force` or its period has passed (see XMF_PERIOD, XMF_SHARE).
    subroutine commit(this, force, error)
       class(results_file_t), intent(inout) :: this
       logical, intent(in) :: force
       type(error_t), allocatable, intent(out) :: error
-      integer :: err
       real(wp) :: since
-      call h5fflush_f(this%file, H5F_SCOPE_GLOBAL_F, err)
-      if (err /= 0) then
-         call fatal_error(error, 'HDF5: cannot flush results file '//this%work//' (disk full?)')
-         return
-      end if
       if (this%xmf_count == size(this%written)) return
       since = clock() - this%xmf_at
       if (force .or. since >= max(XMF_PERIOD, XMF_SHARE*this%xmf_cost)) &

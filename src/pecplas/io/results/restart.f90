@@ -1,13 +1,14 @@
 !> The `/restart` group of a results file: the full state of the last converged increment,
 !> as named 1-D real datasets (the driver packs and unpacks them: pecplas_driver_restart).
 !> It is replaced at every converged increment (written as /restart_next, then renamed), so
-!> the file holds one copy whatever the number of increments and a run killed while writing
-!> it keeps the previous one.
+!> the file holds one copy whatever the number of increments. The results writer flushes a
+!> copy of the file only once the increment, /restart included, is whole, and never writes
+!> the copy a killed run leaves for reading (pecplas_io_results_file).
 module pecplas_io_results_restart
    use, intrinsic :: iso_c_binding, only: c_loc
-   use hdf5, only: hid_t, hsize_t, h5lexists_f, h5ldelete_f, h5lmove_f, h5fflush_f, &
-      H5F_SCOPE_GLOBAL_F, h5gopen_f, h5dopen_f, h5dclose_f, h5dget_space_f, h5sclose_f, &
-      h5sget_simple_extent_dims_f, h5dwrite_f, H5T_NATIVE_DOUBLE
+   use hdf5, only: hid_t, hsize_t, h5lexists_f, h5ldelete_f, h5lmove_f, h5gopen_f, h5dopen_f, &
+      h5dclose_f, h5dget_space_f, h5sclose_f, h5sget_simple_extent_dims_f, h5dwrite_f, &
+      H5T_NATIVE_DOUBLE
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write
@@ -74,12 +75,9 @@ contains
       call fatal_error(error, 'restart data has no '//name)
    end subroutine data_get
 
-   !> Writes `data` as /restart of the open file `file`, replacing the previous one.
-   !> The state of the converged increment into /restart_next, overwritten in place (both
-   !> restart groups keep their datasets, so no file space is freed and reused). The results
-   !> file's flush of the increment makes it durable; swap_restart then renames it /restart.
-   !> A process killed at any moment leaves /restart (or, inside the swap, /restart_next)
-   !> complete.
+   !> Writes `data` as /restart_next of the open file `file`, overwritten in place (both
+   !> restart groups keep their datasets, so no file space is freed and reused);
+   !> swap_restart then renames it /restart, before the flush of the increment.
    subroutine write_restart_next(file, data, error)
       integer(hid_t), intent(in) :: file
       type(restart_data_t), intent(in) :: data
@@ -101,8 +99,8 @@ contains
       call h5_close_group(g)
    end subroutine write_restart_next
 
-   !> After the flush that made /restart_next durable: the two names swap by link moves,
-   !> flushed at once (the next write_restart_next overwrites what was /restart).
+   !> After write_restart_next: the two names swap by link moves (the next
+   !> write_restart_next overwrites what was /restart). The caller flushes.
    subroutine swap_restart(file, error)
       integer(hid_t), intent(in) :: file
       type(error_t), allocatable, intent(out) :: error
@@ -112,7 +110,6 @@ contains
       if (found) call h5lmove_f(file, RESTART_GROUP, file, SWAP, err)
       if (err == 0) call h5lmove_f(file, NEXT, file, RESTART_GROUP, err)
       if (err == 0 .and. found) call h5lmove_f(file, SWAP, file, NEXT, err)
-      if (err == 0) call h5fflush_f(file, H5F_SCOPE_GLOBAL_F, err)
       if (err /= 0) call fatal_error(error, 'cannot write the restart group')
    end subroutine swap_restart
 

@@ -1,0 +1,159 @@
+!> The two copies of a running results file, so that `kill -9` at any moment leaves a
+!> readable one. HDF5 writes its metadata in place, without a journal: a file is consistent
+!> after a flush and may not be while it is written (the library also evicts metadata
+!> between flushes). So every increment is written and flushed into one copy, that copy is
+!> published, and the increment is then written and flushed into the other:
+!>
+!>     .NAME.h5.<pid>.a, .NAME.h5.<pid>.b   the two copies (HDF5 files, both open)
+!>     .NAME.h5.<pid>.tmp                   another name (a hard link) of the copy published
+!>
+!> The published copy is never written: `.tmp` names, at every instant, a file flushed after
+!> a whole increment, the newest one. Publishing is a link made under a staging name
+!> (`.NAME.h5.<pid>.new`) and renamed onto `.tmp`, both atomic; where the file system has
+!> no hard links a symbolic link is used. The cost: every increment is written twice.
+module pecplas_io_results_copies
+   use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, &
+      H5F_SCOPE_GLOBAL_F
+   use pecplas_error, only: error_t, fatal_error
+   use pecplas_files, only: rename_file, remove_file, link_file, symlink_file
+   implicit none (type, external)
+   private
+
+   public :: copies_t
+
+   type :: copies_t
+      !> HDF5 ids of the copies (-1: closed) and their file names.
+      integer(hid_t) :: ids(2) = -1
+      character(len=:), allocatable :: names(:)
+      !> The published name (.tmp) and the name the link is made under (.new).
+      character(len=:), allocatable :: link, staging
+      !> The copy written next (1 or 2); the other one is published once `publish` ran.
+      integer :: next = 1
+      !> False once a publication had to use a symbolic link (no hard links here).
+      logical :: hard = .true.
+   contains
+      procedure :: init => copies_init
+      procedure :: create => copies_create
+      procedure :: id => copies_id
+      procedure :: name => copies_name
+      procedure :: flush => copies_flush
+      procedure :: publish => copies_publish
+      procedure :: close => copies_close
+      procedure :: remove => copies_remove
+   end type copies_t
+
+contains
+
+   !> Names of the copies for the published name `link` ('.a.h5.12.tmp' ->
+   !> '.a.h5.12.a', '.a.h5.12.b', staging '.a.h5.12.new').
+   subroutine copies_init(this, link)
+      class(copies_t), intent(inout) :: this
+      character(len=*), intent(in) :: link
+      character(len=:), allocatable :: stem
+      stem = link(1:len(link) - 4)
+      this%link = link
+      this%staging = stem//'.new'
+      this%names = [character(len=len(stem) + 2) :: stem//'.a', stem//'.b']
+      this%ids = -1
+      this%next = 1
+      this%hard = .true.
+   end subroutine copies_init
+
+   !> Creates (truncates) copy `i`. A file left under its name by an earlier process of the
+   !> same id is unlinked first, not truncated: it may be that run's published results.
+   subroutine copies_create(this, i, error)
+      class(copies_t), intent(inout) :: this
+      integer, intent(in) :: i
+      type(error_t), allocatable, intent(out) :: error
+      integer :: err
+      call remove_file(this%names(i))
+      call h5fcreate_f(this%names(i), H5F_ACC_TRUNC_F, this%ids(i), err)
+      if (err /= 0) then
+         this%ids(i) = -1
+         call fatal_error(error, 'cannot create results file '//this%names(i)// &
+            ' (does its directory exist and is it writable?)')
+      end if
+   end subroutine copies_create
+
+   !> HDF5 id of the copy written next (`which` = 'next') or of the published one ('shown').
+   integer(hid_t) function copies_id(this, which) result(id)
+      class(copies_t), intent(in) :: this
+      character(len=*), intent(in) :: which
+      id = this%ids(pick(this, which))
+   end function copies_id
+
+   !> File name of the copy written next or of the published one.
+   function copies_name(this, which) result(name)
+      class(copies_t), intent(in) :: this
+      character(len=*), intent(in) :: which
+      character(len=:), allocatable :: name
+      name = this%names(pick(this, which))
+   end function copies_name
+
+   integer function pick(this, which)
+      class(copies_t), intent(in) :: this
+      character(len=*), intent(in) :: which
+      pick = this%next
+      if (which == 'shown') pick = 3 - this%next
+   end function pick
+
+   !> Flushes the copy written next: the commit point of what was written into it.
+   subroutine copies_flush(this, error)
+      class(copies_t), intent(inout) :: this
+      type(error_t), allocatable, intent(out) :: error
+      integer :: err
+      call h5fflush_f(this%ids(this%next), H5F_SCOPE_GLOBAL_F, err)
+      if (err /= 0) call fatal_error(error, 'HDF5: cannot flush results file '// &
+         this%names(this%next)//' (disk full?)')
+   end subroutine copies_flush
+
+   !> Publishes the copy written next (flushed by the caller) as `link`, atomically, and
+   !> makes the other copy the next one written.
+   subroutine copies_publish(this, error)
+      class(copies_t), intent(inout) :: this
+      type(error_t), allocatable, intent(out) :: error
+      call remove_file(this%staging)
+      if (this%hard) this%hard = link_file(this%names(this%next), this%staging)
+      if (.not. this%hard .and. .not. symlink_file(this%names(this%next), this%staging)) then
+         call fatal_error(error, 'cannot link '//this%names(this%next)//' as '// &
+            this%staging//' (the results directory must allow hard or symbolic links)')
+         return
+      end if
+      if (.not. rename_file(this%staging, this%link)) then
+         call fatal_error(error, 'cannot rename '//this%staging//' onto '//this%link)
+         return
+      end if
+      this%next = 3 - this%next
+   end subroutine copies_publish
+
+   !> Closes copy `which` ('next', 'shown' or 'both'); errors ignored, err of the last
+   !> close returned.
+   subroutine copies_close(this, which, err)
+      class(copies_t), intent(inout) :: this
+      character(len=*), intent(in) :: which
+      integer, intent(out) :: err
+      integer :: i
+      err = 0
+      do i = 1, 2
+         if (which /= 'both' .and. i /= pick(this, which)) cycle
+         if (this%ids(i) > 0) call h5fclose_f(this%ids(i), err)
+         this%ids(i) = -1
+      end do
+   end subroutine copies_close
+
+   !> Removes the names of the copies (the files stay until closed), the staging name and,
+   !> with `link`, the published name. Without `link` the published copy keeps its own
+   !> name when `link` is a symbolic link to it.
+   subroutine copies_remove(this, link)
+      class(copies_t), intent(in) :: this
+      logical, intent(in) :: link
+      integer :: i
+      if (.not. allocated(this%names)) return
+      do i = 1, 2
+         if (link .or. this%hard .or. i == this%next) call remove_file(this%names(i))
+      end do
+      call remove_file(this%staging)
+      if (link) call remove_file(this%link)
+   end subroutine copies_remove
+
+end module pecplas_io_results_copies
