@@ -52,7 +52,10 @@ def uniform_series(model, element):
     """[(DOFs, error)] of the uniform mesh series of doc/bench/work_precision.csv (the
     Newton-type solvers; every one gives the same values) and the model's Richardson
     reference [m], read as tools/bench_adapt.py reads them."""
-    return bench_adapt.uniform_rows(model, element)
+    rows = [r for r in bench_adapt.csv_runs("s2")
+            if (r["model"], r["element"], r["series"]) == (model, element, "mesh")
+            and r["status"] == "ok"]
+    return sorted({r["dofs"]: r["error"] for r in rows}.items()), rows[-1]["ref"]
 
 
 # (model, element): the Richardson reference that applies and why.
@@ -69,7 +72,7 @@ S2_CASES = {
 def s2_run(request, tmp_path_factory):
     model, element = request.param
     tmp = tmp_path_factory.mktemp(f"s2_{model}_{element}")
-    rc, out, err, levels = run(bench_adapt.deck_text(model, element), tmp, "s2",
+    rc, out, err, levels = run(bench_adapt.s2_deck(model, element), tmp, "s2",
                                "--target-error", "1%", "--goal", "node:1:y",
                                "--max-dofs", 20000)
     uniform, ref = uniform_series(model, element)

@@ -139,7 +139,7 @@ def test_advised_configuration_meets_its_claim(pecplas, tmp_path, uniform, goal,
 def test_advise_bad_goal_is_input_error(pecplas, tmp_path):
     deck = footing(tmp_path / "footing.inp", 2, 1)
     for args, text in ((["--goal", "node:999999:y"], "no node 999999"),
-                       (["--goal", "energy"], "needs a node goal"),
+                       (["--goal", "energy"], "takes node goals"),
                        (["--goal", "node:1:q"], "expected node:N:x"),
                        (["--advise-node", "999999"], "no node 999999")):
         r = run(pecplas, "--advise", deck, *args)

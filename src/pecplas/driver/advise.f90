@@ -238,8 +238,10 @@ contains
       inode = 0
       if (len_trim(goal) > 0) then
          call parse_goal(goal, id, dof, msg)
-         if (.not. allocated(msg) .and. id == 0) msg = 'the advice needs a node goal '// &
-            '(node:N:x or node:N:y), got '''//trim(goal)//''''
+         ! --target-error takes other goals too; the advice only node goals, so a malformed
+         ! or other goal gets the one message that names what the advice accepts
+         if (allocated(msg) .or. id == 0) msg = 'expected node:N:x or node:N:y (the advice '// &
+            'takes node goals), got '''//trim(goal)//''''
          if (allocated(msg)) then
             call input_error(error, 'advise: --goal: '//msg)
             return
