@@ -55,7 +55,7 @@ static cholmod_sparse wrap(int n, const int *colptr, const int *rowind, const do
 
 /* New handle. ldl = 0: supernodal LL' (production); ldl = 1: simplicial LDL' (used to tell
  * a singular matrix from an indefinite one). Fill-reducing ordering by the project's rule
- * (see PECPLAS_METIS_MIN_EQUATIONS); the one used is read back with pecplas_cholmod_ordering. */
+ * (pecplas_cholmod_analyse); the one used is read back with pecplas_cholmod_ordering. */
 void *pecplas_cholmod_new(int ldl) {
     pecplas_cholmod *h = calloc(1, sizeof *h);
     if (!h) return NULL;
@@ -149,36 +149,59 @@ done:
     return ok;
 }
 
-/* The project's rule. Below this many equations CHOLMOD's default strategy (AMD; METIS
- * also tried when AMD fills badly): there nested dissection saves fewer flops than its
- * ordering costs. From it up, METIS on the graph of nodes (metis_on_nodes): on the elastic
- * plane-strain blocks it has the smaller flop count and the smaller ordering + factorisation
- * time (doc/bench/ordering.md). */
-#define PECPLAS_METIS_MIN_EQUATIONS 50000
-
-/* Symbolic analysis (ordering + supernodes) of the pattern; replaces any earlier one. */
-int pecplas_cholmod_analyse(void *handle, int n, const int *colptr, const int *rowind) {
-    pecplas_cholmod *h = handle;
-    cholmod_sparse a = wrap(n, colptr, rowind, NULL);
-    int ordering = h->ordering, *perm = NULL;
-    cholmod_free_factor(&h->L, &h->c);
-    if (ordering == PECPLAS_ORDER_RULE)
-        ordering = n >= PECPLAS_METIS_MIN_EQUATIONS ? PECPLAS_ORDER_METIS_NODES
-                                                     : PECPLAS_ORDER_CHOLMOD_DEFAULT;
+/* Analysis with one requested ordering (not the rule); perm: METIS_NODES' scratch. */
+static cholmod_factor *analyse_with(pecplas_cholmod *h, cholmod_sparse *a, int ordering,
+                                    int *perm) {
     h->nodes_metis = 0;
     if (ordering == PECPLAS_ORDER_METIS_NODES) {
-        perm = malloc(sizeof(int) * (size_t)n);
-        h->nodes_metis = perm && metis_on_nodes(&h->c, &a, perm);
+        h->nodes_metis = perm && metis_on_nodes(&h->c, a, perm);
         h->c.status = CHOLMOD_OK;
-        ordering = h->nodes_metis ? CHOLMOD_GIVEN : PECPLAS_ORDER_CHOLMOD_DEFAULT;
+        ordering = h->nodes_metis ? CHOLMOD_GIVEN : CHOLMOD_AMD; /* METIS failed: AMD */
     }
     h->c.nmethods = ordering == PECPLAS_ORDER_CHOLMOD_DEFAULT ? 0 : 1;
     h->c.method[0].ordering = ordering == PECPLAS_ORDER_CHOLMOD_DEFAULT ? CHOLMOD_GIVEN : ordering;
-    h->L = cholmod_analyze_p(&a, h->nodes_metis ? perm : NULL, NULL, 0, &h->c);
+    return cholmod_analyze_p(a, h->nodes_metis ? perm : NULL, NULL, 0, &h->c);
+}
+
+/* AMD's flops per entry of L from which nested dissection is tried too: the test CHOLMOD's
+ * default strategy uses (it then runs METIS on the equation graph). */
+#define PECPLAS_ND_FLOPS_PER_ENTRY 500.0
+
+/* Symbolic analysis (ordering + supernodes) of the pattern; replaces any earlier one.
+ * The project's rule: AMD, the fastest ordering; when it leaves PECPLAS_ND_FLOPS_PER_ENTRY or
+ * more flops per entry of L (2-D blocks from about 5e5 equations), also METIS on the graph of
+ * nodes, and the ordering with the smaller flop count is kept. CHOLMOD's default strategy
+ * makes the same test but runs METIS on the equation graph, which at 1e6 equations takes
+ * two to three times longer, and keeps the smaller nnz(L) (doc/bench/ordering.md). */
+int pecplas_cholmod_analyse(void *handle, int n, const int *colptr, const int *rowind) {
+    pecplas_cholmod *h = handle;
+    cholmod_sparse a = wrap(n, colptr, rowind, NULL);
+    int *perm = NULL;
+    cholmod_free_factor(&h->L, &h->c);
+    if (h->ordering != PECPLAS_ORDER_RULE) {
+        if (h->ordering == PECPLAS_ORDER_METIS_NODES) perm = malloc(sizeof(int) * (size_t)n);
+        h->L = analyse_with(h, &a, h->ordering, perm);
+    } else {
+        h->L = analyse_with(h, &a, CHOLMOD_AMD, NULL);
+        if (h->L && h->c.fl >= PECPLAS_ND_FLOPS_PER_ENTRY * h->c.lnz) {
+            double fl = h->c.fl, lnz = h->c.lnz;
+            perm = malloc(sizeof(int) * (size_t)n);
+            cholmod_factor *nd = perm ? analyse_with(h, &a, PECPLAS_ORDER_METIS_NODES, perm) : NULL;
+            if (nd && h->nodes_metis && h->c.fl < fl) {
+                cholmod_free_factor(&h->L, &h->c);
+                h->L = nd;
+            } else { /* AMD stays */
+                cholmod_free_factor(&nd, &h->c);
+                h->nodes_metis = 0;
+                h->c.fl = fl;
+                h->c.lnz = lnz;
+                h->c.status = CHOLMOD_OK;
+            }
+        }
+    }
     free(perm);
     return h->L ? h->c.status : (h->c.status < 0 ? h->c.status : CHOLMOD_INVALID);
 }
-
 
 /* Numeric factorisation on the analysed pattern. Returns Common->status
  * (CHOLMOD_NOT_POSDEF = 1 when a pivot is not positive; see pecplas_cholmod_minor). */
