@@ -14,13 +14,12 @@ program bench_ordering
    use pecplas_cli, only: run_deck
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_timers, only: wall_time
-   use pecplas_files, only: make_directories
    use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &
       pecplas_cholmod_analyse, pecplas_cholmod_factorise, pecplas_cholmod_solve, &
       pecplas_cholmod_lnz, pecplas_cholmod_flops, pecplas_cholmod_ordering, &
       pecplas_cholmod_set_ordering, ORDER_RULE, ORDER_CHOLMOD_DEFAULT, ORDER_AMD, &
       ORDER_METIS, ORDER_NESDIS, ORDER_METIS_NODES
-   use bench_mesh, only: write_square_msh, write_square_deck
+   use bench_mesh, only: square_case
    implicit none (type, external)
    integer(c_int), parameter :: METHODS(6) = [ORDER_AMD, ORDER_CHOLMOD_DEFAULT, ORDER_METIS, &
       ORDER_NESDIS, ORDER_METIS_NODES, ORDER_RULE]
@@ -29,7 +28,7 @@ program bench_ordering
    character(len=11), parameter :: CODES(0:6) = [character(len=11) :: 'NATURAL', 'GIVEN', &
       'AMD', 'METIS', 'NESDIS', 'COLAMD', 'POSTORDERED']
    character(len=64) :: arg
-   character(len=:), allocatable :: etype, dir, base
+   character(len=:), allocatable :: etype, base
    integer :: n, code, repeats, m, r, used
    logical :: wanted(6), first
    type(model_t) :: model
@@ -39,14 +38,8 @@ program bench_ordering
    real(wp), allocatable :: b(:), x(:), xref(:), ta(:), tf(:)
    integer(c_int) :: rc, neq
 
-   if (command_argument_count() < 2) &
-      error stop 'usage: pecplas-bench-ordering Q4|Q8 N [DIR] [REPEATS] [ORDERINGS]'
-   call get_command_argument(1, arg); etype = trim(arg)
-   call get_command_argument(2, arg); read (arg, *) n
-   dir = 'build/bench'
-   if (command_argument_count() >= 3) then
-      call get_command_argument(3, arg); dir = trim(arg)
-   end if
+   call square_case('usage: pecplas-bench-ordering Q4|Q8 N [DIR] [REPEATS] [ORDERINGS]', &
+      etype, n, base)
    repeats = 3
    if (command_argument_count() >= 4) then
       call get_command_argument(4, arg); read (arg, *) repeats
@@ -59,11 +52,6 @@ program bench_ordering
          wanted(m) = index(','//trim(arg)//',', ','//trim(LABELS(m))//',') > 0
       end do
    end if
-   call make_directories(dir)
-   write (arg, '(a,a,i0)') etype, '_', n
-   base = dir//'/square_'//trim(arg)
-   call write_square_msh(base//'.msh', etype, n)
-   call write_square_deck(base//'.inp', 'square_'//trim(arg)//'.msh')
    code = run_deck(base//'.inp', base//'.h5', .true., model, problem)
    if (code /= 0) error stop 'bench run failed'
 
