@@ -11,14 +11,12 @@ program bench_massif
    use pecplas_cli, only: run_deck
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_timers, only: wall_time
-   use pecplas_files, only: make_directories
    use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &
       pecplas_cholmod_analyse, pecplas_cholmod_factorise, pecplas_cholmod_solve, &
       pecplas_cholmod_lnz
-   use bench_mesh, only: write_square_msh, write_square_deck
+   use bench_mesh, only: square_case
    implicit none (type, external)
-   character(len=64) :: arg
-   character(len=:), allocatable :: etype, dir, base
+   character(len=:), allocatable :: etype, base
    integer :: n, code
    type(model_t) :: model
    type(problem_t) :: problem
@@ -27,18 +25,7 @@ program bench_massif
    real(wp), allocatable :: b(:), x(:)
    integer(c_int) :: rc
 
-   if (command_argument_count() < 2) error stop 'usage: pecplas-bench Q4|Q8 N [DIR]'
-   call get_command_argument(1, arg); etype = trim(arg)
-   call get_command_argument(2, arg); read (arg, *) n
-   dir = 'build/bench'
-   if (command_argument_count() >= 3) then
-      call get_command_argument(3, arg); dir = trim(arg)
-   end if
-   call make_directories(dir)
-   write (arg, '(a,a,i0)') etype, '_', n
-   base = dir//'/square_'//trim(arg)
-   call write_square_msh(base//'.msh', etype, n)
-   call write_square_deck(base//'.inp', 'square_'//trim(arg)//'.msh')
+   call square_case('usage: pecplas-bench Q4|Q8 N [DIR]', etype, n, base)
 
    t0 = wall_time()
    code = run_deck(base//'.inp', base//'.h5', .true., model, problem)

@@ -2,9 +2,10 @@
 !> base, top, sides, soil) with a deck that loads the top by a pressure.
 module bench_mesh
    use pecplas_kinds, only: wp
+   use pecplas_files, only: make_directories
    implicit none (type, external)
    private
-   public :: write_square_msh, write_square_deck, write_square_keywords
+   public :: write_square_msh, write_square_deck, write_square_keywords, square_case
 
 contains
 
@@ -84,6 +85,29 @@ contains
          end do
       end subroutine line_nodes
    end subroutine write_square_msh
+
+   !> The command line `ETYPE N [DIR] ...` of the square benchmarks (DIR: build/bench by
+   !> default): writes the N x N square of ETYPE elements there (Gmsh file and deck) and
+   !> returns the path of both without extension.
+   subroutine square_case(usage, etype, n, base)
+      character(len=*), intent(in) :: usage
+      character(len=:), allocatable, intent(out) :: etype, base
+      integer, intent(out) :: n
+      character(len=64) :: arg
+      character(len=:), allocatable :: dir
+      if (command_argument_count() < 2) error stop usage
+      call get_command_argument(1, arg); etype = trim(arg)
+      call get_command_argument(2, arg); read (arg, *) n
+      dir = 'build/bench'
+      if (command_argument_count() >= 3) then
+         call get_command_argument(3, arg); dir = trim(arg)
+      end if
+      call make_directories(dir)
+      write (arg, '(a,a,i0)') etype, '_', n
+      base = dir//'/square_'//trim(arg)
+      call write_square_msh(base//'.msh', etype, n)
+      call write_square_deck(base//'.inp', 'square_'//trim(arg)//'.msh')
+   end subroutine square_case
 
    subroutine write_square_deck(path, msh)
       character(len=*), intent(in) :: path, msh

@@ -59,6 +59,7 @@ program tester
    use test_model_units, only: collect_model_units
    use test_linalg_mumps, only: collect_linalg_mumps
    use test_fe_share, only: collect_fe_share
+   use test_linalg_cholmod_ordering, only: collect_linalg_cholmod_ordering
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -124,6 +125,7 @@ program tester
    suites = [suites, new_testsuite('adapt', collect_adapt)]
    suites = [suites, new_testsuite('linalg_mumps', collect_linalg_mumps)]
    suites = [suites, new_testsuite('fe_share', collect_fe_share)]
+   suites = [suites, new_testsuite('linalg_cholmod_ordering', collect_linalg_cholmod_ordering)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

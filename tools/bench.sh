@@ -2,6 +2,7 @@
 # make bench: the benchmark suite (never part of make test). Every number in doc/bench/ is
 # measured by this run; every CSV row carries the commit and the machine (tools/bench_common.py).
 #   1. program overhead vs a bare CHOLMOD solve, MODJOIN law speed   (tools/bench_solver.py)
+#   1b. CHOLMOD fill-reducing orderings on the same blocks           (tools/bench_ordering.py)
 #   2. stability maps: iterations vs K_n/E and increment size        (tools/bench_stability.py)
 #   3. scaling of an elastic-plastic mesh, 1e4 .. 1e6 DOFs            (tools/bench_scaling.py)
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
@@ -39,7 +40,7 @@ if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('opensees
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver stability scaling work_precision adapt peer peer_opensees deck; do
+for part in solver ordering stability scaling work_precision adapt peer peer_opensees deck; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

@@ -90,14 +90,14 @@ def laws():
     return rows
 
 
-def solver(quick):
+def solver(quick, threads_list=THREADS):
     exe = executable("pecplas-bench")
     cases = [("Q4", 70), ("Q8", 41), ("Q4", 223), ("Q8", 129)]
     if not quick:
         cases += [("Q4", 707), ("Q8", 408)]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for threads in THREADS:
+        for threads in threads_list:
             os.environ["OMP_NUM_THREADS"] = str(threads)
             for el, n in cases:
                 load = load1()
@@ -132,6 +132,18 @@ def solver(quick):
                   f"{d['bare_cholmod_s']:.3f} [{d['bare_min_s']:.3f}-{d['bare_max_s']:.3f}] | "
                   f"{d['ratio']:.2f} [{d['ratio_min']:.2f}-{d['ratio_max']:.2f}] | "
                   f"{d['peak_mb']:.0f} |")
+    md += ["", "Both use the same CHOLMOD ordering rule (doc/theory.md §5; nnz(L) in "
+           "`solver.csv`)."]
+    for r in rows:
+        d = dict(zip(COLUMNS + EXTRA, r))
+        if d["equations"] > 5e5:
+            md.append(f"- Target total / bare <= 1.2 at 1e6, {d['element']}, {d['threads']} "
+                      f"thread(s): {d['ratio']:.2f} [{d['ratio_min']:.2f}-{d['ratio_max']:.2f}]"
+                      f", {'met' if d['ratio'] <= 1.2 else 'not met'} on this run.")
+    worst = max(d[EXTRA.index("load1") + len(COLUMNS)] for d in rows)
+    if worst > 2:
+        md += ["", f"**Not final: load average up to {worst:.1f} on {os.cpu_count()} cores** "
+               "(other programs were running)."]
     write_fragment("solver", "\n".join(md))
     return rows
 
@@ -139,11 +151,15 @@ def solver(quick):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="skip the 1e6-equation cases")
+    ap.add_argument("--threads", type=int, nargs="+", default=list(THREADS),
+                    help="thread settings to run (default: 1 2)")
+    ap.add_argument("--no-laws", action="store_true", help="skip the interface-law part")
     a = ap.parse_args()
-    for v, up, up1, t, lo, hi, _, _ in laws():
-        print(f"{v}: {up:.3g} [{lo:.3g} - {hi:.3g}] updates/s, 8000-step CNL {t:.4f} s",
-              flush=True)
-    solver(a.quick)
+    if not a.no_laws:
+        for v, up, up1, t, lo, hi, _, _ in laws():
+            print(f"{v}: {up:.3g} [{lo:.3g} - {hi:.3g}] updates/s, 8000-step CNL {t:.4f} s",
+                  flush=True)
+    solver(a.quick, a.threads)
 
 
 if __name__ == "__main__":

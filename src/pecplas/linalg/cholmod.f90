@@ -27,7 +27,15 @@ module pecplas_linalg_cholmod
    public :: pecplas_cholmod_factorise, pecplas_cholmod_solve, pecplas_cholmod_pivots
    public :: pecplas_cholmod_perm, pecplas_cholmod_rcond, pecplas_cholmod_status
    public :: pecplas_cholmod_minor, pecplas_cholmod_ordering, pecplas_cholmod_lnz
-   public :: pecplas_cholmod_flops, pecplas_cholmod_peak_memory
+   public :: pecplas_cholmod_flops, pecplas_cholmod_peak_memory, pecplas_cholmod_set_ordering
+   public :: ORDER_RULE, ORDER_CHOLMOD_DEFAULT, ORDER_METIS_NODES, ORDER_AMD, ORDER_METIS
+   public :: ORDER_NESDIS
+
+   !> Orderings pecplas_cholmod_set_ordering accepts: the project's rule (the default of every
+   !> new handle), CHOLMOD's own default strategy, METIS on the graph of nodes (equations with
+   !> the same column pattern merged), or one CHOLMOD ordering code.
+   integer(c_int), parameter :: ORDER_RULE = -1, ORDER_CHOLMOD_DEFAULT = -2, &
+      ORDER_METIS_NODES = -3, ORDER_AMD = 2, ORDER_METIS = 3, ORDER_NESDIS = 4
 
    integer(c_int), parameter :: CHOLMOD_OK = 0, CHOLMOD_NOT_POSDEF = 1
 
@@ -39,6 +47,11 @@ module pecplas_linalg_cholmod
       subroutine pecplas_cholmod_delete(h) bind(C)
          import :: c_ptr
          type(c_ptr), value :: h
+      end subroutine
+      subroutine pecplas_cholmod_set_ordering(h, ordering) bind(C)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: h
+         integer(c_int), value :: ordering
       end subroutine
       integer(c_int) function pecplas_cholmod_analyse(h, n, colptr, rowind) bind(C)
          import :: c_ptr, c_int
@@ -100,7 +113,8 @@ module pecplas_linalg_cholmod
       end function
    end interface
 
-   !> Supernodal LL' with CHOLMOD's default ordering. Only the upper triangle of the CSC
+   !> Supernodal LL', ordering by the shim's rule (CHOLMOD's default strategy below 50 000
+   !> equations, METIS on the graph of nodes from there). Only the upper triangle of the CSC
    !> matrix is read. Do not copy a solver that holds a factor (the handle would be shared).
    type, extends(linear_solver_t) :: cholmod_solver_t
       type(c_ptr), private :: handle = c_null_ptr

@@ -4,7 +4,8 @@
  * lives in an opaque handle allocated here. The matrix is never copied: a cholmod_sparse
  * header is laid over the caller's CSC arrays (0-based int, rows sorted, stype = 1 so only
  * the upper triangle is read, whether the full matrix or only its upper part is stored).
- * No logic beyond binding: every decision is made on the Fortran side.
+ * Beyond binding, one decision is made here so that the program and a bare benchmark of
+ * the same matrix order it alike: the fill-reducing ordering (pecplas_cholmod_analyse).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -21,10 +22,16 @@
 #include <omp.h>
 #endif
 
+/* Requested fill-reducing ordering: the project's rule, CHOLMOD's own default strategy, or
+ * one CHOLMOD ordering code (CHOLMOD_AMD, CHOLMOD_METIS, CHOLMOD_NESDIS, ...). */
+enum { PECPLAS_ORDER_RULE = -1, PECPLAS_ORDER_CHOLMOD_DEFAULT = -2, PECPLAS_ORDER_METIS_NODES = -3 };
+
 typedef struct {
     cholmod_common c;
     cholmod_factor *L;
     cholmod_dense *X, *Y, *E; /* solve workspaces kept between solves */
+    int ordering;             /* requested ordering, see the enum above */
+    int nodes_metis;          /* the last analysis used metis_on_nodes */
 } pecplas_cholmod;
 
 /* Header over caller-owned CSC arrays (values may be NULL for a pattern). */
@@ -47,8 +54,8 @@ static cholmod_sparse wrap(int n, const int *colptr, const int *rowind, const do
 }
 
 /* New handle. ldl = 0: supernodal LL' (production); ldl = 1: simplicial LDL' (used to tell
- * a singular matrix from an indefinite one). Default fill-reducing ordering (AMD, METIS
- * tried when AMD fills badly); the one chosen is read back with pecplas_cholmod_ordering. */
+ * a singular matrix from an indefinite one). Fill-reducing ordering by the project's rule
+ * (pecplas_cholmod_analyse); the one used is read back with pecplas_cholmod_ordering. */
 void *pecplas_cholmod_new(int ldl) {
     pecplas_cholmod *h = calloc(1, sizeof *h);
     if (!h) return NULL;
@@ -56,6 +63,7 @@ void *pecplas_cholmod_new(int ldl) {
     h->c.print = 0; /* errors are reported by the caller from the status */
     h->c.supernodal = ldl ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
     h->c.final_ll = ldl ? 0 : 1;
+    h->ordering = PECPLAS_ORDER_RULE;
 #if CHOLMOD_MAIN_VERSION >= 4 && defined(_OPENMP)
     h->c.nthreads_max = omp_get_max_threads(); /* the program's thread setting */
 #endif
@@ -73,12 +81,125 @@ void pecplas_cholmod_delete(void *handle) {
     free(h);
 }
 
-/* Symbolic analysis (ordering + supernodes) of the pattern; replaces any earlier one. */
+/* Requests an ordering for the next analyses: -1 the project's rule (the default), -2
+ * CHOLMOD's own default strategy, -3 METIS on the graph of nodes, else a CHOLMOD ordering
+ * code (benchmarks compare them). */
+void pecplas_cholmod_set_ordering(void *handle, int ordering) {
+    ((pecplas_cholmod *)handle)->ordering = ordering;
+}
+
+/* METIS nested dissection of the graph of nodes. Adjacent equations whose columns in the
+ * full pattern of A are the same set (the degrees of freedom of one node) are merged into one
+ * vertex; the graph METIS_NodeND orders then has about half the vertices and a quarter of
+ * the edges of the equation graph CHOLMOD's own METIS call would order, which makes nested
+ * dissection cheap enough to pay at 1e5-1e6 equations. On success perm[k] is the equation
+ * eliminated k-th (0-based) and 1 is returned; 0 on failure (out of memory, METIS error). */
+static int metis_on_nodes(cholmod_common *c, cholmod_sparse *a, int *perm) {
+    int n = (int)a->nrow, ok = 0;
+    cholmod_sparse *s = cholmod_copy(a, 0, 0, c); /* both triangles, pattern with diagonal */
+    int *first = malloc(sizeof(int) * ((size_t)n + 1)), *group = malloc(sizeof(int) * (size_t)n);
+    int *mark = malloc(sizeof(int) * (size_t)n), *cperm = malloc(sizeof(int) * (size_t)n);
+    cholmod_sparse *g = NULL;
+    if (!s || !first || !group || !mark || !cperm) goto done;
+    const int *sp = s->p, *si = s->i;
+    int ng = 0;
+    for (int i = 0; i < n; i++) mark[i] = -1;
+    for (int j = 0; j < n; j++) { /* a new vertex unless column j equals column j-1 */
+        int same = j > 0 && sp[j + 1] - sp[j] == sp[j] - sp[j - 1];
+        for (int q = sp[j]; same && q < sp[j + 1]; q++) same = mark[si[q]] == j - 1;
+        for (int q = sp[j]; q < sp[j + 1]; q++) mark[si[q]] = j;
+        if (!same) first[ng++] = j;
+        group[j] = ng - 1;
+    }
+    first[ng] = n;
+    /* upper triangle of the vertex graph, each edge once (stamps in mark) */
+    size_t nz = 0;
+    for (int i = 0; i < n; i++) mark[i] = -1;
+    for (int v = 0; v < ng; v++)
+        for (int q = sp[first[v]]; q < sp[first[v] + 1]; q++) {
+            int w = group[si[q]];
+            if (w < v && mark[w] != v) { mark[w] = v; nz++; }
+        }
+    g = cholmod_allocate_sparse((size_t)ng, (size_t)ng, nz, 0, 1, 1, CHOLMOD_PATTERN, c);
+    if (!g) goto done;
+    int *gp = g->p, *gi = g->i;
+    nz = 0;
+    for (int i = 0; i < n; i++) mark[i] = -1;
+    for (int v = 0; v < ng; v++) {
+        gp[v] = (int)nz;
+        for (int q = sp[first[v]]; q < sp[first[v] + 1]; q++) {
+            int w = group[si[q]];
+            if (w < v && mark[w] != v) { mark[w] = v; gi[nz++] = w; }
+        }
+    }
+    gp[ng] = (int)nz;
+    cholmod_free_sparse(&s, c); /* before METIS, which needs the memory */
+    if (!cholmod_metis(g, NULL, 0, 0, cperm, c)) goto done;
+    int k = 0;
+    for (int q = 0; q < ng; q++)
+        for (int j = first[cperm[q]]; j < first[cperm[q] + 1]; j++) perm[k++] = j;
+    ok = k == n;
+done:
+    cholmod_free_sparse(&s, c);
+    cholmod_free_sparse(&g, c);
+    free(first);
+    free(group);
+    free(mark);
+    free(cperm);
+    return ok;
+}
+
+/* Analysis with one requested ordering (not the rule); perm: METIS_NODES' scratch. */
+static cholmod_factor *analyse_with(pecplas_cholmod *h, cholmod_sparse *a, int ordering,
+                                    int *perm) {
+    h->nodes_metis = 0;
+    if (ordering == PECPLAS_ORDER_METIS_NODES) {
+        h->nodes_metis = perm && metis_on_nodes(&h->c, a, perm);
+        h->c.status = CHOLMOD_OK;
+        ordering = h->nodes_metis ? CHOLMOD_GIVEN : CHOLMOD_AMD; /* METIS failed: AMD */
+    }
+    h->c.nmethods = ordering == PECPLAS_ORDER_CHOLMOD_DEFAULT ? 0 : 1;
+    h->c.method[0].ordering = ordering == PECPLAS_ORDER_CHOLMOD_DEFAULT ? CHOLMOD_GIVEN : ordering;
+    return cholmod_analyze_p(a, h->nodes_metis ? perm : NULL, NULL, 0, &h->c);
+}
+
+/* AMD's flops per entry of L from which nested dissection is tried too: the test CHOLMOD's
+ * default strategy uses (it then runs METIS on the equation graph). */
+#define PECPLAS_ND_FLOPS_PER_ENTRY 500.0
+
+/* Symbolic analysis (ordering + supernodes) of the pattern; replaces any earlier one.
+ * The project's rule: AMD, the fastest ordering; when it leaves PECPLAS_ND_FLOPS_PER_ENTRY or
+ * more flops per entry of L (2-D blocks from about 5e5 equations), also METIS on the graph of
+ * nodes, and the ordering with the smaller flop count is kept. CHOLMOD's default strategy
+ * makes the same test but runs METIS on the equation graph, which at 1e6 equations takes
+ * two to three times longer, and keeps the smaller nnz(L) (doc/bench/ordering.md). */
 int pecplas_cholmod_analyse(void *handle, int n, const int *colptr, const int *rowind) {
     pecplas_cholmod *h = handle;
     cholmod_sparse a = wrap(n, colptr, rowind, NULL);
+    int *perm = NULL;
     cholmod_free_factor(&h->L, &h->c);
-    h->L = cholmod_analyze(&a, &h->c);
+    if (h->ordering != PECPLAS_ORDER_RULE) {
+        if (h->ordering == PECPLAS_ORDER_METIS_NODES) perm = malloc(sizeof(int) * (size_t)n);
+        h->L = analyse_with(h, &a, h->ordering, perm);
+    } else {
+        h->L = analyse_with(h, &a, CHOLMOD_AMD, NULL);
+        if (h->L && h->c.fl >= PECPLAS_ND_FLOPS_PER_ENTRY * h->c.lnz) {
+            double fl = h->c.fl, lnz = h->c.lnz;
+            perm = malloc(sizeof(int) * (size_t)n);
+            cholmod_factor *nd = perm ? analyse_with(h, &a, PECPLAS_ORDER_METIS_NODES, perm) : NULL;
+            if (nd && h->nodes_metis && h->c.fl < fl) {
+                cholmod_free_factor(&h->L, &h->c);
+                h->L = nd;
+            } else { /* AMD stays */
+                cholmod_free_factor(&nd, &h->c);
+                h->nodes_metis = 0;
+                h->c.fl = fl;
+                h->c.lnz = lnz;
+                h->c.status = CHOLMOD_OK;
+            }
+        }
+    }
+    free(perm);
     return h->L ? h->c.status : (h->c.status < 0 ? h->c.status : CHOLMOD_INVALID);
 }
 
@@ -170,7 +291,8 @@ int pecplas_cholmod_minor(void *handle) {
 /* CHOLMOD_NATURAL 0, GIVEN 1, AMD 2, METIS 3, NESDIS 4, COLAMD 5, POSTORDERED 6. */
 int pecplas_cholmod_ordering(void *handle) {
     pecplas_cholmod *h = handle;
-    return h->L ? h->L->ordering : -1;
+    if (!h->L) return -1;
+    return h->nodes_metis && h->L->ordering == CHOLMOD_GIVEN ? CHOLMOD_METIS : h->L->ordering;
 }
 /* nnz(L) and flop count of the last analysis; peak memory (bytes) since start. */
 double pecplas_cholmod_lnz(void *handle) { return ((pecplas_cholmod *)handle)->c.lnz; }
