@@ -165,6 +165,7 @@ bench: deps
 # the test suites whose numbers the docs quote, tools/s1_stability.py renders its stored runs.
 docs: s1 s2 s3 s4 s5 s6
 	$(PYTHON) tools/validation_report.py output/validation --run
+	$(PYTHON) tools/hertz_report.py output/hertz --run
 	$(PYTHON) tools/s1_stability.py --doc
 
 clean:
