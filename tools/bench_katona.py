@@ -18,6 +18,7 @@ it into doc/bench/README.md).
 import argparse
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -205,10 +206,11 @@ def main(argv=None):
         a.limit = min(a.limit, 60.0)
     # progress lines reach the captured output as they are printed (a stopped run's count)
     os.environ["GFORTRAN_UNBUFFERED_PRECONNECTED"] = "y"
-    exe = executable("pecplas")
     rows, sad = [], {}
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
+        # private copies: a build during the runs (fpm relinks) must not replace them
+        exe = shutil.copy2(executable("pecplas"), tmp / "pecplas")
         s1 = [("S1 opening–closing", "katona", "katona", "1e8"),
               ("S1 opening–closing, K_n = 1e8", "MOHR_COULOMB", "newton", "1e8")]
         if not a.quick:
@@ -224,7 +226,7 @@ def main(argv=None):
                 rows.append(run_case(exe, f"pile h = {h:g} m", law, method,
                                      pile_deck(tmp, h, law, method), a.limit, a.repeats))
         if not a.quick:
-            bench = executable("pecplas-bench-katona")
+            bench = shutil.copy2(executable("pecplas-bench-katona"), tmp / "bench-katona")
             sad["pile h = 0.05 m"] = saddle(bench, pile_deck(tmp, 0.05, "KATONA", "katona"))
             hertz = tmp / "hertz_h005.inp"
             subprocess.run([sys.executable, str(ROOT / "tools/make_hertz_deck.py"), "--h", "0.05",
