@@ -161,9 +161,14 @@ def footing_q8r_block(st):
             f"{q('Q8', 4) / PRANDTL:.3f} and {q('Q8', 6) / PRANDTL:.3f}.")
 
 
+def wrap(text):
+    import textwrap
+    return textwrap.fill(text, 95, break_on_hyphens=False, break_long_words=False)
+
+
 def blocks(st):
     return {"footing-meshes": footing_table(st), "collapse-table": collapse_table(st),
-            "collapse-further": further_block(st), "footing-q8r": footing_q8r_block(st)}
+            "collapse-further": wrap(further_block(st)), "footing-q8r": wrap(footing_q8r_block(st))}
 
 
 def check_doc(st):
