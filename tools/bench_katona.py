@@ -38,7 +38,7 @@ S1_KATONA = ROOT / "test/data/katona/s1_open_close.inp"
 SOLVER = {"katona": None, "newton": "METHOD=NEWTON",
           "modified": "METHOD=MODIFIED_NEWTON, FALLBACK=NO"}
 #: the values of pecplas-bench-katona (seconds; n equations, m doublet rows)
-SADDLE = ["n", "m", "fact", "solve", "g", "column", "an", "fa", "load1"]
+SADDLE = ["n", "m", "fact", "solve", "g", "column", "an", "fa", "load1", "error"]
 LABEL = {"katona": "Katona", "newton": "Mohr–Coulomb penalty, full Newton",
          "modified": "Mohr–Coulomb penalty, modified Newton alone"}
 
@@ -139,6 +139,12 @@ def saddle(exe_bench, deck):
         if m:
             v[k] = float(m.group(1))
     v["load1"] = load1()
+    note = re.search(r"^ UMFPACK: (.*)$", out, re.M)
+    if note:
+        v["error"] = note.group(1)[:300]
+    elif "fa" not in v:
+        v["error"] = (out + r["stderr"]).strip().splitlines()[0][:300] if (out + r["stderr"]).strip() \
+            else f"exit {r['rc']}"
     return v
 
 
@@ -161,8 +167,10 @@ def fragment(rows, sad, prov, limit):
           + (f" — **the machine was shared with other work (load up to {max(loads):.1f}): the "
              "times are longer than on an idle machine, the ratios between rows less "
              "affected**" if busy else "") + ". "
-          f"Runs longer than {limit:g} s are stopped there.", "",
-          "| case | law, method | equations | status | increments (of) | iterations | "
+          f"Runs longer than {limit:g} s are stopped there. Increments: converged (an "
+          "increment cut in two counts as two), of those requested; iterations of a stopped "
+          "run: those of its converged increments, a lower bound.", "",
+          "| case | law, method | equations | status | increments (requested) | iterations | "
           "factorisations | state iterations (max / increment) | wall [s] | load |",
           "|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
@@ -188,11 +196,14 @@ def fragment(rows, sad, prov, limit):
                "saddle analyse + factorise | load |", "|---|---|---|---|---|---|---|---|"]
         for name, v in sad.items():
             if "fa" not in v:
-                md.append(f"| {name} | — | — | — | — | — | failed | {v['load1']:.1f} |")
+                md.append(f"| {name} | — | — | — | — | — | failed: "
+                          f"{v.get('error', '').replace('|', '/')} | {v['load1']:.1f} |")
                 continue
             md.append(f"| {name} | {v['n']:.0f} | {v['m']:.0f} | {v['fact']:.3f} | "
                       f"{v['solve']:.4f} | {v['g']:.2f} ({1e3 * v['column']:.2f} ms) | "
-                      f"{v['an']:.3f} + {v['fa']:.3f} | {v['load1']:.1f} |")
+                      f"{v['an']:.3f} + {v['fa']:.3f}"
+                      + (f" ({v['error'].replace('|', '/')})" if v.get("error") else "")
+                      + f" | {v['load1']:.1f} |")
         even = [f"{name}: 2 n_d up to {v['fa'] / v['column']:.0f} n_s" for name, v in sad.items()
                 if v.get("column")]
         if even:
@@ -266,7 +277,8 @@ def render(out, limit):
     if (out / "katona_saddle.csv").exists():
         with open(out / "katona_saddle.csv") as f:
             for r in list(csv.reader(f))[1:]:
-                sad[r[0]] = {k: float(x) for k, x in zip(SADDLE, r[1:]) if x != ""}
+                sad[r[0]] = {k: (x if k == "error" else float(x))
+                             for k, x in zip(SADDLE, r[1:]) if x != ""}
     text = fragment(rows, sad, prov, limit)
     if out == BENCH_DIR:
         write_fragment("katona", text)
