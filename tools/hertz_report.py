@@ -21,6 +21,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import doc_blocks  # noqa: E402
 from doc_blocks import report_main  # noqa: E402
 from make_hertz_deck import E1, E2, F, NU, R  # noqa: E402
+from validation_report import below, minus  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SCRIPT = "hertz_report.py"
@@ -90,14 +91,9 @@ def values(out):
             "increments": grab(r"summary: (\d+) increments")}
 
 
-def bound(x):
-    """A roundoff-level value as the power of ten above it (exponent a multiple of 3)."""
-    return f"1e{3 * math.ceil(math.log10(abs(x)) / 3)}" if x else "0"
-
-
 def signed(x):
     """+0.17 / −0.19 (typographic minus)."""
-    return f"{x:+.2f}".replace("-", "−")
+    return minus(f"{x:+.2f}")
 
 
 def block(v):
@@ -109,7 +105,7 @@ def block(v):
             f"a = {v['a_fe']:.3f} mm ({signed(100 * (v['a_fe'] / v['a'] - 1))} %), "
             f"p0 = {v['p_fe']:.1f} MPa ({signed(100 * (v['p_fe'] / v['p0'] - 1))} %), "
             f"profile within {100 * v['p_err']:.2f} % of p0, resultant F/2 within "
-            f"{bound(v['resultant'])};\n{v['states']} state iterations in {v['increments']} "
+            f"{below(v['resultant'])};\n{v['states']} state iterations in {v['increments']} "
             f"{inc}, {v['factorisations']} {fac}.")
 
 
