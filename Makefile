@@ -52,7 +52,8 @@ help:
 	@echo "                OpenSees side by side; CSV/PNG and README.md in doc/bench/ (BENCH=quick: minutes)"
 	@echo "  make docs     rewrite every generated block of the docs from fresh runs: scenes S1-S6"
 	@echo "                (as make s1 ... s6) and the numbers of the test suites quoted in"
-	@echo "                doc/validation.md and doc/theory.md (tools/validation_report.py)"
+	@echo "                doc/validation.md and doc/theory.md (tools/validation_report.py,"
+	@echo "                hertz_report.py, theory_report.py: minutes, stored in test/reference)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
 
@@ -168,6 +169,8 @@ bench: deps
 # the test suites whose numbers the docs quote, tools/s1_stability.py renders its stored runs.
 docs: s1 s2 s3 s4 s5 s6
 	$(PYTHON) tools/validation_report.py output/validation --run
+	$(PYTHON) tools/hertz_report.py output/hertz --run
+	$(PYTHON) tools/theory_report.py output/theory --run
 	$(PYTHON) tools/s1_stability.py --doc
 
 clean:

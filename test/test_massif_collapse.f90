@@ -8,6 +8,11 @@
 !> - Q8 (3 x 3 points) locks after plastic flow: driven by pressure past the limit it must
 !>   not end 'completed' silently, it either stops (limit load / diverged) or carries the
 !>   large-displacement warning in its message and in the results file.
+!> - Q4 (2 x 2 points) locks as well: driven by displacement it climbs well past the limit.
+!> The values are reported for doc/theory.md 8.4 (test/doc_report.f90); with the environment
+!> variable PECPLAS_REPORT_COLLAPSE set, `cylinder_locking` also runs the whole table of the
+!> doc (T3, Q4, T6, Q8, Q8R on 2 x 1, 4 x 2, 6 x 3 cells, and 4 x 2 driven 15 times further),
+!> for tools/theory_report.py.
 module test_massif_collapse
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
@@ -17,6 +22,7 @@ module test_massif_collapse
    use pecplas_driver_problem, only: problem_t
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check
+   use doc_report, only: report
    use lame_mesh, only: write_ring_mesh, ring_node, ring_quadratic, A, B
    implicit none (type, external)
    private
@@ -38,18 +44,22 @@ contains
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('q8r_cylinder_plateau', test_q8r_plateau), &
                new_unittest('t6_cylinder_plateau', test_t6_plateau), &
-               new_unittest('q8_cylinder_not_silent', test_q8_not_silent)]
+               new_unittest('q8_cylinder_not_silent', test_q8_not_silent), &
+               new_unittest('cylinder_locking', test_locking)]
    end subroutine collect_massif_collapse
 
    !> Deck of the Tresca ring of nr x nt cells; drive 'DISPLACEMENT' (inner face moved
    !> radially by U_END) or 'PRESSURE' (inner pressure `factor` P_LIMIT), over `incs`
-   !> increments.
-   subroutine write_cylinder_deck(path, etype, nr, nt, drive, factor, incs)
+   !> increments; `further` multiplies the imposed displacement.
+   subroutine write_cylinder_deck(path, etype, nr, nt, drive, factor, incs, further)
       character(len=*), intent(in) :: path, etype, drive
       integer, intent(in) :: nr, nt, incs
       real(wp), intent(in) :: factor
+      real(wp), intent(in), optional :: further
       integer :: u, j, mr, mt
-      real(wp) :: t
+      real(wp) :: t, u_far
+      u_far = U_END
+      if (present(further)) u_far = further*U_END
       mr = merge(2, 1, ring_quadratic(etype))*nr
       mt = merge(2, 1, ring_quadratic(etype))*nt
       open (newunit=u, file=path, status='replace', action='write')
@@ -64,8 +74,8 @@ contains
          do j = 0, mt
             t = 0.5_wp*PI*real(j, wp)/mt
             ! dofs held by the symmetry rollers are not imposed again
-            if (j < mt) write (u, '(i0,a,es24.16)') ring_node(0, j, mr), ', 1, ', U_END*cos(t)
-            if (j > 0) write (u, '(i0,a,es24.16)') ring_node(0, j, mr), ', 2, ', U_END*sin(t)
+            if (j < mt) write (u, '(i0,a,es24.16)') ring_node(0, j, mr), ', 1, ', u_far*cos(t)
+            if (j > 0) write (u, '(i0,a,es24.16)') ring_node(0, j, mr), ', 2, ', u_far*sin(t)
          end do
       else
          write (u, '(a)') '*LOAD, NAME=drive, TYPE=PRESSURE'
@@ -123,27 +133,52 @@ contains
       call check_plateau('T6', 4, 2, 12, error)
    end subroutine test_t6_plateau
 
+   !> Displacement-driven run of `etype` on nr x nt cells (`further` times U_END, default 1):
+   !> the inner pressure of every increment, `p`; the run must complete. Reported as
+   !> collapse/ETYPE_NRxNT (or collapse/further/ETYPE_NRxNT): p_end / p_lim, p_max / p_lim.
+   subroutine driven_pressures(etype, nr, nt, incs, p, error, further)
+      character(len=*), intent(in) :: etype
+      integer, intent(in) :: nr, nt, incs
+      real(wp), allocatable, intent(out) :: p(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: further
+      type(model_t) :: model
+      type(problem_t) :: problem
+      character(len=:), allocatable :: deck, h5, tag
+      character(len=16) :: cells
+      integer :: code
+      call make_directories(DIR)
+      write (cells, '(i0,a,i0)') nr, 'x', nt
+      tag = etype//'_'//trim(cells)
+      if (present(further)) tag = 'further/'//tag
+      deck = DIR//'/collapse_'//etype//'_'//trim(cells)//merge('_far', '    ', present(further))
+      deck = trim(deck)
+      h5 = deck//'.h5'
+      deck = deck//'.inp'
+      call write_cylinder_deck(deck, etype, nr, nt, 'DISPLACEMENT', 1.0_wp, incs, further)
+      code = run_deck(deck, h5, .true., model, problem)
+      call check(error, code == 0, etype//' '//trim(cells)// &
+         ' displacement-driven run must complete')
+      if (allocated(error)) return
+      call reaction_pressures(h5, nr, nt, ring_quadratic(etype), p, error)
+      if (allocated(error)) return
+      call check(error, size(p) > 0 .and. all(abs(p) < huge(1.0_wp)), etype//' '// &
+         trim(cells)//': no finite pressures')
+      if (allocated(error)) return
+      call report('collapse/'//tag, [p(size(p))/P_LIMIT, maxval(p)/P_LIMIT])
+   end subroutine driven_pressures
+
    !> Displacement-driven run of `etype` on nr x nt cells: the last pressure within 1 % of
    !> 2 c ln 2 (discretisation error of a coarse quadratic mesh) and none above 1.01 times it.
    subroutine check_plateau(etype, nr, nt, incs, error)
       character(len=*), intent(in) :: etype
       integer, intent(in) :: nr, nt, incs
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      character(len=:), allocatable :: deck, h5
       real(wp), allocatable :: p(:)
       character(len=:), allocatable :: status, message, warnings
       character(len=160) :: buf
-      integer :: code
-      call make_directories(DIR)
-      deck = DIR//'/collapse_'//etype//'.inp'
-      h5 = DIR//'/collapse_'//etype//'.h5'
-      call write_cylinder_deck(deck, etype, nr, nt, 'DISPLACEMENT', 1.0_wp, incs)
-      code = run_deck(deck, h5, .true., model, problem)
-      call check(error, code == 0, etype//' displacement-driven collapse run must complete')
-      if (allocated(error)) return
-      call reaction_pressures(h5, nr, nt, ring_quadratic(etype), p, error)
+      character(len=16) :: cells
+      call driven_pressures(etype, nr, nt, incs, p, error)
       if (allocated(error)) return
       write (buf, '(a,i0,a,i0,a,f7.4,a,f7.4)') etype//' ', nr, 'x', nt, &
          ': p_end / p_lim =', p(size(p))/P_LIMIT, ', p_max / p_lim =', maxval(p)/P_LIMIT
@@ -153,11 +188,46 @@ contains
          trim(buf))
       if (allocated(error)) return
       ! max |u| = U_END is 0.074 times the model size: no large-displacement warning
-      call read_ending(h5, status, message, warnings, error)
+      write (cells, '(i0,a,i0)') nr, 'x', nt
+      call read_ending(DIR//'/collapse_'//etype//'_'//trim(cells)//'.h5', status, message, &
+         warnings, error)
       if (allocated(error)) return
       call check(error, len(warnings) == 0 .and. index(message, 'warning') == 0, &
          etype//' run below 0.1 x model size must not warn: '//warnings)
    end subroutine check_plateau
+
+   !> Q4 (2 x 2 points: 4 isochoric constraints of 5 deformation modes) locks after plastic
+   !> flow: on 4 x 2 cells the pressure climbs past 1.1 times the limit (measured 1.48), the
+   !> curve rising to its end (p_max = p_end). With PECPLAS_REPORT_COLLAPSE set, the whole
+   !> table of doc/theory.md 8.4 is run and reported (each run must complete with finite
+   !> pressures, at least 0.8 times the limit: the ring is fully plastic at U_END).
+   subroutine test_locking(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: TYPES(5) = ['T3 ', 'Q4 ', 'T6 ', 'Q8 ', 'Q8R']
+      integer, parameter :: CELLS(2, 3) = reshape([2, 1, 4, 2, 6, 3], [2, 3])
+      real(wp), allocatable :: p(:)
+      character(len=64) :: flag
+      integer :: i, j, n, stat
+      call driven_pressures('Q4', 4, 2, 12, p, error)
+      if (allocated(error)) return
+      call check(error, p(size(p)) > 1.1_wp*P_LIMIT .and. maxval(p) <= p(size(p)), &
+         'Q4 4 x 2 must lock (end pressure above 1.1 p_lim, reached at the end)')
+      if (allocated(error)) return
+      call get_environment_variable('PECPLAS_REPORT_COLLAPSE', flag, n, stat)
+      if (stat /= 0 .or. n == 0) return
+      do i = 1, size(TYPES)
+         do j = 1, size(CELLS, 2)
+            call driven_pressures(trim(TYPES(i)), CELLS(1, j), CELLS(2, j), 12, p, error)
+            if (allocated(error)) return
+            call check(error, p(size(p)) >= 0.8_wp*P_LIMIT, trim(TYPES(i))// &
+               ' below 0.8 p_lim although the ring is fully plastic')
+            if (allocated(error)) return
+         end do
+         ! 15 times further, the same increment size
+         call driven_pressures(trim(TYPES(i)), 4, 2, 180, p, error, further=15.0_wp)
+         if (allocated(error)) return
+      end do
+   end subroutine test_locking
 
    !> Q8 (3 x 3) pressure-driven to 1.1 times the limit: it may not end 'completed' without
    !> the large-displacement warning, in the results file's `warnings` attribute and in its
@@ -178,12 +248,33 @@ contains
       if (allocated(error)) return
       write (*, '(a,i0,a)') '        Q8 past the limit: exit code ', code, ', status '// &
          status//', warnings "'//warnings//'"'
+      call report('collapse/q8_pressure_completed', merge(1.0_wp, 0.0_wp, status == 'completed'))
+      call report_displacement(h5, error)
+      if (allocated(error)) return
       if (status /= 'completed') return ! stopped at the limit: not silent either
       call check(error, code == 0 .and. &
          index(warnings, 'small-strain theory no longer holds') > 0 .and. &
          index(message, 'warning: '//warnings) > 0, &
          'Q8 run past the collapse pressure completed without the large-displacement warning')
    end subroutine test_q8_not_silent
+
+   !> Reports collapse/q8_pressure_umax: the largest nodal displacement of the last increment
+   !> of `h5` and the model size (diagonal of the quarter ring's bounding box, b sqrt 2).
+   subroutine report_displacement(h5, error)
+      character(len=*), intent(in) :: h5
+      type(error_t), allocatable, intent(out) :: error
+      type(results_reader_t) :: rd
+      real(wp), allocatable :: u(:, :)
+      integer :: n
+      call rd%open(h5, error)
+      if (allocated(error)) return
+      call rd%history_length(n, error)
+      if (allocated(error)) return
+      call rd%displacement(n, u, error)
+      if (allocated(error)) return
+      call rd%close()
+      call report('collapse/q8_pressure_umax', [maxval(norm2(u, dim=1)), B*sqrt(2.0_wp)])
+   end subroutine report_displacement
 
    !> Root attributes status, status_message and warnings ('' when absent) of `h5`.
    subroutine read_ending(h5, status, message, warnings, error)

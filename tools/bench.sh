@@ -11,6 +11,7 @@
 #   6. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
 #      and OpenSees on the elastic block, 1e4 .. 1e6 dofs       (tools/bench_peer_opensees.py)
 #   6b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
+#   6c. Katona contact against the penalty joint, by speed (S1, pile)  (tools/bench_katona.py)
 #   7. doc/bench/README.md collects the sections                      (tools/bench_summary.py)
 #   with MPI and MUMPS installed (make build-mpi): CHOLMOD vs MUMPS on 1 and 2 ranks, before 7
 #                                                                     (tools/bench_mumps.py)
@@ -40,7 +41,7 @@ if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('opensees
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver ordering stability scaling work_precision adapt peer peer_opensees deck; do
+for part in solver ordering stability scaling work_precision adapt peer peer_opensees deck katona; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

@@ -4,7 +4,7 @@ bench_common.write_fragment) into doc/bench/README.md, in a fixed order (stabili
 work_precision, advice, peer, peer_opensees, then the others alphabetically), under a header with the commit,
 machine and date (bench_common.provenance) and, if given, the wall time of the whole suite.
 
-    python3 tools/bench_summary.py [--wall SECONDS] [--dir doc/bench]
+    python3 tools/bench_summary.py [--wall SECONDS] [--dir doc/bench] [--keep-header]
 """
 import argparse
 import sys
@@ -37,6 +37,17 @@ def header(prov, wall=None):
     return "\n".join(lines) + "\n"
 
 
+def kept_header(text):
+    """(provenance, wall) read back from a README written by `header`."""
+    import re
+    prov = {}
+    for key in ("commit", "machine", "date"):
+        m = re.search(rf"^- {key}: (.*)$", text, re.M)
+        prov[key] = m.group(1).strip("`") if m else "unknown"
+    m = re.search(r"^- wall time of the benchmark suite: (\d+) s", text, re.M)
+    return prov, float(m.group(1)) if m else None
+
+
 def summary(directory, wall=None, prov=None):
     """Text of the README: header, then each fragment (separated by blank lines)."""
     parts = [header(prov or provenance(), wall)]
@@ -49,9 +60,16 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--wall", type=float, default=None, help="total bench wall time [s]")
     ap.add_argument("--dir", default=str(BENCH_DIR))
+    ap.add_argument("--keep-header", action="store_true",
+                    help="keep the commit, machine, date and wall time of the README's header "
+                         "(one fragment rewritten by its script alone; it states its own)")
     a = ap.parse_args()
     out = Path(a.dir) / OUTPUT
-    out.write_text(summary(a.dir, a.wall))
+    prov, wall = None, a.wall
+    if a.keep_header and out.exists():
+        prov, kept_wall = kept_header(out.read_text())
+        wall = wall if wall is not None else kept_wall
+    out.write_text(summary(a.dir, wall, prov))
     print(out)
 
 
