@@ -58,6 +58,7 @@ program tester
    use test_linalg_threads, only: collect_linalg_threads
    use test_model_units, only: collect_model_units
    use test_linalg_mumps, only: collect_linalg_mumps
+   use test_io_deck_mesh_lines, only: collect_io_deck_mesh_lines
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -122,6 +123,7 @@ program tester
    suites = [suites, new_testsuite('refine_local', collect_refine_local)]
    suites = [suites, new_testsuite('adapt', collect_adapt)]
    suites = [suites, new_testsuite('linalg_mumps', collect_linalg_mumps)]
+   suites = [suites, new_testsuite('io_deck_mesh_lines', collect_io_deck_mesh_lines)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -7,7 +7,7 @@ module pecplas_io_deck_line_store
    implicit none (type, external)
    private
 
-   public :: deck_lines_t, name_t, add_name
+   public :: deck_lines_t, name_t, add_name, next_line
 
    !> One name of a table (a file path, a keyword).
    type :: name_t
@@ -121,6 +121,61 @@ contains
       tmp(1:n) = a(1:n)
       call move_alloc(tmp, a)
    end subroutine resize_int
+
+   !> Bounds text(i1:i2) of the line that starts at `pos`, without comments ('**' lines,
+   !> '#' or '!' to the end of the line) and outer blanks; i2 < i1 for a line left empty.
+   !> Tabs and carriage returns of the line become blanks; `pos` moves past its line end.
+   !> One sweep: most characters (> '#') only mark the last one kept.
+   pure subroutine next_line(text, pos, i1, i2)
+      character(len=*), intent(inout) :: text
+      integer, intent(inout) :: pos
+      integer, intent(out) :: i1, i2
+      integer :: p, c, k
+      logical :: comment
+      p = pos
+      ! character codes: gfortran turns a test against ' ' into a len_trim call
+      do while (p <= len(text))
+         c = iachar(text(p:p))
+         if (c == 9 .or. c == 13) then
+            text(p:p) = ' '
+         else if (c /= 32) then
+            exit
+         end if
+         p = p + 1
+      end do
+      i1 = p
+      i2 = p - 1
+      comment = .false.
+      if (p < len(text)) comment = text(p:p + 1) == '**'
+      if (.not. comment) then
+         do while (p <= len(text))
+            c = iachar(text(p:p))
+            if (c > 35) then
+               i2 = p
+            else if (c == 10) then
+               exit
+            else if (c == 9 .or. c == 13) then
+               text(p:p) = ' '
+            else if (c == 33 .or. c == 35) then
+               comment = .true.
+               exit
+            else if (c /= 32) then
+               i2 = p
+            end if
+            p = p + 1
+         end do
+      end if
+      if (comment) then
+         ! the rest of the line is dropped
+         k = index(text(p:), achar(10))
+         if (k > 0) then
+            p = p + k - 1
+         else
+            p = len(text) + 1
+         end if
+      end if
+      pos = p + 1
+   end subroutine next_line
 
    !> Appends `s` to a name table.
    pure subroutine add_name(list, s)
