@@ -194,21 +194,23 @@ contains
    end subroutine test_id_cases
 
    !> Line bounds by the deck's comment rules: '**' at the start drops the line, '#' and
-   !> '!' cut it, tabs and carriage returns are blanks, outer blanks go.
+   !> '!' cut it, tabs and carriage returns are blanks, outer blanks go; lines with and
+   !> without such characters (the two ways next_line cuts a line) alternate.
    subroutine test_next_line(error)
       type(error_t), allocatable, intent(out) :: error
       character(len=*), parameter :: nl = achar(10), tab = achar(9), cr = achar(13)
       character(len=:), allocatable :: text
       character(len=16), parameter :: expected(9) = [character(len=16) :: '*NODES', '', &
          '1, 2', '* *', '"a"', '', 'x'//tab//'y', '', 'end']
-      integer :: pos, i1, i2, k
+      integer :: pos, i1, i2, k, ahead(4)
       text = '  *NODES'//cr//nl//'  ** comment'//nl//tab//'1, 2 # c'//nl//'* *'//nl// &
          '"a"!'//nl//'#'//nl//'x'//tab//'y '//cr//nl//'**'//nl//'end'
       pos = 1
+      ahead = 0
       do k = 1, size(expected)
          call check(error, pos <= len(text), 'text ended before line '//itoa_local(k))
          if (allocated(error)) return
-         call next_line(text, pos, i1, i2)
+         call next_line(text, pos, i1, i2, ahead)
          if (i2 < i1) then
             call check(error, len_trim(expected(k)) == 0, 'line '//itoa_local(k)// &
                ' should be '//trim(expected(k))//', found empty')

@@ -69,7 +69,7 @@ contains
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: lineno, i1, i2, nt, pos, base, file_id
+      integer :: lineno, i1, i2, nt, pos, base, file_id, ahead(4)
       logical :: found
 
       call read_text_file(path, text, found)
@@ -105,9 +105,10 @@ contains
       end if
       pos = 1
       lineno = 0
+      ahead = 0
       do while (pos <= nt)
          lineno = lineno + 1
-         call next_line(store%buf(base + 1:base + nt), pos, i1, i2)
+         call next_line(store%buf(base + 1:base + nt), pos, i1, i2, ahead)
          if (i2 < i1) cycle
          if (store%buf(base + i1:base + i1) /= '*') then
             ! a data line (most of a mesh deck): offsets only

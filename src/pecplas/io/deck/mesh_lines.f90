@@ -105,77 +105,98 @@ contains
    end subroutine next_int
 
    !> Next field as a finite real in parse_real's strict form ([sign] digits[.digits] |
-   !> .digits, optional exponent e/E/d/D [sign] digits), converted as decimal_real does.
+   !> .digits, optional exponent e/E/d/D [sign] digits), converted as decimal_real does:
+   !> the first 18 significant digits make the mantissa (leading zeros are not
+   !> significant), the digits after the dot among them lower the exponent.
    pure subroutine next_real(text, p, v, ok)
       character(len=*), intent(in) :: text
       integer, intent(inout) :: p
       real(wp), intent(out) :: v
       logical, intent(out) :: ok
       integer(int64) :: mant
-      integer :: c, p0, ndig, nd, e10, ex, nexp
+      integer :: c, q, n, p0, ndig, nd, e10, ex, nexp
       logical :: neg, negx
       v = 0.0_wp
       ok = .false.
-      call skip_separators(text, p)
-      p0 = p
-      if (p > len(text)) return
-      c = iachar(text(p:p))
+      n = len(text)
+      ! a local cursor stays in a register (the dummy p would be stored at every step)
+      q = p
+      call skip_separators(text, q)
+      p0 = q
+      if (q > n) return
+      c = iachar(text(q:q))
       neg = c == MINUS
-      if (neg .or. c == PLUS) p = p + 1
+      if (neg .or. c == PLUS) q = q + 1
       mant = 0; ndig = 0; nd = 0; e10 = 0
-      do while (p <= len(text))
-         c = iachar(text(p:p))
-         if (c < ZERO .or. c > NINE) exit
+      ! integer part: leading zeros, then significant digits
+      do while (q <= n)
+         if (iachar(text(q:q)) /= ZERO) exit
          ndig = ndig + 1
-         if (mant > 0 .or. c > ZERO) nd = nd + 1
-         if (nd <= 18) mant = 10*mant + (c - ZERO)
-         p = p + 1
+         q = q + 1
       end do
-      if (p <= len(text)) then
-         if (iachar(text(p:p)) == DOT) then
-            p = p + 1
-            do while (p <= len(text))
-               c = iachar(text(p:p))
-               if (c < ZERO .or. c > NINE) exit
+      do while (q <= n)
+         c = iachar(text(q:q)) - ZERO
+         if (c < 0 .or. c > 9) exit
+         nd = nd + 1
+         if (nd <= 18) mant = 10*mant + c
+         q = q + 1
+      end do
+      ndig = ndig + nd
+      if (q <= n) then
+         if (iachar(text(q:q)) == DOT) then
+            q = q + 1
+            ! zeros before the first significant digit only scale
+            if (mant == 0) then
+               do while (q <= n)
+                  if (iachar(text(q:q)) /= ZERO) exit
+                  ndig = ndig + 1
+                  e10 = e10 - 1
+                  q = q + 1
+               end do
+            end if
+            do while (q <= n)
+               c = iachar(text(q:q)) - ZERO
+               if (c < 0 .or. c > 9) exit
                ndig = ndig + 1
-               if (mant > 0 .or. c > ZERO) nd = nd + 1
+               nd = nd + 1
                if (nd <= 18) then
-                  mant = 10*mant + (c - ZERO)
+                  mant = 10*mant + c
                   e10 = e10 - 1
                end if
-               p = p + 1
+               q = q + 1
             end do
          end if
       end if
       if (ndig == 0) return
-      if (.not. field_end(text, p)) then
+      if (.not. field_end(text, q)) then
          ! only an exponent may follow the digits
-         select case (text(p:p))
+         select case (text(q:q))
          case ('e', 'E', 'd', 'D')
          case default
             return
          end select
-         p = p + 1
+         q = q + 1
          negx = .false.
-         if (p <= len(text)) then
-            c = iachar(text(p:p))
+         if (q <= n) then
+            c = iachar(text(q:q))
             negx = c == MINUS
-            if (negx .or. c == PLUS) p = p + 1
+            if (negx .or. c == PLUS) q = q + 1
          end if
          ex = 0; nexp = 0
-         do while (p <= len(text))
-            c = iachar(text(p:p))
-            if (c < ZERO .or. c > NINE) exit
-            ex = min(10*ex + (c - ZERO), 100000)
+         do while (q <= n)
+            c = iachar(text(q:q)) - ZERO
+            if (c < 0 .or. c > 9) exit
+            ex = min(10*ex + c, 100000)
             nexp = nexp + 1
-            p = p + 1
+            q = q + 1
          end do
-         if (nexp == 0 .or. .not. field_end(text, p)) return
+         if (nexp == 0 .or. .not. field_end(text, q)) return
          if (negx) ex = -ex
          e10 = e10 + ex
       end if
+      p = q
       call decimal_value(mant, nd, e10, neg, v, ok)
-      if (.not. ok) v = decimal_real(text(p0:p - 1))
+      if (.not. ok) v = decimal_real(text(p0:q - 1))
       ok = abs(v) <= huge(v)
    end subroutine next_real
 

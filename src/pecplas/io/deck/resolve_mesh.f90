@@ -126,7 +126,7 @@ contains
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
       type(element_set_t) :: es
-      integer :: i, k, e, j, nen
+      integer :: i, k, e, j, nen, c(9)
       if (.not. allocated(state%esets) .and. size(model%mesh%esets) == 0) then
          call deck_error(error, model%deck_file, 0, '*ELEMENTS', &
             'no elements: the deck defines no *ELEMENTS (and no *MESH)')
@@ -149,21 +149,23 @@ contains
             allocate (es%conn(nen, raw%n), es%ids(raw%n))
             es%ids = raw%ids(1:raw%n)
             do e = 1, raw%n
+               ! a local copy of the element's nodes: no reload of es%conn at every step
                do j = 1, nen
-                  es%conn(j, e) = state%node_lookup%index(raw%conn(j, e))
-                  if (es%conn(j, e) == 0) then
+                  c(j) = state%node_lookup%index(raw%conn(j, e))
+                  if (c(j) == 0) then
                      call line_error(state, raw%where(e), 'undefined node '// &
                         itoa(raw%conn(j, e))//' in element '//itoa(raw%ids(e))// &
                         ': no *NODES line defines it', error)
                      return
                   end if
-                  if (any(es%conn(1:j - 1, e) == es%conn(j, e))) then
+                  if (any(c(1:j - 1) == c(j))) then
                      call line_error(state, raw%where(e), 'element '//itoa(raw%ids(e))// &
                         ' lists node '//itoa(raw%conn(j, e))//' twice', error)
                      return
                   end if
                end do
-               if (degenerate(model%mesh%x, es%conn(:, e))) then
+               es%conn(:, e) = c(1:nen)
+               if (degenerate(model%mesh%x, c(1:nen))) then
                   call line_error(state, raw%where(e), 'element '//itoa(raw%ids(e))// &
                      ' is degenerate (zero area): its corner nodes are on one line', error)
                   return
