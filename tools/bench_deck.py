@@ -62,7 +62,7 @@ def main():
     ap.add_argument("--quick", action="store_true", help="skip the 1e6-equation case")
     a = ap.parse_args()
     exe = executable("pecplas-bench-deck")
-    sizes = [100, 300] if a.quick else [100, 300, 707]
+    sizes = [100, 300] if a.quick else [100, 223, 300, 707]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for n in sizes:
