@@ -52,7 +52,6 @@ contains
       kw_id = 0
       call read_one(join_path('', path), '', '', 0, store, raw, kw_id, error)
       if (allocated(error)) return
-      if (size(store%i1) /= store%n) call store%resize(store%n)
    end subroutine read_deck_store
 
    !> Appends the lines of `path`; `stack` holds the files being read (newline separated)
@@ -103,6 +102,9 @@ contains
          store%buf = store%buf//text
          deallocate (text)
       end if
+      ! room for the lines at once when they hold 16 characters or more on average (mesh
+      ! lines do): no copies as the arrays grow; room not used is never touched
+      if (store%n + nt/16 + 64 > size(store%i1)) call store%resize(store%n + nt/16 + 64)
       pos = 1
       lineno = 0
       ahead = 0
