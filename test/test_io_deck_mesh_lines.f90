@@ -6,7 +6,7 @@ module test_io_deck_mesh_lines
    use iso_fortran_env, only: int64
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, parse_real, parse_int
+   use pecplas_io_deck_fields, only: field_t, split_fields, parse_real, parse_int, itoa
    use pecplas_io_deck_mesh_lines, only: quick_node, quick_ids
    use pecplas_io_deck_line_store, only: next_line
    use pecplas_testing, only: unittest_t, new_unittest, check
@@ -108,7 +108,7 @@ contains
       nquick = 0
       do k = 1, 20000
          call random_number(r)
-         text = itoa_local(1 + int(r(1)*1.0e6_wp))//sep(r(2))//random_number_text()// &
+         text = itoa(1 + int(r(1)*1.0e6_wp))//sep(r(2))//random_number_text()// &
             sep(r(3))//random_number_text()
          if (r(4) < 0.2_wp) then
             ! one character changed at random
@@ -122,7 +122,7 @@ contains
       end do
       ! 80 % of the lines are well formed; a short path taking fewer would gain nothing
       call check(error, nquick > 14000, 'random lines on the short path: '// &
-         itoa_local(nquick)//' of 20000, expected more than 14000')
+         itoa(nquick)//' of 20000, expected more than 14000')
    end subroutine test_node_random
 
    !> A separator: ', ', ',' or blanks.
@@ -159,7 +159,7 @@ contains
          i = 1 + int(r(28)*4)
          s = s//letters(i:i)
          if (r(29) < 0.5_wp) s = s//'-'
-         s = s//itoa_local(int(r(30)*40))
+         s = s//itoa(int(r(30)*40))
       end if
    end function random_number_text
 
@@ -201,46 +201,28 @@ contains
       character(len=*), parameter :: nl = achar(10), tab = achar(9), cr = achar(13)
       character(len=:), allocatable :: text
       character(len=16), parameter :: expected(9) = [character(len=16) :: '*NODES', '', &
-         '1, 2', '* *', '"a"', '', 'x'//tab//'y', '', 'end']
+         '1, 2', '* *', '"a"', '', 'x y', '', 'end']
       integer :: pos, i1, i2, k, ahead(4)
       text = '  *NODES'//cr//nl//'  ** comment'//nl//tab//'1, 2 # c'//nl//'* *'//nl// &
          '"a"!'//nl//'#'//nl//'x'//tab//'y '//cr//nl//'**'//nl//'end'
       pos = 1
       ahead = 0
       do k = 1, size(expected)
-         call check(error, pos <= len(text), 'text ended before line '//itoa_local(k))
+         call check(error, pos <= len(text), 'text ended before line '//itoa(k))
          if (allocated(error)) return
          call next_line(text, pos, i1, i2, ahead)
          if (i2 < i1) then
-            call check(error, len_trim(expected(k)) == 0, 'line '//itoa_local(k)// &
+            call check(error, len_trim(expected(k)) == 0, 'line '//itoa(k)// &
                ' should be '//trim(expected(k))//', found empty')
          else
             ! tabs inside a line are blanks in the buffer
-            call check(error, text(i1:i2) == repl_tab(trim(expected(k))), 'line '// &
-               itoa_local(k)//": expected '"//trim(expected(k))//"', found '"// &
+            call check(error, text(i1:i2) == trim(expected(k)), 'line '// &
+               itoa(k)//": expected '"//trim(expected(k))//"', found '"// &
                text(i1:i2)//"'")
          end if
          if (allocated(error)) return
       end do
       call check(error, pos > len(text), 'all lines read')
    end subroutine test_next_line
-
-   pure function repl_tab(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i
-      t = s
-      do i = 1, len(t)
-         if (t(i:i) == achar(9)) t(i:i) = ' '
-      end do
-   end function repl_tab
-
-   pure function itoa_local(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=12) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa_local
 
 end module test_io_deck_mesh_lines
