@@ -15,7 +15,7 @@ module pecplas_io_number
    implicit none (type, external)
    private
 
-   public :: decimal_real, decimal_int
+   public :: decimal_real, decimal_value, decimal_int
 
    !> Extended precision with a significand of at least 64 bits (x87 real(10), or quad),
    !> when the compiler has one; HAVE_XP is .false. otherwise (all long forms to strtod).
@@ -53,7 +53,6 @@ contains
    pure function decimal_real(s) result(v)
       character(len=*), intent(in) :: s
       real(wp) :: v
-      integer(int64), parameter :: max_exact = 2_int64**53
       integer(int64) :: mant
       integer :: i, n, c, nd, e10, ex
       logical :: neg, negx, ok
@@ -108,6 +107,28 @@ contains
          if (negx) ex = -ex
          e10 = e10 + ex
       end if
+      call decimal_value(mant, nd, e10, neg, v, ok)
+      if (ok) return
+      buf(1:n) = s
+      do i = 1, n
+         if (buf(i:i) == 'd' .or. buf(i:i) == 'D') buf(i:i) = 'e'
+      end do
+      buf(n + 1:n + 1) = c_null_char
+      v = real(c_strtod(buf, c_null_ptr), wp)
+   end function decimal_real
+
+   !> Value of a decimal read as its first 18 significant digits `mant` (nd significant
+   !> digits in all), decimal exponent `e10` and sign, without the text: ok = .false. when
+   !> only the text can give the correctly rounded value (more than 18 digits, a large
+   !> exponent, a double-rounding tie); then use decimal_real.
+   pure subroutine decimal_value(mant, nd, e10, neg, v, ok)
+      integer(int64), intent(in) :: mant
+      integer, intent(in) :: nd, e10
+      logical, intent(in) :: neg
+      real(wp), intent(out) :: v
+      logical, intent(out) :: ok
+      integer(int64), parameter :: max_exact = 2_int64**53
+      ok = .true.
       if (mant == 0) then
          v = 0.0_wp
       else if (nd <= 18 .and. mant <= max_exact .and. abs(e10) <= 22) then
@@ -117,22 +138,13 @@ contains
             v = real(mant, wp)/pow10(-e10)
          end if
       else
+         v = 0.0_wp
          ok = .false.
          if (HAVE_XP .and. nd <= 18 .and. abs(e10) <= 27) call extended(mant, e10, v, ok)
-         if (ok) then
-            if (neg) v = -v
-            return
-         end if
-         buf(1:n) = s
-         do i = 1, n
-            if (buf(i:i) == 'd' .or. buf(i:i) == 'D') buf(i:i) = 'e'
-         end do
-         buf(n + 1:n + 1) = c_null_char
-         v = real(c_strtod(buf, c_null_ptr), wp)
-         return
+         if (.not. ok) return
       end if
       if (neg) v = -v
-   end function decimal_real
+   end subroutine decimal_value
 
    !> mant * 10**e10 rounded to double through one extended-precision operation: exact
    !> operands (mant < 2**60, 10**|e10| <= 10**27), one correct rounding to 64 bits, then

@@ -7,16 +7,11 @@ module pecplas_io_scanner
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error, input_error
    use pecplas_io_deck_text, only: parse_real
+   use pecplas_io_number, only: decimal_value
    implicit none (type, external)
    private
 
    public :: scanner_t
-
-   !> Exact powers of ten 1e0..1e22 (all representable in double precision).
-   real(wp), parameter :: pow10(0:22) = [1.0e0_wp, 1.0e1_wp, 1.0e2_wp, 1.0e3_wp, 1.0e4_wp, &
-      1.0e5_wp, 1.0e6_wp, 1.0e7_wp, 1.0e8_wp, 1.0e9_wp, 1.0e10_wp, 1.0e11_wp, 1.0e12_wp, &
-      1.0e13_wp, 1.0e14_wp, 1.0e15_wp, 1.0e16_wp, 1.0e17_wp, 1.0e18_wp, 1.0e19_wp, &
-      1.0e20_wp, 1.0e21_wp, 1.0e22_wp]
 
    !> A file's text and a cursor. Tokens are maximal runs of characters > ' '.
    type :: scanner_t
@@ -148,16 +143,15 @@ contains
       if (neg) v = -v
    end subroutine scanner_get_int
 
-   !> Next token as a real. Decimal mantissas up to 2**53 with |exponent| <= 22 are
-   !> converted by one correctly rounded product or quotient (Clinger's fast path), so the
-   !> result equals what a Fortran read gives; other plain decimals by strtod (the same
-   !> value again, pecplas_io_number); other forms fall back to a Fortran read.
+   !> Next token as a real. Plain decimals of up to 18 significant digits are converted from
+   !> the digits read here (pecplas_io_number%decimal_value: the value a Fortran read gives);
+   !> other plain decimals by strtod (the same value again); other forms fall back to a
+   !> Fortran read.
    subroutine scanner_get_real(this, v, keyword, error)
       class(scanner_t), intent(inout) :: this
       real(wp), intent(out) :: v
       character(len=*), intent(in) :: keyword
       type(error_t), allocatable, intent(out) :: error
-      integer(int64), parameter :: max_exact = 2_int64**53
       integer(int64) :: p, mant
       integer :: c, nd, e10, ex, ios
       logical :: neg, negx, dot, digits, fast
@@ -210,18 +204,12 @@ contains
          if (negx) ex = -ex
          e10 = e10 + ex
       end if
-      fast = fast .and. (mant == 0 .or. (mant <= max_exact .and. abs(e10) <= 22))
-      if (fast) then
-         if (mant == 0) then
-            v = 0.0_wp
-         else if (e10 >= 0) then
-            v = real(mant, wp)*pow10(e10)
-         else
-            v = real(mant, wp)/pow10(-e10)
-         end if
-         if (neg) v = -v
-      else
-         ! long mantissas (17-digit coordinates): strtod when the form is a plain decimal
+      ! a whole plain decimal of at most 18 significant digits: exact conversion from its
+      ! digits (long 17-digit coordinates included, pecplas_io_number)
+      fast = fast .and. p > this%t2
+      if (fast) call decimal_value(mant, nd, e10, neg, v, fast)
+      if (.not. fast) then
+         ! other forms: strtod when the form is a plain decimal, else a Fortran read
          call parse_real(this%buf(this%t1:this%t2), v, fast)
          if (fast) return
          read (this%buf(this%t1:this%t2), *, iostat=ios) v

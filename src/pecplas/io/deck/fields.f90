@@ -10,7 +10,7 @@ module pecplas_io_deck_fields
    private
 
    public :: deck_line_t, param_t, keyword_line_t, field_t
-   public :: parse_keyword_line, keyword_name, split_fields, field_bounds
+   public :: parse_keyword_line, keyword_name, split_fields
    public :: field_real, field_int, check_count
    ! re-exported so that handlers need one module for fields and their text
    public :: parse_real, parse_int, upper, same_name, add_name, itoa
@@ -227,40 +227,6 @@ contains
          if (pass == 1) allocate (fields(n))
       end do
    end subroutine split_fields
-
-   !> Bounds text(b(1, k):b(2, k)) of the fields of a data line by the rules of
-   !> split_fields, without allocating (the common path of large mesh blocks); n = -1 when
-   !> the line holds more than size(b, 2) fields or an '=': then use split_fields.
-   pure subroutine field_bounds(text, b, n)
-      character(len=*), intent(in) :: text
-      integer, intent(out) :: b(:, :)
-      integer, intent(out) :: n
-      integer :: i, start, c
-      n = 0
-      start = 0
-      do i = 1, len(text) + 1
-         ! character codes: gfortran turns a test against ' ' into a len_trim call
-         c = 32
-         if (i <= len(text)) c = iachar(text(i:i))
-         if (c == 61) then
-            n = -1
-            return
-         end if
-         if (c /= 44 .and. c /= 32) then
-            if (start == 0) start = i
-            cycle
-         end if
-         if (start == 0) cycle
-         if (n == size(b, 2)) then
-            n = -1
-            return
-         end if
-         n = n + 1
-         b(1, n) = start
-         b(2, n) = i - 1
-         start = 0
-      end do
-   end subroutine field_bounds
 
    !> Field k as a real; errors name `what` and show the offending text.
    subroutine field_real(line, fields, k, what, value, error)

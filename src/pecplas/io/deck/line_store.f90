@@ -3,11 +3,13 @@
 !> block of a million lines thus costs no allocation per line; `get` builds the one-line
 !> record (deck_line_t) that messages and keyword handlers use.
 module pecplas_io_deck_line_store
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_size_t, c_intptr_t, c_loc, &
+      c_associated
    use pecplas_io_deck_fields, only: deck_line_t
    implicit none (type, external)
    private
 
-   public :: deck_lines_t, name_t, add_name
+   public :: deck_lines_t, name_t, add_name, next_line
 
    !> One name of a table (a file path, a keyword).
    type :: name_t
@@ -33,6 +35,17 @@ module pecplas_io_deck_line_store
       procedure :: push => lines_push
       procedure :: resize => lines_resize
    end type deck_lines_t
+
+   interface
+      !> C library memchr: first byte c in s(1:n), or a null pointer.
+      function c_memchr(s, c, n) bind(c, name='memchr') result(hit)
+         import :: c_ptr, c_int, c_size_t
+         type(c_ptr), value :: s
+         integer(c_int), value :: c
+         integer(c_size_t), value :: n
+         type(c_ptr) :: hit
+      end function c_memchr
+   end interface
 
 contains
 
@@ -121,6 +134,111 @@ contains
       tmp(1:n) = a(1:n)
       call move_alloc(tmp, a)
    end subroutine resize_int
+
+   !> Bounds text(i1:i2) of the line that starts at `pos`, without comments ('**' lines,
+   !> '#' or '!' to the end of the line) and outer blanks; i2 < i1 for a line left empty.
+   !> Tabs and carriage returns of the line become blanks; `pos` moves past its line end.
+   !> `ahead` (0 at the start of a text) keeps the next place of a tab, carriage return,
+   !> '#' and '!' (found by memchr): a line without any of them is cut without looking at
+   !> its characters one by one.
+   subroutine next_line(text, pos, i1, i2, ahead)
+      character(len=*), intent(inout), target :: text
+      integer, intent(inout) :: pos
+      integer, intent(out) :: i1, i2
+      integer, intent(inout) :: ahead(4)
+      integer, parameter :: SPECIAL(4) = [9, 13, 35, 33]
+      integer :: p, lf, k, j1, j2
+      p = pos
+      do k = 1, 4
+         if (ahead(k) < p) ahead(k) = find_byte(text, p, SPECIAL(k))
+      end do
+      lf = find_byte(text, p, 10)
+      if (minval(ahead) < lf) then
+         call cut_line(text, pos, i1, i2)
+         return
+      end if
+      ! character codes: gfortran turns a test against ' ' into a len_trim call
+      do while (p < lf)
+         if (iachar(text(p:p)) /= 32) exit
+         p = p + 1
+      end do
+      j1 = p
+      j2 = lf - 1
+      if (p + 1 < lf) then
+         if (text(p:p + 1) == '**') j2 = j1 - 1
+      end if
+      do while (j2 >= j1)
+         if (iachar(text(j2:j2)) /= 32) exit
+         j2 = j2 - 1
+      end do
+      i1 = j1
+      i2 = j2
+      pos = lf + 1
+   end subroutine next_line
+
+   !> Position of the first byte `code` in text(p:), len(text) + 1 when there is none.
+   integer function find_byte(text, p, code) result(k)
+      character(len=*), intent(in), target :: text
+      integer, intent(in) :: p, code
+      type(c_ptr) :: hit
+      k = len(text) + 1
+      if (p > len(text)) return
+      hit = c_memchr(c_loc(text(p:p)), int(code, c_int), int(len(text) - p + 1, c_size_t))
+      if (.not. c_associated(hit)) return
+      k = p + int(transfer(hit, 0_c_intptr_t) - transfer(c_loc(text(p:p)), 0_c_intptr_t))
+   end function find_byte
+
+   !> next_line character by character (lines holding a tab, carriage return or comment).
+   pure subroutine cut_line(text, pos, i1, i2)
+      character(len=*), intent(inout) :: text
+      integer, intent(inout) :: pos
+      integer, intent(out) :: i1, i2
+      integer :: p, c, k, j1, j2
+      logical :: comment
+      p = pos
+      do while (p <= len(text))
+         c = iachar(text(p:p))
+         if (c == 9 .or. c == 13) then
+            text(p:p) = ' '
+         else if (c /= 32) then
+            exit
+         end if
+         p = p + 1
+      end do
+      j1 = p
+      comment = .false.
+      if (p < len(text)) comment = text(p:p + 1) == '**'
+      if (.not. comment) then
+         do while (p <= len(text))
+            c = iachar(text(p:p))
+            if (c == 10) exit
+            if (c == 9 .or. c == 13) text(p:p) = ' '
+            if (c == 33 .or. c == 35) then
+               comment = .true.
+               exit
+            end if
+            p = p + 1
+         end do
+      end if
+      ! the line ends at p - 1 (line end or comment): trailing blanks off
+      j2 = p - 1
+      do while (j2 >= j1)
+         if (iachar(text(j2:j2)) /= 32) exit
+         j2 = j2 - 1
+      end do
+      if (comment) then
+         ! the rest of the line is dropped
+         k = index(text(p:), achar(10))
+         if (k > 0) then
+            p = p + k - 1
+         else
+            p = len(text) + 1
+         end if
+      end if
+      i1 = j1
+      i2 = j2
+      pos = p + 1
+   end subroutine cut_line
 
    !> Appends `s` to a name table.
    pure subroutine add_name(list, s)

@@ -7,7 +7,7 @@ module pecplas_io_deck_lines
    use pecplas_error, only: error_t, deck_error, input_error
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, parse_keyword_line, &
       keyword_name
-   use pecplas_io_deck_line_store, only: deck_lines_t, add_name
+   use pecplas_io_deck_line_store, only: deck_lines_t, add_name, next_line
    implicit none (type, external)
    private
 
@@ -52,7 +52,6 @@ contains
       kw_id = 0
       call read_one(join_path('', path), '', '', 0, store, raw, kw_id, error)
       if (allocated(error)) return
-      if (size(store%i1) /= store%n) call store%resize(store%n)
    end subroutine read_deck_store
 
    !> Appends the lines of `path`; `stack` holds the files being read (newline separated)
@@ -69,8 +68,7 @@ contains
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: start, stop_, lineno, i1, i2, nkeep, nlines, base, file_id, c
-      integer, allocatable :: bounds(:, :)
+      integer :: lineno, i1, i2, nt, pos, base, file_id, ahead(4)
       logical :: found
 
       call read_text_file(path, text, found)
@@ -94,39 +92,25 @@ contains
       file_id = size(store%files) + 1
       call add_name(store%files, path)
 
-      ! pass 1: the text bounds of every line, tabs and carriage returns turned into blanks
-      ! (the raw text above keeps them); then room for the lines kept, at once
-      nlines = count_lines(text)
-      allocate (bounds(2, nlines))
-      nkeep = 0
-      start = 1
-      lineno = 0
-      do while (start <= len(text))
-         stop_ = start
-         do while (stop_ <= len(text))
-            ! character codes: gfortran turns a test against ' ' into a len_trim call
-            c = iachar(text(stop_:stop_))
-            if (c == 10) exit
-            if (c == 9 .or. c == 13) text(stop_:stop_) = ' '
-            stop_ = stop_ + 1
-         end do
-         lineno = lineno + 1
-         call clean_bounds(text, start, stop_ - 1, bounds(1, lineno), bounds(2, lineno))
-         if (bounds(2, lineno) >= bounds(1, lineno)) nkeep = nkeep + 1
-         start = stop_ + 1
-      end do
-      if (store%n + nkeep > size(store%i1)) call store%resize(store%n + nkeep)
-      ! the cleaned text joins the buffer whole: lines are offsets into it
+      ! the text joins the buffer whole: lines are offsets into it, found in one sweep
+      ! that also turns tabs and carriage returns into blanks (the raw text keeps them)
+      nt = len(text)
       base = len(store%buf)
       if (base == 0) then
          call move_alloc(text, store%buf)
       else
          store%buf = store%buf//text
+         deallocate (text)
       end if
-
-      do lineno = 1, nlines
-         i1 = bounds(1, lineno)
-         i2 = bounds(2, lineno)
+      ! room for the lines at once when they hold 16 characters or more on average (mesh
+      ! lines do): no copies as the arrays grow; room not used is never touched
+      if (store%n + nt/16 + 64 > size(store%i1)) call store%resize(store%n + nt/16 + 64)
+      pos = 1
+      lineno = 0
+      ahead = 0
+      do while (pos <= nt)
+         lineno = lineno + 1
+         call next_line(store%buf(base + 1:base + nt), pos, i1, i2, ahead)
          if (i2 < i1) cycle
          if (store%buf(base + i1:base + i1) /= '*') then
             ! a data line (most of a mesh deck): offsets only
@@ -160,52 +144,6 @@ contains
          call store%push(base + i1, base + i2, lineno, file_id, kw_id)
       end do
    end subroutine read_one
-
-   !> Number of lines of a text (the last one may lack its line end).
-   pure integer function count_lines(text) result(k)
-      character(len=*), intent(in) :: text
-      integer :: i
-      k = 0
-      do i = 1, len(text)
-         if (text(i:i) == NL) k = k + 1
-      end do
-      if (len(text) > 0) then
-         if (text(len(text):len(text)) /= NL) k = k + 1
-      end if
-   end function count_lines
-
-   !> Bounds i1:i2 of the text of line text(first:last) without comments ('**' lines, '#' or
-   !> '!' to end of line) and without blanks on both sides (tabs and carriage returns are
-   !> already blanks); i2 < i1 for a line left empty.
-   pure subroutine clean_bounds(text, first, last, i1, i2)
-      character(len=*), intent(in) :: text
-      integer, intent(in) :: first, last
-      integer, intent(out) :: i1, i2
-      integer :: k
-      i1 = first
-      i2 = last
-      ! character codes: gfortran turns a test against ' ' into a len_trim call
-      do while (i1 <= i2)
-         if (iachar(text(i1:i1)) /= 32) exit
-         i1 = i1 + 1
-      end do
-      if (i2 - i1 >= 1) then
-         if (text(i1:i1 + 1) == '**') then
-            i2 = i1 - 1
-            return
-         end if
-      end if
-      do k = i1, i2
-         if (text(k:k) == '#' .or. text(k:k) == '!') then
-            i2 = k - 1
-            exit
-         end if
-      end do
-      do while (i2 >= i1)
-         if (iachar(text(i2:i2)) /= 32) exit
-         i2 = i2 - 1
-      end do
-   end subroutine clean_bounds
 
    !> 'a.inp -> b.inp -> c.inp' from the newline-separated stack and the current file.
    pure function chain(stack, path) result(s)

@@ -4,7 +4,8 @@ module pecplas_io_deck_reader_mesh
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, deck_error
    use pecplas_io_deck_fields, only: deck_line_t, field_t, split_fields, field_int, field_real, &
-      check_count, parse_int, parse_real, field_bounds, same_name, upper, itoa, add_name
+      check_count, parse_int, same_name, upper, itoa, add_name
+   use pecplas_io_deck_mesh_lines, only: quick_node, quick_ids
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_eset_t, raw_nset_t, &
       raw_edge_set_t, line_error, where_text, grow_int, grow_int2, grow_real2
    implicit none (type, external)
@@ -308,36 +309,6 @@ contains
          end do
       end associate
    end subroutine read_edges
-
-   !> A well-formed node line `id, x, y` (positive id, two finite numbers) read without
-   !> allocating; .false. for anything else, left to the general path and its messages.
-   logical function quick_node(text, id, x, y) result(ok)
-      character(len=*), intent(in) :: text
-      integer, intent(out) :: id
-      real(wp), intent(out) :: x, y
-      integer :: b(2, 3), n
-      call field_bounds(text, b, n)
-      ok = n == 3
-      if (ok) call parse_int(text(b(1, 1):b(2, 1)), id, ok)
-      if (ok) ok = id > 0
-      if (ok) call parse_real(text(b(1, 2):b(2, 2)), x, ok)
-      if (ok) call parse_real(text(b(1, 3):b(2, 3)), y, ok)
-   end function quick_node
-
-   !> A line of exactly size(ids) positive integers read without allocating; .false. for
-   !> anything else, left to the general path and its messages.
-   logical function quick_ids(text, ids) result(ok)
-      character(len=*), intent(in) :: text
-      integer, intent(out) :: ids(:)
-      integer :: b(2, 9), n, k
-      call field_bounds(text, b, n)
-      ok = n == size(ids)
-      do k = 1, n
-         if (.not. ok) exit
-         call parse_int(text(b(1, k):b(2, k)), ids(k), ok)
-         if (ok) ok = ids(k) > 0
-      end do
-   end function quick_ids
 
    !> Error for a keyword that needs data lines and has none.
    subroutine no_data_error(state, block, form, error)

@@ -17,10 +17,14 @@ contains
       type(model_t), intent(inout) :: model
       integer :: i, s, k, e, nel, n0
       type(place_t), allocatable :: split(:)
+      integer, allocatable :: fmap(:)
+      ! provenance file index of each file of the line store, found on first use
+      allocate (fmap(size(state%lines%files)))
+      fmap = 0
       associate (pv => model%provenance)
          allocate (pv%nodes(size(state%mesh_node_at)))
          do i = 1, size(state%mesh_node_at)
-            pv%nodes(i) = here(state, model, state%mesh_node_at(i))
+            pv%nodes(i) = here(state, model, fmap, state%mesh_node_at(i))
          end do
          allocate (pv%esets(size(model%mesh%esets)))
          do s = 1, size(model%mesh%esets)
@@ -35,11 +39,11 @@ contains
             if (k > 0) then
                pv%esets(s)%keyword = '*ELEMENTS'
                do e = 1, min(nel, state%esets(k)%n)
-                  pv%esets(s)%at(e) = here(state, model, state%esets(k)%where(e))
+                  pv%esets(s)%at(e) = here(state, model, fmap, state%esets(k)%where(e))
                end do
             else if (s <= size(state%mesh_eset_at)) then
                pv%esets(s)%keyword = '*MESH'
-               pv%esets(s)%at = here(state, model, state%mesh_eset_at(s))
+               pv%esets(s)%at = here(state, model, fmap, state%mesh_eset_at(s))
             else
                pv%esets(s)%keyword = ''
             end if
@@ -56,10 +60,10 @@ contains
             associate (raw => state%joint_sets(s))
                if (raw%n > 0) then
                   do e = 1, min(nel, raw%n)
-                     pv%joint_sets(s)%at(e) = here(state, model, raw%where(e))
+                     pv%joint_sets(s)%at(e) = here(state, model, fmap, raw%where(e))
                   end do
                else
-                  pv%joint_sets(s)%at = here(state, model, raw%at)
+                  pv%joint_sets(s)%at = here(state, model, fmap, raw%at)
                end if
             end associate
          end do
@@ -82,16 +86,26 @@ contains
       end associate
    end subroutine record_places
 
-   !> Place of deck line index `at` (unknown when 0).
-   function here(state, model, at) result(p)
+   !> Place of deck line index `at` (unknown when 0); fmap(f): provenance file index of
+   !> line-store file f (0 until its first use).
+   function here(state, model, fmap, at) result(p)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
+      integer, intent(inout) :: fmap(:)
       integer, intent(in) :: at
       type(place_t) :: p
+      integer :: f
       if (at < 1 .or. at > state%lines%n) return
       ! names from the line store's tables: no temporary per node
       associate (ln => state%lines)
-         p = model%provenance%place(ln%files(ln%file_of(at))%s, ln%num(at))
+         f = ln%file_of(at)
+         if (fmap(f) == 0) then
+            p = model%provenance%place(ln%files(f)%s, ln%num(at))
+            fmap(f) = p%file
+         else
+            p%file = fmap(f)
+            p%line = ln%num(at)
+         end if
          if (ln%kw_of(at) == 0) then
             p%keyword = ''
          else

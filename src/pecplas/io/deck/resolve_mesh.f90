@@ -14,6 +14,7 @@ module pecplas_io_deck_resolve_mesh
    use pecplas_model_mesh, only: mesh_t, element_set_t, node_set_t, edge_set_t
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_model_mesh_tools, only: orient_edge_sets
+   use pecplas_model_node_lookup, only: node_lookup_t
    implicit none (type, external)
    private
 
@@ -45,15 +46,16 @@ contains
                'no nodes: the deck defines no *NODES (and no *MESH)')
             return
          end if
-         dup = first_repeat(mesh%node_id)
-         if (dup(2) > 0) then
-            call line_error(state, state%mesh_node_at(dup(2)), 'duplicate node id '// &
-               itoa(mesh%node_id(dup(2)))//' (first defined at '// &
+         ! the lookup finds a repeated id in O(n); the message names the first repeat
+         ! and both its lines
+         call state%node_lookup%build(mesh, error)
+         if (allocated(error)) then
+            dup = first_repeat(mesh%node_id)
+            if (dup(2) > 0) call line_error(state, state%mesh_node_at(dup(2)), &
+               'duplicate node id '//itoa(mesh%node_id(dup(2)))//' (first defined at '// &
                where_text(state, state%mesh_node_at(dup(1)))//')', error)
             return
          end if
-         call state%node_lookup%build(mesh, error)
-         if (allocated(error)) return
       end associate
       if (model%analysis%kind == AXISYMMETRIC) then
          call check_radius(state, model%mesh, error)
@@ -124,7 +126,7 @@ contains
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
       type(element_set_t) :: es
-      integer :: i, k, e, j, nen
+      integer :: i, k, e, j, nen, c(9)
       if (.not. allocated(state%esets) .and. size(model%mesh%esets) == 0) then
          call deck_error(error, model%deck_file, 0, '*ELEMENTS', &
             'no elements: the deck defines no *ELEMENTS (and no *MESH)')
@@ -147,21 +149,23 @@ contains
             allocate (es%conn(nen, raw%n), es%ids(raw%n))
             es%ids = raw%ids(1:raw%n)
             do e = 1, raw%n
+               ! a local copy of the element's nodes: no reload of es%conn at every step
                do j = 1, nen
-                  es%conn(j, e) = state%node_lookup%index(raw%conn(j, e))
-                  if (es%conn(j, e) == 0) then
+                  c(j) = state%node_lookup%index(raw%conn(j, e))
+                  if (c(j) == 0) then
                      call line_error(state, raw%where(e), 'undefined node '// &
                         itoa(raw%conn(j, e))//' in element '//itoa(raw%ids(e))// &
                         ': no *NODES line defines it', error)
                      return
                   end if
-                  if (any(es%conn(1:j - 1, e) == es%conn(j, e))) then
+                  if (any(c(1:j - 1) == c(j))) then
                      call line_error(state, raw%where(e), 'element '//itoa(raw%ids(e))// &
                         ' lists node '//itoa(raw%conn(j, e))//' twice', error)
                      return
                   end if
                end do
-               if (degenerate(model%mesh%x, es%conn(:, e))) then
+               es%conn(:, e) = c(1:nen)
+               if (degenerate(model%mesh%x, c(1:nen))) then
                   call line_error(state, raw%where(e), 'element '//itoa(raw%ids(e))// &
                      ' is degenerate (zero area): its corner nodes are on one line', error)
                   return
@@ -197,11 +201,26 @@ contains
       type(deck_state_t), intent(in) :: state
       type(mesh_t), intent(in) :: mesh
       type(error_t), allocatable, intent(out) :: error
+      type(node_lookup_t) :: unique
       integer, allocatable :: ids(:), at(:)
-      integer :: i, k, dup(2)
-      allocate (ids(0), at(0))
+      integer :: i, k, n, dup(2)
+      n = 0
       do i = 1, size(mesh%esets)
-         ids = [ids, mesh%esets(i)%ids]
+         n = n + size(mesh%esets(i)%ids)
+      end do
+      allocate (ids(n), at(n))
+      n = 0
+      do i = 1, size(mesh%esets)
+         ids(n + 1:n + size(mesh%esets(i)%ids)) = mesh%esets(i)%ids
+         n = n + size(mesh%esets(i)%ids)
+      end do
+      ! a lookup of the ids is built in O(n) when they are all different (the usual case)
+      call unique%build_ids(ids, 'element id', error)
+      if (.not. allocated(error)) return
+      deallocate (error)
+      ! a repeat: the line of every element, to name the first repeat and both its lines
+      n = 0
+      do i = 1, size(mesh%esets)
          k = 0
          if (allocated(state%esets)) then
             do k = size(state%esets), 1, -1
@@ -209,10 +228,11 @@ contains
             end do
          end if
          if (k > 0) then
-            at = [at, state%esets(k)%where(1:state%esets(k)%n)]
+            at(n + 1:n + size(mesh%esets(i)%ids)) = state%esets(k)%where(1:state%esets(k)%n)
          else
-            at = [at, spread(state%mesh_eset_at(i), 1, size(mesh%esets(i)%ids))]
+            at(n + 1:n + size(mesh%esets(i)%ids)) = state%mesh_eset_at(i)
          end if
+         n = n + size(mesh%esets(i)%ids)
       end do
       dup = first_repeat(ids)
       if (dup(2) > 0) call line_error(state, at(dup(2)), 'duplicate element id '// &
