@@ -25,7 +25,8 @@ written after every run, with the fragment doc/bench/mumps.md, so an interrupted
 keeps what it measured.
 
     python3 tools/bench_mumps.py [--quick] [--sizes 1e5 1e6] [--problems elastic]
-                                 [--pecplas build/cmake-mpi/pecplas] [--timeout 1800]
+                                 [--configs MUMPS:1:2] [--timeout 1800]
+                                 [--pecplas build/cmake-mpi/pecplas]
 """
 import argparse
 import csv
@@ -181,6 +182,16 @@ def one_run(binary, deck, solver, threads, ranks, timeout):
     return r
 
 
+def parse_config(text):
+    """'MUMPS:1:2' -> ('MUMPS', 1, 2), one of CONFIGS."""
+    solver, threads, ranks = text.split(":")
+    c = (solver.upper(), int(threads), int(ranks))
+    if c not in CONFIGS:
+        raise SystemExit(f"bench_mumps: unknown configuration {text}; known: "
+                         + " ".join(f"{s}:{t}:{r}" for s, t, r in CONFIGS))
+    return c
+
+
 def read_rows(path):
     """Rows of an existing CSV as dicts (numbers as floats where they parse)."""
     if not Path(path).exists():
@@ -225,11 +236,14 @@ def main():
     ap.add_argument("--quick", action="store_true", help="1e4 and 3e4 equations")
     ap.add_argument("--sizes", type=float, nargs="+", default=None)
     ap.add_argument("--problems", nargs="+", choices=list(MAKERS), default=list(MAKERS))
+    ap.add_argument("--configs", nargs="+", default=None, metavar="SOLVER:THREADS:RANKS",
+                    help="a subset of " + " ".join(f"{s}:{t}:{r}" for s, t, r in CONFIGS))
     ap.add_argument("--timeout", type=float, default=1800.0)
     ap.add_argument("--pecplas", default=str(ROOT / "build" / "cmake-mpi" / "pecplas"))
     a = ap.parse_args()
     if not Path(a.pecplas).exists():
         sys.exit(f"bench_mumps: no MPI build at {a.pecplas} (make build-mpi)")
+    configs = CONFIGS if not a.configs else [parse_config(c) for c in a.configs]
     sizes = sorted(a.sizes or ((1e4, 3e4) if a.quick else (1e5, 1e6, 3e6)))
     rows = read_rows(CSV_PATH)
     t0 = time.perf_counter()
@@ -240,7 +254,7 @@ def main():
                 deck = Path(tmp) / f"{prob}_{int(target)}.inp"
                 MAKERS[prob](nx, ny, deck)
                 neq = equations(nx, ny)
-                for solver, threads, ranks in CONFIGS:
+                for solver, threads, ranks in configs:
                     row = {"problem": prob, "equations": neq, "solver": solver,
                            "threads": threads, "ranks": ranks}
                     need = predicted_total_mb(rows, row)

@@ -137,3 +137,9 @@ def test_csv_round_trip_keeps_each_rows_provenance(tmp_path):
     assert back[1]["equations"] == 1000000 and back[1]["ranks"] == 1
     assert back[1]["est_flops"] == pytest.approx(1e3 * 1e6**1.5, rel=1e-12)
     assert re.match(r"\d{4}-", back[0]["date"])
+
+
+def test_configuration_names_are_checked():
+    assert bench_mumps.parse_config("mumps:1:2") == ("MUMPS", 1, 2)
+    with pytest.raises(SystemExit, match="known: CHOLMOD:1:1"):
+        bench_mumps.parse_config("MUMPS:4:4")
