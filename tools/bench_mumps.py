@@ -48,7 +48,7 @@ HEADER = ["problem", "equations", "solver", "ordering", "threads", "ranks", "sta
           "increments", "iterations", "factorisations", "time_per_increment_s",
           "t_factorisation_s", "peak_mb_per_rank", "peak_mb_ranks", "peak_mb_total",
           "nnz_factor", "flops", "est_factor_entries", "est_flops", "est_mb_rank",
-          "est_mb_total", "mumps_mb_rank", "load_run", "load1_end", "final", "note"]
+          "est_mb_total", "mumps_mb_rank", "cpu_s", "total_s", "load_run", "load1_end", "final", "note"]
 PROV = ["commit", "machine", "date"]
 TEXT = ("ordering", "peak_mb_ranks", "note", "commit", "machine", "date")
 KEY = ("problem", "equations", "solver", "threads", "ranks")
@@ -145,6 +145,7 @@ def parse_run(text):
             "factorisations": int(number(r"(\d+) factorisations,", text, 0)),
             "time_per_increment_s": (total - setup) / incs if incs else float("nan"),
             "t_factorisation_s": number(r"factorisation ([0-9.]+)", text),
+            "cpu_s": number(r"([0-9.]+) s CPU", text), "total_s": total,
             "nnz_factor": number(r"nnz\(factor\)=(\d+)", text),
             "flops": number(r" flops=\s*([0-9.E+-]+)", text),
             "est_factor_entries": number(r"est_factor_entries=(-?\d+)", text),

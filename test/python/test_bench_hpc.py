@@ -79,6 +79,14 @@ def test_extrapolation_reproduces_the_power_laws():
     # time: flops / (16 ranks x rate x 50 %), rate = est_flops x 4 factorisations / 2 s at 3e6
     rate = 1e3 * 3e6**1.5 * 4 / 2.0
     assert float(cells[6]) == pytest.approx(1e3 * 1e7**1.5 / (16 * rate * 0.5), rel=5e-3)
+    # the largest run had a quarter of a core (CPU 1 s over 4 s of wall time): the flop
+    # rate per rank is 4 times its wall-time rate, the time a quarter
+    shared = [row(n) for n in (1e5, 1e6)] + [row(3e6, cpu_s=1.0, total_s=4.0)]
+    line = next(s for s in rep.extrapolation(shared) if s.startswith("| 1e+07 | ")
+                and "| 16 |" in s)
+    assert float(line.split("|")[6]) == pytest.approx(
+        1e3 * 1e7**1.5 / (16 * 4 * rate * 0.5), rel=5e-3)
+    assert "its CPU time over its wall time, 0.25" in rep.extrapolation(shared)[1]
     # fewer than two MUMPS sizes: no extrapolation is written
     assert rep.extrapolation([row(1e5)]) == []
 
@@ -109,6 +117,7 @@ def test_run_output_is_parsed():
     assert (r["increments"], r["iterations"], r["factorisations"]) == (2, 16, 15)
     assert r["time_per_increment_s"] == pytest.approx((14.5 - 0.5) / 2, abs=1e-12)
     assert r["t_factorisation_s"] == 8.25
+    assert (r["cpu_s"], r["total_s"]) == (9.0, 14.5)
     assert (r["est_mb_rank"], r["est_mb_total"], r["mumps_mb_rank"]) == (150, 290, 140)
     assert r["est_flops"] == 1.234e10 and r["flops"] == 1.234e10
     assert r["ordering"] == "metis (LDL^T)" and r["status"] == "completed"
