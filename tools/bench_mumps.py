@@ -256,8 +256,9 @@ def main():
                 MAKERS[prob](nx, ny, deck)
                 neq = equations(nx, ny)
                 for solver, threads, ranks in configs:
-                    row = {"problem": prob, "equations": neq, "solver": solver,
-                           "threads": threads, "ranks": ranks}
+                    row = {k: "" if k in TEXT else NAN for k in HEADER}
+                    row.update(problem=prob, equations=neq, solver=solver, threads=threads,
+                               ranks=ranks)
                     need = predicted_total_mb(rows, row)
                     have = mem_available_mb()
                     if need == need and need * MEMORY_MARGIN > have:

@@ -83,6 +83,10 @@ def estimate_table(rows):
     return L
 
 
+def extrapolated(n, top):
+    return f"{n:.2e}" + (" (extrapolated)" if n > top else " (within the sizes run)")
+
+
 def fit_table(rows):
     L = ["| problem | solver | threads × ranks | sizes fitted | memory (all ranks) ~ N^p | "
          "equations in 20 GB (all ranks) | equations with 20 GB per rank |",
@@ -98,11 +102,20 @@ def fit_table(rows):
                 continue
             top = max(r["equations"] for r in sel)
             nt, nr = solve_for(ft, GB20_MB), solve_for(fr, GB20_MB)
-
-            def word(n):
-                return f"{n:.2e}" + (" (extrapolated)" if n > top else " (within the sizes run)")
             L.append(f"| {prob} | {solver} | {threads} × {ranks} | {len(sel)} | {ft[0]:.2f} | "
-                     f"{word(nt)} | {word(nr)} |")
+                     f"{extrapolated(nt, top)} | {extrapolated(nr, top)} |")
+    # MUMPS's own estimate of its memory (the factor and its work space, no model): the
+    # bound a model partitioned among the ranks would approach
+    for ranks in (1, 2):
+        sel = done(rows, "elastic", "MUMPS", 1, ranks)
+        ft = fit([r["equations"] for r in sel], [r["est_mb_total"] for r in sel])
+        fr = fit([r["equations"] for r in sel], [r["est_mb_rank"] for r in sel])
+        if ft and fr:
+            top = max(r["equations"] for r in sel)
+            nt, nr = (solve_for(f, GB20_MB) for f in (ft, fr))
+            L.append(f"| MUMPS's estimate, INFOG(17) / INFOG(16): factor only | MUMPS | 1 × "
+                     f"{ranks} | {len(sel)} | {ft[0]:.2f} | {extrapolated(nt, top)} | "
+                     f"{extrapolated(nr, top)} |")
     return L
 
 

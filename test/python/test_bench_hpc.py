@@ -61,6 +61,11 @@ def test_20gb_size_solves_the_fit_and_says_when_it_is_extrapolated():
     assert "(within the sizes run)" in cells[6]
     two = "\n".join(rep.fit_table([row(n, solver="CHOLMOD") for n in (1e5, 1e6)]))
     assert "(extrapolated)" in next(s for s in two.splitlines() if "| CHOLMOD | 1 × 1 |" in s)
+    # MUMPS's own estimate (12 bytes x 30 N^1.1 entries) gives the factor-only bound
+    mum = "\n".join(rep.fit_table([row(n) for n in (1e5, 1e6)]))
+    est = next(s for s in mum.splitlines() if "INFOG(17)" in s and "| 1 × 1 |" in s)
+    assert float(est.split("|")[6].split()[0]) == pytest.approx(
+        (rep.GB20_MB * 1e6 / 360.0) ** (1 / 1.1), rel=5e-3)
     # fewer than two sizes of at least 1e5: not fitted, and the table says why
     assert "not fitted" in "\n".join(rep.fit_table([row(1e4), row(1e5)]))
 
