@@ -70,6 +70,21 @@ def run_table(rows):
     return L
 
 
+def not_run(rows):
+    """'problem N: configurations' for each problem and size (of any problem) lacking rows."""
+    sizes = sorted({r["equations"] for r in rows})
+    out = []
+    for prob in dict.fromkeys(r["problem"] for r in rows):
+        for n in sizes:
+            have = {(r["solver"], r["threads"], r["ranks"]) for r in rows
+                    if r["problem"] == prob and r["equations"] == n}
+            lack = [f"{s} {t} × {k}" for s, t, k in CONFIGS if (s, t, k) not in have]
+            if lack:
+                out.append(f"{prob} at {n} equations: " + (
+                    "all four" if len(lack) == len(CONFIGS) else ", ".join(lack)))
+    return out
+
+
 def estimate_table(rows):
     L = ["| equations | ranks | est. factor entries INFOG(3) | est. flops RINFOG(1) | "
          "est. MB largest rank INFOG(16) | est. MB all ranks INFOG(17) | MB used, largest rank "
@@ -187,6 +202,9 @@ def fragment(rows, wall=None):
          "a time, smallest first; a run predicted not to fit in the memory available is "
          f"skipped. {span}. Data: `mumps.csv`.", ""]
     L += run_table(rows)
+    missing = not_run(rows)
+    if missing:
+        L += ["", "Not run in this series: " + "; ".join(missing) + "."]
     L += ["", "**MUMPS's own estimates** (analysis, `elastic`; the footing has the same "
           "pattern):", ""] + estimate_table(rows)
     L += ["", "**Largest mesh within 20 GB** (power law of the measured peak memory against N "

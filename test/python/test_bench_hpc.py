@@ -157,3 +157,13 @@ def test_configuration_names_are_checked():
     assert bench_mumps.parse_config("mumps:1:2") == ("MUMPS", 1, 2)
     with pytest.raises(SystemExit, match="known: CHOLMOD:1:1"):
         bench_mumps.parse_config("MUMPS:4:4")
+
+
+def test_configurations_not_run_are_listed():
+    rows = [row(1e5, problem="elastic", solver=s, threads=th, ranks=k)
+            for s, th, k in rep.CONFIGS] + [row(1e5, problem="dp_footing", solver="CHOLMOD")]
+    rows += [row(3e6, problem="elastic", solver="CHOLMOD")]
+    text = rep.fragment(rows)
+    assert ("Not run in this series: elastic at 3000000.0 equations: CHOLMOD 2 × 1, MUMPS 1 × 1, "
+            "MUMPS 1 × 2; dp_footing at 100000.0 equations: CHOLMOD 2 × 1, MUMPS 1 × 1, MUMPS "
+            "1 × 2; dp_footing at 3000000.0 equations: all four.") in text
