@@ -146,8 +146,7 @@ def extrapolation(rows):
              if r["t_factorisation_s"] > 0 and r["factorisations"] > 0]
     if not (fe and ff and fm and timed):
         return []
-    top = max(timed, key=lambda r: (r.get("cpu_s", NAN) == r.get("cpu_s", NAN),
-                                    r["equations"]))
+    top = max(timed, key=lambda r: (share_known(r), r["equations"]))
     rate_wall = top["est_flops"] * top["factorisations"] / top["t_factorisation_s"]
     # on a loaded machine the run had a share of a core only: its CPU time over its wall time
     share = cpu_share(top)
@@ -160,7 +159,8 @@ def extrapolation(rows):
          "(2D nested dissection predicts N log N and N^1.5); MUMPS's memory estimate is "
          f"{mb_per_entry:.1f} bytes per factor entry (INFOG(16) over INFOG(3), median), shared "
          f"evenly by the ranks; the flop rate {rate:.2e} flop/s per rank is the one of the "
-         f"largest 1-rank MUMPS run ({top['problem']}, {top['equations']} equations, load "
+         f"largest 1-rank MUMPS run{' with its CPU time recorded' if share_known(top) else ''} "
+         f"({top['problem']}, {top['equations']} equations, load "
          f"{top.get('load_run', NAN):.1f}: {rate_wall:.2e} flop/s of wall time"
          + (f", divided by the share of a core the run had, its CPU time over its wall time, "
             f"{share:.2f}" if share < 1 else "") + ") and the parallel efficiency on 16–64 ranks "
@@ -177,6 +177,10 @@ def extrapolation(rows):
             L.append(f"| {neq:.0e} | {ent:.2e} | {fl:.2e} | {p} | {share:.1f} | "
                      f"{fl / (p * rate * EFFICIENCY):.3g} | {share + model / 1024:.1f} |")
     return L
+
+
+def share_known(r):
+    return r.get("cpu_s", NAN) == r.get("cpu_s", NAN)
 
 
 def cpu_share(r):
