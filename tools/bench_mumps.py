@@ -5,22 +5,31 @@ Two problems from tools/make_default_deck.py (Q8, plane strain, half strip footi
 `elastic` (the deck as written, linear: 6 increments) and `dp_footing` (the Drucker-Prager
 footing of tools/bench_scaling.py: geostatic stress, then 300 kPa in 2 increments, full
 Newton; associated, so the tangent is symmetric: CHOLMOD, and MUMPS as LDL^T). Sizes: 1e5,
-1e6 and 3e6 equations (--quick: 1e4 and 3e4, minutes on a busy machine). Each run uses the
-MPI build (make build-mpi); a run over TIMEOUT is reported as 'timeout'.
+1e6 and 3e6 equations (--quick: 1e4 and 3e4; --sizes picks others), run one at a time,
+smallest first. Each run uses the MPI build (make build-mpi); a run over --timeout is
+reported as 'timeout'.
 
 Per run: time per increment = (total - read+setup) / increments from the run summary; peak
-resident memory per rank (the largest VmHWM of the pecplas processes, polled); for MUMPS its
-own analysis estimates (factor entries INFOG(3), flops RINFOG(1)) and measured MB per rank
-(INFOG(21)). The largest mesh that fits in 20 GB is the least-squares power law of peak
-memory per rank against N solved for 20 GB (an extrapolation when beyond the sizes run), and
-doc/bench/mumps.md extrapolates the MUMPS factor to 1e7-1e8 equations on 16-64 ranks from
-the fitted fill and flop exponents.
+resident memory of every rank (VmHWM of each pecplas process, polled); MUMPS's own analysis
+estimates (factor entries INFOG(3), flops RINFOG(1), MB on the largest rank and on all
+INFOG(16)/(17)) and the MB it used (INFOG(21)); CHOLMOD's factor entries and flops and the
+ordering that ran (from the program's 'linear solver:' line); the load during the run (mean
+number of runnable tasks, the sampling process excluded) and the 1-minute load average at its
+end. A timing taken at load > 2 is marked not final. Before each run the memory it needs is
+predicted from the smaller sizes already run (tools/bench_mumps_report.py); a run that would
+not fit in the memory available now is skipped and says so.
 
-Writes doc/bench/mumps.csv and the fragment doc/bench/mumps.md.
+Rows are merged into doc/bench/mumps.csv (a rerun replaces the row of the same problem, size,
+solver, threads and ranks; each row keeps the commit and date it was measured at), which is
+written after every run, with the fragment doc/bench/mumps.md, so an interrupted series
+keeps what it measured.
 
-    python3 tools/bench_mumps.py [--quick] [--pecplas build/cmake-mpi/pecplas]
+    python3 tools/bench_mumps.py [--quick] [--sizes 1e5 1e6] [--problems elastic]
+                                 [--configs MUMPS:1:2] [--timeout 1800]
+                                 [--pecplas build/cmake-mpi/pecplas]
 """
 import argparse
+import csv
 import os
 import re
 import subprocess
@@ -29,25 +38,33 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import ROOT, write_csv, write_fragment  # noqa: E402
+from bench_common import BENCH_DIR, ROOT, provenance, write_fragment  # noqa: E402
+from bench_mumps_report import (CONFIGS, GB20_MB, fit, fragment,  # noqa: E402,F401
+                                predicted_total_mb)
 from bench_scaling import equations, make_deck as make_dp_deck, size_for  # noqa: E402
 
-TIMEOUT = 900.0
-GB20_MB = 20.0 * 1024
-FIT_FROM = 1e5  # smallest size in the 20 GB memory fit
-CONFIGS = (("CHOLMOD", 1, 1), ("CHOLMOD", 2, 1), ("MUMPS", 1, 1), ("MUMPS", 1, 2))
-HEADER = ["problem", "equations", "solver", "threads", "ranks", "status", "increments",
-          "iterations", "time_per_increment_s", "t_factorisation_s", "peak_mb_per_rank",
-          "nnz_factor", "flops", "est_factor_entries", "est_flops", "mumps_mb_rank"]
+HEADER = ["problem", "equations", "solver", "ordering", "threads", "ranks", "status",
+          "increments", "iterations", "factorisations", "time_per_increment_s",
+          "t_factorisation_s", "peak_mb_per_rank", "peak_mb_ranks", "peak_mb_total",
+          "nnz_factor", "flops", "est_factor_entries", "est_flops", "est_mb_rank",
+          "est_mb_total", "mumps_mb_rank", "cpu_s", "total_s", "load_run", "load1_end", "final", "note"]
+PROV = ["commit", "machine", "date"]
+TEXT = ("ordering", "peak_mb_ranks", "note", "commit", "machine", "date")
+KEY = ("problem", "equations", "solver", "threads", "ranks")
+CSV_PATH = BENCH_DIR / "mumps.csv"
+MAX_LOAD = 2.0  # a timing taken at a higher load is not final (2 cores)
+NAN = float("nan")
+MEMORY_MARGIN = 1.15  # a run is started only when 1.15 x its predicted memory is available
 
 
 def make_elastic_deck(nx, ny, path):
     subprocess.run([sys.executable, str(ROOT / "tools" / "make_default_deck.py"), "--nx",
                     str(nx), "--ny", str(ny), "--width", "10", "--depth", "5", "--footing", "1",
                     "-o", str(path)], check=True)
+
+
+MAKERS = {"elastic": make_elastic_deck, "dp_footing": make_dp_deck}
 
 
 def with_solver(path, solver):
@@ -71,11 +88,24 @@ def descendants(pid):
     return out
 
 
-def run_polled(cmd, env):
-    """(rc or None on timeout, stdout, largest VmHWM [MB] of any process of the run)."""
+def runnable_tasks(text):
+    """Runnable tasks from /proc/loadavg's text ('0.5 0.4 0.3 3/170 999'), less the reader."""
+    return max(0, int(text.split()[3].split("/")[0]) - 1)
+
+
+def mem_available_mb():
+    for line in Path("/proc/meminfo").read_text().splitlines():
+        if line.startswith("MemAvailable:"):
+            return int(line.split()[1]) / 1024.0
+    return float("nan")
+
+
+def run_polled(cmd, env, timeout):
+    """(rc or None on timeout, stdout, {pid: VmHWM MB} of the pecplas processes, mean runnable
+    tasks during the run)."""
     with tempfile.TemporaryFile("w+") as fo:
         p = subprocess.Popen(cmd, stdout=fo, stderr=subprocess.STDOUT, env=env, text=True)
-        peak, t0 = 0.0, time.perf_counter()
+        hwm, loads, t0 = {}, [], time.perf_counter()
         while p.poll() is None:
             for q in [p.pid] + descendants(p.pid):
                 try:
@@ -83,16 +113,18 @@ def run_polled(cmd, env):
                         txt = st.read()
                     if "pecplas" in txt.split("\n", 1)[0]:
                         m = re.search(r"VmHWM:\s+(\d+)", txt)
-                        peak = max(peak, int(m.group(1)) / 1024.0) if m else peak
+                        if m:
+                            hwm[q] = max(hwm.get(q, 0.0), int(m.group(1)) / 1024.0)
                 except OSError:
                     pass
-            if time.perf_counter() - t0 > TIMEOUT:
+            loads.append(runnable_tasks(Path("/proc/loadavg").read_text()))
+            if time.perf_counter() - t0 > timeout:
                 p.kill()
                 p.wait()
-                return None, "", peak
-            time.sleep(0.02)
+                return None, "", hwm, sum(loads) / len(loads)
+            time.sleep(0.05)
         fo.seek(0)
-        return p.returncode, fo.read(), peak
+        return p.returncode, fo.read(), hwm, (sum(loads) / len(loads) if loads else 0.0)
 
 
 def number(pattern, text, default=float("nan")):
@@ -100,7 +132,30 @@ def number(pattern, text, default=float("nan")):
     return float(m.group(1)) if m else default
 
 
-def one_run(binary, deck, solver, threads, ranks):
+def parse_run(text):
+    """The numbers of one run from the program's output (summary and 'linear solver:' line)."""
+    incs = number(r"summary: (\d+) increments", text, 0)
+    total = number(r"total ([0-9.]+)", text)
+    setup = number(r"read\+setup ([0-9.]+)", text)
+    ordering = re.search(r" ordering=(.+?)(?= \w+=|\s*$)", text, re.M)
+    return {"ordering": ordering.group(1).strip() if ordering else "",
+            "status": (re.search(r"status: (\S+)", text) or [0, "failed"])[1],
+            "increments": int(incs),
+            "iterations": int(number(r"increments, (\d+) iterations", text, 0)),
+            "factorisations": int(number(r"(\d+) factorisations,", text, 0)),
+            "time_per_increment_s": (total - setup) / incs if incs else float("nan"),
+            "t_factorisation_s": number(r"factorisation ([0-9.]+)", text),
+            "cpu_s": number(r"([0-9.]+) s CPU", text), "total_s": total,
+            "nnz_factor": number(r"nnz\(factor\)=(\d+)", text),
+            "flops": number(r" flops=\s*([0-9.E+-]+)", text),
+            "est_factor_entries": number(r"est_factor_entries=(-?\d+)", text),
+            "est_flops": number(r"est_flops=\s*([0-9.E+-]+)", text),
+            "est_mb_rank": number(r"est_mb_rank=(\d+)", text),
+            "est_mb_total": number(r"est_mb_total=(\d+)", text),
+            "mumps_mb_rank": number(r" mb_rank=(\d+)", text)}
+
+
+def one_run(binary, deck, solver, threads, ranks, timeout):
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OPENBLAS_NUM_THREADS=str(threads),
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_mpi_yield_when_idle="1",
@@ -113,114 +168,111 @@ def one_run(binary, deck, solver, threads, ranks):
     cmd = [binary, str(sdeck), "-o", str(out)]
     if solver == "MUMPS":
         cmd = ["mpirun", "-np", str(ranks)] + cmd
-    rc, text, peak = run_polled(cmd, env)
-    status = "timeout" if rc is None else (re.search(r"status: (\S+)", text) or [0, "failed"])[1]
-    incs = number(r"summary: (\d+) increments", text, 0)
-    total = number(r"total ([0-9.]+)", text)
-    setup = number(r"read\+setup ([0-9.]+)", text)
-    return [status, int(incs), int(number(r"increments, (\d+) iterations", text, 0)),
-            (total - setup) / incs if incs else float("nan"),
-            number(r"factorisation ([0-9.]+)", text), round(peak, 1),
-            number(r"nnz\(factor\)=(\d+)", text), number(r"flops=\s*([0-9.E+-]+)", text),
-            number(r"est_factor_entries=(-?\d+)", text), number(r"est_flops=\s*([0-9.E+-]+)", text),
-            number(r" mb_rank=(\d+)", text)]
+    rc, text, hwm, load = run_polled(cmd, env, timeout)
+    out.unlink(missing_ok=True)
+    r = parse_run(text)
+    if rc is None:
+        r["status"] = "timeout"
+        r["note"] = f"over {timeout:.0f} s"
+    peaks = sorted(hwm.values(), reverse=True)
+    r.update(peak_mb_per_rank=round(peaks[0], 1) if peaks else float("nan"),
+             peak_mb_ranks=";".join(f"{v:.0f}" for v in peaks),
+             peak_mb_total=round(sum(peaks), 1) if peaks else float("nan"),
+             load_run=round(load, 2), load1_end=os.getloadavg()[0])
+    r["final"] = "yes" if r["load_run"] <= MAX_LOAD and r["status"] == "completed" else "no"
+    return r
 
 
-def fit(n, y):
-    """(p, a) of y ~ a n^p by least squares on log-log; None with fewer than 2 points."""
-    ok = [(a, b) for a, b in zip(n, y) if b == b and b > 0]
-    if len(ok) < 2:
-        return None
-    p, la = np.polyfit(np.log([a for a, _ in ok]), np.log([b for _, b in ok]), 1)
-    return p, float(np.exp(la))
+def parse_config(text):
+    """'MUMPS:1:2' -> ('MUMPS', 1, 2), one of CONFIGS."""
+    solver, threads, ranks = text.split(":")
+    c = (solver.upper(), int(threads), int(ranks))
+    if c not in CONFIGS:
+        raise SystemExit(f"bench_mumps: unknown configuration {text}; known: "
+                         + " ".join(f"{s}:{t}:{r}" for s, t, r in CONFIGS))
+    return c
 
 
-def fragment(rows, quick, wall):
-    L = ["## Distributed solve: MUMPS against CHOLMOD (`tools/bench_mumps.py`)", "",
-         "Q8 plane strain, half strip footing: `elastic` (linear, the steps of tools/make_default_deck.py: 6 increments) and "
-         "`dp_footing` (Drucker–Prager, geostatic stress then 300 kPa in 2 increments, full "
-         "Newton). CHOLMOD on 1 and 2 threads; MUMPS (LDL^T, distributed assembled input) on 1 "
-         "and 2 MPI ranks of 1 thread, every rank holding the whole model (doc/mpi.md). "
-         "Peak memory is per rank (resident, polled). "
-         + ("**Quick mode: 1e4 and 3e4 equations only, on a machine shared with other jobs; "
-            "the 1e5, 1e6 and 3e6 sizes need `python3 tools/bench_mumps.py` on a quiet "
-            "machine.** " if quick else "")
-         + f"Wall time {wall:.0f} s. Data: `mumps.csv`.", "",
-         "| problem | equations | solver | threads × ranks | status | time/increment [s] "
-         "| factorisation [s] | peak MB per rank | factor entries | flops (one factorisation) |",
-         "|---|---|---|---|---|---|---|---|---|---|"]
-    for r in rows:
-        L.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} × {r[4]} | {r[5]} | {r[8]:.3g} | "
-                 f"{r[9]:.3g} | {r[10]:.0f} | {r[11]:.3g} | {r[12]:.3g} |")
-    L += ["", "**Largest mesh within 20 GB per rank** (power law of peak memory per rank "
-          "fitted over the sizes run, solved for 20 GB; beyond the sizes run it is an "
-          "extrapolation):", "", "| problem | solver | threads × ranks | memory ~ N^p | "
-          "equations in 20 GB |", "|---|---|---|---|---|"]
-    for prob in sorted({r[0] for r in rows}):
-        for solver, threads, ranks in CONFIGS:
-            sel = [r for r in rows if r[0] == prob and r[2] == solver and r[3] == threads
-                   and r[4] == ranks and r[5] == "completed"]
-            # below 1e5 equations the program's fixed ~50 MB hides the growth: not fitted
-            sel = [r for r in sel if r[1] >= FIT_FROM]
-            f = fit([r[1] for r in sel], [r[10] for r in sel])
-            if f:
-                L.append(f"| {prob} | {solver} | {threads} × {ranks} | {f[0]:.2f} | "
-                         f"{(GB20_MB / f[1]) ** (1 / f[0]):.2e} |")
-            else:
-                L.append(f"| {prob} | {solver} | {threads} × {ranks} | - | not fitted: "
-                         f"needs two sizes of at least {FIT_FROM:.0e} equations |")
-    mum = [r for r in rows if r[2] == "MUMPS" and r[4] == 1 and r[5] == "completed"]
-    fe = fit([r[1] for r in mum], [r[13] for r in mum])
-    ff = fit([r[1] for r in mum], [r[14] for r in mum])
-    if fe and ff and any(r[9] > 0 for r in mum):
-        # one factorisation per iteration (full Newton): flops per second of the 1-rank runs
-        frate = float(np.median([r[14] * r[7] / r[9] for r in mum if r[9] > 0]))
-        L += ["", "**Extrapolation to 1e7–1e8 equations** (on paper, from MUMPS's own "
-              f"analysis estimates on 1 rank: factor entries ~ N^{fe[0]:.2f}, flops ~ "
-              f"N^{ff[0]:.2f}; 8 bytes per entry plus 30 % for MUMPS's work space, memory "
-              f"and flops shared evenly by the ranks; {frate:.2e} flop/s per rank as measured "
-              "here, and a parallel efficiency of 50 % on 16–64 ranks, an assumption, not a "
-              "measurement). 2D nested dissection predicts N log N fill and N^1.5 flops; the "
-              "fitted exponents are the measured ones"
-              + (" — from the quick sizes only, so indicative." if quick else ".")
-              + " The 1-rank flop rate was measured on a shared machine.", "",
-              "| equations | factor entries | flops | ranks | GB per rank | factorisation [s] |",
-              "|---|---|---|---|---|---|"]
-        for n in (1e7, 3e7, 1e8):
-            ent = fe[1] * n ** fe[0]
-            fl = ff[1] * n ** ff[0]
-            for p in (16, 64):
-                L.append(f"| {n:.0e} | {ent:.2e} | {fl:.2e} | {p} | "
-                         f"{ent * 8 * 1.3 / p / 1e9:.1f} | {fl / (p * frate * 0.5):.3g} |")
-        L += ["", "The model itself (mesh, Gauss-point states, the assembled matrix) is "
-              "replicated on every rank: at 1e7–1e8 equations it adds about the 1-rank "
-              "resident memory minus the factor to each rank, which is what a partitioned "
-              "model would remove (doc/mpi.md)."]
-    return "\n".join(L) + "\n"
+def read_rows(path):
+    """Rows of an existing CSV as dicts (numbers as floats where they parse)."""
+    if not Path(path).exists():
+        return []
+    rows = []
+    with open(path, newline="") as f:
+        for d in csv.DictReader(f):
+            row = {}
+            for k, v in d.items():
+                try:
+                    row[k] = v if k in TEXT else float(v)
+                except (TypeError, ValueError):
+                    row[k] = v if v is not None else ""
+            for k in ("equations", "threads", "ranks"):
+                row[k] = int(row[k])
+            for k in HEADER:  # a column an older version did not write
+                row.setdefault(k, "" if k in TEXT else NAN)
+            rows.append(row)
+    return rows
+
+
+def merge(old, new):
+    """old rows with those of new's keys replaced by new's, ordered by problem then size."""
+    keys = {tuple(r[k] for k in KEY) for r in new}
+    kept = [r for r in old if tuple(r[k] for k in KEY) not in keys]
+    order = {p: i for i, p in enumerate(MAKERS)}
+    conf = {c: i for i, c in enumerate(CONFIGS)}
+    return sorted(kept + new, key=lambda r: (order.get(r["problem"], 9), r["equations"],
+                                              conf.get((r["solver"], r["threads"], r["ranks"]), 9)))
+
+
+def write_rows(path, rows):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(HEADER + PROV)
+        for r in rows:
+            w.writerow([r.get(k, "") for k in HEADER + PROV])
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--quick", action="store_true", help="1e4 and 3e4 equations")
+    ap.add_argument("--sizes", type=float, nargs="+", default=None)
+    ap.add_argument("--problems", nargs="+", choices=list(MAKERS), default=list(MAKERS))
+    ap.add_argument("--configs", nargs="+", default=None, metavar="SOLVER:THREADS:RANKS",
+                    help="a subset of " + " ".join(f"{s}:{t}:{r}" for s, t, r in CONFIGS))
+    ap.add_argument("--timeout", type=float, default=1800.0)
     ap.add_argument("--pecplas", default=str(ROOT / "build" / "cmake-mpi" / "pecplas"))
     a = ap.parse_args()
     if not Path(a.pecplas).exists():
         sys.exit(f"bench_mumps: no MPI build at {a.pecplas} (make build-mpi)")
-    sizes = (1e4, 3e4) if a.quick else (1e5, 1e6, 3e6)
-    rows, t0 = [], time.perf_counter()
+    configs = CONFIGS if not a.configs else [parse_config(c) for c in a.configs]
+    sizes = sorted(a.sizes or ((1e4, 3e4) if a.quick else (1e5, 1e6, 3e6)))
+    rows = read_rows(CSV_PATH)
+    t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="pecplas-bench-mumps-") as tmp:
-        for prob, maker in (("elastic", make_elastic_deck), ("dp_footing", make_dp_deck)):
-            for target in sizes:
+        for target in sizes:
+            for prob in a.problems:
                 nx, ny = size_for(target)
                 deck = Path(tmp) / f"{prob}_{int(target)}.inp"
-                maker(nx, ny, deck)
+                MAKERS[prob](nx, ny, deck)
                 neq = equations(nx, ny)
-                for solver, threads, ranks in CONFIGS:
-                    r = one_run(a.pecplas, deck, solver, threads, ranks)
-                    rows.append([prob, neq, solver, threads, ranks] + r)
-                    print(" ".join(str(v) for v in rows[-1]), flush=True)
-    write_csv(ROOT / "doc" / "bench" / "mumps.csv", HEADER, rows)
-    write_fragment("mumps", fragment(rows, a.quick, time.perf_counter() - t0))
+                for solver, threads, ranks in configs:
+                    row = {k: "" if k in TEXT else NAN for k in HEADER}
+                    row.update(problem=prob, equations=neq, solver=solver, threads=threads,
+                               ranks=ranks)
+                    need = predicted_total_mb(rows, row)
+                    have = mem_available_mb()
+                    if need == need and need * MEMORY_MARGIN > have:
+                        row.update(status="skipped", final="no", note=(
+                            f"needs about {need / 1024:.1f} GB, {have / 1024:.1f} GB available"))
+                    else:
+                        row.update(one_run(a.pecplas, deck, solver, threads, ranks,
+                                           a.timeout))
+                    row.update(provenance())
+                    rows = merge(rows, [row])
+                    print(" ".join(str(row.get(k, "")) for k in HEADER), flush=True)
+                    write_rows(CSV_PATH, rows)
+                    write_fragment("mumps", fragment(rows, time.perf_counter() - t0))
+                deck.unlink(missing_ok=True)
 
 
 if __name__ == "__main__":

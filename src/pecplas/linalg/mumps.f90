@@ -122,17 +122,19 @@ contains
    end function mumps_name
 
    !> The common statistics, then MUMPS's own: ranks, its analysis estimates of the factor
-   !> entries (INFOG(3)), flops (RINFOG(1)) and megabytes on the largest rank (INFOG(16)),
-   !> and the megabytes used on the largest rank and on all (INFOG(21), INFOG(22)).
+   !> entries (INFOG(3)), flops (RINFOG(1)) and megabytes on the largest rank and on all
+   !> (INFOG(16), INFOG(17)), and the megabytes used on the largest rank and on all
+   !> (INFOG(21), INFOG(22)).
    function mumps_report(this) result(line)
       class(mumps_solver_t), intent(in) :: this
       character(len=:), allocatable :: line
       character(len=256) :: buf
       integer(ik8) :: entries
       entries = merge(int(this%infog(3), ik8), -1000000_ik8*this%infog(3), this%infog(3) >= 0)
-      write (buf, '(a,i0,a,i0,a,es10.3,a,i0,a,i0,a,i0)') ' ranks=', parallel_size(), &
+      write (buf, '(a,i0,a,i0,a,es10.3,a,i0,a,i0,a,i0,a,i0)') ' ranks=', parallel_size(), &
          ' est_factor_entries=', entries, ' est_flops=', this%rinfog(1), ' est_mb_rank=', &
-         this%infog(16), ' mb_rank=', this%infog(21), ' mb_total=', this%infog(22)
+         this%infog(16), ' est_mb_total=', this%infog(17), ' mb_rank=', this%infog(21), &
+         ' mb_total=', this%infog(22)
       line = solver_report(this)//trim(buf)
    end function mumps_report
 
