@@ -165,9 +165,10 @@ def extrapolation(rows):
          + (f", divided by the share of a core the run had, its CPU time over its wall time, "
             f"{share:.2f}" if share < 1 else "") + ") and the parallel efficiency on 16–64 ranks "
          f"is assumed {EFFICIENCY:.0%}, not measured. Today every rank also holds the whole "
-         f"model (mesh, Gauss-point states, assembled matrix: measured peak minus MUMPS's own "
-         f"memory, ~ N^{fm[0]:.2f}); the last column adds it, which a partitioned model would "
-         "remove (doc/mpi.md).", "",
+         f"model (mesh, Gauss-point states: measured peak minus MUMPS's own memory, "
+         f"~ N^{fm[0]:.2f}; in runs older than the division of the stiffness assembly among "
+         "the ranks, see each row's commit, also the whole assembled matrix); the last column "
+         "adds it, which a partitioned model would remove (doc/mpi.md).", "",
          "| equations | factor entries | flops | ranks | factor GB per rank | factorisation [s] "
          "| GB per rank with the whole model on each |", "|---|---|---|---|---|---|---|"]
     for neq in (1e7, 3e7, 1e8):
