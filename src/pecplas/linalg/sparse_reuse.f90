@@ -30,6 +30,9 @@ module pecplas_linalg_sparse_reuse
       !> triplets' positions it was built from, and the matrix order (-1: none).
       integer(ik4), allocatable :: eptr(:), elist(:), xrows(:), xcols(:)
       integer :: npat = -1
+      !> Entries added by the last `pattern` assembly: the element-block entries kept (as
+      !> many as add_block triplets) plus the triplets of `coo`.
+      integer :: entries = 0
    contains
       procedure :: start => builder_start
       procedure :: finish => builder_finish
@@ -149,8 +152,12 @@ contains
       integer(ik4), intent(in) :: eptr(:), elist(:)
       type(csc_t), intent(inout) :: csc
       type(error_t), allocatable, intent(out) :: error
-      integer :: nx
+      integer :: nx, b
       nx = this%coo%nnz
+      this%entries = nx
+      do b = 1, size(eptr) - 1
+         this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
+      end do
       if (same_key(this, eptr, elist, csc)) then
          csc%values = 0.0_wp
          this%fast = this%fast + 1
