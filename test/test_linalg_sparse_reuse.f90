@@ -26,7 +26,8 @@ contains
       tests = [new_unittest('fast_path_equals_full', test_fast_full), &
                new_unittest('fast_path_upper_only', test_fast_upper), &
                new_unittest('changed_sequence_falls_back', test_fallback), &
-               new_unittest('joints_after_state_change', test_joints)]
+               new_unittest('joints_after_state_change', test_joints), &
+               new_unittest('pattern_from_blocks_equals_full', test_pattern)]
    end subroutine collect_linalg_sparse_reuse
 
    !> Fills `b` (after start) with nt pseudo-random triplets of an n x n matrix, many of them
@@ -93,6 +94,53 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call fast_vs_full(.false., error)
    end subroutine test_fast_full
+
+   !> Element assembly without triplets (builder%pattern, csc%add_block, add_extra) on 30
+   !> blocks of 6 pseudo-random equations of 40 (some eliminated, = 0) and 50 extra
+   !> triplets: the same pattern and values as coo_to_csc of the triplet sequence, to the
+   !> last bit (the same sums in the same order); the same lists again keep the pattern,
+   !> one changed equation builds it anew.
+   subroutine test_pattern(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: N = 40, NB = 30, ND = 6, NX = 50
+      type(csc_builder_t) :: b, bref
+      type(csc_t) :: k, ref
+      real(wp) :: kb(ND, ND), x(NX)
+      integer :: elist(ND*NB), eptr(NB + 1), i, pass
+      elist = int((det_vector(ND*NB, 4) + 1.0_wp)/2.0_wp*(N + 3)) - 2 ! -2 .. N: some <= 0
+      elist = max(0, min(N, elist))
+      eptr = [(1 + ND*i, i=0, NB)]
+      x = det_vector(NX, 5)
+      do pass = 1, 3
+         if (pass == 3) elist(7) = 1 + mod(elist(7), N)
+         call bref%start(N, 16)
+         call b%start(N, 16)
+         do i = 1, NB
+            kb = reshape(det_vector(ND*ND, 10 + i), [ND, ND])
+            call bref%coo%add_block(elist(eptr(i):eptr(i + 1) - 1), kb)
+         end do
+         do i = 1, NX
+            call bref%coo%add(1 + mod(7*i, N), 1 + mod(3*i, N), x(i))
+            call b%coo%add(1 + mod(7*i, N), 1 + mod(3*i, N), x(i))
+         end do
+         call reference(bref, ref, error)
+         if (allocated(error)) return
+         call b%pattern(eptr, elist, k, error)
+         do i = 1, NB
+            if (allocated(error)) return
+            kb = reshape(det_vector(ND*ND, 10 + i), [ND, ND])
+            call k%add_block(elist(eptr(i):eptr(i + 1) - 1), kb, error)
+         end do
+         if (.not. allocated(error)) call b%add_extra(k, error)
+         if (allocated(error)) return
+         call check(error, same_matrix(k, ref), 'pattern assembly equals coo_to_csc exactly')
+         if (allocated(error)) return
+         call check(error, b%entries == bref%coo%nnz, 'entries counted as triplets')
+         if (allocated(error)) return
+      end do
+      call check(error, b%full == 2 .and. b%fast == 1, &
+         'the repeated lists keep the pattern, a changed one builds it again')
+   end subroutine test_pattern
 
    !> Upper-only storage: the lower triplets are dropped on entry, as coo_to_csc expects.
    subroutine test_fast_upper(error)

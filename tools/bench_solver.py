@@ -115,7 +115,7 @@ def solver(quick, threads_list=THREADS):
     write_csv(BENCH_DIR / "solver.csv", COLUMNS + EXTRA, rows)
     md = ["## Program overhead against a bare CHOLMOD solve", "",
           "Elastic plane-strain squares, one process per case. `total` is the whole program "
-          "(read + setup, assembly incl. COO→CSC, factorisation incl. analysis, solve, "
+          "(read + setup, assembly incl. the CSC pattern, factorisation incl. analysis, solve, "
           "residual, HDF5 output); `bare` is CHOLMOD analyse + factorise + solve of the same "
           "matrix in the same process, under the same thread setting (OMP_NUM_THREADS = "
           "threads). Times in seconds (wall), median of " + str(REPEATS) + " runs, spread "

@@ -3,7 +3,7 @@
 !> integration point, external forces of the load patterns. The joint
 !> elements (PECJOIN) add their blocks and forces through pecjoin_assembly.
 module pecplas_fe_assembly
-   use pecplas_kinds, only: wp
+   use pecplas_kinds, only: wp, ik4
    use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
    use pecplas_fe_dofs, only: dofs_t
@@ -27,10 +27,11 @@ contains
 
    !> Global stiffness on the free equations. `tangent`: consistent tangents stored in the
    !> state (full Newton); otherwise the elastic tangent of each material (modified Newton).
-   !> `builder` keeps the triplet storage and the scatter map between calls: `k` must be the
-   !> matrix it built last time (or empty); a repeated triplet sequence only rescatters values.
-   !> Elements run in parallel (OpenMP), each writing its triplets at an offset counted
-   !> beforehand, so the triplet sequence, hence k, is that of the serial loop.
+   !> `builder` keeps the pattern between calls: `k` must be the matrix it built last time
+   !> (or empty). The pattern comes from the element equation lists (no triplet per entry;
+   !> kept while the lists repeat); element matrices are computed in parallel (OpenMP) in
+   !> chunks and added serially in element order, then the joint blocks, so k is that of
+   !> the serial triplet sequence summed by coo_to_csc, to the last bit.
    !> `share`: only this rank's elements (pecplas_fe_share), for the ranks of an MPI run
    !> whose solver adds the parts; default: every element.
    subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error, share)
@@ -43,80 +44,117 @@ contains
       type(csc_t), intent(inout) :: k
       type(error_t), allocatable, intent(out) :: error
       type(share_t), intent(in), optional :: share
-      type(error_t), allocatable :: err
+      type(error_t), allocatable :: joint_error
       type(share_t) :: part
-      real(wp), allocatable :: ke(:, :), d(:, :, :)
-      real(wp) :: delastic(NCOMP, NCOMP)
-      integer, allocatable :: idx(:), offset(:)
-      integer :: s, e, nn, nd, nel, capacity, bad, e1, e2
+      integer(ik4), allocatable :: eptr(:), elist(:)
+      integer :: s, e, nd, nb, nl, e1, e2
 
       if (present(share)) part = share
-      capacity = 0
+      ! equation lists of this share's massif elements, set after set
+      nb = 0; nl = 0
+      do s = 1, size(rules)
+         call part%range(size(model%mesh%esets(s)%conn, 2), e1, e2)
+         nb = nb + max(e2 - e1 + 1, 0)
+         nl = nl + 2*rules(s)%nnode*max(e2 - e1 + 1, 0)
+      end do
+      allocate (eptr(nb + 1), elist(nl))
+      eptr(1) = 1; nb = 0
       do s = 1, size(rules)
          nd = 2*rules(s)%nnode
          call part%range(size(model%mesh%esets(s)%conn, 2), e1, e2)
-         capacity = capacity + nd*nd*(e2 - e1 + 1)
+         do e = e1, e2
+            nb = nb + 1
+            eptr(nb + 1) = eptr(nb) + int(nd, ik4)
+            call element_equations(dofs, model%mesh%esets(s)%conn(:, e), elist(eptr(nb):eptr(nb + 1) - 1))
+         end do
       end do
-      call builder%start(dofs%neq, capacity)
+      ! the joint blocks as triplets (few); a failure is reported after the massif's own
+      call builder%start(dofs%neq, 16)
+      call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, joint_error, part)
+      if (allocated(joint_error)) builder%coo%nnz = 0
+      call builder%pattern(eptr, elist, k, error)
+      if (allocated(joint_error)) call builder%forget()
+      if (allocated(error)) return
       do s = 1, size(rules)
-         associate (set => model%mesh%esets(s), st => state%sets(s), &
-                    mat => model%materials(model%mesh%esets(s)%material_index)%m)
-            nn = rules(s)%nnode; nd = 2*nn; nel = size(set%conn, 2)
-            call part%range(nel, e1, e2)
-            allocate (idx(nd), offset(nel + 1))
-            offset(e1) = builder%coo%nnz
-            do e = e1, e2
-               call element_equations(dofs, set%conn(:, e), idx)
-               offset(e + 1) = offset(e) + builder%coo%block_size(idx)
-            end do
-            deallocate (idx) ! private in the loop below
-            call builder%coo%reserve(offset(e2 + 1) - builder%coo%nnz)
-            if (.not. tangent) call mat%elastic_tangent(delastic)
-            bad = huge(bad)
-            !$omp parallel default(shared) private(e, ke, idx, d, err) &
+         call add_set_stiffness(model, dofs, rules(s), s, state%sets(s), tangent, part, k, error)
+         if (allocated(error)) return
+      end do
+      if (allocated(joint_error)) then
+         call move_alloc(joint_error, error)
+         return
+      end if
+      call builder%add_extra(k, error)
+   end subroutine assemble_stiffness
+
+   !> Adds the stiffness of this share's elements of massif set s to k (pattern ready):
+   !> element matrices in parallel, CHUNK elements at a time, added serially in order.
+   subroutine add_set_stiffness(model, dofs, rule, s, st, tangent, part, k, error)
+      type(model_t), intent(in) :: model
+      type(dofs_t), intent(in) :: dofs
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: s
+      type(set_state_t), intent(in) :: st
+      logical, intent(in) :: tangent
+      type(share_t), intent(in) :: part
+      type(csc_t), intent(inout) :: k
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: CHUNK = 2048
+      type(error_t), allocatable :: err
+      real(wp), allocatable :: ke(:, :, :), d(:, :, :)
+      real(wp) :: delastic(NCOMP, NCOMP)
+      integer, allocatable :: idx(:)
+      integer :: e, c0, c1, nd, bad, e1, e2
+      associate (set => model%mesh%esets(s), &
+                 mat => model%materials(model%mesh%esets(s)%material_index)%m)
+         nd = 2*rule%nnode
+         call part%range(size(set%conn, 2), e1, e2)
+         if (.not. tangent) call mat%elastic_tangent(delastic)
+         allocate (ke(nd, nd, min(CHUNK, max(e2 - e1 + 1, 1))), idx(nd))
+         bad = huge(bad)
+         do c0 = e1, e2, CHUNK
+            c1 = min(c0 + CHUNK - 1, e2)
+            !$omp parallel default(shared) private(e, d, err) &
             !$omp if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS)
-            allocate (ke(nd, nd), idx(nd), d(NCOMP, NCOMP, st%ngauss))
+            allocate (d(NCOMP, NCOMP, st%ngauss))
             if (.not. tangent) d = spread(delastic, 3, st%ngauss)
             !$omp do schedule(static)
-            do e = e1, e2
+            do e = c0, c1
                if (tangent) d = st%tangent(:, :, :, e)
-               call element_stiffness(model, rules(s), set%conn(:, e), d, ke, err)
+               call element_stiffness(model, rule, set%conn(:, e), d, ke(:, :, e - c0 + 1), err)
                if (allocated(err)) then
                   !$omp critical (pecplas_assembly_bad)
                   bad = min(bad, e)
                   !$omp end critical (pecplas_assembly_bad)
-                  cycle
                end if
-               call element_equations(dofs, set%conn(:, e), idx)
-               call builder%coo%put_block(offset(e), idx, ke)
             end do
             !$omp end do
-            deallocate (ke, idx, d)
+            deallocate (d)
             !$omp end parallel
-            builder%coo%nnz = offset(e2 + 1)
-            deallocate (offset)
-            if (bad <= nel) then
-               ! again, serially, for the message of the first failing element
-               allocate (ke(nd, nd), d(NCOMP, NCOMP, st%ngauss))
-               d = spread(delastic, 3, st%ngauss)
-               if (tangent) d = st%tangent(:, :, :, bad)
-               call element_stiffness(model, rules(s), set%conn(:, bad), d, ke, error)
-               if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
-               call element_context(error, model, s, bad)
-               return
-            end if
-         end associate
-      end do
-      call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, error, part)
-      if (allocated(error)) return
-      call builder%finish(k, error)
-   end subroutine assemble_stiffness
+            if (bad <= e2) exit
+            do e = c0, c1
+               call element_equations(dofs, set%conn(:, e), idx)
+               call k%add_block(idx, ke(:, :, e - c0 + 1), error)
+               if (allocated(error)) return
+            end do
+         end do
+         if (bad <= e2) then
+            ! again, serially, for the message of the first failing element
+            deallocate (ke)
+            allocate (ke(nd, nd, 1), d(NCOMP, NCOMP, st%ngauss))
+            d = spread(delastic, 3, st%ngauss)
+            if (tangent) d = st%tangent(:, :, :, bad)
+            call element_stiffness(model, rule, set%conn(:, bad), d, ke(:, :, 1), error)
+            if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
+            call element_context(error, model, s, bad)
+         end if
+      end associate
+   end subroutine add_set_stiffness
 
    !> Equation numbers (u1, v1, u2, v2, ...) of an element's nodes `conn`.
    pure subroutine element_equations(dofs, conn, idx)
       type(dofs_t), intent(in) :: dofs
       integer, intent(in) :: conn(:)
-      integer, intent(out) :: idx(:)
+      integer(ik4), intent(out) :: idx(:)
       idx(1::2) = dofs%eq(1, conn)
       idx(2::2) = dofs%eq(2, conn)
    end subroutine element_equations

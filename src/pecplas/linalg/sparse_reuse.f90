@@ -7,6 +7,7 @@ module pecplas_linalg_sparse_reuse
    use pecplas_kinds, only: wp, ik4
    use pecplas_error, only: error_t, fatal_error
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
+   use pecplas_linalg_sparse_pattern, only: pattern_from_blocks
    implicit none (type, external)
    private
 
@@ -22,11 +23,22 @@ module pecplas_linalg_sparse_reuse
       !> Length of the mapped sequence (-1: no map), and nnz and order of its CSC matrix.
       integer :: nmap = -1, nzmap = -1, nmat = -1
       logical :: upper = .false.
-      !> Conversions done through the map (fast) and by the full sort (full).
+      !> Conversions done through the map or a kept pattern (fast), and by the full sort or
+      !> a new pattern (full).
       integer :: fast = 0, full = 0
+      !> Key of the pattern built by `pattern`: the element equation lists and the extra
+      !> triplets' positions it was built from, and the matrix order (-1: none).
+      integer(ik4), allocatable :: eptr(:), elist(:), xrows(:), xcols(:)
+      integer :: npat = -1
+      !> Entries added by the last `pattern` assembly: the element-block entries kept (as
+      !> many as add_block triplets) plus the triplets of `coo`.
+      integer :: entries = 0
    contains
       procedure :: start => builder_start
       procedure :: finish => builder_finish
+      procedure :: pattern => builder_pattern
+      procedure :: add_extra => builder_add_extra
+      procedure :: forget => builder_forget
    end type csc_builder_t
 
 contains
@@ -127,5 +139,83 @@ contains
       this%nmat = csc%n
       this%upper = csc%upper
    end subroutine build_map
+
+   !> Element assembly without triplets: `csc` gets the pattern of the blocks
+   !> elist(eptr(b) : eptr(b+1)-1) and of the triplets in `coo` (added since `start`) with
+   !> zero values. The pattern of the previous call is kept when it was built from the same
+   !> lists and triplet positions and `csc` is still that matrix (fast); otherwise it is
+   !> built anew (full). The caller then adds the element blocks (csc%add_block) and the
+   !> triplets (add_extra) in the order of the serial triplet sequence, which gives the
+   !> values of coo_to_csc to the last bit.
+   subroutine builder_pattern(this, eptr, elist, csc, error)
+      class(csc_builder_t), intent(inout) :: this
+      integer(ik4), intent(in) :: eptr(:), elist(:)
+      type(csc_t), intent(inout) :: csc
+      type(error_t), allocatable, intent(out) :: error
+      integer :: nx, b
+      nx = this%coo%nnz
+      this%entries = nx
+      do b = 1, size(eptr) - 1
+         this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
+      end do
+      if (same_key(this, eptr, elist, csc)) then
+         csc%values = 0.0_wp
+         this%fast = this%fast + 1
+         return
+      end if
+      this%npat = -1
+      call pattern_from_blocks(this%coo%n, this%coo%upper_only, eptr, elist, this%coo, csc, &
+         error)
+      if (allocated(error)) return
+      this%eptr = eptr
+      this%elist = elist
+      this%xrows = this%coo%rows(1:nx)
+      this%xcols = this%coo%cols(1:nx)
+      this%npat = this%coo%n
+      this%full = this%full + 1
+   end subroutine builder_pattern
+
+   logical function same_key(this, eptr, elist, csc)
+      class(csc_builder_t), intent(in) :: this
+      integer(ik4), intent(in) :: eptr(:), elist(:)
+      type(csc_t), intent(in) :: csc
+      integer :: nx
+      nx = this%coo%nnz
+      same_key = .false.
+      if (this%npat /= this%coo%n .or. csc%n /= this%npat) return
+      if (.not. allocated(csc%colptr) .or. .not. allocated(csc%rowind) .or. &
+          .not. allocated(csc%values)) return
+      if (csc%upper .neqv. this%coo%upper_only) return
+      if (size(csc%values) /= csc%nnz() .or. size(csc%rowind) /= csc%nnz()) return
+      if (size(this%eptr) /= size(eptr) .or. size(this%elist) /= size(elist) .or. &
+          size(this%xrows) /= nx) return
+      if (any(this%eptr /= eptr)) return
+      if (any(this%elist /= elist)) return
+      if (any(this%xrows /= this%coo%rows(1:nx))) return
+      if (any(this%xcols /= this%coo%cols(1:nx))) return
+      same_key = .true.
+   end function same_key
+
+   !> Adds the triplets of `coo` to csc%values in their order (after the element blocks).
+   subroutine builder_add_extra(this, csc, error)
+      class(csc_builder_t), intent(in) :: this
+      type(csc_t), intent(inout) :: csc
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, q
+      do p = 1, this%coo%nnz
+         q = csc%locate(int(this%coo%rows(p)), int(this%coo%cols(p)))
+         if (q == 0) then
+            call fatal_error(error, 'csc_builder: triplet missing from the pattern')
+            return
+         end if
+         csc%values(q) = csc%values(q) + this%coo%vals(p)
+      end do
+   end subroutine builder_add_extra
+
+   !> Forgets the kept pattern (the next `pattern` builds one).
+   subroutine builder_forget(this)
+      class(csc_builder_t), intent(inout) :: this
+      this%npat = -1
+   end subroutine builder_forget
 
 end module pecplas_linalg_sparse_reuse
