@@ -1,10 +1,11 @@
 !> The two copies of a running results file, so that `kill -9` at any moment leaves a
 !> readable one. HDF5 writes its metadata in place, without a journal: a file is consistent
 !> after a flush and may not be while it is written (the library also evicts metadata
-!> between flushes). So every increment is written and flushed into one copy, that copy is
-!> published, and the increment is then written and flushed into the other:
+!> between flushes). So every increment is written and committed (copies_flush: the file
+!> closed and opened again) into one copy, that copy is published, and the increment is then
+!> written and committed into the other:
 !>
-!>     .NAME.h5.<pid>.a, .NAME.h5.<pid>.b   the two copies (HDF5 files, both open)
+!>     .NAME.h5.<pid>.a, .NAME.h5.<pid>.b   the two copies (HDF5 files, kept open)
 !>     .NAME.h5.<pid>.tmp                   another name (a hard link) of the copy published
 !>
 !> The published copy is never written: `.tmp` names, at every instant, a file flushed after
@@ -118,7 +119,7 @@ contains
       end if
    end subroutine copies_flush
 
-   !> Publishes the copy written next (flushed by the caller) as `link`, atomically, and
+   !> Publishes the copy written next (committed by the caller) as `link`, atomically, and
    !> makes the other copy the next one written.
    subroutine copies_publish(this, error)
       class(copies_t), intent(inout) :: this
