@@ -3,6 +3,7 @@
 module bench_mesh
    use pecplas_kinds, only: wp
    use pecplas_files, only: make_directories
+   use pecplas_strings, only: itoa
    implicit none (type, external)
    private
    public :: write_square_msh, write_square_deck, write_square_keywords, square_case
@@ -163,13 +164,6 @@ contains
          integer, intent(in) :: ii, jj
          node = 1 + ii + jj*(n + 1)
       end function node
-      function itoa(v) result(s)
-         integer, intent(in) :: v
-         character(len=:), allocatable :: s
-         character(len=12) :: buf
-         write (buf, '(i0)') v
-         s = trim(buf)
-      end function itoa
    end subroutine write_square_keywords
 
 end module bench_mesh

@@ -289,30 +289,26 @@ contains
       run%limit%step = istep
       run%limit%stiffness_parameter = res%sp
       message = 'limit load in step '//itoa(istep)//' ('//step%name//'): '
+      ! every kind reports the largest load traced; the plateau its start as the increment
+      run%limit%global_increment = res%peak_increment
+      run%limit%fraction = res%tau_peak
+      run%limit%pattern_factors = res%peak_factors
       if (mechanism(res)) then
          ! the path rose to here; the next states make the tangent singular
          run%limit%kind = 'mechanism'
-         run%limit%global_increment = res%peak_increment
-         run%limit%fraction = res%tau_peak
-         run%limit%pattern_factors = res%peak_factors
          message = message//'the structure becomes a mechanism at step fraction '// &
             g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'): beyond it the '// &
             'tangent with the next slip/contact states is singular and no equilibrium exists '// &
             'a little further'
       else if (res%beyond >= 2 .or. .not. res%flat) then
          run%limit%kind = 'passed'
-         run%limit%global_increment = res%peak_increment
-         run%limit%fraction = res%tau_peak
-         run%limit%pattern_factors = res%peak_factors
          message = message//'the load-displacement path has a maximum at step fraction '// &
             g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
             itoa(res%beyond)//' increments beyond it'
       else
          ! the plateau: where it began, and the largest load traced on it
          run%limit%kind = 'flat'
-         run%limit%global_increment = res%flat_increment
-         run%limit%fraction = res%tau_peak
-         run%limit%pattern_factors = res%peak_factors
+         run%limit%global_increment = res%flat_increment ! where the plateau began
          message = message//'the load-displacement path is flat (current stiffness '// &
             'parameter '//g6(res%sp)//') from step fraction '//g6(res%tau_flat)// &
             ' (increment '//itoa(res%flat_increment)//'), traced '// &
