@@ -111,3 +111,12 @@ def write_fragment(name, text):
     p = BENCH_DIR / f"{name}.md"
     p.write_text(text.rstrip() + "\n")
     return p
+
+
+def load1():
+    """1-minute load average (the machine's load at the time of a timing); nan if unknown."""
+    try:
+        with open("/proc/loadavg") as f:
+            return float(f.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return float("nan")

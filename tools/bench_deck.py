@@ -20,19 +20,11 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment  # noqa: E402
+from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1  # noqa: E402
 
 REPEATS = 3
 COLUMNS = ["n", "equations", "keyword_read_s", "mesh_read_s", "ratio", "elastic_run_s",
            "keyword_share_pct", "repeats", "load1"]
-
-
-def load1():
-    try:
-        with open("/proc/loadavg") as f:
-            return float(f.read().split()[0])
-    except OSError:
-        return float("nan")
 
 
 def run_case(exe, args):

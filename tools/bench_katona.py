@@ -27,7 +27,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_common import (BENCH_DIR, ROOT, executable, provenance, run_timed,  # noqa: E402
-                          write_csv, write_fragment)
+                          write_csv, write_fragment, load1)
 
 HEADER = ["case", "law", "method", "equations", "status", "increments", "requested",
           "iterations", "factorisations", "state_iterations", "state_max", "wall_s",
@@ -41,13 +41,6 @@ SOLVER = {"katona": None, "newton": "METHOD=NEWTON",
 SADDLE = ["n", "m", "fact", "solve", "g", "column", "an", "fa", "load1", "error"]
 LABEL = {"katona": "Katona", "newton": "Mohr–Coulomb penalty, full Newton",
          "modified": "Mohr–Coulomb penalty, modified Newton alone"}
-
-
-def load1():
-    try:
-        return float(Path("/proc/loadavg").read_text().split()[0])
-    except OSError:
-        return float("nan")
 
 
 def set_solver(text, method):

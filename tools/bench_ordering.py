@@ -28,7 +28,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment  # noqa
+from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1  # noqa
 
 COLUMNS = ["element", "n", "equations", "ordering", "used", "nnz_L", "flops",
            "analyse_s", "analyse_min_s", "analyse_max_s", "factorise_s", "factorise_min_s",
@@ -38,13 +38,6 @@ LARGE = [("Q4", 707), ("Q8", 408)]
 # at 1e6 each ordering costs minutes of repeats: AMD, CHOLMOD's default (AMD then METIS on
 # the equation graph) and the rule (AMD then METIS on the graph of nodes) only
 LARGE_ORDERINGS = "AMD,DEFAULT,RULE"
-
-
-def load1():
-    try:
-        return float(Path("/proc/loadavg").read_text().split()[0])
-    except OSError:
-        return float("nan")
 
 
 def measure(exe, cases, orderings, repeats, tmp):

@@ -22,7 +22,7 @@ import re
 import statistics
 import tempfile
 
-from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment
+from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1
 
 COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
            "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",
@@ -32,15 +32,6 @@ EXTRA = ["threads", "repeats", "load1", "total_min_s", "total_max_s", "bare_min_
          "bare_max_s", "ratio_min", "ratio_max"]
 REPEATS = 3
 THREADS = (1, 2)
-
-
-def load1():
-    """1-minute load average (machine load at the time of a timing)."""
-    try:
-        with open("/proc/loadavg") as f:
-            return float(f.read().split()[0])
-    except OSError:
-        return float("nan")
 
 
 def median_row(runs, threads, load):
