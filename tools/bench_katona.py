@@ -26,7 +26,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import (BENCH_DIR, ROOT, executable, provenance, run_timed,  # noqa: E402
+from bench_common import (BENCH_DIR, ROOT, executable, run_timed,  # noqa: E402
                           write_csv, write_fragment, load1)
 
 HEADER = ["case", "law", "method", "equations", "status", "increments", "requested",
