@@ -83,7 +83,10 @@ contains
       if (allocated(error)) return
       call read_deck(deck(), model, e)
       if (mumps_available()) then
-         call check(error, .not. allocated(e), 'MPI build reads LINEAR=MUMPS')
+         if (allocated(e)) then
+            call check(error, .false., 'MPI build reads LINEAR=MUMPS, got: '//e%text())
+            return
+         end if
          if (allocated(error)) return
          call check(error, model%solver%linear == 'MUMPS', 'LINEAR=MUMPS kept')
          return
