@@ -61,17 +61,12 @@ program tester
    use test_fe_share, only: collect_fe_share
    use test_linalg_cholmod_ordering, only: collect_linalg_cholmod_ordering
    use test_io_deck_mesh_lines, only: collect_io_deck_mesh_lines
-   use pecplas_parallel, only: parallel_init, parallel_finalize
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
    integer :: i, npass, nfail, nargs
    logical :: found
 
-   ! MPI build under mpirun: MPI started first, as by the program, so that every test sees
-   ! its own rank (a test's per-rank file names were the same on every rank before MUMPS
-   ! started MPI); nothing in the serial build.
-   call parallel_init()
    ! One line per suite (appending keeps merges of new suites conflict-free).
    allocate (suites(0))
    suites = [suites, new_testsuite('model_params', collect_model_params)]
@@ -151,7 +146,6 @@ program tester
       end do
       error stop 2
    end if
-   call parallel_finalize()
    write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
    if (nfail > 0) error stop 1
 end program tester

@@ -13,7 +13,7 @@ module test_linalg_mumps
    use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver, mumps_available
    use pecplas_model, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_files, only: make_directories
+   use pecplas_files, only: make_directories, process_id, remove_file
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_linalg, only: convection_diffusion, elastic_square, det_vector, &
       SUPPORT_NONE, SUPPORT_FIXED
@@ -36,11 +36,13 @@ contains
                new_unittest('summed_parts', test_summed_parts)]
    end subroutine collect_linalg_mumps
 
-   !> This rank's copy of the deck (ranks of `mpirun -np 2` would otherwise write one file).
+   !> This process's copy of the deck (ranks of `mpirun -np 2` would otherwise write one
+   !> file). Named by process id, not rank: this test may run before MUMPS has started MPI,
+   !> when every rank is still rank 0.
    function deck() result(path)
       character(len=:), allocatable :: path
       character(len=16) :: buf
-      write (buf, '(a,i0)') '_r', parallel_rank()
+      write (buf, '(a,i0)') '_p', process_id()
       path = DECK_STEM//trim(buf)//'.inp'
    end function deck
 
@@ -82,6 +84,7 @@ contains
       call write_deck(at, error)
       if (allocated(error)) return
       call read_deck(deck(), model, e)
+      call remove_file(deck()) ! one file per process id: not left behind
       if (mumps_available()) then
          if (allocated(e)) then
             call check(error, .false., 'MPI build reads LINEAR=MUMPS, got: '//e%text())
