@@ -68,7 +68,7 @@ contains
       type(problem_t), intent(out) :: problem
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: d(NCOMP, NCOMP)
-      integer :: s, nel, ng, nst, nnode, npat
+      integer :: s, nel, ng, nst, nnode, npat, e, g
 
       nnode = model%mesh%nnode()
       allocate (problem%elems(size(model%mesh%esets)), problem%rules(size(model%mesh%esets)))
@@ -88,9 +88,17 @@ contains
             allocate (st%hist(nst, ng, nel), source=0.0_wp)
             allocate (st%stress_trial, st%strain_trial, source=st%stress)
             allocate (st%hist_trial, source=st%hist)
-            allocate (st%tangent(NCOMP, NCOMP, ng, nel))
-            call model%materials(model%mesh%esets(s)%material_index)%m%elastic_tangent(d)
-            st%tangent = spread(spread(d, 3, ng), 4, nel)
+            associate (mat => model%materials(model%mesh%esets(s)%material_index)%m)
+               if (.not. mat%constant_tangent()) then
+                  call mat%elastic_tangent(d)
+                  allocate (st%tangent(NCOMP, NCOMP, ng, nel))
+                  do e = 1, nel
+                     do g = 1, ng
+                        st%tangent(:, :, g, e) = d
+                     end do
+                  end do
+               end if
+            end associate
          end associate
       end do
       problem%separate_tangent = model%solver%method /= 'NEWTON'

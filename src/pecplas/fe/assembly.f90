@@ -104,11 +104,14 @@ contains
       real(wp) :: delastic(NCOMP, NCOMP)
       integer, allocatable :: idx(:)
       integer :: e, c0, c1, nd, bad, e1, e2
+      logical :: stored
       associate (set => model%mesh%esets(s), &
                  mat => model%materials(model%mesh%esets(s)%material_index)%m)
          nd = 2*rule%nnode
          call part%range(size(set%conn, 2), e1, e2)
-         if (.not. tangent) call mat%elastic_tangent(delastic)
+         ! the points' own tangents, or the elastic one (asked for, or the material's only)
+         stored = tangent .and. allocated(st%tangent)
+         if (.not. stored) call mat%elastic_tangent(delastic)
          allocate (ke(nd, nd, min(CHUNK, max(e2 - e1 + 1, 1))), idx(nd))
          bad = huge(bad)
          do c0 = e1, e2, CHUNK
@@ -116,10 +119,10 @@ contains
             !$omp parallel default(shared) private(e, d, err) &
             !$omp if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS)
             allocate (d(NCOMP, NCOMP, st%ngauss))
-            if (.not. tangent) d = spread(delastic, 3, st%ngauss)
+            if (.not. stored) d = spread(delastic, 3, st%ngauss)
             !$omp do schedule(static)
             do e = c0, c1
-               if (tangent) d = st%tangent(:, :, :, e)
+               if (stored) d = st%tangent(:, :, :, e)
                call element_stiffness(model, rule, set%conn(:, e), d, ke(:, :, e - c0 + 1), err)
                if (allocated(err)) then
                   !$omp critical (pecplas_assembly_bad)
@@ -141,8 +144,11 @@ contains
             ! again, serially, for the message of the first failing element
             deallocate (ke)
             allocate (ke(nd, nd, 1), d(NCOMP, NCOMP, st%ngauss))
-            d = spread(delastic, 3, st%ngauss)
-            if (tangent) d = st%tangent(:, :, :, bad)
+            if (stored) then
+               d = st%tangent(:, :, :, bad)
+            else
+               d = spread(delastic, 3, st%ngauss)
+            end if
             call element_stiffness(model, rule, set%conn(:, bad), d, ke(:, :, 1), error)
             if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
             call element_context(error, model, s, bad)
@@ -245,6 +251,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(massif_point_t) :: pt
       real(wp) :: xe(2, rule%nnode), ue(2*rule%nnode), eps(NCOMP), deps(NCOMP), t0
+      real(wp) :: dpoint(NCOMP, NCOMP)
       integer :: g, nd
       associate (conn => model%mesh%esets(s)%conn(:, e), &
                  mat => model%materials(model%mesh%esets(s)%material_index)%m)
@@ -261,8 +268,13 @@ contains
             deps = eps - st%strain(:, g, e)
             st%hist_trial(:, g, e) = st%hist(:, g, e)
             if (timed) t0 = wall_time()
-            call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
-               st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
+            if (allocated(st%tangent)) then
+               call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                  st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
+            else
+               call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                  st%stress_trial(:, g, e), dpoint, error)
+            end if
             if (timed) tlaw = tlaw + (wall_time() - t0)
             if (allocated(error)) return
             st%strain_trial(:, g, e) = eps

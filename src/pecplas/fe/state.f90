@@ -16,7 +16,9 @@ module pecplas_fe_state
       real(wp), allocatable :: xi(:, :), w(:)
       real(wp), allocatable :: stress(:, :, :), strain(:, :, :), hist(:, :, :)
       real(wp), allocatable :: stress_trial(:, :, :), strain_trial(:, :, :), hist_trial(:, :, :)
-      !> Consistent tangent at each point from the last trial update (4, 4, ngauss, nel).
+      !> Consistent tangent at each point from the last trial update (4, 4, ngauss, nel);
+      !> not allocated when the set's material has a constant tangent (linear elastic: its
+      !> elastic tangent is used, 16 values per point less to store and stream).
       real(wp), allocatable :: tangent(:, :, :, :)
    end type set_state_t
 

@@ -27,9 +27,11 @@ module pecplas_io_results_restart
       real(wp), allocatable :: v(:)
    end type restart_item_t
 
-   !> The named arrays of one restart state, in writing order.
+   !> The named arrays of one restart state, in writing order: items(1:n) (the array grows
+   !> by doubling, its items moved, not copied).
    type :: restart_data_t
       type(restart_item_t), allocatable :: items(:)
+      integer :: n = 0
    contains
       procedure :: add => data_add
       procedure :: get => data_get
@@ -42,11 +44,20 @@ contains
       class(restart_data_t), intent(inout) :: this
       character(len=*), intent(in) :: name
       real(wp), intent(in) :: v(:)
-      type(restart_item_t) :: item
-      if (.not. allocated(this%items)) allocate (this%items(0))
-      item%name = name
-      item%v = v
-      this%items = [this%items, item]
+      type(restart_item_t), allocatable :: grown(:)
+      integer :: i
+      if (.not. allocated(this%items)) allocate (this%items(16))
+      if (this%n == size(this%items)) then
+         allocate (grown(2*this%n))
+         do i = 1, this%n
+            call move_alloc(this%items(i)%name, grown(i)%name)
+            call move_alloc(this%items(i)%v, grown(i)%v)
+         end do
+         call move_alloc(grown, this%items)
+      end if
+      this%n = this%n + 1
+      this%items(this%n)%name = name
+      this%items(this%n)%v = v
    end subroutine data_add
 
    !> The array `name` of `n` values; an error naming it when absent or of another size.
@@ -59,7 +70,7 @@ contains
       integer :: i
       character(len=24) :: a, b
       if (allocated(this%items)) then
-         do i = 1, size(this%items)
+         do i = 1, this%n
             if (this%items(i)%name /= name) cycle
             if (size(this%items(i)%v) /= n) then
                write (a, '(i0)') size(this%items(i)%v)
@@ -92,7 +103,7 @@ contains
          call h5_group(file, NEXT, g, error)
          if (allocated(error)) return
       end if
-      do i = 1, size(data%items)
+      do i = 1, data%n
          call overwrite(g, data%items(i)%name, data%items(i)%v, error)
          if (allocated(error)) exit
       end do

@@ -15,6 +15,7 @@ module pecplas_massif_materials_elastic
       procedure :: nstate => elastic_nstate
       procedure :: elastic_tangent => elastic_elastic_tangent
       procedure :: update => elastic_update
+      procedure :: constant_tangent => elastic_constant_tangent
    end type elastic_t
 
 contains
@@ -68,6 +69,11 @@ contains
       tangent(3, 3) = lam + 2.0_wp*mu
       tangent(4, 4) = mu
    end subroutine elastic_elastic_tangent
+
+   pure logical function elastic_constant_tangent(this)
+      class(elastic_t), intent(in) :: this
+      elastic_constant_tangent = .true.
+   end function elastic_constant_tangent
 
    subroutine elastic_update(this, stress_old, dstrain, state, stress, tangent, error)
       class(elastic_t), intent(in) :: this

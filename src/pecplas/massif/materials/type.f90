@@ -28,6 +28,9 @@ module pecplas_massif_materials_type
       !> False when the consistent tangent can be non-symmetric (non-associated flow):
       !> full Newton then factorises with UMFPACK instead of CHOLMOD.
       procedure :: symmetric_tangent => material_symmetric_tangent
+      !> True when every update's tangent is the elastic tangent (a linear material): the
+      !> solver then keeps no tangent per integration point.
+      procedure :: constant_tangent => material_constant_tangent
       !> Names of the history variables (results file `state_names`); none by default.
       procedure :: state_names => material_state_names
    end type material_t
@@ -66,6 +69,11 @@ contains
       class(material_t), intent(in) :: this
       material_symmetric_tangent = .true.
    end function material_symmetric_tangent
+
+   pure logical function material_constant_tangent(this)
+      class(material_t), intent(in) :: this
+      material_constant_tangent = .false.
+   end function material_constant_tangent
 
    pure subroutine material_state_names(this, names)
       class(material_t), intent(in) :: this
