@@ -11,6 +11,7 @@ module pecplas_driver_timers
       real(wp) :: residual = 0.0_wp, output = 0.0_wp, setup = 0.0_wp
       !> Part of `residual` spent in the constitutive updates (stress integration at the
       !> massif Gauss points and the joint force routine, whose cost is its law updates).
+      !> The updates of linear elastic sets are not timed (a clock read costs more).
       real(wp) :: laws = 0.0_wp
       !> MUMPS runs (doc/mpi.md): this rank's stiffness assembly time (wall, CPU), and the
       !> smallest and largest over the ranks (updated at each assembly; zero otherwise).

@@ -113,8 +113,9 @@ module pecplas_linalg_cholmod
       end function
    end interface
 
-   !> Supernodal LL', ordering by the shim's rule (CHOLMOD's default strategy below 50 000
-   !> equations, METIS on the graph of nodes from there). Only the upper triangle of the CSC
+   !> Supernodal LL', ordering by the shim's rule (cholmod_shim.c: AMD, and METIS on the graph
+   !> of nodes when AMD leaves many flops per entry of L, at the analysis or at the second
+   !> factorisation; doc/theory.md §5). Only the upper triangle of the CSC
    !> matrix is read. Do not copy a solver that holds a factor (the handle would be shared).
    type, extends(linear_solver_t) :: cholmod_solver_t
       type(c_ptr), private :: handle = c_null_ptr
@@ -206,6 +207,13 @@ contains
       status = pecplas_cholmod_factorise(this%handle, a%n, a%colptr, a%rowind, a%values)
       this%n_factorisations = this%n_factorisations + 1
       this%peak_memory = max(this%peak_memory, pecplas_cholmod_peak_memory(this%handle))
+      ! the shim's rule may have ordered the pattern anew at this factorisation
+      if (ordering_name(pecplas_cholmod_ordering(this%handle)) /= this%ordering) then
+         this%n_analyses = this%n_analyses + 1
+         this%ordering = ordering_name(pecplas_cholmod_ordering(this%handle))
+         this%nnz_factor = int(pecplas_cholmod_lnz(this%handle), ik8)
+         this%flops = pecplas_cholmod_flops(this%handle)
+      end if
       if (status == CHOLMOD_NOT_POSDEF) then
          call diagnose_not_posdef(this, a, diag, error)
          return

@@ -32,6 +32,8 @@ typedef struct {
     cholmod_dense *X, *Y, *E; /* solve workspaces kept between solves */
     int ordering;             /* requested ordering, see the enum above */
     int nodes_metis;          /* the last analysis used metis_on_nodes */
+    int nd_pending;           /* the rule tries METIS at the second factorisation */
+    long nfact;               /* numeric factorisations since the last analysis */
 } pecplas_cholmod;
 
 /* Header over caller-owned CSC arrays (values may be NULL for a pattern). */
@@ -164,42 +166,58 @@ static cholmod_factor *analyse_with(pecplas_cholmod *h, cholmod_sparse *a, int o
 }
 
 /* AMD's flops per entry of L from which nested dissection is tried too: the test CHOLMOD's
- * default strategy uses (it then runs METIS on the equation graph). */
+ * default strategy uses (it then runs METIS on the equation graph). From ND_NOW on, the
+ * gain is large enough to pay for METIS within one factorisation (2-D Q8 blocks at 1e6
+ * equations: 1100 flops per entry, METIS halves the flops); between the two it is ~10 %
+ * (Q4 blocks: 550-650), which pays only over several factorisations. */
 #define PECPLAS_ND_FLOPS_PER_ENTRY 500.0
+#define PECPLAS_ND_NOW_FLOPS_PER_ENTRY 1000.0
+
+/* METIS on the graph of nodes for the analysed pattern `a`; kept when it has fewer flops
+ * than the current analysis (AMD), which stays otherwise. */
+static void try_nested_dissection(pecplas_cholmod *h, cholmod_sparse *a) {
+    double fl = h->c.fl, lnz = h->c.lnz;
+    int *perm = malloc(sizeof(int) * a->nrow);
+    cholmod_factor *nd = perm ? analyse_with(h, a, PECPLAS_ORDER_METIS_NODES, perm) : NULL;
+    if (nd && h->nodes_metis && h->c.fl < fl) {
+        cholmod_free_factor(&h->L, &h->c);
+        h->L = nd;
+    } else { /* AMD stays */
+        cholmod_free_factor(&nd, &h->c);
+        h->nodes_metis = 0;
+        h->c.fl = fl;
+        h->c.lnz = lnz;
+        h->c.status = CHOLMOD_OK;
+    }
+    free(perm);
+}
 
 /* Symbolic analysis (ordering + supernodes) of the pattern; replaces any earlier one.
- * The project's rule: AMD, the fastest ordering; when it leaves PECPLAS_ND_FLOPS_PER_ENTRY or
- * more flops per entry of L (2-D blocks from about 5e5 equations), also METIS on the graph of
- * nodes, and the ordering with the smaller flop count is kept. CHOLMOD's default strategy
- * makes the same test but runs METIS on the equation graph, which at 1e6 equations takes
- * two to three times longer, and keeps the smaller nnz(L) (doc/bench/ordering.md). */
+ * The project's rule: AMD, the fastest ordering; when it leaves PECPLAS_ND_NOW_FLOPS_PER_ENTRY
+ * or more flops per entry of L, also METIS on the graph of nodes at once, and the ordering
+ * with the smaller flop count is kept; from PECPLAS_ND_FLOPS_PER_ENTRY on, the same test is
+ * made at the second numeric factorisation of the pattern (a run that factorises once, such
+ * as a linear one, does not pay for METIS). CHOLMOD's default strategy makes the 500 test at
+ * once but runs METIS on the equation graph, which at 1e6 equations takes two to three
+ * times longer, and keeps the smaller nnz(L) (doc/bench/ordering.md). */
 int pecplas_cholmod_analyse(void *handle, int n, const int *colptr, const int *rowind) {
     pecplas_cholmod *h = handle;
     cholmod_sparse a = wrap(n, colptr, rowind, NULL);
     int *perm = NULL;
     cholmod_free_factor(&h->L, &h->c);
+    h->nd_pending = 0;
+    h->nfact = 0;
     if (h->ordering != PECPLAS_ORDER_RULE) {
         if (h->ordering == PECPLAS_ORDER_METIS_NODES) perm = malloc(sizeof(int) * (size_t)n);
         h->L = analyse_with(h, &a, h->ordering, perm);
+        free(perm);
     } else {
         h->L = analyse_with(h, &a, CHOLMOD_AMD, NULL);
-        if (h->L && h->c.fl >= PECPLAS_ND_FLOPS_PER_ENTRY * h->c.lnz) {
-            double fl = h->c.fl, lnz = h->c.lnz;
-            perm = malloc(sizeof(int) * (size_t)n);
-            cholmod_factor *nd = perm ? analyse_with(h, &a, PECPLAS_ORDER_METIS_NODES, perm) : NULL;
-            if (nd && h->nodes_metis && h->c.fl < fl) {
-                cholmod_free_factor(&h->L, &h->c);
-                h->L = nd;
-            } else { /* AMD stays */
-                cholmod_free_factor(&nd, &h->c);
-                h->nodes_metis = 0;
-                h->c.fl = fl;
-                h->c.lnz = lnz;
-                h->c.status = CHOLMOD_OK;
-            }
-        }
+        if (h->L && h->c.fl >= PECPLAS_ND_NOW_FLOPS_PER_ENTRY * h->c.lnz)
+            try_nested_dissection(h, &a);
+        else if (h->L && h->c.fl >= PECPLAS_ND_FLOPS_PER_ENTRY * h->c.lnz)
+            h->nd_pending = 1;
     }
-    free(perm);
     return h->L ? h->c.status : (h->c.status < 0 ? h->c.status : CHOLMOD_INVALID);
 }
 
@@ -210,6 +228,12 @@ int pecplas_cholmod_factorise(void *handle, int n, const int *colptr, const int 
     pecplas_cholmod *h = handle;
     if (!h->L) return CHOLMOD_INVALID;
     cholmod_sparse a = wrap(n, colptr, rowind, x);
+    if (h->nd_pending && h->nfact >= 1) { /* the rule's deferred test, see above */
+        cholmod_sparse pattern = wrap(n, colptr, rowind, NULL);
+        h->nd_pending = 0;
+        try_nested_dissection(h, &pattern);
+    }
+    h->nfact++;
 #ifdef _OPENMP
     /* CHOLMOD 3.x asks for a fixed team, num_threads(CHOLMOD_OMP_NUM_THREADS = 4), in its
      * supernodal factorisation whatever OMP_NUM_THREADS says; on fewer cores that
