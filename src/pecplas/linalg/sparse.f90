@@ -310,22 +310,47 @@ contains
 
    !> Re-assembly on a fixed pattern: values(idx(r), idx(c)) += kblock(r, c), skipping
    !> idx <= 0 (and the lower triangle when only the upper one is stored). An entry missing
-   !> from the pattern is an error (the pattern was built from other connectivity).
+   !> from the pattern is an error (the pattern was built from other connectivity). The
+   !> block's rows are sorted once; each column is then walked along with them (rows are
+   !> sorted in a CSC column) instead of searching every entry.
    subroutine csc_add_block(this, idx, kblock, error)
       class(csc_t), intent(inout) :: this
       integer, intent(in) :: idx(:)
       real(wp), intent(in) :: kblock(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer :: r, c, p
+      integer :: order(size(idx)), nr, r, c, p, hi, k, row
       character(len=64) :: buf
+      nr = 0
+      do r = 1, size(idx)
+         if (idx(r) <= 0) cycle
+         nr = nr + 1
+         k = nr
+         do while (k > 1)
+            if (idx(order(k - 1)) <= idx(r)) exit
+            order(k) = order(k - 1)
+            k = k - 1
+         end do
+         order(k) = r
+      end do
       do c = 1, size(idx)
          if (idx(c) <= 0) cycle
-         do r = 1, size(idx)
-            if (idx(r) <= 0) cycle
-            if (this%upper .and. idx(r) > idx(c)) cycle
-            p = this%locate(idx(r), idx(c))
+         p = this%colptr(idx(c)) + 1
+         hi = this%colptr(idx(c) + 1)
+         do k = 1, nr
+            r = order(k)
+            row = idx(r)
+            if (this%upper .and. row > idx(c)) exit
+            do while (p < hi)
+               if (this%rowind(p) + 1 >= row) exit
+               p = p + 1
+            end do
+            if (p > hi) then
+               p = 0
+            else if (this%rowind(p) + 1 /= row) then
+               p = 0
+            end if
             if (p == 0) then
-               write (buf, '(a,i0,a,i0,a)') '(', idx(r), ',', idx(c), ')'
+               write (buf, '(a,i0,a,i0,a)') '(', row, ',', idx(c), ')'
                call fatal_error(error, 'csc add_block: entry '//trim(buf)//' not in the pattern')
                return
             end if

@@ -25,7 +25,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(massif_point_t) :: pt
       real(wp) :: db(4, 2*MAX_NODES), bt(2*MAX_NODES, 4)
-      integer :: ig, j, ndof
+      integer :: ig, j, ndof, last
+      logical :: sym
       ndof = 2*rule%nnode
       call check_shapes(rule, xe, ndof, size(ke, 1), 'massif_stiffness', error)
       if (allocated(error)) return
@@ -33,6 +34,12 @@ contains
          call fatal_error(error, 'massif_stiffness: ke must be (ndof, ndof), d (4, 4, ngauss)')
          return
       end if
+      ! symmetric point tangents (elastic, associated plasticity) give a symmetric ke: its
+      ! upper triangle is computed and mirrored, half the products
+      sym = .true.
+      do ig = 1, rule%ngauss
+         sym = sym .and. all(d(:, :, ig) == transpose(d(:, :, ig)))
+      end do
       ke = 0.0_wp
       do ig = 1, rule%ngauss
          call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
@@ -42,10 +49,16 @@ contains
          ! the four products are summed in the order of dot_product(b(:, i), db(:, j))
          bt(1:ndof, :) = transpose(pt%b(:, 1:ndof))
          do j = 1, ndof
-            ke(1:ndof, j) = ke(1:ndof, j) + (bt(1:ndof, 1)*db(1, j) + bt(1:ndof, 2)*db(2, j) &
-                                             + bt(1:ndof, 3)*db(3, j) + bt(1:ndof, 4)*db(4, j))
+            last = merge(j, ndof, sym)
+            ke(1:last, j) = ke(1:last, j) + (bt(1:last, 1)*db(1, j) + bt(1:last, 2)*db(2, j) &
+                                             + bt(1:last, 3)*db(3, j) + bt(1:last, 4)*db(4, j))
          end do
       end do
+      if (sym) then
+         do j = 1, ndof - 1
+            ke(j + 1:ndof, j) = ke(j, j + 1:ndof)
+         end do
+      end if
    end subroutine massif_stiffness
 
    !> fe(2*nnode) = sum_g B^T sigma_g dvol for stresses sigma(4, ngauss).
