@@ -11,6 +11,7 @@ module test_linalg_sparse_reuse
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_sparse, only: csc_t, coo_to_csc
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
+   use pecplas_linalg_threads, only: thread_setting_t, apply_threads, openmp_threads
    use pecplas_testing, only: unittest_t, new_unittest, check
    use fixtures_linalg, only: det_vector
    implicit none (type, external)
@@ -27,7 +28,8 @@ contains
                new_unittest('fast_path_upper_only', test_fast_upper), &
                new_unittest('changed_sequence_falls_back', test_fallback), &
                new_unittest('joints_after_state_change', test_joints), &
-               new_unittest('pattern_from_blocks_equals_full', test_pattern)]
+               new_unittest('pattern_from_blocks_equals_full', test_pattern), &
+               new_unittest('pattern_from_blocks_threads', test_pattern_threads)]
    end subroutine collect_linalg_sparse_reuse
 
    !> Fills `b` (after start) with nt pseudo-random triplets of an n x n matrix, many of them
@@ -141,6 +143,46 @@ contains
       call check(error, b%full == 2 .and. b%fast == 1, &
          'the repeated lists keep the pattern, a changed one builds it again')
    end subroutine test_pattern
+
+   !> A pattern large enough for its columns to be shared among threads (30 000 equations,
+   !> 20 000 blocks of 6, upper storage): built on 1 and on 2 threads, both equal the
+   !> conversion of the same triplets entry for entry (each column is built by one thread, in
+   !> the same way whichever it is).
+   subroutine test_pattern_threads(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: N = 30000, NB = 20000, ND = 6
+      type(csc_builder_t) :: b, bref
+      type(csc_t) :: k, ref
+      type(thread_setting_t) :: setting
+      real(wp) :: zero(ND, ND)
+      integer, allocatable :: elist(:), eptr(:)
+      integer :: i, nthreads, before
+      character(len=40) :: msg
+      before = openmp_threads()
+      zero = 0.0_wp
+      elist = int((det_vector(ND*NB, 4) + 1.0_wp)/2.0_wp*(N + 3)) - 2
+      elist = max(0, min(N, elist))
+      eptr = [(1 + ND*i, i=0, NB)]
+      call bref%start(N, 16, upper_only=.true.)
+      do i = 1, NB
+         call bref%coo%add_block(elist(eptr(i):eptr(i + 1) - 1), zero)
+      end do
+      call reference(bref, ref, error)
+      if (allocated(error)) return
+      do nthreads = 1, 2
+         setting%n = nthreads
+         call apply_threads(setting)
+         call b%start(N, 16, upper_only=.true.)
+         call b%pattern(eptr, elist, k, error)
+         if (allocated(error)) exit
+         write (msg, '(a,i0,a)') 'pattern on ', nthreads, ' thread(s) equals coo_to_csc'
+         call check(error, k%upper .and. all(k%colptr == ref%colptr) .and. &
+            all(k%rowind == ref%rowind), trim(msg))
+         if (allocated(error)) exit
+      end do
+      setting%n = before
+      call apply_threads(setting)
+   end subroutine test_pattern_threads
 
    !> Upper-only storage: the lower triplets are dropped on entry, as coo_to_csc expects.
    subroutine test_fast_upper(error)

@@ -13,6 +13,9 @@ module pecplas_linalg_sparse_pattern
 
    public :: pattern_from_blocks
 
+   !> Fewer equations than this: one thread (the team costs more than it saves).
+   integer, parameter :: PARALLEL_MIN = 20000
+
 contains
 
    !> csc (n x n, values zero) with an entry (i, j) for every pair of equations i, j > 0 of
@@ -26,7 +29,7 @@ contains
       type(csc_t), intent(out) :: csc
       type(error_t), allocatable, intent(out) :: error
       integer(ik4), allocatable :: iptr(:), inc(:), xptr(:), xrow(:), mark(:), cnt(:)
-      integer :: nb, b, p, j, k, nx, pass, q
+      integer :: nb, b, p, j, k, nx, pass, q, i
       nb = size(eptr) - 1
       nx = extra%nnz
       if (any(elist > n)) then
@@ -72,22 +75,34 @@ contains
          cnt(j) = cnt(j) + 1
       end do
       ! pass 1 counts the rows of each column, pass 2 writes them; mark(i) = j: row i is in
-      ! column j already
+      ! column j already. Columns are independent: threads share them, each with its marks.
       csc%n = n
       csc%upper = upper
-      allocate (mark(n), csc%colptr(n + 1))
+      allocate (csc%colptr(n + 1))
       do pass = 1, 2
+         !$omp parallel default(shared) private(mark, j, q, k, b, p, i) if (n >= PARALLEL_MIN)
+         allocate (mark(n))
          mark = 0
+         !$omp do schedule(static)
          do j = 1, n
             q = 0
             do k = iptr(j), iptr(j + 1) - 1
                b = inc(k)
                do p = eptr(b), eptr(b + 1) - 1
-                  call visit(elist(p))
+                  i = elist(p)
+                  if (i <= 0) cycle
+                  if (mark(i) == j .or. (upper .and. i > j)) cycle
+                  mark(i) = int(j, ik4)
+                  q = q + 1
+                  if (pass == 2) csc%rowind(csc%colptr(j) + q) = i
                end do
             end do
             do k = xptr(j), xptr(j + 1) - 1
-               call visit(xrow(k))
+               i = xrow(k)
+               if (mark(i) == j .or. (upper .and. i > j)) cycle
+               mark(i) = int(j, ik4)
+               q = q + 1
+               if (pass == 2) csc%rowind(csc%colptr(j) + q) = i
             end do
             if (pass == 1) then
                cnt(j) = int(q, ik4)
@@ -95,6 +110,9 @@ contains
                call sort_rows(csc%rowind(csc%colptr(j) + 1:csc%colptr(j + 1)))
             end if
          end do
+         !$omp end do
+         deallocate (mark)
+         !$omp end parallel
          if (pass == 1) then
             csc%colptr(1) = 0
             do j = 1, n
@@ -105,16 +123,6 @@ contains
       end do
       csc%rowind = csc%rowind - 1_ik4
       allocate (csc%values(csc%colptr(n + 1)), source=0.0_wp)
-   contains
-      subroutine visit(i)
-         integer(ik4), intent(in) :: i
-         if (i <= 0) return
-         if (mark(i) == j) return
-         if (upper .and. i > j) return
-         mark(i) = int(j, ik4)
-         q = q + 1
-         if (pass == 2) csc%rowind(csc%colptr(j) + q) = i
-      end subroutine visit
    end subroutine pattern_from_blocks
 
    !> Ascending order of a short list of distinct rows (insertion sort: some tens of rows).
