@@ -333,23 +333,31 @@ contains
       character(len=*), intent(in) :: output
       character(len=:), allocatable :: input
       character(len=*), parameter :: MARK = '** ---- file: '
-      integer :: start, eol
+      integer :: start, eol, k
       input = ''
       if (.not. allocated(model%deck_text)) return
       associate (text => model%deck_text)
+         ! from one marker line to the next (a deck of 1e6 nodes has 1.5e6 lines, few markers)
          start = 1
-         do while (start <= len(text))
+         if (text(1:min(len(text), len(MARK))) /= MARK) start = marker_after(1)
+         do while (start > 0)
             eol = index(text(start:), new_line('a'))
             if (eol == 0) eol = len(text) - start + 2
-            if (text(start:min(len(text), start + len(MARK) - 1)) == MARK) then
-               if (same_file(text(start + len(MARK):start + eol - 2), output)) then
-                  input = text(start + len(MARK):start + eol - 2)
-                  return
-               end if
+            if (same_file(text(start + len(MARK):start + eol - 2), output)) then
+               input = text(start + len(MARK):start + eol - 2)
+               return
             end if
-            start = start + eol
+            start = marker_after(start + eol - 1)
          end do
       end associate
+   contains
+      !> Start of the first marker line after position `from` of the deck text (0: none).
+      integer function marker_after(from)
+         integer, intent(in) :: from
+         k = index(model%deck_text(from:), new_line('a')//MARK)
+         marker_after = 0
+         if (k > 0) marker_after = from + k
+      end function marker_after
    end function input_named
 
    subroutine banner(model, problem, deck, outfile)
