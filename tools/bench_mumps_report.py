@@ -45,9 +45,11 @@ def predicted_total_mb(rows, run):
         return float("nan")
     big = [r for r in sel if r["equations"] >= FIT_FROM]
     f = fit([r["equations"] for r in big], [r["peak_mb_total"] for r in big])
-    if f and f[0] > 0:
-        return f[1] * run["equations"] ** max(f[0], 1.0)
     last = max(sel, key=lambda r: r["equations"])
+    if f and f[0] > 0:
+        # from the largest size run, with the fitted exponent but never below 1 (the
+        # coefficient of a fit with a smaller exponent would not go with exponent 1)
+        return last["peak_mb_total"] * (run["equations"] / last["equations"]) ** max(f[0], 1.0)
     return last["peak_mb_total"] * (run["equations"] / last["equations"]) ** GROWTH
 
 

@@ -38,6 +38,16 @@ def test_memory_of_the_next_size_follows_the_fitted_power_law():
     assert need == pytest.approx(2e-3 * 1e6**1.1, rel=1e-8)
 
 
+def test_memory_prediction_below_linear_growth_scales_the_largest_size_linearly():
+    # measured DP footing, CHOLMOD 2 threads: 389.5 MB at 99 372, 2944.7 MB at 1 002 252
+    # (N^0.88); the prediction at 3e6 is the largest size scaled linearly (8.6 GB), not the
+    # fit's coefficient with exponent 1 (which said 48 GB and skipped a run that fits)
+    rows = [row(99372, mb=389.5), row(1002252, mb=2944.7)]
+    run = {"problem": "elastic", "equations": 3e6, "solver": "MUMPS", "threads": 1, "ranks": 1}
+    need = rep.predicted_total_mb(rows, run)
+    assert need == pytest.approx(2944.7 * 3e6 / 1002252, rel=1e-12)
+
+
 def test_memory_prediction_from_one_size_or_none():
     run = {"problem": "elastic", "equations": 1e6, "solver": "MUMPS", "threads": 1, "ranks": 1}
     # one smaller size: scaled by (N / N0)^1.2 (GROWTH), a cautious exponent above 2D fill
