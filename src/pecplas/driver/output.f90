@@ -20,8 +20,9 @@ contains
    !> Writes one converged increment; fields only every `output%every` increments and at the
    !> end of each step, the history row and the restart data (/restart) always.
    !> `how` = (method, line searches, control) of the increment (see the history columns).
+   !> `final`: the run certainly ends after this increment (results_file_t%write_increment).
    subroutine write_increment(model, problem, results, istep, inc, time, iters, residual, &
-         cpu, reaction, last_of_step, how, error)
+         cpu, reaction, last_of_step, how, error, final)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       type(results_file_t), intent(inout) :: results
@@ -30,6 +31,7 @@ contains
       real(wp), intent(in) :: reaction(:, :)
       logical, intent(in) :: last_of_step
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: final
       type(increment_result_t) :: r
       integer :: s
 
@@ -59,7 +61,7 @@ contains
          if (allocated(error)) return
       end if
       ! with the state to restart from, replaced at every converged increment
-      call results%write_increment(r, error, pack_restart(problem))
+      call results%write_increment(r, error, pack_restart(problem), final)
    end subroutine write_increment
 
    !> Error indicators of the massif and joint elements with the fields.

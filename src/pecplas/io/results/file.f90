@@ -19,6 +19,10 @@
 !> is flushed into both copies, and the published one is never written: a run killed at any
 !> moment leaves a `.tmp` file flushed after its last whole increment, whose status is
 !> still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> The final increment of a run (write_increment with `final`) goes into the copy not
+!> published only, which `finish` then completes and renames onto the target: a kill
+!> between that write and the rename (the time of one increment's write) leaves the `.tmp`
+!> one increment behind, still whole; `free` publishes the copy with the final increment.
 !> The sidecar is rewritten whole (through a staging file and a rename) at most once a
 !> second and at most 5 % of the time, and at the end: its cost stays linear in the number
 !> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
@@ -77,6 +81,8 @@ module pecplas_io_results_file
       !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
       character(len=:), allocatable :: failure
       logical :: broken = .false.
+      !> The final increment is written (into the copy not published): no more increments.
+      logical :: ended = .false.
       !> Detached: every write does nothing (the ranks above 0 of an MPI run; rank 0 writes).
       logical, public :: detached = .false.
       !> Size of a copy after the last increment and what that increment added.
@@ -149,6 +155,7 @@ contains
       this%xmf_count = -1
       this%nwrite = 0
       this%broken = .false.
+      this%ended = .false.
       this%bytes = 0
       this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
@@ -406,16 +413,29 @@ contains
    !> values and wrong shapes before writing anything. A failed write (disk full,
    !> permissions) is also kept as `write_failure`.
    !> `restart`: the state to restart from, written in the same flush as the increment.
-   subroutine results_write_increment(this, inc, error, restart)
+   !> `final`: the last increment of the run (`finish` follows): written into the copy not
+   !> published only, which `finish` renames onto the target (half the writing); the
+   !> published `.tmp` keeps the increment before until then. No increment may follow.
+   subroutine results_write_increment(this, inc, error, restart, final)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
+      logical, intent(in), optional :: final
+      logical :: last
       if (this%detached) return
       if (.not. this%is_open()) then
          call fatal_error(error, 'results file is not open')
          return
       end if
+      if (this%ended) then
+         call fatal_error(error, 'results file: increment '//itoa(inc%global_increment)// &
+            ' written after the final one (write_increment with final = .true. must be '// &
+            'the last increment; finish comes next)')
+         return
+      end if
+      last = .false.
+      if (present(final)) last = final
       call check_increment(inc, this%layout, this%ngauss, this%npattern, this%strains, error)
       if (allocated(error)) return
       if (inc%write_fields) then
@@ -429,7 +449,7 @@ contains
          if (.not. allocated(this%failure)) this%failure = error%text()
          return
       end if
-      call write_checked(this, inc, error, restart)
+      call write_checked(this, inc, last, error, restart)
       if (allocated(error)) then
          this%broken = .true.
          if (.not. allocated(this%failure)) this%failure = error%text()
@@ -453,10 +473,13 @@ contains
    !> The writing part of write_increment: the copy written next gets the increment and is
    !> flushed and published, then the other one (no longer published) gets it too. A copy
    !> is written only while the other one is published, so the published copy is always
-   !> one flushed after a whole increment.
-   subroutine write_checked(this, inc, error, restart)
+   !> one flushed after a whole increment. `final`: the copy written next only, flushed and
+   !> not published (`finish` renames it, `free` publishes it); the running sidecar, which
+   !> names the published copy, is left without the increment.
+   subroutine write_checked(this, inc, final, error, restart)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
+      logical, intent(in) :: final
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
       integer(int64) :: nbytes
@@ -464,16 +487,18 @@ contains
       do i = 1, 2
          call write_copy(this, this%copies%id('next'), inc, error, restart)
          if (.not. allocated(error)) call this%copies%flush(error)
-         if (allocated(error)) return
+         if (allocated(error) .or. final) exit
          if (i == 1) call this%copies%publish(error)
          if (allocated(error)) return
       end do
+      if (allocated(error)) return
       if (inc%write_fields) then
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
       end if
       this%nrows = this%nrows + 1
-      call commit(this, .false., error)
+      this%ended = final
+      if (.not. final) call commit(this, .false., error)
       if (allocated(error)) return
       inquire (file=this%copies%name('next'), size=nbytes)
       if (nbytes > 0) then
@@ -634,7 +659,8 @@ contains
    !> Closes the file without touching its status: a run stopped without `finish` keeps
    !> status 'running' and complete = 0, under its temporary name, next to an XDMF sidecar
    !> (also temporary) that lists every increment written. The copy not published, unless
-   !> a write into it failed, is closed and published in turn, then the other one goes.
+   !> a write into it failed, is closed and published in turn, then the other one goes
+   !> (after a final increment, that copy alone holds it).
    subroutine results_free(this)
       class(results_file_t), intent(inout) :: this
       type(error_t), allocatable :: error
