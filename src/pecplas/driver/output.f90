@@ -61,7 +61,7 @@ contains
          if (allocated(error)) return
       end if
       ! with the state to restart from, replaced at every converged increment
-      call results%write_increment(r, error, pack_restart(problem), final)
+      call results%write_increment(r, error, pack_restart(problem, r%write_fields), final)
    end subroutine write_increment
 
    !> Error indicators of the massif and joint elements with the fields.

@@ -41,9 +41,10 @@ module pecplas_io_results_file
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
       joint_points_t, limit_point_t
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
-      h5_history_dataset, safe_name, h5_write, h5_describe
+      h5_history_dataset, safe_name, h5_write, h5_describe, h5_exists, increment_group
    use pecplas_io_results_mesh, only: write_mesh
-   use pecplas_io_results_restart, only: restart_data_t, write_restart_next, swap_restart
+   use pecplas_io_results_restart, only: restart_data_t, restart_item_t, swap_restart, &
+      restart_next_open, restart_put, restart_link
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
       write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
@@ -507,18 +508,13 @@ contains
       end if
    end subroutine write_checked
 
-   !> One increment into the copy `file` (not flushed): restart state, fields, history row.
+   !> One increment into the copy `file` (not flushed): fields, restart state, history row.
    subroutine write_copy(this, file, inc, error, restart)
       class(results_file_t), intent(in) :: this
       integer(hid_t), intent(in) :: file
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
-      if (present(restart)) then
-         call write_restart_next(file, restart, error)
-         if (.not. allocated(error)) call swap_restart(file, error)
-         if (allocated(error)) return
-      end if
       if (inc%write_fields) then
          call write_fields(file, inc, this%layout, this%strains, this%units, error)
          if (allocated(error)) return
@@ -526,8 +522,92 @@ contains
             inc%joint_fields, this%joints, this%units, error)
          if (allocated(error)) return
       end if
+      if (present(restart)) then
+         ! after the fields: the items given by reference are links to them
+         call write_restart(this, file, inc, restart, error)
+         if (.not. allocated(error)) call swap_restart(file, error)
+         if (allocated(error)) return
+      end if
       call write_history_row(file, this%nrows + 1, inc, error)
    end subroutine write_copy
+
+   !> The restart state as /restart_next of `file`: its values, and for an item given by
+   !> reference to a field of `inc`, a hard link to that field's dataset when written in
+   !> this increment, else the field's values (written unscaled, as the fields are).
+   subroutine write_restart(this, file, inc, restart, error)
+      class(results_file_t), intent(in) :: this
+      integer(hid_t), intent(in) :: file
+      type(increment_result_t), intent(in) :: inc
+      type(restart_data_t), intent(in) :: restart
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: g
+      integer :: i
+      call restart_next_open(file, g, error)
+      if (allocated(error)) return
+      do i = 1, restart%n
+         associate (item => restart%items(i))
+            if (allocated(item%v)) then
+               call restart_put(g, item%name, size(item%v), item%v, error)
+            else
+               call put_field(this, file, g, inc, item, error)
+            end if
+         end associate
+         if (allocated(error)) exit
+      end do
+      call h5_close_group(g)
+   end subroutine write_restart
+
+   !> A restart item given by reference to a field of `inc` (see restart_item_t).
+   subroutine put_field(this, file, g, inc, item, error)
+      class(results_file_t), intent(in) :: this
+      integer(hid_t), intent(in) :: file, g
+      type(increment_result_t), intent(in) :: inc
+      type(restart_item_t), intent(in) :: item
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: path
+      logical :: have
+      have = inc%write_fields
+      if (have .and. item%field /= 'displacement') have = item%set >= 1 .and. &
+         item%set <= size(this%layout%sets) .and. allocated(inc%set_fields)
+      if (.not. have) then
+         call fatal_error(error, 'restart item '//item%name//' refers to the field '// &
+            item%field//' of increment '//itoa(inc%global_increment)//', which has none')
+         return
+      end if
+      path = increment_group(inc%global_increment)//'/'//item%field
+      if (item%field /= 'displacement') path = increment_group(inc%global_increment)// &
+         '/sets/'//this%layout%sets(item%set)%name//'/'//item%field
+      if (h5_exists(file, path)) then
+         call restart_link(file, g, item%name, path, error)
+         return
+      end if
+      ! a field not written (e.g. *OUTPUT without stresses): its values
+      if (item%field == 'displacement') then
+         call restart_put(g, item%name, size(inc%displacement), inc%displacement, error)
+         return
+      end if
+      associate (f => inc%set_fields(item%set))
+         select case (item%field)
+         case ('stress')
+            if (allocated(f%stress)) &
+               call restart_put(g, item%name, size(f%stress), f%stress, error)
+            have = allocated(f%stress)
+         case ('strain')
+            if (allocated(f%strain)) &
+               call restart_put(g, item%name, size(f%strain), f%strain, error)
+            have = allocated(f%strain)
+         case ('state')
+            if (allocated(f%state)) &
+               call restart_put(g, item%name, size(f%state), f%state, error)
+            have = allocated(f%state)
+         case default
+            have = .false.
+         end select
+      end associate
+      if (.not. have .and. .not. allocated(error)) call fatal_error(error, 'restart item '// &
+         item%name//' refers to the field '//item%field//' of set '//itoa(item%set)// &
+         ', which increment '//itoa(inc%global_increment)//' does not hold')
+   end subroutine put_field
 
    !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
    subroutine test_hook(this, error)
