@@ -184,8 +184,9 @@ def test_plastic_restart_links_copies_and_values_agree(tmp_path):
     of fields not written (no stresses or strains in the fields): the three restarts end
     with the same displacements to 1e-12 of their largest (the same state restored, the same
     arithmetic), and within 1e-6 of the uninterrupted run's (its Newton tolerance is 1e-4
-    on the residual and a restarted increment starts its iterations from another
-    predictor, so only the tolerance binds there)."""
+    on the residual, and the first iteration of a restarted run solves with the stiffness
+    factorised at set-up, elastic, not the last plastic tangent: doc/results.md, so only the
+    tolerance binds there; 2e-7 measured)."""
     ends = {}
     for output, expect in [("*OUTPUT, EVERY=1", {"u", "stress_1", "strain_1", "hist_1"}),
                            ("*OUTPUT, EVERY=2", set()),
