@@ -17,6 +17,7 @@ program tester
    use test_massif_patch, only: collect_massif_patch
    use test_massif_edge_load, only: collect_massif_edge_load
    use test_io_results, only: collect_io_results
+   use test_io_results_final, only: collect_io_results_final
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
    use test_linalg_solvers, only: collect_linalg_solvers
@@ -83,6 +84,7 @@ program tester
    suites = [suites, new_testsuite('massif_patch', collect_massif_patch)]
    suites = [suites, new_testsuite('massif_edge_load', collect_massif_edge_load)]
    suites = [suites, new_testsuite('io_results', collect_io_results)]
+   suites = [suites, new_testsuite('io_results_final', collect_io_results_final)]
    suites = [suites, new_testsuite('linalg_sparse', collect_linalg_sparse)]
    suites = [suites, new_testsuite('linalg_sparse_reuse', collect_linalg_sparse_reuse)]
    suites = [suites, new_testsuite('linalg_solvers', collect_linalg_solvers)]

@@ -186,9 +186,11 @@ contains
             if (landed) time = real(istep, wp)
             call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
                0.0_wp, f0, fint)
+            ! landing on the target of the last step ends the run (END_TARGET below, and a
+            ! load-control probe ends its step there): that increment is written once
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
                reaction, istep, inc_in_step, time, landed, merge(0, 1, landed .or. .not. att%arc), &
-               error)
+               error, landed .and. istep == size(model%steps))
             if (allocated(error)) return
             ! the load's maximum along the path, and whether it is flat
             if (tau > res%tau_peak) then

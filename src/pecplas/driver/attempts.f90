@@ -163,8 +163,10 @@ contains
 
    !> Commits a converged increment at step fraction out%tau, writes it and prints its line.
    !> `time` is the pseudo-time of the results file; `control` 0 load, 1 arc-length.
+   !> `final`: the run certainly ends after this increment (written once, see
+   !> results_file_t%write_increment).
    subroutine accept_increment(model, problem, results, run, att, out, method, u, fint, &
-         reaction, istep, inc, time, last, control, error)
+         reaction, istep, inc, time, last, control, error, final)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(results_file_t), intent(inout) :: results
@@ -175,6 +177,7 @@ contains
       real(wp), intent(in) :: u(:, :), fint(:, :), reaction(:, :), time
       logical, intent(in) :: last
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: final
       real(wp) :: t_now, t_out
       character(len=:), allocatable :: how
       problem%increments = problem%increments + 1
@@ -189,7 +192,7 @@ contains
       t_out = wall_time()
       call write_increment(model, problem, results, istep, inc, time, out%iterations, &
          out%residual, t_now - run%cpu_start, reaction, last, &
-         [method, out%line_searches, control], error)
+         [method, out%line_searches, control], error, final)
       problem%time%output = problem%time%output + (wall_time() - t_out)
       if (allocated(error)) return
       if (run%quiet) return

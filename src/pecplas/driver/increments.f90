@@ -185,9 +185,10 @@ contains
             ! restart data written with the increment
             call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
                level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint)
+            ! the end of the last step ends the run: that increment is written once
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
                reaction, istep, inc, real(istep - 1, wp) + tau, tau >= 1.0_wp - 1.0e-12_wp, 0, &
-               error)
+               error, tau >= 1.0_wp - 1.0e-12_wp .and. istep == size(model%steps))
             if (allocated(error)) return
             if (interrupted(model, problem, istep, tau, status, message)) return
             if (level > 0) then

@@ -24,8 +24,13 @@ module pecplas_driver_restart
 contains
 
    !> The restart data of the last converged increment (problem%position must be recorded).
-   function pack_restart(problem) result(data)
+   !> `fields`: the increment is written with its fields, filled from this same state
+   !> (pecplas_driver_output): the displacements and the massif's stresses, strains and
+   !> histories are then given by reference to them (the results file links its datasets)
+   !> instead of copied.
+   function pack_restart(problem, fields) result(data)
       type(problem_t), intent(in) :: problem
+      logical, intent(in) :: fields
       type(restart_data_t) :: data
       integer :: s
       associate (p => problem%position, st => problem%state, kt => problem%katona)
@@ -35,12 +40,22 @@ contains
             kt%max_penetration])
          call data%add('f0', p%f0)
          call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
-         call data%add('u', reshape(st%u, [size(st%u)]))
+         if (fields) then
+            call data%add_field('u', 'displacement', 0)
+         else
+            call data%add('u', reshape(st%u, [size(st%u)]))
+         end if
          call data%add('factors', st%factors)
          do s = 1, size(st%sets)
-            call data%add('stress_'//itoa(s), flat3(st%sets(s)%stress))
-            call data%add('strain_'//itoa(s), flat3(st%sets(s)%strain))
-            call data%add('hist_'//itoa(s), flat3(st%sets(s)%hist))
+            if (fields) then
+               call data%add_field('stress_'//itoa(s), 'stress', s)
+               call data%add_field('strain_'//itoa(s), 'strain', s)
+               call data%add_field('hist_'//itoa(s), 'state', s)
+            else
+               call data%add('stress_'//itoa(s), flat3(st%sets(s)%stress))
+               call data%add('strain_'//itoa(s), flat3(st%sets(s)%strain))
+               call data%add('hist_'//itoa(s), flat3(st%sets(s)%hist))
+            end if
          end do
          if (allocated(st%joints%sets)) then
             do s = 1, size(st%joints%sets)

@@ -11,7 +11,8 @@
 !> The published copy is never written: `.tmp` names, at every instant, a file flushed after
 !> a whole increment, the newest one. Publishing is a link made under a staging name
 !> (`.NAME.h5.<pid>.new`) and renamed onto `.tmp`, both atomic; where the file system has
-!> no hard links a symbolic link is used. The cost: every increment is written twice.
+!> no hard links a symbolic link is used. The cost: every increment is written twice, except
+!> a run's final one, written into the copy not published only (pecplas_io_results_file).
 module pecplas_io_results_copies
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fopen_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F
    use pecplas_error, only: error_t, fatal_error

@@ -247,8 +247,18 @@ contains
    pure function stress_mean(stress) result(mean)
       real(wp), intent(in) :: stress(:, :, :)
       real(wp), allocatable :: mean(:, :)
-      ! dividing first keeps the mean of finite stresses finite (the sum may overflow)
-      mean = sum(stress/real(size(stress, 2), wp), dim=2)
+      real(wp) :: n
+      integer :: e, ip
+      ! dividing first keeps the mean of finite stresses finite (the sum may overflow); a
+      ! loop, not sum(stress/n, dim=2), which makes a temporary of the size of stress
+      n = real(size(stress, 2), wp)
+      allocate (mean(size(stress, 1), size(stress, 3)))
+      do e = 1, size(stress, 3)
+         mean(:, e) = 0.0_wp
+         do ip = 1, size(stress, 2)
+            mean(:, e) = mean(:, e) + stress(:, ip, e)/n
+         end do
+      end do
    end function stress_mean
 
    !> (2, n) -> (3, n) with a zero third row.

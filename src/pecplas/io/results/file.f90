@@ -19,6 +19,10 @@
 !> is flushed into both copies, and the published one is never written: a run killed at any
 !> moment leaves a `.tmp` file flushed after its last whole increment, whose status is
 !> still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> The final increment of a run (write_increment with `final`) goes into the copy not
+!> published only, which `finish` then completes and renames onto the target: a kill
+!> between that write and the rename (the time of one increment's write) leaves the `.tmp`
+!> one increment behind, still whole; `free` publishes the copy with the final increment.
 !> The sidecar is rewritten whole (through a staging file and a rename) at most once a
 !> second and at most 5 % of the time, and at the end: its cost stays linear in the number
 !> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
@@ -37,9 +41,10 @@ module pecplas_io_results_file
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
       joint_points_t, limit_point_t
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
-      h5_history_dataset, safe_name, h5_write, h5_describe
+      h5_history_dataset, safe_name, h5_write, h5_describe, h5_exists, increment_group
    use pecplas_io_results_mesh, only: write_mesh
-   use pecplas_io_results_restart, only: restart_data_t, write_restart_next, swap_restart
+   use pecplas_io_results_restart, only: restart_data_t, restart_item_t, swap_restart, &
+      restart_next_open, restart_put, restart_link
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
       write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
@@ -77,6 +82,8 @@ module pecplas_io_results_file
       !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
       character(len=:), allocatable :: failure
       logical :: broken = .false.
+      !> The final increment is written (into the copy not published): no more increments.
+      logical :: ended = .false.
       !> Detached: every write does nothing (the ranks above 0 of an MPI run; rank 0 writes).
       logical, public :: detached = .false.
       !> Size of a copy after the last increment and what that increment added.
@@ -149,6 +156,7 @@ contains
       this%xmf_count = -1
       this%nwrite = 0
       this%broken = .false.
+      this%ended = .false.
       this%bytes = 0
       this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
@@ -406,16 +414,29 @@ contains
    !> values and wrong shapes before writing anything. A failed write (disk full,
    !> permissions) is also kept as `write_failure`.
    !> `restart`: the state to restart from, written in the same flush as the increment.
-   subroutine results_write_increment(this, inc, error, restart)
+   !> `final`: the last increment of the run (`finish` follows): written into the copy not
+   !> published only, which `finish` renames onto the target (half the writing); the
+   !> published `.tmp` keeps the increment before until then. No increment may follow.
+   subroutine results_write_increment(this, inc, error, restart, final)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
+      logical, intent(in), optional :: final
+      logical :: last
       if (this%detached) return
       if (.not. this%is_open()) then
          call fatal_error(error, 'results file is not open')
          return
       end if
+      if (this%ended) then
+         call fatal_error(error, 'results file: increment '//itoa(inc%global_increment)// &
+            ' written after the final one (write_increment with final = .true. must be '// &
+            'the last increment; finish comes next)')
+         return
+      end if
+      last = .false.
+      if (present(final)) last = final
       call check_increment(inc, this%layout, this%ngauss, this%npattern, this%strains, error)
       if (allocated(error)) return
       if (inc%write_fields) then
@@ -429,7 +450,7 @@ contains
          if (.not. allocated(this%failure)) this%failure = error%text()
          return
       end if
-      call write_checked(this, inc, error, restart)
+      call write_checked(this, inc, last, error, restart)
       if (allocated(error)) then
          this%broken = .true.
          if (.not. allocated(this%failure)) this%failure = error%text()
@@ -453,10 +474,13 @@ contains
    !> The writing part of write_increment: the copy written next gets the increment and is
    !> flushed and published, then the other one (no longer published) gets it too. A copy
    !> is written only while the other one is published, so the published copy is always
-   !> one flushed after a whole increment.
-   subroutine write_checked(this, inc, error, restart)
+   !> one flushed after a whole increment. `final`: the copy written next only, flushed and
+   !> not published (`finish` renames it, `free` publishes it); the running sidecar, which
+   !> names the published copy, is left without the increment.
+   subroutine write_checked(this, inc, final, error, restart)
       class(results_file_t), intent(inout) :: this
       type(increment_result_t), intent(in) :: inc
+      logical, intent(in) :: final
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
       integer(int64) :: nbytes
@@ -464,16 +488,18 @@ contains
       do i = 1, 2
          call write_copy(this, this%copies%id('next'), inc, error, restart)
          if (.not. allocated(error)) call this%copies%flush(error)
-         if (allocated(error)) return
+         if (allocated(error) .or. final) exit
          if (i == 1) call this%copies%publish(error)
          if (allocated(error)) return
       end do
+      if (allocated(error)) return
       if (inc%write_fields) then
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
       end if
       this%nrows = this%nrows + 1
-      call commit(this, .false., error)
+      this%ended = final
+      if (.not. final) call commit(this, .false., error)
       if (allocated(error)) return
       inquire (file=this%copies%name('next'), size=nbytes)
       if (nbytes > 0) then
@@ -482,18 +508,13 @@ contains
       end if
    end subroutine write_checked
 
-   !> One increment into the copy `file` (not flushed): restart state, fields, history row.
+   !> One increment into the copy `file` (not flushed): fields, restart state, history row.
    subroutine write_copy(this, file, inc, error, restart)
       class(results_file_t), intent(in) :: this
       integer(hid_t), intent(in) :: file
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
-      if (present(restart)) then
-         call write_restart_next(file, restart, error)
-         if (.not. allocated(error)) call swap_restart(file, error)
-         if (allocated(error)) return
-      end if
       if (inc%write_fields) then
          call write_fields(file, inc, this%layout, this%strains, this%units, error)
          if (allocated(error)) return
@@ -501,8 +522,92 @@ contains
             inc%joint_fields, this%joints, this%units, error)
          if (allocated(error)) return
       end if
+      if (present(restart)) then
+         ! after the fields: the items given by reference are links to them
+         call write_restart(this, file, inc, restart, error)
+         if (.not. allocated(error)) call swap_restart(file, error)
+         if (allocated(error)) return
+      end if
       call write_history_row(file, this%nrows + 1, inc, error)
    end subroutine write_copy
+
+   !> The restart state as /restart_next of `file`: its values, and for an item given by
+   !> reference to a field of `inc`, a hard link to that field's dataset when written in
+   !> this increment, else the field's values (written unscaled, as the fields are).
+   subroutine write_restart(this, file, inc, restart, error)
+      class(results_file_t), intent(in) :: this
+      integer(hid_t), intent(in) :: file
+      type(increment_result_t), intent(in) :: inc
+      type(restart_data_t), intent(in) :: restart
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: g
+      integer :: i
+      call restart_next_open(file, g, error)
+      if (allocated(error)) return
+      do i = 1, restart%n
+         associate (item => restart%items(i))
+            if (allocated(item%v)) then
+               call restart_put(g, item%name, size(item%v), item%v, error)
+            else
+               call put_field(this, file, g, inc, item, error)
+            end if
+         end associate
+         if (allocated(error)) exit
+      end do
+      call h5_close_group(g)
+   end subroutine write_restart
+
+   !> A restart item given by reference to a field of `inc` (see restart_item_t).
+   subroutine put_field(this, file, g, inc, item, error)
+      class(results_file_t), intent(in) :: this
+      integer(hid_t), intent(in) :: file, g
+      type(increment_result_t), intent(in) :: inc
+      type(restart_item_t), intent(in) :: item
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: path
+      logical :: have
+      have = inc%write_fields
+      if (have .and. item%field /= 'displacement') have = item%set >= 1 .and. &
+         item%set <= size(this%layout%sets) .and. allocated(inc%set_fields)
+      if (.not. have) then
+         call fatal_error(error, 'restart item '//item%name//' refers to the field '// &
+            item%field//' of increment '//itoa(inc%global_increment)//', which has none')
+         return
+      end if
+      path = increment_group(inc%global_increment)//'/'//item%field
+      if (item%field /= 'displacement') path = increment_group(inc%global_increment)// &
+         '/sets/'//this%layout%sets(item%set)%name//'/'//item%field
+      if (h5_exists(file, path)) then
+         call restart_link(file, g, item%name, path, error)
+         return
+      end if
+      ! a field not written (e.g. *OUTPUT without stresses): its values
+      if (item%field == 'displacement') then
+         call restart_put(g, item%name, size(inc%displacement), inc%displacement, error)
+         return
+      end if
+      associate (f => inc%set_fields(item%set))
+         select case (item%field)
+         case ('stress')
+            if (allocated(f%stress)) &
+               call restart_put(g, item%name, size(f%stress), f%stress, error)
+            have = allocated(f%stress)
+         case ('strain')
+            if (allocated(f%strain)) &
+               call restart_put(g, item%name, size(f%strain), f%strain, error)
+            have = allocated(f%strain)
+         case ('state')
+            if (allocated(f%state)) &
+               call restart_put(g, item%name, size(f%state), f%state, error)
+            have = allocated(f%state)
+         case default
+            have = .false.
+         end select
+      end associate
+      if (.not. have .and. .not. allocated(error)) call fatal_error(error, 'restart item '// &
+         item%name//' refers to the field '//item%field//' of set '//itoa(item%set)// &
+         ', which increment '//itoa(inc%global_increment)//' does not hold')
+   end subroutine put_field
 
    !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
    subroutine test_hook(this, error)
@@ -634,7 +739,8 @@ contains
    !> Closes the file without touching its status: a run stopped without `finish` keeps
    !> status 'running' and complete = 0, under its temporary name, next to an XDMF sidecar
    !> (also temporary) that lists every increment written. The copy not published, unless
-   !> a write into it failed, is closed and published in turn, then the other one goes.
+   !> a write into it failed, is closed and published in turn, then the other one goes
+   !> (after a final increment, that copy alone holds it).
    subroutine results_free(this)
       class(results_file_t), intent(inout) :: this
       type(error_t), allocatable :: error

@@ -16,14 +16,14 @@ module pecplas_io_results_h5
       h5awrite_f, h5aclose_f, h5tcopy_f, h5tset_cset_f, h5tclose_f, h5pcreate_f, &
       h5pset_chunk_f, h5pclose_f, h5eset_auto_f, H5T_STRING, H5T_CSET_UTF8_F, H5T_IEEE_F64LE, H5T_STD_I32LE, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
-      H5P_DATASET_CREATE_F, h5oopen_f, h5oclose_f
+      H5P_DATASET_CREATE_F, h5oopen_f, h5oclose_f, h5lexists_f
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    implicit none (type, external)
    private
 
    public :: h5_init, h5_group, h5_close_group, h5_write, h5_attr, h5_history_dataset, h5_append
-   public :: safe_name, increment_group, h5_describe, h5_object_attr
+   public :: safe_name, increment_group, h5_describe, h5_object_attr, h5_exists
 
    !> Rows per chunk of the extendible history datasets.
    integer(hsize_t), parameter :: HISTORY_CHUNK = 64
@@ -89,6 +89,25 @@ contains
       end if
       path = '/increments/'//trim(buf)
    end function increment_group
+
+   !> True when every link of `path` (relative to `loc`, or absolute) exists: h5lexists_f
+   !> alone fails when a parent is missing.
+   logical function h5_exists(loc, path) result(found)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: path
+      integer :: i, err
+      found = .false.
+      do i = 2, len(path) + 1
+         if (i <= len(path)) then
+            if (path(i:i) /= '/') cycle
+         end if
+         call h5lexists_f(loc, path(:i - 1), found, err)
+         if (err /= 0 .or. .not. found) then
+            found = .false.
+            return
+         end if
+      end do
+   end function h5_exists
 
    !> Creates group `name` under `loc` and returns its id (close with h5_close_group).
    subroutine h5_group(loc, name, gid, error)

@@ -32,6 +32,9 @@ module pecplas_io_results_reader
       procedure, private :: read_real_1, read_real_2, read_real_3, read_int_1, read_int_2
       !> dataset(path, values, error): values allocatable of the dataset's Fortran shape.
       generic :: dataset => read_real_1, read_real_2, read_real_3, read_int_1, read_int_2
+      !> flat(path, values, error): a real dataset of any rank as the vector of its values
+      !> in memory order (what a Fortran array of its shape holds, column-major).
+      procedure :: flat => read_real_flat
       procedure :: history_length => reader_history_length
       procedure :: displacement => reader_displacement
       final :: reader_final
@@ -341,6 +344,41 @@ contains
       allocate (values(d(1), d(2)))
       call read_and_close(dset, H5T_NATIVE_INTEGER, size(values), c_loc(values), path, error)
    end subroutine read_int_2
+
+   subroutine read_real_flat(this, path, values, error)
+      class(results_reader_t), intent(in) :: this
+      character(len=*), intent(in) :: path
+      real(wp), allocatable, target, intent(out) :: values(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, space
+      integer(hsize_t) :: d(7), maxd(7)
+      integer :: err, e2, ndims
+      if (.not. this%exists(path)) then
+         call fatal_error(error, 'results file has no dataset '//path)
+         return
+      end if
+      d = 1
+      call h5dopen_f(this%file, path, dset, err)
+      if (err /= 0) then
+         call fatal_error(error, 'cannot open dataset '//path)
+         return
+      end if
+      call h5dget_space_f(dset, space, err)
+      if (err == 0) call h5sget_simple_extent_ndims_f(space, ndims, err)
+      if (err == 0 .and. (ndims < 0 .or. ndims > size(d))) err = -1
+      if (err == 0 .and. ndims > 0) then
+         call h5sget_simple_extent_dims_f(space, d(:ndims), maxd(:ndims), err)
+         if (err == ndims) err = 0
+      end if
+      if (err == 0) call h5sclose_f(space, e2)
+      if (err /= 0) then
+         call h5dclose_f(dset, e2)
+         call fatal_error(error, 'cannot read dataset '//path//' as a vector')
+         return
+      end if
+      allocate (values(product(d(:max(ndims, 0)))))
+      call read_and_close(dset, H5T_NATIVE_DOUBLE, size(values), c_loc(values), path, error)
+   end subroutine read_real_flat
 
    !> Number of rows of /history (converged increments written).
    subroutine reader_history_length(this, n, error)
