@@ -108,7 +108,8 @@ def solver(quick, threads_list=THREADS):
           "Elastic plane-strain squares, one process per case. `total` is the whole program "
           "(read + setup, assembly incl. the CSC pattern, factorisation incl. analysis, solve, "
           "residual, HDF5 output); `bare` is CHOLMOD analyse + factorise + solve of the same "
-          "matrix in the same process, under the same thread setting (OMP_NUM_THREADS = "
+          "matrix in the same process, after the results file is written back to the disk "
+          "(sync), under the same thread setting (OMP_NUM_THREADS = "
           "threads). Times in seconds (wall), median of " + str(REPEATS) + " runs, spread "
           "min-max; load = 1-minute load average when the case started.", "",
           "| element | equations | threads | load | read+setup | assembly | factorisation "

@@ -166,10 +166,11 @@ static cholmod_factor *analyse_with(pecplas_cholmod *h, cholmod_sparse *a, int o
 }
 
 /* AMD's flops per entry of L from which nested dissection is tried too: the test CHOLMOD's
- * default strategy uses (it then runs METIS on the equation graph). From ND_NOW on, the
- * gain is large enough to pay for METIS within one factorisation (2-D Q8 blocks at 1e6
- * equations: 1100 flops per entry, METIS halves the flops); between the two it is ~10 %
- * (Q4 blocks: 550-650), which pays only over several factorisations. */
+ * default strategy uses (it then runs METIS on the equation graph). From ND_NOW on the gain
+ * is large (2-D Q8 blocks at 1e6 equations: 1100 flops per entry, METIS halves the flops and
+ * saves ~4 s per factorisation for ~4 s of ordering: a single factorisation loses ~0.5 s, a
+ * Newton run gains from the second on); between the two it is ~10 % (Q4 blocks: 550-650),
+ * which pays only over several factorisations (doc/bench/ordering.md). */
 #define PECPLAS_ND_FLOPS_PER_ENTRY 500.0
 #define PECPLAS_ND_NOW_FLOPS_PER_ENTRY 1000.0
 
