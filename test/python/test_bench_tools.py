@@ -2,6 +2,7 @@
 benchmark is run here."""
 
 import csv
+import math
 import sys
 from pathlib import Path
 
@@ -106,3 +107,11 @@ def test_summary_order_and_header(tmp_path):
     pos = [text.index(f"## {n}\n") for n in order]
     assert pos == sorted(pos)
     assert "## README" not in text
+
+
+def test_factorisation_flops_read_from_the_solver_line():
+    # the summary line of a run (tools/bench_scaling.py fits the exponent of these counts)
+    out = (" linear solver: CHOLMOD n=10092 nnz(factor)=673122 flops= 7.189E+07 "
+           "peak_bytes= 1.162E+07 analyses=1 factorisations=11\n")
+    assert bench_scaling.factorisation_flops(out) == 7.189e7
+    assert math.isnan(bench_scaling.factorisation_flops("no solver line"))
