@@ -158,6 +158,31 @@ contains
       call coo_to_csc(coo, a, error)
    end subroutine block_laplacian_3d
 
+   !> The m x m x m block Laplacian a, a reference solution xref with b = a xref (x allocated),
+   !> and AMD's flop count; an error unless AMD leaves lo <= flops per entry of L < hi (the
+   !> range the calling test is about).
+   subroutine grid_with_amd(m, lo, hi, a, xref, b, x, amd_flops, error)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: lo, hi
+      type(csc_t), intent(out) :: a
+      real(wp), allocatable, intent(out) :: xref(:), b(:), x(:)
+      real(wp), intent(out) :: amd_flops
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: amd_lnz
+      integer(c_int) :: used
+      character(len=80) :: msg
+      call block_laplacian_3d(m, a, error)
+      if (allocated(error)) return
+      xref = det_vector(a%n, 3)
+      allocate (b(a%n), x(a%n))
+      call a%matvec(xref, b)
+      call solve_with(a, ORDER_AMD, b, x, used, amd_lnz, amd_flops, error)
+      if (allocated(error)) return
+      write (msg, '(a,es10.3,a,es9.2,a,es9.2,a)') 'AMD flops per entry of L ', &
+         amd_flops/amd_lnz, ' (in [', lo, ',', hi, ') for this test)'
+      call check(error, amd_flops >= lo*amd_lnz .and. amd_flops < hi*amd_lnz, trim(msg))
+   end subroutine grid_with_amd
+
    !> A pattern where AMD leaves >= 1000 flops per entry of L: the rule also orders it by METIS
    !> on the graph of nodes at the analysis and keeps that, as nested dissection has fewer
    !> flops than AMD on a 3-D grid (the check fails if it did not), and the system is solved.
@@ -166,18 +191,9 @@ contains
       type(csc_t) :: a
       class(linear_solver_t), allocatable :: s
       real(wp), allocatable :: xref(:), b(:), x(:)
-      real(wp) :: amd_lnz, amd_flops
-      integer(c_int) :: used
+      real(wp) :: amd_flops
       character(len=120) :: msg
-      call block_laplacian_3d(24, a, error)
-      if (allocated(error)) return
-      xref = det_vector(a%n, 3)
-      allocate (b(a%n), x(a%n))
-      call a%matvec(xref, b)
-      call solve_with(a, ORDER_AMD, b, x, used, amd_lnz, amd_flops, error)
-      if (allocated(error)) return
-      write (msg, '(a,es10.3)') 'AMD flops per entry of L ', amd_flops/amd_lnz
-      call check(error, amd_flops >= 1000.0_wp*amd_lnz, trim(msg)//' (>= 1000 for this test)')
+      call grid_with_amd(24, 1000.0_wp, huge(1.0_wp), a, xref, b, x, amd_flops, error)
       if (allocated(error)) return
       call new_linear_solver('CHOLMOD', s, error)
       if (allocated(error)) return
@@ -206,19 +222,9 @@ contains
       type(csc_t) :: a
       class(linear_solver_t), allocatable :: s
       real(wp), allocatable :: xref(:), b(:), x(:)
-      real(wp) :: amd_lnz, amd_flops
-      integer(c_int) :: used
+      real(wp) :: amd_flops
       character(len=160) :: msg
-      call block_laplacian_3d(20, a, error)
-      if (allocated(error)) return
-      xref = det_vector(a%n, 3)
-      allocate (b(a%n), x(a%n))
-      call a%matvec(xref, b)
-      call solve_with(a, ORDER_AMD, b, x, used, amd_lnz, amd_flops, error)
-      if (allocated(error)) return
-      write (msg, '(a,es10.3)') 'AMD flops per entry of L ', amd_flops/amd_lnz
-      call check(error, amd_flops >= 500.0_wp*amd_lnz .and. amd_flops < 1000.0_wp*amd_lnz, &
-         trim(msg)//' (in [500, 1000) for this test)')
+      call grid_with_amd(20, 500.0_wp, 1000.0_wp, a, xref, b, x, amd_flops, error)
       if (allocated(error)) return
       call new_linear_solver('CHOLMOD', s, error)
       if (allocated(error)) return
