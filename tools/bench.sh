@@ -5,6 +5,7 @@
 #   1b. CHOLMOD fill-reducing orderings on the same blocks           (tools/bench_ordering.py)
 #   2. stability maps: iterations vs K_n/E and increment size        (tools/bench_stability.py)
 #   3. scaling of an elastic-plastic mesh, 1e4 .. 1e6 DOFs            (tools/bench_scaling.py)
+#      and of a linear run (the elastic block), 1e4 .. 1e6       (tools/bench_scaling_elastic.py)
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
 #   5. adaptive refinement on the S2 pile, beside the uniform series   (tools/bench_adapt.py)
@@ -41,7 +42,7 @@ if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('opensees
 fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver ordering stability scaling work_precision adapt peer peer_opensees deck katona; do
+for part in solver ordering stability scaling scaling_elastic work_precision adapt peer peer_opensees deck katona; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

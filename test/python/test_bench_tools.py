@@ -97,10 +97,11 @@ def test_csv_has_provenance_columns(tmp_path):
 
 
 def test_summary_order_and_header(tmp_path):
-    for name in ("zeta", "peer", "scaling", "alpha", "advice", "stability", "README"):
+    for name in ("zeta", "peer", "scaling", "alpha", "advice", "stability", "scaling_elastic",
+                 "README"):
         (tmp_path / f"{name}.md").write_text(f"## {name}\n")
     order = [p.stem for p in bench_summary.ordered_fragments(tmp_path)]
-    assert order == ["stability", "scaling", "advice", "peer", "alpha", "zeta"]
+    assert order == ["stability", "scaling", "scaling_elastic", "advice", "peer", "alpha", "zeta"]
     prov = {"commit": "abc1234", "machine": "host cpu x2 Linux", "date": "2026-01-01T00:00:00Z"}
     text = bench_summary.summary(tmp_path, wall=90.0, prov=prov)
     assert "abc1234" in text and "host cpu x2 Linux" in text and "90 s" in text
@@ -115,3 +116,24 @@ def test_factorisation_flops_read_from_the_solver_line():
            "peak_bytes= 1.162E+07 analyses=1 factorisations=11\n")
     assert bench_scaling.factorisation_flops(out) == 7.189e7
     assert math.isnan(bench_scaling.factorisation_flops("no solver line"))
+
+
+def test_elastic_scaling_slopes_and_kink_verdict():
+    import bench_scaling_elastic as el
+    # an exact power law N^1.1: every local slope is 1.1, the target (<= 1.25, no kink) is met
+    n = [1e4, 1e5, 5e5, 1e6]
+    t = [2e-6 * x**1.1 for x in n]
+    slopes = el.local_slopes(n, t)
+    assert [a for a, _, _ in slopes] == n[:-1]
+    assert all(abs(s - 1.1) < 1e-12 for _, _, s in slopes)
+    p, _ = bench_scaling.fit_exponent(n, t)
+    assert el.verdict(p, slopes)[0]
+    # the same series with the largest size 1.8x slower (the kink the benchmark looks for:
+    # slope log2(1.8 * 2^1.1)/log2(2) = 1.95 between 5e5 and 1e6): not met, though the fit
+    # over all sizes stays below 1.25
+    t[-1] *= 1.8
+    slopes = el.local_slopes(n, t)
+    p, _ = bench_scaling.fit_exponent(n, t)
+    assert p < 1.25 and abs(slopes[-1][2] - (1.1 + math.log(1.8) / math.log(2))) < 1e-12
+    met, text = el.verdict(p, slopes)
+    assert not met and "not met" in text
