@@ -670,8 +670,9 @@ contains
          call h5_attr(file, 'completed', timestamp(), error)
       ! complete last: a crash in between leaves complete = 0
       if (.not. allocated(error)) call h5_attr(file, 'complete', complete, error)
-      if (.not. allocated(error)) call this%copies%flush(error)
       if (allocated(error)) return
+      ! closed, not committed first (a commit is a close and an open): nothing is written
+      ! into it after, and it is published only by the rename below
       call this%copies%close('next', err)
       if (err /= 0) then
          call fatal_error(error, 'HDF5: cannot close results file '// &
