@@ -18,6 +18,7 @@ program tester
    use test_massif_edge_load, only: collect_massif_edge_load
    use test_io_results, only: collect_io_results
    use test_io_results_final, only: collect_io_results_final
+   use test_io_results_copies, only: collect_io_results_copies
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
    use test_linalg_solvers, only: collect_linalg_solvers
@@ -130,6 +131,7 @@ program tester
    suites = [suites, new_testsuite('fe_share', collect_fe_share)]
    suites = [suites, new_testsuite('linalg_cholmod_ordering', collect_linalg_cholmod_ordering)]
    suites = [suites, new_testsuite('io_deck_mesh_lines', collect_io_deck_mesh_lines)]
+   suites = [suites, new_testsuite('io_results_copies', collect_io_results_copies)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

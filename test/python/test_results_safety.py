@@ -261,3 +261,32 @@ def test_kill9_at_random_moments(exe, s6_deck, tmp_path):
     print(f"kill -9: {outcomes}; restarted after {restarted} of {total} increments")
     assert outcomes["killed"] >= 10, outcomes
     assert restarted is not None, outcomes
+
+
+def datasets(path):
+    """Every dataset of an HDF5 file, by path, as NumPy arrays."""
+    found = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda name, obj: found.__setitem__(name, obj[()])
+                     if isinstance(obj, h5py.Dataset) else None)
+    return found
+
+
+def test_kernel_copy_and_its_fallback_give_the_same_file(exe, tmp_path):
+    """The second copy of a new file is a kernel copy of the first (doc/results.md,
+    Safety); with the copy refused (PECPLAS_TEST_NO_KERNEL_COPY=1) HDF5 writes it again.
+    Both runs end alike, and their files hold the same datasets bit for bit (the oedometer's
+    mesh, fields, history except the CPU times) and pass the checker."""
+    files = {}
+    for name, env in (("copied", {}), ("written", {"PECPLAS_TEST_NO_KERNEL_COPY": "1"})):
+        out = tmp_path / f"{name}.h5"
+        r = run(exe, OEDOMETER, "-o", out, "--quiet", env=env)
+        assert r.returncode == 0 and not r.stderr, r.stderr
+        assert not temporaries(tmp_path), "a finished run leaves no temporary file"
+        check_file(out, tmp_path / f"{name}.xmf", "completed")
+        files[name] = datasets(out)
+    copied, written = files["copied"], files["written"]
+    assert sorted(copied) == sorted(written) and any(k.startswith("mesh/") for k in copied)
+    for key in copied:
+        if key != "history/cpu_time":
+            assert np.array_equal(copied[key], written[key]), key

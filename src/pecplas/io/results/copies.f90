@@ -13,10 +13,13 @@
 !> (`.NAME.h5.<pid>.new`) and renamed onto `.tmp`, both atomic; where the file system has
 !> no hard links a symbolic link is used. The cost: every increment is written twice, except
 !> a run's final one, written into the copy not published only (pecplas_io_results_file).
+!> The file's first contents (provenance, mesh) are written once: `clone` gives the other
+!> copy the same bytes by a kernel file copy (falling back to writing them again).
 module pecplas_io_results_copies
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fopen_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F
    use pecplas_error, only: error_t, fatal_error
    use pecplas_files, only: rename_file, remove_file, link_file, symlink_file
+   use pecplas_io_results_kernel_copy, only: kernel_copy
    implicit none (type, external)
    private
 
@@ -32,12 +35,15 @@ module pecplas_io_results_copies
       integer :: next = 1
       !> False once a publication had to use a symbolic link (no hard links here).
       logical :: hard = .true.
+      !> False: `clone` never asks the kernel (tests of the fallback).
+      logical :: kernel = .true.
    contains
       procedure :: init => copies_init
       procedure :: create => copies_create
       procedure :: id => copies_id
       procedure :: name => copies_name
       procedure :: flush => copies_flush
+      procedure :: clone => copies_clone
       procedure :: publish => copies_publish
       procedure :: close => copies_close
       procedure :: remove => copies_remove
@@ -119,6 +125,47 @@ contains
             this%names(i)//' (disk full?)')
       end if
    end subroutine copies_flush
+
+   !> Commits the copy written next (closed, then opened again, as `flush`) and makes the
+   !> other copy a byte copy of it by the kernel (copy_file_range), opened too: both copies
+   !> then hold the same committed contents, written by HDF5 once. `cloned` false (the other
+   !> copy not made, the copy written next committed and open) when the kernel refuses or
+   !> `kernel` is false: the caller then writes the other copy itself.
+   subroutine copies_clone(this, cloned, error)
+      class(copies_t), intent(inout) :: this
+      logical, intent(out) :: cloned
+      type(error_t), allocatable, intent(out) :: error
+      integer :: err, i, j
+      cloned = .false.
+      if (.not. this%kernel) then
+         call this%flush(error)
+         return
+      end if
+      i = this%next
+      j = 3 - i
+      call h5fclose_f(this%ids(i), err)
+      this%ids(i) = -1
+      if (err == 0) then
+         ! a file of an earlier process of the same id: unlinked, never written into
+         call remove_file(this%names(j))
+         cloned = kernel_copy(this%names(i), this%names(j))
+         call h5fopen_f(this%names(i), H5F_ACC_RDWR_F, this%ids(i), err)
+      end if
+      if (err /= 0) then
+         this%ids(i) = -1
+         call fatal_error(error, 'HDF5: cannot write results file '// &
+            this%names(i)//' (disk full?)')
+         return
+      end if
+      if (.not. cloned) return
+      call h5fopen_f(this%names(j), H5F_ACC_RDWR_F, this%ids(j), err)
+      if (err /= 0) then
+         ! a copy HDF5 cannot open is no copy: the caller writes one
+         this%ids(j) = -1
+         call remove_file(this%names(j))
+         cloned = .false.
+      end if
+   end subroutine copies_clone
 
    !> Publishes the copy written next (committed by the caller) as `link`, atomically, and
    !> makes the other copy the next one written.
