@@ -8,7 +8,8 @@ module pecplas_fe_assembly
    use pecplas_model, only: model_t
    use pecplas_fe_dofs, only: dofs_t
    use pecplas_fe_state, only: fe_state_t, set_state_t
-   use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
+   use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_gauss_derivs
+   use pecplas_massif_point_kernels, only: point_strain, point_force_add
    use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_linalg_sparse, only: csc_t
@@ -111,19 +112,26 @@ contains
          call part%range(size(set%conn, 2), e1, e2)
          ! the points' own tangents, or the elastic one (asked for, or the material's only)
          stored = tangent .and. allocated(st%tangent)
-         if (.not. stored) call mat%elastic_tangent(delastic)
+         ! the stored tangents are passed in place; the elastic one is spread once
+         if (.not. stored) then
+            call mat%elastic_tangent(delastic)
+            allocate (d(NCOMP, NCOMP, st%ngauss))
+            d = spread(delastic, 3, st%ngauss)
+         end if
          allocate (ke(nd, nd, min(CHUNK, max(e2 - e1 + 1, 1))), idx(nd))
          bad = huge(bad)
          do c0 = e1, e2, CHUNK
             c1 = min(c0 + CHUNK - 1, e2)
-            !$omp parallel default(shared) private(e, d, err) &
+            !$omp parallel default(shared) private(e, err) &
             !$omp if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS)
-            allocate (d(NCOMP, NCOMP, st%ngauss))
-            if (.not. stored) d = spread(delastic, 3, st%ngauss)
             !$omp do schedule(static)
             do e = c0, c1
-               if (stored) d = st%tangent(:, :, :, e)
-               call element_stiffness(model, rule, set%conn(:, e), d, ke(:, :, e - c0 + 1), err)
+               if (stored) then
+                  call element_stiffness(model, rule, set%conn(:, e), st%tangent(:, :, :, e), &
+                     ke(:, :, e - c0 + 1), err)
+               else
+                  call element_stiffness(model, rule, set%conn(:, e), d, ke(:, :, e - c0 + 1), err)
+               end if
                if (allocated(err)) then
                   !$omp critical (pecplas_assembly_bad)
                   bad = min(bad, e)
@@ -131,7 +139,6 @@ contains
                end if
             end do
             !$omp end do
-            deallocate (d)
             !$omp end parallel
             if (bad <= e2) exit
             do e = c0, c1
@@ -143,13 +150,13 @@ contains
          if (bad <= e2) then
             ! again, serially, for the message of the first failing element
             deallocate (ke)
-            allocate (ke(nd, nd, 1), d(NCOMP, NCOMP, st%ngauss))
+            allocate (ke(nd, nd, 1))
             if (stored) then
-               d = st%tangent(:, :, :, bad)
+               call element_stiffness(model, rule, set%conn(:, bad), st%tangent(:, :, :, bad), &
+                  ke(:, :, 1), error)
             else
-               d = spread(delastic, 3, st%ngauss)
+               call element_stiffness(model, rule, set%conn(:, bad), d, ke(:, :, 1), error)
             end if
-            call element_stiffness(model, rule, set%conn(:, bad), d, ke(:, :, 1), error)
             if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
             call element_context(error, model, s, bad)
          end if
@@ -173,8 +180,14 @@ contains
       real(wp), intent(in) :: d(:, :, :)
       real(wp), intent(out) :: ke(:, :)
       type(error_t), allocatable, intent(out) :: error
+      real(wp) :: xe(2, MAX_NODES)
+      integer :: k
+      ! gathered into a fixed array: x(:, conn) as an argument is a heap temporary
+      do k = 1, size(conn)
+         xe(:, k) = model%mesh%x(:, conn(k))
+      end do
       call massif_stiffness(rule, model%analysis%kind, model%analysis%thickness, &
-         model%mesh%x(:, conn), d, ke, error)
+         xe(:, 1:size(conn)), d, ke, error)
    end subroutine element_stiffness
 
    !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
@@ -250,26 +263,28 @@ contains
       logical, intent(in) :: timed
       real(wp), intent(inout) :: tlaw
       type(error_t), allocatable, intent(out) :: error
-      type(massif_point_t) :: pt
-      real(wp) :: xe(2, rule%nnode), ue(2*rule%nnode), eps(NCOMP), deps(NCOMP), t0
-      real(wp) :: dpoint(NCOMP, NCOMP)
-      integer :: g, nd
+      ! fixed sizes: automatic arrays would be allocated on the heap for every element
+      real(wp) :: xe(2, MAX_NODES), ue(2*MAX_NODES), eps(NCOMP), deps(NCOMP), t0
+      real(wp) :: dpoint(NCOMP, NCOMP), dndx(2, MAX_NODES), hr(MAX_NODES), dvol
+      integer :: g, nn, k
       logical :: clocked
       associate (conn => model%mesh%esets(s)%conn(:, e), &
                  mat => model%materials(model%mesh%esets(s)%material_index)%m)
-         nd = 2*rule%nnode
-         xe = model%mesh%x(:, conn)
-         ue = reshape(u(:, conn), [nd])
+         nn = rule%nnode
+         do k = 1, nn
+            xe(:, k) = model%mesh%x(:, conn(k))
+            ue(2*k - 1:2*k) = u(:, conn(k))
+         end do
          fe = 0.0_wp
          t0 = 0.0_wp
          ! a linear material's update (a matrix product) is not timed: reading the clock
          ! twice per point would cost more than the update itself
          clocked = timed .and. allocated(st%tangent)
          do g = 1, st%ngauss
-            call massif_gauss_point(rule, g, model%analysis%kind, model%analysis%thickness, &
-               xe, pt, error)
+            call massif_gauss_derivs(rule, g, model%analysis%kind, model%analysis%thickness, &
+               xe(:, 1:nn), dndx(:, 1:nn), hr(1:nn), dvol, error)
             if (allocated(error)) return
-            eps = matmul(pt%b(:, 1:nd), ue)
+            call point_strain(nn, dndx, hr, ue, eps)
             deps = eps - st%strain(:, g, e)
             st%hist_trial(:, g, e) = st%hist(:, g, e)
             if (clocked) t0 = wall_time()
@@ -283,7 +298,7 @@ contains
             if (clocked) tlaw = tlaw + (wall_time() - t0)
             if (allocated(error)) return
             st%strain_trial(:, g, e) = eps
-            fe = fe + matmul(st%stress_trial(:, g, e), pt%b(:, 1:nd))*pt%dvol
+            call point_force_add(nn, dndx, hr, dvol, st%stress_trial(:, g, e), fe)
          end do
       end associate
    end subroutine element_forces
