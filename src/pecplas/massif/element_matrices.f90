@@ -22,10 +22,11 @@ contains
    subroutine massif_stiffness(rule, analysis_kind, thickness, xe, d, ke, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), d(:, :, :)
-      real(wp), intent(out) :: ke(:, :)
+      real(wp), intent(in) :: thickness
+      real(wp), contiguous, intent(in) :: xe(:, :), d(:, :, :)
+      real(wp), contiguous, intent(out) :: ke(:, :)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol
+      real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol, dg(4, 4)
       integer :: ig, j, ndof, nn
       logical :: sym
       nn = rule%nnode
@@ -40,14 +41,17 @@ contains
       ! upper node blocks are computed and mirrored, half the products
       sym = .true.
       do ig = 1, rule%ngauss
-         sym = sym .and. all(d(:, :, ig) == transpose(d(:, :, ig)))
+         do j = 1, 3
+            sym = sym .and. all(d(j + 1:4, j, ig) == d(j, j + 1:4, ig))
+         end do
       end do
       ke = 0.0_wp
       do ig = 1, rule%ngauss
-         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx(:, 1:nn), &
-            hr(1:nn), dvol, error)
+         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, &
+            error)
          if (allocated(error)) return
-         call point_stiffness_add(nn, dndx, hr, dvol, d(:, :, ig), &
+         dg = d(:, :, ig)
+         call point_stiffness_add(nn, dndx, hr, dvol, dg, &
             analysis_kind == AXISYMMETRIC, sym, ke)
       end do
       if (sym) then
@@ -61,8 +65,9 @@ contains
    subroutine massif_internal_force(rule, analysis_kind, thickness, xe, sigma, fe, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), sigma(:, :)
-      real(wp), intent(out) :: fe(:)
+      real(wp), intent(in) :: thickness
+      real(wp), contiguous, intent(in) :: xe(:, :), sigma(:, :)
+      real(wp), contiguous, intent(out) :: fe(:)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol
       integer :: ig, ndof, nn
@@ -76,8 +81,8 @@ contains
       end if
       fe = 0.0_wp
       do ig = 1, rule%ngauss
-         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx(:, 1:nn), &
-            hr(1:nn), dvol, error)
+         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, &
+            error)
          if (allocated(error)) return
          call point_force_add(nn, dndx, hr, dvol, sigma(:, ig), fe)
       end do
@@ -88,8 +93,9 @@ contains
    subroutine massif_strains(rule, analysis_kind, thickness, xe, ue, eps, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), ue(:)
-      real(wp), intent(out) :: eps(:, :)
+      real(wp), intent(in) :: thickness
+      real(wp), contiguous, intent(in) :: xe(:, :), ue(:)
+      real(wp), contiguous, intent(out) :: eps(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol
       integer :: ig, ndof, nn
@@ -102,8 +108,8 @@ contains
          return
       end if
       do ig = 1, rule%ngauss
-         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx(:, 1:nn), &
-            hr(1:nn), dvol, error)
+         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, &
+            error)
          if (allocated(error)) return
          call point_strain(nn, dndx, hr, ue, eps(:, ig))
       end do

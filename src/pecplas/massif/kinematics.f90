@@ -101,12 +101,13 @@ contains
    subroutine massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: ig, analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :)
-      real(wp), intent(out) :: dndx(:, :), hr(:), dvol
+      ! explicit shapes: no descriptors and no packing checks in the element loops
+      real(wp), intent(in) :: thickness, xe(2, rule%nnode)
+      real(wp), intent(out) :: dndx(2, rule%nnode), hr(rule%nnode), dvol
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: x(2), detj
-      call point_derivatives(rule%n(:, ig), rule%dn(:, :, ig), analysis_kind, thickness, xe, &
-         rule%w(ig), x, detj, dndx, hr, dvol, error)
+      call point_derivatives(rule%nnode, rule%n(:, ig), rule%dn(:, :, ig), analysis_kind, &
+         thickness, xe, rule%w(ig), x, detj, dndx, hr, dvol, error)
    end subroutine massif_gauss_derivs
 
    subroutine point_from_shape(n, dn, analysis_kind, thickness, xe, w, pt, error)
@@ -120,7 +121,7 @@ contains
       nn = size(n)
       pt%nnode = nn
       pt%n(1:nn) = n
-      call point_derivatives(n, dn, analysis_kind, thickness, xe, w, pt%x, pt%detj, &
+      call point_derivatives(nn, n, dn, analysis_kind, thickness, xe, w, pt%x, pt%detj, &
          pt%dndx(:, 1:nn), hr(1:nn), pt%dvol, error)
       if (allocated(error)) return
       pt%b(:, 1:2*nn) = 0.0_wp
@@ -136,17 +137,17 @@ contains
    !> Position x, detJ, dN/dx, N/r (zero in plane strain) and dvol at a point with shape
    !> values n(nn) and reference derivatives dn(2, nn): the one place where the Jacobian
    !> and its error messages live.
-   subroutine point_derivatives(n, dn, analysis_kind, thickness, xe, w, x, detj, dndx, hr, &
-         dvol, error)
-      real(wp), intent(in) :: n(:), dn(:, :)
-      integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), w
-      real(wp), intent(out) :: x(2), detj, dndx(:, :), hr(:), dvol
+   subroutine point_derivatives(nn, n, dn, analysis_kind, thickness, xe, w, x, detj, dndx, &
+         hr, dvol, error)
+      integer, intent(in) :: nn, analysis_kind
+      real(wp), intent(in) :: n(nn), dn(2, nn), xe(2, nn)
+      real(wp), intent(in) :: thickness, w
+      real(wp), intent(out) :: x(2), detj, dvol
+      real(wp), intent(out) :: dndx(2, nn), hr(nn)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: jac(2, 2), r
+      real(wp) :: jac(2, 2), r, rdet
       character(len=120) :: buf
-      integer :: k, nn
-      nn = size(n)
+      integer :: k
       ! jac(a, b) = d x_b / d xi_a, so dN/dxi = jac dN/dx
       x = 0.0_wp
       jac = 0.0_wp
@@ -162,13 +163,14 @@ contains
             //trim(buf))
          return
       end if
+      rdet = 1.0_wp/detj
       do k = 1, nn
-         dndx(1, k) = (jac(2, 2)*dn(1, k) - jac(1, 2)*dn(2, k))/detj
-         dndx(2, k) = (jac(1, 1)*dn(2, k) - jac(2, 1)*dn(1, k))/detj
+         dndx(1, k) = (jac(2, 2)*dn(1, k) - jac(1, 2)*dn(2, k))*rdet
+         dndx(2, k) = (jac(1, 1)*dn(2, k) - jac(2, 1)*dn(1, k))*rdet
       end do
       select case (analysis_kind)
       case (PLANE_STRAIN)
-         hr(1:nn) = 0.0_wp
+         hr = 0.0_wp
          dvol = w*detj*thickness
       case (AXISYMMETRIC)
          r = x(1)
@@ -178,7 +180,7 @@ contains
                //trim(buf))
             return
          end if
-         hr(1:nn) = n/r
+         hr = n/r
          dvol = w*detj*TWO_PI*r
       case default
          call fatal_error(error, 'massif kinematics: unknown analysis kind')

@@ -5,7 +5,8 @@
 !>
 !> (strain order xx, yy, zz, xy; N_a/r = 0 in plane strain), so D B, B^T (D B), B u and
 !> B^T sigma take two or three products per entry instead of four, and B is never formed.
-!> Inputs are those of massif_gauss_derivs: dndx(2, nn), hr(nn) = N/r, dvol.
+!> Inputs are those of massif_gauss_derivs: dndx(2, nn), hr(nn) = N/r, dvol. Explicit
+!> shapes: called per point, they take no array descriptors.
 !> The results equal the dense products up to round-off (test_massif_kernels).
 module pecplas_massif_point_kernels
    use pecplas_kinds, only: wp
@@ -22,9 +23,9 @@ contains
    !> them); d may be non-symmetric.
    pure subroutine point_stiffness_add(nn, dndx, hr, dvol, d, axi, upper, ke)
       integer, intent(in) :: nn
-      real(wp), intent(in) :: dndx(:, :), hr(:), dvol, d(4, 4)
+      real(wp), intent(in) :: dndx(2, nn), hr(nn), dvol, d(4, 4)
       logical, intent(in) :: axi, upper
-      real(wp), intent(inout) :: ke(:, :)
+      real(wp), intent(inout) :: ke(2*nn, 2*nn)
       real(wp) :: db(4, 2*MAX_NODES), bx, by, c1, c2, c3, c4
       integer :: a, b, j, amax
       ! db = D B dvol, column by column
@@ -60,7 +61,7 @@ contains
    !> eps(4) = B ue for nodal displacements ue(2*nn) (u1, v1, u2, v2, ...).
    pure subroutine point_strain(nn, dndx, hr, ue, eps)
       integer, intent(in) :: nn
-      real(wp), intent(in) :: dndx(:, :), hr(:), ue(:)
+      real(wp), intent(in) :: dndx(2, nn), hr(nn), ue(2*nn)
       real(wp), intent(out) :: eps(4)
       integer :: a
       eps = 0.0_wp
@@ -75,8 +76,8 @@ contains
    !> fe(2*nn) += B^T sigma dvol for the point stress sigma(4).
    pure subroutine point_force_add(nn, dndx, hr, dvol, sigma, fe)
       integer, intent(in) :: nn
-      real(wp), intent(in) :: dndx(:, :), hr(:), dvol, sigma(4)
-      real(wp), intent(inout) :: fe(:)
+      real(wp), intent(in) :: dndx(2, nn), hr(nn), dvol, sigma(4)
+      real(wp), intent(inout) :: fe(2*nn)
       real(wp) :: s(4)
       integer :: a
       s = sigma*dvol
