@@ -77,7 +77,8 @@ contains
       if (allocated(joint_error)) call builder%forget()
       if (allocated(error)) return
       do s = 1, size(rules)
-         call add_set_stiffness(model, dofs, rules(s), s, state%sets(s), tangent, part, k, error)
+         call add_set_stiffness(model, dofs, rules(s), s, state%sets(s), tangent, part, builder, &
+            k, error)
          if (allocated(error)) return
       end do
       if (allocated(joint_error)) then
@@ -88,8 +89,9 @@ contains
    end subroutine assemble_stiffness
 
    !> Adds the stiffness of this share's elements of massif set s to k (pattern ready):
-   !> element matrices in parallel, CHUNK elements at a time, added serially in order.
-   subroutine add_set_stiffness(model, dofs, rule, s, st, tangent, part, k, error)
+   !> element matrices in parallel, CHUNK elements at a time, added serially in order
+   !> (through the builder's recorded positions when the pattern is reused).
+   subroutine add_set_stiffness(model, dofs, rule, s, st, tangent, part, builder, k, error)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
       type(massif_rule_t), intent(in) :: rule
@@ -97,6 +99,7 @@ contains
       type(set_state_t), intent(in) :: st
       logical, intent(in) :: tangent
       type(share_t), intent(in) :: part
+      type(csc_builder_t), intent(inout) :: builder
       type(csc_t), intent(inout) :: k
       type(error_t), allocatable, intent(out) :: error
       integer, parameter :: CHUNK = 2048
@@ -143,7 +146,7 @@ contains
             if (bad <= e2) exit
             do e = c0, c1
                call element_equations(dofs, set%conn(:, e), idx)
-               call k%add_block(idx, ke(:, :, e - c0 + 1), error)
+               call builder%add_block(k, idx, ke(:, :, e - c0 + 1), error)
                if (allocated(error)) return
             end do
          end do

@@ -312,12 +312,14 @@ contains
    !> idx <= 0 (and the lower triangle when only the upper one is stored). An entry missing
    !> from the pattern is an error (the pattern was built from other connectivity). The
    !> block's rows are sorted once; each column is then walked along with them (rows are
-   !> sorted in a CSC column) instead of searching every entry.
-   subroutine csc_add_block(this, idx, kblock, error)
+   !> sorted in a CSC column) instead of searching every entry. `pos(r, c)`, if present,
+   !> receives the 1-based position in `values` of each entry added (others untouched).
+   subroutine csc_add_block(this, idx, kblock, error, pos)
       class(csc_t), intent(inout) :: this
       integer, intent(in) :: idx(:)
       real(wp), intent(in) :: kblock(:, :)
       type(error_t), allocatable, intent(out) :: error
+      integer(ik4), intent(inout), optional :: pos(:, :)
       integer :: order(size(idx)), nr, r, c, p, hi, k, row
       character(len=64) :: buf
       nr = 0
@@ -355,6 +357,7 @@ contains
                return
             end if
             this%values(p) = this%values(p) + kblock(r, c)
+            if (present(pos)) pos(r, c) = int(p, ik4)
          end do
       end do
    end subroutine csc_add_block
