@@ -302,8 +302,16 @@ contains
       real(wp), intent(out) :: d(:)
       integer :: j, p
       do j = 1, this%n
-         p = this%locate(j, j)
          d(j) = 0.0_wp
+         ! upper storage: the diagonal, when stored, is the column's last entry
+         p = this%colptr(j + 1)
+         if (this%upper .and. p > this%colptr(j)) then
+            if (this%rowind(p) + 1 == j) then
+               d(j) = this%values(p)
+               cycle
+            end if
+         end if
+         p = this%locate(j, j)
          if (p > 0) d(j) = this%values(p)
       end do
    end subroutine csc_diagonal
