@@ -63,6 +63,7 @@ program tester
    use test_fe_share, only: collect_fe_share
    use test_linalg_cholmod_ordering, only: collect_linalg_cholmod_ordering
    use test_io_deck_mesh_lines, only: collect_io_deck_mesh_lines
+   use test_massif_kernels, only: collect_massif_kernels
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -132,6 +133,7 @@ program tester
    suites = [suites, new_testsuite('linalg_cholmod_ordering', collect_linalg_cholmod_ordering)]
    suites = [suites, new_testsuite('io_deck_mesh_lines', collect_io_deck_mesh_lines)]
    suites = [suites, new_testsuite('io_results_copies', collect_io_results_copies)]
+   suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -20,8 +20,43 @@ contains
                new_unittest('upper_only_storage', test_upper), &
                new_unittest('reassembly_on_pattern', test_reassembly), &
                new_unittest('symmetry_check', test_symmetry), &
-               new_unittest('index_out_of_range', test_out_of_range)]
+               new_unittest('index_out_of_range', test_out_of_range), &
+               new_unittest('diagonal_full_and_upper', test_diagonal)]
    end subroutine collect_linalg_sparse
+
+   !> csc%diagonal equals the dense diagonal, zero where none is stored (the last third of
+   !> the diagonal is left empty), in full and in upper storage (where it reads
+   !> the last entry of a column). Duplicates summed in another order: 1e-14 relative.
+   subroutine test_diagonal(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: N = 30, NT = 600
+      type(coo_t) :: coo, up
+      type(csc_t) :: a
+      real(wp) :: dense(N, N), d(N), ref(N)
+      integer :: i, storage
+      call random_coo(N, NT, coo, dense)
+      do i = 1, 2*N/3
+         call coo%add(i, i, real(i, wp))
+         dense(i, i) = dense(i, i) + real(i, wp)
+      end do
+      ref = [(dense(i, i), i=1, N)]
+      call up%init(N, 1, upper_only=.true.)
+      do i = 1, coo%nnz
+         call up%add(int(coo%rows(i)), int(coo%cols(i)), coo%vals(i))
+      end do
+      do storage = 1, 2
+         if (storage == 1) then
+            call coo_to_csc(coo, a, error)
+         else
+            call coo_to_csc(up, a, error)
+         end if
+         if (allocated(error)) return
+         call a%diagonal(d)
+         call check(error, all(abs(d - ref) <= 1.0e-14_wp*maxval(abs(ref))) .and. &
+            any(ref == 0.0_wp) .and. any(ref /= 0.0_wp), 'diagonal of the assembled matrix')
+         if (allocated(error)) return
+      end do
+   end subroutine test_diagonal
 
    !> Pseudo-random triplets with many duplicates, grown from a capacity of 1.
    subroutine random_coo(n, nt, coo, dense)

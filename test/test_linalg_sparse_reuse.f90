@@ -29,7 +29,8 @@ contains
                new_unittest('changed_sequence_falls_back', test_fallback), &
                new_unittest('joints_after_state_change', test_joints), &
                new_unittest('pattern_from_blocks_equals_full', test_pattern), &
-               new_unittest('pattern_from_blocks_threads', test_pattern_threads)]
+               new_unittest('pattern_from_blocks_threads', test_pattern_threads), &
+               new_unittest('block_positions_replay', test_block_replay)]
    end subroutine collect_linalg_sparse_reuse
 
    !> Fills `b` (after start) with nt pseudo-random triplets of an n x n matrix, many of them
@@ -143,6 +144,61 @@ contains
       call check(error, b%full == 2 .and. b%fast == 1, &
          'the repeated lists keep the pattern, a changed one builds it again')
    end subroutine test_pattern
+
+   !> Blocks added through the builder on a kept pattern: the second assembly records their
+   !> positions, the next ones replay them; each result equals coo_to_csc of the same
+   !> triplets exactly (one addition per entry and block, blocks in the same order), full
+   !> and upper storage, values changing from one assembly to the next. Blocks added in
+   !> another order than the pattern's lists drop the positions and still give the sum.
+   subroutine test_block_replay(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: N = 40, NB = 30, ND = 6, NX = 20
+      integer, parameter :: STATE_AFTER(5) = [0, 2, 2, 2, 0]
+      type(csc_builder_t) :: b, bref
+      type(csc_t) :: k, ref
+      real(wp) :: kb(ND, ND)
+      integer :: elist(ND*NB), eptr(NB + 1), order(NB), i, j, pass, iu
+      logical :: upper
+      character(len=60) :: msg
+      elist = int((det_vector(ND*NB, 4) + 1.0_wp)/2.0_wp*(N + 3)) - 2 ! -2 .. N: some <= 0
+      elist = max(0, min(N, elist))
+      eptr = [(1 + ND*i, i=0, NB)]
+      do iu = 1, 2
+         upper = iu == 2
+         do pass = 1, 5
+            order = [(i, i=1, NB)]
+            if (pass == 5) order([3, 17]) = [17, 3]
+            call bref%start(N, 16, upper_only=upper)
+            call b%start(N, 16, upper_only=upper)
+            do j = 1, NB
+               i = order(j)
+               kb = reshape(det_vector(ND*ND, 10*pass + i), [ND, ND])
+               call bref%coo%add_block(elist(eptr(i):eptr(i + 1) - 1), kb)
+            end do
+            do i = 1, NX
+               call bref%coo%add(1 + mod(7*i, N), 1 + mod(3*i, N), real(i + pass, wp))
+               call b%coo%add(1 + mod(7*i, N), 1 + mod(3*i, N), real(i + pass, wp))
+            end do
+            call reference(bref, ref, error)
+            if (allocated(error)) return
+            call b%pattern(eptr, elist, k, error)
+            do j = 1, NB
+               if (allocated(error)) return
+               i = order(j)
+               kb = reshape(det_vector(ND*ND, 10*pass + i), [ND, ND])
+               call b%add_block(k, elist(eptr(i):eptr(i + 1) - 1), kb, error)
+            end do
+            if (.not. allocated(error)) call b%add_extra(k, error)
+            if (allocated(error)) return
+            write (msg, '(a,i0,a,l1)') 'block positions, assembly ', pass, ', upper ', upper
+            call check(error, same_matrix(k, ref), trim(msg)//': equals coo_to_csc exactly')
+            if (allocated(error)) return
+            call check(error, b%bstate == STATE_AFTER(pass), trim(msg)//': recorded/replayed')
+            if (allocated(error)) return
+         end do
+         call b%forget()
+      end do
+   end subroutine test_block_replay
 
    !> A pattern large enough for its columns to be shared among threads (30 000 equations,
    !> 20 000 blocks of 6, upper storage): built on 1 and on 2 threads, both equal the

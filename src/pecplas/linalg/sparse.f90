@@ -302,8 +302,16 @@ contains
       real(wp), intent(out) :: d(:)
       integer :: j, p
       do j = 1, this%n
-         p = this%locate(j, j)
          d(j) = 0.0_wp
+         ! upper storage: the diagonal, when stored, is the column's last entry
+         p = this%colptr(j + 1)
+         if (this%upper .and. p > this%colptr(j)) then
+            if (this%rowind(p) + 1 == j) then
+               d(j) = this%values(p)
+               cycle
+            end if
+         end if
+         p = this%locate(j, j)
          if (p > 0) d(j) = this%values(p)
       end do
    end subroutine csc_diagonal
@@ -312,12 +320,14 @@ contains
    !> idx <= 0 (and the lower triangle when only the upper one is stored). An entry missing
    !> from the pattern is an error (the pattern was built from other connectivity). The
    !> block's rows are sorted once; each column is then walked along with them (rows are
-   !> sorted in a CSC column) instead of searching every entry.
-   subroutine csc_add_block(this, idx, kblock, error)
+   !> sorted in a CSC column) instead of searching every entry. `pos(r, c)`, if present,
+   !> receives the 1-based position in `values` of each entry added (others untouched).
+   subroutine csc_add_block(this, idx, kblock, error, pos)
       class(csc_t), intent(inout) :: this
       integer, intent(in) :: idx(:)
       real(wp), intent(in) :: kblock(:, :)
       type(error_t), allocatable, intent(out) :: error
+      integer(ik4), intent(inout), optional :: pos(:, :)
       integer :: order(size(idx)), nr, r, c, p, hi, k, row
       character(len=64) :: buf
       nr = 0
@@ -355,6 +365,7 @@ contains
                return
             end if
             this%values(p) = this%values(p) + kblock(r, c)
+            if (present(pos)) pos(r, c) = int(p, ik4)
          end do
       end do
    end subroutine csc_add_block

@@ -33,10 +33,17 @@ module pecplas_linalg_sparse_reuse
       !> Entries added by the last `pattern` assembly: the element-block entries kept (as
       !> many as add_block triplets) plus the triplets of `coo`.
       integer :: entries = 0
+      !> Positions in csc%values of the element-block entries on the kept pattern, block
+      !> after block, each block's kept entries column by column: recorded by the first
+      !> assembly that reuses a pattern, then replayed (no search). bstate: 0 none,
+      !> 1 recording, 2 valid; bnext: next block expected; bcur: positions used so far.
+      integer(ik4), allocatable :: bmap(:), bpos(:, :)
+      integer :: bstate = 0, bnext = 1, bcur = 0
    contains
       procedure :: start => builder_start
       procedure :: finish => builder_finish
       procedure :: pattern => builder_pattern
+      procedure :: add_block => builder_add_block
       procedure :: add_extra => builder_add_extra
       procedure :: forget => builder_forget
    end type csc_builder_t
@@ -158,11 +165,22 @@ contains
       do b = 1, size(eptr) - 1
          this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
       end do
+      this%bnext = 1
+      this%bcur = 0
       if (same_key(this, eptr, elist, csc)) then
          csc%values = 0.0_wp
          this%fast = this%fast + 1
+         ! a pattern used a second time: record the block positions for the next ones
+         if (this%bstate /= 2) then
+            if (allocated(this%bmap)) then
+               if (size(this%bmap) < this%entries - nx) deallocate (this%bmap)
+            end if
+            if (.not. allocated(this%bmap)) allocate (this%bmap(max(this%entries - nx, 1)))
+            this%bstate = 1
+         end if
          return
       end if
+      this%bstate = 0
       this%npat = -1
       call pattern_from_blocks(this%coo%n, this%coo%upper_only, eptr, elist, this%coo, csc, &
          error)
@@ -196,12 +214,73 @@ contains
       same_key = .true.
    end function same_key
 
-   !> Adds the triplets of `coo` to csc%values in their order (after the element blocks).
+   !> csc%values(idx(r), idx(c)) += kblock(r, c) for the next element block of the kept
+   !> pattern (the blocks come in the order of the `pattern` lists), as csc%add_block does:
+   !> through the recorded positions when they are valid, else by searching (and recording).
+   !> A block other than the one expected drops the positions (csc%add_block then).
+   subroutine builder_add_block(this, csc, idx, kblock, error)
+      class(csc_builder_t), intent(inout) :: this
+      type(csc_t), intent(inout) :: csc
+      integer, intent(in) :: idx(:)
+      real(wp), intent(in) :: kblock(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: b, nd, r, c, q
+      logical :: same
+      nd = size(idx)
+      b = this%bnext
+      same = this%bstate > 0 .and. this%npat == csc%n .and. b < size(this%eptr)
+      if (same) same = this%eptr(b + 1) - this%eptr(b) == nd
+      if (same) same = all(this%elist(this%eptr(b):this%eptr(b + 1) - 1) == idx)
+      if (.not. same) then
+         this%bstate = 0
+         call csc%add_block(idx, kblock, error)
+         return
+      end if
+      this%bnext = b + 1
+      q = this%bcur
+      if (this%bstate == 2) then
+         do c = 1, nd
+            if (idx(c) <= 0) cycle
+            do r = 1, nd
+               if (idx(r) <= 0 .or. (csc%upper .and. idx(r) > idx(c))) cycle
+               q = q + 1
+               csc%values(this%bmap(q)) = csc%values(this%bmap(q)) + kblock(r, c)
+            end do
+         end do
+      else
+         if (allocated(this%bpos)) then
+            if (size(this%bpos, 1) < nd) deallocate (this%bpos)
+         end if
+         if (.not. allocated(this%bpos)) allocate (this%bpos(nd, nd))
+         call csc%add_block(idx, kblock, error, this%bpos)
+         if (allocated(error)) then
+            this%bstate = 0
+            return
+         end if
+         do c = 1, nd
+            if (idx(c) <= 0) cycle
+            do r = 1, nd
+               if (idx(r) <= 0 .or. (csc%upper .and. idx(r) > idx(c))) cycle
+               q = q + 1
+               this%bmap(q) = this%bpos(r, c)
+            end do
+         end do
+      end if
+      this%bcur = q
+   end subroutine builder_add_block
+
+   !> Adds the triplets of `coo` to csc%values in their order (after the element blocks);
+   !> the end of an assembly, which validates block positions recorded for all the blocks.
    subroutine builder_add_extra(this, csc, error)
-      class(csc_builder_t), intent(in) :: this
+      class(csc_builder_t), intent(inout) :: this
       type(csc_t), intent(inout) :: csc
       type(error_t), allocatable, intent(out) :: error
       integer :: p, q
+      if (this%bstate == 1) then
+         this%bstate = 0
+         if (this%bnext == size(this%eptr) .and. this%bcur == this%entries - this%coo%nnz) &
+            this%bstate = 2
+      end if
       do p = 1, this%coo%nnz
          q = csc%locate(int(this%coo%rows(p)), int(this%coo%cols(p)))
          if (q == 0) then
@@ -216,6 +295,7 @@ contains
    subroutine builder_forget(this)
       class(csc_builder_t), intent(inout) :: this
       this%npat = -1
+      this%bstate = 0
    end subroutine builder_forget
 
 end module pecplas_linalg_sparse_reuse

@@ -5,8 +5,10 @@
 module pecplas_massif_element_matrices
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
+   use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_point_t, &
-      massif_gauss_point
+      massif_gauss_point, massif_gauss_derivs
+   use pecplas_massif_point_kernels, only: point_stiffness_add, point_strain, point_force_add
    implicit none (type, external)
    private
 
@@ -20,14 +22,15 @@ contains
    subroutine massif_stiffness(rule, analysis_kind, thickness, xe, d, ke, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), d(:, :, :)
-      real(wp), intent(out) :: ke(:, :)
+      real(wp), intent(in) :: thickness
+      real(wp), contiguous, intent(in) :: xe(:, :), d(:, :, :)
+      real(wp), contiguous, intent(out) :: ke(:, :)
       type(error_t), allocatable, intent(out) :: error
-      type(massif_point_t) :: pt
-      real(wp) :: db(4, 2*MAX_NODES), bt(2*MAX_NODES, 4)
-      integer :: ig, j, ndof, last
+      real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol, dg(4, 4)
+      integer :: ig, j, ndof, nn
       logical :: sym
-      ndof = 2*rule%nnode
+      nn = rule%nnode
+      ndof = 2*nn
       call check_shapes(rule, xe, ndof, size(ke, 1), 'massif_stiffness', error)
       if (allocated(error)) return
       if (size(ke, 2) /= ndof .or. any(shape(d) /= [4, 4, rule%ngauss])) then
@@ -35,24 +38,21 @@ contains
          return
       end if
       ! symmetric point tangents (elastic, associated plasticity) give a symmetric ke: its
-      ! upper triangle is computed and mirrored, half the products
+      ! upper node blocks are computed and mirrored, half the products
       sym = .true.
       do ig = 1, rule%ngauss
-         sym = sym .and. all(d(:, :, ig) == transpose(d(:, :, ig)))
+         do j = 1, 3
+            sym = sym .and. all(d(j + 1:4, j, ig) == d(j, j + 1:4, ig))
+         end do
       end do
       ke = 0.0_wp
       do ig = 1, rule%ngauss
-         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, &
+            error)
          if (allocated(error)) return
-         db(:, 1:ndof) = matmul(d(:, :, ig), pt%b(:, 1:ndof))*pt%dvol
-         ! B^T as columns, so that the inner loop runs down a column of ke (vectorised);
-         ! the four products are summed in the order of dot_product(b(:, i), db(:, j))
-         bt(1:ndof, :) = transpose(pt%b(:, 1:ndof))
-         do j = 1, ndof
-            last = merge(j, ndof, sym)
-            ke(1:last, j) = ke(1:last, j) + (bt(1:last, 1)*db(1, j) + bt(1:last, 2)*db(2, j) &
-                                             + bt(1:last, 3)*db(3, j) + bt(1:last, 4)*db(4, j))
-         end do
+         dg = d(:, :, ig)
+         call point_stiffness_add(nn, dndx, hr, dvol, dg, &
+            analysis_kind == AXISYMMETRIC, sym, ke)
       end do
       if (sym) then
          do j = 1, ndof - 1
@@ -65,12 +65,14 @@ contains
    subroutine massif_internal_force(rule, analysis_kind, thickness, xe, sigma, fe, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), sigma(:, :)
-      real(wp), intent(out) :: fe(:)
+      real(wp), intent(in) :: thickness
+      real(wp), contiguous, intent(in) :: xe(:, :), sigma(:, :)
+      real(wp), contiguous, intent(out) :: fe(:)
       type(error_t), allocatable, intent(out) :: error
-      type(massif_point_t) :: pt
-      integer :: ig, ndof
-      ndof = 2*rule%nnode
+      real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol
+      integer :: ig, ndof, nn
+      nn = rule%nnode
+      ndof = 2*nn
       call check_shapes(rule, xe, ndof, size(fe), 'massif_internal_force', error)
       if (allocated(error)) return
       if (any(shape(sigma) /= [4, rule%ngauss])) then
@@ -79,9 +81,10 @@ contains
       end if
       fe = 0.0_wp
       do ig = 1, rule%ngauss
-         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, &
+            error)
          if (allocated(error)) return
-         fe = fe + matmul(sigma(:, ig), pt%b(:, 1:ndof))*pt%dvol
+         call point_force_add(nn, dndx, hr, dvol, sigma(:, ig), fe)
       end do
    end subroutine massif_internal_force
 
@@ -90,12 +93,14 @@ contains
    subroutine massif_strains(rule, analysis_kind, thickness, xe, ue, eps, error)
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: analysis_kind
-      real(wp), intent(in) :: thickness, xe(:, :), ue(:)
-      real(wp), intent(out) :: eps(:, :)
+      real(wp), intent(in) :: thickness
+      real(wp), contiguous, intent(in) :: xe(:, :), ue(:)
+      real(wp), contiguous, intent(out) :: eps(:, :)
       type(error_t), allocatable, intent(out) :: error
-      type(massif_point_t) :: pt
-      integer :: ig, ndof
-      ndof = 2*rule%nnode
+      real(wp) :: dndx(2, MAX_NODES), hr(MAX_NODES), dvol
+      integer :: ig, ndof, nn
+      nn = rule%nnode
+      ndof = 2*nn
       call check_shapes(rule, xe, ndof, size(ue), 'massif_strains', error)
       if (allocated(error)) return
       if (any(shape(eps) /= [4, rule%ngauss])) then
@@ -103,9 +108,10 @@ contains
          return
       end if
       do ig = 1, rule%ngauss
-         call massif_gauss_point(rule, ig, analysis_kind, thickness, xe, pt, error)
+         call massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, &
+            error)
          if (allocated(error)) return
-         eps(:, ig) = matmul(pt%b(:, 1:ndof), ue)
+         call point_strain(nn, dndx, hr, ue, eps(:, ig))
       end do
    end subroutine massif_strains
 

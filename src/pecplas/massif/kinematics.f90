@@ -12,7 +12,7 @@ module pecplas_massif_kinematics
    private
 
    public :: MAX_NODES, massif_point_t, massif_rule_t, new_massif_rule
-   public :: massif_point, massif_gauss_point
+   public :: massif_point, massif_gauss_point, massif_gauss_derivs
 
    !> Largest number of nodes of a massif element (Q8); sizes the fixed point arrays.
    integer, parameter :: MAX_NODES = 8
@@ -94,53 +94,97 @@ contains
          rule%w(ig), pt, error)
    end subroutine massif_gauss_point
 
+   !> Jacobian data of integration point `ig` of a tabulated rule without the strain
+   !> matrix: dndx(2, nnode) = dN/dx, dN/dy; hr(nnode) = N/r, the hoop row of B
+   !> (axisymmetric; zero in plane strain); dvol. The structured kernels
+   !> (pecplas_massif_point_kernels) need only these; B is never formed or zeroed.
+   subroutine massif_gauss_derivs(rule, ig, analysis_kind, thickness, xe, dndx, hr, dvol, error)
+      type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: ig, analysis_kind
+      ! explicit shapes: no descriptors and no packing checks in the element loops
+      real(wp), intent(in) :: thickness, xe(2, rule%nnode)
+      real(wp), intent(out) :: dndx(2, rule%nnode), hr(rule%nnode), dvol
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: x(2), detj
+      call point_derivatives(rule%nnode, rule%n(:, ig), rule%dn(:, :, ig), analysis_kind, &
+         thickness, xe, rule%w(ig), x, detj, dndx, hr, dvol, error)
+   end subroutine massif_gauss_derivs
+
    subroutine point_from_shape(n, dn, analysis_kind, thickness, xe, w, pt, error)
       real(wp), intent(in) :: n(:), dn(:, :)
       integer, intent(in) :: analysis_kind
       real(wp), intent(in) :: thickness, xe(:, :), w
       type(massif_point_t), intent(out) :: pt
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: jac(2, 2), r
-      character(len=120) :: buf
+      real(wp) :: hr(MAX_NODES)
       integer :: k, nn
       nn = size(n)
       pt%nnode = nn
       pt%n(1:nn) = n
-      pt%x = matmul(xe, n)
-      ! jac(a, b) = d x_b / d xi_a, so dN/dxi = jac dN/dx
-      jac = matmul(dn, transpose(xe))
-      pt%detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
-      if (.not. (pt%detj > 0.0_wp)) then
-         write (buf, '(a,es10.3,a,2es11.3,a)') 'detJ =', pt%detj, ' near (', pt%x, ')'
-         call input_error(error, 'massif element inverted or nodes not counter-clockwise: ' &
-            //trim(buf))
-         return
-      end if
-      pt%dndx(1, 1:nn) = (jac(2, 2)*dn(1, :) - jac(1, 2)*dn(2, :))/pt%detj
-      pt%dndx(2, 1:nn) = (jac(1, 1)*dn(2, :) - jac(2, 1)*dn(1, :))/pt%detj
+      call point_derivatives(nn, n, dn, analysis_kind, thickness, xe, w, pt%x, pt%detj, &
+         pt%dndx(:, 1:nn), hr(1:nn), pt%dvol, error)
+      if (allocated(error)) return
       pt%b(:, 1:2*nn) = 0.0_wp
       do k = 1, nn
          pt%b(1, 2*k - 1) = pt%dndx(1, k)
          pt%b(2, 2*k) = pt%dndx(2, k)
+         pt%b(3, 2*k - 1) = hr(k)
          pt%b(4, 2*k - 1) = pt%dndx(2, k)
          pt%b(4, 2*k) = pt%dndx(1, k)
       end do
+   end subroutine point_from_shape
+
+   !> Position x, detJ, dN/dx, N/r (zero in plane strain) and dvol at a point with shape
+   !> values n(nn) and reference derivatives dn(2, nn): the one place where the Jacobian
+   !> and its error messages live.
+   subroutine point_derivatives(nn, n, dn, analysis_kind, thickness, xe, w, x, detj, dndx, &
+         hr, dvol, error)
+      integer, intent(in) :: nn, analysis_kind
+      real(wp), intent(in) :: n(nn), dn(2, nn), xe(2, nn)
+      real(wp), intent(in) :: thickness, w
+      real(wp), intent(out) :: x(2), detj, dvol
+      real(wp), intent(out) :: dndx(2, nn), hr(nn)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: jac(2, 2), r, rdet
+      character(len=120) :: buf
+      integer :: k
+      ! jac(a, b) = d x_b / d xi_a, so dN/dxi = jac dN/dx
+      x = 0.0_wp
+      jac = 0.0_wp
+      do k = 1, nn
+         x = x + xe(:, k)*n(k)
+         jac(:, 1) = jac(:, 1) + dn(:, k)*xe(1, k)
+         jac(:, 2) = jac(:, 2) + dn(:, k)*xe(2, k)
+      end do
+      detj = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+      if (.not. (detj > 0.0_wp)) then
+         write (buf, '(a,es10.3,a,2es11.3,a)') 'detJ =', detj, ' near (', x, ')'
+         call input_error(error, 'massif element inverted or nodes not counter-clockwise: ' &
+            //trim(buf))
+         return
+      end if
+      rdet = 1.0_wp/detj
+      do k = 1, nn
+         dndx(1, k) = (jac(2, 2)*dn(1, k) - jac(1, 2)*dn(2, k))*rdet
+         dndx(2, k) = (jac(1, 1)*dn(2, k) - jac(2, 1)*dn(1, k))*rdet
+      end do
       select case (analysis_kind)
       case (PLANE_STRAIN)
-         pt%dvol = w*pt%detj*thickness
+         hr = 0.0_wp
+         dvol = w*detj*thickness
       case (AXISYMMETRIC)
-         r = pt%x(1)
+         r = x(1)
          if (.not. (r > 0.0_wp)) then
-            write (buf, '(a,es10.3,a,2es11.3,a)') 'r =', r, ' at integration point (', pt%x, ')'
+            write (buf, '(a,es10.3,a,2es11.3,a)') 'r =', r, ' at integration point (', x, ')'
             call input_error(error, 'axisymmetric massif element needs r > 0 inside it: ' &
                //trim(buf))
             return
          end if
-         pt%b(3, 1:2*nn - 1:2) = n/r
-         pt%dvol = w*pt%detj*TWO_PI*r
+         hr = n/r
+         dvol = w*detj*TWO_PI*r
       case default
          call fatal_error(error, 'massif kinematics: unknown analysis kind')
       end select
-   end subroutine point_from_shape
+   end subroutine point_derivatives
 
 end module pecplas_massif_kinematics
