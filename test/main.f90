@@ -64,6 +64,7 @@ program tester
    use test_linalg_cholmod_ordering, only: collect_linalg_cholmod_ordering
    use test_io_deck_mesh_lines, only: collect_io_deck_mesh_lines
    use test_massif_kernels, only: collect_massif_kernels
+   use test_linalg_omp_serial, only: collect_linalg_omp_serial
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -134,6 +135,7 @@ program tester
    suites = [suites, new_testsuite('io_deck_mesh_lines', collect_io_deck_mesh_lines)]
    suites = [suites, new_testsuite('io_results_copies', collect_io_results_copies)]
    suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
+   suites = [suites, new_testsuite('linalg_omp_serial', collect_linalg_omp_serial)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -30,6 +30,8 @@ module pecplas_linalg_cholmod
    public :: pecplas_cholmod_flops, pecplas_cholmod_peak_memory, pecplas_cholmod_set_ordering
    public :: ORDER_RULE, ORDER_CHOLMOD_DEFAULT, ORDER_METIS_NODES, ORDER_AMD, ORDER_METIS
    public :: ORDER_NESDIS
+   ! Serial OpenMP regions around a one-thread factorisation (omp_serial.c), for tests.
+   public :: pecplas_omp_serial_begin, pecplas_omp_serial_end
 
    !> Orderings pecplas_cholmod_set_ordering accepts: the project's rule (the default of every
    !> new handle), CHOLMOD's own default strategy, METIS on the graph of nodes (equations with
@@ -40,6 +42,11 @@ module pecplas_linalg_cholmod
    integer(c_int), parameter :: CHOLMOD_OK = 0, CHOLMOD_NOT_POSDEF = 1
 
    interface
+      !> Until pecplas_omp_serial_end, OpenMP regions of this thread run on it alone.
+      subroutine pecplas_omp_serial_begin() bind(C)
+      end subroutine
+      subroutine pecplas_omp_serial_end() bind(C)
+      end subroutine
       type(c_ptr) function pecplas_cholmod_new(ldl) bind(C)
          import :: c_ptr, c_int
          integer(c_int), value :: ldl

@@ -22,6 +22,10 @@
 #include <omp.h>
 #endif
 
+/* omp_serial.c: OpenMP regions of the calling thread run serially in between */
+void pecplas_omp_serial_begin(void);
+void pecplas_omp_serial_end(void);
+
 /* Requested fill-reducing ordering: the project's rule, CHOLMOD's own default strategy, or
  * one CHOLMOD ordering code (CHOLMOD_AMD, CHOLMOD_METIS, CHOLMOD_NESDIS, ...). */
 enum { PECPLAS_ORDER_RULE = -1, PECPLAS_ORDER_CHOLMOD_DEFAULT = -2, PECPLAS_ORDER_METIS_NODES = -3 };
@@ -241,11 +245,13 @@ int pecplas_cholmod_factorise(void *handle, int n, const int *colptr, const int 
      * oversubscribes. Dynamic adjustment caps a team at min(cores, omp_get_max_threads())
      * less the load average, so never above the program's thread setting
      * (pecplas_threads_set); restored afterwards. */
-    int dynamic = omp_get_dynamic();
+    int dynamic = omp_get_dynamic(), one = omp_get_max_threads() == 1;
     omp_set_dynamic(1);
+    if (one) pecplas_omp_serial_begin(); /* omp_serial.c: no team of one per region */
 #endif
     cholmod_factorize(&a, h->L, &h->c);
 #ifdef _OPENMP
+    if (one) pecplas_omp_serial_end();
     omp_set_dynamic(dynamic);
 #endif
     return h->c.status;
