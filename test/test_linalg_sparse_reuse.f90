@@ -30,7 +30,8 @@ contains
                new_unittest('joints_after_state_change', test_joints), &
                new_unittest('pattern_from_blocks_equals_full', test_pattern), &
                new_unittest('pattern_from_blocks_threads', test_pattern_threads), &
-               new_unittest('block_positions_replay', test_block_replay)]
+               new_unittest('block_positions_replay', test_block_replay), &
+               new_unittest('pattern_node_groups', test_node_groups)]
    end subroutine collect_linalg_sparse_reuse
 
    !> Fills `b` (after start) with nt pseudo-random triplets of an n x n matrix, many of them
@@ -313,5 +314,63 @@ contains
          maxval(abs(kel%values - kfull%values)) > 1.0e-6_wp*maxval(abs(kfull%values)), &
          'the tangent differs from the elastic stiffness (the map rewrote the values)')
    end subroutine test_joints
+
+   !> Blocks of a node grid (equations 2k-1, 2k of node k, as the massif assembly numbers
+   !> them; some equations fixed, 0) with extra triplets on a few columns, one of them the
+   !> second equation of a node: the columns of a node gather their rows once
+   !> (pattern_from_blocks), and the pattern and the assembled values still equal coo_to_csc
+   !> of the same triplets exactly, full and upper storage.
+   subroutine test_node_groups(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: NXN = 7, NYN = 5, NB = (NXN - 1)*(NYN - 1), ND = 8
+      integer, parameter :: NEQ = 2*NXN*NYN, XCOLS(3) = [8, 21, NEQ]
+      type(csc_builder_t) :: b, bref
+      type(csc_t) :: k, ref
+      real(wp) :: kb(ND, ND)
+      integer :: elist(ND*NB), eptr(NB + 1), eq(NEQ), nodes(4), e, i, ix, iy, iu, c
+      logical :: upper
+      eq = [(i, i=1, NEQ)]
+      eq([1, 2, 15, 40]) = 0  ! a fixed node and two single fixed equations
+      eptr = [(1 + ND*i, i=0, NB)]
+      e = 0
+      do iy = 1, NYN - 1
+         do ix = 1, NXN - 1
+            e = e + 1
+            nodes = [ix + (iy - 1)*NXN, ix + 1 + (iy - 1)*NXN, ix + 1 + iy*NXN, ix + iy*NXN]
+            do c = 1, 4
+               elist(eptr(e) + 2*c - 2) = eq(2*nodes(c) - 1)
+               elist(eptr(e) + 2*c - 1) = eq(2*nodes(c))
+            end do
+         end do
+      end do
+      do iu = 1, 2
+         upper = iu == 2
+         call bref%start(NEQ, 16, upper_only=upper)
+         call b%start(NEQ, 16, upper_only=upper)
+         do e = 1, NB
+            kb = reshape(det_vector(ND*ND, 20 + e), [ND, ND])
+            call bref%coo%add_block(elist(eptr(e):eptr(e + 1) - 1), kb)
+         end do
+         ! extra triplets in columns 8 (first equation of node 4), 21 (second of node 11)
+         ! and 70 (last), rows far from the columns' own blocks
+         do i = 1, 3
+            call bref%coo%add(3*i, XCOLS(i), real(i, wp))
+            call b%coo%add(3*i, XCOLS(i), real(i, wp))
+         end do
+         call reference(bref, ref, error)
+         if (allocated(error)) return
+         call b%pattern(eptr, elist, k, error)
+         do e = 1, NB
+            if (allocated(error)) return
+            kb = reshape(det_vector(ND*ND, 20 + e), [ND, ND])
+            call k%add_block(elist(eptr(e):eptr(e + 1) - 1), kb, error)
+         end do
+         if (.not. allocated(error)) call b%add_extra(k, error)
+         if (allocated(error)) return
+         call check(error, same_matrix(k, ref), 'node-grid pattern and values equal '// &
+            'coo_to_csc exactly, upper = '//merge('T', 'F', upper))
+         if (allocated(error)) return
+      end do
+   end subroutine test_node_groups
 
 end module test_linalg_sparse_reuse

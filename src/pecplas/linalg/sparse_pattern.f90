@@ -1,7 +1,8 @@
 !> The CSC pattern of an assembled matrix built straight from the element equation lists
 !> (and a few extra triplets), without sorting one triplet per element-matrix entry: each
 !> column j gathers the equations of the blocks that contain j (an equation-to-block
-!> incidence), marked once, then sorted (a column holds some tens of rows). The cost is
+!> incidence), marked once, then sorted (a column holds some tens of rows); the columns of
+!> one node, which lie in the same blocks, gather and sort their rows once. The cost is
 !> that of touching every element-matrix entry once, in cache-friendly order, with no
 !> triplet storage; the values are then scattered through `csc%locate`.
 module pecplas_linalg_sparse_pattern
@@ -28,8 +29,9 @@ contains
       type(coo_t), intent(in) :: extra
       type(csc_t), intent(out) :: csc
       type(error_t), allocatable, intent(out) :: error
-      integer(ik4), allocatable :: iptr(:), inc(:), xptr(:), xrow(:), mark(:), cnt(:)
-      integer :: nb, b, p, j, k, nx, pass, q, i
+      integer(ik4), allocatable :: iptr(:), inc(:), xptr(:), xrow(:), mark(:), cnt(:), &
+         gfirst(:), buf(:)
+      integer :: nb, b, p, j, k, nx, pass, q, i, g, ng, j1, jj, m, maxrows
       nb = size(eptr) - 1
       nx = extra%nnz
       if (any(elist > n)) then
@@ -74,44 +76,78 @@ contains
          xrow(cnt(j)) = extra%rows(k)
          cnt(j) = cnt(j) + 1
       end do
-      ! pass 1 counts the rows of each column, pass 2 writes them; mark(i) = j: row i is in
-      ! column j already. Columns are independent: threads share them, each with its marks.
+      ! Consecutive columns with the same blocks and no extra triplet (the equations of one
+      ! node) have the same rows (full) or nested prefixes of them (upper): a group of such
+      ! columns gathers and sorts its rows once.
+      allocate (gfirst(n + 1))
+      ng = 0
+      do j = 1, n
+         if (j > 1) then
+            if (xptr(j + 1) == xptr(j) .and. xptr(j) == xptr(j - 1) .and. &
+                iptr(j + 1) - iptr(j) == iptr(j) - iptr(j - 1)) then
+               if (all(inc(iptr(j):iptr(j + 1) - 1) == inc(iptr(j - 1):iptr(j) - 1))) cycle
+            end if
+         end if
+         ng = ng + 1
+         gfirst(ng) = int(j, ik4)
+      end do
+      gfirst(ng + 1) = int(n + 1, ik4)
+      ! the most rows a group can gather (with repeats): the buffer of each thread
+      maxrows = 0
+      do g = 1, ng
+         j = gfirst(g)
+         q = xptr(j + 1) - xptr(j)
+         do k = iptr(j), iptr(j + 1) - 1
+            q = q + eptr(inc(k) + 1) - eptr(inc(k))
+         end do
+         maxrows = max(maxrows, q)
+      end do
+      ! pass 1 counts the rows of each column, pass 2 writes them; mark(i) = g: row i is in
+      ! group g already. Groups are independent: threads share them, each with its marks.
       csc%n = n
       csc%upper = upper
       allocate (csc%colptr(n + 1))
       do pass = 1, 2
-         !$omp parallel default(shared) private(mark, j, q, k, b, p, i) if (n >= PARALLEL_MIN)
-         allocate (mark(n))
+         !$omp parallel default(shared) private(mark, buf, g, j, j1, jj, q, m, k, b, p, i) &
+         !$omp if (n >= PARALLEL_MIN)
+         allocate (mark(n), buf(max(maxrows, 1)))
          mark = 0
          !$omp do schedule(static)
-         do j = 1, n
+         do g = 1, ng
+            j = gfirst(g)
+            j1 = gfirst(g + 1) - 1
             q = 0
             do k = iptr(j), iptr(j + 1) - 1
                b = inc(k)
                do p = eptr(b), eptr(b + 1) - 1
                   i = elist(p)
                   if (i <= 0) cycle
-                  if (mark(i) == j .or. (upper .and. i > j)) cycle
-                  mark(i) = int(j, ik4)
+                  if (mark(i) == g .or. (upper .and. i > j1)) cycle
+                  mark(i) = int(g, ik4)
                   q = q + 1
-                  if (pass == 2) csc%rowind(csc%colptr(j) + q) = i
+                  buf(q) = int(i, ik4)
                end do
             end do
             do k = xptr(j), xptr(j + 1) - 1
                i = xrow(k)
-               if (mark(i) == j .or. (upper .and. i > j)) cycle
-               mark(i) = int(j, ik4)
+               if (mark(i) == g .or. (upper .and. i > j1)) cycle
+               mark(i) = int(g, ik4)
                q = q + 1
-               if (pass == 2) csc%rowind(csc%colptr(j) + q) = i
+               buf(q) = int(i, ik4)
             end do
-            if (pass == 1) then
-               cnt(j) = int(q, ik4)
-            else
-               call sort_rows(csc%rowind(csc%colptr(j) + 1:csc%colptr(j + 1)))
-            end if
+            if (pass == 2) call sort_rows(buf(1:q))
+            do jj = j, j1
+               m = q
+               if (upper .and. jj < j1) m = count(buf(1:q) <= jj)
+               if (pass == 1) then
+                  cnt(jj) = int(m, ik4)
+               else
+                  csc%rowind(csc%colptr(jj) + 1:csc%colptr(jj) + m) = buf(1:m)
+               end if
+            end do
          end do
          !$omp end do
-         deallocate (mark)
+         deallocate (mark, buf)
          !$omp end parallel
          if (pass == 1) then
             csc%colptr(1) = 0
