@@ -137,3 +137,20 @@ def test_elastic_scaling_slopes_and_kink_verdict():
     assert p < 1.25 and abs(slopes[-1][2] - (1.1 + math.log(1.8) / math.log(2))) < 1e-12
     met, text = el.verdict(p, slopes)
     assert not met and "not met" in text
+
+
+def test_solver_overhead_lines_add_up():
+    import re
+    import bench_solver
+    # one 1e6 row: total 6.0, bare 4.0; the named parts and the rest add up to total - bare
+    d = {c: 0.0 for c in bench_solver.COLUMNS + bench_solver.EXTRA}
+    d.update(element="Q4", equations=999698, read_setup_s=0.4, assembly_s=0.5,
+             factorisation_s=3.8, solve_s=0.25, residual_s=0.15, output_s=0.45, total_s=6.0,
+             bare_cholmod_s=4.0, threads=1)
+    row = [d[c] for c in bench_solver.COLUMNS + bench_solver.EXTRA]
+    small = list(row)
+    small[bench_solver.COLUMNS.index("equations")] = 99458
+    lines = bench_solver.overhead_lines([small, row])
+    assert len(lines) == 3 and lines[2].startswith("- Q4 at 1e6, 1 thread(s): total - bare = 2.00 s")
+    nums = [float(x) for x in re.findall(r"[-+]?\d+\.\d+", lines[2].split("=", 2)[2])]
+    assert abs(sum(nums) - 2.0) < 1e-9   # 0.40 + 0.50 + 0.15 + 0.45 + 0.45 + 0.05
