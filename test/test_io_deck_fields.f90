@@ -26,7 +26,8 @@ contains
                new_unittest('first_repeat', test_repeat), &
                new_unittest('numbers_as_fortran_read', test_numbers_as_read), &
                new_unittest('long_numbers_as_fortran_read', test_long_numbers_as_read), &
-               new_unittest('deck_lines_cleaned', test_lines_cleaned)]
+               new_unittest('deck_lines_cleaned', test_lines_cleaned), &
+               new_unittest('deck_raw_text_exact', test_raw_text)]
    end subroutine collect_io_deck_fields
 
    subroutine test_numbers_ok(error)
@@ -320,5 +321,59 @@ contains
          lines(102)%keyword == '*ELEMENTS' .and. lines(102)%line == 105, &
          "last line without a line end: found '"//lines(102)%text//"'")
    end subroutine test_lines_cleaned
+
+   !> The raw deck text kept for provenance is each file's bytes after a `** ---- file:`
+   !> line (a line end added to a file without one, a byte order mark dropped), in reading
+   !> order with an include after its parent: taken from the line buffer when no file holds
+   !> a tab or carriage return, copied before the cleaning otherwise (here the include
+   !> holds both: the raw text keeps them, the lines do not).
+   subroutine test_raw_text(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: main = 'build/test_io_deck_raw.inp', &
+         inc = 'build/test_io_deck_raw_inc.inp', NL = achar(10)
+      character(len=*), parameter :: crlf = achar(13)//achar(10), tab = achar(9)
+      type(deck_line_t), allocatable :: lines(:)
+      character(len=:), allocatable :: raw, main_text, inc_text, expected
+      integer :: pass
+      main_text = '*NODES'//NL//'1, 0.0, 0.0'//NL//'*INCLUDE, FILE=test_io_deck_raw_inc.inp'// &
+         NL//'3, 2.0, 0.0'
+      do pass = 1, 2
+         if (pass == 1) then
+            inc_text = '2, 1.0, 0.0'//NL
+         else
+            inc_text = achar(239)//achar(187)//achar(191)//'2,'//tab//'1.0, 0.0'//crlf
+         end if
+         call write_text(main, main_text)
+         call write_text(inc, inc_text)
+         call read_deck_lines(main, lines, raw, error)
+         if (allocated(error)) return
+         expected = '** ---- file: '//main//NL//main_text//NL//'** ---- file: '//inc//NL
+         if (pass == 1) then
+            expected = expected//inc_text
+         else
+            expected = expected//inc_text(4:)
+         end if
+         call check(error, raw == expected, 'raw text exact, '// &
+            merge('clean files (from the buffer)   ', 'tab and CR in the include (copy)', &
+            pass == 1)//": got '"//raw//"'")
+         if (allocated(error)) return
+         call check(error, size(lines) == 4, 'four lines read')
+         if (allocated(error)) return
+         call check(error, lines(3)%text == '2, 1.0, 0.0' .and. lines(3)%file == inc .and. &
+            lines(4)%text == '3, 2.0, 0.0' .and. lines(4)%line == 4, "include's line "// &
+            "cleaned, the main deck's last line after it: '"//lines(3)%text//"', '"// &
+            lines(4)%text//"'")
+         if (allocated(error)) return
+      end do
+   contains
+      subroutine write_text(path, text)
+         character(len=*), intent(in) :: path, text
+         integer :: u
+         open (newunit=u, file=path, access='stream', form='unformatted', &
+            status='replace', action='write')
+         write (u) text
+         close (u)
+      end subroutine write_text
+   end subroutine test_raw_text
 
 end module test_io_deck_fields

@@ -9,7 +9,7 @@ module pecplas_io_deck_line_store
    implicit none (type, external)
    private
 
-   public :: deck_lines_t, name_t, add_name, next_line
+   public :: deck_lines_t, name_t, add_name, next_line, find_byte
 
    !> One name of a table (a file path, a keyword).
    type :: name_t
@@ -18,8 +18,13 @@ module pecplas_io_deck_line_store
 
    !> Lines 1..n of a deck with its includes expanded.
    type :: deck_lines_t
-      !> Cleaned text of every file read (tabs and carriage returns as blanks), back to back.
+      !> Text of every file read, back to back, each after a `** ---- file: <path>` line;
+      !> cleaned: tabs and carriage returns of the lines read become blanks.
       character(len=:), allocatable :: buf
+      !> Whether buf is also the raw text of the files (none held a tab or carriage
+      !> return, so the cleaning changed nothing): the deck text for provenance is then
+      !> taken from buf (take_text) instead of being kept as a second copy.
+      logical :: raw_in_buf = .true.
       integer :: n = 0
       !> Line k is buf(i1(k):i2(k)), line num(k) of files(file_of(k)), under the keyword
       !> keywords(kw_of(k)) (kw_of = 0 before the first keyword).
@@ -34,6 +39,7 @@ module pecplas_io_deck_line_store
       procedure :: is_keyword => lines_is_keyword
       procedure :: push => lines_push
       procedure :: resize => lines_resize
+      procedure :: take_text => lines_take_text
    end type deck_lines_t
 
    interface
@@ -114,6 +120,19 @@ contains
       this%file_of(this%n) = file_id
       this%kw_of(this%n) = kw_id
    end subroutine lines_push
+
+   !> The raw text of the files read: `raw` as read_deck_store left it, or, when buf holds
+   !> it (raw_in_buf), buf itself, moved into `raw` without a copy; the lines of the store
+   !> are no longer readable after that.
+   subroutine lines_take_text(this, raw)
+      class(deck_lines_t), intent(inout) :: this
+      character(len=:), allocatable, intent(inout) :: raw
+      if (.not. this%raw_in_buf) return
+      call move_alloc(this%buf, raw)
+      this%buf = ''
+      this%n = 0
+      this%raw_in_buf = .false.
+   end subroutine lines_take_text
 
    !> Room for `capacity` lines (>= n).
    pure subroutine lines_resize(this, capacity)

@@ -7,7 +7,7 @@ module pecplas_io_deck_lines
    use pecplas_error, only: error_t, deck_error, input_error
    use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, parse_keyword_line, &
       keyword_name
-   use pecplas_io_deck_line_store, only: deck_lines_t, add_name, next_line
+   use pecplas_io_deck_line_store, only: deck_lines_t, add_name, next_line, find_byte
    implicit none (type, external)
    private
 
@@ -16,6 +16,7 @@ module pecplas_io_deck_lines
 
    character(len=*), parameter :: NL = new_line('a')
    character(len=*), parameter :: BOM = achar(239)//achar(187)//achar(191)
+   integer, parameter :: TAB = 9, CR = 13
 
 contains
 
@@ -35,10 +36,13 @@ contains
       do i = 1, store%n
          lines(i) = store%get(i)
       end do
+      call store%take_text(raw)
    end subroutine read_deck_lines
 
    !> Logical lines of the deck `path` with includes expanded, in one text buffer, and the
-   !> raw text of all files read as in read_deck_lines.
+   !> raw text of all files read as in read_deck_lines: in `raw`, or, when the buffer is that
+   !> text (store%raw_in_buf), still in the buffer, for store%take_text once the lines have
+   !> been read (a mesh deck of 40 MB is then held once, not twice).
    subroutine read_deck_store(path, store, raw, error)
       character(len=*), intent(in) :: path
       type(deck_lines_t), intent(out) :: store
@@ -68,10 +72,11 @@ contains
       character(len=:), allocatable :: text, line, name, incl
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
-      integer :: lineno, i1, i2, nt, pos, base, file_id, ahead(4)
+      integer :: lineno, i1, i2, nt, pos, base, file_id, ahead(4), head
       logical :: found
 
-      call read_text_file(path, text, found)
+      ! the file's text after its `** ---- file:` line, read in place behind it
+      call read_text_file(path, text, found, '** ---- file: '//path//NL)
       if (.not. found) then
          if (origin_line == 0) then
             call input_error(error, "cannot read deck file '"//path//"'")
@@ -81,22 +86,30 @@ contains
          end if
          return
       end if
+      head = len('** ---- file: '//path//NL)
       ! a UTF-8 byte order mark (written by some Windows editors) is not part of the text
-      if (len(text) >= 3) then
-         if (text(1:3) == BOM) text = text(4:)
+      if (len(text) >= head + 3) then
+         if (text(head + 1:head + 3) == BOM) text = text(1:head)//text(head + 4:)
       end if
-      raw = raw//'** ---- file: '//path//NL//text
-      if (len(text) > 0) then
-         if (text(len(text):len(text)) /= NL) raw = raw//NL
+      if (len(text) > head) then
+         if (text(len(text):len(text)) /= NL) text = text//NL
       end if
       file_id = size(store%files) + 1
       call add_name(store%files, path)
+      ! the raw text for provenance: the buffer itself while no file read holds a tab or a
+      ! carriage return (the only bytes the line sweep below changes), else a copy
+      if (store%raw_in_buf .and. (find_byte(text, head + 1, TAB) <= len(text) .or. &
+                                  find_byte(text, head + 1, CR) <= len(text))) then
+         raw = store%buf
+         store%raw_in_buf = .false.
+      end if
+      if (.not. store%raw_in_buf) raw = raw//text
 
       ! the text joins the buffer whole: lines are offsets into it, found in one sweep
       ! that also turns tabs and carriage returns into blanks (the raw text keeps them)
-      nt = len(text)
-      base = len(store%buf)
-      if (base == 0) then
+      nt = len(text) - head
+      base = len(store%buf) + head
+      if (len(store%buf) == 0) then
          call move_alloc(text, store%buf)
       else
          store%buf = store%buf//text
@@ -162,13 +175,17 @@ contains
       s = s//path
    end function chain
 
-   !> Whole content of a text file; found = .false. if it cannot be opened or read.
-   subroutine read_text_file(path, text, found)
+   !> Whole content of a text file, after `prefix` if given (read in place behind it, no
+   !> copy); found = .false. if it cannot be opened or read.
+   subroutine read_text_file(path, text, found, prefix)
       character(len=*), intent(in) :: path
       character(len=:), allocatable, intent(out) :: text
       logical, intent(out) :: found
-      integer :: u, ios, nbytes
+      character(len=*), intent(in), optional :: prefix
+      integer :: u, ios, nbytes, lp
       logical :: exists
+      lp = 0
+      if (present(prefix)) lp = len(prefix)
       text = ''
       found = .false.
       inquire (file=path, exist=exists)
@@ -182,8 +199,9 @@ contains
          return
       end if
       deallocate (text)
-      allocate (character(len=nbytes) :: text)
-      if (nbytes > 0) read (u, iostat=ios) text
+      allocate (character(len=lp + nbytes) :: text)
+      if (lp > 0) text(1:lp) = prefix
+      if (nbytes > 0) read (u, iostat=ios) text(lp + 1:)
       close (u)
       found = ios == 0
    end subroutine read_text_file

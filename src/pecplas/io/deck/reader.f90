@@ -116,6 +116,8 @@ contains
       if (allocated(error)) return
       call record_places(state, model)
       call check_usage(state, model)
+      ! the deck text for provenance, from the line buffer when that is it (no copy)
+      call state%lines%take_text(model%deck_text)
    end subroutine read_deck_with
 
    !> Hands one keyword block to its handler.
