@@ -14,7 +14,8 @@ honest statuses (doc/theory.md, 'Nonlinear solution').
   its uplift at 2.83 kN equals the imposed-uplift run within 1 % (measured 0.11 %);
 - stability: S1 opening-closing and S2 (Mohr-Coulomb interface) for K_n / E = 1, 1e4, 1e8
   complete under the default chain; QUASI_NEWTON alone completes at 1e8 within a mean of
-  45 iterations per increment (measured 29.5 on S1, 36.9 on S2).
+  45 iterations per increment (measured 31.6 on S1, 36.5 on S2; round-off moves it by a few
+  per cent).
 """
 import re
 import sys
