@@ -61,7 +61,7 @@ contains
       end if
       ! with the state to restart from, replaced at every converged increment (with the
       ! fields, its lent arrays by reference: pack_restart does not read them)
-      call results%write_increment(r, error, pack_restart(problem, r%write_fields), final)
+      call results%write_increment(r, error, pack_restart(model, problem, r%write_fields), final)
       if (r%write_fields) call give_back(problem, r)
    end subroutine write_increment
 

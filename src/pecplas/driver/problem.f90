@@ -26,6 +26,9 @@ module pecplas_driver_problem
 
    public :: problem_t, setup_problem, initialise_stresses
 
+   !> problem_t%k_owner values.
+   integer, parameter, public :: K_SOLVER = 1, K_TSOLVER = 2
+
    type :: problem_t
       type(massif_element_box_t), allocatable :: elems(:)
       !> Integration rule with tabulated shape functions, per element set.
@@ -44,6 +47,12 @@ module pecplas_driver_problem
       class(linear_solver_t), allocatable :: tsolver
       logical :: separate_tangent = .false., tangent_factorised = .false.
       type(csc_t) :: k
+      !> The solver whose factorisation holds the values now in k (K_SOLVER, K_TSOLVER, or
+      !> 0: an assembly not, or not yet, factorised), and whether the solver's factorisation
+      !> is still that of the set-up stiffness: the restart data carries the matrices
+      !> factorised during the run (pecplas_driver_restart).
+      integer :: k_owner = 0
+      logical :: solver_moved = .false.
       !> Triplet storage and scatter map of the stiffness re-assembly (pecplas_linalg_sparse_reuse).
       type(csc_builder_t) :: kbuild
       !> Katona contact doublets (inactive when no joint set has a KATONA law).

@@ -4,13 +4,15 @@
 !> Packed: the position in the step loop (pecplas_driver_position) and the run counters,
 !> displacements, pattern factors, converged internal forces, the massif's stresses,
 !> strains and histories, the joints' law strains, stresses, histories and modes, and the
-!> Katona doublets' states and multipliers.
+!> Katona doublets' states and multipliers, and the matrices factorised during the run that
+!> its next iterations solve with (item `operators`: see pack_restart).
 module pecplas_driver_restart
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, input_error, fatal_error
    use pecplas_strings, only: itoa
    use pecplas_model, only: model_t
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_driver_problem, only: problem_t, K_SOLVER, K_TSOLVER
+   use pecplas_driver_stiffness, only: factorise_values, partitioned
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
    implicit none (type, external)
    private
@@ -28,10 +30,19 @@ contains
    !> (pecplas_driver_output): the displacements and the massif's stresses, strains and
    !> histories are then given by reference to them (the results file links its datasets)
    !> instead of copied.
-   function pack_restart(problem, fields) result(data)
+   !> The next increment's first iteration solves with the last factorisation (full Newton:
+   !> the tangent of the last iterate that refactorised; a full-Newton fallback: its own
+   !> solver's). Its matrix is packed (`operator`, `tangent_operator`; the item `operators`
+   !> says which, and the Katona augmentation factor) unless it is the set-up stiffness,
+   !> which the restarted run factorises anyway, so that the restarted run solves with the
+   !> same factorisations. Not with *OUTPUT, EXACT_RESTART=NO, nor in a run whose ranks
+   !> each hold a part of the matrix.
+   function pack_restart(model, problem, fields) result(data)
+      type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       logical, intent(in) :: fields
       type(restart_data_t) :: data
+      real(wp) :: ops(3)
       integer :: s
       associate (p => problem%position, st => problem%state, kt => problem%katona)
          call data%add('position', [LAYOUT, real(p%istep, wp), real(p%inc_in_step, wp), &
@@ -75,6 +86,17 @@ contains
             call data%add('katona_z', reshape(kt%z, [size(kt%z)]))
             call data%add('katona_anchor', kt%anchor)
          end if
+         ops = [0.0_wp, 0.0_wp, kt%alpha]
+         if (model%output%exact_restart .and. .not. partitioned(model)) then
+            if (problem%solver_moved .and. problem%k_owner == K_SOLVER) then
+               call data%add('operator', problem%k%values)
+               ops(1) = 1.0_wp
+            else if (problem%tangent_factorised .and. problem%k_owner == K_TSOLVER) then
+               call data%add('tangent_operator', problem%k%values)
+               ops(2) = 1.0_wp
+            end if
+         end if
+         call data%add('operators', ops)
       end associate
    end function pack_restart
 
@@ -110,6 +132,7 @@ contains
          return
       end if
       call unpack_data(data, model, problem, error)
+      if (.not. allocated(error)) call restore_operators(data, model, problem, error)
       if (allocated(error)) then
          msg = error%text()
          call input_error(error, 'cannot restart from '//path// &
@@ -196,6 +219,28 @@ contains
       end associate
    end subroutine unpack_data
 
+   !> Factorises the matrices the interrupted run had factorised (see pack_restart); data
+   !> without the item `operators` (written before it existed) restarts from the set-up
+   !> factorisation.
+   subroutine restore_operators(data, model, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: ops(:), v(:)
+      if (.not. data%has('operators')) return
+      call data%get('operators', 3, ops, error)
+      if (allocated(error)) return
+      if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
+      if (ops(1) /= 0.0_wp) then
+         call data%get('operator', problem%k%nnz(), v, error)
+         if (.not. allocated(error)) call factorise_values(model, problem, v, .false., error)
+      else if (ops(2) /= 0.0_wp) then
+         call data%get('tangent_operator', problem%k%nnz(), v, error)
+         if (.not. allocated(error)) call factorise_values(model, problem, v, .true., error)
+      end if
+   end subroutine restore_operators
+
    !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
    pure function restart_names(nsets, njoint) result(names)
       integer, intent(in) :: nsets, njoint
@@ -204,7 +249,7 @@ contains
       integer :: s
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
-         'katona_anchor']
+         'katona_anchor', 'operators', 'operator', 'tangent_operator']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s)]

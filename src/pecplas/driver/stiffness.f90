@@ -6,7 +6,7 @@ module pecplas_driver_stiffness
    use pecplas_error, only: error_t, ERR_SINGULAR, fatal_error
    use pecplas_model, only: model_t
    use pecplas_model_provenance, only: place_t
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_driver_problem, only: problem_t, K_SOLVER, K_TSOLVER
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
    use pecplas_driver_timers, only: wall_time
@@ -17,7 +17,7 @@ module pecplas_driver_stiffness
    implicit none (type, external)
    private
 
-   public :: factorise_stiffness, linear_solver_name, partitioned
+   public :: factorise_stiffness, factorise_values, linear_solver_name, partitioned
 
 contains
 
@@ -74,6 +74,7 @@ contains
       parts = partitioned(model)
       mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
+      problem%k_owner = 0
       if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
          problem%kbuild, problem%k, error, share_of_run(parts))
@@ -110,6 +111,9 @@ contains
          end if
          return
       end if
+      ! the set-up's is the first factorisation
+      if (problem%factorisations > 0) problem%solver_moved = .true.
+      problem%k_owner = K_SOLVER
       problem%factorisations = problem%factorisations + 1
       problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
    end subroutine factorise_stiffness
@@ -125,6 +129,7 @@ contains
       mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
       problem%tangent_factorised = .false.
+      problem%k_owner = 0
       if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .true., &
          problem%kbuild, problem%k, error, share_of_run(parts))
@@ -145,7 +150,46 @@ contains
       if (allocated(error)) return
       problem%factorisations = problem%factorisations + 1
       problem%tangent_factorised = .true.
+      problem%k_owner = K_TSOLVER
    end subroutine factorise_tangent
+
+   !> A restarted run: factorises the matrix of `values` (a matrix of this run's stiffness
+   !> pattern, factorised by the interrupted run: pecplas_driver_restart) into the run's
+   !> solver, or into the full-Newton fallback's own solver (`tangent_solver`), so that the
+   !> run goes on with the factorisation the interrupted run had.
+   subroutine factorise_values(model, problem, values, tangent_solver, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      real(wp), intent(in) :: values(:)
+      logical, intent(in) :: tangent_solver
+      type(error_t), allocatable, intent(out) :: error
+      if (size(values) /= problem%k%nnz()) then
+         call fatal_error(error, 'a factorised matrix of another pattern')
+         return
+      end if
+      problem%k%values = values
+      problem%k_owner = 0
+      if (tangent_solver) then
+         problem%tangent_factorised = .false.
+         if (.not. allocated(problem%tsolver)) then
+            call new_linear_solver(linear_solver_name(model, .true.), problem%tsolver, error)
+            if (allocated(error)) return
+            call mumps_summed_input(problem%tsolver, partitioned(model))
+            call problem%tsolver%analyse(problem%k, error)
+            if (allocated(error)) return
+         end if
+         call problem%tsolver%factorise(problem%k, error)
+         if (allocated(error)) return
+         problem%tangent_factorised = .true.
+         problem%k_owner = K_TSOLVER
+      else
+         call problem%solver%factorise(problem%k, error)
+         if (allocated(error)) return
+         problem%solver_moved = .true.
+         problem%k_owner = K_SOLVER
+      end if
+      problem%factorisations = problem%factorisations + 1
+   end subroutine factorise_values
 
    !> A singular R with Katona contact (a body held only by its contacts): factorises
    !> R_a = R + alpha D^T D instead, alpha = largest diagonal term of R. The Katona solve is

@@ -54,6 +54,10 @@ module pecplas_model_options
       logical :: stresses = .true., strains = .true., reactions = .true.
       !> Zienkiewicz–Zhu error estimate with the fields (*OUTPUT, ERROR_ESTIMATE=YES).
       logical :: error_estimate = .false.
+      !> The restart data carry the last matrix factorised during the run, so that a
+      !> restarted run repeats the uninterrupted one's arithmetic (*OUTPUT, EXACT_RESTART=NO:
+      !> only the state, the restarted run starting from the set-up factorisation).
+      logical :: exact_restart = .true.
    end type output_options_t
 
 end module pecplas_model_options

@@ -138,7 +138,7 @@ contains
    end subroutine read_solver
 
    !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]
-   !> [, ERROR_ESTIMATE=YES|NO]
+   !> [, ERROR_ESTIMATE=YES|NO] [, EXACT_RESTART=YES|NO]
    subroutine read_output(state, model, block, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -147,7 +147,7 @@ contains
       character(len=:), allocatable :: file
       logical :: found
       call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'FILE', 'EVERY', &
-         'STRESSES', 'STRAINS', 'REACTIONS', 'ERROR_ESTIMATE'], error)
+         'STRESSES', 'STRAINS', 'REACTIONS', 'ERROR_ESTIMATE', 'EXACT_RESTART'], error)
       if (allocated(error)) return
       call block%kw%get('FILE', file, found)
       if (found) model%output%file = file
@@ -160,6 +160,8 @@ contains
       call param_yes_no(state, block, 'REACTIONS', model%output%reactions, error)
       if (allocated(error)) return
       call param_yes_no(state, block, 'ERROR_ESTIMATE', model%output%error_estimate, error)
+      if (allocated(error)) return
+      call param_yes_no(state, block, 'EXACT_RESTART', model%output%exact_restart, error)
    end subroutine read_output
 
    !> *ADAPT, TARGET=1% [, GOAL=energy|node:N:x|y|reaction:SET[:x|y]|limit] [, MAX_DOFS=n]:

@@ -54,6 +54,7 @@ module pecplas_io_results_restart
       procedure :: add => data_add
       procedure :: add_field => data_add_field
       procedure :: get => data_get
+      procedure :: has => data_has
    end type restart_data_t
 
 contains
@@ -130,6 +131,18 @@ contains
       end if
       call fatal_error(error, 'restart data has no '//name)
    end subroutine data_get
+
+   !> True when the data holds an item `name`.
+   logical function data_has(this, name)
+      class(restart_data_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer :: i
+      data_has = .false.
+      if (.not. allocated(this%items)) return
+      do i = 1, this%n
+         if (this%items(i)%name == name) data_has = .true.
+      end do
+   end function data_has
 
    !> Writes `data` (items with values only) as /restart_next of the open file `file`,
    !> overwritten in place (see restart_put); swap_restart then renames it /restart, before
