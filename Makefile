@@ -159,7 +159,8 @@ build-mpi:
 test-mpi: build-mpi
 	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas_tests
 	$(PYTHON) tools/mpi_check.py $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
-	  --singular test/data/cli/roller_only.inp --unit $(MPI_DIR)/pecplas_tests linalg_mumps
+	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
+	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps
 
 bench: deps
 	@bash tools/bench.sh

@@ -11,11 +11,17 @@ directory must hold only the results file and its .xmf afterwards. Decks given w
 --singular hold a mechanism: with MUMPS they must end as input errors (exit 2) that name the
 free node, as CHOLMOD and UMFPACK do, and write no results file. On more than one rank the
 run's summary must say that each rank assembled the stiffness of its own elements (the
-partitioned assembly, doc/mpi.md). --unit runs Fortran test suites of the MPI build's test
+partitioned assembly, doc/mpi.md). --restart DECK N stops DECK (with MUMPS) after N
+increments on each rank count and restarts it on each rank count: a run restarted on the
+rank count that wrote the data of one rank (the last factorised matrix carried) must end on
+the uninterrupted one-rank run's displacements to 1e-12 of their largest; every other pair
+(several ranks hold no whole matrix to carry, doc/mpi.md) must complete within RESTART_TOL of
+the uninterrupted run on the restarting rank count (a different first iteration, the same
+equilibrium to the deck's Newton tolerance). --unit runs Fortran test suites of the MPI build's test
 program (e.g. linalg_mumps) under `mpirun -np N` for each N: every rank must pass them all.
 
 Usage: tools/mpi_check.py PECPLAS_BIN DECK... [--singular DECK...] [--np 1 2] [--work DIR]
-                          [--unit TESTS_BIN SUITE...]
+                          [--restart DECK N] [--unit TESTS_BIN SUITE...]
 Exit status 0 when every comparison holds, 1 otherwise (each failure printed).
 """
 
@@ -31,6 +37,7 @@ import h5py
 import numpy as np
 
 TOL = 1.0e-8
+RESTART_TOL = 1.0e-5
 COMPARED = ("displacement", "reaction")
 
 
@@ -90,6 +97,7 @@ def main():
     parser.add_argument("--work", default=None)
     parser.add_argument("--singular", nargs="*", default=[])
     parser.add_argument("--unit", nargs="+", default=[], metavar="TESTS_BIN SUITE")
+    parser.add_argument("--restart", nargs=2, default=None, metavar=("DECK", "N"))
     args = parser.parse_args()
     if len(args.unit) == 1:
         parser.error("--unit needs the test program and at least one suite")
@@ -148,6 +156,9 @@ def main():
             os.remove(mdeck)
     for deck in args.singular:
         failures += check_singular(args.binary, deck, args.np, work, env)
+    if args.restart:
+        failures += check_restart(args.binary, args.restart[0], int(args.restart[1]), args.np,
+                                  work, env)
     if args.unit:
         failures += check_unit(args.unit[0], args.unit[1:], args.np, env)
     return 1 if failures else 0
@@ -204,6 +215,64 @@ def check_singular(binary, deck, nps, work, env):
                 failures += 1
                 print(f"FAIL {deck} np={n}: exit {proc.returncode}, results file "
                       f"{os.path.exists(out)}\n{proc.stderr}")
+    finally:
+        os.remove(mdeck)
+    return failures
+
+
+def last_displacement(path):
+    with h5py.File(path, "r") as f:
+        return f["increments"][sorted(f["increments"])[-1]]["displacement"][...], \
+            f.attrs["status"]
+
+
+def check_restart(binary, deck, n_stop, nps, work, env):
+    """Number of failed restarts across rank counts (0: all as expected)."""
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    mdeck = os.path.join(os.path.dirname(os.path.abspath(deck)), f".{stem}_mumps_restart.inp")
+    with open(deck) as f:
+        text = mumps_deck(f.read())
+    with open(mdeck, "w") as f:
+        f.write(text)
+    failures = 0
+
+    def mpirun(n, *args):
+        return run(["mpirun", "-np", str(n), binary, mdeck, "--quiet"] + list(args), env)[0]
+
+    try:
+        full, part = {}, {}
+        for n in nps:
+            full[n] = os.path.join(work, f"{stem}_full_np{n}.h5")
+            part[n] = os.path.join(work, f"{stem}_part_np{n}.h5")
+            proc = mpirun(n, "-o", full[n])
+            stop = mpirun(n, "-o", part[n], "--stop-after-increments", str(n_stop))
+            if proc.returncode != 0 or stop.returncode != 4:
+                print(f"FAIL restart {deck} np={n}: uninterrupted exit {proc.returncode}, "
+                      f"stopped exit {stop.returncode} (4 expected)\n{proc.stderr}{stop.stderr}")
+                return failures + 1
+        ua1, _ = last_displacement(full[min(nps)])
+        for wrote in nps:
+            for n in nps:
+                out = os.path.join(work, f"{stem}_rest_{wrote}to{n}.h5")
+                proc = mpirun(n, "-o", out, "--restart", part[wrote])
+                if proc.returncode != 0:
+                    failures += 1
+                    print(f"FAIL restart {deck} {wrote}->{n} ranks: exit {proc.returncode}\n"
+                          f"{proc.stderr}")
+                    continue
+                uc, status = last_displacement(out)
+                ua, _ = last_displacement(full[n])
+                exact = wrote == n == 1
+                ref = ua1 if exact else ua
+                tol = 1e-12 if exact else RESTART_TOL
+                err = np.abs(uc - ref).max() / np.abs(ref).max()
+                if status == "completed" and err <= tol:
+                    print(f"ok   restart {deck} after {n_stop}: written on {wrote}, restarted "
+                          f"on {n} rank(s): {err:.1e} of the uninterrupted run (limit {tol:.0e})")
+                else:
+                    failures += 1
+                    print(f"FAIL restart {deck} {wrote}->{n} ranks: status {status}, "
+                          f"{err:.1e} of the uninterrupted run (limit {tol:.0e})")
     finally:
         os.remove(mdeck)
     return failures

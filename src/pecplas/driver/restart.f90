@@ -220,7 +220,8 @@ contains
    end subroutine unpack_data
 
    !> Factorises the matrices the interrupted run had factorised (see pack_restart); data
-   !> without the item `operators` (written before it existed) restarts from the set-up
+   !> without the item `operators` (written before it existed), and a run whose ranks each
+   !> hold a part of the matrix (whatever ranks wrote the data), restart from the set-up
    !> factorisation.
    subroutine restore_operators(data, model, problem, error)
       type(restart_data_t), intent(in) :: data
@@ -231,10 +232,13 @@ contains
       if (.not. data%has('operators')) return
       call data%get('operators', 3, ops, error)
       if (allocated(error)) return
-      if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
+      if (partitioned(model)) return
       if (ops(1) /= 0.0_wp) then
          call data%get('operator', problem%k%nnz(), v, error)
-         if (.not. allocated(error)) call factorise_values(model, problem, v, .false., error)
+         if (allocated(error)) return
+         ! the matrix is augmented when the run's was (a Katona body held by its contacts)
+         if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
+         call factorise_values(model, problem, v, .false., error)
       else if (ops(2) /= 0.0_wp) then
          call data%get('tangent_operator', problem%k%nnz(), v, error)
          if (.not. allocated(error)) call factorise_values(model, problem, v, .true., error)
