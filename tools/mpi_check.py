@@ -55,6 +55,18 @@ def mumps_deck(text):
     raise ValueError("deck has neither *SOLVER nor *STEP")
 
 
+def write_mumps_deck(deck, suffix="mumps"):
+    """The MUMPS variant of `deck` written next to it (so that its relative paths still hold)
+    as a hidden file; its path. The caller removes it."""
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    mdeck = os.path.join(os.path.dirname(os.path.abspath(deck)), f".{stem}_{suffix}.inp")
+    with open(deck) as f:
+        text = mumps_deck(f.read())
+    with open(mdeck, "w") as f:
+        f.write(text)
+    return mdeck
+
+
 def run(cmd, env):
     t0 = time.perf_counter()
     proc = subprocess.run(cmd, env=env, capture_output=True, text=True)
@@ -120,12 +132,7 @@ def main():
             print(f"FAIL {deck}: serial run exit {proc.returncode}\n{proc.stderr}")
             failures += 1
             continue
-        # The MUMPS deck sits next to the original so that relative paths in it still hold.
-        mdeck = os.path.join(os.path.dirname(os.path.abspath(deck)), f".{stem}_mumps.inp")
-        with open(deck) as f:
-            text = mumps_deck(f.read())
-        with open(mdeck, "w") as f:
-            f.write(text)
+        mdeck = write_mumps_deck(deck)
         try:
             for n in args.np:
                 rundir = os.path.join(work, f"{stem}_np{n}")
@@ -198,11 +205,7 @@ def check_unit(tests_bin, suites, nps, env):
 def check_singular(binary, deck, nps, work, env):
     """Number of failed runs of a deck with a mechanism under MUMPS (0: all as expected)."""
     stem = os.path.splitext(os.path.basename(deck))[0]
-    mdeck = os.path.join(os.path.dirname(os.path.abspath(deck)), f".{stem}_mumps.inp")
-    with open(deck) as f:
-        text = mumps_deck(f.read())
-    with open(mdeck, "w") as f:
-        f.write(text)
+    mdeck = write_mumps_deck(deck)
     failures = 0
     try:
         for n in nps:
@@ -229,11 +232,7 @@ def last_displacement(path):
 def check_restart(binary, deck, n_stop, nps, work, env):
     """Number of failed restarts across rank counts (0: all as expected)."""
     stem = os.path.splitext(os.path.basename(deck))[0]
-    mdeck = os.path.join(os.path.dirname(os.path.abspath(deck)), f".{stem}_mumps_restart.inp")
-    with open(deck) as f:
-        text = mumps_deck(f.read())
-    with open(mdeck, "w") as f:
-        f.write(text)
+    mdeck = write_mumps_deck(deck, "mumps_restart")
     failures = 0
 
     def mpirun(n, *args):
