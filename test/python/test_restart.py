@@ -9,14 +9,16 @@ import h5py
 import numpy as np
 import pytest
 
+from footing_decks import deck
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def run(args, cwd):
+    # a restart that loops on its own (it did, resumed inside a limit probe) must not hang
     return subprocess.run(pecplas_cmd() + [str(a) for a in args] + ["--quiet"], cwd=cwd,
-                          capture_output=True, text=True)
+                          capture_output=True, text=True, timeout=300)
 
 
 def last_fields(path):
@@ -319,3 +321,52 @@ def test_restart_items_leave_no_lost_space(tmp_path):
     two, three = overhead(2), overhead(3)
     print(f"bytes outside datasets per field increment: every 2: {two:.0f}, every 3: {three:.0f}")
     assert three <= 1.5 * two
+
+
+def limit_of(path):
+    with h5py.File(path) as f:
+        g = f["limit"]
+        return (g.attrs["kind"], int(g.attrs["global_increment"]), float(g.attrs["fraction"]),
+                g["pattern_factors"][:].tolist())
+
+
+@pytest.mark.parametrize("n", [
+    # before the peak (increment 86 of 149): the path's length and direction are carried
+    # (a first length computed anew from the restored tangent factorisation: 0.7 % off)
+    20,
+    # 14 increments beyond the peak: the peak found before the stop must still be reported
+    # (without the carried state the restarted run reported a limit at increment 101,
+    # fraction 0.563, for the true 86, 0.577)
+    100])
+def test_restart_inside_an_arc_length_step(tmp_path, n):
+    """MODJOIN CNL shear under force control with CONTROL=ARC_LENGTH (peak and softening),
+    stopped after n increments and restarted: the same final displacements to 1e-12 of the
+    largest, the same status 'limit load' and the same limit (increment, fraction, load
+    factors, exactly: the path's peak is part of the carried state)."""
+    d = ROOT / "test/data/modjoin/fe_cnl_force_arc.inp"
+    (ua, _, rows_a, st_a), (_, _, rows_b, _), (uc, _, rows_c, st_c) = \
+        interrupted_and_restarted(tmp_path, d, n)
+    assert st_a == st_c == "limit load"
+    assert rows_b + rows_c == rows_a
+    assert limit_of(tmp_path / "rest.h5") == limit_of(tmp_path / "full.h5")
+    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+
+
+def test_restart_inside_a_limit_probe(tmp_path):
+    """A rigid footing on Tresca soil pushed by a force beyond its bearing capacity, load
+    control: the step cannot be converged at any cut after 23 increments and the arc-length
+    probe takes over (doc/theory.md §4). Stopped after 24 increments, inside the probe, and
+    restarted: the probe goes on (it looped for ever on zero-size load increments before the
+    probe's state was carried) and the run ends as the uninterrupted one, status 'limit
+    load' with the same limit and final displacements to 1e-12 of the largest."""
+    text = deck(nf=2, stiff_footing=True, drive="pressure", pressure=70.0, increments=20,
+                solver="*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=30, MAX_CUTS=8")
+    d = tmp_path / "force.inp"
+    d.write_text(text)
+    (ua, _, rows_a, st_a), _, (uc, _, rows_c, st_c) = interrupted_and_restarted(tmp_path, d, 24)
+    with h5py.File(tmp_path / "full.h5") as f:
+        control = f["history/control"][:]
+    assert control[:23].sum() == 0 and control[23] == 1  # increment 24 is the probe's first
+    assert st_a == st_c == "limit load"
+    assert limit_of(tmp_path / "rest.h5") == limit_of(tmp_path / "full.h5")
+    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()

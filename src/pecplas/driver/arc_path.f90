@@ -14,6 +14,8 @@ module pecplas_driver_arc_path
    use pecplas_driver_iterate, only: attempt_t, outcome_t
    use pecplas_driver_attempts, only: run_t, try_chain, accept_increment
    use pecplas_driver_arc_length, only: adapt_length
+   use pecplas_driver_arc_trace, only: arc_trace_t, arc_request_t, arc_end_t, END_TARGET, &
+      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_driver_residual, only: load_vectors, free_part
    use pecplas_io_results_file, only: results_file_t
    use pecplas_signals, only: interrupt_requested
@@ -21,12 +23,7 @@ module pecplas_driver_arc_path
    implicit none (type, external)
    private
 
-   public :: arc_request_t, arc_end_t, trace_arc
-   public :: END_TARGET, END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, &
-      END_INTERRUPTED
-
-   integer, parameter :: END_TARGET = 1, END_PASSED = 2, END_NODE = 3, END_LIMIT = 4, &
-      END_MAX = 5, END_FAILED = 6, END_UNLOADED = 7, END_INTERRUPTED = 8
+   public :: trace_arc
 
    !> The path has become flat when |current stiffness parameter| stays below this for
    !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
@@ -38,41 +35,14 @@ module pecplas_driver_arc_path
    !> Load-controlled step that tests a singular tangent for a mechanism (step fraction).
    real(wp), parameter :: PROBE_STEP = 1.0e-3_wp
 
-   type :: arc_request_t
-      !> Start: step fraction of the converged state; pass: stop as soon as the path is
-      !> beyond this fraction and rising (the probe; <= 0 for none).
-      real(wp) :: tau_start = 0.0_wp, tau_pass = -1.0_wp
-      !> First length (<= 0: from dtau_first along the stiffness response) and increments.
-      real(wp) :: dl = 0.0_wp, dtau_first = 0.1_wp
-      integer :: max_increments = 10
-      !> Stop as soon as a limit is established (the probe), else trace on.
-      logical :: stop_at_limit = .false.
-      !> Pseudo-time of the results file at the start of the path and its span.
-      real(wp) :: time0 = 0.0_wp, time_span = 1.0_wp
-   end type arc_request_t
-
-   type :: arc_end_t
-      integer :: kind = END_FAILED
-      real(wp) :: tau = 0.0_wp
-      integer :: increments = 0
-      !> Peak: largest step fraction, where (global increment), increments traced beyond it,
-      !> last current stiffness parameter; flat: the plateau criterion held.
-      real(wp) :: tau_peak = -huge(1.0_wp), sp = 1.0_wp
-      integer :: peak_increment = 0, beyond = 0
-      real(wp), allocatable :: peak_factors(:)
-      logical :: flat = .false.
-      !> The arc iteration met singular states and no equilibrium exists a little further.
-      logical :: mechanism = .false.
-      !> Plateau: first increment of the flat run and its step fraction.
-      integer :: flat_increment = 0
-      real(wp) :: tau_flat = 0.0_wp
-      character(len=:), allocatable :: reason
-   end type arc_end_t
-
 contains
 
-   subroutine trace_arc(model, problem, results, run, istep, f0, ftarget, inc_in_step, req, &
-         res, error)
+   !> Follows the path of `tr` (its request set up, or a path restored from a restart with
+   !> tr%started) until it ends (tr%res%kind). After every converged increment the trace,
+   !> updated as the next increment will need it, is recorded in the run's position before
+   !> the increment is written, so that a restart goes on exactly where the path was.
+   subroutine trace_arc(model, problem, results, run, istep, f0, ftarget, inc_in_step, tr, &
+         error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(results_file_t), intent(inout) :: results
@@ -80,32 +50,40 @@ contains
       integer, intent(in) :: istep
       real(wp), intent(in) :: f0(:), ftarget(:)
       integer, intent(inout) :: inc_in_step
-      type(arc_request_t), intent(in) :: req
-      type(arc_end_t), intent(out) :: res
+      type(arc_trace_t), intent(inout) :: tr
       type(error_t), allocatable, intent(out) :: error
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
-      real(wp) :: dl, dl0, tau, k_inc, time
-      integer :: level, method, nflat, wanted
-      logical :: landed, lc_mode
+      real(wp) :: tau, k_inc, time
+      integer :: method, wanted
+      logical :: landed
 
-      associate (step => model%steps(istep))
+      associate (step => model%steps(istep), req => tr%req, res => tr%res, dl => tr%dl, &
+                 dl0 => tr%dl0, level => tr%level, nflat => tr%nflat, lc_mode => tr%lc_mode)
          att%f0 = f0
          att%ftarget = ftarget
-         tau = req%tau_start
-         dl = req%dl
-         if (.not. (dl > 0.0_wp)) then
-            call first_length(problem, f0, ftarget, req%dtau_first, dl, error)
-            if (allocated(error)) return
-         end if
-         dl0 = dl
          wanted = step%iterations_wanted
-         level = 0
-         nflat = 0
-         lc_mode = .false.
-         res%tau = tau
-         res%reason = ''
+         if (tr%started) then
+            ! a restored path: the checks the interrupted run made after its last increment
+            tau = res%tau
+            res%kind = path_end(step, res, req, problem%state%u)
+            if (res%kind /= 0) return
+         else
+            tau = req%tau_start
+            dl = req%dl
+            if (.not. (dl > 0.0_wp)) then
+               call first_length(problem, f0, ftarget, req%dtau_first, dl, error)
+               if (allocated(error)) return
+            end if
+            dl0 = dl
+            level = 0
+            nflat = 0
+            lc_mode = .false.
+            res%tau = tau
+            res%reason = ''
+            tr%started = .true.
+         end if
          do while (res%increments < req%max_increments)
             if (lc_mode) then
                ! load control where it converges (after a singular arc iteration that a
@@ -184,29 +162,34 @@ contains
             inc_in_step = inc_in_step + 1
             time = req%time0 + req%time_span*real(res%increments, wp)/real(req%max_increments + 1, wp)
             if (landed) time = real(istep, wp)
-            call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
-               0.0_wp, f0, fint)
-            ! landing on the target of the last step ends the run (END_TARGET below, and a
-            ! load-control probe ends its step there): that increment is written once
-            call accept_increment(model, problem, results, run, att, out, method, u, fint, &
-               reaction, istep, inc_in_step, time, landed, merge(0, 1, landed .or. .not. att%arc), &
-               error, landed .and. istep == size(model%steps))
-            if (allocated(error)) return
-            ! the load's maximum along the path, and whether it is flat
+            ! the load's maximum along the path, and whether it is flat (this increment will
+            ! be the run's number problem%increments + 1, at the factors accept_increment sets)
             if (tau > res%tau_peak) then
                res%tau_peak = tau
-               res%peak_increment = problem%increments
-               res%peak_factors = problem%state%factors
+               res%peak_increment = problem%increments + 1
+               res%peak_factors = att%f0 + (att%ftarget - att%f0)*tau
                res%beyond = 0
             else
                res%beyond = res%beyond + 1
             end if
             nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
             if (nflat == 1) then
-               res%flat_increment = problem%increments
+               res%flat_increment = problem%increments + 1
                res%tau_flat = tau
             end if
             res%flat = nflat >= FLAT_COUNT
+            ! the next increment's length, should the path go on
+            dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+               step%max_length*dl0)
+            level = 0
+            call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
+               0.0_wp, f0, fint, out%du, tr)
+            ! landing on the target of the last step ends the run (END_TARGET below, and a
+            ! load-control probe ends its step there): that increment is written once
+            call accept_increment(model, problem, results, run, att, out, method, u, fint, &
+               reaction, istep, inc_in_step, time, landed, merge(0, 1, landed .or. .not. att%arc), &
+               error, landed .and. istep == size(model%steps))
+            if (allocated(error)) return
             if (landed) then
                res%kind = END_TARGET
                return
@@ -216,34 +199,36 @@ contains
                res%kind = END_INTERRUPTED
                return
             end if
-            if (req%tau_pass > 0.0_wp .and. tau > req%tau_pass .and. res%beyond == 0 .and. &
-                .not. res%flat) then
-               res%kind = END_PASSED
-               return
-            end if
-            if (step%node > 0) then
-               if ((u(step%dof, step%node) - step%displacement)*sign(1.0_wp, step%displacement) &
-                   >= 0.0_wp) then
-                  res%kind = END_NODE
-                  return
-               end if
-            end if
-            if (res%beyond >= BEYOND_PEAK .and. tau <= 0.0_wp) then
-               res%kind = END_UNLOADED
-               return
-            end if
-            if (req%stop_at_limit .and. (res%beyond >= BEYOND_PEAK .or. res%flat)) then
-               res%kind = END_LIMIT
-               return
-            end if
-            dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
-               step%max_length*dl0)
-            level = 0
+            res%kind = path_end(step, res, req, u)
+            if (res%kind /= 0) return
          end do
          res%kind = END_MAX
          if (res%beyond >= BEYOND_PEAK .or. res%flat) res%kind = END_LIMIT
       end associate
    end subroutine trace_arc
+
+   !> How the path ends after a converged, written increment that did not land on the
+   !> target (0: it goes on), from the path so far and the displacements `u`.
+   integer function path_end(step, res, req, u) result(kind)
+      type(step_t), intent(in) :: step
+      type(arc_end_t), intent(in) :: res
+      type(arc_request_t), intent(in) :: req
+      real(wp), intent(in) :: u(:, :)
+      kind = 0
+      if (req%tau_pass > 0.0_wp .and. res%tau > req%tau_pass .and. res%beyond == 0 .and. &
+          .not. res%flat) then
+         kind = END_PASSED
+      else if (step%node > 0) then
+         if ((u(step%dof, step%node) - step%displacement)*sign(1.0_wp, step%displacement) &
+             >= 0.0_wp) kind = END_NODE
+      end if
+      if (kind /= 0) return
+      if (res%beyond >= BEYOND_PEAK .and. res%tau <= 0.0_wp) then
+         kind = END_UNLOADED
+      else if (req%stop_at_limit .and. (res%beyond >= BEYOND_PEAK .or. res%flat)) then
+         kind = END_LIMIT
+      end if
+   end function path_end
 
    !> Length of an increment that would raise the step fraction by dtau along the response
    !> of the run's factorised matrix to the step's load.

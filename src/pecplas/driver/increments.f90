@@ -20,8 +20,9 @@ module pecplas_driver_increments
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_iterate, only: attempt_t, outcome_t
    use pecplas_driver_attempts, only: run_t, try_chain, accept_increment
-   use pecplas_driver_arc_path, only: arc_request_t, arc_end_t, trace_arc, END_TARGET, &
-      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
+   use pecplas_driver_arc_path, only: trace_arc
+   use pecplas_driver_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &
+      END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED, PATH_STEP, PATH_PROBE
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: limit_point_t
    use pecplas_strings, only: itoa, g6
@@ -61,6 +62,7 @@ contains
       if (problem%position%resume) then
          run%fint_conv = problem%position%fint_conv
          istep0 = problem%position%istep
+         if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
       end if
       do istep = istep0, size(model%steps)
          f0 = problem%state%factors
@@ -97,11 +99,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(attempt_t) :: att
       type(outcome_t) :: out
-      type(arc_request_t) :: req
-      type(arc_end_t) :: res
+      type(arc_trace_t) :: probe
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
       real(wp) :: tau, dt, dt0
       integer :: level, inc, method
+      logical :: probing
 
       associate (step => model%steps(istep))
          att%f0 = f0
@@ -111,70 +113,76 @@ contains
          tau = 0.0_wp
          level = 0
          inc = 0
+         probing = .false.
          if (problem%position%resume) then
             associate (pos => problem%position)
                dt = pos%dt; tau = pos%tau; level = pos%level; inc = pos%inc_in_step
+               ! stopped in the middle of a limit probe: go on with it
+               probing = pos%path == PATH_PROBE
+               if (probing) then
+                  probe = pos%arc
+                  tau = probe%req%tau_start; dt = probe%req%dtau_first; level = probe%req%cuts
+               end if
                pos%resume = .false.
             end associate
          end if
          do while (tau < 1.0_wp - 1.0e-12_wp)
-            dt = min(dt, 1.0_wp - tau)
-            att%arc = .false.
-            att%tau0 = tau
-            att%tau1 = tau + dt
-            call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
-            if (allocated(error)) return
-            if (.not. out%converged) then
-               if (level < model%solver%max_cuts) then
-                  level = level + 1
-                  problem%cuts = problem%cuts + 1
-                  dt = 0.5_wp*dt
-                  if (.not. run%quiet) write (*, '(a,es9.2,a)') &
-                     '   no convergence: increment cut to ', dt, ' of the step'
-                  cycle
+            if (.not. probing) then
+               dt = min(dt, 1.0_wp - tau)
+               att%arc = .false.
+               att%tau0 = tau
+               att%tau1 = tau + dt
+               call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+               if (allocated(error)) return
+            end if
+            if (probing .or. .not. out%converged) then
+               if (.not. probing) then
+                  if (level < model%solver%max_cuts) then
+                     level = level + 1
+                     problem%cuts = problem%cuts + 1
+                     dt = 0.5_wp*dt
+                     if (.not. run%quiet) write (*, '(a,es9.2,a)') &
+                        '   no convergence: increment cut to ', dt, ' of the step'
+                     cycle
+                  end if
+                  if (.not. probe_allowed(model, f0, ftarget)) then
+                     call diverged(step, istep, tau + dt, level, out%reason, status, message)
+                     return
+                  end if
+                  ! cannot be converged at any cut: is it a maximum of the load?
+                  if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
+                     'probing the path by arc-length from the last converged state'
+                  call probe_request(model, istep, tau, dt, level, out%reason, run%du_prev, probe)
                end if
-               if (.not. probe_allowed(model, f0, ftarget)) then
-                  call diverged(step, istep, tau + dt, level, out%reason, status, message)
-                  return
-               end if
-               ! cannot be converged at any cut: is it a maximum of the load?
-               if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
-                  'probing the path by arc-length from the last converged state'
-               req%tau_start = tau
-               req%tau_pass = tau + dt
-               req%dl = 0.0_wp
-               if (allocated(run%du_prev)) req%dl = norm2(run%du_prev)
-               req%dtau_first = dt
-               req%max_increments = model%solver%limit_probe
-               req%stop_at_limit = .true.
-               req%time0 = real(istep - 1, wp) + tau
-               req%time_span = 0.5_wp*dt
-               call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, req, res, &
+               probing = .false.
+               call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, probe, &
                   error)
                if (allocated(error)) return
-               select case (res%kind)
-               case (END_INTERRUPTED)
-                  call interrupted_status(problem, status, message)
-               case (END_PASSED, END_TARGET)
-                  ! a convergence failure, not a limit: load control goes on from here
-                  tau = res%tau
-                  level = 0
-                  dt = dt0
-                  cycle
-               case (END_LIMIT, END_UNLOADED)
-                  call limit_reached(model, problem, run, step, istep, res, status, message)
-               case (END_FAILED)
-                  if (mechanism(res)) then
+               associate (res => probe%res, why => probe%req%why)
+                  select case (res%kind)
+                  case (END_INTERRUPTED)
+                     call interrupted_status(problem, status, message)
+                  case (END_PASSED, END_TARGET)
+                     ! a convergence failure, not a limit: load control goes on from here
+                     tau = res%tau
+                     level = 0
+                     dt = dt0
+                     cycle
+                  case (END_LIMIT, END_UNLOADED)
                      call limit_reached(model, problem, run, step, istep, res, status, message)
-                  else
-                     call diverged(step, istep, tau + dt, level, out%reason//'; the '// &
-                        'arc-length probe from fraction '//g6(tau)//' '//probe_failure(res), &
-                        status, message)
-                  end if
-               case default
-                  call diverged(step, istep, tau + dt, level, out%reason//'; the arc-length '// &
-                     'probe from fraction '//g6(tau)//' '//probe_failure(res), status, message)
-               end select
+                  case (END_FAILED)
+                     if (mechanism(res)) then
+                        call limit_reached(model, problem, run, step, istep, res, status, message)
+                     else
+                        call diverged(step, istep, tau + dt, level, why//'; the '// &
+                           'arc-length probe from fraction '//g6(tau)//' '//probe_failure(res), &
+                           status, message)
+                     end if
+                  case default
+                     call diverged(step, istep, tau + dt, level, why//'; the arc-length '// &
+                        'probe from fraction '//g6(tau)//' '//probe_failure(res), status, message)
+                  end select
+               end associate
                return
             end if
             tau = att%tau1
@@ -184,7 +192,7 @@ contains
             ! the loop's position after this increment (the size grows back below), for the
             ! restart data written with the increment
             call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
-               level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint)
+               level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint, out%du)
             ! the end of the last step ends the run: that increment is written once
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
                reaction, istep, inc, real(istep - 1, wp) + tau, tau >= 1.0_wp - 1.0e-12_wp, 0, &
@@ -209,22 +217,27 @@ contains
       real(wp), intent(in) :: f0(:), ftarget(:)
       character(len=:), allocatable, intent(inout) :: status, message
       type(error_t), allocatable, intent(out) :: error
-      type(arc_request_t) :: req
-      type(arc_end_t) :: res
+      type(arc_trace_t) :: path
       integer :: inc
-      associate (step => model%steps(istep))
+      associate (step => model%steps(istep), res => path%res)
          inc = 0
-         req%tau_start = 0.0_wp
+         path%req%tau_start = 0.0_wp
          if (problem%position%resume) then
-            req%tau_start = problem%position%tau
+            path%req%tau_start = problem%position%tau
             inc = problem%position%inc_in_step
+            ! the path under way when the run stopped (restart data of an older version
+            ! hold none: a new path starts from the converged state)
+            if (problem%position%path == PATH_STEP) path = problem%position%arc
             problem%position%resume = .false.
          end if
-         req%dl = 0.0_wp
-         req%dtau_first = 1.0_wp/step%increments
-         req%max_increments = step%max_increments
-         req%time0 = real(istep - 1, wp)
-         call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, req, res, error)
+         if (.not. path%started) then
+            path%req%origin = PATH_STEP
+            path%req%dl = 0.0_wp
+            path%req%dtau_first = 1.0_wp/step%increments
+            path%req%max_increments = step%max_increments
+            path%req%time0 = real(istep - 1, wp)
+         end if
+         call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, path, error)
          if (allocated(error)) return
          select case (res%kind)
          case (END_TARGET)
@@ -255,6 +268,33 @@ contains
          end select
       end associate
    end subroutine arc_step
+
+   !> The limit probe of a load-controlled step whose increment from fraction `tau` (size
+   !> `dt`, `cuts` halvings) failed for `why`: an arc-length path from the last converged
+   !> state, first length that of the last converged increment (`du_prev`, else along the
+   !> stiffness response), that ends as soon as it passes tau + dt rising or shows a limit.
+   subroutine probe_request(model, istep, tau, dt, cuts, why, du_prev, probe)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep, cuts
+      real(wp), intent(in) :: tau, dt
+      character(len=*), intent(in) :: why
+      real(wp), allocatable, intent(in) :: du_prev(:)
+      type(arc_trace_t), intent(out) :: probe
+      associate (req => probe%req)
+         req%origin = PATH_PROBE
+         req%tau_start = tau
+         req%tau_pass = tau + dt
+         req%dl = 0.0_wp
+         if (allocated(du_prev)) req%dl = norm2(du_prev)
+         req%dtau_first = dt
+         req%max_increments = model%solver%limit_probe
+         req%stop_at_limit = .true.
+         req%time0 = real(istep - 1, wp) + tau
+         req%time_span = 0.5_wp*dt
+         req%cuts = cuts
+         req%why = why
+      end associate
+   end subroutine probe_request
 
    !> A probe needs a growing force and no changing imposed displacement (unloading that
    !> fails is no limit), and a budget.

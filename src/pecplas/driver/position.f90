@@ -2,6 +2,7 @@
 !> (restart) exactly where it was. Kept by the driver in problem_t%position.
 module pecplas_driver_position
    use pecplas_kinds, only: wp
+   use pecplas_driver_arc_trace, only: arc_trace_t, PATH_NONE
    implicit none (type, external)
    private
 
@@ -18,6 +19,13 @@ module pecplas_driver_position
       real(wp) :: k_first = 0.0_wp, k_conv = 0.0_wp
       !> Pattern factors at the start of the step, internal forces of the converged state.
       real(wp), allocatable :: f0(:), fint_conv(:, :)
+      !> Free displacement increment of the last converged increment (the arc-length
+      !> predictor's direction and the limit probe's first length); may be unallocated.
+      real(wp), allocatable :: du_prev(:)
+      !> The arc-length path under way (PATH_STEP, PATH_PROBE: pecplas_driver_arc_trace), or
+      !> PATH_NONE, and its state.
+      integer :: path = PATH_NONE
+      type(arc_trace_t) :: arc
       !> Test hook (--stop-after-increments N): stop with status 'interrupted' once the run
       !> has N converged increments in all (0: never).
       integer :: stop_after = 0
@@ -28,12 +36,16 @@ module pecplas_driver_position
 
 contains
 
-   !> Records the position after a converged increment.
+   !> Records the position after a converged increment, with `arc` the path it belongs to
+   !> (absent: a load-controlled increment).
    subroutine position_record(this, istep, inc_in_step, tau, dt, level, k_first, k_conv, f0, &
-         fint_conv)
+         fint_conv, du_prev, arc)
       class(run_position_t), intent(inout) :: this
       integer, intent(in) :: istep, inc_in_step, level
       real(wp), intent(in) :: tau, dt, k_first, k_conv, f0(:), fint_conv(:, :)
+      !> The increment's free displacement increment (as accept_increment keeps it).
+      real(wp), allocatable, intent(in) :: du_prev(:)
+      type(arc_trace_t), intent(in), optional :: arc
       this%istep = istep
       this%inc_in_step = inc_in_step
       this%tau = tau
@@ -43,6 +55,12 @@ contains
       this%k_conv = k_conv
       this%f0 = f0
       this%fint_conv = fint_conv
+      if (allocated(du_prev)) this%du_prev = du_prev
+      this%path = PATH_NONE
+      if (present(arc)) then
+         this%path = arc%req%origin
+         this%arc = arc
+      end if
    end subroutine position_record
 
    !> True when the --stop-after-increments hook stops the run after `increments` converged

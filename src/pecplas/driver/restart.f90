@@ -12,6 +12,7 @@ module pecplas_driver_restart
    use pecplas_strings, only: itoa
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t, K_SOLVER, K_TSOLVER
+   use pecplas_driver_arc_trace, only: PATH_NONE, ARC_VECTOR
    use pecplas_driver_stiffness, only: factorise_values, partitioned
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
    implicit none (type, external)
@@ -44,6 +45,7 @@ contains
       type(restart_data_t) :: data
       real(wp) :: ops(3)
       integer :: s
+      logical :: tangents
       associate (p => problem%position, st => problem%state, kt => problem%katona)
          call data%add('position', [LAYOUT, real(p%istep, wp), real(p%inc_in_step, wp), &
             real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%increments, wp), &
@@ -51,13 +53,25 @@ contains
             kt%max_penetration])
          call data%add('f0', p%f0)
          call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
+         ! the arc-length path under way, and the last increment's displacement increment
+         ! that directs it (a limit probe's first length, an arc predictor's sign)
+         if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
+         call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
+         if (p%path /= PATH_NONE) then
+            call data%add('arc_peak_factors', p%arc%res%peak_factors)
+            call data%add('arc_why', text_codes(p%arc%req%why))
+         end if
          if (fields) then
             call data%add_field('u', 'displacement', 0)
          else
             call data%add('u', reshape(st%u, [size(st%u)]))
          end if
          call data%add('factors', st%factors)
+         tangents = tangents_carried(model, problem)
          do s = 1, size(st%sets)
+            if (tangents .and. allocated(st%sets(s)%tangent)) &
+               call data%add('tangent_'//itoa(s), reshape(st%sets(s)%tangent, &
+               [size(st%sets(s)%tangent)]))
             if (fields) then
                call data%add_field('stress_'//itoa(s), 'stress', s)
                call data%add_field('strain_'//itoa(s), 'strain', s)
@@ -75,6 +89,8 @@ contains
                   call data%add('joint_sigma_'//itoa(s), flat3(j%sigma))
                   call data%add('joint_hist_'//itoa(s), flat3(j%hist))
                   call data%add('joint_mode_'//itoa(s), real(reshape(j%mode, [size(j%mode)]), wp))
+                  if (tangents .and. allocated(j%tangent)) call data%add('joint_tangent_'// &
+                     itoa(s), reshape(j%tangent, [size(j%tangent)]))
                end associate
             end do
          end if
@@ -147,6 +163,7 @@ contains
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: v(:)
+      logical :: tangents
       integer :: s, nj
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
@@ -167,6 +184,11 @@ contains
          end if
          call data%get('f0', size(st%factors), p%f0, error)
          if (allocated(error)) return
+         call unpack_path(data, problem, error)
+         if (allocated(error)) return
+         ! (datasets of an earlier state may remain in the group: read only what this one
+         ! wrote)
+         tangents = tangents_carried(model, problem)
          call data%get('fint_conv', size(st%u), v, error)
          if (allocated(error)) return
          p%fint_conv = reshape(v, shape(st%u))
@@ -177,6 +199,10 @@ contains
          if (allocated(error)) return
          st%factors = v
          do s = 1, size(st%sets)
+            if (tangents .and. data%has('tangent_'//itoa(s)) .and. &
+                allocated(st%sets(s)%tangent)) &
+               call get4(data, 'tangent_'//itoa(s), st%sets(s)%tangent, error)
+            if (allocated(error)) return
             call get3(data, 'stress_'//itoa(s), st%sets(s)%stress, error)
             if (.not. allocated(error)) call get3(data, 'strain_'//itoa(s), st%sets(s)%strain, error)
             if (.not. allocated(error)) call get3(data, 'hist_'//itoa(s), st%sets(s)%hist, error)
@@ -191,6 +217,10 @@ contains
                   error)
                if (allocated(error)) return
                j%mode = reshape(nint(v), shape(j%mode))
+               if (tangents .and. data%has('joint_tangent_'//itoa(s)) .and. &
+                   allocated(j%tangent)) &
+                  call get4(data, 'joint_tangent_'//itoa(s), j%tangent, error)
+               if (allocated(error)) return
             end associate
          end do
          if (kt%active) then
@@ -218,6 +248,55 @@ contains
          p%resume = .true.
       end associate
    end subroutine unpack_data
+
+   !> The arc-length path under way and the last displacement increment (absent from restart
+   !> data of an older version: no path, no increment).
+   subroutine unpack_path(data, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:), peak(:), why(:)
+      associate (p => problem%position)
+         if (data%has('du_prev')) then
+            call data%get('du_prev', problem%dofs%neq, p%du_prev, error)
+            if (allocated(error)) return
+         end if
+         p%path = PATH_NONE
+         if (.not. data%has('arc')) return
+         call data%get('arc', 1 + ARC_VECTOR, v, error)
+         if (allocated(error)) return
+         p%path = nint(v(1))
+         if (p%path == PATH_NONE) return
+         call data%get('arc_peak_factors', size(problem%state%factors), peak, error)
+         if (allocated(error)) return
+         call data%get('arc_why', max(1, data%length('arc_why')), why, error)
+         if (allocated(error)) return
+         call p%arc%from_vector(v(2:), peak, codes_text(why))
+      end associate
+   end subroutine unpack_path
+
+   !> A text as reals: its length, then its character codes.
+   pure function text_codes(text) result(v)
+      character(len=:), allocatable, intent(in) :: text
+      real(wp), allocatable :: v(:)
+      integer :: i
+      if (.not. allocated(text)) then
+         v = [0.0_wp]
+         return
+      end if
+      v = [real(len(text), wp), (real(ichar(text(i:i)), wp), i = 1, len(text))]
+   end function text_codes
+
+   pure function codes_text(v) result(text)
+      real(wp), intent(in) :: v(:)
+      character(len=:), allocatable :: text
+      integer :: i, n
+      n = max(0, min(nint(v(1)), size(v) - 1))
+      allocate (character(len=n) :: text)
+      do i = 1, n
+         text(i:i) = achar(max(0, min(255, nint(v(i + 1)))))
+      end do
+   end function codes_text
 
    !> Factorises the matrices the interrupted run had factorised (see pack_restart); data
    !> without the item `operators` (written before it existed), and a run whose ranks each
@@ -253,14 +332,15 @@ contains
       integer :: s
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
-         'katona_anchor', 'operators', 'operator', 'tangent_operator']
+         'katona_anchor', 'operators', 'operator', 'tangent_operator', 'du_prev', 'arc', &
+         'arc_peak_factors', 'arc_why']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
-            'hist_'//itoa(s)]
+            'hist_'//itoa(s), 'tangent_'//itoa(s)]
       end do
       do s = 1, njoint
          list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &
-            'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s)]
+            'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s), 'joint_tangent_'//itoa(s)]
       end do
       names = list
    end function restart_names
@@ -270,6 +350,33 @@ contains
       real(wp), allocatable :: v(:)
       v = reshape(a, [size(a)])
    end function flat3
+
+   subroutine get4(data, name, a, error)
+      type(restart_data_t), intent(in) :: data
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: a(:, :, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      call data%get(name, size(a), v, error)
+      if (allocated(error)) return
+      a = reshape(v, shape(a))
+   end subroutine get4
+
+   !> The points' consistent tangents of the last update are carried when an arc-length path
+   !> may follow: its predictor assembles the tangent from them before any update of the
+   !> increment (a load-controlled increment updates the points first, and its first solve
+   !> uses the carried factorisation).
+   logical function tangents_carried(model, problem) result(carried)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer :: i
+      carried = .false.
+      if (.not. model%output%exact_restart) return
+      carried = problem%position%path /= PATH_NONE
+      do i = problem%position%istep, size(model%steps)
+         carried = carried .or. model%steps(i)%arc_length
+      end do
+   end function tangents_carried
 
    subroutine get3(data, name, a, error)
       type(restart_data_t), intent(in) :: data

@@ -55,6 +55,7 @@ module pecplas_io_results_restart
       procedure :: add_field => data_add_field
       procedure :: get => data_get
       procedure :: has => data_has
+      procedure :: length => data_length
    end type restart_data_t
 
 contains
@@ -143,6 +144,20 @@ contains
          if (this%items(i)%name == name) data_has = .true.
       end do
    end function data_has
+
+   !> Number of values of the item `name` (-1: no such item with values).
+   integer function data_length(this, name) result(n)
+      class(restart_data_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer :: i
+      n = -1
+      if (.not. allocated(this%items)) return
+      do i = 1, this%n
+         if (this%items(i)%name /= name) cycle
+         if (allocated(this%items(i)%v)) n = size(this%items(i)%v)
+         return
+      end do
+   end function data_length
 
    !> Writes `data` (items with values only) as /restart_next of the open file `file`,
    !> overwritten in place (see restart_put); swap_restart then renames it /restart, before
