@@ -117,6 +117,8 @@ contains
          if (problem%position%resume) then
             associate (pos => problem%position)
                dt = pos%dt; tau = pos%tau; level = pos%level; inc = pos%inc_in_step
+               ! (restart data of an older version stopped inside a probe hold no size)
+               if (.not. (dt > 0.0_wp)) dt = dt0
                ! stopped in the middle of a limit probe: go on with it
                probing = pos%path == PATH_PROBE
                if (probing) then
