@@ -370,3 +370,37 @@ def test_restart_inside_a_limit_probe(tmp_path):
     assert st_a == st_c == "limit load"
     assert limit_of(tmp_path / "rest.h5") == limit_of(tmp_path / "full.h5")
     assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+
+
+@pytest.mark.parametrize("deck,every", [
+    ("test/data/katona/s1_open_close.inp", 2),   # Katona opening and closing, 35 increments
+    ("test/data/katona/pad_slip.inp", 2),        # Katona friction limit (cuts, limit load)
+    ("input/s2/s2_katona.inp", 3),               # S2 pile, Katona shaft
+    ("test/data/modjoin/fe_cyclic.inp", 9),      # MODJOIN cyclic, full Newton
+    ("test/data/modjoin/fe_cnl_force_arc.inp", 8)])  # arc-length through a peak
+def test_restart_anywhere(tmp_path, deck, every):
+    """Stopped after every `every`-th increment and restarted, each run ends as the
+    uninterrupted one: the same status, the same limit when there is one, the same final
+    displacements to 1e-12 of the largest (the restart data carry all the run's arithmetic
+    depends on, wherever it stops)."""
+    d = ROOT / deck
+    full = tmp_path / "full.h5"
+    r = run([d, "-o", full], d.parent)
+    assert r.returncode in (0, 3), r.stderr
+    ua, _, _, st_a = last_fields(full)
+    total = len(h5py.File(full)["history/step"])
+    bad = []
+    for n in range(1, total, every):
+        part, rest = tmp_path / f"p{n}.h5", tmp_path / f"r{n}.h5"
+        r = run([d, "-o", part, "--stop-after-increments", n], d.parent)
+        assert r.returncode == 4, (n, r.stderr)
+        r = run([d, "-o", rest, "--restart", part], d.parent)
+        assert r.returncode in (0, 3), (n, r.stderr)
+        uc, _, _, st_c = last_fields(rest)
+        err = np.abs(uc - ua).max() / np.abs(ua).max()
+        same_limit = st_a != "limit load" or limit_of(rest) == limit_of(full)
+        if st_c != st_a or err > 1e-12 or not same_limit:
+            bad.append((n, st_c, err, same_limit))
+        part.unlink()
+        rest.unlink()
+    assert not bad, f"restarts that differ from the uninterrupted run (of {total}): {bad}"
