@@ -12,7 +12,7 @@ module pecplas_driver_restart
    use pecplas_strings, only: itoa
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t, K_SOLVER, K_TSOLVER
-   use pecplas_driver_arc_trace, only: PATH_NONE, ARC_VECTOR
+   use pecplas_driver_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
    use pecplas_driver_stiffness, only: factorise_values, partitioned
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
    implicit none (type, external)
@@ -265,6 +265,10 @@ contains
          if (.not. data%has('arc')) return
          call data%get('arc', 1 + ARC_VECTOR, v, error)
          if (allocated(error)) return
+         if (.not. any(v(1) == real([PATH_NONE, PATH_STEP, PATH_PROBE], wp))) then
+            call fatal_error(error, 'restart data arc names no kind of path')
+            return
+         end if
          p%path = nint(v(1))
          if (p%path == PATH_NONE) return
          call data%get('arc_peak_factors', size(problem%state%factors), peak, error)
