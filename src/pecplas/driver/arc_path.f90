@@ -18,7 +18,7 @@ module pecplas_driver_arc_path
       END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
    use pecplas_driver_residual, only: load_vectors, free_part
    use pecplas_io_results_file, only: results_file_t
-   use pecplas_signals, only: interrupt_requested
+   use pecplas_driver_output, only: stop_pending
    use pecplas_strings, only: g6
    implicit none (type, external)
    private
@@ -194,8 +194,7 @@ contains
                res%kind = END_TARGET
                return
             end if
-            if (interrupt_requested() .or. problem%position%stop_now(.false., &
-                problem%increments)) then
+            if (stop_pending(model, problem, .false.)) then
                res%kind = END_INTERRUPTED
                return
             end if

@@ -28,6 +28,7 @@ module pecplas_driver_increments
    use pecplas_strings, only: itoa, g6
    use pecplas_driver_timers, only: wall_time
    use pecplas_signals, only: interrupt_requested, interrupt_signal
+   use pecplas_driver_output, only: stop_pending
    implicit none (type, external)
    private
 
@@ -377,8 +378,8 @@ contains
       integer, intent(in) :: istep
       real(wp), intent(in) :: tau
       character(len=:), allocatable, intent(inout) :: status, message
-      interrupted = interrupt_requested() .or. problem%position%stop_now(tau >= 1.0_wp - &
-         1.0e-12_wp .and. istep == size(model%steps), problem%increments)
+      interrupted = stop_pending(model, problem, tau >= 1.0_wp - 1.0e-12_wp .and. &
+         istep == size(model%steps))
       if (interrupted) call interrupted_status(problem, status, message)
    end function interrupted
 

@@ -9,11 +9,13 @@ module pecplas_driver_output
    use pecplas_io_results_increment, only: increment_result_t
    use pecjoin_laws_coulomb, only: plastic_slip
    use pecplas_driver_restart, only: pack_restart
+   use pecplas_model_options, only: EXACT_ALWAYS, EXACT_ON_STOP
+   use pecplas_signals, only: interrupt_requested
    use pecplas_driver_estimator, only: error_estimate_t, estimate_error
    implicit none (type, external)
    private
 
-   public :: write_increment, progress_line
+   public :: write_increment, progress_line, stop_pending
 
 contains
 
@@ -59,11 +61,42 @@ contains
          call lend(problem, r)
          if (model%output%error_estimate) call add_estimate(est, r)
       end if
+      ! exact restart data with this increment when the run stops after it (or always)
+      problem%position%exact = exact_due(model, problem)
       ! with the state to restart from, replaced at every converged increment (with the
       ! fields, its lent arrays by reference: pack_restart does not read them)
       call results%write_increment(r, error, pack_restart(model, problem, r%write_fields), final)
       if (r%write_fields) call give_back(problem, r)
    end subroutine write_increment
+
+   !> Whether the restart data written now carry what makes a restarted run exact
+   !> (*OUTPUT, EXACT_RESTART=): with every increment, never, or (ON_STOP) when the run is
+   !> to stop after this one, on a termination signal or --stop-after-increments (a signal
+   !> that comes while it is written stops the run after the next: stop_pending).
+   logical function exact_due(model, problem) result(due)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      select case (model%output%exact_restart)
+      case (EXACT_ALWAYS)
+         due = .true.
+      case (EXACT_ON_STOP)
+         due = interrupt_requested() .or. problem%position%stop_now(.false., problem%increments)
+      case default
+         due = .false.
+      end select
+   end function exact_due
+
+   !> True when the run must stop after the increment just written: a termination signal
+   !> or the --stop-after-increments hook (`finished`: the run ends there anyway). Under
+   !> EXACT_RESTART=ON_STOP a signal that came after that increment's restart data were
+   !> packed without the exact part is acted on after the next increment, which has it.
+   logical function stop_pending(model, problem, finished) result(stop)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      logical, intent(in) :: finished
+      stop = interrupt_requested() .or. problem%position%stop_now(finished, problem%increments)
+      if (stop .and. model%output%exact_restart == EXACT_ON_STOP) stop = problem%position%exact
+   end function stop_pending
 
    !> Moves u and the massif's stress, strain and hist arrays of `problem` into `r`.
    subroutine lend(problem, r)

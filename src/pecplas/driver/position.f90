@@ -29,6 +29,9 @@ module pecplas_driver_position
       !> Test hook (--stop-after-increments N): stop with status 'interrupted' once the run
       !> has N converged increments in all (0: never).
       integer :: stop_after = 0
+      !> The restart data written with the last increment make a restarted run exact (they
+      !> carry the last factorised matrix and, when due, the points' tangents).
+      logical :: exact = .false.
    contains
       procedure :: record => position_record
       procedure :: stop_now => position_stop_now

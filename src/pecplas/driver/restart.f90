@@ -34,16 +34,17 @@ contains
    !> The next increment's first iteration solves with the last factorisation (full Newton:
    !> the tangent of the last iterate that refactorised; a full-Newton fallback: its own
    !> solver's). Its matrix is packed (`operator`, `tangent_operator`; the item `operators`
-   !> says which, and the Katona augmentation factor) unless it is the set-up stiffness,
-   !> which the restarted run factorises anyway, so that the restarted run solves with the
-   !> same factorisations. Not with *OUTPUT, EXACT_RESTART=NO, nor in a run whose ranks
-   !> each hold a part of the matrix.
+   !> says which, the Katona augmentation factor and whether the data are exact) unless it
+   !> is the set-up stiffness, which the restarted run factorises anyway, so that the
+   !> restarted run solves with the same factorisations. Only when problem%position%exact
+   !> (*OUTPUT, EXACT_RESTART=: with the increment the run stops after, with every one, or
+   !> never), and not in a run whose ranks each hold a part of the matrix.
    function pack_restart(model, problem, fields) result(data)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       logical, intent(in) :: fields
       type(restart_data_t) :: data
-      real(wp) :: ops(3)
+      real(wp) :: ops(4)
       integer :: s
       logical :: tangents
       associate (p => problem%position, st => problem%state, kt => problem%katona)
@@ -102,8 +103,8 @@ contains
             call data%add('katona_z', reshape(kt%z, [size(kt%z)]))
             call data%add('katona_anchor', kt%anchor)
          end if
-         ops = [0.0_wp, 0.0_wp, kt%alpha]
-         if (model%output%exact_restart .and. .not. partitioned(model)) then
+         ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
+         if (p%exact .and. .not. partitioned(model)) then
             if (problem%solver_moved .and. problem%k_owner == K_SOLVER) then
                call data%add('operator', problem%k%values)
                ops(1) = 1.0_wp
@@ -186,6 +187,12 @@ contains
          if (allocated(error)) return
          call unpack_path(data, problem, error)
          if (allocated(error)) return
+         p%exact = .false.
+         if (data%has('operators')) then
+            call data%get('operators', 4, v, error)
+            if (allocated(error)) return
+            p%exact = v(4) /= 0.0_wp
+         end if
          ! (datasets of an earlier state may remain in the group: read only what this one
          ! wrote)
          tangents = tangents_carried(model, problem)
@@ -313,7 +320,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: ops(:), v(:)
       if (.not. data%has('operators')) return
-      call data%get('operators', 3, ops, error)
+      call data%get('operators', 4, ops, error)
       if (allocated(error)) return
       if (partitioned(model)) return
       if (ops(1) /= 0.0_wp) then
@@ -375,7 +382,7 @@ contains
       type(problem_t), intent(in) :: problem
       integer :: i
       carried = .false.
-      if (.not. model%output%exact_restart) return
+      if (.not. problem%position%exact) return
       carried = problem%position%path /= PATH_NONE
       do i = problem%position%istep, size(model%steps)
          carried = carried .or. model%steps(i)%arc_length

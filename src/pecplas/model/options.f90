@@ -5,6 +5,9 @@ module pecplas_model_options
    private
 
    public :: analysis_t, solver_options_t, output_options_t
+
+   !> output_options_t%exact_restart values.
+   integer, parameter, public :: EXACT_NO = 0, EXACT_ON_STOP = 1, EXACT_ALWAYS = 2
    public :: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, NONLINEAR_METHODS
 
    integer, parameter :: PLANE_STRAIN = 1, AXISYMMETRIC = 2
@@ -54,10 +57,12 @@ module pecplas_model_options
       logical :: stresses = .true., strains = .true., reactions = .true.
       !> Zienkiewicz–Zhu error estimate with the fields (*OUTPUT, ERROR_ESTIMATE=YES).
       logical :: error_estimate = .false.
-      !> The restart data carry the last matrix factorised during the run, so that a
-      !> restarted run repeats the uninterrupted one's arithmetic (*OUTPUT, EXACT_RESTART=NO:
-      !> only the state, the restarted run starting from the set-up factorisation).
-      logical :: exact_restart = .true.
+      !> When the restart data carry what makes a restarted run repeat the uninterrupted
+      !> one's arithmetic (the last factorised matrix, the points' tangents before an
+      !> arc-length path): 'ON_STOP' with the increment after which the run stops on a
+      !> signal or --stop-after-increments, 'ALWAYS' with every increment (also a run
+      !> killed outright), 'NO' never (*OUTPUT, EXACT_RESTART=).
+      integer :: exact_restart = EXACT_ON_STOP
    end type output_options_t
 
 end module pecplas_model_options

@@ -15,7 +15,7 @@ module pecplas_io_deck_reader_options
    use pecplas_model_adapt_request, only: parse_target, parse_goal_spec, goal_spec_t, &
       GOAL_NODE, GOAL_REACTION
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
-      NONLINEAR_METHODS
+      NONLINEAR_METHODS, EXACT_NO, EXACT_ON_STOP, EXACT_ALWAYS
    implicit none (type, external)
    private
 
@@ -138,13 +138,13 @@ contains
    end subroutine read_solver
 
    !> *OUTPUT [, FILE=path] [, EVERY=n] [, STRESSES=YES|NO] [, STRAINS=..] [, REACTIONS=..]
-   !> [, ERROR_ESTIMATE=YES|NO] [, EXACT_RESTART=YES|NO]
+   !> [, ERROR_ESTIMATE=YES|NO] [, EXACT_RESTART=ON_STOP|ALWAYS|NO]
    subroutine read_output(state, model, block, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
-      character(len=:), allocatable :: file
+      character(len=:), allocatable :: file, exact
       logical :: found
       call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'FILE', 'EVERY', &
          'STRESSES', 'STRAINS', 'REACTIONS', 'ERROR_ESTIMATE', 'EXACT_RESTART'], error)
@@ -161,7 +161,18 @@ contains
       if (allocated(error)) return
       call param_yes_no(state, block, 'ERROR_ESTIMATE', model%output%error_estimate, error)
       if (allocated(error)) return
-      call param_yes_no(state, block, 'EXACT_RESTART', model%output%exact_restart, error)
+      if (allocated(error)) return
+      exact = 'ON_STOP'
+      call param_choice(state, block, 'EXACT_RESTART', [character(len=7) :: 'ON_STOP', &
+         'ALWAYS', 'NO'], exact, error)
+      select case (exact)
+      case ('ALWAYS')
+         model%output%exact_restart = EXACT_ALWAYS
+      case ('NO')
+         model%output%exact_restart = EXACT_NO
+      case default
+         model%output%exact_restart = EXACT_ON_STOP
+      end select
    end subroutine read_output
 
    !> *ADAPT, TARGET=1% [, GOAL=energy|node:N:x|y|reaction:SET[:x|y]|limit] [, MAX_DOFS=n]:
