@@ -377,10 +377,11 @@ def test_restart_inside_a_limit_probe(tmp_path):
     ("test/data/katona/pad_slip.inp", 2),        # Katona friction limit (cuts, limit load)
     ("input/s2/s2_katona.inp", 3),               # S2 pile, Katona shaft
     ("test/data/modjoin/fe_cyclic.inp", 9),      # MODJOIN cyclic, full Newton
-    ("test/data/modjoin/fe_cnl_force_arc.inp", 8)])  # arc-length through a peak
+    ("test/data/modjoin/fe_cnl_force_arc.inp", 8),   # arc-length through a peak
+    ("test/data/modjoin/fe_cnl_arc_then_load.inp", 1)])  # arc-length landing, then load
 def test_restart_anywhere(tmp_path, deck, every):
-    """Stopped after every `every`-th increment and restarted, each run ends as the
-    uninterrupted one: the same status, the same limit when there is one, the same final
+    """Stopped after every `every`-th increment and restarted, each run stops after exactly
+    that increment and the restarted one ends as the uninterrupted one: the same status, the same limit when there is one, the same final
     displacements to 1e-12 of the largest (the restart data carry all the run's arithmetic
     depends on, wherever it stops)."""
     d = ROOT / deck
@@ -396,7 +397,9 @@ def test_restart_anywhere(tmp_path, deck, every):
         assert r.returncode == 4, (n, r.stderr)
         r = run([d, "-o", rest, "--restart", part], d.parent)
         assert r.returncode in (0, 3), (n, r.stderr)
-        uc, _, _, st_c = last_fields(rest)
+        uc, _, rows, st_c = last_fields(rest)
+        # stopped after exactly n increments (also one that lands on a step's target)
+        assert len(rows) == total - n, (n, len(rows))
         err = np.abs(uc - ua).max() / np.abs(ua).max()
         same_limit = st_a != "limit load" or limit_of(rest) == limit_of(full)
         if st_c != st_a or err > 1e-12 or not same_limit:

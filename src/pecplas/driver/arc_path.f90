@@ -182,8 +182,14 @@ contains
             dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
                step%max_length*dl0)
             level = 0
-            call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
-               0.0_wp, f0, fint, out%du, tr)
+            ! (an increment that lands on the target ends the path: none goes on)
+            if (landed) then
+               call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
+                  0.0_wp, f0, fint, out%du)
+            else
+               call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
+                  0.0_wp, f0, fint, out%du, tr)
+            end if
             ! landing on the target of the last step ends the run (END_TARGET below, and a
             ! load-control probe ends its step there): that increment is written once
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &

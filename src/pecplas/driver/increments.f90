@@ -167,6 +167,10 @@ contains
                      call interrupted_status(problem, status, message)
                   case (END_PASSED, END_TARGET)
                      ! a convergence failure, not a limit: load control goes on from here
+                     ! (a probe that landed on the target: the run may have to stop there)
+                     if (res%kind == END_TARGET) then
+                        if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
+                     end if
                      tau = res%tau
                      level = 0
                      dt = dt0
@@ -232,6 +236,8 @@ contains
             ! hold none: a new path starts from the converged state)
             if (problem%position%path == PATH_STEP) path = problem%position%arc
             problem%position%resume = .false.
+            ! stopped after the increment that landed on the step's target: step done
+            if (path%req%tau_start >= 1.0_wp - 1.0e-12_wp) return
          end if
          if (.not. path%started) then
             path%req%origin = PATH_STEP
@@ -244,7 +250,8 @@ contains
          if (allocated(error)) return
          select case (res%kind)
          case (END_TARGET)
-            return
+            ! the step ends on its target: the run may have to stop after that increment
+            if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
          case (END_INTERRUPTED)
             call interrupted_status(problem, status, message)
          case (END_NODE)
