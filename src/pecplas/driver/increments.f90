@@ -397,9 +397,12 @@ contains
       if (interrupt_requested()) then
          message = 'stopped by '//interrupt_signal()//' after increment '// &
             itoa(problem%increments)//'; continue with --restart'
-      else
+      else if (problem%position%stop_now(.false., problem%increments)) then
          message = 'stopped after the requested number of increments '// &
             '(--stop-after-increments); continue with --restart'
+      else
+         message = 'stopped by a termination signal to another MPI rank after increment '// &
+            itoa(problem%increments)//'; continue with --restart'
       end if
    end subroutine interrupted_status
 

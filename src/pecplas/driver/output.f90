@@ -11,6 +11,7 @@ module pecplas_driver_output
    use pecplas_driver_restart, only: pack_restart
    use pecplas_model_options, only: EXACT_ALWAYS, EXACT_ON_STOP
    use pecplas_signals, only: interrupt_requested
+   use pecplas_parallel, only: parallel_any
    use pecplas_driver_estimator, only: error_estimate_t, estimate_error
    implicit none (type, external)
    private
@@ -80,21 +81,25 @@ contains
       case (EXACT_ALWAYS)
          due = .true.
       case (EXACT_ON_STOP)
-         due = interrupt_requested() .or. problem%position%stop_now(.false., problem%increments)
+         ! the ranks of an MPI run decide together (a signal may reach them apart)
+         due = parallel_any(interrupt_requested()) .or. &
+            problem%position%stop_now(.false., problem%increments)
       case default
          due = .false.
       end select
    end function exact_due
 
    !> True when the run must stop after the increment just written: a termination signal
-   !> or the --stop-after-increments hook (`finished`: the run ends there anyway). Under
+   !> (on any rank of an MPI run: all ranks stop together) or the --stop-after-increments
+   !> hook (`finished`: the run ends there anyway). Under
    !> EXACT_RESTART=ON_STOP a signal that came after that increment's restart data were
    !> packed without the exact part is acted on after the next increment, which has it.
    logical function stop_pending(model, problem, finished) result(stop)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       logical, intent(in) :: finished
-      stop = interrupt_requested() .or. problem%position%stop_now(finished, problem%increments)
+      stop = parallel_any(interrupt_requested()) .or. &
+         problem%position%stop_now(finished, problem%increments)
       if (stop .and. model%output%exact_restart == EXACT_ON_STOP) stop = problem%position%exact
    end function stop_pending
 
