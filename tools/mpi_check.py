@@ -17,11 +17,14 @@ rank count that wrote the data of one rank (the last factorised matrix carried) 
 the uninterrupted one-rank run's displacements to 1e-12 of their largest; every other pair
 (several ranks hold no whole matrix to carry, doc/mpi.md) must complete within RESTART_TOL of
 the uninterrupted run on the restarting rank count (a different first iteration, the same
-equilibrium to the deck's Newton tolerance). --unit runs Fortran test suites of the MPI build's test
+equilibrium to the deck's Newton tolerance). --signal DECK runs DECK (with MUMPS) on 2 ranks
+and sends SIGTERM to one rank other than 0 half-way: every rank must stop after the same
+increment (exit 4 from mpirun, status 'interrupted' in rank 0's results file, which names the
+signal's rank; no rank left waiting in a collective). --unit runs Fortran test suites of the MPI build's test
 program (e.g. linalg_mumps) under `mpirun -np N` for each N: every rank must pass them all.
 
 Usage: tools/mpi_check.py PECPLAS_BIN DECK... [--singular DECK...] [--np 1 2] [--work DIR]
-                          [--restart DECK N] [--unit TESTS_BIN SUITE...]
+                          [--restart DECK N] [--signal DECK] [--unit TESTS_BIN SUITE...]
 Exit status 0 when every comparison holds, 1 otherwise (each failure printed).
 """
 
@@ -110,6 +113,7 @@ def main():
     parser.add_argument("--singular", nargs="*", default=[])
     parser.add_argument("--unit", nargs="+", default=[], metavar="TESTS_BIN SUITE")
     parser.add_argument("--restart", nargs=2, default=None, metavar=("DECK", "N"))
+    parser.add_argument("--signal", default=None, metavar="DECK")
     args = parser.parse_args()
     if len(args.unit) == 1:
         parser.error("--unit needs the test program and at least one suite")
@@ -166,6 +170,8 @@ def main():
     if args.restart:
         failures += check_restart(args.binary, args.restart[0], int(args.restart[1]), args.np,
                                   work, env)
+    if args.signal:
+        failures += check_signal(args.binary, args.signal, work, env)
     if args.unit:
         failures += check_unit(args.unit[0], args.unit[1:], args.np, env)
     return 1 if failures else 0
@@ -275,6 +281,48 @@ def check_restart(binary, deck, n_stop, nps, work, env):
     finally:
         os.remove(mdeck)
     return failures
+
+
+def check_signal(binary, deck, work, env):
+    """Number of failures (0 or 1) of a SIGTERM sent to rank 1 alone of a 2-rank run."""
+    import signal
+    mdeck = write_mumps_deck(deck, "mumps_signal")
+    out = os.path.join(work, "signal.h5")
+    try:
+        proc, t = run(["mpirun", "-np", "2", binary, mdeck, "-o", out, "--quiet"], env)
+        if proc.returncode != 0:
+            print(f"FAIL signal {deck}: the uninterrupted run exit {proc.returncode}")
+            return 1
+        os.remove(out)
+        p = subprocess.Popen(["mpirun", "-np", "2", binary, mdeck, "-o", out, "--quiet"],
+                             env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(0.5 * t)
+        kids = subprocess.run(["pgrep", "-P", str(p.pid), "-f", "pecplas"],
+                              capture_output=True, text=True).stdout.split()
+        if len(kids) == 2:
+            os.kill(int(sorted(kids, key=int)[-1]), signal.SIGTERM)
+        try:
+            _, err = p.communicate(timeout=120)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            print(f"FAIL signal {deck}: the ranks hung after SIGTERM to one of them")
+            return 1
+        if len(kids) != 2 or p.returncode == 0:
+            print(f"ok   signal {deck}: (not tested: the run ended before the signal, or its "
+                  f"ranks were not found: {kids})")
+            return 0
+        with h5py.File(out, "r") as f:
+            status = f.attrs["status"]
+            message = f.attrs["status_message"]
+            rows = len(f["history/step"])
+        if p.returncode == 4 and status == "interrupted" and "another MPI rank" in message:
+            print(f"ok   signal {deck}: SIGTERM to rank 1 alone stopped both ranks after "
+                  f"increment {rows}: {message}")
+            return 0
+        print(f"FAIL signal {deck}: exit {p.returncode}, status {status}: {message}\n{err}")
+        return 1
+    finally:
+        os.remove(mdeck)
 
 
 if __name__ == "__main__":
