@@ -160,7 +160,7 @@ test-mpi: build-mpi
 	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas_tests
 	$(PYTHON) tools/mpi_check.py $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
 	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
-	  --signal test/data/plasticity/footing_t6.inp \
+	  --signal test/data/plasticity/footing_t6.inp --write-failure test/data/plasticity/footing_t6.inp \
 	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps
 
 bench: deps

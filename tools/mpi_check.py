@@ -20,11 +20,15 @@ the uninterrupted run on the restarting rank count (a different first iteration,
 equilibrium to the deck's Newton tolerance). --signal DECK runs DECK (with MUMPS) on 2 ranks
 and sends SIGTERM to one rank other than 0 half-way: every rank must stop after the same
 increment (exit 4 from mpirun, status 'interrupted' in rank 0's results file, which names the
-signal's rank; no rank left waiting in a collective). --unit runs Fortran test suites of the MPI build's test
+signal's rank; no rank left waiting in a collective). --write-failure DECK runs DECK (with
+MUMPS) on 2 ranks with rank 0's 10th results-file write failing on purpose
+(PECPLAS_TEST_FAIL_WRITE): the run must end at once with exit 3 and the message that names
+the file holding the increments written before (not hang while rank 1 waits). --unit runs Fortran test suites of the MPI build's test
 program (e.g. linalg_mumps) under `mpirun -np N` for each N: every rank must pass them all.
 
 Usage: tools/mpi_check.py PECPLAS_BIN DECK... [--singular DECK...] [--np 1 2] [--work DIR]
-                          [--restart DECK N] [--signal DECK] [--unit TESTS_BIN SUITE...]
+                          [--restart DECK N] [--signal DECK] [--write-failure DECK]
+                          [--unit TESTS_BIN SUITE...]
 Exit status 0 when every comparison holds, 1 otherwise (each failure printed).
 """
 
@@ -114,6 +118,7 @@ def main():
     parser.add_argument("--unit", nargs="+", default=[], metavar="TESTS_BIN SUITE")
     parser.add_argument("--restart", nargs=2, default=None, metavar=("DECK", "N"))
     parser.add_argument("--signal", default=None, metavar="DECK")
+    parser.add_argument("--write-failure", default=None, metavar="DECK")
     args = parser.parse_args()
     if len(args.unit) == 1:
         parser.error("--unit needs the test program and at least one suite")
@@ -172,6 +177,8 @@ def main():
                                   work, env)
     if args.signal:
         failures += check_signal(args.binary, args.signal, work, env)
+    if args.write_failure:
+        failures += check_write_failure(args.binary, args.write_failure, work, env)
     if args.unit:
         failures += check_unit(args.unit[0], args.unit[1:], args.np, env)
     return 1 if failures else 0
@@ -320,6 +327,29 @@ def check_signal(binary, deck, work, env):
                   f"increment {rows}: {message}")
             return 0
         print(f"FAIL signal {deck}: exit {p.returncode}, status {status}: {message}\n{err}")
+        return 1
+    finally:
+        os.remove(mdeck)
+
+
+def check_write_failure(binary, deck, work, env):
+    """Number of failures (0 or 1) of a 2-rank run whose rank 0 cannot write increment 10."""
+    mdeck = write_mumps_deck(deck, "mumps_write")
+    out = os.path.join(work, "write_failure.h5")
+    try:
+        fail_env = dict(env, PECPLAS_TEST_FAIL_WRITE="10")
+        try:
+            proc = subprocess.run(["mpirun", "-np", "2", binary, mdeck, "-o", out, "--quiet"],
+                                  env=fail_env, capture_output=True, text=True, timeout=120)
+        except subprocess.TimeoutExpired:
+            print(f"FAIL write failure {deck}: the ranks hung after rank 0's write failed")
+            return 1
+        said = "cannot write results" in proc.stderr and "failed on purpose" in proc.stderr
+        if proc.returncode == 3 and said and not os.path.exists(out):
+            print(f"ok   write failure {deck}: rank 0's 10th write failed on 2 ranks: exit 3 "
+                  "at once, the increments before kept in the running file")
+            return 0
+        print(f"FAIL write failure {deck}: exit {proc.returncode}\n{proc.stderr}")
         return 1
     finally:
         os.remove(mdeck)

@@ -4,7 +4,7 @@
 !> SIGTERM/SIGINT/SIGHUP, 1 internal error) so tests can call it.
 module pecplas_cli
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, &
+   use pecplas_error, only: error_t, input_error, fatal_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, &
       EXIT_INTERRUPTED
    use pecplas_version, only: PROGRAM_NAME, VERSION
    use pecplas_files, only: make_directories, path_stem, path_dir, same_file, exit_now
@@ -27,7 +27,7 @@ module pecplas_cli
    use pecplas_driver_restart, only: restore_restart
    use pecplas_provenance, only: version_lines
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
-   use pecplas_parallel, only: parallel_rank, parallel_size
+   use pecplas_parallel, only: parallel_rank, parallel_size, parallel_any
    implicit none (type, external)
    private
 
@@ -268,6 +268,9 @@ contains
       results%detached = parallel_rank() > 0
       call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
+      ! all ranks stop when rank 0 cannot create the file (the others would wait for ever)
+      if (parallel_any(allocated(error)) .and. .not. allocated(error)) call fatal_error(error, &
+         'rank 0 could not create the results file (its message is on its standard error)')
       if (allocated(error)) then
          code = command_error(COMMAND, EXIT_INPUT, 'cannot write results: '//error%text())
          if (results%is_broken()) call exit_now(code)

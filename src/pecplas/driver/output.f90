@@ -2,7 +2,7 @@
 module pecplas_driver_output
    use, intrinsic :: iso_fortran_env, only: output_unit
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_error, only: error_t, fatal_error
    use pecplas_model, only: model_t
    use pecplas_driver_problem, only: problem_t
    use pecplas_io_results_file, only: results_file_t
@@ -67,6 +67,12 @@ contains
       ! with the state to restart from, replaced at every converged increment (with the
       ! fields, its lent arrays by reference: pack_restart does not read them)
       call results%write_increment(r, error, pack_restart(model, problem, r%write_fields), final)
+      ! rank 0 alone writes: when it cannot, every rank of an MPI run stops with it
+      if (parallel_any(allocated(error)) .and. .not. allocated(error)) then
+         call fatal_error(error, 'rank 0 could not write the results file (its message is '// &
+            'on its standard error)')
+         call results%note_failure(error%message)
+      end if
       if (r%write_fields) call give_back(problem, r)
    end subroutine write_increment
 

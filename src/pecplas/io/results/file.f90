@@ -109,6 +109,7 @@ module pecplas_io_results_file
       procedure :: is_open => results_is_open
       procedure :: working_path => results_working_path
       procedure :: write_failure => results_write_failure
+      procedure :: note_failure => results_note_failure
       procedure :: is_broken => results_is_broken
       procedure :: free => results_free
       procedure :: discard => abandon
@@ -748,6 +749,14 @@ contains
       text = ''
       if (allocated(this%failure)) text = this%failure
    end function results_write_failure
+
+   !> Keeps `text` as the file's write failure when it has none: another MPI rank's, which
+   !> writes the file (this rank's copy is detached), so that every rank ends alike.
+   subroutine results_note_failure(this, text)
+      class(results_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: text
+      if (.not. allocated(this%failure)) this%failure = text
+   end subroutine results_note_failure
 
    !> True when the HDF5 library failed on this file: the command layer should then end
    !> the process without the library's exit handler (pecplas_files: exit_now).
