@@ -196,9 +196,11 @@ contains
    !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
    !> updating trial stresses, strains, history and tangents from the converged state.
    !> `law_time` (if present) accumulates the wall time of the constitutive updates (summed
-   !> over threads). Elements run in parallel (OpenMP), each updating its own points and
-   !> element vector; the vectors are then added to fint serially in element order, so fint
-   !> does not depend on the number of threads, to the last bit.
+   !> over threads). Elements run in parallel (OpenMP), CHUNK at a time, each updating its own
+   !> points and element vector; the vectors are then added to fint serially in element
+   !> order, so fint does not depend on the number of threads, to the last bit. (The chunks
+   !> keep the element vectors in a small array used again, not one of the whole set
+   !> touched afresh by every call: 32 MB at 1e6 equations.)
    subroutine internal_forces(model, rules, u, state, fint, error, law_time)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
@@ -207,10 +209,11 @@ contains
       real(wp), intent(out) :: fint(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(wp), intent(inout), optional :: law_time
+      integer, parameter :: CHUNK = 2048
       type(error_t), allocatable :: err
       real(wp), allocatable :: fe(:, :)
       real(wp) :: t0, tlaw
-      integer :: s, e, nn, nel, j, bad
+      integer :: s, e, nn, nel, j, bad, c0, c1
       logical :: timed
 
       timed = present(law_time)
@@ -219,29 +222,35 @@ contains
       do s = 1, size(rules)
          associate (set => model%mesh%esets(s), st => state%sets(s))
             nn = rules(s)%nnode; nel = size(set%conn, 2)
-            allocate (fe(2*nn, nel))
+            allocate (fe(2*nn, min(CHUNK, max(nel, 1))))
             bad = huge(bad)
-            !$omp parallel do default(shared) private(e, err) reduction(+:tlaw) schedule(static) &
-            !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
-            do e = 1, nel
-               call element_forces(model, rules(s), s, e, u, st, fe(:, e), timed, tlaw, err)
-               if (allocated(err)) then
-                  !$omp critical (pecplas_assembly_bad)
-                  bad = min(bad, e)
-                  !$omp end critical (pecplas_assembly_bad)
+            do c0 = 1, nel, CHUNK
+               c1 = min(c0 + CHUNK - 1, nel)
+               !$omp parallel do default(shared) private(e, err) reduction(+:tlaw) &
+               !$omp schedule(static) if (nel >= PARALLEL_MIN_ELEMENTS)
+               do e = c0, c1
+                  call element_forces(model, rules(s), s, e, u, st, fe(:, e - c0 + 1), timed, &
+                     tlaw, err)
+                  if (allocated(err)) then
+                     !$omp critical (pecplas_assembly_bad)
+                     bad = min(bad, e)
+                     !$omp end critical (pecplas_assembly_bad)
+                  end if
+               end do
+               !$omp end parallel do
+               if (bad <= nel) then
+                  ! again, serially, for the message of the first failing element
+                  call element_forces(model, rules(s), s, bad, u, st, fe(:, 1), .false., t0, &
+                     error)
+                  if (.not. allocated(error)) call fatal_error(error, 'element update failed')
+                  call element_context(error, model, s, bad)
+                  return
                end if
-            end do
-            !$omp end parallel do
-            if (bad <= nel) then
-               ! again, serially, for the message of the first failing element
-               call element_forces(model, rules(s), s, bad, u, st, fe(:, bad), .false., t0, error)
-               if (.not. allocated(error)) call fatal_error(error, 'element update failed')
-               call element_context(error, model, s, bad)
-               return
-            end if
-            do e = 1, nel
-               do j = 1, nn
-                  fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + fe(2*j - 1:2*j, e)
+               do e = c0, c1
+                  do j = 1, nn
+                     fint(:, set%conn(j, e)) = fint(:, set%conn(j, e)) + &
+                        fe(2*j - 1:2*j, e - c0 + 1)
+                  end do
                end do
             end do
             deallocate (fe)
