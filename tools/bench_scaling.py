@@ -11,11 +11,15 @@ within the time budget. Geostatic initial stress (K0 = 0.5), then a footing pres
 300 kPa (about half the bearing capacity: plastic zones under the footing edge) in 2
 increments, results written every increment.
 
-For each size, one run of the release pecplas in its own process: wall time, peak resident
-memory (bench_common.run_timed), and the phase times of the end-of-run summary (read+setup,
-assembly, factorisation, solve, residual, of which law updates, output). Time per increment
-= (total - read+setup) / increments; its growth with the number of equations is fitted by
-least squares on log-log (time ~ a N^p).
+For each size, REPEATS runs of the release pecplas, each in its own process: wall time, peak
+resident memory (bench_common.run_timed), and the phase times of the end-of-run summary
+(read+setup, assembly, factorisation, solve, residual, of which law updates, output). Time
+per increment = (total - read+setup) / increments. A size is reported by its median run
+(median time per increment) with the spread [min - max] of the runs and the 1-minute load
+average when the size started; all runs use the same thread setting (OMP_NUM_THREADS =
+OPENBLAS_NUM_THREADS = --threads). The growth with the number of equations is fitted by
+least squares on log-log (time ~ a N^p) over the medians, and over the fastest and the
+slowest run of each size for its spread.
 
 Writes doc/bench/scaling.csv, doc/bench/scaling.png and the fragment doc/bench/scaling.md.
 
@@ -33,16 +37,19 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import (BENCH_DIR, ROOT, executable, run_timed, write_csv,  # noqa: E402
-                          write_fragment)
+from bench_common import (BENCH_DIR, ROOT, executable, load1, run_timed,  # noqa: E402
+                          write_csv, write_fragment)
 
 INCREMENTS = 2
+REPEATS = 3
+TARGET_EXPONENT = 1.25
 TIMEOUT = 480.0  # s per run; a run that takes longer is reported as 'timeout'
 PHASES = ("setup", "assembly", "factorisation", "solve", "residual", "laws", "output")
 HEADER = ["nx", "ny", "equations", "status", "increments", "iterations", "factorisations",
           "wall_s", "peak_mb", "time_per_increment_s", "time_per_iteration_s",
           *[f"t_{p}_s" for p in PHASES],
-          "total_s", "flops"]
+          "total_s", "flops", "repeats", "load1", "threads", "tpi_min_s", "tpi_max_s"]
+TPI = HEADER.index("time_per_increment_s")
 
 
 def equations(nx, ny):
@@ -129,9 +136,13 @@ def plot(rows, p, a, path):
     ok = [r for r in rows if r[3] == "completed"]
     n = np.array([r[2] for r in ok], float)
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.2))
-    ax1.loglog(n, [r[9] for r in ok], "o-", label="time per increment")
+    ax1.loglog(n, [r[TPI] for r in ok], "o-", label="time per increment (median)")
+    lo = np.array([col(r, "tpi_min_s") for r in ok], float)
+    hi = np.array([col(r, "tpi_max_s") for r in ok], float)
+    if np.all(np.isfinite(lo)):
+        ax1.fill_between(n, lo, hi, color="tab:blue", alpha=0.2, lw=0, label="spread of runs")
     ax1.loglog(n, a * n**p, "k--", lw=1, label=f"fit ~ N^{p:.2f}")
-    ax1.loglog(n, [r[10] for r in ok], "^-", color="tab:green", label="time per iteration")
+    ax1.loglog(n, [r[TPI + 1] for r in ok], "^-", color="tab:green", label="time per iteration")
     ax1.set_xlabel("equations N")
     ax1.set_ylabel("wall time [s]")
     ax3 = ax1.twinx()
@@ -167,37 +178,96 @@ def row_times(r):
     return t
 
 
+def col(r, name):
+    return r[HEADER.index(name)]
+
+
+def median_run(runs):
+    """The row of a size from its repeated runs (rows of HEADER without the last five
+    columns): the run with the median time per increment among the completed ones, with
+    the spread (min, max) of their times per increment; a size with a failed run is
+    reported by that run (its status), so a failure is never hidden by the others."""
+    bad = [r for r in runs if r[3] != "completed"]
+    if bad:
+        return list(bad[0]), float("nan"), float("nan")
+    ranked = sorted(runs, key=lambda r: r[TPI])
+    t = [r[TPI] for r in ranked]
+    return list(ranked[(len(ranked) - 1) // 2]), t[0], t[-1]
+
+
+def exponents(rows):
+    """Exponent of the time per increment over the completed sizes: fitted on the medians,
+    on each size's fastest run and on its slowest run (nan below two sizes); and the local
+    slope between the two largest sizes (the kink test)."""
+    ok = [r for r in rows if r[3] == "completed"]
+    nan = float("nan")
+    if len(ok) < 2:
+        return nan, nan, nan, nan
+    n = [r[2] for r in ok]
+    p = fit_exponent(n, [r[TPI] for r in ok])[0]
+    lo = fit_exponent(n, [col(r, "tpi_min_s") for r in ok])[0]
+    hi = fit_exponent(n, [col(r, "tpi_max_s") for r in ok])[0]
+    a, b = ok[-2], ok[-1]
+    last = float(np.log(b[TPI] / a[TPI]) / np.log(b[2] / a[2]))
+    return p, lo, hi, last
+
+
+def spread_text(lo, hi):
+    """The exponents over the fastest and slowest runs, when the sizes were repeated."""
+    if not (np.isfinite(lo) and np.isfinite(hi)):
+        return ""
+    return f", medians; N^{lo:.2f} over each size's fastest run, N^{hi:.2f} over its slowest"
+
+
 def fragment(rows, p, q, wall, quick):
     ok = [r for r in rows if r[3] == "completed"]
+    _, lo, hi, last = exponents(rows)
+    loads = [col(r, "load1") for r in rows if col(r, "load1") == col(r, "load1")]
+    reps = sorted({int(col(r, "repeats")) for r in rows if col(r, "repeats") == col(r, "repeats")})
+    threads = sorted({int(col(r, "threads")) for r in rows if col(r, "threads") == col(r, "threads")})
+    load_text = (f"1-minute load average {min(loads):.1f}–{max(loads):.1f} when the sizes "
+                 f"started (on {os.cpu_count()} cores)" if loads else "load not recorded")
+    rep_text = ("median of " + "/".join(str(k) for k in reps) + " runs per size, spread "
+                "[min – max]" if reps else "one run per size")
+    th_text = ("/".join(str(k) for k in threads) if threads
+               else os.environ.get("OPENBLAS_NUM_THREADS", "?"))
     L = ["## Scaling (`tools/bench_scaling.py`)", "",
          "Strip footing (Q8, Drucker–Prager matched to Mohr–Coulomb in plane strain, "
          "c = 10 kPa, φ = ψ = 30°), geostatic initial "
          "stress (K0 = 0.5), then 300 kPa in 2 increments, full Newton with CHOLMOD, results "
          "every increment. Time per "
-         "increment = (total − read+setup) / increments. "
-         f"BLAS threads {os.environ.get('OPENBLAS_NUM_THREADS', '?')}. "
+         "increment = (total − read+setup) / increments; "
+         f"{rep_text}; threads {th_text} (OMP_NUM_THREADS = OPENBLAS_NUM_THREADS: CHOLMOD's "
+         f"team and the BLAS); {load_text}. "
          f"{'Quick mode (small sizes only). ' if quick else ''}"
          f"Wall time of the benchmark {wall:.0f} s. Data: `scaling.csv`.", "",
          f"**Time per increment grows as N^{p:.2f}** (least squares on log–log over "
-         f"{len(ok)} sizes); time per Newton iteration as N^{q:.2f}.", "",
-         "| equations | status | increments | iterations | time/increment [s] | time/iteration [s] "
+         f"{len(ok)} sizes{spread_text(lo, hi)}); local slope between the two largest sizes "
+         f"N^{last:.2f}: target N^<={TARGET_EXPONENT} with no kink "
+         f"{'met' if p <= TARGET_EXPONENT and last <= TARGET_EXPONENT else 'not met'} on this "
+         f"run. Time per Newton iteration as N^{q:.2f}.", "",
+         "| equations | status | load | increments | iterations | time/increment [s] "
+         "| time/iteration [s] "
          "| peak memory [MB] | factorisation | law updates | assembly | output | solve "
          "| residual w/o laws | other |",
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if r[3] == "completed":
             s = shares(row_times(r))
             sh = " | ".join(f"{100 * s[k]:.0f} %" for k in s)
         else:
             sh = " | ".join(["-"] * 7)
-        L.append(f"| {r[2]} | {r[3]} | {r[4]} | {r[5]} | {r[9]:.3g} | {r[10]:.3g} | {r[8]:.0f} "
-                 f"| {sh} |")
-    fl = [r for r in ok if r[-1] == r[-1] and r[-1] > 0]
+        spread = (f" [{col(r, 'tpi_min_s'):.3g} – {col(r, 'tpi_max_s'):.3g}]"
+                  if col(r, "tpi_min_s") == col(r, "tpi_min_s") else "")
+        ld = f"{col(r, 'load1'):.1f}" if col(r, "load1") == col(r, "load1") else "-"
+        L.append(f"| {r[2]} | {r[3]} | {ld} | {r[4]} | {r[5]} | {r[TPI]:.3g}{spread} "
+                 f"| {r[TPI + 1]:.3g} | {r[8]:.0f} | {sh} |")
+    fl = [r for r in ok if col(r, "flops") == col(r, "flops") and col(r, "flops") > 0]
     if len(fl) >= 2:
-        f, _ = fit_exponent([r[2] for r in fl], [r[-1] for r in fl])
+        f, _ = fit_exponent([r[2] for r in fl], [col(r, "flops") for r in fl])
         i = HEADER.index("t_factorisation_s")
         g, _ = fit_exponent([r[2] for r in fl], [r[i] / r[4] for r in fl])
-        h, _ = fit_exponent([r[2] for r in fl], [r[9] - r[i] / r[4] for r in fl])
+        h, _ = fit_exponent([r[2] for r in fl], [r[TPI] - r[i] / r[4] for r in fl])
         L += ["", f"The flop count of one factorisation (CHOLMOD's analysis, independent of "
               f"the machine) grows as N^{f:.2f}, near the N^1.5 of nested dissection on a 2-D "
               f"mesh, the least any ordering achieves; the factorisation time per increment "
@@ -207,9 +277,9 @@ def fragment(rows, p, q, wall, quick):
               "less up to 1e6 "
               "equations would need a linear solver whose cost grows more slowly than a "
               "sparse factorisation's (an iterative one)."]
-    L += ["", "Shares are of the increment time; the law updates are the stress integration "
-          "at the Gauss points (the part of the residual timer inside the material updates).",
-          "", "![scaling](scaling.png)", ""]
+    L += ["", "Shares are of the increment time (median run); the law updates are the stress "
+          "integration at the Gauss points (the part of the residual timer inside the material "
+          "updates).", "", "![scaling](scaling.png)", ""]
     return "\n".join(L)
 
 
@@ -222,6 +292,8 @@ def main():
                     "the exponent does not depend on how busy the other core is)")
     ap.add_argument("--sizes", type=float, nargs="+", default=None,
                     help="target equation counts (default 1e4 3e4 1e5 3e5 1e6, quick: 1e4 3e4 1e5)")
+    ap.add_argument("--repeats", type=int, default=REPEATS,
+                    help=f"runs per size (default {REPEATS}; the median is reported)")
     ap.add_argument("--render", action="store_true",
                     help="only write the fragment and figure again from doc/bench/scaling.csv")
     a = ap.parse_args()
@@ -241,23 +313,34 @@ def main():
             deck = tmp / f"footing_{nx}x{ny}.inp"
             make_deck(nx, ny, deck)
             out = deck.with_suffix(".h5")
-            r = run_timed([exe, deck, "-o", out], timeout=TIMEOUT)
-            tm, (inc, its, fac), status = parse_summary(r["stdout"])
-            if r["rc"] is None:
-                status = "timeout"
-            tpi = (tm["total"] - tm["setup"]) / inc if inc and tm else float("nan")
-            m = re.search(r"equations (\d+)", r["stdout"])
-            neq = int(m.group(1)) if m else equations(nx, ny)
-            rows.append([nx, ny, neq, status, inc, its, fac, round(r["wall"], 3),
-                         round(r["peak_mb"], 1), round(tpi, 4),
-                         round(tpi * inc / its, 5) if its else float("nan"),
-                         *[tm.get(k, float("nan")) for k in PHASES], tm.get("total", float("nan")),
-                         factorisation_flops(r["stdout"])])
-            print(*rows[-1], sep="\t", flush=True)
+            load = load1()
+            runs = []
+            for _ in range(a.repeats):
+                runs.append(one_run(exe, deck, out, nx, ny))
+                print(*runs[-1], sep="\t", flush=True)
+                if runs[-1][3] != "completed":
+                    break
+            row, lo, hi = median_run(runs)
+            rows.append(row + [len(runs), load, a.threads, lo, hi])
             for f in tmp.glob(deck.stem + "*"):
                 f.unlink()
     wall = time.perf_counter() - t0
     finish(rows, wall, a.quick)
+
+
+def one_run(exe, deck, out, nx, ny):
+    """One run of the deck: a row of HEADER up to `flops`."""
+    r = run_timed([exe, deck, "-o", out], timeout=TIMEOUT)
+    tm, (inc, its, fac), status = parse_summary(r["stdout"])
+    if r["rc"] is None:
+        status = "timeout"
+    tpi = (tm["total"] - tm["setup"]) / inc if inc and tm else float("nan")
+    m = re.search(r"equations (\d+)", r["stdout"])
+    neq = int(m.group(1)) if m else equations(nx, ny)
+    return [nx, ny, neq, status, inc, its, fac, round(r["wall"], 3), round(r["peak_mb"], 1),
+            round(tpi, 4), round(tpi * inc / its, 5) if its else float("nan"),
+            *[tm.get(k, float("nan")) for k in PHASES], tm.get("total", float("nan")),
+            factorisation_flops(r["stdout"])]
 
 
 def render():
@@ -266,7 +349,11 @@ def render():
     import csv
     with open(BENCH_DIR / "scaling.csv") as f:
         recs = list(csv.reader(f))[1:]
-    rows = [[int(r[0]), int(r[1]), int(r[2]), r[3]] + [float(x) for x in r[4:len(HEADER)]] for r in recs]
+    with open(BENCH_DIR / "scaling.csv") as f:
+        names = next(csv.reader(f))
+    k = len(HEADER) if "tpi_max_s" in names else HEADER.index("flops") + 1
+    rows = [[int(r[0]), int(r[1]), int(r[2]), r[3]] + [float(x) for x in r[4:k]]
+            + [float("nan")] * (len(HEADER) - k) for r in recs]
     for r in rows:
         r[4], r[5], r[6] = int(r[4]), int(r[5]), int(r[6])
     old = (BENCH_DIR / "scaling.md").read_text()
@@ -280,8 +367,8 @@ def render():
 def finish(rows, wall, quick):
     ok = [r for r in rows if r[3] == "completed"]
     nan = (float("nan"), float("nan"))
-    p, a_ = fit_exponent([r[2] for r in ok], [r[9] for r in ok]) if len(ok) >= 2 else nan
-    q, _ = fit_exponent([r[2] for r in ok], [r[10] for r in ok]) if len(ok) >= 2 else nan
+    p, a_ = fit_exponent([r[2] for r in ok], [r[TPI] for r in ok]) if len(ok) >= 2 else nan
+    q, _ = fit_exponent([r[2] for r in ok], [r[TPI + 1] for r in ok]) if len(ok) >= 2 else nan
     write_csv(BENCH_DIR / "scaling.csv", HEADER, rows)
     plot(rows, p, a_, BENCH_DIR / "scaling.png")
     write_fragment("scaling", fragment(rows, p, q, wall, quick))

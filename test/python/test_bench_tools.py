@@ -154,3 +154,45 @@ def test_solver_overhead_lines_add_up():
     assert len(lines) == 3 and lines[2].startswith("- Q4 at 1e6, 1 thread(s): total - bare = 2.00 s")
     nums = [float(x) for x in re.findall(r"[-+]?\d+\.\d+", lines[2].split("=", 2)[2])]
     assert abs(sum(nums) - 2.0) < 1e-9   # 0.40 + 0.50 + 0.15 + 0.45 + 0.45 + 0.05
+
+
+def _scaling_run(neq, tpi, status="completed"):
+    """A row of bench_scaling.HEADER up to `flops` with time per increment `tpi`."""
+    row = [0, 0, neq, status] + [0.0] * (bench_scaling.HEADER.index("flops") - 3)
+    row[bench_scaling.TPI] = tpi
+    return row
+
+
+def test_scaling_reports_the_median_run_and_its_spread():
+    runs = [_scaling_run(100, t) for t in (3.0, 1.0, 2.0)]
+    row, lo, hi = bench_scaling.median_run(runs)
+    assert row[bench_scaling.TPI] == 2.0 and (lo, hi) == (1.0, 3.0)
+    # a failed run is the size's result, whatever the others did
+    runs.append(_scaling_run(100, float("nan"), "timeout"))
+    row, lo, hi = bench_scaling.median_run(runs)
+    assert row[3] == "timeout" and math.isnan(lo) and math.isnan(hi)
+
+
+def test_scaling_exponents_of_medians_fastest_and_slowest_runs():
+    # medians N^1.2 (target N^<=1.25 met); fastest runs 0.9x (same exponent); slowest 1.1x
+    # at the small sizes and 2x at the largest (their fit is steeper). Then the largest
+    # median doubled (a kink): local slope between the two largest sizes
+    # log10(2 * 10^1.2) = 1.5, not met
+    n = [1e4, 1e5, 1e6]
+    rows = []
+    for k, x in enumerate(n):
+        t = 1e-6 * x**1.2
+        r = _scaling_run(int(x), t)
+        rows.append(r + [3, 0.1, 1, 0.9 * t, (2.0 if k == 2 else 1.1) * t])
+    p, lo, hi, last = bench_scaling.exponents(rows)
+    assert p == pytest.approx(1.2, abs=1e-9) and lo == pytest.approx(1.2, abs=1e-9)
+    assert last == pytest.approx(1.2, abs=1e-9)
+    assert hi > 1.2 + 0.1
+    assert p <= bench_scaling.TARGET_EXPONENT
+    text = bench_scaling.fragment(rows, p, 1.2, 10.0, False)
+    assert "median of 3 runs per size" in text and "load average 0.1" in text
+    assert "threads 1" in text and "not met" not in text
+    rows[-1][bench_scaling.TPI] *= 2.0
+    p, _, _, last = bench_scaling.exponents(rows)
+    assert last == pytest.approx(1.2 + math.log10(2.0), abs=1e-9)
+    assert "not met" in bench_scaling.fragment(rows, p, 1.2, 10.0, False)
