@@ -13,10 +13,14 @@ series nx x nx/2 for nx = 10 .. 80 run here (Richardson reference over the three
 adaptive sequence from nx = 10 (target 0.2 %).
 
 Every level the program prints is a point of the adaptive series, at the wall time of the levels
-up to it (what reaching that mesh adaptively costs). Writes doc/bench/adapt.csv (one row per
-level), work_precision_s2.png (redrawn from work_precision.csv with the adaptive series),
-work_precision_footing.png and the fragment adapt.md with the table of the cheapest
-configuration within 1 % / 5 %, uniform and adaptive rows together.
+up to it (what reaching that mesh adaptively costs). Every run is made once, on one thread
+(OMP_NUM_THREADS=1), with the 1-minute load average recorded when it starts (CSV column load1):
+the wall times are single runs (indicative), the errors and DOF counts exact.
+
+Writes doc/bench/adapt.csv (one row per level), work_precision_s2.png (redrawn from
+work_precision.csv with the adaptive series), work_precision_footing.png and the fragment
+adapt.md with the table of the cheapest configuration within 1 % / 5 %, uniform and adaptive
+rows together.
 """
 import argparse
 import csv
@@ -83,22 +87,32 @@ def csv_runs(scene="s2"):
                              method=method, series=r["series"], level=int(r["level"]),
                              increments=int(r["increments"]), dofs=int(r["dofs"]),
                              status=r["status"], wall=float(r["wall_s"]), value=value,
-                             error=err, ref=ref))
+                             error=err, ref=ref, load1=_float(r.get("load1"))))
     return runs
 
 
+def _float(text):
+    """A CSV number; nan when empty or missing (a file written before the column existed)."""
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
 def adaptive(exe, deck_text, goal, name, target, max_dofs):
-    """Levels (dofs, goal value, estimate, cumulative wall) of one adaptive run."""
+    """Levels (dofs, goal value, estimate, cumulative wall, load average at the run's start)
+    of one adaptive run."""
     with tempfile.TemporaryDirectory() as tmp:
         deck = Path(tmp) / f"{name}.inp"
         deck.write_text(deck_text)
+        load = bc.load1()
         r = bc.run_timed([exe, str(deck), "--target-error", target, "--goal", goal,
                           "--max-dofs", str(max_dofs), "-o", str(Path(tmp) / "a.h5")])
     out, cum = [], 0.0
     for g in (m.groups() for m in map(LEVEL.match, r["stdout"].splitlines()) if m):
         cum += float(g[6])
         out.append(dict(level=int(g[0]), dofs=int(g[1]), value=float(g[4]),
-                        estimate=g[5], wall=cum))
+                        estimate=g[5], wall=cum, load1=load))
     print(f"  {name}: {len(out)} levels, exit {r['rc']}, {r['wall']:.1f} s", flush=True)
     return out, r["rc"] == 0
 
@@ -110,6 +124,7 @@ def run_footing(exe):
             deck = Path(tmp) / f"footing_{nx}.inp"
             node = footing_deck(nx, deck)
             h5 = deck.with_suffix(".h5")
+            load = bc.load1()
             r = bc.run_timed([exe, str(deck), "-o", str(h5), "--quiet"], timeout=600)
             value = None
             if r["rc"] == 0:
@@ -121,7 +136,8 @@ def run_footing(exe):
             runs.append(dict(scene="footing", model="drucker_prager", element="Q8",
                              method="NEWTON", series="mesh", level=nx, increments=2,
                              dofs=bsc.equations(nx, nx // 2), wall=r["wall"], value=value,
-                             status="ok" if value is not None else f"failed rc={r['rc']}"))
+                             status="ok" if value is not None else f"failed rc={r['rc']}",
+                             load1=load))
             print(f"  footing uniform nx={nx}: {r['wall']:.2f} s, {value}", flush=True)
         deck = Path(tmp) / "footing_adapt.inp"
         node = footing_deck(FOOTING_NX[0], deck)
@@ -145,7 +161,8 @@ def finish(runs, ref, floor):
 def adaptive_runs(scene, model, element, levels):
     return [dict(scene=scene, model=model, element=element, method="NEWTON", series="adaptive",
                  level=lv["level"], increments=5 if scene == "s2" else 2, dofs=lv["dofs"],
-                 wall=lv["wall"], value=lv["value"], status="ok", estimate=lv["estimate"])
+                 wall=lv["wall"], value=lv["value"], status="ok", estimate=lv["estimate"],
+                 load1=lv["load1"])
             for lv in levels]
 
 
@@ -154,9 +171,9 @@ def main():
     ap.add_argument("--quick", action="store_true", help="the Q8 S2 case and the footing")
     ap.add_argument("--max-dofs", type=int, default=20000)
     args = ap.parse_args()
+    bc.one_thread()
     exe = bc.executable()
     prov = bc.provenance()
-    load = os.getloadavg()
     wp = csv_runs()
     refs = {}
     for r in wp:
@@ -192,13 +209,13 @@ def main():
     plot([r for r in fruns + fada if r["status"] == "ok"], "footing",
          bc.BENCH_DIR / "work_precision_footing.png")
     header = ["scene", "model", "element", "series", "level", "dofs", "value_m", "reference_m",
-              "error", "wall_s", "estimate_pct"]
+              "error", "wall_s", "estimate_pct", "load1"]
     rows = [[r["scene"], r["model"], r["element"], r["series"], r["level"], r["dofs"],
              f"{r['value']:.9e}" if r["value"] is not None else "", f"{r['ref']:.9e}"
              if "ref" in r else f"{frich['ref']:.9e}", f"{r['error']:.3e}", f"{r['wall']:.4f}",
-             r.get("estimate", "")] for r in ada + fruns + fada]
+             r.get("estimate", ""), f"{r['load1']:.2f}"] for r in ada + fruns + fada]
     bc.write_csv(bc.BENCH_DIR / "adapt.csv", header, rows)
-    write_fragment(prov, load, wp, ada, fruns, fada, frich, args.quick)
+    write_fragment(prov, wp, ada, fruns, fada, frich, args.quick)
 
 
 def table(groups):
@@ -228,12 +245,30 @@ def label_of(r):
     return label(r)
 
 
-def write_fragment(prov, load, wp, ada, fruns, fada, frich, quick):
+def timing_text(runs, wp):
+    """Thread setting and load of this run's timings (`runs`) and of the work-precision run's
+    (`wp`, the S2 uniform series)."""
+    loads = [r.get("load1", math.nan) for r in runs]
+    t = ("Every run here is made once, on one thread (OMP_NUM_THREADS=1); 1-minute load "
+         f"average {bc.load_range(loads)} when the runs started, on {os.cpu_count()} cores: "
+         "the wall times are single runs and indicative, the errors and DOF counts exact.")
+    known = [x for x in loads if math.isfinite(x)]
+    if known and max(known) > (os.cpu_count() or 1):
+        t += (f" **Wall times not final: load average up to {max(known):.1f} on "
+              f"{os.cpu_count()} cores** (other programs were running).")
+    wp_load = bc.load_range([r.get("load1", math.nan) for r in wp])
+    t += (" S2 uniform wall times are those of the work-precision run (its own commit and "
+          + ("load" if wp_load == "unknown" else
+             f"load: single runs, one thread, load average {wp_load}")
+          + "), the adaptive ones of this run.")
+    return t
+
+
+def write_fragment(prov, wp, ada, fruns, fada, frich, quick):
     lines = ["## Adaptive refinement beside uniform refinement (S2, strip footing)", "",
              f"`python3 tools/bench_adapt.py{' --quick' if quick else ''}` (commit "
-             f"{prov['commit']}, {prov['date']}; load average {load[0]:.1f} / {load[1]:.1f} / "
-             f"{load[2]:.1f} on 2 cores shared with other jobs: wall times are those of a busy "
-             "machine and only their ratios mean much). Adaptive series: "
+             f"{prov['commit']}, {prov['date']}). " + timing_text(ada + fruns + fada, wp)
+             + " Adaptive series: "
              "`pecplas DECK --target-error 1% --goal node:N:y` (footing: 0.2 %), every level a point at the "
              "wall time of the levels up to it. S2: head settlement at 2000 kN from the coarsest "
              "deck of the work-precision series (n = 3, 5 increments, full Newton); error against "
@@ -244,7 +279,7 @@ def write_fragment(prov, load, wp, ada, fruns, fada, frich, quick):
              f"{', '.join(map(str, FOOTING_NX))} (nx x nx/2 elements), Richardson reference "
              f"{1e3 * frich['ref']:.4f} mm (observed order "
              f"{'none' if frich['p'] is None else format(frich['p'], '.2f')}, uncertainty "
-             f"{frich['uncertainty'] / abs(frich['ref']):.1e}), adaptive from nx = 10. S2 uniform wall times are those of the work-precision run (its own commit and load), the adaptive ones of this run. "
+             f"{frich['uncertainty'] / abs(frich['ref']):.1e}), adaptive from nx = 10. "
              "The wall times of the two kinds are not measured alike: an adaptive level's is "
              "the program's own time for that level (solve, estimate, results written), a "
              "uniform run's the whole process (start, deck read, solve, results) timed by the "

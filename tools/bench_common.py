@@ -7,6 +7,7 @@ writes the chart (`run_timed`), never from a stored number.
     from bench_common import ROOT, BENCH_DIR, executable, run_timed, write_csv, provenance
 """
 import csv
+import math
 import os
 import platform
 import subprocess
@@ -120,3 +121,29 @@ def load1():
             return float(f.read().split()[0])
     except (OSError, ValueError, IndexError):
         return float("nan")
+
+
+def load_range(loads):
+    """The 1-minute load averages of a run as text, 'min - max' to one decimal ('x' when they
+    round alike); 'unknown' when none is known (nan, empty or missing values are left out)."""
+    known = []
+    for x in loads:
+        try:
+            x = float(x)
+        except (TypeError, ValueError):
+            continue
+        if math.isfinite(x):
+            known.append(x)
+    if not known:
+        return "unknown"
+    lo, hi = f"{min(known):.1f}", f"{max(known):.1f}"
+    return lo if lo == hi else f"{lo} - {hi}"
+
+
+def one_thread():
+    """Make every program this script starts run on one thread (OpenMP, CHOLMOD and the BLAS:
+    OMP_NUM_THREADS = OPENBLAS_NUM_THREADS = 1, doc/deck.md *SOLVER THREADS=); returns the
+    setting as the fragments state it."""
+    os.environ["OMP_NUM_THREADS"] = "1"
+    os.environ["OPENBLAS_NUM_THREADS"] = "1"
+    return "one thread (OMP_NUM_THREADS=1)"

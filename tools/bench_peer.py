@@ -7,7 +7,10 @@
 2. The CGS-4 inclined-plane block (plane strain, test/data/joints/inclined_plane.inp): slip
    limit F/G against (tan a + mu)/(1 - mu tan a) = 0.412371.
 
-Every code runs one thread (OMP_NUM_THREADS=1), timed by bench_common.run_timed in this run.
+Every code runs one thread (OMP_NUM_THREADS=1), timed by bench_common.run_timed in this run:
+each case (one code on one mesh) is run REPEATS = 3 times back to back and reported as the median
+wall time with its spread [min - max], with the 1-minute load average when the case started
+(--quick: one run per case).
 Writes doc/bench/peer.csv, doc/bench/peer_pile.png, doc/bench/peer_block.png, doc/bench/peer.md.
 
     python3 tools/bench_peer.py [--quick] [--keep DIR]
@@ -17,6 +20,7 @@ import math
 import os
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -56,13 +60,55 @@ def ours_curve(h5, node, comp, pattern):
     return np.r_[0.0, fac], np.r_[0.0, u], np.r_[1, steps]
 
 
-REPEAT = [1]      # runs per case (the shortest wall time is kept): 2 in full mode
+REPEATS = 3       # runs per case in full mode: median wall time and spread [min - max]
+RUNS = [REPEATS]  # runs per case of this run (1 in --quick)
+THREADS = 1       # OMP_NUM_THREADS of every code (main)
+HEADER = ["scene", "code", "elements", "dofs_2d", "wall_s", "peak_mb", "rc",
+          "settlement_100kN_mm", "settlement_2000kN_mm", "final_or_limit",
+          "shaft_resultant_kN", "wall_min_s", "wall_max_s", "repeats", "load1", "threads"]
+
+
+def spread(walls):
+    """(median, min, max) of the wall times of a case's runs."""
+    return statistics.median(walls), min(walls), max(walls)
+
+
+def ratio_spread(ccx, ours):
+    """CalculiX / ours from two (median, min, max) wall times: the ratio of the medians and
+    the range the runs allow (CalculiX fastest / ours slowest, CalculiX slowest / ours
+    fastest)."""
+    return ccx[0] / ours[0], ccx[1] / ours[2], ccx[2] / ours[1]
 
 
 def timed(cmd, cwd=None):
-    """The last run's outcome (its files are the ones read) with the shortest wall time."""
-    runs = [bc.run_timed(cmd, cwd=cwd, timeout=600) for _ in range(REPEAT[0])]
-    return dict(runs[-1], wall=min(r["wall"] for r in runs))
+    """Run `cmd` RUNS times, back to back: the last run's outcome (its files are the ones
+    read) with the median wall time, its spread (wall_min, wall_max), the number of runs and
+    the 1-minute load average when the case started (load1)."""
+    load = bc.load1()
+    runs = [bc.run_timed(cmd, cwd=cwd, timeout=600) for _ in range(RUNS[0])]
+    med, lo, hi = spread([r["wall"] for r in runs])
+    return dict(runs[-1], wall=med, wall_min=lo, wall_max=hi, repeats=len(runs), load1=load)
+
+
+def timing_columns(r):
+    """The CSV columns wall_min_s .. threads of a timed() outcome."""
+    return [f"{r['wall_min']:.3f}", f"{r['wall_max']:.3f}", r["repeats"], f"{r['load1']:.2f}",
+            THREADS]
+
+
+def timing_of(row):
+    """(median, min, max, runs, load1) of a CSV row; a row written before the spread was
+    recorded (11 columns) counts as one run at an unknown load."""
+    d = dict(zip(HEADER, row))
+    med = float(d["wall_s"])
+
+    def num(key, default):
+        try:
+            return float(d[key]) if d.get(key, "") != "" else default
+        except ValueError:
+            return default
+    return (med, num("wall_min_s", med), num("wall_max_s", med), int(num("repeats", 1)),
+            num("load1", float("nan")))
 
 
 def run_ours(exe, deck, h5):
@@ -162,7 +208,8 @@ def pile(exe, work, refine, rows):
         lo, s = curves.get(label, (np.array([0.0]), np.array([np.nan])))
         rows.append([f"S2 pile r{refine}", label, len(m["elements"]), neq, f"{r['wall']:.3f}",
                      f"{r['peak_mb']:.1f}", r["rc"], _at(lo, s, 100.0, first=True),
-                     _at(lo, s, HEAD_LOAD), f"{s[-1]:.2f}", f"{r.get('shaft', float('nan')):.0f}"])
+                     _at(lo, s, HEAD_LOAD), f"{s[-1]:.2f}", f"{r.get('shaft', float('nan')):.0f}",
+                     *timing_columns(r)])
     return curves, runs, m
 
 
@@ -218,7 +265,7 @@ def block(exe, work, rows):
     for label, r in runs.items():
         rows.append(["CGS-4 block", label, len(m["elements"]), 2 * len(m["nodes"]),
                      f"{r['wall']:.3f}", f"{r['peak_mb']:.1f}", r["rc"], "", "",
-                     f"{limits[label]:.6f}", ""])
+                     f"{limits[label]:.6f}", "", *timing_columns(r)])
     return curves, runs, limits
 
 
@@ -247,63 +294,62 @@ def plot(panels, path, xlabel, ylabel, title):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="reference pile mesh only")
+    ap.add_argument("--quick", action="store_true",
+                    help="reference pile mesh only, one run per case")
     ap.add_argument("--keep", help="keep the decks, results and ccx files in this directory")
     a = ap.parse_args()
     if shutil.which("ccx") is None:
         sys.exit("bench_peer: ccx is not on the PATH (apt-get install calculix-ccx)")
-    os.environ["OMP_NUM_THREADS"] = "1"
-    os.environ["OPENBLAS_NUM_THREADS"] = "1"
-    os.environ["CCX_NPROC_EQUATION_SOLVER"] = "1"
-    REPEAT[0] = 1 if a.quick else 2
+    os.environ["OMP_NUM_THREADS"] = str(THREADS)
+    os.environ["OPENBLAS_NUM_THREADS"] = str(THREADS)
+    os.environ["CCX_NPROC_EQUATION_SOLVER"] = str(THREADS)
+    RUNS[0] = 1 if a.quick else REPEATS
     exe = bc.executable("pecplas")
     work = Path(a.keep) if a.keep else Path(tempfile.mkdtemp(prefix="bench_peer_"))
     work.mkdir(parents=True, exist_ok=True)
-    rows, pile_curves, pile_runs = [], {}, {}
+    rows, pile_curves = [], {}
     for refine in ((1,) if a.quick else (1, 4, 8)):
-        c, r, m = pile(exe, work, refine, rows)
+        c, _, m = pile(exe, work, refine, rows)
         pile_curves[f", refine {refine} ({len(m['elements'])} Q4)"] = c
-        pile_runs[refine] = r
-    bcurves, bruns, limits = block(exe, work, rows)
-    header = ["scene", "code", "elements", "dofs_2d", "wall_s", "peak_mb", "rc",
-              "settlement_100kN_mm", "settlement_2000kN_mm", "final_or_limit",
-              "shaft_resultant_kN"]
-    bc.write_csv(bc.BENCH_DIR / "peer.csv", header, rows)
+    bcurves, _, _ = block(exe, work, rows)
+    bc.write_csv(bc.BENCH_DIR / "peer.csv", HEADER, rows)
     finest = list(pile_curves)[-1]
     panels = {k: pile_curves[k] for k in dict.fromkeys([list(pile_curves)[0], finest])}
     plot(panels, bc.BENCH_DIR / "peer_pile.png", "head settlement [mm]", "head load [kN]",
          "S2 pile, ours vs CalculiX")
     plot({"": bcurves}, bc.BENCH_DIR / "peer_block.png", "pad displacement along x [µm]",
          "push F/G", f"CGS-4 block (exact slip limit {FG_EXACT:.6f})")
-    bc.write_fragment("peer", fragment(rows, pile_runs, limits, bruns))
+    bc.write_fragment("peer", fragment(rows, _ccx_version(), a.quick))
     for r in rows:
         print(" | ".join(map(str, r)))
     if not a.keep:
         shutil.rmtree(work, ignore_errors=True)
 
 
-def fragment(rows, pile_runs, limits, bruns):
-    """doc/bench/peer.md from this run's numbers; the prose states what they show."""
+def fragment(rows, version, quick=False):
+    """doc/bench/peer.md from the rows of peer.csv (HEADER) and the ccx version; the prose
+    states what the numbers show."""
     pile = [r for r in rows if r[0].startswith("S2")]
     t = ["## A peer side by side: CalculiX", "",
-         "`python3 tools/bench_peer.py` (`--quick`: reference mesh only). The same meshes, "
-         "exported by `tools/export_abaqus.py`; ours and `ccx` (CalculiX "
-         f"{_ccx_version()}) run one thread each, wall times of whole runs (input to "
-         "results), best of the runs made here. Ratio = CalculiX wall / our wall.", "",
+         "`python3 tools/bench_peer.py` (`--quick`: reference mesh only, one run per case). "
+         "The same meshes, exported by `tools/export_abaqus.py`; ours and `ccx` (CalculiX "
+         f"{version}) run on one thread each (OMP_NUM_THREADS=1, ccx also "
+         "CCX_NPROC_EQUATION_SOLVER=1), wall times of whole runs (input to results). "
+         + timing_text(rows, quick), "",
          "| scene | code | Q4 | wall [s] | ratio | u(100 kN) [mm] | u(2000 kN) [mm] | "
          "permanent [mm] | shaft at 2000 kN [kN] |", "|---|---|---|---|---|---|---|---|---|"]
     for r in pile:
         ccx = next(x for x in pile if x[0] == r[0] and x[1] == "CalculiX")
-        ratio = "" if r[1] == "CalculiX" else f"{float(ccx[4]) / float(r[4]):.1f}"
-        t.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[4]} | {ratio} | {r[7]} | {r[8]} | {r[9]} "
-                 f"| {r[10]} |")
+        t.append(f"| {r[0]} | {r[1]} | {r[2]} | {wall_text(r)} | {ratio_text(ccx, r)} | "
+                 f"{r[7]} | {r[8]} | {r[9]} | {r[10]} |")
     t += ["", "![pile](peer_pile.png)", "",
           "| CGS-4 block (plane strain, 4 Q4) | wall [s] | ratio | slip limit F/G | error |",
           "|---|---|---|---|---|"]
-    for label, lim in limits.items():
-        w = bruns[label]["wall"]
-        ratio = "" if label == "CalculiX" else f"{bruns['CalculiX']['wall'] / w:.1f}"
-        t.append(f"| {label} | {w:.3f} | {ratio} | {lim:.6f} | "
+    blk = [r for r in rows if r[0].startswith("CGS")]
+    ccx = next(x for x in blk if x[1] == "CalculiX")
+    for r in blk:
+        lim = float(r[9])
+        t.append(f"| {r[1]} | {wall_text(r)} | {ratio_text(ccx, r)} | {lim:.6f} | "
                  f"{(lim - FG_EXACT) / FG_EXACT:+.1e} |")
     t += ["", f"Exact: (tan a + mu)/(1 - mu tan a) = {FG_EXACT:.6f}. Both codes are under "
           "force control and stop at the limit (ours exit 3, ccx \"too many cutbacks\"): the "
@@ -385,9 +431,46 @@ def fragment(rows, pile_runs, limits, bruns):
           "move the refine-8 curve.",
           "- Speed: CalculiX pays for the 3D expansion (extra nodes tied by MPCs), the contact "
           "search and its fixed start-up (about 1 s even on the 4-element block, where it "
-          "also cuts the increment many times near the slip limit). Single runs on a busy "
-          "machine: only the ratios of one run mean anything."]
+          "also cuts the increment many times near the slip limit). The runs of a case are "
+          "made back to back and the cases one after the other, so a change of the "
+          "machine's load between cases moves a ratio: the spread (full mode) and the load "
+          "above say by how much."]
     return "\n".join(t)
+
+
+def timing_text(rows, quick=False):
+    """What the wall times of `rows` are: runs per case, thread setting, load range."""
+    runs = max(timing_of(r)[3] for r in rows)
+    loads = [timing_of(r)[4] for r in rows]
+    if runs > 1:
+        t = (f"Median of {runs} runs per case with the spread [min - max]; ratio = "
+             "CalculiX median / our median, with the range the runs allow [CalculiX fastest "
+             "/ ours slowest - CalculiX slowest / ours fastest].")
+    else:
+        t = ("One run per case" + (" (quick mode)" if quick else "") + ": no spread, the "
+             "times are indicative. Ratio = CalculiX wall / our wall.")
+    t += (" Load (1-minute load average when each case started): "
+          f"{bc.load_range(loads)}, on {os.cpu_count()} cores.")
+    known = [x for x in loads if math.isfinite(x)]
+    if known and max(known) > (os.cpu_count() or 1):
+        t += (f" **Not final: load average up to {max(known):.1f} on {os.cpu_count()} "
+              "cores** (other programs were running).")
+    return t
+
+
+def wall_text(row):
+    """'median [min - max]' of a row's wall time, the median alone for a single run."""
+    med, lo, hi, runs, _ = timing_of(row)
+    return f"{med:.3f}" + (f" [{lo:.3f} - {hi:.3f}]" if runs > 1 else "")
+
+
+def ratio_text(ccx, row):
+    """CalculiX / ours for `row` ('' for CalculiX itself), with its range over the runs."""
+    if row[1] == "CalculiX":
+        return ""
+    c, o = timing_of(ccx), timing_of(row)
+    med, lo, hi = ratio_spread(c[:3], o[:3])
+    return f"{med:.1f}" + (f" [{lo:.1f} - {hi:.1f}]" if c[3] > 1 or o[3] > 1 else "")
 
 
 def _ccx_version():

@@ -16,6 +16,8 @@ Goodman joints, S6 MODJOIN: model + discretisation error: the advice table).
 
 Runs are made cheapest first; a run whose estimated time would overflow the budget is skipped
 (and listed), so full mode keeps to --budget seconds (default 660, plus the runs' set-up).
+Every configuration runs once, on one thread (OMP_NUM_THREADS=1), with the 1-minute load
+average recorded when it starts: the wall times are single runs (indicative), the errors exact.
 
     python3 tools/bench_work_precision.py [--quick] [--budget SECONDS] [--scenes s2,s6]
 Writes doc/bench/work_precision.csv, work_precision_s2.png, work_precision_s6.png,
@@ -154,7 +156,8 @@ def run_all(runs, exe, budget, workdir):
     for r in sorted(runs, key=estimate):
         used = time.perf_counter() - t_start
         est = estimate(r) * scale
-        r.update(wall=float("nan"), value=None, status="skipped", peak_mb=float("nan"))
+        r.update(wall=float("nan"), value=None, status="skipped", peak_mb=float("nan"),
+                 load1=float("nan"))
         key = (r["scene"], r["model"], r["element"], r["method"])
         if r["level"] >= failed.get(key, math.inf):
             r["status"] = "skipped (coarser level failed)"
@@ -171,6 +174,7 @@ def run_all(runs, exe, budget, workdir):
         deck.write_text(r.pop("text"))
         h5 = deck.with_suffix(".h5")
         timeout = max(10.0, min(4.0 * est, budget - used))
+        r["load1"] = bc.load1()
         res = bc.run_timed([exe, deck, "-o", h5, "--quiet"], timeout=timeout)
         r.update(wall=res["wall"], peak_mb=res["peak_mb"])
         if res["rc"] == 0:
@@ -226,6 +230,7 @@ def main():
     a = ap.parse_args()
     budget = a.budget or (90.0 if a.quick else 660.0)
     scenes = a.scenes.split(",")
+    bc.one_thread()
     exe = bc.executable("pecplas")
     runs = [r for r in plan(a.quick) if r["scene"] in scenes]
     for r in runs:
@@ -257,7 +262,7 @@ def main():
                             if own and sc else float("nan"))
     header = ["scene", "model", "element", "joint", "solver", "series", "level", "dofs",
               "increments", "status", "wall_s", "peak_mb", "value_m", "reference_m", "p",
-              "error", "scene_error_bound"]
+              "error", "scene_error_bound", "load1"]
     rows = []
     for r in sorted(runs, key=lambda r: (r["scene"], label(r), r["series"], r["level"],
                                          r["increments"])):
@@ -268,13 +273,13 @@ def main():
                      "" if r["value"] is None else f"{r['value']:.9e}",
                      f"{ref['ref']:.9e}" if ref else "",
                      f"{ref['p']:.3f}" if ref and ref["p"] is not None else "",
-                     f"{r['error']:.3e}", f"{r['scene_error']:.3e}"])
+                     f"{r['error']:.3e}", f"{r['scene_error']:.3e}", f"{r['load1']:.2f}"])
     bc.write_csv(bc.BENCH_DIR / "work_precision.csv", header, rows)
     for s in scenes:
         plot(runs, s, bc.BENCH_DIR / f"work_precision_{s}.png")
     adv = advice([r for r in runs if r["scene"] in scenes], scene_model)
     ah = ["scene", "scope", "against", "tolerance", "configuration", "level", "dofs",
-          "increments", "error", "wall_s"]
+          "increments", "error", "wall_s", "load1"]
     bc.write_csv(bc.BENCH_DIR / "advice.csv", ah, adv)
     write_fragments(runs, refs, adv, a.quick, scenes, scene_model)
 

@@ -1,6 +1,7 @@
 """Names, chart, advice table and summary fragments of the work-precision study
 (tools/bench_work_precision.py)."""
 import math
+import os
 
 import bench_common as bc
 from wp_analysis import cheapest_within
@@ -14,6 +15,21 @@ JOINT = {"goodman": "GOODMAN", "mohr_coulomb": "GOODMAN", "ghaboussi": "THIN_LAY
          "modjoin_arc": "GOODMAN"}
 # the scene's reference model, in order of preference (the next one when it has no reference)
 SCENE_REF = {"s2": ("mohr_coulomb",), "s6": ("modjoin", "mohr_coulomb")}
+
+
+def timing_text(loads):
+    """What the wall times of the study are: single runs on one thread, the load range when
+    they started; the errors do not depend on them."""
+    t = ("Every configuration runs once, on one thread (OMP_NUM_THREADS=1); 1-minute load "
+         f"average {bc.load_range(loads)} when the runs started, on {os.cpu_count()} cores. "
+         "The wall times are single runs, so they are indicative (a rerun moves them by the "
+         "machine's run-to-run spread, more on a loaded machine); the errors are exact: a "
+         "rerun gives the same values whatever the machine or its load.")
+    known = [x for x in loads if x is not None and math.isfinite(x)]
+    if known and max(known) > (os.cpu_count() or 1):
+        t += (f" **Wall times not final: load average up to {max(known):.1f} on "
+              f"{os.cpu_count()} cores** (other programs were running).")
+    return t
 
 
 def label(r, short=False):
@@ -86,13 +102,16 @@ def advice(runs, scene_model, tols=(0.01, 0.05)):
                         else "no reference (fewer than 3 mesh levels completed)")
                 rows.append([scene, scope, against, t] + (
                     [label(b), b["level"], b["dofs"], b["increments"], f"{b[key]:.2e}",
-                     f"{b['wall']:.3f}"] if b else [none, "", "", "", "", ""]))
+                     f"{b['wall']:.3f}", f"{b.get('load1', math.nan):.2f}"] if b else
+                    [none, "", "", "", "", "", ""]))
     return rows
 
 
 def write_fragments(runs, refs, adv, quick, scenes, scene_model):
     prov = bc.provenance()
     ok = [r for r in runs if r["status"] == "ok"]
+    timing = timing_text([r.get("load1", math.nan) for r in runs
+                          if not r["status"].startswith("skipped")])
     md = ["## Work-precision (S2, S6)", "",
           f"`python3 tools/bench_work_precision.py{' --quick' if quick else ''}` (commit "
           f"{prov['commit']}, {prov['date']}): {len(ok)} of {len(runs)} runs completed, "
@@ -100,7 +119,7 @@ def write_fragments(runs, refs, adv, quick, scenes, scene_model):
           f"loading, unloading not run); S6: head uplift at {Q_FIX} kN (a load below every "
           "model's limit). Error: against the model's own Richardson reference (Q4 mesh "
           "series, three finest levels, 10 increments); hollow markers: error below the "
-          "reference's own uncertainty, drawn at that uncertainty.", "",
+          "reference's own uncertainty, drawn at that uncertainty. " + timing, "",
           "| scene | model | element | reference [mm] | observed order p | levels (n) | "
           "uncertainty |", "|---|---|---|---|---|---|---|"]
     for (scene, model), ref in sorted(refs.items()):
@@ -124,7 +143,9 @@ def write_fragments(runs, refs, adv, quick, scenes, scene_model):
     ref_of = {s: scene_model[s] or "none" for s in scenes}
     ad = ["## Model no more than a scene needs", "",
           "Cheapest completed run (wall time, measured in the run) whose error is below the "
-          "tolerance. Scope `scene`: against the scene's reference model (" +
+          "tolerance; where two configurations' wall times differ by less than the machine's "
+          "run-to-run spread, the pick between them is indicative. " + timing +
+          " Scope `scene`: against the scene's reference model (" +
           ", ".join(f"{s.upper()}: {m}" for s, m in ref_of.items()) + "), as the bound "
           "discretisation error + the distance between the model's and the scene model's "
           "references, so another model qualifies only if its own limit is close; scope = a "
@@ -139,7 +160,7 @@ def write_fragments(runs, refs, adv, quick, scenes, scene_model):
                       f"{scene_model[s]} stands in.")
     ad += ["", "| scene | scope | tolerance | configuration | n | DOFs | increments | error | "
            "wall [s] |", "|---|---|---|---|---|---|---|---|---|"]
-    for s, scope, _, t, conf, n, dofs, inc, err, wall in adv:
+    for s, scope, _, t, conf, n, dofs, inc, err, wall, _ in adv:
         ad.append(f"| {s} | {scope} | {t:.0%} | {conf} | {n} | {dofs} | {inc} | {err} | "
                   f"{wall} |")
     bc.write_fragment("advice", "\n".join(ad))

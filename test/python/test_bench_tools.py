@@ -196,3 +196,54 @@ def test_scaling_exponents_of_medians_fastest_and_slowest_runs():
     p, _, _, last = bench_scaling.exponents(rows)
     assert last == pytest.approx(1.2 + math.log10(2.0), abs=1e-9)
     assert "not met" in bench_scaling.fragment(rows, p, 1.2, 10.0, False)
+
+
+def test_load_range_of_known_loads():
+    assert bench_common.load_range([0.52, float("nan"), "1.26", "", None]) == "0.5 - 1.3"
+    assert bench_common.load_range([0.81, 0.84]) == "0.8"
+    assert bench_common.load_range([float("nan"), ""]) == "unknown"
+
+
+def _peer_rows(walls, timing=True):
+    """Synthetic peer.csv rows: one pile mesh and the block, every code with the wall times
+    {code: (median, min, max)}; timing=False: the 11 columns written before the spread."""
+    import bench_peer
+    codes = ["ours, Mohr-Coulomb penalty", bench_peer.TIED, "ours, Katona", "CalculiX"]
+    rows = []
+    for scene, cs in (("S2 pile r1", codes), ("CGS-4 block", codes[:1] + codes[2:])):
+        for k, code in enumerate(cs):
+            med, lo, hi = walls[code]
+            row = [scene, code, 54, 164, f"{med:.3f}", "20.0", 0, "0.717", f"{90 + k}.000",
+                   "0.412371" if scene.startswith("CGS") else "70.00", "900"]
+            if timing:
+                row += [f"{lo:.3f}", f"{hi:.3f}", 3, f"{0.4 + 0.2 * k:.2f}", 1]
+            rows.append(row)
+    return rows
+
+
+def test_peer_median_spread_and_ratio_range():
+    import bench_peer
+    assert bench_peer.spread([1.3, 0.9, 1.1]) == (1.1, 0.9, 1.3)
+    # CalculiX 1.0 [0.8 - 1.2] against ours 0.2 [0.1 - 0.4]: 5 [0.8/0.4 = 2, 1.2/0.1 = 12]
+    assert bench_peer.ratio_spread((1.0, 0.8, 1.2), (0.2, 0.1, 0.4)) == pytest.approx(
+        (5.0, 2.0, 12.0))
+
+
+def test_peer_fragment_states_median_load_and_threads():
+    import bench_peer
+    walls = {c: (0.2, 0.1, 0.4) for c in ("ours, Mohr-Coulomb penalty", bench_peer.TIED,
+                                           "ours, Katona")}
+    walls["CalculiX"] = (1.0, 0.8, 1.2)
+    text = bench_peer.fragment(_peer_rows(walls), "2.20")
+    assert "Median of 3 runs per case" in text and "one thread" in text
+    assert "Load (1-minute load average when each case started): 0.4 - 1.0," in text
+    assert "| 0.200 [0.100 - 0.400] | 5.0 [2.0 - 12.0] |" in text
+    assert "| CalculiX | 1.000 [0.800 - 1.200] |  |" in text
+    assert "best of" not in text
+    # rows written before the spread was recorded: one run each, load unknown, no crash
+    old = _peer_rows(walls, timing=False)
+    assert bench_peer.timing_of(old[0])[:4] == (0.2, 0.2, 0.2, 1)
+    text = bench_peer.fragment(old, "2.20", quick=True)
+    assert "One run per case (quick mode)" in text and "load average when each case " \
+        "started): unknown" in text
+    assert "| 0.200 | 5.0 |" in text

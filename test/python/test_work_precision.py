@@ -138,3 +138,25 @@ def test_scale_steps_imposed_uplift():
     assert scale_steps(deck, 0.01).count("INCREMENTS=1\n") == 2, "at least one increment"
     with pytest.raises(ValueError):
         scale_steps("*NODES\n1, 0, 0\n", 1.0)
+
+
+def test_timing_text_states_thread_single_runs_and_load():
+    from wp_report import timing_text
+    t = timing_text([0.52, float("nan"), 1.49])
+    assert "one thread (OMP_NUM_THREADS=1)" in t and "single runs" in t
+    assert "load average 0.5 - 1.5 when the runs started" in t
+    assert "errors are exact" in t and "not final" not in t
+    assert "not final" in timing_text([99.0])
+
+
+def test_advice_rows_carry_the_load_of_the_chosen_run():
+    from wp_report import advice
+    runs = [dict(scene="s2", model="spring", element="Q4", method="NEWTON", level=n,
+                 dofs=100 * n, increments=10, status="ok", wall=w, load1=ld,
+                 scene_error=e, error_bound=e)
+            for n, w, ld, e in ((3, 0.1, 0.7, 0.04), (6, 0.5, 1.2, 0.008))]
+    rows = advice(runs, {"s2": "spring"})
+    # scope scene, 1 %: the finer run (0.8 % error), its wall and load
+    assert rows[0][3:] == [0.01, "spring Q4/SPRING, full Newton", 6, 600, 10, "8.00e-03",
+                           "0.500", "1.20"]
+    assert rows[1][-2:] == ["0.100", "0.70"]
