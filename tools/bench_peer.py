@@ -265,7 +265,7 @@ def block(exe, work, rows):
     for label, r in runs.items():
         rows.append(["CGS-4 block", label, len(m["elements"]), 2 * len(m["nodes"]),
                      f"{r['wall']:.3f}", f"{r['peak_mb']:.1f}", r["rc"], "", "",
-                     f"{limits[label]:.6f}", "", *timing_columns(r)])
+                     f"{limits[label]:.10f}", "", *timing_columns(r)])
     return curves, runs, limits
 
 
