@@ -48,9 +48,38 @@ def kept_header(text):
     return prov, float(m.group(1)) if m else None
 
 
+def section_runs(directory):
+    """Per fragment with a CSV of the same name: (name, commits, first date, last date) of
+    the rows of that CSV (bench_common.write_csv adds commit, machine and date to every
+    row), so a section rerun alone after the whole suite says which run wrote it."""
+    import csv
+    out = []
+    for p in ordered_fragments(directory):
+        c = p.with_suffix(".csv")
+        if not c.exists():
+            continue
+        with open(c) as f:
+            rows = list(csv.DictReader(f))
+        commits = sorted({r.get("commit") or "unknown" for r in rows})
+        dates = sorted(r["date"] for r in rows if r.get("date"))
+        if rows and dates:
+            out.append((p.stem, commits, dates[0], dates[-1]))
+    return out
+
+
+def sections_text(directory):
+    lines = ["", "Commit and date of the run that wrote each section's data (a section rerun "
+             "alone after the whole suite has its own):", ""]
+    for name, commits, first, last in section_runs(directory):
+        when = first if first[:13] == last[:13] else f"{first} – {last}"
+        lines.append(f"- {name}: commit {', '.join(f'`{c}`' for c in commits)}, {when}")
+    return "\n".join(lines) + "\n" if len(lines) > 3 else ""
+
+
 def summary(directory, wall=None, prov=None):
-    """Text of the README: header, then each fragment (separated by blank lines)."""
-    parts = [header(prov or provenance(), wall)]
+    """Text of the README: header, the run of each section, then each fragment (separated
+    by blank lines)."""
+    parts = [header(prov or provenance(), wall) + sections_text(directory)]
     for p in ordered_fragments(directory):
         parts.append(p.read_text().rstrip() + "\n")
     return "\n".join(parts)

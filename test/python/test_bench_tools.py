@@ -247,3 +247,23 @@ def test_peer_fragment_states_median_load_and_threads():
     assert "One run per case (quick mode)" in text and "load average when each case " \
         "started): unknown" in text
     assert "| 0.200 | 5.0 |" in text
+
+
+def test_summary_lists_the_run_of_each_section(tmp_path):
+    # two sections with data (written by bench_common.write_csv, which adds commit, machine
+    # and date to every row), one rerun over two commits; a fragment without CSV is not listed
+    (tmp_path / "scaling.md").write_text("## scaling\n")
+    (tmp_path / "peer.md").write_text("## peer\n")
+    (tmp_path / "notes.md").write_text("## notes\n")
+    bench_common.write_csv(tmp_path / "scaling.csv", ["a"], [[1]])
+    with open(tmp_path / "peer.csv", "w") as f:
+        f.write("a,commit,machine,date\n1,abc1234,m,2026-01-01T10:00:00Z\n"
+                "2,def5678,m,2026-01-02T11:00:00Z\n")
+    runs = bench_summary.section_runs(tmp_path)
+    assert [r[0] for r in runs] == ["scaling", "peer"]
+    assert runs[1] == ("peer", ["abc1234", "def5678"], "2026-01-01T10:00:00Z",
+                       "2026-01-02T11:00:00Z")
+    text = bench_summary.summary(tmp_path, prov={"commit": "x", "machine": "m", "date": "d"})
+    assert "- peer: commit `abc1234`, `def5678`, 2026-01-01T10:00:00Z – 2026-01-02T11:00:00Z" in text
+    assert "- notes:" not in text
+    assert text.index("- scaling: commit") < text.index("## scaling")
