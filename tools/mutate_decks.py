@@ -13,8 +13,8 @@ by the release `pecplas` with a timeout, and the outcome classified:
 
 Usage: tools/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
        [--seed 1] [--keep DIR] [--jobs 1] [--json FILE] [--sources DECK ...]
-Only source decks whose unmutated run takes less than --max-source-seconds are used, so
-that the run stays short. Failing cases are copied to --keep (default
+Only source decks whose unmutated run takes less than --max-source-seconds are used (also
+among those given with --sources), so that the run stays short and a timeout is a hang. Failing cases are copied to --keep (default
 build/mutate_decks) with their stderr, to reproduce them. Exit 1 when any crash, hang, no
 line or file left was seen."""
 import argparse
@@ -124,10 +124,11 @@ def run(exe, deck, out, timeout):
     return kind, err, time.monotonic() - t0
 
 
-def sources(exe, max_seconds, timeout):
-    """Decks under input/ that pecplas runs (not pecplas-path decks) in under max_seconds."""
+def sources(exe, max_seconds, timeout, decks=None):
+    """The decks (default: those under input/) that pecplas runs (not pecplas-path decks) in
+    under max_seconds, so that a mutated run over the timeout is a hang, not a slow deck."""
     found = []
-    for deck in sorted((ROOT / "input").rglob("*.inp")):
+    for deck in decks or sorted((ROOT / "input").rglob("*.inp")):
         text = deck.read_text(errors="replace")
         if "*PATH" in text.upper():
             continue
@@ -150,6 +151,8 @@ def one_case(args, srcs, case):
         deck = tmp / src.name
         text = src.read_text(errors="replace")
         mesh = MESH.search(text)
+        if mesh and not (src.parent / mesh.group(1)).is_file():
+            mesh = None  # a deck of a missing mesh (an error test): its text is mutated
         if mesh:
             # the mesh as an absolute path (it may sit above the deck's folder), or half of
             # the time a mutated copy of it under a new name
@@ -186,7 +189,7 @@ def main():
     p.add_argument("--keep", default=str(ROOT / "build" / "mutate_decks"))
     p.add_argument("--json", help="write the counts to this file")
     p.add_argument("--sources", nargs="*", help="source decks (default: every pecplas deck "
-                   "under input/ that runs in under --max-source-seconds)")
+                   "under input/); those that run in under --max-source-seconds are used")
     args = p.parse_args()
     if not args.exe:
         cands = sorted(ROOT.glob("build/*/app/pecplas"), key=lambda q: q.stat().st_mtime)
@@ -195,10 +198,10 @@ def main():
                      "give --exe")
         args.exe = str(cands[-1])
     args.exe = str(Path(args.exe).resolve())
-    if args.sources:
-        srcs = [Path(q).resolve() for q in args.sources]
-    else:
-        srcs = sources(args.exe, args.max_source_seconds, args.timeout)
+    srcs = sources(args.exe, args.max_source_seconds, args.timeout,
+                   [Path(q).resolve() for q in args.sources or []])
+    if not srcs:
+        sys.exit(f"mutate_decks: no source deck runs in under {args.max_source_seconds:g} s")
     print(f"{len(srcs)} source decks, {args.n} mutations, timeout {args.timeout:g} s",
           flush=True)
     counts, slowest, examples = {}, 0.0, {}

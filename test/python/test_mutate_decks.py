@@ -25,3 +25,25 @@ def test_mutation_sample(tmp_path):
     assert sum(counts.values()) == 40
     for bad in ("crash", "hang", "no line", "file left"):
         assert counts.get(bad, 0) == 0, counts
+
+
+def test_sources_too_slow_or_of_a_missing_mesh(tmp_path):
+    # a deck whose *MESH file does not exist (an error test) is a source like any other: its
+    # text is mutated (the tool stopped on it before); a source slower than
+    # --max-source-seconds is left out, also when given with --sources
+    exe = exe_path()
+    missing = ROOT / "test" / "data" / "decks" / "bad_missing_mesh.inp"
+    assert "nowhere.msh" in missing.read_text()
+    out = tmp_path / "counts.json"
+    r = subprocess.run([sys.executable, str(ROOT / "tools" / "mutate_decks.py"), "-n", "6",
+                        "--seed", "3", "--exe", exe, "--keep", str(tmp_path / "keep"),
+                        "--json", str(out), "--sources", str(missing)],
+                       cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stdout[-2000:] + r.stderr[-2000:]
+    summary = json.loads(out.read_text())
+    assert summary["sources"] == 1 and sum(summary["counts"].values()) == 6
+    r = subprocess.run([sys.executable, str(ROOT / "tools" / "mutate_decks.py"), "-n", "1",
+                        "--exe", exe, "--keep", str(tmp_path / "keep"), "--json", str(out),
+                        "--max-source-seconds", "0", "--sources", "input/default.inp"],
+                       cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert r.returncode != 0 and "no source deck" in r.stderr
