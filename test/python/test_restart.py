@@ -449,3 +449,24 @@ def test_exact_restart_modes(tmp_path):
     with h5py.File(left[0]) as f:
         print(f"SIGKILL after {len(f['history/step'])} increments; restarted to the end")
     assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+
+
+@pytest.mark.parametrize("damaged,item", [
+    # restart data of test/data/cli/oedometer.inp stopped after 2 increments, a byte of the
+    # dataspace of /restart/u changed (found by corrupting the file at random): 2.4e9 values
+    # announced; the run read and copied them for minutes (a hang)
+    ("oedometer_u_extent.h5", "/restart/u"),
+    # /restart/position announced with 1.1e12 values: the allocation failed, exit 1 with a
+    # runtime backtrace
+    ("oedometer_position_extent.h5", "/restart/position"),
+])
+def test_restart_from_a_damaged_extent_is_an_input_error(tmp_path, damaged, item):
+    d = ROOT / "test" / "data" / "cli" / "oedometer.inp"
+    src = ROOT / "test" / "data" / "restart_damaged" / damaged
+    out = tmp_path / "out.h5"
+    r = subprocess.run(pecplas_cmd() + [str(d), "-o", str(out), "--quiet", "--restart",
+                                        str(src)], cwd=tmp_path, capture_output=True,
+                       text=True, timeout=60)
+    assert r.returncode == 2, r.stderr[-2000:]
+    assert f"dataset {item} is damaged" in r.stderr and "more than the file holds" in r.stderr
+    assert not out.exists() and not list(tmp_path.glob(".out.h5*"))

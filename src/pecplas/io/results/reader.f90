@@ -9,7 +9,7 @@ module pecplas_io_results_reader
       h5sclose_f, h5aopen_by_name_f, h5aread_f, h5aclose_f, h5aget_type_f, h5aget_space_f, &
       h5tis_variable_str_f, h5tget_size_f, h5tget_cset_f, h5tset_cset_f, h5tcopy_f, h5tset_size_f, h5tclose_f, &
       h5lexists_f, h5aexists_by_name_f, h5dvlen_reclaim_f, H5F_ACC_RDONLY_F, H5T_STRING, &
-      H5T_FORTRAN_S1, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5P_DEFAULT_F
+      H5T_FORTRAN_S1, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5P_DEFAULT_F, h5fget_filesize_f
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: h5_init, increment_group
@@ -252,15 +252,44 @@ contains
       if (err == 0 .and. ndims == rank) then
          call h5sget_simple_extent_dims_f(space, d, maxd, err)
          if (err == rank) err = 0
-         dims = int(d)
       end if
       if (err == 0) call h5sclose_f(space, e2)
       if (err /= 0 .or. ndims /= rank) then
          if (dset > 0) call h5dclose_f(dset, e2)
          dset = -1
          call fatal_error(error, 'cannot read dataset '//path//' as an array of that rank')
+         return
       end if
+      call check_extent(this, path, d, error)
+      if (allocated(error)) then
+         call h5dclose_f(dset, e2)
+         dset = -1
+         return
+      end if
+      dims = int(d)
    end subroutine open_dataset
+
+   !> A damaged file may give a dataset any extent: one that needs more bytes than the whole
+   !> file holds (at 4 bytes a value, the smallest stored here), or more values than an
+   !> integer counts, is refused before anything is allocated.
+   subroutine check_extent(this, path, d, error)
+      class(results_reader_t), intent(in) :: this
+      character(len=*), intent(in) :: path
+      integer(hsize_t), intent(in) :: d(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hsize_t) :: fsize
+      real(wp) :: n
+      integer :: err
+      character(len=40) :: buf
+      n = product(real(d, wp))
+      call h5fget_filesize_f(this%file, fsize, err)
+      if (err /= 0) fsize = huge(fsize)
+      if (any(d < 0) .or. n > real(huge(1), wp) .or. 4.0_wp*n > real(fsize, wp)) then
+         write (buf, '(es10.3)') n
+         call fatal_error(error, 'dataset '//path//' is damaged: its shape says '// &
+            trim(adjustl(buf))//' values, more than the file holds')
+      end if
+   end subroutine check_extent
 
    !> Reads the open dataset into `ptr` (n values) and closes it.
    subroutine read_and_close(dset, mtype, n, ptr, path, error)
@@ -374,6 +403,11 @@ contains
       if (err /= 0) then
          call h5dclose_f(dset, e2)
          call fatal_error(error, 'cannot read dataset '//path//' as a vector')
+         return
+      end if
+      call check_extent(this, path, d(:max(ndims, 0)), error)
+      if (allocated(error)) then
+         call h5dclose_f(dset, e2)
          return
       end if
       allocate (values(product(d(:max(ndims, 0)))))
