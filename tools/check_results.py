@@ -13,7 +13,8 @@ present) have their datasets and, in every field increment, joint fields of matc
 with modes 1 (stick), 2 (slip) or 3 (open), that every float dataset (except the driver's
 packed /restart state) carries a `units` attribute and, where it has a component axis (its
 last), a `components` attribute of that length, with displacements, reactions and stresses
-in the root length_unit, force_unit and stress_unit, and that the .xmf parses as XML, each
+in the root length_unit, force_unit and stress_unit, that every dataset's `checksum` and the
+root `deck_text_checksum` match (doc/results.md, Checksums), and that the .xmf parses as XML, each
 "file.h5:/path" DataItem names an existing dataset of the declared dimensions, HyperSlab
 items select inside their dataset, and every joint set has its grid in each increment.
 Exit status 0 when everything holds, 1 otherwise (each problem is printed).
@@ -208,6 +209,47 @@ def check_finite(f, problems):
     f.visititems(visit)
 
 
+CHECKSUM_P = 67108859
+
+
+def fletcher(words):
+    """Fletcher's checksum of a sequence of 32-bit words as the program computes it
+    (doc/results.md, Checksums): s1 = sum of the words, s2 = sum of the running s1, both
+    modulo CHECKSUM_P, returned as s2 * 2^26 + s1. s2 = sum_j w_j (n - j) (0-based j)."""
+    w = np.asarray(words, dtype=np.int64) % CHECKSUM_P
+    n = w.size
+    weights = (n - np.arange(n, dtype=np.int64)) % CHECKSUM_P
+    s1 = s2 = 0
+    for k in range(0, n, 4096):  # products < 2^52, sums of 4096 of them < 2^64
+        s1 = (s1 + int(w[k:k + 4096].sum())) % CHECKSUM_P
+        s2 = (s2 + int((w[k:k + 4096] * weights[k:k + 4096] % CHECKSUM_P).sum())) % CHECKSUM_P
+    return float(s2 * 2**26 + s1)
+
+
+def values_checksum(values):
+    """Checksum of float64 values in file order: each value's low, then high 32-bit word."""
+    return fletcher(np.ascontiguousarray(values, dtype="<f8").reshape(-1).view("<u4"))
+
+
+def text_checksum(text):
+    """Checksum of a text: one word per byte of its UTF-8 encoding."""
+    return fletcher(np.frombuffer(text.encode("utf-8"), dtype=np.uint8))
+
+
+def check_checksums(f, problems):
+    """Every dataset with a `checksum` attribute (the program's real datasets) and the root
+    `deck_text_checksum` match their values (an independent computation of the program's
+    checksum)."""
+    def visit(name, obj):
+        if isinstance(obj, h5py.Dataset) and "checksum" in obj.attrs:
+            if values_checksum(obj[...]) != float(obj.attrs["checksum"]):
+                problems.append(f"/{name}: values do not match their checksum")
+    f.visititems(visit)
+    if "deck_text_checksum" in f.attrs and "deck_text" in f.attrs:
+        if text_checksum(as_text(f.attrs["deck_text"])) != float(f.attrs["deck_text_checksum"]):
+            problems.append("deck_text does not match deck_text_checksum")
+
+
 # datasets (by name) with a component axis, and the root attribute naming their unit
 COMPONENT_DATASETS = {
     "coordinates": "length_unit", "gauss_coordinates": "length_unit",
@@ -348,6 +390,7 @@ def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):
         with_fields = check_history(f, problems)
         check_increments(f, with_fields, problems)
         check_finite(f, problems)
+        check_checksums(f, problems)
         check_units(f, problems)
         check_status(f, expect_status, problems)
         nitems = 0

@@ -3,13 +3,21 @@
 !> so that the run ends with its results file marked 'interrupted' instead of dying.
 !> A second signal of the same kind ends the process at once (default action restored).
 module pecplas_signals
-   use, intrinsic :: iso_c_binding, only: c_int
+   use, intrinsic :: iso_c_binding, only: c_int, c_char
    implicit none (type, external)
    private
 
    public :: install_signal_handlers, interrupt_requested, interrupt_signal, clear_interrupt
+   public :: crash_guard_begin, crash_guard_end
 
    interface
+      integer(c_int) function c_guard_begin(message, n) bind(C, name='pecplas_guard_begin')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: message(*)
+         integer(c_int), value :: n
+      end function c_guard_begin
+      subroutine c_guard_end() bind(C, name='pecplas_guard_end')
+      end subroutine c_guard_end
       integer(c_int) function c_install() bind(C, name='pecplas_install_signal_handlers')
          import :: c_int
       end function c_install
@@ -53,5 +61,19 @@ contains
    subroutine clear_interrupt()
       call c_clear()
    end subroutine clear_interrupt
+
+   !> Until crash_guard_end, a crash (segmentation fault, bus error, floating-point or
+   !> illegal-instruction trap) writes `message` to standard error and ends the process with
+   !> exit code 2 (an input error). For library calls reading a file that may be damaged
+   !> (HDF5 crashes on some damaged files); the previous signal actions are put back by
+   !> crash_guard_end. False when the guard could not be set up.
+   logical function crash_guard_begin(message) result(ok)
+      character(len=*), intent(in) :: message
+      ok = c_guard_begin(message, int(len(message), c_int)) == 0
+   end function crash_guard_begin
+
+   subroutine crash_guard_end()
+      call c_guard_end()
+   end subroutine crash_guard_end
 
 end module pecplas_signals

@@ -302,3 +302,22 @@ def test_kernel_copy_and_its_fallback_give_the_same_file(exe, tmp_path):
     for key in copied:
         if key != "history/cpu_time":
             assert np.array_equal(copied[key], written[key]), key
+
+
+def test_checksum_definition():
+    # Fletcher's sums by hand: words 1, 2, 3 give s1 = 6, s2 = 1 + 3 + 6 = 10
+    assert check_results.fletcher([1, 2, 3]) == 10 * 2**26 + 6
+    # modulo P: a word of P counts as 0
+    assert check_results.fletcher([check_results.CHECKSUM_P, 5]) == 5 * 2**26 + 5
+    # a value is its low then its high 32-bit word: 1.0 = 0x3FF00000_00000000
+    assert check_results.values_checksum([1.0]) == check_results.fletcher([0, 0x3FF00000])
+    # a text is one word per UTF-8 byte ('é' is two)
+    assert check_results.text_checksum("é") == check_results.fletcher([0xC3, 0xA9])
+    # many words (more than one 4096 block): the closed form against a plain loop
+    rng = np.random.default_rng(1)
+    w = rng.integers(0, 2**32, size=10000, dtype=np.int64)
+    s1 = s2 = 0
+    for x in w:
+        s1 = (s1 + int(x)) % check_results.CHECKSUM_P
+        s2 = (s2 + s1) % check_results.CHECKSUM_P
+    assert check_results.fletcher(w) == s2 * 2**26 + s1

@@ -15,6 +15,8 @@ module pecplas_driver_restart
    use pecplas_driver_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
    use pecplas_driver_stiffness, only: factorise_values, partitioned
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
+   use pecplas_io_results_checksum, only: text_checksum
+   use pecplas_signals, only: crash_guard_begin, crash_guard_end
    implicit none (type, external)
    private
 
@@ -127,12 +129,18 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t) :: data
       character(len=:), allocatable :: deck_text, names(:), msg
+      real(wp) :: deck_sum
+      logical :: same, guarded
       integer :: nj
 
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
       names = restart_names(size(problem%state%sets), nj)
-      call read_restart_group(path, names, data, deck_text, error)
+      ! a damaged file may crash the HDF5 library itself: an input error, not a crash
+      guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
+         ': the HDF5 library crashed reading it (the file is damaged)')
+      call read_restart_group(path, names, data, deck_text, deck_sum, error)
+      if (guarded) call crash_guard_end()
       if (allocated(error)) then
          msg = error%text()
          call input_error(error, 'cannot restart from '//path//': '//msg)
@@ -142,7 +150,13 @@ contains
          call input_error(error, 'cannot restart: the deck text is unknown')
          return
       end if
-      if (deck_text /= model%deck_text) then
+      ! the deck text's checksum when the file has one (pecplas_io_results_restart)
+      if (deck_sum >= 0.0_wp) then
+         same = deck_sum == text_checksum(model%deck_text)
+      else
+         same = deck_text == model%deck_text
+      end if
+      if (.not. same) then
          call input_error(error, 'cannot restart from '//path//': it was written by another '// &
             'deck (its deck text differs from '//model%deck_file//'); restart with the deck '// &
             'that wrote it')

@@ -19,6 +19,7 @@ module pecplas_io_results_h5
       H5P_DATASET_CREATE_F, h5oopen_f, h5oclose_f, h5lexists_f
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
+   use pecplas_io_results_checksum, only: values_checksum, CHECKSUM_ATTR
    implicit none (type, external)
    private
 
@@ -136,7 +137,8 @@ contains
       real(wp), intent(in), target, contiguous :: a(:)
       type(error_t), allocatable, intent(out) :: error
       call write_ptr(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &
-         shape(a, kind=hsize_t), ptr_of_real(a, size(a)), error)
+         shape(a, kind=hsize_t), ptr_of_real(a, size(a)), error, &
+         values_checksum(a, size(a)))
    end subroutine write_real_1
 
    subroutine write_real_2(loc, name, a, error)
@@ -145,7 +147,8 @@ contains
       real(wp), intent(in), target, contiguous :: a(:, :)
       type(error_t), allocatable, intent(out) :: error
       call write_ptr(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &
-         shape(a, kind=hsize_t), ptr_of_real(a, size(a)), error)
+         shape(a, kind=hsize_t), ptr_of_real(a, size(a)), error, &
+         values_checksum(a, size(a)))
    end subroutine write_real_2
 
    subroutine write_real_3(loc, name, a, error)
@@ -154,7 +157,8 @@ contains
       real(wp), intent(in), target, contiguous :: a(:, :, :)
       type(error_t), allocatable, intent(out) :: error
       call write_ptr(loc, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &
-         shape(a, kind=hsize_t), ptr_of_real(a, size(a)), error)
+         shape(a, kind=hsize_t), ptr_of_real(a, size(a)), error, &
+         values_checksum(a, size(a)))
    end subroutine write_real_3
 
    subroutine write_int_1(loc, name, a, error)
@@ -192,18 +196,26 @@ contains
       if (n > 0) ptr = c_loc(a)
    end function ptr_of_int
 
-   subroutine write_ptr(loc, name, ftype, mtype, dims, ptr, error)
+   subroutine write_ptr(loc, name, ftype, mtype, dims, ptr, error, checksum)
       integer(hid_t), intent(in) :: loc, ftype, mtype
       character(len=*), intent(in) :: name
       integer(hsize_t), intent(in) :: dims(:)
       type(c_ptr), intent(in) :: ptr
       type(error_t), allocatable, intent(out) :: error
+      !> The values' checksum (pecplas_io_results_checksum), kept as the dataset's attribute.
+      real(wp), intent(in), optional :: checksum
+      real(wp), target :: buf
       integer(hid_t) :: space, dset
       integer :: err, e2
       space = -1; dset = -1
       call h5screate_simple_f(size(dims), dims, space, err)
       if (err == 0) call h5dcreate_f(loc, name, ftype, space, dset, err)
       if (err == 0 .and. product(dims) > 0) call h5dwrite_f(dset, mtype, ptr, err)
+      if (err == 0 .and. present(checksum)) then
+         buf = checksum
+         call write_attr(dset, CHECKSUM_ATTR, H5T_IEEE_F64LE, [integer(hsize_t) ::], c_loc(buf), &
+            err, H5T_NATIVE_DOUBLE)
+      end if
       if (dset > 0) call h5dclose_f(dset, e2)
       if (space > 0) call h5sclose_f(space, e2)
       if (err /= 0) call fatal_error(error, 'HDF5: cannot write dataset '//name)

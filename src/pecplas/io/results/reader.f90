@@ -9,10 +9,12 @@ module pecplas_io_results_reader
       h5sclose_f, h5aopen_by_name_f, h5aread_f, h5aclose_f, h5aget_type_f, h5aget_space_f, &
       h5tis_variable_str_f, h5tget_size_f, h5tget_cset_f, h5tset_cset_f, h5tcopy_f, h5tset_size_f, h5tclose_f, &
       h5lexists_f, h5aexists_by_name_f, h5dvlen_reclaim_f, H5F_ACC_RDONLY_F, H5T_STRING, &
-      H5T_FORTRAN_S1, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5P_DEFAULT_F, h5fget_filesize_f
+      H5T_FORTRAN_S1, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5P_DEFAULT_F, h5fget_filesize_f, &
+      h5aexists_f, h5aopen_f, h5sget_simple_extent_npoints_f
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: h5_init, increment_group
+   use pecplas_io_results_checksum, only: values_checksum, CHECKSUM_ATTR
    implicit none (type, external)
    private
 
@@ -189,7 +191,8 @@ contains
       call open_attr(this, object, name, attr, error)
       if (allocated(error)) return
       ptr = c_loc(buf)
-      call h5aread_f(attr, H5T_NATIVE_INTEGER, ptr, err)
+      err = -1
+      if (one_value(attr)) call h5aread_f(attr, H5T_NATIVE_INTEGER, ptr, err)
       call h5aclose_f(attr, e2)
       if (err /= 0) call fatal_error(error, 'cannot read integer attribute '//name)
       value = buf
@@ -208,11 +211,27 @@ contains
       call open_attr(this, object, name, attr, error)
       if (allocated(error)) return
       ptr = c_loc(buf)
-      call h5aread_f(attr, H5T_NATIVE_DOUBLE, ptr, err)
+      err = -1
+      if (one_value(attr)) call h5aread_f(attr, H5T_NATIVE_DOUBLE, ptr, err)
       call h5aclose_f(attr, e2)
       if (err /= 0) call fatal_error(error, 'cannot read real attribute '//name)
       value = buf
    end subroutine attr_real
+
+   !> True when the attribute holds exactly one value: a scalar read of a (damaged) larger
+   !> attribute would write past its one-value buffer.
+   logical function one_value(attr)
+      integer(hid_t), intent(in) :: attr
+      integer(hid_t) :: space
+      integer(hsize_t) :: npoints
+      integer :: err, e2
+      one_value = .false.
+      call h5aget_space_f(attr, space, err)
+      if (err /= 0) return
+      call h5sget_simple_extent_npoints_f(space, npoints, err)
+      call h5sclose_f(space, e2)
+      one_value = err == 0 .and. npoints == 1
+   end function one_value
 
    subroutine open_attr(this, object, name, attr, error)
       class(results_reader_t), intent(in) :: this
@@ -304,10 +323,47 @@ contains
       err = 0
       buf = ptr   ! h5dread_f wants a definable pointer
       if (n > 0) call h5dread_f(dset, mtype, buf, err)
+      if (err == 0 .and. mtype == H5T_NATIVE_DOUBLE) call verify_checksum(dset, n, ptr, path, &
+         error)
       call h5dclose_f(dset, e2)
       dset = -1
       if (err /= 0) call fatal_error(error, 'cannot read dataset '//path)
    end subroutine read_and_close
+
+   !> The n values read at `ptr` against the dataset's checksum attribute, when it has one
+   !> (every real dataset the program writes; files of earlier versions have none).
+   subroutine verify_checksum(dset, n, ptr, path, error)
+      integer(hid_t), intent(in) :: dset
+      integer, intent(in) :: n
+      type(c_ptr), intent(in) :: ptr
+      character(len=*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), pointer :: v(:)
+      real(wp), target :: stored
+      type(c_ptr) :: sp
+      integer(hid_t) :: attr
+      logical :: found
+      integer :: err, e2
+      call h5aexists_f(dset, CHECKSUM_ATTR, found, err)
+      if (err /= 0 .or. .not. found) return
+      call h5aopen_f(dset, CHECKSUM_ATTR, attr, err)
+      if (err /= 0) then
+         call fatal_error(error, 'dataset '//path//' is damaged: its checksum cannot be read')
+         return
+      end if
+      sp = c_loc(stored)   ! h5aread_f wants a definable pointer
+      err = -1
+      if (one_value(attr)) call h5aread_f(attr, H5T_NATIVE_DOUBLE, sp, err)
+      call h5aclose_f(attr, e2)
+      if (n > 0) then
+         call c_f_pointer(ptr, v, [n])
+      else
+         allocate (v(0))
+      end if
+      if (err /= 0 .or. .not. (stored == values_checksum(v, n))) call fatal_error(error, &
+         'dataset '//path//' is damaged: its values do not match their checksum')
+      if (n == 0) deallocate (v)
+   end subroutine verify_checksum
 
    subroutine read_real_1(this, path, values, error)
       class(results_reader_t), intent(in) :: this

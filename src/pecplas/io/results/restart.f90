@@ -21,7 +21,8 @@ module pecplas_io_results_restart
       h5sget_simple_extent_ndims_f, H5T_NATIVE_DOUBLE, H5O_TYPE_DATASET_F
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
-   use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write
+   use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr
+   use pecplas_io_results_checksum, only: values_checksum, CHECKSUM_ATTR
    use pecplas_io_results_reader, only: results_reader_t
    implicit none (type, external)
    private
@@ -290,8 +291,11 @@ contains
          if (err == 0) call h5sclose_f(space, e2)
          if (err == 0 .and. rank == 1 .and. dims(1) == int(n, hsize_t)) then
             if (n > 0) call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, c_loc(v), err)
+            ! the checksum of the new values (h5_write keeps one with every real dataset)
+            if (err == 0) call h5_attr(dset, CHECKSUM_ATTR, values_checksum(v, n), error)
             call h5dclose_f(dset, e2)
-            if (err /= 0) call fatal_error(error, 'HDF5: cannot write restart dataset '//name)
+            if (err /= 0 .and. .not. allocated(error)) call fatal_error(error, &
+               'HDF5: cannot write restart dataset '//name)
             done = .true.
             return
          end if
@@ -315,13 +319,18 @@ contains
       call h5oclose_f(obj, e2)
    end function own_dataset
 
-   !> Reads /restart of the results file `path` into `data` (items named by `names`) and its
-   !> deck text. An error when the file cannot be read or holds no restart group.
-   subroutine read_restart_group(path, names, data, deck_text, error)
+   !> Reads /restart of the results file `path` into `data` (items named by `names`) and what
+   !> identifies its deck: the checksum of the deck text (`deck_sum`, pecplas_io_results_checksum)
+   !> when the file has one, else (a file of an earlier version; deck_sum = -1) the deck text.
+   !> The text is a variable-length string kept in HDF5's global heap, which the library may
+   !> loop on or crash on when that part of the file is damaged: it is read only when there is
+   !> no checksum. An error when the file cannot be read or holds no restart group.
+   subroutine read_restart_group(path, names, data, deck_text, deck_sum, error)
       character(len=*), intent(in) :: path
       character(len=*), intent(in) :: names(:)
       type(restart_data_t), intent(out) :: data
       character(len=:), allocatable, intent(out) :: deck_text
+      real(wp), intent(out) :: deck_sum
       type(error_t), allocatable, intent(out) :: error
       type(results_reader_t) :: reader
       real(wp), allocatable :: v(:)
@@ -334,7 +343,15 @@ contains
             'converged increment')
          return
       end if
-      call reader%attribute('/', 'deck_text', deck_text, error)
+      deck_sum = -1.0_wp
+      deck_text = ''
+      if (reader%has_attribute('/', 'deck_text_checksum')) then
+         call reader%attribute('/', 'deck_text_checksum', deck_sum, error)
+         if (.not. allocated(error) .and. .not. (deck_sum >= 0.0_wp)) call fatal_error(error, &
+            'its deck text checksum is damaged')
+      else
+         call reader%attribute('/', 'deck_text', deck_text, error)
+      end if
       if (allocated(error)) return
       do i = 1, size(names)
          if (.not. reader%exists('/'//RESTART_GROUP//'/'//trim(names(i)))) cycle

@@ -1,0 +1,70 @@
+!> Checksum of the values of a real dataset, stored with it as the attribute `checksum` and
+!> verified when the program reads the dataset back (a restart): HDF5 keeps no checksum of
+!> raw data, so a damaged byte in a value would otherwise be read as a valid number.
+!>
+!> Fletcher's checksum over the IEEE bytes of the values taken as 32-bit words (the low then
+!> the high word of each value): s1 = sum of the words, s2 = sum of the running s1, both
+!> modulo the prime P = 67108859 < 2^26; the checksum is s2 * 2^26 + s1, below 2^52 and so
+!> held exactly by a double. A change of one word changes s1; two changes that keep s1 (a
+!> swap of words, equal and opposite changes) change s2 unless their positions balance.
+module pecplas_io_results_checksum
+   use, intrinsic :: iso_fortran_env, only: int64
+   use pecplas_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: values_checksum, text_checksum
+
+   !> Name of the attribute that holds a dataset's checksum.
+   character(len=*), parameter, public :: CHECKSUM_ATTR = 'checksum'
+
+   integer(int64), parameter :: P = 67108859_int64, LOW32 = 4294967295_int64
+   !> Words summed between two reductions modulo P: s2 stays below 2^63 (see values_checksum).
+   integer, parameter :: SPAN = 4096
+
+contains
+
+   !> Checksum of v(1:n) (any contiguous real array, passed by sequence association).
+   pure real(wp) function values_checksum(v, n) result(c)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: v(n)
+      integer(int64) :: s1, s2, w
+      integer :: i, i0
+      ! after SPAN values (2 SPAN words < 2^32 each): s1 < P + 2^45, s2 < P + 2 SPAN s1 < 2^59
+      s1 = 0
+      s2 = 0
+      do i0 = 1, n, SPAN
+         do i = i0, min(n, i0 + SPAN - 1)
+            w = transfer(v(i), w)
+            s1 = s1 + iand(w, LOW32)
+            s2 = s2 + s1
+            s1 = s1 + ishft(w, -32)
+            s2 = s2 + s1
+         end do
+         s1 = modulo(s1, P)
+         s2 = modulo(s2, P)
+      end do
+      c = real(s2, wp)*67108864.0_wp + real(s1, wp)
+   end function values_checksum
+
+   !> Checksum of the characters of `text` (the same sums over their codes, one word each),
+   !> kept beside a text whose reading needs HDF5's global heap (the deck text), so that a
+   !> restart can check the deck without reading that heap from a file that may be damaged.
+   pure real(wp) function text_checksum(text) result(c)
+      character(len=*), intent(in) :: text
+      integer(int64) :: s1, s2
+      integer :: i, i0
+      s1 = 0
+      s2 = 0
+      do i0 = 1, len(text), SPAN
+         do i = i0, min(len(text), i0 + SPAN - 1)
+            s1 = s1 + ichar(text(i:i), int64)
+            s2 = s2 + s1
+         end do
+         s1 = modulo(s1, P)
+         s2 = modulo(s2, P)
+      end do
+      c = real(s2, wp)*67108864.0_wp + real(s1, wp)
+   end function text_checksum
+
+end module pecplas_io_results_checksum
