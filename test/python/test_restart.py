@@ -475,12 +475,16 @@ def test_restart_from_a_damaged_extent_is_an_input_error(tmp_path, damaged, item
 OEDOMETER = ROOT / "test" / "data" / "cli" / "oedometer.inp"
 
 
+def run_oedometer(*args):
+    # the deck named as in the files of test/data/restart_damaged, from its folder (the deck
+    # text recorded in a results file starts with the deck's path as given)
+    return subprocess.run(pecplas_cmd() + [OEDOMETER.name, "--quiet"] + [str(a) for a in args],
+                          cwd=OEDOMETER.parent, capture_output=True, text=True, timeout=60)
+
+
 def restart_oedometer(tmp_path, source):
     out = tmp_path / "out.h5"
-    r = subprocess.run(pecplas_cmd() + [str(OEDOMETER), "-o", str(out), "--quiet",
-                                        "--restart", str(source)],
-                       cwd=tmp_path, capture_output=True, text=True, timeout=60)
-    return r, out
+    return run_oedometer("-o", out, "--restart", source), out
 
 
 @pytest.mark.parametrize("item", ["fint_conv", "u"])
@@ -490,9 +494,7 @@ def test_restart_refuses_a_value_changed_by_one_ulp(tmp_path, item):
     # link to the increment's displacement field, u) is a damaged file, exit 2, no results.
     # Without the checksum the run restarted from the changed value and completed (exit 0).
     part = tmp_path / "part.h5"
-    r = subprocess.run(pecplas_cmd() + [str(OEDOMETER), "-o", str(part), "--quiet",
-                                        "--stop-after-increments", "2"],
-                       cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    r = run_oedometer("-o", part, "--stop-after-increments", 2)
     assert r.returncode == 4, r.stderr
     with h5py.File(part, "r+") as f:
         d = f["restart"][item]
@@ -525,8 +527,7 @@ def test_restart_from_a_file_written_before_checksums(tmp_path):
                                "oedometer_before_checksums.h5")
     assert r.returncode == 0, r.stderr
     full = tmp_path / "full.h5"
-    r = subprocess.run(pecplas_cmd() + [str(OEDOMETER), "-o", str(full), "--quiet"],
-                       cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    r = run_oedometer("-o", full)
     assert r.returncode == 0, r.stderr
     u1, u2 = last_fields(out)[0], last_fields(full)[0]
     assert np.max(np.abs(u1 - u2)) <= 1e-12 * np.max(np.abs(u2))
