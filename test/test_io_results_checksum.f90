@@ -6,7 +6,7 @@
 module test_io_results_checksum
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
-   use pecplas_io_results_checksum, only: values_checksum, text_checksum
+   use pecplas_io_results_checksum, only: values_checksum, text_checksum, deck_identity
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
@@ -18,7 +18,8 @@ contains
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('one_ulp_anywhere', test_one_ulp), &
                new_unittest('swap_and_range', test_swap_and_range), &
-               new_unittest('text', test_text)]
+               new_unittest('text', test_text), &
+               new_unittest('deck_identity', test_deck_identity)]
    end subroutine collect_io_results_checksum
 
    !> 10 000 values (three reduction spans): one ulp up or down at any of 60 positions spread
@@ -72,5 +73,26 @@ contains
       call check(error, text_checksum(a) == text_checksum(a(1:len(a))) .and. &
          text_checksum('') == 0.0_wp, 'the same text, the same sum; empty: 0')
    end subroutine test_text
+
+   !> The paths of the `** ---- file:` lines do not count, everything else does.
+   subroutine test_deck_identity(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=1), parameter :: nl = new_line('a')
+      character(len=*), parameter :: a = '** ---- file: /home/u/run/deck.inp'//nl//'*TITLE'// &
+         nl//'** ---- file: mesh.inp'//nl//'*NODES'//nl//'1, 0, 0'
+      character(len=*), parameter :: b = '** ---- file: deck.inp'//nl//'*TITLE'//nl// &
+         '** ---- file: ../run/mesh.inp'//nl//'*NODES'//nl//'1, 0, 0'
+      call check(error, deck_identity(a) == '** ---- file:'//nl//'*TITLE'//nl// &
+         '** ---- file:'//nl//'*NODES'//nl//'1, 0, 0', 'marker paths dropped, the rest kept')
+      if (allocated(error)) return
+      call check(error, deck_identity(a) == deck_identity(b), 'other paths, the same deck')
+      if (allocated(error)) return
+      call check(error, deck_identity(a) /= deck_identity(a(:len(a) - 1)//'1'), &
+         'an edited line counts')
+      if (allocated(error)) return
+      call check(error, deck_identity('** ---- file: x') == '** ---- file:' .and. &
+         deck_identity('') == '' .and. deck_identity('** -') == '** -', &
+         'a last line without newline; short lines')
+   end subroutine test_deck_identity
 
 end module test_io_results_checksum

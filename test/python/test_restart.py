@@ -531,3 +531,23 @@ def test_restart_from_a_file_written_before_checksums(tmp_path):
     assert r.returncode == 0, r.stderr
     u1, u2 = last_fields(out)[0], last_fields(full)[0]
     assert np.max(np.abs(u1 - u2)) <= 1e-12 * np.max(np.abs(u2))
+
+
+def test_restart_with_the_deck_named_by_another_path(tmp_path):
+    # the deck text holds the path of each file read; a restart compares the text without
+    # those paths: the deck given by its absolute path, from another directory, is the same
+    # deck (refused as another deck before), while an edited copy is still refused
+    part = tmp_path / "part.h5"
+    r = run_oedometer("-o", part, "--stop-after-increments", 2)
+    assert r.returncode == 4, r.stderr
+    out = tmp_path / "out.h5"
+    r = subprocess.run(pecplas_cmd() + [str(OEDOMETER), "-o", str(out), "--quiet",
+                                        "--restart", str(part)],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    edited = tmp_path / "oedometer.inp"
+    edited.write_text(OEDOMETER.read_text().replace("*TITLE\n", "*TITLE\n** edited\n"))
+    r = subprocess.run(pecplas_cmd() + [edited.name, "-o", str(tmp_path / "e.h5"),
+                                        "--quiet", "--restart", str(part)],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and "written by another deck" in r.stderr, r.stderr

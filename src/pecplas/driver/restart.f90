@@ -15,7 +15,7 @@ module pecplas_driver_restart
    use pecplas_driver_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
    use pecplas_driver_stiffness, only: factorise_values, partitioned
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
-   use pecplas_io_results_checksum, only: text_checksum
+   use pecplas_io_results_checksum, only: text_checksum, deck_identity
    use pecplas_signals, only: crash_guard_begin, crash_guard_end
    implicit none (type, external)
    private
@@ -150,11 +150,12 @@ contains
          call input_error(error, 'cannot restart: the deck text is unknown')
          return
       end if
-      ! the deck text's checksum when the file has one (pecplas_io_results_restart)
+      ! the deck text's checksum when the file has one (pecplas_io_results_restart); the
+      ! paths of the files read do not count (deck_identity)
       if (deck_sum >= 0.0_wp) then
-         same = deck_sum == text_checksum(model%deck_text)
+         same = deck_sum == text_checksum(deck_identity(model%deck_text))
       else
-         same = deck_text == model%deck_text
+         same = deck_identity(deck_text) == deck_identity(model%deck_text)
       end if
       if (.not. same) then
          call input_error(error, 'cannot restart from '//path//': it was written by another '// &

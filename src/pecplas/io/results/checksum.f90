@@ -13,7 +13,7 @@ module pecplas_io_results_checksum
    implicit none (type, external)
    private
 
-   public :: values_checksum, text_checksum
+   public :: values_checksum, text_checksum, deck_identity
 
    !> Name of the attribute that holds a dataset's checksum.
    character(len=*), parameter, public :: CHECKSUM_ATTR = 'checksum'
@@ -66,5 +66,39 @@ contains
       end do
       c = real(s2, wp)*67108864.0_wp + real(s1, wp)
    end function text_checksum
+
+   !> The deck text without the paths of its `** ---- file: <path>` lines (each file read
+   !> starts with one): what identifies a deck for a restart, so that the same files read
+   !> from another directory, or named by another path, are the same deck.
+   pure function deck_identity(text) result(id)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: id
+      character(len=*), parameter :: MARK = '** ---- file:'
+      character(len=len(text)) :: buf
+      integer :: i, j, k, eol
+      i = 1
+      k = 0
+      do while (i <= len(text))
+         eol = index(text(i:), new_line('a'))
+         j = len(text)
+         if (eol > 0) j = i + eol - 1          ! j: the line's last character (its newline)
+         if (j - i + 1 >= len(MARK)) then
+            if (text(i:i + len(MARK) - 1) == MARK) then
+               buf(k + 1:k + len(MARK)) = MARK
+               k = k + len(MARK)
+               if (eol > 0) then
+                  k = k + 1
+                  buf(k:k) = new_line('a')
+               end if
+               i = j + 1
+               cycle
+            end if
+         end if
+         buf(k + 1:k + j - i + 1) = text(i:j)
+         k = k + j - i + 1
+         i = j + 1
+      end do
+      id = buf(:k)
+   end function deck_identity
 
 end module pecplas_io_results_checksum
