@@ -19,7 +19,8 @@ contains
       tests = [new_unittest('one_ulp_anywhere', test_one_ulp), &
                new_unittest('swap_and_range', test_swap_and_range), &
                new_unittest('text', test_text), &
-               new_unittest('deck_identity', test_deck_identity)]
+               new_unittest('deck_identity', test_deck_identity), &
+               new_unittest('deck_identity_long', test_deck_identity_long)]
    end subroutine collect_io_results_checksum
 
    !> 10 000 values (three reduction spans): one ulp up or down at any of 60 positions spread
@@ -93,6 +94,31 @@ contains
       call check(error, deck_identity('** ---- file: x') == '** ---- file:' .and. &
          deck_identity('') == '' .and. deck_identity('** -') == '** -', &
          'a last line without newline; short lines')
+      if (allocated(error)) return
+      call check(error, deck_identity('*TITLE x ** ---- file: y'//nl//'** ---- file: z'// &
+         nl) == '*TITLE x ** ---- file: y'//nl//'** ---- file:'//nl, &
+         'a marker inside a line is text')
    end subroutine test_deck_identity
+
+   !> A deck text longer than the stack (16 MB; a keyword mesh of 1e6 nodes is 40 MB): the
+   !> identity was built in an automatic buffer of the text's length and crashed on it.
+   subroutine test_deck_identity_long(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=1), parameter :: nl = new_line('a')
+      character(len=*), parameter :: line = '1, 0.125, 0.250'//nl
+      character(len=:), allocatable :: text, id
+      integer :: i, n
+      n = 16*1024*1024/len(line)
+      allocate (character(len=len('** ---- file: /a/deck.inp'//nl) + n*len(line)) :: text)
+      text(1:len('** ---- file: /a/deck.inp'//nl)) = '** ---- file: /a/deck.inp'//nl
+      do i = 1, n
+         text(len(text) - (n - i + 1)*len(line) + 1:len(text) - (n - i)*len(line)) = line
+      end do
+      id = deck_identity(text)
+      call check(error, len(id) == len(text) - len(' /a/deck.inp'), 'the path dropped')
+      if (allocated(error)) return
+      call check(error, id(len('** ---- file:') + 2:) == text(len('** ---- file: /a/deck.inp') + &
+         2:), 'the rest kept')
+   end subroutine test_deck_identity_long
 
 end module test_io_results_checksum

@@ -551,3 +551,29 @@ def test_restart_with_the_deck_named_by_another_path(tmp_path):
                                         "--quiet", "--restart", str(part)],
                        cwd=tmp_path, capture_output=True, text=True, timeout=60)
     assert r.returncode == 2 and "written by another deck" in r.stderr, r.stderr
+
+
+def test_deck_longer_than_the_stack_runs_stops_and_restarts(tmp_path):
+    """A deck text of 12 MB (a keyword mesh of about 1e6 nodes is 40 MB) is identified for
+    the results file and for a restart: the identity was built in a stack buffer of the
+    text's length, and every deck over the 8 MB stack crashed with a segfault when the
+    results file was created. Here the oedometer with 12 MB of comment lines."""
+    src = (ROOT / "test/data/cli/oedometer.inp").read_text()
+    pad = "".join(f"** padding {i:07d}: the deck text of a large keyword mesh is this long, "
+                  f"and longer\n" for i in range(150000))
+    d = tmp_path / "big.inp"
+    d.write_text(src + pad)
+    assert d.stat().st_size > 12e6
+    full, part, rest = tmp_path / "full.h5", tmp_path / "part.h5", tmp_path / "rest.h5"
+    r = run([d, "-o", full], ROOT)
+    assert r.returncode == 0, r.stderr
+    r = run([d, "-o", part, "--stop-after-increments", 3], ROOT)
+    assert r.returncode == 4, r.stderr
+    r = run([d, "-o", rest, "--restart", part], ROOT)
+    assert r.returncode == 0, r.stderr
+    u_full, _, rows_full, status = last_fields(full)
+    u_rest, _, rows_rest, status_rest = last_fields(rest)
+    assert status == status_rest == "completed"
+    assert rows_rest == rows_full[3:]  # the restarted file holds the increments after 3
+    # linear elastic oedometer: the restarted run repeats the uninterrupted one to roundoff
+    assert np.max(np.abs(u_rest - u_full)) <= 1e-12 * np.max(np.abs(u_full))

@@ -69,34 +69,47 @@ contains
 
    !> The deck text without the paths of its `** ---- file: <path>` lines (each file read
    !> starts with one): what identifies a deck for a restart, so that the same files read
-   !> from another directory, or named by another path, are the same deck.
+   !> from another directory, or named by another path, are the same deck. The text may be
+   !> large (a keyword mesh of 1e6 nodes: 40 MB): it is copied between markers, found by
+   !> searching for them, into a heap buffer (an automatic one of that length overflowed
+   !> the stack).
    pure function deck_identity(text) result(id)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: id
       character(len=*), parameter :: MARK = '** ---- file:'
-      character(len=len(text)) :: buf
-      integer :: i, j, k, eol
+      character(len=:), allocatable :: buf
+      integer :: i, k, p, m, eol
+      allocate (character(len=len(text)) :: buf)
       i = 1
       k = 0
       do while (i <= len(text))
-         eol = index(text(i:), new_line('a'))
-         j = len(text)
-         if (eol > 0) j = i + eol - 1          ! j: the line's last character (its newline)
-         if (j - i + 1 >= len(MARK)) then
-            if (text(i:i + len(MARK) - 1) == MARK) then
-               buf(k + 1:k + len(MARK)) = MARK
-               k = k + len(MARK)
-               if (eol > 0) then
-                  k = k + 1
-                  buf(k:k) = new_line('a')
-               end if
-               i = j + 1
-               cycle
-            end if
+         ! next marker at the start of a line, at or after i (0: none)
+         p = i
+         m = 0
+         do
+            m = index(text(p:), MARK)
+            if (m == 0) exit
+            m = p + m - 1
+            if (m == 1) exit
+            if (text(m - 1:m - 1) == new_line('a')) exit
+            p = m + 1
+            m = 0
+         end do
+         if (m == 0) then
+            buf(k + 1:k + len(text) - i + 1) = text(i:)
+            k = k + len(text) - i + 1
+            exit
          end if
-         buf(k + 1:k + j - i + 1) = text(i:j)
-         k = k + j - i + 1
-         i = j + 1
+         ! the text before the marker, then the marker without its path
+         buf(k + 1:k + m - i) = text(i:m - 1)
+         k = k + m - i
+         buf(k + 1:k + len(MARK)) = MARK
+         k = k + len(MARK)
+         eol = index(text(m:), new_line('a'))
+         if (eol == 0) exit
+         k = k + 1
+         buf(k:k) = new_line('a')
+         i = m + eol
       end do
       id = buf(:k)
    end function deck_identity
