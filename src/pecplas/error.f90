@@ -58,9 +58,53 @@ contains
       error%kind = ERR_INPUT
       error%file = file
       error%line = line
-      error%keyword = keyword
-      error%message = message
+      error%keyword = shortened(keyword)
+      error%message = shortened(message)
    end subroutine deck_error
+
+   !> `text` with every word (run of characters without a blank) longer than LONG_WORD cut
+   !> to its first KEPT characters and '...(n characters)': a message quoting a token of a
+   !> deck line of megabytes stays a readable line.
+   pure function shortened(text) result(out)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: out
+      integer, parameter :: LONG_WORD = 256, KEPT = 60
+      character(len=24) :: count
+      integer :: i, j, k
+      if (len(text) <= LONG_WORD) then
+         out = text
+         return
+      end if
+      allocate (character(len=len(text)) :: out)
+      i = 1
+      k = 0
+      do while (i <= len(text))
+         j = index(text(i:), ' ')
+         if (j == 0) then
+            j = len(text)
+         else
+            j = i + j - 1
+         end if
+         ! text(i:j): a word and the blank after it (none at the end)
+         if (j - i + 1 > LONG_WORD) then
+            write (count, '(a,i0,a)') '...(', j - i + merge(0, 1, text(j:j) == ' '), &
+               ' characters)'
+            out(k + 1:k + KEPT) = text(i:i + KEPT - 1)
+            k = k + KEPT
+            out(k + 1:k + len_trim(count)) = trim(count)
+            k = k + len_trim(count)
+            if (text(j:j) == ' ') then
+               k = k + 1
+               out(k:k) = ' '
+            end if
+         else
+            out(k + 1:k + j - i + 1) = text(i:j)
+            k = k + j - i + 1
+         end if
+         i = j + 1
+      end do
+      out = out(1:k)
+   end function shortened
 
    !> A run that cannot go on (divergence, limit load).
    subroutine run_error(error, message)

@@ -42,3 +42,48 @@ def test_mutated_deck_never_crashes(exe, tmp_path, case):
         chk = subprocess.run([sys.executable, str(CHECKER), str(out)], capture_output=True,
                              text=True)
         assert chk.returncode == 0, chk.stdout + chk.stderr
+
+
+BIG = 12_000_000  # characters: more than the 8 MB stack of a default Linux process
+HUGE_TOKENS = {
+    # a number of 12 million digits: converted through a stack buffer of its length
+    # (segfault before)
+    "long_number": ("2, 1, 0\n", "2, 1." + "5" * BIG + ", 0\n", 0, ""),
+    # an unknown keyword of 12 MB: its name was grown a character at a time (quadratic:
+    # more than a minute before)
+    "long_keyword": ("*MATERIAL", "*" + "A" * BIG + "\n*MATERIAL", 2, "unknown keyword"),
+    # names quoted by the messages are cut ('...(n characters)'), not printed whole
+    "long_material_name": ("NAME=soil", "NAME=" + "A" * BIG, 2, "undefined material 'soil'"),
+    "long_set_name": ("*SECTION, SET=block", "*SECTION, SET=" + "A" * BIG, 2,
+                      "undefined element set"),
+    "long_include": ("*NODES", "*INCLUDE, FILE=" + "A" * BIG + "\n*NODES", 2,
+                     "cannot read include file"),
+    "long_comment": ("*MATERIAL", "** " + "A" * BIG + "\n*MATERIAL", 0, ""),
+    # parameters are checked for duplicates pairwise: their number is capped
+    "many_parameters": ("*STEP, NAME=load, INCREMENTS=4",
+                        "*STEP, NAME=load, INCREMENTS=4" +
+                        "".join(f", K{i}=1" for i in range(100000)), 2,
+                        "more than 64 parameters on one keyword line"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(HUGE_TOKENS))
+def test_deck_with_a_huge_token(exe, tmp_path, case):
+    """Lines of megabytes in a deck: a clear error or a normal run within seconds, never a
+    crash or a hang, and an error message of readable length."""
+    old, new, code, text = HUGE_TOKENS[case]
+    src = (ROOT / "test/data/cli/oedometer.inp").read_text()
+    assert old in src
+    deck = tmp_path / "big.inp"
+    deck.write_text(src.replace(old, new, 1))
+    out = tmp_path / "r.h5"
+    r = subprocess.run([*exe, str(deck), "-o", str(out), "--quiet"], cwd=ROOT,
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == code, (r.returncode, r.stderr[-2000:])
+    assert len(r.stderr) < 2000, r.stderr[:500]
+    if code == 2:
+        assert "pecplas: error: " + str(deck) + ":" in r.stderr and text in r.stderr, r.stderr
+        assert "characters)" in r.stderr or case == "many_parameters"
+        assert not out.exists()
+    else:
+        assert out.exists()

@@ -56,7 +56,9 @@ contains
       integer(int64) :: mant
       integer :: i, n, c, nd, e10, ex
       logical :: neg, negx, ok
-      character(kind=c_char, len=len(s) + 1) :: buf
+      ! on the heap: a token may be as long as a line (an automatic buffer of its length
+      ! was on the stack, and a number of 20 million digits overflowed it)
+      character(kind=c_char, len=:), allocatable :: buf
       n = len(s)
       i = 1
       neg = .false.
@@ -109,6 +111,7 @@ contains
       end if
       call decimal_value(mant, nd, e10, neg, v, ok)
       if (ok) return
+      allocate (character(kind=c_char, len=n + 1) :: buf)
       buf(1:n) = s
       do i = 1, n
          if (buf(i:i) == 'd' .or. buf(i:i) == 'D') buf(i:i) = 'e'

@@ -15,6 +15,9 @@ module pecplas_io_deck_fields
    ! re-exported so that handlers need one module for fields and their text
    public :: parse_real, parse_int, upper, same_name, add_name, itoa
 
+   !> Most parameters one keyword line may carry (the most any keyword knows is about 10).
+   integer, parameter, public :: MAX_PARAMS = 64
+
    !> One logical line of a deck, comments stripped, with where it came from.
    type :: deck_line_t
       !> File holding the line (the include file when inside one) and line number in it.
@@ -55,7 +58,7 @@ contains
    pure function keyword_name(text) result(name)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: name
-      integer :: i, k
+      integer :: i, k, n
       character(len=:), allocatable :: raw
       name = ''
       if (len_trim(text) == 0) return
@@ -63,16 +66,24 @@ contains
       k = index(text, ',')
       if (k == 0) k = len(text) + 1
       raw = upper(text(2:k - 1))
-      ! collapse blanks: '* end   step' -> '*END STEP'
-      name = '*'
+      ! collapse blanks: '* end   step' -> '*END STEP' (in place: a keyword may be as long
+      ! as a line, and growing the name a character at a time took quadratic time)
+      deallocate (name)
+      allocate (character(len=len(raw) + 1) :: name)
+      name(1:1) = '*'
+      n = 1
       do i = 1, len(raw)
          if (raw(i:i) == ' ') then
-            if (len(name) > 1 .and. name(len(name):len(name)) /= ' ') name = name//' '
+            if (n > 1 .and. name(n:n) /= ' ') then
+               n = n + 1
+               name(n:n) = ' '
+            end if
          else
-            name = name//raw(i:i)
+            n = n + 1
+            name(n:n) = raw(i:i)
          end if
       end do
-      name = trim(name)
+      name = trim(name(1:n))
    end function keyword_name
 
    !> Parses `*KEYWORD, KEY=value, FLAG, ...`; errors on empty keys, empty values, duplicates.
@@ -114,6 +125,12 @@ contains
                end if
             end do
             n = size(kw%params)
+            if (n >= MAX_PARAMS) then
+               ! no keyword has nearly as many; the checks above are quadratic in the count
+               call deck_error(error, line%file, line%line, kw%name, 'more than '// &
+                  itoa(MAX_PARAMS)//' parameters on one keyword line')
+               return
+            end if
             allocate (tmp(n + 1))
             tmp(1:n) = kw%params
             call move_alloc(tmp, kw%params)
