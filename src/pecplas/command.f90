@@ -1,10 +1,12 @@
 !> What every command-line program (pecplas, pecplas-path, pecplas-identify,
 !> pecplas-sensitivity) does with an error that ends it: one line on standard error,
-!> "<program>: error: <text>", and the exit code to return. Standard error is flushed at
+!> "<program>: error: <text>" (a word of it over 256 characters cut, as in deck errors),
+!> and the exit code to return. Standard error is flushed at
 !> once: gfortran buffers it when it is redirected to a file. Also the command-line
 !> arguments as one array, which every program's main hands to its entry function.
 module pecplas_command
    use, intrinsic :: iso_fortran_env, only: output_unit
+   use pecplas_error, only: shortened
    implicit none (type, external)
    private
 
@@ -16,7 +18,7 @@ contains
       character(len=*), intent(in) :: program, text
       integer, intent(in) :: code
       flush (output_unit)
-      write (0, '(a)') program//': error: '//text
+      write (0, '(a)') program//': error: '//shortened(text)
       flush (0)
       exit_code = code
    end function command_error

@@ -5,7 +5,7 @@ module pecplas_error
    implicit none (type, external)
    private
 
-   public :: error_t, fatal_error, deck_error, input_error, run_error, singular_error
+   public :: error_t, fatal_error, deck_error, input_error, run_error, singular_error, shortened
    public :: EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, EXIT_INTERRUPTED
 
    !> Exit codes of the batch executable (4: stopped by SIGTERM, SIGINT or SIGHUP).

@@ -132,6 +132,37 @@ def test_path_increment_cap(tmp_path):
     assert not out.with_suffix(".h5").exists()
 
 
+def test_path_output_that_cannot_be_created_is_an_input_error(tmp_path):
+    # the directory of BASE is a regular file: exit 2 before the path runs, as pecplas does
+    # with a results file it cannot create (it was exit 1, an internal error, after the run)
+    (tmp_path / "afile").write_text("")
+    out = tmp_path / "afile" / "x"
+    r = run_path(TRUST / "path_short.inp", out, "--quiet")
+    assert r.returncode == 2, r.stderr
+    assert "cannot write results: cannot create " + str(out) + ".csv" in r.stderr, r.stderr
+    assert not out.with_suffix(".h5").exists() and len(r.stderr) < 500
+    # a name of 100 000 characters (too long for the system): the same error, its name cut
+    # in the message ('...(n characters)') instead of printed whole
+    out = tmp_path / ("o" * 100000)
+    r = run_path(TRUST / "path_short.inp", out, "--quiet")
+    assert r.returncode == 2, r.stderr[:500]
+    assert "cannot create " in r.stderr and "characters)" in r.stderr and len(r.stderr) < 500
+
+
+def test_identify_and_sensitivity_output_that_cannot_be_written_is_an_input_error(tmp_path):
+    # -o inside a regular file: exit 2 with the file named (it was exit 1, internal error)
+    (tmp_path / "afile").write_text("")
+    bad = tmp_path / "afile" / "x.csv"
+    r = run_path(ROOT / "input/paths/cnl_modjoin.inp", tmp_path / "cnl", "--quiet")
+    assert r.returncode == 0, r.stderr
+    for cmd in ([*program_cmd("pecplas-identify"), str(tmp_path / "cnl.csv")],
+                [*program_cmd("pecplas-sensitivity")]):
+        r = subprocess.run([*cmd, "-o", str(bad), "--quiet"], cwd=ROOT, capture_output=True,
+                           text=True, timeout=120)
+        assert r.returncode == 2, (cmd, r.stderr)
+        assert "cannot write " + str(bad) in r.stderr, r.stderr
+
+
 def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
     # reproducer found by tools/mutate_decks.py: spring 552 of input/s2/s2_katona.inp joined
     # to node 7 instead of 71, a doublet whose face-2 node lies behind face 1

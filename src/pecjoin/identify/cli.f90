@@ -3,7 +3,7 @@
 !> the CSV. Exit codes as `pecplas`: 0 done, 2 input error, 1 internal error.
 module pecjoin_identify_cli
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_INTERNAL
+   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT
    use pecplas_version, only: VERSION
    use pecplas_files, only: make_directories, path_dir
    use pecplas_io_deck_text, only: parse_real
@@ -111,7 +111,8 @@ contains
       call make_directories(path_dir(out))
       call write_identification_csv(out, res, error)
       if (allocated(error)) then
-         code = command_error(COMMAND, EXIT_INTERNAL, error%text())
+         ! an output that cannot be written (-o in a missing or read-only place): input error
+         code = command_error(COMMAND, EXIT_INPUT, error%text())
          return
       end if
       if (.not. quiet) write (*, '(a)') 'written: '//out

@@ -4,7 +4,7 @@
 !> 3 path stopped early (the converged rows are written), 1 internal error.
 module pecjoin_path_cli
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL
+   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED
    use pecplas_version, only: VERSION
    use pecplas_files, only: make_directories, path_stem, path_dir
    use pecjoin_laws_type, only: MODE_NAMES
@@ -124,6 +124,13 @@ contains
          size(d%targets), '  x ', d%steps, ' increments'
       if (.not. quiet .and. len(d%law%describe()) > 0) write (*, '(a)') ' '//d%law%describe()
 
+      ! an output that cannot be created is an input error, found before the path runs
+      ! (exit 2, as pecplas does with its results file)
+      if (.not. can_create(base//'.csv')) then
+         code = command_error(COMMAND, EXIT_INPUT, 'cannot write results: cannot create '// &
+            base//'.csv (does its directory exist?)')
+         return
+      end if
       call run_path(d%law, d%control, [d%sigma_n0, d%tau0], d%ks, d%targets, d%steps, res, &
          run_err, progress=.not. quiet, max_seconds=limit(max_seconds))
       call write_path_csv(base//'.csv', res, error)
@@ -135,7 +142,8 @@ contains
          end if
       end if
       if (allocated(error)) then
-         code = command_error(COMMAND, EXIT_INTERNAL, 'cannot write results: '//error%text())
+         ! the output was created above: what failed is the writing (disk full)
+         code = command_error(COMMAND, EXIT_STOPPED, 'cannot write results: '//error%text())
          return
       end if
       n = ubound(res%step, 1)
@@ -150,6 +158,16 @@ contains
          trim(MODE_NAMES(res%mode(n)))
       code = EXIT_OK
    end function run_path_deck
+
+   !> True when `path` can be created (or replaced) for writing; it is left empty, to be
+   !> written after the path has run.
+   logical function can_create(path)
+      character(len=*), intent(in) :: path
+      integer :: u, ios
+      open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+      can_create = ios == 0
+      if (can_create) close (u)
+   end function can_create
 
    pure real(wp) function limit(x)
       real(wp), intent(in), optional :: x

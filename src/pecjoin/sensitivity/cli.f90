@@ -5,7 +5,7 @@
 !> 3 a reference path stopped, 1 internal error.
 module pecjoin_sensitivity_cli
    use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_INTERNAL
+   use pecplas_error, only: error_t, EXIT_OK, EXIT_INPUT
    use pecplas_files, only: make_directories, path_dir
    use pecplas_strings, only: upper
    use pecplas_model_params, only: params_t
@@ -166,7 +166,8 @@ contains
       call make_directories(path_dir(out))
       call write_sensitivity_csv(out, res, CURVE_LABELS, with_thesis, error)
       if (allocated(error)) then
-         code = command_error(COMMAND, EXIT_INTERNAL, error%text())
+         ! an output that cannot be written (-o in a missing or read-only place): input error
+         code = command_error(COMMAND, EXIT_INPUT, error%text())
          return
       end if
       if (.not. quiet) write (*, '(a)') 'written: '//out
