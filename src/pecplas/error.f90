@@ -58,13 +58,14 @@ contains
       error%kind = ERR_INPUT
       error%file = file
       error%line = line
-      error%keyword = shortened(keyword)
-      error%message = shortened(message)
+      error%keyword = keyword
+      error%message = message
    end subroutine deck_error
 
    !> `text` with every word (run of characters without a blank) longer than LONG_WORD cut
    !> to its first KEPT characters and '...(n characters)': a message quoting a token of a
-   !> deck line of megabytes stays a readable line.
+   !> deck line of megabytes stays a readable line (applied where errors are printed,
+   !> pecplas_command).
    pure function shortened(text) result(out)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: out

@@ -15,7 +15,7 @@ module pecplas_driver_restart
    use pecplas_driver_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
    use pecplas_driver_stiffness, only: factorise_values, partitioned
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
-   use pecplas_io_results_checksum, only: text_checksum, deck_identity
+   use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_signals, only: crash_guard_begin, crash_guard_end
    implicit none (type, external)
    private
@@ -128,9 +128,9 @@ contains
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t) :: data
-      character(len=:), allocatable :: deck_text, names(:), msg
+      character(len=:), allocatable :: names(:), msg
       real(wp) :: deck_sum
-      logical :: same, guarded
+      logical :: guarded
       integer :: nj
 
       nj = 0
@@ -139,7 +139,7 @@ contains
       ! a damaged file may crash the HDF5 library itself: an input error, not a crash
       guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
          ': the HDF5 library crashed reading it (the file is damaged)')
-      call read_restart_group(path, names, data, deck_text, deck_sum, error)
+      call read_restart_group(path, names, data, deck_sum, error)
       if (guarded) call crash_guard_end()
       if (allocated(error)) then
          msg = error%text()
@@ -150,14 +150,8 @@ contains
          call input_error(error, 'cannot restart: the deck text is unknown')
          return
       end if
-      ! the deck text's checksum when the file has one (pecplas_io_results_restart); the
-      ! paths of the files read do not count (deck_identity)
-      if (deck_sum >= 0.0_wp) then
-         same = deck_sum == text_checksum(deck_identity(model%deck_text))
-      else
-         same = deck_identity(deck_text) == deck_identity(model%deck_text)
-      end if
-      if (.not. same) then
+      ! the paths of the files read do not count (pecplas_io_results_checksum, deck_identity)
+      if (deck_sum /= deck_checksum(model%deck_text)) then
          call input_error(error, 'cannot restart from '//path//': it was written by another '// &
             'deck (its deck text differs from '//model%deck_file//'); restart with the deck '// &
             'that wrote it')

@@ -59,7 +59,7 @@ contains
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: name
       integer :: i, k, n
-      character(len=:), allocatable :: raw
+      character(len=:), allocatable :: raw, buf
       name = ''
       if (len_trim(text) == 0) return
       if (text(1:1) /= '*') return
@@ -68,22 +68,21 @@ contains
       raw = upper(text(2:k - 1))
       ! collapse blanks: '* end   step' -> '*END STEP' (in place: a keyword may be as long
       ! as a line, and growing the name a character at a time took quadratic time)
-      deallocate (name)
-      allocate (character(len=len(raw) + 1) :: name)
-      name(1:1) = '*'
+      allocate (character(len=len(raw) + 1) :: buf)
+      buf(1:1) = '*'
       n = 1
       do i = 1, len(raw)
          if (raw(i:i) == ' ') then
-            if (n > 1 .and. name(n:n) /= ' ') then
+            if (n > 1 .and. buf(n:n) /= ' ') then
                n = n + 1
-               name(n:n) = ' '
+               buf(n:n) = ' '
             end if
          else
             n = n + 1
-            name(n:n) = raw(i:i)
+            buf(n:n) = raw(i:i)
          end if
       end do
-      name = trim(name(1:n))
+      name = trim(buf(1:n))
    end function keyword_name
 
    !> Parses `*KEYWORD, KEY=value, FLAG, ...`; errors on empty keys, empty values, duplicates.

@@ -13,7 +13,7 @@ module pecplas_io_results_checksum
    implicit none (type, external)
    private
 
-   public :: values_checksum, text_checksum, deck_identity
+   public :: values_checksum, text_checksum, deck_identity, deck_checksum
 
    !> Name of the attribute that holds a dataset's checksum.
    character(len=*), parameter, public :: CHECKSUM_ATTR = 'checksum'
@@ -36,15 +36,12 @@ contains
       do i0 = 1, n, SPAN
          do i = i0, min(n, i0 + SPAN - 1)
             w = transfer(v(i), w)
-            s1 = s1 + iand(w, LOW32)
-            s2 = s2 + s1
-            s1 = s1 + ishft(w, -32)
-            s2 = s2 + s1
+            call add_word(s1, s2, iand(w, LOW32))
+            call add_word(s1, s2, ishft(w, -32))
          end do
-         s1 = modulo(s1, P)
-         s2 = modulo(s2, P)
+         call reduce(s1, s2)
       end do
-      c = real(s2, wp)*67108864.0_wp + real(s1, wp)
+      c = packed(s1, s2)
    end function values_checksum
 
    !> Checksum of the characters of `text` (the same sums over their codes, one word each),
@@ -58,14 +55,39 @@ contains
       s2 = 0
       do i0 = 1, len(text), SPAN
          do i = i0, min(len(text), i0 + SPAN - 1)
-            s1 = s1 + ichar(text(i:i), int64)
-            s2 = s2 + s1
+            call add_word(s1, s2, ichar(text(i:i), int64))
          end do
-         s1 = modulo(s1, P)
-         s2 = modulo(s2, P)
+         call reduce(s1, s2)
       end do
-      c = real(s2, wp)*67108864.0_wp + real(s1, wp)
+      c = packed(s1, s2)
    end function text_checksum
+
+   !> What identifies a deck for a restart: the checksum of its text without the paths of
+   !> the files read (deck_identity); written as the results file's `deck_text_checksum`.
+   pure real(wp) function deck_checksum(text) result(c)
+      character(len=*), intent(in) :: text
+      c = text_checksum(deck_identity(text))
+   end function deck_checksum
+
+   pure subroutine add_word(s1, s2, w)
+      integer(int64), intent(inout) :: s1, s2
+      integer(int64), intent(in) :: w
+      s1 = s1 + w
+      s2 = s2 + s1
+   end subroutine add_word
+
+   !> Both sums modulo P, every SPAN values (before they could overflow).
+   pure subroutine reduce(s1, s2)
+      integer(int64), intent(inout) :: s1, s2
+      s1 = modulo(s1, P)
+      s2 = modulo(s2, P)
+   end subroutine reduce
+
+   !> s2 * 2^26 + s1: below 2^52, exact in a double.
+   pure real(wp) function packed(s1, s2) result(c)
+      integer(int64), intent(in) :: s1, s2
+      c = real(s2, wp)*67108864.0_wp + real(s1, wp)
+   end function packed
 
    !> The deck text without the paths of its `** ---- file: <path>` lines (each file read
    !> starts with one): what identifies a deck for a restart, so that the same files read

@@ -52,7 +52,7 @@ module pecplas_io_results_file
       check_joint_fields, write_joint_fields
    use pecplas_io_results_describe, only: results_units_t, plan_units, describe_mesh, &
       describe_history
-   use pecplas_io_results_checksum, only: text_checksum, deck_identity
+   use pecplas_io_results_checksum, only: deck_checksum
    implicit none (type, external)
    private
 
@@ -348,7 +348,7 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'deck_text', &
          text_or_empty(model%deck_text), error)
       if (.not. allocated(error)) call h5_attr(file, 'deck_text_checksum', &
-         text_checksum(deck_identity(text_or_empty(model%deck_text))), error)
+         deck_checksum(text_or_empty(model%deck_text)), error)
       if (.not. allocated(error)) call h5_attr(file, 'analysis', analysis, error)
       if (.not. allocated(error)) call h5_attr(file, 'thickness', model%analysis%thickness, error)
       if (.not. allocated(error)) call h5_attr(file, 'threads', model%solver%threads, error)

@@ -22,7 +22,7 @@ module pecplas_io_results_restart
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr
-   use pecplas_io_results_checksum, only: values_checksum, CHECKSUM_ATTR
+   use pecplas_io_results_checksum, only: values_checksum, deck_checksum, CHECKSUM_ATTR
    use pecplas_io_results_reader, only: results_reader_t
    implicit none (type, external)
    private
@@ -320,20 +320,21 @@ contains
    end function own_dataset
 
    !> Reads /restart of the results file `path` into `data` (items named by `names`) and what
-   !> identifies its deck: the checksum of the deck text (`deck_sum`, pecplas_io_results_checksum)
-   !> when the file has one, else (a file of an earlier version; deck_sum = -1) the deck text.
-   !> The text is a variable-length string kept in HDF5's global heap, which the library may
-   !> loop on or crash on when that part of the file is damaged: it is read only when there is
-   !> no checksum. An error when the file cannot be read or holds no restart group.
-   subroutine read_restart_group(path, names, data, deck_text, deck_sum, error)
+   !> identifies its deck, `deck_sum` (deck_checksum of pecplas_io_results_checksum): the
+   !> file's `deck_text_checksum`, or for a file of an earlier version the checksum of its
+   !> deck text. That text is a variable-length string kept in HDF5's global heap, which the
+   !> library may loop on or crash on when that part of the file is damaged: it is read only
+   !> when there is no checksum. An error when the file cannot be read or holds no restart
+   !> group.
+   subroutine read_restart_group(path, names, data, deck_sum, error)
       character(len=*), intent(in) :: path
       character(len=*), intent(in) :: names(:)
       type(restart_data_t), intent(out) :: data
-      character(len=:), allocatable, intent(out) :: deck_text
       real(wp), intent(out) :: deck_sum
       type(error_t), allocatable, intent(out) :: error
       type(results_reader_t) :: reader
       real(wp), allocatable :: v(:)
+      character(len=:), allocatable :: deck_text
       integer :: i
       call reader%open(path, error)
       if (allocated(error)) return
@@ -343,14 +344,13 @@ contains
             'converged increment')
          return
       end if
-      deck_sum = -1.0_wp
-      deck_text = ''
       if (reader%has_attribute('/', 'deck_text_checksum')) then
          call reader%attribute('/', 'deck_text_checksum', deck_sum, error)
          if (.not. allocated(error) .and. .not. (deck_sum >= 0.0_wp)) call fatal_error(error, &
             'its deck text checksum is damaged')
       else
          call reader%attribute('/', 'deck_text', deck_text, error)
+         if (.not. allocated(error)) deck_sum = deck_checksum(deck_text)
       end if
       if (allocated(error)) return
       do i = 1, size(names)
