@@ -6,6 +6,7 @@
 #   2. stability maps: iterations vs K_n/E and increment size        (tools/bench_stability.py)
 #   3. scaling of an elastic-plastic mesh, 1e4 .. 1e6 DOFs            (tools/bench_scaling.py)
 #      and of a linear run (the elastic block), 1e4 .. 1e6       (tools/bench_scaling_elastic.py)
+#   3b. AMG-preconditioned CG on the footing's own tangents, 1e4 .. 1e6  (tools/bench_amg.py)
 #   4. work-precision charts S2, S6 and the "cheapest within 1 %/5 %" advice
 #                                                                     (tools/bench_work_precision.py)
 #   5. adaptive refinement on the S2 pile, beside the uniform series   (tools/bench_adapt.py)
@@ -40,9 +41,14 @@ if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('opensees
   echo "== make bench: installing openseespy 3.7.1.2 (the peer of tools/bench_peer_opensees.py)"
   $PYTHON -m pip install --quiet openseespy==3.7.1.2 openseespylinux==3.7.1.2
 fi
+# the iterative solver tried on the footing's tangents (pyamg) is needed only here too
+if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('pyamg') is None)"; then
+  echo "== make bench: installing pyamg 5.4.1 (the AMG of tools/bench_amg.py)"
+  $PYTHON -m pip install --quiet pyamg==5.4.1
+fi
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver ordering stability scaling scaling_elastic work_precision adapt peer peer_opensees deck katona; do
+for part in solver ordering stability scaling scaling_elastic amg work_precision adapt peer peer_opensees deck katona; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

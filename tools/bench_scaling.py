@@ -274,9 +274,10 @@ def fragment(rows, p, q, wall, quick):
               f"as N^{g:.2f} (the iterations grow too), the rest of the increment as "
               f"N^{h:.2f}. The exponent of the whole increment rises towards the "
               "factorisation's as it takes over: a time per increment growing as N^1.25 or "
-              "less up to 1e6 "
-              "equations would need a linear solver whose cost grows more slowly than a "
-              "sparse factorisation's (an iterative one)."]
+              "less up to 1e6 equations would need a linear solver whose cost grows more "
+              "slowly than a sparse factorisation's, and Newton iterations that do not grow. "
+              "Whether an iterative solver's would, on this footing's own tangents, is "
+              "measured in the section on AMG-preconditioned CG below."]
     L += ["", "Shares are of the increment time (median run); the law updates are the stress "
           "integration at the Gauss points (the part of the residual timer inside the material "
           "updates).", "", "![scaling](scaling.png)", ""]
@@ -361,15 +362,18 @@ def render():
     b = re.search(r"BLAS threads (\d+)\.", old)
     if b:
         os.environ["OPENBLAS_NUM_THREADS"] = b.group(1)
-    finish(rows, float(m.group(1)) if m else float("nan"), False)
+    finish(rows, float(m.group(1)) if m else float("nan"), False, rewrite_csv=False)
 
 
-def finish(rows, wall, quick):
+def finish(rows, wall, quick, rewrite_csv=True):
+    """CSV (unless rendering from it: its rows keep their own commit and date), figure and
+    fragment."""
     ok = [r for r in rows if r[3] == "completed"]
     nan = (float("nan"), float("nan"))
     p, a_ = fit_exponent([r[2] for r in ok], [r[TPI] for r in ok]) if len(ok) >= 2 else nan
     q, _ = fit_exponent([r[2] for r in ok], [r[TPI + 1] for r in ok]) if len(ok) >= 2 else nan
-    write_csv(BENCH_DIR / "scaling.csv", HEADER, rows)
+    if rewrite_csv:
+        write_csv(BENCH_DIR / "scaling.csv", HEADER, rows)
     plot(rows, p, a_, BENCH_DIR / "scaling.png")
     write_fragment("scaling", fragment(rows, p, q, wall, quick))
     print(f"scaling: exponent per increment {p:.3f}, per iteration {q:.3f}, {wall:.1f} s")

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Collects the benchmark fragments doc/bench/*.md (written by tools/bench_*.py through
 bench_common.write_fragment) into doc/bench/README.md, in a fixed order (stability, scaling,
-scaling_elastic, work_precision, advice, peer, peer_opensees, then the others alphabetically), under a header with the commit,
-machine and date (bench_common.provenance) and, if given, the wall time of the whole suite.
+scaling_elastic, amg, work_precision, advice, peer, peer_opensees, then the others
+alphabetically), under a header with the commit, machine and date (bench_common.provenance)
+and, if given, the wall time of the whole suite.
 
     python3 tools/bench_summary.py [--wall SECONDS] [--dir doc/bench] [--keep-header]
 """
@@ -13,7 +14,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_common import BENCH_DIR, provenance  # noqa: E402
 
-ORDER = ("stability", "scaling", "scaling_elastic", "work_precision", "advice", "peer", "peer_opensees")
+ORDER = ("stability", "scaling", "scaling_elastic", "amg", "work_precision", "advice", "peer", "peer_opensees")
 OUTPUT = "README.md"
 
 

@@ -267,3 +267,17 @@ def test_summary_lists_the_run_of_each_section(tmp_path):
     assert "- peer: commit `abc1234`, `def5678`, 2026-01-01T10:00:00Z – 2026-01-02T11:00:00Z" in text
     assert "- notes:" not in text
     assert text.index("- scaling: commit") < text.index("## scaling")
+
+
+def test_scaling_render_keeps_the_csv_rows_and_their_provenance(tmp_path, monkeypatch):
+    # --render rewrites the fragment and figure from the CSV; the CSV's rows keep the commit
+    # and date of the run that measured them (it rewrote them with the current commit)
+    import shutil
+    for name in ("scaling.csv", "scaling.md"):
+        shutil.copy(ROOT / "doc" / "bench" / name, tmp_path / name)
+    before = (tmp_path / "scaling.csv").read_bytes()
+    monkeypatch.setattr(bench_scaling, "BENCH_DIR", tmp_path)
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "1")
+    bench_scaling.render()
+    assert (tmp_path / "scaling.csv").read_bytes() == before
+    assert "Time per increment grows as N^" in (tmp_path / "scaling.md").read_text()
