@@ -26,10 +26,12 @@ from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_frag
 
 COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
            "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",
-           "peak_mb", "nnz_L"]
+           "peak_mb", "nnz_L", "run_user_s", "run_sys_s", "bare_user_s", "bare_sys_s"]
 # per row: thread setting, repeats, load average and the spread of the timed columns
 EXTRA = ["threads", "repeats", "load1", "total_min_s", "total_max_s", "bare_min_s",
-         "bare_max_s", "ratio_min", "ratio_max"]
+         "bare_max_s", "ratio_min", "ratio_max", "run_user_min_s", "run_user_max_s",
+         "run_sys_min_s", "run_sys_max_s", "bare_sys_min_s", "bare_sys_max_s"]
+SPREAD = ("total_s", "bare_cholmod_s", "ratio", "run_user_s", "run_sys_s", "bare_sys_s")
 REPEATS = 3
 THREADS = (1, 2)
 
@@ -41,9 +43,7 @@ def median_row(runs, threads, load):
     for k in range(3, len(COLUMNS)):
         row.append(statistics.median(r[k] for r in runs))
     col = {c: [r[i] for r in runs] for i, c in enumerate(COLUMNS)}
-    return row + [threads, len(runs), load, min(col["total_s"]), max(col["total_s"]),
-                  min(col["bare_cholmod_s"]), max(col["bare_cholmod_s"]), min(col["ratio"]),
-                  max(col["ratio"])]
+    return row + [threads, len(runs), load] + [f(col[c]) for c in SPREAD for f in (min, max)]
 
 
 def laws():
@@ -132,6 +132,36 @@ def overhead_lines(rows):
     return md
 
 
+def cpu_lines(rows):
+    """User and system CPU times of the 1e6 rows (median [min-max]): the system time is the
+    kernel's work for the process (page faults on fresh memory, file writes). Rows of CSVs
+    written before these columns (nan) are left out."""
+    md = []
+    steady = True
+    for r in rows:
+        d = dict(zip(COLUMNS + EXTRA, r))
+        if d["equations"] <= 5e5 or not d["run_sys_s"] == d["run_sys_s"]:
+            continue
+        md.append(f"- {d['element']} at 1e6, {int(d['threads'])} thread(s): the run "
+                  f"user {d['run_user_s']:.2f} [{d['run_user_min_s']:.2f}-"
+                  f"{d['run_user_max_s']:.2f}], system {d['run_sys_s']:.2f} "
+                  f"[{d['run_sys_min_s']:.2f}-{d['run_sys_max_s']:.2f}]; the bare user "
+                  f"{d['bare_user_s']:.2f}, system {d['bare_sys_s']:.2f} "
+                  f"[{d['bare_sys_min_s']:.2f}-{d['bare_sys_max_s']:.2f}].")
+        steady = steady and (d["run_user_max_s"] - d["run_user_min_s"]
+                             < d["run_sys_max_s"] - d["run_sys_min_s"])
+    if md:
+        md[:0] = ["", "CPU time of the run and of the bare solve (s, median [min-max]; system "
+                  "time = the kernel's work for the process: page faults on fresh memory, "
+                  "file writes):"]
+        if steady:
+            md.append("In every 1e6 row the run's user time varies less than its system "
+                      "time: the run-to-run spread comes from the kernel's handling of "
+                      "memory and files on this machine more than from the program's own "
+                      "work.")
+    return md
+
+
 def solver_fragment(rows):
     md = ["## Program overhead against a bare CHOLMOD solve", "",
           "Elastic plane-strain squares, one process per case. `total` is the whole program "
@@ -162,6 +192,7 @@ def solver_fragment(rows):
                       f"thread(s): {d['ratio']:.2f} [{d['ratio_min']:.2f}-{d['ratio_max']:.2f}]"
                       f", {'met' if d['ratio'] <= 1.2 else 'not met'} on this run.")
     md += overhead_lines(rows)
+    md += cpu_lines(rows)
     if any(dict(zip(COLUMNS + EXTRA, r))["threads"] > 1 for r in rows):
         md += ["", "With more than one thread the ratio is less reliable: CHOLMOD 3 asks for "
                "a fixed team of 4 threads, which the program caps through OpenMP's dynamic "
@@ -175,6 +206,21 @@ def solver_fragment(rows):
     return "\n".join(md)
 
 
+def read_rows(path):
+    """The rows of a solver.csv in COLUMNS + EXTRA order; columns that a CSV written by an
+    earlier version lacks are nan."""
+    import csv
+    with open(path) as f:
+        recs = list(csv.DictReader(f))
+    rows = []
+    for r in recs:
+        row = [r["element"], int(r["n"]), int(r["equations"])]
+        row += [float(r.get(c) or "nan") for c in (COLUMNS + EXTRA)[3:]]
+        row[len(COLUMNS)] = int(row[len(COLUMNS)])  # threads
+        rows.append(row)
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="skip the 1e6-equation cases")
@@ -185,14 +231,7 @@ def main():
                     help="only write the solver fragment again from doc/bench/solver.csv")
     a = ap.parse_args()
     if a.render:
-        import csv
-        with open(BENCH_DIR / "solver.csv") as f:
-            recs = list(csv.reader(f))[1:]
-        n = len(COLUMNS + EXTRA)
-        rows = [[r[0], int(r[1]), int(r[2])] + [float(x) for x in r[3:n]] for r in recs]
-        for r in rows:
-            r[len(COLUMNS)] = int(r[len(COLUMNS)])
-        write_fragment("solver", solver_fragment(rows))
+        write_fragment("solver", solver_fragment(read_rows(BENCH_DIR / "solver.csv")))
         return
     if not a.no_laws:
         for v, up, up1, t, lo, hi, _, _ in laws():

@@ -281,3 +281,44 @@ def test_scaling_render_keeps_the_csv_rows_and_their_provenance(tmp_path, monkey
     bench_scaling.render()
     assert (tmp_path / "scaling.csv").read_bytes() == before
     assert "Time per increment grows as N^" in (tmp_path / "scaling.md").read_text()
+
+
+def _solver_row(run_user, run_sys, equations=999698):
+    """A 1e6 solver row (median and [min, max] of the run's user and system times)."""
+    import bench_solver
+    d = {c: 0.0 for c in bench_solver.COLUMNS + bench_solver.EXTRA}
+    d.update(element="Q4", equations=equations, threads=1, run_user_s=run_user[1],
+             run_user_min_s=run_user[0], run_user_max_s=run_user[2], run_sys_s=run_sys[1],
+             run_sys_min_s=run_sys[0], run_sys_max_s=run_sys[2], bare_user_s=3.1,
+             bare_sys_s=1.4, bare_sys_min_s=1.3, bare_sys_max_s=1.5)
+    return [d[c] for c in bench_solver.COLUMNS + bench_solver.EXTRA]
+
+
+def test_solver_cpu_lines_say_where_the_spread_is():
+    import bench_solver
+    # user time steady (4.0-4.1), system time spread (1.4-3.2): the sentence is made
+    lines = bench_solver.cpu_lines([_solver_row((4.0, 4.05, 4.1), (1.4, 2.0, 3.2)),
+                                    _solver_row((0.1, 0.1, 0.1), (0.1, 0.1, 0.1), 99458)])
+    assert "- Q4 at 1e6, 1 thread(s): the run user 4.05 [4.00-4.10], system 2.00 " \
+           "[1.40-3.20]; the bare user 3.10, system 1.40 [1.30-1.50]." in lines
+    assert sum(line.startswith("- Q4") for line in lines) == 1   # the 1e6 row only
+    assert any("varies less than its system time" in line for line in lines)
+    # user time spread wider than system time: no such claim
+    lines = bench_solver.cpu_lines([_solver_row((3.5, 4.0, 4.6), (1.4, 1.5, 1.6))])
+    assert not any("varies less" in line for line in lines)
+
+
+def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
+    # the committed solver.csv may predate the CPU-time columns: they read as nan, and
+    # the fragment has no CPU lines rather than wrong ones
+    import bench_solver
+    import shutil
+    shutil.copy(ROOT / "doc" / "bench" / "solver.csv", tmp_path / "solver.csv")
+    rows = bench_solver.read_rows(tmp_path / "solver.csv")
+    assert rows and all(len(r) == len(bench_solver.COLUMNS + bench_solver.EXTRA) for r in rows)
+    text = bench_solver.solver_fragment(rows)
+    assert "Target total / bare <= 1.2 at 1e6, Q4" in text
+    if all(math.isnan(r[bench_solver.COLUMNS.index("run_sys_s")]) for r in rows):
+        assert "CPU time of the run" not in text
+    else:
+        assert "CPU time of the run" in text
