@@ -292,15 +292,14 @@ contains
          message = message//'warning: '//warning
          call model%warnings%add(warning)
          call results%warnings(model%warnings%lines(), error)
-         if (allocated(error)) then
-            code = command_error(COMMAND, EXIT_INTERNAL, 'cannot write results: '//error%text())
-            return
-         end if
       end if
       failure = results%write_failure()
-      if (len(failure) > 0) message = 'cannot write results: '//failure
-      call results%finish(status, message, error)
+      if (.not. allocated(error)) then
+         if (len(failure) > 0) message = 'cannot write results: '//failure
+         call results%finish(status, message, error)
+      end if
       if (allocated(error)) then
+         ! the warnings or the end of the run could not be written: what was written stays
          call results%free()
          if (len(failure) == 0) failure = error%text()
          code = command_error(COMMAND, EXIT_STOPPED, 'cannot write results: '//failure// &

@@ -321,3 +321,32 @@ def test_checksum_definition():
         s1 = (s1 + int(x)) % check_results.CHECKSUM_P
         s2 = (s2 + s1) % check_results.CHECKSUM_P
     assert check_results.fletcher(w) == s2 * 2**26 + s1
+
+
+def test_failure_to_write_the_end_of_run_warning_keeps_the_increments(exe, tmp_path):
+    """A unit square of E = 1 kPa pulled by 10 kN in 3 increments moves ~9 m: the small-strain
+    warning is found at the end of the run and written into the file then. When that write
+    fails (the hook's 4th write, after the 3 increments), the run ends as a write failure:
+    exit 3 and one error line naming the .tmp file, which keeps the 3 increments with status
+    'running'; the target is not created. (It exited 1, an internal error, with the file left
+    unfinished.)"""
+    deck = tmp_path / "soft.inp"
+    deck.write_text("*UNITS\nkN, m, kPa\n*NODES\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n"
+                    "*ELEMENTS, TYPE=Q4, SET=block\n1, 1, 2, 3, 4\n"
+                    "*MATERIAL, NAME=soft\nE = 1, NU = 0.3\n*SECTION, SET=block, MATERIAL=soft\n"
+                    "*NSET, NAME=base\n1, 2\n*NSET, NAME=top\n3, 4\n*BOUNDARY\nbase, XY\n"
+                    "*LOAD, NAME=pull, TYPE=FORCE\ntop, Y, 5\n*STEP, NAME=pull, INCREMENTS=3\n"
+                    "pull, 1\n")
+    out = tmp_path / "soft.h5"
+    r = run(exe, deck, "-o", out, "--quiet", env={"PECPLAS_TEST_FAIL_WRITE": "4"})
+    assert r.returncode == 3, r.stderr
+    errors = [s for s in r.stderr.splitlines() if s.startswith("pecplas: error:")]
+    assert len(errors) == 1 and "cannot write results" in errors[0], r.stderr
+    assert "small-strain theory no longer holds" in r.stderr
+    assert not out.exists()
+    h5, xmf = temporaries(tmp_path)
+    assert h5.name in errors[0]
+    with h5py.File(h5, "r") as f:
+        assert f.attrs["status"] == "running" and f.attrs["complete"] == 0
+        assert list(f["history/global_increment"][()]) == [1, 2, 3]
+    check_file(h5, xmf, "running")

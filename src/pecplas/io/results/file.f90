@@ -26,7 +26,8 @@
 !> The sidecar is rewritten whole (through a staging file and a rename) at most once a
 !> second and at most 5 % of the time, and at the end: its cost stays linear in the number
 !> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
-!> `write_increment` and every later write fail as a full disk would.
+!> write (`write_increment`, or the warnings found at the end of the run) and every later
+!> write fail as a full disk would.
 module pecplas_io_results_file
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -77,7 +78,8 @@ module pecplas_io_results_file
       !> Fields groups listed in the running .xmf; time of its last write and its cost [s].
       integer :: xmf_count = -1
       real(wp) :: xmf_at = 0.0_wp, xmf_cost = 0.0_wp
-      !> Test hook: writes fail from the fail_at-th write_increment on (0: never).
+      !> Test hook: writes fail from the fail_at-th write on (write_increment, and the
+      !> warnings at the end of the run; 0: never).
       integer :: fail_at = 0, nwrite = 0
       !> The first write error of the file (disk full, permissions), kept for the command layer;
       !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
@@ -371,8 +373,16 @@ contains
          call fatal_error(error, 'results file: warnings written to a file not open')
          return
       end if
+      ! a write like an increment's for the test hook
+      this%nwrite = this%nwrite + 1
+      call test_hook(this, error)
+      if (allocated(error)) then
+         if (.not. allocated(this%failure)) this%failure = error%text()
+         return
+      end if
       ! into the copy that `finish` completes (the published one is never written)
       call write_warnings(this%copies%id('next'), list, error)
+      if (allocated(error) .and. .not. allocated(this%failure)) this%failure = error%text()
    end subroutine results_warnings
 
    !> Root attribute `warnings`: one string per warning, "file:line: warning: text" (an
