@@ -47,7 +47,7 @@ help:
 	@echo "                PNGs in output/s5"
 	@echo "  make s6       scene S6 (pile pull-out, MODJOIN and Mohr-Coulomb, table IV.1 variants),"
 	@echo "                PNGs in output/s6"
-	@echo "  make bench    benchmark suite (tools/bench.sh, ~32 min; ~42 with MPI): overhead vs bare CHOLMOD,"
+	@echo "  make bench    benchmark suite (tools/bench.sh, ~38 min; ~48 with MPI): overhead vs bare CHOLMOD,"
 	@echo "                stability maps, scaling, work-precision + advice, CalculiX and"
 	@echo "                OpenSees side by side; CSV/PNG and README.md in doc/bench/ (BENCH=quick: ~4 min)"
 	@echo "  make docs     rewrite every generated block of the docs from fresh runs: scenes S1-S6"
