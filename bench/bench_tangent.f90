@@ -11,7 +11,7 @@
 !>                    matrix with them, computed here: a reader that rebuilds K from the
 !>                    pattern checks its own layout against k_u
 !>   attributes       factorisations, factorisation_s (the run's factorisation wall time in
-!>                    all, analyses included), status (exit code of the run)
+!>                    all, analyses included)
 program bench_tangent
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F
    use pecplas_kinds, only: wp
@@ -51,7 +51,6 @@ program bench_tangent
          error)
       if (.not. allocated(error)) call h5_attr(f, 'factorisation_s', &
          problem%time%factorisation, error)
-      if (.not. allocated(error)) call h5_attr(f, 'status', code, error)
       if (.not. allocated(error)) call h5_write(f, 'colptr', problem%k%colptr, error)
       if (.not. allocated(error)) call h5_write(f, 'rowind', problem%k%rowind, error)
       if (.not. allocated(error)) call h5_write(f, 'values', problem%k%values, error)

@@ -53,10 +53,13 @@ HEADER = ["soil", "equations", "factorisations", "cholmod_s_per_factorisation",
 
 
 def elastic_deck(path):
-    """The footing deck of `path` with its Drucker-Prager soil made elastic (same E, nu)."""
+    """The footing deck of `path` with its Drucker-Prager soil made elastic (same E, nu);
+    an error when the deck does not hold the material line bench_scaling.make_deck writes."""
     text = path.read_text()
-    text = text.replace("TYPE=DRUCKER_PRAGER", "TYPE=ELASTIC")
-    text = text.replace(", C = 10, PHI = 30, PSI = 30", "")
+    dp = ("TYPE=DRUCKER_PRAGER", ", C = 10, PHI = 30, PSI = 30")
+    if any(text.count(s) != 1 for s in dp):
+        raise RuntimeError(f"{path}: not the scaling bench's Drucker-Prager footing deck")
+    text = text.replace(dp[0], "TYPE=ELASTIC").replace(dp[1], "")
     path.write_text(text)
 
 

@@ -134,3 +134,17 @@ def test_rows_read_back_from_the_csv_give_the_same_fragment(tmp_path, monkeypatc
     back = bench_amg.read_rows(tmp_path / "amg.csv")
     assert back == rows
     assert bench_amg.fragment(back, False) == bench_amg.fragment(rows, False)
+
+
+def test_elastic_deck_turns_the_scaling_footing_elastic(tmp_path):
+    # the contrast rows must really be elastic: the footing deck of the scaling bench with
+    # its Drucker-Prager line made elastic (same E, nu, weight), and any other deck refused
+    import bench_scaling
+    deck = tmp_path / "footing.inp"
+    bench_scaling.make_deck(8, 4, deck)
+    bench_amg.elastic_deck(deck)
+    text = deck.read_text()
+    assert "*MATERIAL, NAME=clay, TYPE=ELASTIC\nE = 2.0e4, NU = 0.3, GAMMA = 18.0\n" in text
+    assert "DRUCKER_PRAGER" not in text and "PHI" not in text
+    with pytest.raises(RuntimeError):
+        bench_amg.elastic_deck(deck)   # already elastic: not the deck it expects
