@@ -2,9 +2,8 @@
 !> in OUT.h5.run.h5) and writes the matrix of the run's last factorisation (for a Newton run:
 !> the consistent tangent of the last iteration) to OUT.h5, so that another linear solver can
 !> be tried on the very matrices the program factorises (tools/bench_amg.py):
-!>   colptr, rowind   0-based CSC pattern (n + 1, nnz), attribute `upper` (1: only the upper
-!>                    triangle is stored, 0: both)
-!>   values           the entries (nnz)
+!>   colptr, rowind,  the matrix (bench_matrix: 0-based CSC, attribute `upper`)
+!>   values
 !>   eq_node, eq_dir  node (1-based) and direction (1 = x, 2 = y) of each equation
 !>   coordinates      (2, nnode) node coordinates
 !>   u_free, k_u      the last displacements on the equations and the product of the stored
@@ -13,14 +12,15 @@
 !>   attributes       factorisations, factorisation_s (the run's factorisation wall time in
 !>                    all, analyses included)
 program bench_tangent
-   use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F
+   use hdf5, only: hid_t, h5fclose_f
    use pecplas_kinds, only: wp
    use pecplas_error, only: error_t
    use pecplas_model, only: model_t
    use pecplas_cli, only: run_deck
    use pecplas_driver_problem, only: problem_t
    use pecplas_driver_residual, only: free_part
-   use pecplas_io_results_h5, only: h5_init, h5_write, h5_attr
+   use pecplas_io_results_h5, only: h5_write, h5_attr
+   use bench_matrix, only: create_matrix_file
    implicit none (type, external)
    character(len=4096) :: arg
    character(len=:), allocatable :: deck, out
@@ -42,25 +42,16 @@ program bench_tangent
    u = free_part(problem, problem%state%u)
    allocate (ku(problem%k%n))
    call problem%k%matvec(u, ku)
-   call h5_init(error)
-   if (.not. allocated(error)) then
-      call h5fcreate_f(out, H5F_ACC_TRUNC_F, f, err)
-      if (err /= 0) error stop 'cannot create the output file'
-      call h5_attr(f, 'upper', merge(1, 0, problem%k%upper), error)
-      if (.not. allocated(error)) call h5_attr(f, 'factorisations', problem%factorisations, &
-         error)
-      if (.not. allocated(error)) call h5_attr(f, 'factorisation_s', &
-         problem%time%factorisation, error)
-      if (.not. allocated(error)) call h5_write(f, 'colptr', problem%k%colptr, error)
-      if (.not. allocated(error)) call h5_write(f, 'rowind', problem%k%rowind, error)
-      if (.not. allocated(error)) call h5_write(f, 'values', problem%k%values, error)
-      if (.not. allocated(error)) call h5_write(f, 'eq_node', problem%dofs%eq_node, error)
-      if (.not. allocated(error)) call h5_write(f, 'eq_dir', problem%dofs%eq_dir, error)
-      if (.not. allocated(error)) call h5_write(f, 'coordinates', model%mesh%x, error)
-      if (.not. allocated(error)) call h5_write(f, 'u_free', u, error)
-      if (.not. allocated(error)) call h5_write(f, 'k_u', ku, error)
-      call h5fclose_f(f, err)
-   end if
+   call create_matrix_file(out, problem%k, f, error)
+   if (.not. allocated(error)) call h5_attr(f, 'factorisations', problem%factorisations, error)
+   if (.not. allocated(error)) call h5_attr(f, 'factorisation_s', problem%time%factorisation, &
+      error)
+   if (.not. allocated(error)) call h5_write(f, 'eq_node', problem%dofs%eq_node, error)
+   if (.not. allocated(error)) call h5_write(f, 'eq_dir', problem%dofs%eq_dir, error)
+   if (.not. allocated(error)) call h5_write(f, 'coordinates', model%mesh%x, error)
+   if (.not. allocated(error)) call h5_write(f, 'u_free', u, error)
+   if (.not. allocated(error)) call h5_write(f, 'k_u', ku, error)
+   call h5fclose_f(f, err)
    if (allocated(error)) then
       write (0, '(a)') 'pecplas-bench-tangent: '//error%text()
       error stop 1

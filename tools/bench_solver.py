@@ -4,8 +4,9 @@
 1. pecplas-bench-laws: MODJOIN updates per second (one law call incl. tangent) and the wall
    time of an 8000-step CNL path, single core.
 2. pecplas-bench: elastic plane-strain squares (Q4, Q8) at about 1e4, 1e5 (and 1e6 in full
-   mode) equations, one process per case: phase times of the whole program and a bare
-   CHOLMOD analyse + factorise + solve of the SAME matrix in the same process; the ratio
+   mode) equations, one process per case: phase times of the whole program; then
+   pecplas-bench-bare, in a process of its own, a bare CHOLMOD analyse + factorise + solve
+   of the SAME matrix (written by the run to an HDF5 file, read untimed); the ratio
    total / bare is the price of everything that is not the sparse factorisation. Both run
    under the same thread setting (OMP_NUM_THREADS: OpenMP, CHOLMOD's team and the BLAS, see
    doc/deck.md *SOLVER THREADS=), 1 and 2 threads; each case is run REPEATS times and reported
@@ -81,8 +82,34 @@ def laws():
     return rows
 
 
+def checked_fields(r, what, count):
+    """The fields of the one output line of a benchmark program; an error if it failed."""
+    f = r["stdout"].split()
+    if r["rc"] != 0 or len(f) < count:
+        raise RuntimeError(f"{what} failed:\n{r['stdout']}{r['stderr']}")
+    return f
+
+
+def one_case(exe, bare, el, n, tmp):
+    """One run of pecplas-bench and then, in a process of its own, the bare CHOLMOD solve
+    of the matrix it assembled (after its results file is written back to the disk, so
+    that the kernel's write-back does not slow the bare down): a row in COLUMNS order."""
+    f = checked_fields(run_timed([exe, el, n, tmp]), f"pecplas-bench {el} {n}", 13)
+    os.sync()
+    g = checked_fields(run_timed([bare, os.path.join(tmp, f"square_{el}_{n}.matrix.h5")]),
+                       f"pecplas-bench-bare {el} {n}", 8)
+    run = dict(zip(["read_setup_s", "assembly_s", "factorisation_s", "solve_s", "residual_s",
+                    "output_s", "total_s", "peak_mb", "run_user_s", "run_sys_s"],
+                   map(float, f[3:13])))
+    run.update(bare_cholmod_s=float(g[3]), nnz_L=float(g[4]), bare_user_s=float(g[6]),
+               bare_sys_s=float(g[7]))
+    run["ratio"] = run["total_s"] / run["bare_cholmod_s"]
+    return [f[0], int(f[1]), int(f[2])] + [run[c] for c in COLUMNS[3:]]
+
+
 def solver(quick, threads_list=THREADS):
     exe = executable("pecplas-bench")
+    bare = executable("pecplas-bench-bare")
     cases = [("Q4", 70), ("Q8", 41), ("Q4", 223), ("Q8", 129)]
     if not quick:
         cases += [("Q4", 707), ("Q8", 408)]
@@ -94,13 +121,7 @@ def solver(quick, threads_list=THREADS):
                 load = load1()
                 runs = []
                 for _ in range(REPEATS):
-                    r = run_timed([exe, el, n, tmp])
-                    f = r["stdout"].split()
-                    if r["rc"] != 0 or len(f) < len(COLUMNS):
-                        raise RuntimeError(f"pecplas-bench {el} {n} failed:\n{r['stdout']}"
-                                           f"{r['stderr']}")
-                    runs.append([f[0], int(f[1]), int(f[2])] +
-                                [float(x) for x in f[3:len(COLUMNS)]])
+                    runs.append(one_case(exe, bare, el, n, tmp))
                 rows.append(median_row(runs, threads, load))
                 print(" ".join(str(x) for x in rows[-1]), flush=True)
     write_csv(BENCH_DIR / "solver.csv", COLUMNS + EXTRA, rows)
@@ -167,8 +188,10 @@ def solver_fragment(rows):
           "Elastic plane-strain squares, one process per case. `total` is the whole program "
           "(read + setup, assembly incl. the CSC pattern, factorisation incl. analysis, solve, "
           "residual, HDF5 output); `bare` is CHOLMOD analyse + factorise + solve of the same "
-          "matrix in the same process, after the results file is written back to the disk "
-          "(sync), under the same thread setting (OMP_NUM_THREADS = "
+          "matrix (same ordering rule) in a process of its own, `pecplas-bench-bare`, which "
+          "reads the matrix the run assembled from a file (not timed), after the run's "
+          "results file is written back to the disk (sync), under the same thread setting "
+          "(OMP_NUM_THREADS = "
           "threads). Times in seconds (wall), median of " + str(REPEATS) + " runs, spread "
           "min-max; load = 1-minute load average when the case started.", "",
           "| element | equations | threads | load | read+setup | assembly | factorisation "

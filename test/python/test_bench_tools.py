@@ -322,3 +322,36 @@ def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
         assert "CPU time of the run" not in text
     else:
         assert "CPU time of the run" in text
+
+
+def test_solver_case_maps_the_two_programs_lines_to_the_columns(monkeypatch, tmp_path):
+    # the run's line (pecplas-bench) and the bare's line (pecplas-bench-bare, a process of
+    # its own) as the programs print them; each number must land in its own column and the
+    # ratio be total / bare
+    import bench_solver
+    lines = {"bench": " Q4      707    999698    0.540    0.510    3.738    0.232    0.133    0.199"
+                      "    5.775   1792.8    4.080    1.700\n",
+             "bare": "    0.700    2.850    0.244    3.794  1.05E+08   1200.0    3.050    0.750\n"}
+    calls = []
+
+    def fake_run(cmd, **kw):
+        calls.append(cmd)
+        return {"rc": 0, "stdout": lines["bare" if "bare" in cmd[0] else "bench"],
+                "stderr": ""}
+    monkeypatch.setattr(bench_solver, "run_timed", fake_run)
+    monkeypatch.setattr(bench_solver.os, "sync", lambda: None)
+    row = bench_solver.one_case("pecplas-bench", "pecplas-bench-bare", "Q4", 707, str(tmp_path))
+    d = dict(zip(bench_solver.COLUMNS, row))
+    assert (d["element"], d["n"], d["equations"]) == ("Q4", 707, 999698)
+    assert (d["read_setup_s"], d["output_s"], d["total_s"], d["peak_mb"]) == \
+        (0.54, 0.199, 5.775, 1792.8)
+    assert (d["run_user_s"], d["run_sys_s"], d["bare_user_s"], d["bare_sys_s"]) == \
+        (4.08, 1.7, 3.05, 0.75)
+    assert d["bare_cholmod_s"] == 3.794 and d["nnz_L"] == 1.05e8
+    assert d["ratio"] == pytest.approx(5.775 / 3.794, rel=1e-12)
+    # the bare reads the matrix file the run wrote
+    assert calls[1][1] == str(tmp_path / "square_Q4_707.matrix.h5")
+    # a failed program is an error, not a row
+    lines["bare"] = "\n"
+    with pytest.raises(RuntimeError, match="pecplas-bench-bare Q4 707 failed"):
+        bench_solver.one_case("pecplas-bench", "pecplas-bench-bare", "Q4", 707, str(tmp_path))
