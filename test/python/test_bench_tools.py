@@ -309,19 +309,28 @@ def test_solver_cpu_lines_say_where_the_spread_is():
 
 
 def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
-    # the committed solver.csv may predate the CPU-time columns: they read as nan, and
-    # the fragment has no CPU lines rather than wrong ones
+    # a solver.csv written before the CPU-time columns (its header as the earlier
+    # bench_solver wrote it): they read as nan, and the fragment has no CPU lines rather
+    # than wrong ones; the committed CSV, with them, renders them
     import bench_solver
-    import shutil
-    shutil.copy(ROOT / "doc" / "bench" / "solver.csv", tmp_path / "solver.csv")
+    cpu = {"run_user_s", "run_sys_s", "bare_user_s", "bare_sys_s", "run_user_min_s",
+           "run_user_max_s", "run_sys_min_s", "run_sys_max_s", "bare_sys_min_s",
+           "bare_sys_max_s"}
+    names = bench_solver.COLUMNS + bench_solver.EXTRA
+    old = [c for c in names if c not in cpu]
+    row = dict(zip(names, _solver_row((4.0, 4.05, 4.1), (1.4, 2.0, 3.2))), n=707)
+    with open(tmp_path / "solver.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(old + ["commit", "machine", "date"])
+        w.writerow([row[c] for c in old] + ["abc1234", "vm", "2026-11-24T00:00:00Z"])
     rows = bench_solver.read_rows(tmp_path / "solver.csv")
-    assert rows and all(len(r) == len(bench_solver.COLUMNS + bench_solver.EXTRA) for r in rows)
+    assert len(rows) == 1 and len(rows[0]) == len(names)
+    assert math.isnan(rows[0][names.index("run_sys_s")])
     text = bench_solver.solver_fragment(rows)
     assert "Target total / bare <= 1.2 at 1e6, Q4" in text
-    if all(math.isnan(r[bench_solver.COLUMNS.index("run_sys_s")]) for r in rows):
-        assert "CPU time of the run" not in text
-    else:
-        assert "CPU time of the run" in text
+    assert "CPU time of the run" not in text
+    committed = bench_solver.read_rows(ROOT / "doc" / "bench" / "solver.csv")
+    assert "CPU time of the run" in bench_solver.solver_fragment(committed)
 
 
 def test_solver_case_maps_the_two_programs_lines_to_the_columns(monkeypatch, tmp_path):
