@@ -2,7 +2,7 @@
 !> in a process of its own: reads the matrix a run assembled (bench_matrix; not timed), then
 !> analyse + factorise + one solve through the program's CHOLMOD calls (same ordering rule,
 !> no checks) and prints one line: analyse, factorise, solve and their sum [s, wall],
-!> nnz(L), peak memory [MB], user and system CPU times of the three calls [s].
+!> nnz(L), user and system CPU times of the three calls [s].
 program bench_bare
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int
    use pecplas_kinds, only: wp
@@ -13,7 +13,7 @@ program bench_bare
       pecplas_cholmod_analyse, pecplas_cholmod_factorise, pecplas_cholmod_solve, &
       pecplas_cholmod_lnz
    use bench_matrix, only: read_matrix_file
-   use bench_process, only: cpu_times, peak_memory_mb
+   use bench_process, only: cpu_times
    implicit none (type, external)
    character(len=4096) :: arg
    type(csc_t) :: k
@@ -48,6 +48,5 @@ program bench_bare
    cpu1 = cpu_times()
    lnz = pecplas_cholmod_lnz(h)
    call pecplas_cholmod_delete(h)
-   write (*, '(4f9.3,es10.2,f9.1,2f9.3)') t_an, t_fa, t_so, t_an + t_fa + t_so, lnz, &
-      peak_memory_mb(), cpu1 - cpu0
+   write (*, '(4f9.3,es10.2,2f9.3)') t_an, t_fa, t_so, t_an + t_fa + t_so, lnz, cpu1 - cpu0
 end program bench_bare

@@ -133,12 +133,13 @@ def amg_cg(a, b_modes, tolerances=TOLERANCES):
 
 
 def fit(n, y):
-    """Exponent p of y ~ a N^p (least squares on log-log); nan with fewer than 2 points."""
+    """Exponent p of y ~ a N^p (bench_scaling.fit_exponent) over the positive, finite
+    values; nan with fewer than 2 of them."""
     n, y = np.asarray(n, float), np.asarray(y, float)
     keep = (n > 0) & (y > 0) & np.isfinite(y)
     if keep.sum() < 2:
         return float("nan")
-    return float(np.polyfit(np.log(n[keep]), np.log(y[keep]), 1)[0])
+    return float(bench_scaling.fit_exponent(n[keep], y[keep])[0])
 
 
 def rows_of(rows, soil):

@@ -340,7 +340,7 @@ def test_solver_case_maps_the_two_programs_lines_to_the_columns(monkeypatch, tmp
     import bench_solver
     lines = {"bench": " Q4      707    999698    0.540    0.510    3.738    0.232    0.133    0.199"
                       "    5.775   1792.8    4.080    1.700\n",
-             "bare": "    0.700    2.850    0.244    3.794  1.05E+08   1200.0    3.050    0.750\n"}
+             "bare": "    0.700    2.850    0.244    3.794  1.05E+08    3.050    0.750\n"}
     calls = []
 
     def fake_run(cmd, **kw):

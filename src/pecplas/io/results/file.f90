@@ -373,16 +373,10 @@ contains
          call fatal_error(error, 'results file: warnings written to a file not open')
          return
       end if
-      ! a write like an increment's for the test hook
-      this%nwrite = this%nwrite + 1
-      call test_hook(this, error)
-      if (allocated(error)) then
-         if (.not. allocated(this%failure)) this%failure = error%text()
-         return
-      end if
+      call start_write(this, error)
       ! into the copy that `finish` completes (the published one is never written)
-      call write_warnings(this%copies%id('next'), list, error)
-      if (allocated(error) .and. .not. allocated(this%failure)) this%failure = error%text()
+      if (.not. allocated(error)) call write_warnings(this%copies%id('next'), list, error)
+      if (allocated(error)) call this%note_failure(error%text())
    end subroutine results_warnings
 
    !> Root attribute `warnings`: one string per warning, "file:line: warning: text" (an
@@ -476,17 +470,16 @@ contains
          call check_joint_fields(inc%joint_fields, this%joints, 'results file: ', error)
          if (allocated(error)) return
       end if
-      this%nwrite = this%nwrite + 1
-      call test_hook(this, error)
+      call start_write(this, error)
       if (.not. allocated(error)) call check_space(this, error)
       if (allocated(error)) then
-         if (.not. allocated(this%failure)) this%failure = error%text()
+         call this%note_failure(error%text())
          return
       end if
       call write_checked(this, inc, last, error, restart)
       if (allocated(error)) then
          this%broken = .true.
-         if (.not. allocated(this%failure)) this%failure = error%text()
+         call this%note_failure(error%text())
       end if
    end subroutine results_write_increment
 
@@ -643,6 +636,15 @@ contains
    end subroutine put_field
 
    !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
+   !> Counts one write (an increment, or the warnings at the end of the run) and fails it
+   !> when the test hook says so.
+   subroutine start_write(this, error)
+      class(results_file_t), intent(inout) :: this
+      type(error_t), allocatable, intent(out) :: error
+      this%nwrite = this%nwrite + 1
+      call test_hook(this, error)
+   end subroutine start_write
+
    subroutine test_hook(this, error)
       class(results_file_t), intent(in) :: this
       type(error_t), allocatable, intent(out) :: error
@@ -763,8 +765,9 @@ contains
       if (allocated(this%failure)) text = this%failure
    end function results_write_failure
 
-   !> Keeps `text` as the file's write failure when it has none: another MPI rank's, which
-   !> writes the file (this rank's copy is detached), so that every rank ends alike.
+   !> Keeps `text` as the file's write failure when it has none: this file's own (the first
+   !> write that failed), or another MPI rank's, which writes the file (this rank's copy is
+   !> detached), so that every rank ends alike.
    subroutine results_note_failure(this, text)
       class(results_file_t), intent(inout) :: this
       character(len=*), intent(in) :: text
