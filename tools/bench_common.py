@@ -123,6 +123,24 @@ def load1():
         return float("nan")
 
 
+def fresh_memory_gbs(mb=256, repeats=3):
+    """How fast the kernel hands out fresh memory right now [GB/s]: the median over
+    `repeats` of the time to fill `mb` MB never touched before (a new allocation of that
+    size is mapped fresh: every page faults and is cleared by the kernel, then written once).
+    A program pays about 1/rate seconds per GB of memory it touches for the first time
+    (arrays, the page cache of the files it writes); on a virtual machine the rate varies
+    with the host's state, which makes it the hidden variable of a run-to-run spread."""
+    n = int(mb) << 20
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        block = b"\x01" * n  # one allocation, filled by memset: the first touch of each page
+        times.append(time.perf_counter() - t0)
+        del block
+    times.sort()
+    return n / times[len(times) // 2] / 1e9
+
+
 def load_range(loads):
     """The 1-minute load averages of a run as text, 'min - max' to one decimal ('x' when they
     round alike); 'unknown' when none is known (nan, empty or missing values are left out)."""

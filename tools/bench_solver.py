@@ -23,7 +23,8 @@ import re
 import statistics
 import tempfile
 
-from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1
+from bench_common import (BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1,
+                          fresh_memory_gbs)
 
 COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
            "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",
@@ -31,20 +32,21 @@ COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisa
 # per row: thread setting, repeats, load average and the spread of the timed columns
 EXTRA = ["threads", "repeats", "load1", "total_min_s", "total_max_s", "bare_min_s",
          "bare_max_s", "ratio_min", "ratio_max", "run_user_min_s", "run_user_max_s",
-         "run_sys_min_s", "run_sys_max_s", "bare_sys_min_s", "bare_sys_max_s"]
+         "run_sys_min_s", "run_sys_max_s", "bare_sys_min_s", "bare_sys_max_s", "fresh_gbs"]
 SPREAD = ("total_s", "bare_cholmod_s", "ratio", "run_user_s", "run_sys_s", "bare_sys_s")
 REPEATS = 3
 THREADS = (1, 2)
 
 
-def median_row(runs, threads, load):
+def median_row(runs, threads, load, fresh):
     """Median of each timed column over the repeated runs, with the spread of total, bare
-    and ratio."""
+    and ratio; load and fresh (fresh_memory_gbs) describe the machine when the case started."""
     row = list(runs[0][:3])
     for k in range(3, len(COLUMNS)):
         row.append(statistics.median(r[k] for r in runs))
     col = {c: [r[i] for r in runs] for i, c in enumerate(COLUMNS)}
-    return row + [threads, len(runs), load] + [f(col[c]) for c in SPREAD for f in (min, max)]
+    return (row + [threads, len(runs), load] + [f(col[c]) for c in SPREAD for f in (min, max)]
+            + [fresh])
 
 
 def laws():
@@ -118,11 +120,11 @@ def solver(quick, threads_list=THREADS):
         for threads in threads_list:
             os.environ["OMP_NUM_THREADS"] = str(threads)
             for el, n in cases:
-                load = load1()
+                load, fresh = load1(), fresh_memory_gbs()
                 runs = []
                 for _ in range(REPEATS):
                     runs.append(one_case(exe, bare, el, n, tmp))
-                rows.append(median_row(runs, threads, load))
+                rows.append(median_row(runs, threads, load, fresh))
                 print(" ".join(str(x) for x in rows[-1]), flush=True)
     write_csv(BENCH_DIR / "solver.csv", COLUMNS + EXTRA, rows)
     write_fragment("solver", solver_fragment(rows))
@@ -153,6 +155,22 @@ def overhead_lines(rows):
     return md
 
 
+def split_text(d):
+    """For a 1-thread row: total - bare split into the program's own computing (user time),
+    the kernel's work (system time) and the time on no CPU, each as the run's minus the
+    bare's (medians), and the user-time ratio; empty with more threads, where CPU time is
+    not a part of the wall time."""
+    if d["threads"] != 1:
+        return ""
+    user = d["run_user_s"] - d["bare_user_s"]
+    system = d["run_sys_s"] - d["bare_sys_s"]
+    idle = (d["total_s"] - d["run_user_s"] - d["run_sys_s"]) - \
+        (d["bare_cholmod_s"] - d["bare_user_s"] - d["bare_sys_s"])
+    return (f"; total - bare {d['total_s'] - d['bare_cholmod_s']:.2f} s = user {user:+.2f}, "
+            f"system {system:+.2f}, on no CPU {idle:+.2f}; user time run / bare "
+            f"{d['run_user_s'] / d['bare_user_s']:.2f}")
+
+
 def cpu_lines(rows):
     """User and system CPU times of the 1e6 rows (median [min-max]): the system time is the
     kernel's work for the process (page faults on fresh memory, file writes). Rows of CSVs
@@ -168,7 +186,8 @@ def cpu_lines(rows):
                   f"{d['run_user_max_s']:.2f}], system {d['run_sys_s']:.2f} "
                   f"[{d['run_sys_min_s']:.2f}-{d['run_sys_max_s']:.2f}]; the bare user "
                   f"{d['bare_user_s']:.2f}, system {d['bare_sys_s']:.2f} "
-                  f"[{d['bare_sys_min_s']:.2f}-{d['bare_sys_max_s']:.2f}].")
+                  f"[{d['bare_sys_min_s']:.2f}-{d['bare_sys_max_s']:.2f}]"
+                  + split_text(d) + ".")
         steady = steady and (d["run_user_max_s"] - d["run_user_min_s"]
                              < d["run_sys_max_s"] - d["run_sys_min_s"])
     if md:
@@ -193,13 +212,20 @@ def solver_fragment(rows):
           "results file is written back to the disk (sync), under the same thread setting "
           "(OMP_NUM_THREADS = "
           "threads). Times in seconds (wall), median of " + str(REPEATS) + " runs, spread "
-          "min-max; load = 1-minute load average when the case started.", "",
-          "| element | equations | threads | load | read+setup | assembly | factorisation "
-          "| solve | output | total [min-max] | bare CHOLMOD [min-max] | ratio [min-max] "
-          "| peak MB |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "min-max; load = 1-minute load average when the case started; fresh = how fast "
+          "the kernel handed out fresh memory when the case started (GB/s, a 256 MB block "
+          "filled for the first time, median of 3: every first touch of a page costs a page "
+          "fault; a run pays about 1/fresh seconds per GB it touches first, the bare "
+          "likewise).", "",
+          "| element | equations | threads | load | fresh GB/s | read+setup | assembly "
+          "| factorisation | solve | output | total [min-max] | bare CHOLMOD [min-max] "
+          "| ratio [min-max] | peak MB |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         d = dict(zip(COLUMNS + EXTRA, r))
+        fresh = f"{d['fresh_gbs']:.2f}" if d["fresh_gbs"] == d["fresh_gbs"] else "-"
         md.append(f"| {d['element']} | {d['equations']} | {d['threads']} | {d['load1']:.1f} | "
+                  f"{fresh} | "
                   f"{d['read_setup_s']:.3f} | {d['assembly_s']:.3f} | "
                   f"{d['factorisation_s']:.3f} | {d['solve_s']:.3f} | {d['output_s']:.3f} | "
                   f"{d['total_s']:.3f} [{d['total_min_s']:.3f}-{d['total_max_s']:.3f}] | "

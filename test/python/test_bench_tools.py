@@ -3,6 +3,7 @@ benchmark is run here."""
 
 import csv
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -299,13 +300,40 @@ def test_solver_cpu_lines_say_where_the_spread_is():
     # user time steady (4.0-4.1), system time spread (1.4-3.2): the sentence is made
     lines = bench_solver.cpu_lines([_solver_row((4.0, 4.05, 4.1), (1.4, 2.0, 3.2)),
                                     _solver_row((0.1, 0.1, 0.1), (0.1, 0.1, 0.1), 99458)])
-    assert "- Q4 at 1e6, 1 thread(s): the run user 4.05 [4.00-4.10], system 2.00 " \
-           "[1.40-3.20]; the bare user 3.10, system 1.40 [1.30-1.50]." in lines
+    assert any(line.startswith(
+        "- Q4 at 1e6, 1 thread(s): the run user 4.05 [4.00-4.10], system 2.00 "
+        "[1.40-3.20]; the bare user 3.10, system 1.40 [1.30-1.50]; total - bare ")
+        for line in lines)
     assert sum(line.startswith("- Q4") for line in lines) == 1   # the 1e6 row only
     assert any("varies less than its system time" in line for line in lines)
     # user time spread wider than system time: no such claim
     lines = bench_solver.cpu_lines([_solver_row((3.5, 4.0, 4.6), (1.4, 1.5, 1.6))])
     assert not any("varies less" in line for line in lines)
+
+
+def test_solver_overhead_split_adds_up_to_total_minus_bare():
+    # one thread: the user, system and no-CPU parts are each the run's minus the bare's, so
+    # they add up to total - bare; the user-time ratio is the run's over the bare's
+    import bench_solver
+    names = bench_solver.COLUMNS + bench_solver.EXTRA
+    d = dict(zip(names, _solver_row((4.0, 4.4, 4.5), (1.0, 2.0, 3.0))))
+    d.update(total_s=7.0, bare_cholmod_s=4.6)   # bare: user 3.1, system 1.4, no CPU 0.1
+    text = bench_solver.split_text(d)
+    assert "total - bare 2.40 s = user +1.30, system +0.60, on no CPU +0.50" in text
+    assert text.endswith("user time run / bare 1.42")
+    parts = [float(x) for x in re.findall(r"[-+]\d+\.\d+", text.split("=")[1])[:3]]
+    assert sum(parts) == pytest.approx(7.0 - 4.6, abs=0.015)
+    # with two threads CPU time is not a part of the wall time: no split
+    d["threads"] = 2
+    assert bench_solver.split_text(d) == ""
+
+
+def test_fresh_memory_rate_is_measured():
+    # a real measurement of this machine (8 MB, fast): positive and finite, and far below
+    # what a memory-less copy could claim (no machine fills fresh pages at 1000 GB/s)
+    import bench_common
+    rate = bench_common.fresh_memory_gbs(mb=8, repeats=3)
+    assert 0.0 < rate < 1000.0
 
 
 def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
@@ -317,7 +345,7 @@ def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
            "run_user_max_s", "run_sys_min_s", "run_sys_max_s", "bare_sys_min_s",
            "bare_sys_max_s"}
     names = bench_solver.COLUMNS + bench_solver.EXTRA
-    old = [c for c in names if c not in cpu]
+    old = [c for c in names if c not in cpu | {"fresh_gbs"}]
     row = dict(zip(names, _solver_row((4.0, 4.05, 4.1), (1.4, 2.0, 3.2))), n=707)
     with open(tmp_path / "solver.csv", "w", newline="") as f:
         w = csv.writer(f)
@@ -329,6 +357,9 @@ def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
     text = bench_solver.solver_fragment(rows)
     assert "Target total / bare <= 1.2 at 1e6, Q4" in text
     assert "CPU time of the run" not in text
+    # nor a fresh-memory rate: its column reads "-"
+    assert math.isnan(rows[0][names.index("fresh_gbs")])
+    assert "| Q4 | 999698 | 1 | 0.0 | - | " in text
     committed = bench_solver.read_rows(ROOT / "doc" / "bench" / "solver.csv")
     assert "CPU time of the run" in bench_solver.solver_fragment(committed)
 
