@@ -24,7 +24,8 @@ def executable(target="pecplas"):
                         "--runner", "echo"], cwd=ROOT, capture_output=True, text=True)
     if r.returncode != 0:
         raise RuntimeError(f"fpm could not build {target}:\n{r.stderr}")
-    return r.stdout.split()[-1]
+    path = Path(r.stdout.split()[-1])
+    return str(path if path.is_absolute() else ROOT / path)  # whatever the caller's cwd
 
 
 def provenance():
