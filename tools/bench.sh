@@ -35,17 +35,21 @@ if ! command -v ccx >/dev/null; then
     exit 1
   fi
 fi
+# pip_need MODULE WHAT PACKAGE...: installs the pinned PACKAGEs when MODULE is missing
+pip_need() {
+  local module=$1 what=$2
+  shift 2
+  if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('$module') is None)"; then
+    echo "== make bench: installing $* ($what)"
+    $PYTHON -m pip install --quiet "$@"
+  fi
+}
 # the second peer (OpenSees): openseespy 3.8.0.0 needs an openseespylinux 3.8 that PyPI lacks,
 # so the 3.7.1.2 pair (wrapper + 58 MB binary wheel) is pinned
-if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('openseespy') is None)"; then
-  echo "== make bench: installing openseespy 3.7.1.2 (the peer of tools/bench_peer_opensees.py)"
-  $PYTHON -m pip install --quiet openseespy==3.7.1.2 openseespylinux==3.7.1.2
-fi
+pip_need openseespy "the peer of tools/bench_peer_opensees.py" \
+  openseespy==3.7.1.2 openseespylinux==3.7.1.2
 # the iterative solver tried on the footing's tangents (pyamg) is needed only here too
-if ! $PYTHON -c "import importlib.util as u, sys; sys.exit(u.find_spec('pyamg') is None)"; then
-  echo "== make bench: installing pyamg 5.4.1 (the AMG of tools/bench_amg.py)"
-  $PYTHON -m pip install --quiet pyamg==5.4.1
-fi
+pip_need pyamg "the AMG of tools/bench_amg.py" pyamg==5.4.1
 mkdir -p doc/bench
 start=$(date +%s)
 for part in solver ordering stability scaling scaling_elastic amg work_precision adapt peer peer_opensees deck katona; do

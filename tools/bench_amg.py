@@ -31,14 +31,15 @@ import tempfile
 import time
 from pathlib import Path
 
-# one thread for the BLAS under numpy and scipy too (set before they load it), as for the
-# program's runs
-os.environ["OMP_NUM_THREADS"] = os.environ["OPENBLAS_NUM_THREADS"] = "1"
-import numpy as np  # noqa: E402
-
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_common import (BENCH_DIR, executable, load1, load_range, one_thread,  # noqa: E402
                           write_csv, write_fragment)
+
+# one thread for the BLAS under numpy and scipy too (set before they load it), as for the
+# program's runs
+one_thread()
+import numpy as np  # noqa: E402
+
 import bench_scaling  # noqa: E402
 
 SIZES = (1e4, 3e4, 1e5, 3e5, 1e6)
@@ -257,7 +258,6 @@ def main():
         write_fragment("amg", fragment(rows, len({r[1] for r in rows}) < len(SIZES)))
         return
     sizes = args.sizes or (QUICK_SIZES if args.quick else SIZES)
-    one_thread()
     exe = executable("pecplas-bench-tangent")
     rows = []
     with tempfile.TemporaryDirectory() as tmp:

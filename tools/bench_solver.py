@@ -173,8 +173,9 @@ def split_text(d):
 
 def cpu_lines(rows):
     """User and system CPU times of the 1e6 rows (median [min-max]): the system time is the
-    kernel's work for the process (page faults on fresh memory, file writes). Rows of CSVs
-    written before these columns (nan) are left out."""
+    kernel's work for the process (page faults on fresh memory, file writes), and for the
+    1-thread rows where total - bare goes (split_text). Rows of CSVs written before these
+    columns (nan) are left out."""
     md = []
     steady = True
     for r in rows:

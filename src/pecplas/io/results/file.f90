@@ -635,7 +635,6 @@ contains
          ', which increment '//itoa(inc%global_increment)//' does not hold')
    end subroutine put_field
 
-   !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
    !> Counts one write (an increment, or the warnings at the end of the run) and fails it
    !> when the test hook says so.
    subroutine start_write(this, error)
@@ -645,6 +644,7 @@ contains
       call test_hook(this, error)
    end subroutine start_write
 
+   !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
    subroutine test_hook(this, error)
       class(results_file_t), intent(in) :: this
       type(error_t), allocatable, intent(out) :: error
