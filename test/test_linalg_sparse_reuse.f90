@@ -9,6 +9,8 @@ module test_linalg_sparse_reuse
    use pecplas_files, only: make_directories
    use pecplas_driver_problem, only: problem_t
    use pecplas_fe_assembly, only: assemble_stiffness
+   use pecplas_driver_stiffness, only: upper_storage
+   use pecplas_linalg_cholmod, only: cholmod_solver_t
    use pecplas_linalg_sparse, only: csc_t, coo_to_csc
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_linalg_threads, only: thread_setting_t, apply_threads, openmp_threads
@@ -31,7 +33,8 @@ contains
                new_unittest('pattern_from_blocks_equals_full', test_pattern), &
                new_unittest('pattern_from_blocks_threads', test_pattern_threads), &
                new_unittest('block_positions_replay', test_block_replay), &
-               new_unittest('pattern_node_groups', test_node_groups)]
+               new_unittest('pattern_node_groups', test_node_groups), &
+               new_unittest('stiffness_storage_by_solver', test_storage)]
    end subroutine collect_linalg_sparse_reuse
 
    !> Fills `b` (after start) with nt pseudo-random triplets of an n x n matrix, many of them
@@ -306,6 +309,9 @@ contains
          call assemble_stiffness(model, p%dofs, p%rules, p%state, .true., fresh, kfull, error)
          if (allocated(error)) return
       end associate
+      call check(error, .not. upper_storage(model) .and. .not. problem%k%upper, &
+         'a run with a non-symmetric tangent (UMFPACK) stores the whole matrix')
+      if (allocated(error)) return
       call check(error, fresh%full == 1 .and. fresh%fast == 0, 'a fresh builder sorts')
       if (allocated(error)) return
       call check(error, same_matrix(problem%k, kfull), 'mapped tangent equals the full conversion')
@@ -314,6 +320,61 @@ contains
          maxval(abs(kel%values - kfull%values)) > 1.0e-6_wp*maxval(abs(kfull%values)), &
          'the tangent differs from the elastic stiffness (the map rewrote the values)')
    end subroutine test_joints
+
+   !> An elastic block (every matrix of the run goes to CHOLMOD) stores only the upper
+   !> triangle of its stiffness: exactly the entries i <= j of the whole matrix assembled
+   !> from the same state, and CHOLMOD, which reads only the upper triangle, gives the same
+   !> solution from either (to 1e-14 relative; the same factor).
+   subroutine test_storage(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(csc_builder_t) :: fresh
+      type(csc_t) :: kfull
+      type(cholmod_solver_t) :: s1, s2
+      real(wp), allocatable :: b(:), x1(:), x2(:)
+      integer :: code, j, p, q, kept
+      call make_directories(DIR)
+      code = run_deck('test/data/decks/good_block_q4.inp', DIR//'/good_block_q4.h5', .true., &
+         model, problem)
+      call check(error, code == 0, 'the elastic block runs')
+      if (allocated(error)) return
+      call check(error, upper_storage(model) .and. problem%k%upper, &
+         'a run whose matrices all go to CHOLMOD stores the upper triangle')
+      if (allocated(error)) return
+      call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .false., &
+         fresh, kfull, error)
+      if (allocated(error)) return
+      call check(error, .not. kfull%upper, 'assembled without `upper`: the whole matrix')
+      if (allocated(error)) return
+      kept = 0
+      do j = 1, kfull%n
+         do p = kfull%colptr(j) + 1, kfull%colptr(j + 1)
+            if (kfull%rowind(p) + 1 > j) cycle
+            kept = kept + 1
+            q = problem%k%locate(kfull%rowind(p) + 1, j)
+            call check(error, q > 0, 'every upper entry of the whole matrix is stored')
+            if (allocated(error)) return
+            call check(error, problem%k%values(q) == kfull%values(p), &
+               'with the same value, to the last bit')
+            if (allocated(error)) return
+         end do
+      end do
+      call check(error, kept == problem%k%nnz() .and. kept < kfull%nnz(), &
+         'and nothing else (fewer entries than the whole matrix)')
+      if (allocated(error)) return
+      b = det_vector(kfull%n, 3)
+      allocate (x1(kfull%n), x2(kfull%n))
+      call s1%analyse(problem%k, error)
+      if (.not. allocated(error)) call s1%factorise(problem%k, error)
+      if (.not. allocated(error)) call s1%solve(b, x1, error)
+      if (.not. allocated(error)) call s2%analyse(kfull, error)
+      if (.not. allocated(error)) call s2%factorise(kfull, error)
+      if (.not. allocated(error)) call s2%solve(b, x2, error)
+      if (allocated(error)) return
+      call check(error, maxval(abs(x1 - x2)) <= 1.0e-14_wp*maxval(abs(x2)), &
+         'CHOLMOD solves the upper triangle and the whole matrix alike')
+   end subroutine test_storage
 
    !> Blocks of a node grid (equations 2k-1, 2k of node k, as the massif assembly numbers
    !> them; some equations fixed, 0) with extra triplets on a few columns, one of them the

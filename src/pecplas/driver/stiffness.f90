@@ -17,7 +17,7 @@ module pecplas_driver_stiffness
    implicit none (type, external)
    private
 
-   public :: factorise_stiffness, factorise_values, linear_solver_name, partitioned
+   public :: factorise_stiffness, factorise_values, linear_solver_name, partitioned, upper_storage
 
 contains
 
@@ -50,6 +50,16 @@ contains
       name = merge('CHOLMOD', 'UMFPACK', symmetric)
    end function linear_solver_name
 
+   !> True when every matrix of the run goes to CHOLMOD (its own stiffness and, for a
+   !> method other than full Newton, the tangent of its fallback): the stiffness is then
+   !> stored as its upper triangle only, all that CHOLMOD reads. Half the memory and half
+   !> the additions of the whole matrix that UMFPACK and MUMPS need.
+   logical function upper_storage(model)
+      type(model_t), intent(in) :: model
+      upper_storage = linear_solver_name(model) == 'CHOLMOD' .and. &
+         linear_solver_name(model, .true.) == 'CHOLMOD'
+   end function upper_storage
+
    !> `tangent`: consistent tangents (full Newton) instead of elastic stiffness;
    !> `tangent_solver`: into the fallback's own solver when the run has one
    !> (problem%separate_tangent), keeping the run's factorisation.
@@ -77,7 +87,7 @@ contains
       problem%k_owner = 0
       if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
-         problem%kbuild, problem%k, error, share_of_run(parts))
+         problem%kbuild, problem%k, error, share_of_run(parts), upper_storage(model))
       if (mumps) call rank_times(problem, wall_time() - t0, c0)
       if (parts) call agree_on_error(error)
       if (allocated(error)) return
@@ -132,7 +142,7 @@ contains
       problem%k_owner = 0
       if (mumps) call cpu_time(c0)
       call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .true., &
-         problem%kbuild, problem%k, error, share_of_run(parts))
+         problem%kbuild, problem%k, error, share_of_run(parts), upper_storage(model))
       if (mumps) call rank_times(problem, wall_time() - t0, c0)
       if (parts) call agree_on_error(error)
       if (allocated(error)) return

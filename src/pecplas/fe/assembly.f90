@@ -34,8 +34,11 @@ contains
    !> chunks and added serially in element order, then the joint blocks, so k is that of
    !> the serial triplet sequence summed by coo_to_csc, to the last bit.
    !> `share`: only this rank's elements (pecplas_fe_share), for the ranks of an MPI run
-   !> whose solver adds the parts; default: every element.
-   subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error, share)
+   !> whose solver adds the parts; default: every element. `upper`: only the upper triangle
+   !> is stored (a symmetric matrix for CHOLMOD, which reads no more: half the memory and
+   !> half the additions); default: the whole matrix.
+   subroutine assemble_stiffness(model, dofs, rules, state, tangent, builder, k, error, share, &
+      upper)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(in) :: dofs
       type(massif_rule_t), intent(in) :: rules(:)
@@ -45,6 +48,7 @@ contains
       type(csc_t), intent(inout) :: k
       type(error_t), allocatable, intent(out) :: error
       type(share_t), intent(in), optional :: share
+      logical, intent(in), optional :: upper
       type(error_t), allocatable :: joint_error
       type(share_t) :: part
       integer(ik4), allocatable :: eptr(:), elist(:)
@@ -70,7 +74,7 @@ contains
          end do
       end do
       ! the joint blocks as triplets (few); a failure is reported after the massif's own
-      call builder%start(dofs%neq, 16)
+      call builder%start(dofs%neq, 16, upper)
       call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, joint_error, part)
       if (allocated(joint_error)) builder%coo%nnz = 0
       call builder%pattern(eptr, elist, k, error)
