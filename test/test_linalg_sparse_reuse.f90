@@ -323,8 +323,9 @@ contains
 
    !> An elastic block (every matrix of the run goes to CHOLMOD) stores only the upper
    !> triangle of its stiffness: exactly the entries i <= j of the whole matrix assembled
-   !> from the same state, and CHOLMOD, which reads only the upper triangle, gives the same
-   !> solution from either (to 1e-14 relative; the same factor).
+   !> from the same state (and recovered from its values by upper_of_whole, as a restart from
+   !> data holding the whole matrix does), and CHOLMOD, which reads only the upper triangle,
+   !> gives the same solution from either (to 1e-14 relative; the same factor).
    subroutine test_storage(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
@@ -363,6 +364,15 @@ contains
       call check(error, kept == problem%k%nnz() .and. kept < kfull%nnz(), &
          'and nothing else (fewer entries than the whole matrix)')
       if (allocated(error)) return
+      ! the values of the whole matrix, as restart data written before this storage hold it
+      call check(error, problem%k%whole_nnz() == kfull%nnz(), &
+         'whole_nnz counts the entries of the whole matrix')
+      if (allocated(error)) return
+      call problem%k%upper_of_whole(kfull%values, x1)
+      call check(error, all(x1 == problem%k%values), &
+         'upper_of_whole takes the upper triangle from the whole matrix, to the last bit')
+      if (allocated(error)) return
+      deallocate (x1)
       b = det_vector(kfull%n, 3)
       allocate (x1(kfull%n), x2(kfull%n))
       call s1%analyse(problem%k, error)

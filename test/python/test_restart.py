@@ -533,6 +533,28 @@ def test_restart_from_a_file_written_before_checksums(tmp_path):
     assert np.max(np.abs(u1 - u2)) <= 1e-12 * np.max(np.abs(u2))
 
 
+def test_restart_from_a_file_with_the_whole_operator(tmp_path):
+    # restart data of a CHOLMOD run written when the stiffness was stored whole (commit
+    # a28947a: 823 values in /restart/operator): the run now stores the upper triangle (434)
+    # and takes it from the whole matrix; refused before ("has 823 values where this deck
+    # needs 434"). The restarted run repeats the uninterrupted one's arithmetic.
+    d = ROOT / "test" / "data" / "restart_earlier" / "footing_q8.inp"
+    old = d.parent / "footing_q8_whole_operator.h5"
+    with h5py.File(old) as f:
+        assert f["restart/operator"].shape == (823,) and f["restart/operators"][0] == 1.0
+    rest, full = tmp_path / "rest.h5", tmp_path / "full.h5"
+    r = run([d.name, "-o", rest, "--restart", old], d.parent)
+    assert r.returncode == 0, r.stderr
+    r = run([d.name, "-o", full], d.parent)
+    assert r.returncode == 0, r.stderr
+    u1, _, rows1, _ = last_fields(rest)
+    u2, _, rows2, _ = last_fields(full)
+    assert rows1 == rows2[3:]
+    assert np.max(np.abs(u1 - u2)) <= 1e-12 * np.max(np.abs(u2))
+    with h5py.File(rest) as a, h5py.File(full) as b:
+        assert list(a["history/iterations"][:]) == list(b["history/iterations"][3:])
+
+
 def test_restart_with_the_deck_named_by_another_path(tmp_path):
     # the deck text holds the path of each file read; a restart compares the text without
     # those paths: the deck given by its absolute path, from another directory, is the same

@@ -14,6 +14,7 @@ module pecplas_driver_restart
    use pecplas_driver_problem, only: problem_t, K_SOLVER, K_TSOLVER
    use pecplas_driver_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
    use pecplas_driver_stiffness, only: factorise_values, partitioned
+   use pecplas_linalg_sparse, only: csc_t
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_signals, only: crash_guard_begin, crash_guard_end
@@ -333,16 +334,34 @@ contains
       if (allocated(error)) return
       if (partitioned(model)) return
       if (ops(1) /= 0.0_wp) then
-         call data%get('operator', problem%k%nnz(), v, error)
+         call get_operator(data, 'operator', problem%k, v, error)
          if (allocated(error)) return
          ! the matrix is augmented when the run's was (a Katona body held by its contacts)
          if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
          call factorise_values(model, problem, v, .false., error)
       else if (ops(2) /= 0.0_wp) then
-         call data%get('tangent_operator', problem%k%nnz(), v, error)
+         call get_operator(data, 'tangent_operator', problem%k, v, error)
          if (.not. allocated(error)) call factorise_values(model, problem, v, .true., error)
       end if
    end subroutine restore_operators
+
+   !> The packed matrix `name` on the run's stiffness pattern k. Where this run stores the
+   !> upper triangle (pecplas_driver_stiffness, upper_storage) and the data hold the whole
+   !> matrix (written by a version that stored it whole), its upper triangle is taken.
+   subroutine get_operator(data, name, k, v, error)
+      type(restart_data_t), intent(in) :: data
+      character(len=*), intent(in) :: name
+      type(csc_t), intent(in) :: k
+      real(wp), allocatable, intent(out) :: v(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: whole(:)
+      if (k%upper .and. data%length(name) == k%whole_nnz() .and. k%whole_nnz() /= k%nnz()) then
+         call data%get(name, k%whole_nnz(), whole, error)
+         if (.not. allocated(error)) call k%upper_of_whole(whole, v)
+      else
+         call data%get(name, k%nnz(), v, error)
+      end if
+   end subroutine get_operator
 
    !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
    pure function restart_names(nsets, njoint) result(names)

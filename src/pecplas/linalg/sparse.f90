@@ -48,6 +48,8 @@ module pecplas_linalg_sparse
       procedure :: diagonal => csc_diagonal
       procedure :: add_block => csc_add_block
       procedure :: is_symmetric => csc_is_symmetric
+      procedure :: whole_nnz => csc_whole_nnz
+      procedure :: upper_of_whole => csc_upper_of_whole
    end type csc_t
 
 contains
@@ -392,5 +394,45 @@ contains
          end do
       end do
    end function csc_is_symmetric
+
+   !> Upper storage with a symmetric pattern: the number of entries of the whole matrix
+   !> (each entry off the diagonal twice); otherwise nnz.
+   pure integer function csc_whole_nnz(this) result(nnz)
+      class(csc_t), intent(in) :: this
+      integer :: j, p
+      nnz = this%nnz()
+      if (.not. this%upper) return
+      do j = 1, this%n
+         do p = this%colptr(j) + 1, this%colptr(j + 1)
+            if (this%rowind(p) + 1 /= j) nnz = nnz + 1
+         end do
+      end do
+   end function csc_whole_nnz
+
+   !> Upper storage: v = its values taken from `whole`, the values (CSC order, rows
+   !> ascending) of the whole matrix of the symmetric pattern, of size whole_nnz(). Whole
+   !> column j holds the rows of column j here first (those up to j), then one row for each
+   !> entry (j, c), c > j, stored here.
+   pure subroutine csc_upper_of_whole(this, whole, v)
+      class(csc_t), intent(in) :: this
+      real(wp), intent(in) :: whole(:)
+      real(wp), allocatable, intent(out) :: v(:)
+      integer, allocatable :: below(:)
+      integer :: j, p, i, w, m
+      allocate (below(this%n), v(this%nnz()))
+      below = 0
+      do j = 1, this%n
+         do p = this%colptr(j) + 1, this%colptr(j + 1)
+            i = this%rowind(p) + 1
+            if (i /= j) below(i) = below(i) + 1
+         end do
+      end do
+      w = 0
+      do j = 1, this%n
+         m = this%colptr(j + 1) - this%colptr(j)
+         v(this%colptr(j) + 1:this%colptr(j + 1)) = whole(w + 1:w + m)
+         w = w + m + below(j)
+      end do
+   end subroutine csc_upper_of_whole
 
 end module pecplas_linalg_sparse
