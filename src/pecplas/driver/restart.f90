@@ -355,8 +355,10 @@ contains
       real(wp), allocatable, intent(out) :: v(:)
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: whole(:)
-      if (k%upper .and. data%length(name) == k%whole_nnz() .and. k%whole_nnz() /= k%nnz()) then
-         call data%get(name, k%whole_nnz(), whole, error)
+      integer :: nw
+      nw = k%whole_nnz()
+      if (k%upper .and. data%length(name) == nw .and. nw /= k%nnz()) then
+         call data%get(name, nw, whole, error)
          if (.not. allocated(error)) call k%upper_of_whole(whole, v)
       else
          call data%get(name, k%nnz(), v, error)
