@@ -46,6 +46,7 @@ program bench_bare
    rc = pecplas_cholmod_solve(h, int(k%n, c_int), 1_c_int, b, x)
    t_so = wall_time() - t0
    cpu1 = cpu_times()
+   if (rc /= 0) error stop 'bare CHOLMOD solve failed'
    lnz = pecplas_cholmod_lnz(h)
    call pecplas_cholmod_delete(h)
    write (*, '(4f9.3,es10.2,2f9.3)') t_an, t_fa, t_so, t_an + t_fa + t_so, lnz, cpu1 - cpu0
