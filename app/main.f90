@@ -1,8 +1,8 @@
-!> pecplas DECK [-o FILE.h5] [--quiet] — see pecplas_cli.
+!> pecplas DECK [-o FILE.h5] [--quiet] — see pecplas_cmd_pecplas.
 program main
-   use pecplas_cli, only: pecplas_main
-   use pecplas_command, only: command_arguments
-   use pecplas_parallel, only: parallel_init, parallel_finalize
+   use pecplas_cmd_pecplas, only: pecplas_main
+   use pecplas_cmd_command, only: command_arguments
+   use pecplas_base_parallel, only: parallel_init, parallel_finalize
    implicit none (type, external)
    integer :: code
 

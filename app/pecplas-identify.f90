@@ -1,7 +1,7 @@
-!> pecplas-identify [options] CURVE.csv ... — see pecjoin_identify_cli.
+!> pecplas-identify [options] CURVE.csv ... — see pecplas_cmd_identify.
 program pecplas_identify
-   use pecjoin_identify_cli, only: identify_main
-   use pecplas_command, only: command_arguments
+   use pecplas_cmd_identify, only: identify_main
+   use pecplas_cmd_command, only: command_arguments
    implicit none (type, external)
    integer :: code
 

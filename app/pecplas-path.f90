@@ -1,7 +1,7 @@
-!> pecplas-path DECK [-o BASE] [--quiet] — see pecjoin_path_cli.
+!> pecplas-path DECK [-o BASE] [--quiet] — see pecplas_cmd_path.
 program pecplas_path
-   use pecjoin_path_cli, only: path_main
-   use pecplas_command, only: command_arguments
+   use pecplas_cmd_path, only: path_main
+   use pecplas_cmd_command, only: command_arguments
    implicit none (type, external)
    integer :: code
 

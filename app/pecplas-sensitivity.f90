@@ -1,7 +1,7 @@
-!> pecplas-sensitivity [DECK] [options] — see pecjoin_sensitivity_cli.
+!> pecplas-sensitivity [DECK] [options] — see pecplas_cmd_sensitivity.
 program pecplas_sensitivity
-   use pecjoin_sensitivity_cli, only: sensitivity_main
-   use pecplas_command, only: command_arguments
+   use pecplas_cmd_sensitivity, only: sensitivity_main
+   use pecplas_cmd_command, only: command_arguments
    implicit none (type, external)
    integer :: code
 

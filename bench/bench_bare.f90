@@ -5,10 +5,10 @@
 !> nnz(L), user and system CPU times of the three calls [s].
 program bench_bare
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_linalg_sparse, only: csc_t
-   use pecplas_driver_timers, only: wall_time
+   use pecplas_base_timers, only: wall_time
    use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &
       pecplas_cholmod_analyse, pecplas_cholmod_factorise, pecplas_cholmod_solve, &
       pecplas_cholmod_lnz

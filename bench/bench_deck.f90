@@ -6,14 +6,14 @@
 !> then run through the whole program (elastic, one increment) and the line adds the total
 !> wall time and the share of the keyword read in it.
 program bench_deck
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_cli, only: run_deck
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_timers, only: wall_time
-   use pecplas_files, only: make_directories
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_base_timers, only: wall_time
+   use pecplas_base_files, only: make_directories
    use bench_mesh, only: write_square_msh, write_square_deck, write_square_keywords
    implicit none (type, external)
    character(len=64) :: arg

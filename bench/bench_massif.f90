@@ -9,12 +9,12 @@
 !> One case per process so that the peak resident memory belongs to that case.
 program bench_massif
    use hdf5, only: hid_t, h5fclose_f
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_timers, only: wall_time
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_base_timers, only: wall_time
    use bench_mesh, only: square_case
    use bench_matrix, only: create_matrix_file
    use bench_process, only: cpu_times, peak_memory_mb

@@ -4,7 +4,7 @@
 !> and pecplas-bench-tangent, read by pecplas-bench-bare.
 module bench_matrix
    use hdf5, only: hid_t, h5fcreate_f, H5F_ACC_TRUNC_F
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_error, only: error_t, fatal_error
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_io_results_h5, only: h5_init, h5_write, h5_attr
    use pecplas_io_results_reader, only: results_reader_t

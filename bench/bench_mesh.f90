@@ -1,9 +1,9 @@
 !> Structured square meshes for the benchmarks, written as Gmsh 4.1 files (physical groups
 !> base, top, sides, soil) with a deck that loads the top by a pressure.
 module bench_mesh
-   use pecplas_kinds, only: wp
-   use pecplas_files, only: make_directories
-   use pecplas_strings, only: itoa
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_files, only: make_directories
+   use pecplas_base_strings, only: itoa
    implicit none (type, external)
    private
    public :: write_square_msh, write_square_deck, write_square_keywords, square_case

@@ -12,11 +12,11 @@
 !> NESDIS, M-NODES, RULE, RULE2 (default: all).
 program bench_ordering
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int
-   use pecplas_kinds, only: wp
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_timers, only: wall_time
+   use pecplas_base_kinds, only: wp
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_base_timers, only: wall_time
    use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &
       pecplas_cholmod_analyse, pecplas_cholmod_factorise, pecplas_cholmod_solve, &
       pecplas_cholmod_lnz, pecplas_cholmod_flops, pecplas_cholmod_ordering, &

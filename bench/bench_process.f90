@@ -1,6 +1,6 @@
 !> What the benchmark programs report of their own process (Linux /proc/self).
 module bench_process
-   use pecplas_kinds, only: wp
+   use pecplas_base_kinds, only: wp
    implicit none (type, external)
    private
    public :: cpu_times, peak_memory_mb

@@ -13,12 +13,12 @@
 !>                    all, analyses included)
 program bench_tangent
    use hdf5, only: hid_t, h5fclose_f
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_residual, only: free_part
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_residual, only: free_part
    use pecplas_io_results_h5, only: h5_write, h5_attr
    use bench_matrix, only: create_matrix_file
    implicit none (type, external)

@@ -9,18 +9,18 @@
 !>     state iteration, the pattern kept by writing all rows).
 !> doc/validation.md ("Katona contact") uses it to set the choice of the bordered path.
 program bench_katona
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_mesh_tools, only: orient_edge_sets, check_elements
-   use pecplas_driver_problem, only: problem_t, setup_problem, initialise_stresses
-   use pecplas_driver_stiffness, only: factorise_stiffness
-   use pecplas_driver_timers, only: wall_time
+   use pecplas_problem_type, only: problem_t, setup_problem, initialise_stresses
+   use pecplas_solve_stiffness, only: factorise_stiffness
+   use pecplas_base_timers, only: wall_time
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
    use pecplas_linalg_solver, only: umfpack_solver_t
-   use pecjoin_penalty, only: set_default_penalties
-   use pecjoin_katona_operator, only: build_flexibility, doublet_rows
+   use pecplas_fe_joint_penalty, only: set_default_penalties
+   use pecplas_joints_katona_operator, only: build_flexibility, doublet_rows
    implicit none (type, external)
    character(len=512) :: deck
    type(model_t) :: model

@@ -3,7 +3,7 @@
 !> one line `key v1 v2 ...` to it; otherwise it does nothing. tools/validation_report.py runs
 !> the suites with it set and writes the generated blocks of the docs from the lines.
 module doc_report
-   use pecplas_kinds, only: wp
+   use pecplas_base_kinds, only: wp
    implicit none (type, external)
    private
    public :: report

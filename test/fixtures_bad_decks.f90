@@ -1,9 +1,9 @@
 !> Bad-deck cases shared by the deck-error suites: each case names a deck, the file, line
 !> and keyword its error must name, and up to three words of the message.
 module fixtures_bad_decks
-   use pecplas_error, only: error_t, ERR_INPUT
+   use pecplas_base_error, only: error_t, ERR_INPUT
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_testing, only: check
    implicit none (type, external)
    private

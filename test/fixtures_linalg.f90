@@ -2,8 +2,8 @@
 !> will assemble them (element blocks into a triplet builder): 2D Laplacians, an upwind
 !> convection-diffusion operator and a Q4 plane-strain elastic square.
 module fixtures_linalg
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
    implicit none (type, external)
    private

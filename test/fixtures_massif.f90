@@ -2,8 +2,8 @@
 !> patch mesh, dense assembly, Hooke matrix, and LAPACK (dgesv, dsyev) wrappers with
 !> locally declared interfaces.
 module fixtures_massif
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_massif_materials_elastic, only: elastic_t
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_kinematics, only: massif_rule_t

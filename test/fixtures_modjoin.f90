@@ -2,10 +2,10 @@
 !> "Parameter sets", in kPa and mm: LENGTH_UNIT=MM) built through the factory as a deck
 !> would, optionally with one parameter changed; and paths run by the point driver.
 module fixtures_modjoin
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_path_driver, only: path_result_t, run_path
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_studies_path_driver, only: path_result_t, run_path
    use fixtures_pecjoin, only: make_law
    implicit none (type, external)
    private
@@ -70,7 +70,7 @@ contains
       call make_law(tname, keys, values, law, error)
    end subroutine table_law
 
-   !> Runs `law` on a path (pecjoin_path_driver: control PATH_CNL/CND/CNS) from
+   !> Runs `law` on a path (pecplas_studies_path_driver: control PATH_CNL/CND/CNS) from
    !> (sigma_n0, 0) through `targets` with `steps` increments per segment.
    subroutine run_table_path(law, control, sigma_n0, targets, steps, res, error)
       class(interface_law_t), intent(in) :: law

@@ -2,11 +2,11 @@
 !> the factory (as a deck would), a deterministic random generator, central differences of
 !> `update`, and a monotonic tangential loading at fixed normal displacement.
 module fixtures_pecjoin
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model_params, only: params_t
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_laws_factory, only: law_registry_t, default_law_registry
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_params, only: params_t
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_joints_laws_factory, only: law_registry_t, default_law_registry
    implicit none (type, external)
    private
 

@@ -2,9 +2,9 @@
 !> vectors from principal values and axes, principal values computed independently of the
 !> code under test, central-difference tangents and a mixed stress/strain point driver.
 module fixtures_plasticity
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model_params, only: params_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_params, only: params_t
    use pecplas_massif_materials_type, only: material_t, NCOMP
    use pecplas_massif_materials_mohr_coulomb, only: mohr_coulomb_t, new_mohr_coulomb
    use pecplas_massif_materials_drucker_prager, only: drucker_prager_t, new_drucker_prager

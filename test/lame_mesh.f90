@@ -2,7 +2,7 @@
 !> pressure P) for the verification tests: a quarter ring in plane strain, or an axial slice
 !> r in [A, B], z in [0, H] in axisymmetry with u_z = 0 on both faces (the same solution).
 module lame_mesh
-   use pecplas_kinds, only: wp
+   use pecplas_base_kinds, only: wp
    implicit none (type, external)
    private
 

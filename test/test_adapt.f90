@@ -1,19 +1,19 @@
-!> The adaptive loop (pecplas_driver_adapt) on the L-shaped plate of test/data/adapt (a
+!> The adaptive loop (pecplas_adapt_adapt) on the L-shaped plate of test/data/adapt (a
 !> re-entrant corner, stress singular with exponent 0.544): the adaptive sequence reaches the
 !> energy error of the fourth uniform refinement with at least 3x fewer DOFs (true errors,
 !> against the Aitken extrapolation of the uniform energies); the loop stops once the goal
 !> (tip deflection) is estimated within its target; the Aitken estimate is exact on a
 !> geometric sequence.
 module test_adapt
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_model_refine_local, only: refine_marked
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_estimator, only: error_estimate_t, estimate_error
-   use pecplas_driver_adapt, only: adapt_options_t, adapt_level_t, adapt_model, run_level, &
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
+   use pecplas_adapt_adapt, only: adapt_options_t, adapt_level_t, adapt_model, run_level, &
       goal_extrapolation
    use pecplas_testing, only: unittest_t, new_unittest, check
    use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec, GOAL_ENERGY, &

@@ -1,13 +1,13 @@
-!> The advice mode (`pecplas --advise`, pecplas_driver_advise) in-process, on the strip-footing
+!> The advice mode (`pecplas --advise`, pecplas_advise_advise) in-process, on the strip-footing
 !> example deck (Q8, elastic, a geostatic step before the loading one): the structure of the
 !> advice (levels of the adaptive sequence, reference rows, errors, cost, the cheapest within
 !> each tolerance) and its input errors. Whether the advised configuration really meets its
 !> claim against an independent reference is tested in test/python/test_advise.py.
 module test_advise
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, ERR_INPUT
-   use pecplas_driver_advise, only: advice_t, advise_deck, ADVISE_METHODS, ADVISE_FACTORS, &
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_INPUT
+   use pecplas_advise_advise, only: advice_t, advise_deck, ADVISE_METHODS, ADVISE_FACTORS, &
       ADVISE_TOLERANCES, REF_TARGET
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)

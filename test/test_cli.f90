@@ -2,14 +2,14 @@
 !> no results file after an input error, singular systems named by node and direction, a
 !> stopped run that keeps its converged increments, and an exact oedometer.
 module test_cli
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error, ERR_SINGULAR
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error, ERR_SINGULAR
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_driver_problem, only: problem_t, setup_problem
-   use pecplas_driver_stiffness, only: factorise_stiffness
+   use pecplas_problem_type, only: problem_t, setup_problem
+   use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)

@@ -2,11 +2,11 @@
 !> the line search on 1-D slopes with known roots, the arc-length root choice and the
 !> length adaptation.
 module test_driver_nonlinear
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_driver_bfgs, only: bfgs_t
-   use pecplas_driver_line_search, only: line_search_t
-   use pecplas_driver_arc_length, only: arc_root, adapt_length, arc_predictor_sign
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_solve_bfgs, only: bfgs_t
+   use pecplas_solve_line_search, only: line_search_t
+   use pecplas_solve_arc_length, only: arc_root, adapt_length, arc_predictor_sign
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private

@@ -1,9 +1,9 @@
 !> The large-displacement warning: silent at and below 0.1 times the model size (bounding-box
 !> diagonal), one line above it naming the displacement, the ratio and the reason.
 module test_driver_sanity
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_driver_sanity, only: large_displacement_warning, LARGE_DISPLACEMENT_RATIO
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_solve_sanity, only: large_displacement_warning, LARGE_DISPLACEMENT_RATIO
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private

@@ -3,13 +3,13 @@
 !> element's energy-norm rate (1 for T3/Q4, 2 for T6/Q8), plane strain and axisymmetric;
 !> and a finite estimate after plastic flow.
 module test_estimator
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_estimator, only: error_estimate_t, estimate_error, set_compliance
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_estimate_estimator, only: error_estimate_t, estimate_error, set_compliance
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_massif_kinematics, only: massif_point_t, massif_gauss_point
    use doc_report, only: report

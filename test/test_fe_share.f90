@@ -4,18 +4,18 @@
 !> receives in an MPI run (`make test-mpi` runs whole decks on 2 ranks against the serial
 !> solvers).
 module test_fe_share
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_prepare, only: prepare_run
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_prepare, only: prepare_run
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_fe_share, only: share_t
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
-   use pecjoin_katona_operator, only: add_augmentation
+   use pecplas_joints_katona_operator, only: add_augmentation
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private

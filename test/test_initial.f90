@@ -1,13 +1,13 @@
 !> Initial stresses (*INITIAL_STRESS): a geostatic state is in equilibrium by itself (no
 !> displacement, stresses unchanged) and superposes with the response to later loads.
 module test_initial
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_problem_type, only: problem_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)

@@ -3,10 +3,10 @@
 !> expected values are read off the deck files in test/data/decks (a number read from text
 !> must come back to the last bit, see `near`; a normalised direction to rounding).
 module test_io_deck
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
    use pecplas_massif_materials_elastic, only: elastic_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close

@@ -3,7 +3,7 @@
 !> its line number (0 for what is missing from the whole deck), the keyword in force, and
 !> the key words of the message, each checked on its own.
 module test_io_deck_errors
-   use pecplas_error, only: error_t
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest
    use test_io_deck, only: DECKS
    use fixtures_bad_decks, only: bad_case_t, bad, run_bad_cases

@@ -2,11 +2,11 @@
 !> else refused), keyword lines, data fields, include path folding and repeated ids.
 module test_io_deck_fields
    use iso_fortran_env, only: int64
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: deck_line_t, keyword_line_t, field_t, parse_keyword_line, &
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_io_text_fields, only: deck_line_t, keyword_line_t, field_t, parse_keyword_line, &
       split_fields, parse_real, parse_int
-   use pecplas_io_deck_lines, only: join_path, read_deck_lines
+   use pecplas_io_text_lines, only: join_path, read_deck_lines
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)

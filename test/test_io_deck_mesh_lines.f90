@@ -4,11 +4,11 @@
 !> usual forms must take the short path (else there is no speed-up).
 module test_io_deck_mesh_lines
    use iso_fortran_env, only: int64
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_io_deck_fields, only: field_t, split_fields, parse_real, parse_int, itoa
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_io_text_fields, only: field_t, split_fields, parse_real, parse_int, itoa
    use pecplas_io_deck_mesh_lines, only: quick_node, quick_ids
-   use pecplas_io_deck_line_store, only: next_line
+   use pecplas_io_text_line_store, only: next_line
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private

@@ -2,15 +2,15 @@
 !> (test/data/trust/): each bad one must fail with file:line and keyword; resource caps are
 !> checked against the file's own content before anything is allocated.
 module test_io_deck_trust
-   use pecplas_error, only: error_t
+   use pecplas_base_error, only: error_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_testing, only: unittest_t, new_unittest, check
    use fixtures_bad_decks, only: bad, run_bad_cases
-   use pecplas_kinds, only: wp
+   use pecplas_base_kinds, only: wp
    use pecplas_io_results_fields, only: stress_mean
-   use pecplas_driver_progress_eta, only: progress_eta_t
-   use pecplas_warnings, only: warnings_t
+   use pecplas_base_progress_eta, only: progress_eta_t
+   use pecplas_base_warnings, only: warnings_t
    use pecplas_model_geometry, only: corner_jacobian_ratio
    implicit none (type, external)
    private

@@ -2,11 +2,11 @@
 !> error messages for bad files, and a ~2e5-node performance smoke test.
 module test_io_gmsh
    use iso_fortran_env, only: int64
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_mesh, only: mesh_t
    use pecplas_model_mesh_tools, only: orient_edge_sets, check_elements
-   use pecplas_io_gmsh, only: read_gmsh
+   use pecplas_io_mesh_gmsh, only: read_gmsh
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private

@@ -5,13 +5,13 @@
 module test_io_results
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t
    use pecplas_io_results_file, only: results_file_t, temporary_path
-   use pecplas_files, only: rename_file, remove_file, path_base, same_file
+   use pecplas_base_files, only: rename_file, remove_file, path_base, same_file
    use pecplas_io_results_reader, only: results_reader_t
    use test_io_results_data, only: sample_model, sample_gauss, sample_increment, &
       same_bits, OUT_DIR, make_out_dir, copy_file

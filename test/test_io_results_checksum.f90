@@ -4,8 +4,8 @@
 !> character or two lines swap; it is an integer below 2^52 (held exactly by the double
 !> attribute) and needs more than one reduction span (4096 values) to be exercised.
 module test_io_results_checksum
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_io_results_checksum, only: values_checksum, text_checksum, deck_identity
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)

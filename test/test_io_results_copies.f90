@@ -4,17 +4,17 @@
 !> left under the copy's name and the caller writes it.
 module test_io_results_copies
    use, intrinsic :: iso_fortran_env, only: int8
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_results_h5, only: h5_init, h5_write, h5_attr
    use pecplas_io_results_copies, only: copies_t
    use pecplas_io_results_kernel_copy, only: kernel_copy
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: increment_result_t
    use pecplas_io_results_reader, only: results_reader_t
-   use pecplas_files, only: remove_file
+   use pecplas_base_files, only: remove_file
    use test_io_results_data, only: sample_model, sample_gauss, sample_increment, &
       same_bits, OUT_DIR, make_out_dir
    implicit none (type, external)

@@ -3,9 +3,9 @@
 !> and file helpers. Values use thirds and sevenths so that every mantissa bit matters.
 module test_io_results_data
    use, intrinsic :: iso_fortran_env, only: int64, int8
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: element_set_t, node_set_t, edge_set_t
    use pecplas_model_loads, only: load_pattern_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t

@@ -3,14 +3,14 @@
 !> readable) until `finish` renames the copy with the final increment onto the target; a
 !> run stopped without finish publishes that copy; no increment may follow a final one.
 module test_io_results_final
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_results_increment, only: increment_result_t
    use pecplas_io_results_file, only: results_file_t, temporary_path
    use pecplas_io_results_reader, only: results_reader_t
-   use pecplas_files, only: remove_file
+   use pecplas_base_files, only: remove_file
    use test_io_results_data, only: sample_model, sample_gauss, sample_increment, &
       same_bits, OUT_DIR, make_out_dir, copy_file
    implicit none (type, external)

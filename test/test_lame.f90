@@ -2,12 +2,12 @@
 !> displacement and hoop stress against the closed form, and the observed convergence order
 !> of the L2 displacement error on three meshes (≈2 for linear, ≈3 for quadratic elements).
 module test_lame
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_massif_kinematics, only: massif_point_t, massif_gauss_point
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close

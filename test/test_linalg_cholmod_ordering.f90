@@ -3,8 +3,8 @@
 !> one doc/bench/ordering.md states.
 module test_linalg_cholmod_ordering
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_associated
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
    use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver
    use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &

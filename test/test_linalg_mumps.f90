@@ -5,15 +5,15 @@
 !> `make test-mpi` also runs this suite under `mpirun -np 1` and `-np 2`: every rank runs
 !> the same tests, so the collective MUMPS calls match.
 module test_linalg_mumps
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, ERR_SINGULAR, ERR_INPUT
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_INPUT
    use pecplas_linalg_sparse, only: csc_t, coo_t, coo_to_csc
    use pecplas_linalg_mumps, only: mumps_summed_input
-   use pecplas_parallel, only: parallel_rank, parallel_size
+   use pecplas_base_parallel, only: parallel_rank, parallel_size
    use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver, mumps_available
-   use pecplas_model, only: model_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_files, only: make_directories, process_id, remove_file
+   use pecplas_base_files, only: make_directories, process_id, remove_file
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_linalg, only: convection_diffusion, elastic_square, det_vector, &
       SUPPORT_NONE, SUPPORT_FIXED

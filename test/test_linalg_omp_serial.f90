@@ -2,7 +2,7 @@
 !> the flag is set, a parallel region runs on the calling thread alone; outside it, libgomp's
 !> own team.
 module test_linalg_omp_serial
-   use pecplas_error, only: error_t
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check
    use omp_lib, only: omp_get_dynamic, omp_set_dynamic, omp_get_num_threads, omp_get_thread_num
    use pecplas_linalg_cholmod, only: pecplas_omp_serial_begin, pecplas_omp_serial_end

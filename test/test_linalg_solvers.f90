@@ -1,8 +1,8 @@
 !> CHOLMOD and UMFPACK behind linear_solver_t: known solutions, factorisation reuse,
 !> singular and indefinite systems, the factory, and the dense LAPACK wrappers.
 module test_linalg_solvers
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, ERR_SINGULAR, ERR_INPUT
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_INPUT
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_solver, only: linear_solver_t, new_linear_solver
    use pecplas_linalg_cholmod, only: pecplas_cholmod_new, pecplas_cholmod_delete, &

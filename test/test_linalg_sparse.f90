@@ -1,8 +1,8 @@
 !> Triplet assembly and COO -> CSC conversion, checked against dense matrices built
 !> independently from the same triplets.
 module test_linalg_sparse
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_linalg_sparse, only: coo_t, csc_t, coo_to_csc
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_linalg, only: laplacian, det_vector

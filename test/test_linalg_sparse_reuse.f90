@@ -2,14 +2,14 @@
 !> path must give the matrix of the full COO -> CSC conversion of the same triplets, and any
 !> change of the triplet sequence must take the full conversion again.
 module test_linalg_sparse_reuse
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use pecplas_fe_assembly, only: assemble_stiffness
-   use pecplas_driver_stiffness, only: upper_storage
+   use pecplas_solve_stiffness, only: upper_storage
    use pecplas_linalg_cholmod, only: cholmod_solver_t
    use pecplas_linalg_sparse, only: csc_t, coo_to_csc
    use pecplas_linalg_sparse_reuse, only: csc_builder_t

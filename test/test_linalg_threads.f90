@@ -1,8 +1,8 @@
 !> Thread setting of a run: the deck's THREADS= wins over the environment, applying it sets
 !> the OpenMP team size, and a deck value below 1 is refused with the deck line.
 module test_linalg_threads
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads, &
       openmp_threads

@@ -14,12 +14,12 @@
 !> doc (T3, Q4, T6, Q8, Q8R on 2 x 1, 4 x 2, 6 x 3 cells, and 4 x 2 driven 15 times further),
 !> for tools/theory_report.py.
 module test_massif_collapse
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check
    use doc_report, only: report

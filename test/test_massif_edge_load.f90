@@ -1,8 +1,8 @@
 !> Consistent edge loads: nodal distributions and resultants against closed-form
 !> integrals (tolerance 1e-13 relative: Gauss rules are exact, only rounding remains).
 module test_massif_edge_load
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
    use pecplas_massif_edge_load, only: edge_pressure_forces, edge_traction_forces
    use pecplas_testing, only: unittest_t, new_unittest, check

@@ -2,8 +2,8 @@
 !> fields, geometry errors, stiffness invariants (rigid modes, eigenvalues), internal
 !> and body forces.
 module test_massif_elements
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_elements_factory, only: new_massif_element, KNOWN_MASSIF_ELEMENTS

@@ -5,8 +5,8 @@
 !> strain and axisymmetry, with symmetric and non-symmetric D.
 module test_massif_kernels
    use, intrinsic :: iso_fortran_env, only: int64
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_elements_factory, only: new_massif_element, KNOWN_MASSIF_ELEMENTS

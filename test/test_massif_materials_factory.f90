@@ -1,10 +1,10 @@
 !> Material factory and registry: built-in types, unknown types listed in the error, and a
 !> user type registered by the caller, used from a deck.
 module test_massif_materials_factory
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, ERR_INPUT
-   use pecplas_model_params, only: params_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_INPUT
+   use pecplas_base_params, only: params_t
+   use pecplas_model_type, only: model_t
    use pecplas_massif_materials_type, only: material_t
    use pecplas_massif_materials_elastic, only: elastic_t, new_elastic
    use pecplas_massif_materials_factory, only: material_registry_t, default_material_registry, &

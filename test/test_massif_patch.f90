@@ -5,8 +5,8 @@
 !> Gauss-point stresses must equal the exact uniform state. Tolerance 1e-10 relative:
 !> the discrete solution is exact, so only rounding (condition ~1e3) remains.
 module test_massif_patch
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_elements_factory, only: new_massif_element, KNOWN_MASSIF_ELEMENTS

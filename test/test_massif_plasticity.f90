@@ -3,9 +3,9 @@
 !> yield surface, plastic strain along the flow directions, apex and tension cut-off,
 !> consistent tangent against central differences of `update`, symmetry for psi = phi.
 module test_massif_plasticity
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model_params, only: params_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_params, only: params_t
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_massif_materials_elastic, only: elastic_t, new_elastic
    use pecplas_massif_materials_mohr_coulomb, only: mohr_coulomb_t

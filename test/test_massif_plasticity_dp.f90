@@ -3,8 +3,8 @@
 !> dg/dsigma, apex, consistent tangent against central differences for the three matchings,
 !> symmetry for psi = phi, and the matched cones through Mohr–Coulomb's meridians.
 module test_massif_plasticity_dp
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_massif_materials_drucker_prager, only: drucker_prager_t
    use pecplas_massif_materials_soil, only: RETURN_ELASTIC, RETURN_SMOOTH, RETURN_APEX

@@ -2,13 +2,13 @@
 !> homogeneous biaxial and triaxial tests against the closed-form Mohr–Coulomb strength, and
 !> a smooth strip footing on Tresca soil against Prandtl's q_u = (2 + pi) c.
 module test_massif_plasticity_fe
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_stiffness, only: linear_solver_name
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_stiffness, only: linear_solver_name
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_massif_materials_soil, only: RETURN_SMOOTH, RETURN_EDGE
    use doc_report, only: report

@@ -4,9 +4,9 @@
 !> compression, axisymmetric triaxial compression and extension, Tresca; and the deck
 !> errors of the parameter checks.
 module test_massif_plasticity_paths
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error, ERR_INPUT
-   use pecplas_model_params, only: params_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error, ERR_INPUT
+   use pecplas_base_params, only: params_t
    use pecplas_massif_materials_type, only: material_t, NCOMP
    use pecplas_massif_materials_mohr_coulomb, only: mohr_coulomb_t, new_mohr_coulomb
    use pecplas_massif_materials_drucker_prager, only: drucker_prager_t, new_drucker_prager

@@ -7,8 +7,8 @@
 !> - one element with minimal supports (3 dofs): the spurious mode is left (singular);
 !>   with one side held (its 3 nodes fixed): none.
 module test_massif_q8r
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_options, only: PLANE_STRAIN
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_elements_factory, only: new_massif_element

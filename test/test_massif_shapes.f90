@@ -1,8 +1,8 @@
 !> Integration rules, shape functions (values, derivatives, node order, edges) and the
 !> element factory of the massif elements T3, T6, Q4, Q8.
 module test_massif_shapes
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_elements_factory, only: new_massif_element, massif_element_nnode, &
       KNOWN_MASSIF_ELEMENTS

@@ -1,7 +1,7 @@
 !> Mesh utilities: id lookup, appending meshes, element checks and edge-set orientation.
 module test_model_mesh_tools
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_mesh, only: mesh_t, element_set_t, node_set_t, edge_set_t
    use pecplas_model_mesh_tools, only: node_lookup_t, append_mesh, orient_edge_sets, check_elements
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close

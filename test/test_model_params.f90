@@ -1,8 +1,8 @@
 !> Deck parameter lists: lookup, defaults, and errors that name the missing or unknown key.
 module test_model_params
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model_params, only: params_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_base_params, only: params_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private

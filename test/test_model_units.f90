@@ -1,7 +1,7 @@
 !> *UNITS: the known names, stress = force / length**2, and the messages for bad lines.
 module test_model_units
-   use pecplas_error, only: error_t
-   use pecplas_model_units, only: units_t, parse_units, UNITS_NOT_STATED
+   use pecplas_base_error, only: error_t
+   use pecplas_base_units, only: units_t, parse_units, UNITS_NOT_STATED
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private

@@ -3,13 +3,13 @@
 !> with an input error naming its file, line and keyword and the key words of the message,
 !> and through `run_deck` it exits with code 2 and writes no results file.
 module test_pecjoin_deck
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use pecplas_testing, only: unittest_t, new_unittest, check
    use fixtures_bad_decks, only: bad_case_t, bad, run_bad_cases
    implicit none (type, external)

@@ -4,13 +4,13 @@
 !> the right signs, point measures (length, 2 pi r length, thin layer thickness), stiffness
 !> and internal force consistent with each other, spring tributaries, the factory.
 module test_pecjoin_elements
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
-   use pecjoin_elements_type, only: joint_element_t, joint_point_t, joint_strain, &
+   use pecplas_joints_elements_type, only: joint_element_t, joint_point_t, joint_strain, &
       joint_force, joint_stiffness
-   use pecjoin_elements_factory, only: new_joint_element
-   use pecjoin_tributary, only: spring_tributaries
+   use pecplas_joints_elements_factory, only: new_joint_element
+   use pecplas_joints_elements_tributary, only: spring_tributaries
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private

@@ -2,12 +2,12 @@
 !> at tan(a) = 0.1 with mu = 0.3, weight then a horizontal push under force control; the
 !> run must stop with a limit load at F/G = (tan a + mu)/(1 - mu tan a) = 0.412371 (0.1 %).
 module test_pecjoin_friction
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)

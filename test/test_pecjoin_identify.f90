@@ -4,15 +4,15 @@
 !> extremum and hyperbola exact on exact data; CSV curves in the point driver's and a comment
 !> form, and their errors (file:line).
 module test_pecjoin_identify
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_files, only: make_directories
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_base_files, only: make_directories
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_identify_closed_forms, only: rm_value, rm_slope, beta_from_slope, ab_from_peak, &
+   use pecplas_studies_identify_closed_forms, only: rm_value, rm_slope, beta_from_slope, ab_from_peak, &
       k0_from_r0
-   use pecjoin_identify_fits, only: line_fit, smooth_max, origin_slope_upto, end_value, &
+   use pecplas_studies_identify_fits, only: line_fit, smooth_max, origin_slope_upto, end_value, &
       hyperbola_fit
-   use pecjoin_identify_curves, only: test_curve_t, read_test_curve
+   use pecplas_studies_identify_curves, only: test_curve_t, read_test_curve
    implicit none (type, external)
    private
    public :: collect_pecjoin_identify

@@ -14,23 +14,23 @@
 !> - with 1 % noise (fixed seed) the values stay within the bounds below;
 !> - the initial version (table III.1, no peak by 8 mm) comes back whole through the
 !>   hyperbola's asymptote.
-!> Also: the driver's CNL equals the closed-form CNL (pecjoin_identify_analytic_cnl).
+!> Also: the driver's CNL equals the closed-form CNL (pecplas_studies_identify_analytic_cnl).
 module test_pecjoin_identify_roundtrip
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_files, only: make_directories
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_base_files, only: make_directories
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_path_deck, only: PATH_CNL
-   use pecjoin_path_driver, only: path_result_t, run_path
-   use pecjoin_path_writers, only: write_path_csv
-   use pecjoin_identify_closed_forms, only: PA, ab_from_peak, beta_from_slope
-   use pecjoin_identify_analytic_cnl, only: modjoin_set_t, analytic_cnl
-   use pecjoin_identify_curves, only: test_curve_t, read_test_curve
-   use pecjoin_identify_method, only: identify_options_t, identification_t, identify, &
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_studies_path_deck, only: PATH_CNL
+   use pecplas_studies_path_driver, only: path_result_t, run_path
+   use pecplas_studies_path_writers, only: write_path_csv
+   use pecplas_studies_identify_closed_forms, only: PA, ab_from_peak, beta_from_slope
+   use pecplas_studies_identify_analytic_cnl, only: modjoin_set_t, analytic_cnl
+   use pecplas_studies_identify_curves, only: test_curve_t, read_test_curve
+   use pecplas_studies_identify_method, only: identify_options_t, identification_t, identify, &
       VERSION_INITIAL
-   use pecjoin_identify_report, only: print_identification
-   use pecjoin_identify_cli, only: identify_main
+   use pecplas_studies_identify_report, only: print_identification
+   use pecplas_cmd_identify, only: identify_main
    use fixtures_pecjoin, only: make_law, lcg_uniform
    implicit none (type, external)
    private

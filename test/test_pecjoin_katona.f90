@@ -4,13 +4,13 @@
 !> Hertz line contact against the closed form (doc/validation.md), the S1 opening-closing cycle, and
 !> separation at the tensile strength.
 module test_pecjoin_katona
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecjoin_laws_type, only: MODE_OPEN
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_joints_laws_type, only: MODE_OPEN
    use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)

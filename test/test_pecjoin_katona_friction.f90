@@ -3,13 +3,13 @@
 !> Mohr–Coulomb tests with TYPE=KATONA only), and the convergence of the penalty method
 !> (Frank springs, the same deck with TYPE=SPRING) to the Katona solution as K grows.
 module test_pecjoin_katona_friction
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecjoin_laws_type, only: MODE_SLIP, MODE_STICK
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_joints_laws_type, only: MODE_SLIP, MODE_STICK
    use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)

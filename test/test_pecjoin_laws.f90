@@ -2,12 +2,12 @@
 !> errors naming file and line; every frictional law is elastic–perfectly plastic at a point
 !> with the plateau exactly c + sigma_n tan(phi) (c only, phi only, both).
 module test_pecjoin_laws
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t, MODE_STICK, MODE_SLIP
-   use pecjoin_laws_coulomb, only: ST_SLIP
-   use pecjoin_laws_factory, only: law_registry_t, default_law_registry
+   use pecplas_joints_laws_type, only: interface_law_t, MODE_STICK, MODE_SLIP
+   use pecplas_joints_laws_coulomb, only: ST_SLIP
+   use pecplas_joints_laws_factory, only: law_registry_t, default_law_registry
    use fixtures_pecjoin, only: law_params, make_law, DECK_FILE
    implicit none (type, external)
    private

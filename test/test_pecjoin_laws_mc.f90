@@ -3,14 +3,14 @@
 !> corner, the tensile strength lost at separation; Goodman's slip stiffness; the spring
 !> penalty; Ghaboussi's asperity (Patton) strength and dilation.
 module test_pecjoin_laws_mc
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t, MODE_STICK, MODE_SLIP, MODE_OPEN
-   use pecjoin_laws_coulomb, only: ST_SLIP, ST_GAP, ST_EPS_NP, ST_EPS_TP
-   use pecjoin_laws_spring, only: spring_law_t
-   use pecjoin_path_deck, only: PATH_CNL
-   use pecjoin_path_driver, only: path_result_t, run_path
+   use pecplas_joints_laws_type, only: interface_law_t, MODE_STICK, MODE_SLIP, MODE_OPEN
+   use pecplas_joints_laws_coulomb, only: ST_SLIP, ST_GAP, ST_EPS_NP, ST_EPS_TP
+   use pecplas_joints_laws_spring, only: spring_law_t
+   use pecplas_studies_path_deck, only: PATH_CNL
+   use pecplas_studies_path_driver, only: path_result_t, run_path
    use fixtures_pecjoin, only: make_law
    implicit none (type, external)
    private
@@ -36,7 +36,7 @@ contains
 
    !> Constrained normal displacement (d eps_n = 0) from sigma_n0 = 100, phi = 30, psi = 10.
    !> On the cone, an increment d of eps_t has the trial f = K_t d, so (module header of
-   !> pecjoin_laws_coulomb) dlambda = K_t d / (K_t + K_n tan(psi) tan(phi)); the plastic
+   !> pecplas_joints_laws_coulomb) dlambda = K_t d / (K_t + K_n tan(psi) tan(phi)); the plastic
    !> normal displacement is -tan(psi) dlambda (dilation) and, eps_n being fixed, the elastic
    !> one is +tan(psi) dlambda: d sigma_n = K_n tan(psi) dlambda, and tau = sigma_n tan(phi).
    subroutine test_dilatancy(error)

@@ -5,11 +5,11 @@
 !> The only documented departure: stiffness-adaptation laws (Goodman) add K_t KT_RATIO to
 !> d tau / d eps_t in slip while the capped stress does not move: it is subtracted here.
 module test_pecjoin_laws_tangent
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
    use pecplas_testing, only: unittest_t, new_unittest, check
-   use pecjoin_laws_type, only: interface_law_t, MODE_STICK, MODE_SLIP, MODE_NAMES
-   use pecjoin_laws_coulomb, only: coulomb_law_t
+   use pecplas_joints_laws_type, only: interface_law_t, MODE_STICK, MODE_SLIP, MODE_NAMES
+   use pecplas_joints_laws_coulomb, only: coulomb_law_t
    use fixtures_pecjoin, only: make_law, lcg_uniform, fd_tangent, max_rel_diff
    implicit none (type, external)
    private

@@ -3,18 +3,18 @@
 !> differences of the update in hardening, softening and kinematic (cyclic) flow, the unit
 !> conversion at input and the deck errors.
 module test_pecjoin_modjoin
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t, MODE_SLIP, MODE_OPEN, MODE_STICK
-   use pecjoin_laws_modjoin, only: modjoin_law_t
-   use pecjoin_laws_modjoin_step, only: MJ_K, MJ_MECH
-   use pecjoin_laws_modjoin_kernel, only: mj_hardening, mj_hardening_slope, mj_gmod, mj_psi
-   use pecjoin_path_driver, only: path_result_t, path_increment
-   use pecjoin_path_deck, only: PATH_CNL, PATH_CND
+   use pecplas_joints_laws_type, only: interface_law_t, MODE_SLIP, MODE_OPEN, MODE_STICK
+   use pecplas_joints_laws_modjoin, only: modjoin_law_t
+   use pecplas_joints_laws_modjoin_step, only: MJ_K, MJ_MECH
+   use pecplas_joints_laws_modjoin_kernel, only: mj_hardening, mj_hardening_slope, mj_gmod, mj_psi
+   use pecplas_studies_path_driver, only: path_result_t, path_increment
+   use pecplas_studies_path_deck, only: PATH_CNL, PATH_CND
    use fixtures_pecjoin, only: fd_tangent, max_rel_diff, make_law
-   use pecjoin_path_cli, only: run_path_deck
-   use pecplas_files, only: make_directories
+   use pecplas_cmd_path, only: run_path_deck
+   use pecplas_base_files, only: make_directories
    use fixtures_modjoin, only: table_law, run_table_path
    implicit none (type, external)
    private

@@ -5,15 +5,15 @@
 !> *_a1) both sets show the thesis's cyclic behaviour; at the assumed +-2 mm the dense set passes
 !> the peak of its primary hardening and the test asserts what the law does instead.
 module test_pecjoin_modjoin_cyclic
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_laws_modjoin, only: modjoin_law_t
-   use pecjoin_laws_modjoin_kernel, only: mj_hardening, mj_hardening_slope
-   use pecjoin_laws_modjoin_step, only: MJ_K
-   use pecjoin_path_driver, only: path_increment
-   use pecjoin_path_deck, only: PATH_CNL
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_joints_laws_modjoin, only: modjoin_law_t
+   use pecplas_joints_laws_modjoin_kernel, only: mj_hardening, mj_hardening_slope
+   use pecplas_joints_laws_modjoin_step, only: MJ_K
+   use pecplas_studies_path_driver, only: path_increment
+   use pecplas_studies_path_deck, only: PATH_CNL
    use fixtures_modjoin, only: table_law
    implicit none (type, external)
    private

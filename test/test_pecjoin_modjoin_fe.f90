@@ -7,18 +7,18 @@
 !> the joint displacement; the law is step-size independent to ~1e-5), and the full Newton
 !> iteration with the law's tangent must converge quadratically (<= 3 iterations).
 module test_pecjoin_modjoin_fe
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_io_results_h5, only: increment_group
    use pecplas_testing, only: unittest_t, new_unittest, check
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_path_driver, only: path_result_t
-   use pecjoin_path_deck, only: PATH_CNL
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_studies_path_driver, only: path_result_t
+   use pecplas_studies_path_deck, only: PATH_CNL
    use fixtures_modjoin, only: table_law, run_table_path
    use fixtures_bad_decks, only: bad, run_bad_cases
    implicit none (type, external)

@@ -4,14 +4,14 @@
 !> normal stress dip under constant normal displacement; cyclic version: discrete memory).
 !> The cyclic hardening over 10 cycles: test_pecjoin_modjoin_cyclic.
 module test_pecjoin_modjoin_paths
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_laws_modjoin, only: modjoin_law_t
-   use pecjoin_laws_modjoin_kernel, only: mj_hardening
-   use pecjoin_path_driver, only: path_result_t, path_increment
-   use pecjoin_path_deck, only: PATH_CNL, PATH_CND
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_joints_laws_modjoin, only: modjoin_law_t
+   use pecplas_joints_laws_modjoin_kernel, only: mj_hardening
+   use pecplas_studies_path_driver, only: path_result_t, path_increment
+   use pecplas_studies_path_deck, only: PATH_CNL, PATH_CND
    use fixtures_modjoin, only: table_law, run_table_path, rel_curve_diff
    implicit none (type, external)
    private

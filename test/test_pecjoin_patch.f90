@@ -6,15 +6,15 @@
 !> strain and axisymmetric, Gauss and Lobatto points, modified and full Newton.
 !> The results file holds the same joint fields and passes tools/check_results.py.
 module test_pecjoin_patch
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check
-   use pecjoin_initial, only: initial_joint_stress
+   use pecplas_fe_joint_initial, only: initial_joint_stress
    implicit none (type, external)
    private
    public :: collect_pecjoin_patch, run_patch

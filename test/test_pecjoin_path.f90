@@ -3,14 +3,14 @@
 !> K* = K_n KS/(K_n + KS), between the two; cyclic turning points; the example deck end to
 !> end (CSV + HDF5); path-deck errors with file:line.
 module test_pecjoin_path
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_files, only: make_directories
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_files, only: make_directories
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_type, only: interface_law_t, MODE_SLIP, MODE_STICK
-   use pecjoin_path_deck, only: path_deck_t, read_path_deck, PATH_CNL, PATH_CND, PATH_CNS
-   use pecjoin_path_driver, only: path_result_t, run_path
-   use pecjoin_path_cli, only: run_path_deck
+   use pecplas_joints_laws_type, only: interface_law_t, MODE_SLIP, MODE_STICK
+   use pecplas_studies_path_deck, only: path_deck_t, read_path_deck, PATH_CNL, PATH_CND, PATH_CNS
+   use pecplas_studies_path_driver, only: path_result_t, run_path
+   use pecplas_cmd_path, only: run_path_deck
    use fixtures_pecjoin, only: make_law
    implicit none (type, external)
    private

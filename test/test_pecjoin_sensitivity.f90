@@ -3,20 +3,20 @@
 !> influence on a path (K_n of Mohr–Coulomb on CNL: sigma_n is held, so eps_n and tau never
 !> see it) gives Q_p = 0 to round-off through the real point driver.
 module test_pecjoin_sensitivity
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model_params, only: params_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_base_params, only: params_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
-   use pecjoin_laws_factory, only: default_law_registry
-   use pecjoin_path_deck, only: PATH_CNL, PATH_CND
-   use pecjoin_path_driver, only: path_result_t
-   use pecjoin_sensitivity_core, only: path_runner_t, law_path_runner_t, curve_spec_t, &
+   use pecplas_joints_laws_factory, only: default_law_registry
+   use pecplas_studies_path_deck, only: PATH_CNL, PATH_CND
+   use pecplas_studies_path_driver, only: path_result_t
+   use pecplas_studies_sensitivity_core, only: path_runner_t, law_path_runner_t, curve_spec_t, &
       sensitivity_t, sensitivity_study, OUT_TAU, OUT_EPS_N, OUT_SIGMA_N
-   use pecjoin_sensitivity_thesis, only: THESIS_KEYS, FRACTIONS_III4, CURVE_LABELS, &
+   use pecplas_studies_sensitivity_thesis, only: THESIS_KEYS, FRACTIONS_III4, CURVE_LABELS, &
       thesis_curves, table_iii2_params, THESIS_SIGMA_N0, THESIS_EPS_T
-   use pecjoin_sensitivity_report, only: print_sensitivity, ranking
-   use pecjoin_sensitivity_cli, only: sensitivity_main
-   use pecplas_files, only: make_directories
+   use pecplas_studies_sensitivity_report, only: print_sensitivity, ranking
+   use pecplas_cmd_sensitivity, only: sensitivity_main
+   use pecplas_base_files, only: make_directories
    use fixtures_pecjoin, only: law_params
    implicit none (type, external)
    private

@@ -5,16 +5,16 @@
 !> penalty 1e5 E_ryg R_max / (mean tributary), with R_max checked against the Q4 stiffness,
 !> and still passes the joint patch test.
 module test_pecjoin_solver
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecjoin_elements_type, only: joint_element_t, joint_point_t
-   use pecjoin_points, only: joint_set_element, joint_element_points
-   use pecjoin_penalty, only: massif_rmax
-   use pecjoin_laws_spring, only: spring_law_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_joints_elements_type, only: joint_element_t, joint_point_t
+   use pecplas_joints_points, only: joint_set_element, joint_element_points
+   use pecplas_fe_joint_penalty, only: massif_rmax
+   use pecplas_joints_laws_spring, only: spring_law_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use test_pecjoin_patch, only: run_patch
    implicit none (type, external)

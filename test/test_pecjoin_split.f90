@@ -4,11 +4,11 @@
 !> split_rules.inp), a corner shared by two joint sets split once (split_corner.inp), and a
 !> Gmsh interface curve split the same way, passing the patch test.
 module test_pecjoin_split
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_driver_problem, only: problem_t, setup_problem
+   use pecplas_problem_type, only: problem_t, setup_problem
    use pecplas_testing, only: unittest_t, new_unittest, check
    use test_pecjoin_patch, only: run_patch
    implicit none (type, external)

@@ -1,21 +1,21 @@
-!> The uniform refiner (pecplas_model_refine): counts, area, ids and node-set growth on the
+!> The uniform refiner (pecplas_model_refine_refine): counts, area, ids and node-set growth on the
 !> GOODMAN4 joint patch deck and on a T3 square; a refined patch under uniform pressure still
 !> gives the exact uniform stress in the massif and in the joints (plane, and axisymmetric
 !> with generated joints); Q8 and springs refine; point forces on an edge are refused with
 !> their reason.
 module test_refine
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: mesh_t
-   use pecplas_model_refine, only: refine_model
+   use pecplas_model_refine_refine, only: refine_model
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_files, only: make_directories
-   use pecplas_version, only: VERSION
-   use pecplas_driver_problem, only: problem_t
-   use pecplas_driver_prepare, only: prepare_run
-   use pecplas_driver_increments, only: run_increments
-   use pecplas_driver_gauss, only: gauss_coordinates
+   use pecplas_base_files, only: make_directories
+   use pecplas_base_version, only: VERSION
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_prepare, only: prepare_run
+   use pecplas_solve_increments, only: run_increments
+   use pecplas_solve_gauss, only: gauss_coordinates
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_io_results_file, only: results_file_t
    use pecplas_testing, only: unittest_t, new_unittest, check

@@ -4,15 +4,15 @@
 !> joint type (GOODMAN4/6, THIN_LAYER, SPRING, Katona doublets); all marked = the uniform
 !> refiner's counts; Dörfler marking picks the fewest largest indicators.
 module test_refine_local
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model, only: model_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: mesh_t
    use pecplas_model_mesh_tools, only: corner_count
    use pecplas_model_refine_local, only: refine_marked
    use pecplas_model_refine_mark, only: bulk_marking
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_driver_problem, only: problem_t
+   use pecplas_problem_type, only: problem_t
    use pecplas_testing, only: unittest_t, new_unittest, check
    use test_refine, only: run_model, total_area
    implicit none (type, external)

@@ -3,13 +3,13 @@
 !> joints, the limit load under force control, the effect of dilatancy with stiff and soft
 !> K_n, and an opening–closing cycle.
 module test_s1
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
-   use pecplas_model, only: model_t
-   use pecplas_cli, only: run_deck
-   use pecplas_files, only: make_directories
-   use pecplas_driver_problem, only: problem_t
-   use pecjoin_laws_type, only: MODE_SLIP, MODE_OPEN
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_problem_type, only: problem_t
+   use pecplas_joints_laws_type, only: MODE_SLIP, MODE_OPEN
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private

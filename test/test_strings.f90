@@ -1,8 +1,8 @@
 !> Name folding and the short number texts shared by messages and tables.
 module test_strings
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_strings, only: upper, same_name, itoa, decimal_text, g6
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_base_strings, only: upper, same_name, itoa, decimal_text, g6
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private

@@ -2,8 +2,8 @@
 !> A suite is a `collect_<name>(tests)` routine returning `new_unittest` entries; each test
 !> is a subroutine `(error)` that leaves `error` allocated on failure.
 module pecplas_testing
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t, fatal_error
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
    implicit none (type, external)
    private
 

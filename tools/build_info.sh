@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Writes src/pecplas/provenance_commit.h (git-ignored) with the commit `pecplas --version` reports:
+# Writes src/base/provenance_commit.h (git-ignored) with the commit `pecplas --version` reports:
 # `git describe --always --dirty`, or "unknown" outside a git checkout. The file is rewritten
 # only when the commit changed, so an unchanged tree does not recompile. fpm does not track C
 # headers, so the shim's objects in fpm's build trees are deleted then: fpm recompiles a missing
@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 commit=$(git describe --always --dirty --tags 2>/dev/null || echo unknown)
-header=src/pecplas/provenance_commit.h
+header=src/base/provenance_commit.h
 line="#define PECPLAS_COMMIT \"$commit\""
 if [[ ! -f $header ]] || [[ $(cat "$header") != "$line" ]]; then
   printf '%s\n' "$line" >"$header"

@@ -156,7 +156,7 @@ def load_manifest(d):
     return json.loads(p.read_text())
 
 
-def pecplas_command(given):
+def pecplas_cmd_command(given):
     """The pecplas executable: --pecplas, $PECPLAS_BIN, next to this script, or on PATH."""
     for c in (given, os.environ.get("PECPLAS_BIN")):
         if c:
@@ -183,7 +183,7 @@ def run_case(exe, d, case):
 def cmd_run(a):
     d = Path(a.dir)
     m = load_manifest(d)
-    exe = pecplas_command(a.pecplas)
+    exe = pecplas_cmd_command(a.pecplas)
     cases = m["cases"]
     if a.cases:
         cases = [cases[i] for i in a.cases]
@@ -232,7 +232,7 @@ def cmd_slurm(a):
         dir=shlex.quote(str(d)), script=shlex.quote(str(script)), job=a.job_name, last=n - 1,
         throttle=f"%{a.max_parallel}" if a.max_parallel else "", cpus=a.cpus_per_task,
         extra=extra, cases=" ".join(shlex.quote(c["name"]) for c in m["cases"]),
-        exe=shlex.quote(pecplas_command(a.pecplas))))
+        exe=shlex.quote(pecplas_cmd_command(a.pecplas))))
     script.chmod(0o755)
     print(f"pecplas-sweep: {script} ({n} array tasks 0-{n - 1})")
     if a.submit:

@@ -8,12 +8,12 @@
 !> Single thread; times from system_clock.
 program bench_laws
    use, intrinsic :: iso_fortran_env, only: int64
-   use pecplas_kinds, only: wp
-   use pecplas_error, only: error_t
-   use pecplas_model_params, only: params_t
-   use pecjoin_laws_type, only: interface_law_t
-   use pecjoin_laws_factory, only: law_registry_t, default_law_registry
-   use pecjoin_path_driver, only: path_result_t, run_path
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_base_params, only: params_t
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_joints_laws_factory, only: law_registry_t, default_law_registry
+   use pecplas_studies_path_driver, only: path_result_t, run_path
    implicit none (type, external)
    character(len=*), parameter :: TYPES(3) = [character(len=15) :: 'MODJOIN_INITIAL', &
       'MODJOIN', 'MODJOIN_CYCLIC']

@@ -46,7 +46,7 @@ def test_shares_add_up_to_one():
 
 
 def test_summary_line_is_parsed():
-    # the layout written by pecplas_cli's summary (numbers made up)
+    # the layout written by pecplas_cmd_pecplas's summary (numbers made up)
     out = (" summary: 2 increments, 16 iterations, 0 cuts, 15 factorisations, 16 solves, "
            "9.1 s CPU\n wall time [s]: read+setup 0.556  assembly 3.790  factorisation 8.285"
            "  solve 0.382  residual 0.874 (laws 0.315)  output 0.071  total 14.015\n"

@@ -1,0 +1,458 @@
+!> The batch command `pecplas DECK [-o FILE] [--quiet]`: reads the deck, sets the problem
+!> up, factorises, runs the steps and writes the results. Returns the exit code
+!> (0 done, 2 input error, 3 run stopped early or results not writable, 4 interrupted by
+!> SIGTERM/SIGINT/SIGHUP, 1 internal error) so tests can call it.
+module pecplas_cmd_pecplas
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, input_error, fatal_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, &
+      EXIT_INTERRUPTED
+   use pecplas_base_version, only: PROGRAM_NAME, VERSION
+   use pecplas_base_files, only: make_directories, path_stem, path_dir, same_file, exit_now
+   use pecplas_model_type, only: model_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_prepare, only: prepare_run
+   use pecplas_solve_stiffness, only: linear_solver_name
+   use pecplas_solve_increments, only: run_increments
+   use pecplas_solve_gauss, only: gauss_coordinates
+   use pecplas_solve_sanity, only: large_displacement_warning
+   use pecplas_io_results_increment, only: joint_points_t
+   use pecplas_cmd_advise, only: advise_main
+   use pecplas_cmd_adapt, only: adapt_main
+   use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_xdmf, only: xdmf_path
+   use pecplas_base_signals, only: install_signal_handlers, interrupt_signal
+   use pecplas_base_timers, only: wall_time
+   use pecplas_cmd_command, only: command_error
+   use pecplas_solve_restart, only: restore_restart
+   use pecplas_base_provenance, only: version_lines
+   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_base_parallel, only: parallel_rank, parallel_size, parallel_any
+   implicit none (type, external)
+   private
+
+   !> Program name in error messages.
+   character(len=*), parameter :: COMMAND = 'pecplas'
+   !> Exit code of a run interrupted (SIGTERM/SIGINT, or --stop-after-increments).
+
+   public :: pecplas_main, run_deck
+
+   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
+      '[--restart OLD.h5] [--strict] | '// &
+      'pecplas --advise DECK [--goal node:N:x|y | --advise-node N] [--max-dofs N] | '// &
+      'pecplas DECK --target-error E% [--goal node:N:x|y | reaction:SET[:x|y] | limit] '// &
+      '[--max-dofs N] [-o FILE.h5]'
+
+contains
+
+   !> Runs the program for the command-line words `args`; returns the exit code.
+   integer function pecplas_main(args) result(code)
+      character(len=*), intent(in) :: args(:)
+      character(len=:), allocatable :: deck, outfile, restart, target, goal
+      logical :: quiet, advise, strict
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: i, node, ios, stop_after, max_dofs
+
+      restart = ''
+      target = ''
+      goal = ''
+      max_dofs = 0
+      stop_after = 0
+      advise = .false.
+      node = 0
+      quiet = .false.
+      strict = .false.
+      deck = ''
+      outfile = ''
+      i = 0
+      do while (i < size(args))
+         i = i + 1
+         select case (trim(args(i)))
+         case ('--quiet', '-q')
+            quiet = .true.
+         case ('--strict')
+            strict = .true.
+         case ('--advise')
+            advise = .true.
+         case ('--advise-node')
+            ios = 1
+            if (i < size(args)) read (args(i + 1), *, iostat=ios) node
+            if (ios /= 0 .or. node <= 0) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --advise-node needs a node '// &
+                  'id > 0. '//USAGE)
+               return
+            end if
+            i = i + 1
+         case ('--target-error', '--goal', '--max-dofs')
+            if (i == size(args)) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))// &
+                  ' needs a value. '//USAGE)
+               return
+            end if
+            i = i + 1
+            if (trim(args(i - 1)) == '--target-error') target = trim(args(i))
+            if (trim(args(i - 1)) == '--goal') goal = trim(args(i))
+            if (trim(args(i - 1)) == '--max-dofs') then
+               read (args(i), *, iostat=ios) max_dofs
+               if (ios /= 0 .or. max_dofs <= 0) then
+                  code = command_error(COMMAND, EXIT_INPUT, 'option --max-dofs needs a '// &
+                     'number > 0. '//USAGE)
+                  return
+               end if
+            end if
+         case ('--restart')
+            if (i == size(args)) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --restart needs the results '// &
+                  'file to continue. '//USAGE)
+               return
+            end if
+            i = i + 1
+            restart = trim(args(i))
+         case ('--stop-after-increments')
+            ! test hook: stop as if interrupted after N converged increments in all
+            ios = 1
+            if (i < size(args)) read (args(i + 1), *, iostat=ios) stop_after
+            if (ios /= 0 .or. stop_after <= 0) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option --stop-after-increments '// &
+                  'needs a number > 0. '//USAGE)
+               return
+            end if
+            i = i + 1
+         case ('-o', '--output')
+            if (i == size(args)) then
+               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
+               return
+            end if
+            i = i + 1
+            outfile = trim(args(i))
+         case ('--help', '-h')
+            write (*, '(a)') USAGE
+            write (*, '(a)') '  Runs the keyword deck DECK and writes HDF5 results (default '// &
+               'output/<deck>.h5) with an XDMF sidecar.'
+            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early '// &
+               '(or results not writable), 4 interrupted (SIGTERM, SIGINT, SIGHUP).'
+            write (*, '(a)') '  --strict: any warning (printed as "file:line: warning: ...") '// &
+               'is an input error: exit 2, no results file.'
+            write (*, '(a)') '  --target-error E: adaptive refinement (solve, estimate, '// &
+               'refine the elements with the largest indicators, re-solve) until the '// &
+               'estimated error of the goal (--goal node:N:x|y, reaction:SET[:x|y] the support '// &
+               'reactions on a node set, limit the limit load; default the energy norm) is '// &
+               'below E, or --max-dofs (default 100000) is reached; writes the last level.'
+            write (*, '(a)') '  --advise: runs the first loading step under MODIFIED_NEWTON/'// &
+               'NEWTON and x1/2, x1, x2 increments on each mesh of the adaptive sequence '// &
+               '(reference: NEWTON x2, refined until the goal''s estimated error is 0.2 %), '// &
+               'prints their cost and error and the cheapest within 1 % and 5 %; writes no results.'
+            code = EXIT_OK
+            return
+         case ('--version')
+            call print_version()
+            code = EXIT_OK
+            return
+         case default
+            if (args(i)(1:1) == '-') then
+               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
+               return
+            end if
+            if (len(deck) > 0) then
+               code = command_error(COMMAND, EXIT_INPUT, 'only one deck may be given. '//USAGE)
+               return
+            end if
+            deck = trim(args(i))
+         end select
+      end do
+      if (len(deck) == 0) then
+         code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
+         return
+      end if
+      if (advise) then
+         code = advise_main(deck, node, goal, max_dofs)
+         return
+      end if
+      if (len(target) > 0) then
+         code = adapt_main(deck, target, goal, max_dofs, outfile)
+         return
+      else if (len(goal) > 0 .or. max_dofs > 0) then
+         code = command_error(COMMAND, EXIT_INPUT, '--goal and --max-dofs need '// &
+            '--target-error. '//USAGE)
+         return
+      end if
+      code = run_deck(deck, outfile, quiet, model, problem, restart, stop_after, strict)
+   end function pecplas_main
+
+   !> Runs `deck`, writing `outfile` (empty: the deck's *OUTPUT file or output/<deck>.h5).
+   !> Returns the exit code; `model` and `problem` hold the final state (for tests).
+   !> restart: a results file of the same deck to continue from (its last converged
+   !> increment); stop_after: stop as interrupted after that many increments (test hook);
+   !> strict: warnings found before the run are input errors (exit 2, no results file).
+   integer function run_deck(deck, outfile_in, quiet, model, problem, restart, stop_after, &
+         strict) result(code)
+      character(len=*), intent(in) :: deck, outfile_in
+      logical, intent(in) :: quiet
+      character(len=*), intent(in), optional :: restart
+      integer, intent(in), optional :: stop_after
+      logical, intent(in), optional :: strict
+      type(model_t), intent(out) :: model
+      type(problem_t), intent(out) :: problem
+      type(results_file_t) :: results
+      type(joint_points_t), allocatable :: jpoints(:)
+      type(error_t), allocatable :: error
+      type(thread_setting_t) :: threads
+      character(len=:), allocatable :: status, message, outfile, warning, input, failure
+      real(wp) :: t0, t1, w0
+      integer :: nflipped
+
+      call cpu_time(t0)
+      w0 = wall_time()
+      ! Everything that can be checked is checked before a results file exists.
+      call read_deck(deck, model, error)
+      if (.not. allocated(error) .and. model%adapt%given) then
+         ! *ADAPT in the deck: the adaptive loop instead of one analysis (not for a restart)
+         if (.not. present(restart)) then
+            code = adapt_main(deck, model%adapt%target, model%adapt%goal, &
+               model%adapt%max_dofs, outfile_in)
+            return
+         else if (len(restart) == 0) then
+            code = adapt_main(deck, model%adapt%target, model%adapt%goal, &
+               model%adapt%max_dofs, outfile_in)
+            return
+         end if
+      end if
+      if (.not. allocated(error)) then
+         threads = resolve_threads(model%solver%threads)
+         call apply_threads(threads)
+         model%solver%threads = threads%n
+      end if
+      if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
+      if (.not. allocated(error)) call model%warnings%print(0)
+      if (.not. allocated(error) .and. present(strict)) then
+         if (strict) call model%warnings%as_error(error)
+      end if
+      if (.not. allocated(error) .and. present(restart)) then
+         if (len(restart) > 0) call restore_restart(restart, model, problem, error)
+      end if
+      if (present(stop_after)) problem%position%stop_after = stop_after
+      if (allocated(error)) then
+         code = command_error(COMMAND, error%exit_code(), error%text())
+         return
+      end if
+      problem%time%setup = wall_time() - w0 - problem%time%assembly - problem%time%factorisation
+      outfile = outfile_in
+      if (len(outfile) == 0) then
+         if (allocated(model%output%file)) then
+            outfile = model%output%file
+         else
+            outfile = 'output/'//path_stem(deck)//'.h5'
+         end if
+      end if
+      if (present(restart)) then
+         if (same_file(restart, outfile)) then
+            code = command_error(COMMAND, EXIT_INPUT, 'the restarted run must write another '// &
+               'file than '//restart//' (give -o NEW.h5)')
+            return
+         end if
+      end if
+      input = input_named(model, outfile)
+      if (len(input) == 0) input = input_named(model, xdmf_path(outfile))
+      if (len(input) > 0) then
+         code = command_error(COMMAND, EXIT_INPUT, 'the results file '//outfile//' (or its .xmf) '// &
+            'would overwrite the input file '//input//' of this run; choose another name with -o')
+         return
+      end if
+      call make_directories(path_dir(outfile))
+      if (.not. quiet) call banner(model, problem, deck, outfile)
+      if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
+         ' clockwise elements renumbered counter-clockwise'
+
+      ! an MPI run (doc/mpi.md): every rank runs the analysis, rank 0 alone writes the file
+      results%detached = parallel_rank() > 0
+      call results%create(outfile, model, VERSION, gauss_coordinates(model, problem), error, &
+         jpoints)
+      ! all ranks stop when rank 0 cannot create the file (the others would wait for ever)
+      if (parallel_any(allocated(error)) .and. .not. allocated(error)) call fatal_error(error, &
+         'rank 0 could not create the results file (its message is on its standard error)')
+      if (allocated(error)) then
+         code = command_error(COMMAND, EXIT_INPUT, 'cannot write results: '//error%text())
+         if (results%is_broken()) call exit_now(code)
+         return
+      end if
+      ! from here a termination signal ends the run between increments, as 'interrupted'
+      if (.not. install_signal_handlers() .and. .not. quiet) write (*, '(a)') &
+         ' note: no handler for SIGTERM/SIGINT/SIGHUP; a signal ends the run at once'
+      call run_increments(model, problem, results, quiet, status, message, error)
+      if (allocated(error)) then
+         status = 'failed'
+         message = error%text()
+      end if
+      ! a warning keeps the status and exit code; it goes to stderr, the message and the file
+      warning = large_displacement_warning(model%mesh%x, problem%state%u)
+      if (len(warning) > 0) then
+         write (0, '(a)') COMMAND//': warning: '//warning
+         if (len(message) > 0) message = message//'; '
+         message = message//'warning: '//warning
+         call model%warnings%add(warning)
+         call results%warnings(model%warnings%lines(), error)
+      end if
+      failure = results%write_failure()
+      if (.not. allocated(error)) then
+         if (len(failure) > 0) message = 'cannot write results: '//failure
+         call results%finish(status, message, error)
+      end if
+      if (allocated(error)) then
+         ! the warnings or the end of the run could not be written: what was written stays
+         call results%free()
+         if (len(failure) == 0) failure = error%text()
+         code = command_error(COMMAND, EXIT_STOPPED, 'cannot write results: '//failure// &
+            '; the increments written before are in '// &
+            results%working_path()//' (status running); '//outfile//' is untouched')
+         ! the HDF5 library's exit handler would crash on a file it could not write
+         if (results%is_broken()) call exit_now(code)
+         return
+      end if
+      call cpu_time(t1)
+      call summary(problem, threads, status, message, outfile, t1 - t0, wall_time() - w0, quiet)
+      code = EXIT_OK
+      if (status /= 'completed') code = EXIT_STOPPED
+      if (status == 'failed') code = EXIT_INTERNAL
+      if (len(failure) > 0) code = EXIT_STOPPED
+      if (status == 'interrupted') code = EXIT_INTERRUPTED
+   end function run_deck
+
+   !> --version: version, commit, compiler, linked library versions.
+   subroutine print_version()
+      character(len=:), allocatable :: lines(:)
+      integer :: i
+      lines = version_lines()
+      do i = 1, size(lines)
+         write (*, '(a)') trim(lines(i))
+      end do
+   end subroutine print_version
+
+   !> The input file of the run (deck or *INCLUDE, as listed in the deck text) that is the
+   !> file `output` (same file, whatever the spelling); '' if none.
+   function input_named(model, output) result(input)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: output
+      character(len=:), allocatable :: input
+      character(len=*), parameter :: MARK = '** ---- file: '
+      integer :: start, eol, k
+      input = ''
+      if (.not. allocated(model%deck_text)) return
+      associate (text => model%deck_text)
+         ! from one marker line to the next (a deck of 1e6 nodes has 1.5e6 lines, few markers)
+         start = 1
+         if (text(1:min(len(text), len(MARK))) /= MARK) start = marker_after(1)
+         do while (start > 0)
+            eol = index(text(start:), new_line('a'))
+            if (eol == 0) eol = len(text) - start + 2
+            if (same_file(text(start + len(MARK):start + eol - 2), output)) then
+               input = text(start + len(MARK):start + eol - 2)
+               return
+            end if
+            start = marker_after(start + eol - 1)
+         end do
+      end associate
+   contains
+      !> Start of the first marker line after position `from` of the deck text (0: none).
+      integer function marker_after(from)
+         integer, intent(in) :: from
+         k = index(model%deck_text(from:), new_line('a')//MARK)
+         marker_after = 0
+         if (k > 0) marker_after = from + k
+      end function marker_after
+   end function input_named
+
+   subroutine banner(model, problem, deck, outfile)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      character(len=*), intent(in) :: deck, outfile
+      character(len=:), allocatable :: title, units
+      integer :: i
+      title = '(untitled)'
+      if (allocated(model%title)) title = model%title
+      units = '(not stated)'
+      if (allocated(model%units)) units = model%units
+      write (*, '(a)') PROGRAM_NAME//' '//VERSION//'  deck '//deck//'  ->  '//outfile
+      write (*, '(a)') ' title: '//title//'   units: '//units
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
+         model%mesh%nelem(), '  equations ', problem%dofs%neq, '  steps ', size(model%steps), &
+         '  solver ', linear_solver_name(model), ' / ', model%solver%method
+      if (allocated(model%laws)) then
+         do i = 1, size(model%laws)
+            if (len(model%laws(i)%law%describe()) > 0) write (*, '(a)') ' law '// &
+               model%laws(i)%law%describe()
+         end do
+      end if
+      if (.not. allocated(model%joint_sets)) return
+      do i = 1, size(model%joint_sets)
+         associate (js => model%joint_sets(i))
+            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%etype// &
+               ', law '//js%law
+         end associate
+      end do
+   end subroutine banner
+
+   subroutine summary(problem, threads, status, message, outfile, cpu, wall, quiet)
+      type(problem_t), intent(in) :: problem
+      type(thread_setting_t), intent(in) :: threads
+      character(len=*), intent(in) :: status, message, outfile
+      real(wp), intent(in) :: cpu, wall
+      logical, intent(in) :: quiet
+      if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
+      flush (0)
+      if (quiet) return
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%increments, &
+         ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
+         problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', sec(cpu), ' s CPU'
+      ! which method converged the increments (doc/theory.md §4, the chain)
+      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
+         problem%by_method(1), ', quasi-Newton ', problem%by_method(2), ', Newton ', &
+         problem%by_method(3), '; under arc-length ', problem%arc_increments, &
+         '; line-search residuals ', problem%line_searches, '; singular tangents ', &
+         problem%singular_tangents, ' (elastic stiffness used)'
+      associate (t => problem%time)
+         write (*, '(a,8(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
+            sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
+            '  residual ', sec(t%residual), ' (laws ', sec(t%laws)//')', '  output ', &
+            sec(t%output), '  total ', sec(wall)
+      end associate
+      associate (t => problem%time)
+         if (t%rank_wall_max > 0.0_wp) write (*, '(a,i0,a)') ' ranks: ', parallel_size(), &
+            ', each assembles the stiffness of its own elements: wall '// &
+            sec(t%rank_wall_min)//' to '//sec(t%rank_wall_max)//' s, CPU '// &
+            sec(t%rank_cpu_min)//' to '//sec(t%rank_cpu_max)//' s'
+      end associate
+      write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
+         trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
+      if (allocated(problem%solver)) write (*, '(a)') ' linear solver: '//problem%solver%report()
+      if (problem%katona%active) then
+         associate (k => problem%katona)
+            write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &
+               ' doublets, ', k%state_iterations, ' state iterations (max ', &
+               k%max_state_iterations, ' per increment), ', k%g_builds, ' flexibility builds, ', &
+               k%frozen, ' frozen doublets, max penetration ', k%max_penetration, &
+               ', augmentation ', k%alpha, ', time flexibility ', sec(k%time_flexibility), &
+               ' s, states ', sec(k%time_states)//' s'
+         end associate
+      end if
+      write (*, '(a)') ' status: '//status//'  results: '//outfile
+   end subroutine summary
+
+   !> The BLAS whose threads were set, or a note that none was found (single-threaded BLAS).
+   function blas_name(blas) result(name)
+      character(len=*), intent(in) :: blas
+      character(len=:), allocatable :: name
+      name = blas
+      if (len(blas) == 0) name = 'without thread control'
+   end function blas_name
+
+   !> Seconds with 3 decimals and a leading zero ("0.012").
+   function sec(t) result(s)
+      real(wp), intent(in) :: t
+      character(len=:), allocatable :: s
+      character(len=24) :: buf
+      write (buf, '(f12.3)') t
+      s = trim(adjustl(buf))
+   end function sec
+
+end module pecplas_cmd_pecplas

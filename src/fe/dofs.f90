@@ -1,0 +1,112 @@
+!> Equation numbering: two DOFs per node (x/r, y/z); supports and imposed displacements are
+!> constrained and eliminated from the system of equations.
+module pecplas_fe_dofs
+   use pecplas_base_error, only: error_t, input_error
+   use pecplas_model_type, only: model_t
+   implicit none (type, external)
+   private
+
+   public :: dofs_t, new_dofs
+
+   type :: dofs_t
+      !> Number of free equations.
+      integer :: neq = 0
+      !> eq(d, node) > 0: equation number of a free DOF; 0: constrained.
+      integer, allocatable :: eq(:, :)
+      !> node and direction of each equation (for messages).
+      integer, allocatable :: eq_node(:), eq_dir(:)
+   contains
+      procedure :: describe => dofs_describe
+   end type dofs_t
+
+contains
+
+   !> Numbers the free DOFs node by node (keeps the bandwidth of the mesh numbering; the
+   !> sparse solvers reorder anyway). Supports and DISPLACEMENT patterns are constrained.
+   subroutine new_dofs(model, dofs, error)
+      type(model_t), intent(in) :: model
+      type(dofs_t), intent(out) :: dofs
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: fixed(:, :)
+      integer :: i, k, n, d
+
+      n = model%mesh%nnode()
+      ! Nodes of no element carry no stiffness: they are not unknowns (and not a mechanism).
+      allocate (fixed(2, n), source=.true.)
+      do i = 1, size(model%mesh%esets)
+         associate (conn => model%mesh%esets(i)%conn)
+            do k = 1, size(conn, 2)
+               do d = 1, size(conn, 1)
+                  fixed(:, conn(d, k)) = .false.
+               end do
+            end do
+         end associate
+      end do
+      ! joint nodes are unknowns too (a joint face may carry no massif element)
+      if (allocated(model%joint_sets)) then
+         do i = 1, size(model%joint_sets)
+            do k = 1, size(model%joint_sets(i)%conn, 2)
+               fixed(:, model%joint_sets(i)%conn(:, k)) = .false.
+            end do
+         end do
+      end if
+      if (allocated(model%supports%node)) then
+         do k = 1, size(model%supports%node)
+            fixed(model%supports%dof(k), model%supports%node(k)) = .true.
+         end do
+      end if
+      if (allocated(model%patterns)) then
+         do i = 1, size(model%patterns)
+            if (model%patterns(i)%kind /= 'DISPLACEMENT') cycle
+            do k = 1, size(model%patterns(i)%node)
+               fixed(model%patterns(i)%dof(k), model%patterns(i)%node(k)) = .true.
+            end do
+         end do
+      end if
+      allocate (dofs%eq(2, n), source=0)
+      dofs%neq = count(.not. fixed)
+      if (dofs%neq == 0) then
+         call input_error(error, 'every degree of freedom is constrained: nothing to solve')
+         return
+      end if
+      allocate (dofs%eq_node(dofs%neq), dofs%eq_dir(dofs%neq))
+      k = 0
+      do i = 1, n
+         do d = 1, 2
+            if (fixed(d, i)) cycle
+            k = k + 1
+            dofs%eq(d, i) = k
+            dofs%eq_node(k) = i
+            dofs%eq_dir(k) = d
+         end do
+      end do
+   end subroutine new_dofs
+
+   !> "node 12 (x = 0.5, y = 1) direction y" for equation `k`.
+   function dofs_describe(this, model, k) result(text)
+      class(dofs_t), intent(in) :: this
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      character(len=120) :: buf
+      character(len=1), parameter :: names(2) = ['x', 'y']
+      character(len=1), parameter :: axi_names(2) = ['r', 'z']
+      integer :: node
+      if (k < 1 .or. k > this%neq) then
+         text = 'an unknown equation'
+         return
+      end if
+      node = this%eq_node(k)
+      if (model%analysis%kind == 2) then
+         write (buf, '(a,i0,a,g0.6,a,g0.6,a,a)') 'node ', model%mesh%node_id(node), ' (r = ', &
+            model%mesh%x(1, node), ', z = ', model%mesh%x(2, node), ') direction ', &
+            axi_names(this%eq_dir(k))
+      else
+         write (buf, '(a,i0,a,g0.6,a,g0.6,a,a)') 'node ', model%mesh%node_id(node), ' (x = ', &
+            model%mesh%x(1, node), ', y = ', model%mesh%x(2, node), ') direction ', &
+            names(this%eq_dir(k))
+      end if
+      text = trim(buf)
+   end function dofs_describe
+
+end module pecplas_fe_dofs

@@ -1,0 +1,96 @@
+!> Nodal vectors of the load patterns at factor 1: consistent forces (point forces,
+!> edge pressures, body forces, gravity) and imposed displacements.
+module pecplas_fe_loads
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_fe_element_context, only: element_context
+   use pecplas_massif_kinematics, only: massif_rule_t
+   use pecplas_massif_element_matrices, only: massif_body_force
+   use pecplas_massif_edge_load, only: edge_pressure_forces
+   implicit none (type, external)
+   private
+
+   public :: pattern_vectors
+
+contains
+
+   !> force(2, nnode, npattern) and displacement(2, nnode, npattern) of every pattern.
+   subroutine pattern_vectors(model, rules, force, displacement, error)
+      type(model_t), intent(in) :: model
+      type(massif_rule_t), intent(in) :: rules(:)
+      real(wp), allocatable, intent(out) :: force(:, :, :), displacement(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, k, nnode, npat, nen
+      real(wp) :: fe(6)
+
+      nnode = model%mesh%nnode()
+      npat = 0
+      if (allocated(model%patterns)) npat = size(model%patterns)
+      allocate (force(2, nnode, npat), displacement(2, nnode, npat), source=0.0_wp)
+      do p = 1, npat
+         associate (pat => model%patterns(p))
+            select case (pat%kind)
+            case ('FORCE')
+               do k = 1, size(pat%node)
+                  force(pat%dof(k), pat%node(k), p) = force(pat%dof(k), pat%node(k), p) + pat%value(k)
+               end do
+            case ('DISPLACEMENT')
+               do k = 1, size(pat%node)
+                  displacement(pat%dof(k), pat%node(k), p) = pat%value(k)
+               end do
+            case ('PRESSURE')
+               do k = 1, size(pat%pressure)
+                  nen = merge(3, 2, pat%edge(3, k) > 0)
+                  call edge_pressure_forces(model%analysis%kind, model%analysis%thickness, &
+                     model%mesh%x(:, pat%edge(1:nen, k)), pat%pressure(k), fe(1:2*nen), error)
+                  if (allocated(error)) return
+                  force(:, pat%edge(1:nen, k), p) = force(:, pat%edge(1:nen, k), p) + &
+                     reshape(fe(1:2*nen), [2, nen])
+               end do
+            case ('BODY_FORCE', 'GRAVITY')
+               do k = 1, size(pat%eset)
+                  call add_body_force(model, rules, pat%eset(k), pat%vector(:, k), &
+                     pat%kind == 'GRAVITY', force(:, :, p), error)
+                  if (allocated(error)) return
+               end do
+            end select
+         end associate
+      end do
+   end subroutine pattern_vectors
+
+   !> Consistent nodal forces of a body force per unit volume `vec` (or, for gravity, of
+   !> the material unit weight times the direction `vec`) over element set `s`.
+   subroutine add_body_force(model, rules, s, vec, gravity, force, error)
+      type(model_t), intent(in) :: model
+      type(massif_rule_t), intent(in) :: rules(:)
+      integer, intent(in) :: s
+      real(wp), intent(in) :: vec(2)
+      logical, intent(in) :: gravity
+      real(wp), intent(inout) :: force(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: xe(:, :), fe(:)
+      real(wp) :: bf(2)
+      integer :: e, j, nn
+
+      associate (set => model%mesh%esets(s))
+         bf = vec
+         if (gravity) bf = vec*model%materials(set%material_index)%m%unit_weight
+         nn = rules(s)%nnode
+         allocate (xe(2, nn), fe(2*nn))
+         do e = 1, size(set%conn, 2)
+            xe = model%mesh%x(:, set%conn(:, e))
+            call massif_body_force(rules(s), model%analysis%kind, model%analysis%thickness, &
+               xe, bf, fe, error)
+            if (allocated(error)) then
+               call element_context(error, model, s, e)
+               return
+            end if
+            do j = 1, nn
+               force(:, set%conn(j, e)) = force(:, set%conn(j, e)) + fe(2*j - 1:2*j)
+            end do
+         end do
+      end associate
+   end subroutine add_body_force
+
+end module pecplas_fe_loads

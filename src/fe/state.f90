@@ -1,0 +1,68 @@
+!> Integration-point state of the massif elements: converged values (end of the last
+!> converged increment) and trial values (current iterate). Kept apart from the model so
+!> the model stays intent(in).
+module pecplas_fe_state
+   use pecplas_base_kinds, only: wp
+   use pecplas_joints_state, only: joint_state_t
+   implicit none (type, external)
+   private
+
+   public :: set_state_t, fe_state_t
+
+   !> Per element set: arrays (component, gauss point, element).
+   type :: set_state_t
+      integer :: ngauss = 0
+      !> Integration rule of the set (reference coordinates and weights).
+      real(wp), allocatable :: xi(:, :), w(:)
+      real(wp), allocatable :: stress(:, :, :), strain(:, :, :), hist(:, :, :)
+      real(wp), allocatable :: stress_trial(:, :, :), strain_trial(:, :, :), hist_trial(:, :, :)
+      !> Consistent tangent at each point from the last trial update (4, 4, ngauss, nel);
+      !> not allocated when the set's material has a constant tangent (linear elastic: its
+      !> elastic tangent is used, 16 values per point less to store and stream).
+      real(wp), allocatable :: tangent(:, :, :, :)
+   end type set_state_t
+
+   type :: fe_state_t
+      !> Converged nodal displacements (2, nnode).
+      real(wp), allocatable :: u(:, :)
+      !> Factors of the load patterns at the converged state.
+      real(wp), allocatable :: factors(:)
+      type(set_state_t), allocatable :: sets(:)
+      !> Joint sets (PECJOIN), committed and rolled back with the massif.
+      type(joint_state_t) :: joints
+   contains
+      procedure :: commit => state_commit
+      procedure :: rollback => state_rollback
+   end type fe_state_t
+
+contains
+
+   !> Accepts the trial values of every point (end of a converged increment).
+   subroutine state_commit(this)
+      class(fe_state_t), intent(inout) :: this
+      integer :: s
+      do s = 1, size(this%sets)
+         associate (st => this%sets(s))
+            st%stress = st%stress_trial
+            st%strain = st%strain_trial
+            st%hist = st%hist_trial
+         end associate
+      end do
+      call this%joints%commit()
+   end subroutine state_commit
+
+   !> Discards the trial values (an increment that is cut).
+   subroutine state_rollback(this)
+      class(fe_state_t), intent(inout) :: this
+      integer :: s
+      do s = 1, size(this%sets)
+         associate (st => this%sets(s))
+            st%stress_trial = st%stress
+            st%strain_trial = st%strain
+            st%hist_trial = st%hist
+         end associate
+      end do
+      call this%joints%rollback()
+   end subroutine state_rollback
+
+end module pecplas_fe_state

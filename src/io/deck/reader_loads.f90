@@ -1,0 +1,210 @@
+!> Deck handlers for *BOUNDARY and *LOAD. Targets (node ids, set names) are kept as
+!> written and resolved by pecplas_io_deck_resolve_loads once the mesh is built.
+module pecplas_io_deck_reader_loads
+   use pecplas_base_kinds, only: wp
+   use pecplas_io_deck_caps, only: MAX_LOAD_MAGNITUDE
+   use pecplas_base_error, only: error_t
+   use pecplas_io_text_fields, only: deck_line_t, field_t, split_fields, field_real, check_count, &
+      parse_int, same_name, upper, add_name
+   use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_pattern_t, &
+      line_error, where_text, push_item
+   use pecplas_io_deck_reader_mesh, only: check_name, no_data_error
+   use pecplas_model_loads, only: LOAD_KINDS
+   implicit none (type, external)
+   private
+
+   public :: read_boundary, read_load, parse_dofs
+
+contains
+
+   !> *BOUNDARY -- data: target, dof_first[, dof_last] | target, X|Y|R|Z|XY|ALL
+   subroutine read_boundary(state, block, error)
+      type(deck_state_t), intent(inout) :: state
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      type(field_t), allocatable :: f(:)
+      type(raw_item_t) :: item
+      integer :: i
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
+      if (allocated(error)) return
+      call no_data_error(state, block, 'target, dof_first[, dof_last]', error)
+      if (allocated(error)) return
+      do i = block%first, block%last
+         call split_fields(state%lines%text(i), f)
+         call check_count(state%lines%get(i), f, 2, 3, 'target, dof_first[, dof_last]', error)
+         if (allocated(error)) return
+         item%target = f(1)%s
+         item%at = i
+         if (size(f) == 2) then
+            call parse_dofs(state, i, f(2)%s, '', item%dof, error)
+         else
+            call parse_dofs(state, i, f(2)%s, f(3)%s, item%dof, error)
+         end if
+         if (allocated(error)) return
+         call push_item(state%boundary, state%nboundary, item)
+      end do
+   end subroutine read_boundary
+
+   !> Dof range from `first` [`last`]: 1, 2 or X, Y, R, Z (one dof), XY, ALL (both).
+   subroutine parse_dofs(state, at, first, last, dof, error)
+      type(deck_state_t), intent(in) :: state
+      integer, intent(in) :: at
+      character(len=*), intent(in) :: first, last
+      integer, intent(out) :: dof(2)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: HINT = ': expected 1 (x, r), 2 (y, z) or one of '// &
+         'X Y R Z XY ALL'
+      integer :: d
+      logical :: ok
+      select case (upper(first))
+      case ('1', 'X', 'R')
+         dof = 1
+      case ('2', 'Y', 'Z')
+         dof = 2
+      case ('XY', 'ALL')
+         dof = [1, 2]
+      case default
+         call line_error(state, at, "bad dof '"//first//"'"//HINT, error)
+         return
+      end select
+      if (len(last) == 0) return
+      call parse_int(last, d, ok)
+      if (.not. ok .or. d < 1 .or. d > 2 .or. verify(first, '12') /= 0) then
+         call line_error(state, at, "bad dof range '"//first//', '//last// &
+            "': expected dof_first, dof_last with 1 <= dof_first <= dof_last <= 2", error)
+         return
+      end if
+      if (d < dof(1)) then
+         call line_error(state, at, "bad dof range '"//first//', '//last// &
+            "': dof_last must not be smaller than dof_first", error)
+         return
+      end if
+      dof(2) = d
+   end subroutine parse_dofs
+
+   !> *LOAD, NAME=name, TYPE=FORCE|PRESSURE|BODY_FORCE|GRAVITY|DISPLACEMENT
+   subroutine read_load(state, block, error)
+      type(deck_state_t), intent(inout) :: state
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      type(deck_line_t) :: kwline
+      type(raw_pattern_t) :: pat
+      type(raw_pattern_t), allocatable :: tmp(:)
+      character(len=:), allocatable :: kind, list, form
+      integer :: i, n
+      kwline = state%lines%get(block%at)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'NAME', pat%name, error)
+      if (allocated(error)) return
+      call block%kw%require(kwline, 'TYPE', kind, error)
+      if (allocated(error)) return
+      call check_name(state, block%at, pat%name, error)
+      if (allocated(error)) return
+      pat%kind = upper(kind)
+      if (.not. any(LOAD_KINDS == pat%kind)) then
+         list = ''
+         do i = 1, size(LOAD_KINDS)
+            call add_name(list, trim(LOAD_KINDS(i)))
+         end do
+         call line_error(state, block%at, "unknown load type '"//kind//"'; known types:"// &
+            list, error)
+         return
+      end if
+      if (.not. allocated(state%patterns)) allocate (state%patterns(0))
+      n = size(state%patterns)
+      do i = 1, n
+         if (same_name(state%patterns(i)%name, pat%name)) then
+            call line_error(state, block%at, "load pattern '"//pat%name// &
+               "' is defined twice (first at "//where_text(state, state%patterns(i)%at)//')', error)
+            return
+         end if
+      end do
+      pat%at = block%at
+      select case (pat%kind)
+      case ('FORCE', 'DISPLACEMENT')
+         form = 'target, dof, value'
+      case ('PRESSURE')
+         form = 'edge_set, value'
+      case ('BODY_FORCE')
+         form = 'element_set|ALL, bx, by'
+      case default
+         form = 'element_set|ALL[, dx, dy]'
+      end select
+      call no_data_error(state, block, form, error)
+      if (allocated(error)) return
+      do i = block%first, block%last
+         call read_load_line(state, i, pat, form, error)
+         if (allocated(error)) return
+      end do
+      allocate (tmp(n + 1))
+      tmp(1:n) = state%patterns
+      tmp(n + 1) = pat
+      call move_alloc(tmp, state%patterns)
+   end subroutine read_load
+
+   subroutine read_load_line(state, at, pat, form, error)
+      type(deck_state_t), intent(in) :: state
+      integer, intent(in) :: at
+      type(raw_pattern_t), intent(inout) :: pat
+      character(len=*), intent(in) :: form
+      type(error_t), allocatable, intent(out) :: error
+      type(field_t), allocatable :: f(:)
+      type(raw_item_t) :: item
+      real(wp) :: norm
+      allocate (f(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
+      call split_fields(state%lines%text(at), f)
+      call check_count(state%lines%get(at), f, 1, 3, form, error)
+      if (allocated(error)) return
+      item%at = at
+      item%target = f(1)%s
+      select case (pat%kind)
+      case ('FORCE', 'DISPLACEMENT')
+         call check_count(state%lines%get(at), f, 3, 3, form, error)
+         if (allocated(error)) return
+         call parse_dofs(state, at, f(2)%s, '', item%dof, error)
+         if (allocated(error)) return
+         if (item%dof(1) /= item%dof(2)) then
+            call line_error(state, at, "bad dof '"//f(2)%s//"': a "//pat%kind// &
+               ' line takes one dof: 1, 2, X, Y, R or Z', error)
+            return
+         end if
+         call field_real(state%lines%get(at), f, 3, 'value', item%value(1), error)
+      case ('PRESSURE')
+         call check_count(state%lines%get(at), f, 2, 2, form, error)
+         if (allocated(error)) return
+         call field_real(state%lines%get(at), f, 2, 'pressure', item%value(1), error)
+      case ('BODY_FORCE')
+         call check_count(state%lines%get(at), f, 3, 3, form, error)
+         if (allocated(error)) return
+         call field_real(state%lines%get(at), f, 2, 'bx', item%value(1), error)
+         if (allocated(error)) return
+         call field_real(state%lines%get(at), f, 3, 'by', item%value(2), error)
+      case default
+         if (size(f) == 1) then
+            item%value = [0.0_wp, -1.0_wp]
+         else
+            call check_count(state%lines%get(at), f, 3, 3, form, error)
+            if (allocated(error)) return
+            call field_real(state%lines%get(at), f, 2, 'dx', item%value(1), error)
+            if (allocated(error)) return
+            call field_real(state%lines%get(at), f, 3, 'dy', item%value(2), error)
+            if (allocated(error)) return
+            norm = norm2(item%value)
+            if (.not. (norm > 0.0_wp)) then
+               call line_error(state, at, 'GRAVITY direction (dx, dy) must not be zero', error)
+               return
+            end if
+            item%value = item%value/norm
+         end if
+      end select
+      if (allocated(error)) return
+      if (any(abs(item%value) > MAX_LOAD_MAGNITUDE)) then
+         call line_error(state, at, 'load value above 1e100 in magnitude (see doc/deck.md, '// &
+            'Limits)', error)
+         return
+      end if
+      call push_item(pat%items, pat%n, item)
+   end subroutine read_load_line
+
+end module pecplas_io_deck_reader_loads

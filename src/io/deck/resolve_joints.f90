@@ -1,0 +1,272 @@
+!> Resolves the *JOINTS blocks once the mesh, supports and patterns are built: the law of
+!> each set, explicit joints (node ids, coincident doublets, orientation against the bodies
+!> they join) and generated joints (node doublets created along EDGES for the body SIDE,
+!> pecplas_model_mesh_split). Splitting nodes also updates what referred to them:
+!> - a support or an imposed displacement on a split node also holds its duplicate (the
+!>   doublet sits at one point, both bodies are held there);
+!> - point forces stay on the original node (a load is not doubled);
+!> - pressures on sides of the SIDE body move to the duplicates; node sets gain them.
+!> Springs get their tributary measure and tangent from the joint edges around them.
+module pecplas_io_deck_resolve_joints
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_io_text_fields, only: same_name, add_name, itoa
+   use pecplas_io_deck_state, only: deck_state_t, line_error, where_text
+   use pecplas_io_deck_raw_joints, only: raw_joint_set_t
+   use pecplas_io_deck_repeats, only: first_repeat
+   use pecplas_model_type, only: model_t
+   use pecplas_model_joints, only: joint_set_t
+   use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
+   use pecplas_joints_elements_tributary, only: spring_tributaries
+   use pecplas_io_deck_resolve_explicit, only: explicit_joints
+   use pecplas_joints_laws_katona, only: is_katona
+   implicit none (type, external)
+   private
+
+   public :: resolve_joints
+
+   real(wp), parameter :: PI = acos(-1.0_wp)
+
+contains
+
+   !> Fills model%joint_sets (deck order); model%laws is allocated even when empty.
+   subroutine resolve_joints(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      type(joint_set_t), allocatable :: tmp(:)
+      type(joint_set_t) :: set
+      integer, allocatable :: origin(:), ids(:), at(:)
+      integer :: r, n, i, next_id, dup(2)
+      if (.not. allocated(model%laws)) allocate (model%laws(0))
+      if (.not. allocated(model%joint_sets)) allocate (model%joint_sets(0))
+      if (.not. allocated(state%joint_sets)) return
+      origin = [(i, i=1, model%mesh%nnode())]
+      allocate (ids(0), at(0))
+      do i = 1, size(model%mesh%esets)
+         ids = [ids, model%mesh%esets(i)%ids]
+      end do
+      at = [(0, i=1, size(ids))]
+      next_id = 0
+      if (size(ids) > 0) next_id = maxval(ids)
+      do r = 1, size(state%joint_sets)
+         associate (raw => state%joint_sets(r))
+            do i = 1, raw%n
+               next_id = max(next_id, raw%ids(i))
+            end do
+         end associate
+      end do
+      do r = 1, size(state%joint_sets)
+         call one_set(state, model, state%joint_sets(r), origin, next_id, set, error)
+         if (allocated(error)) return
+         n = size(model%joint_sets)
+         allocate (tmp(n + 1))
+         tmp(1:n) = model%joint_sets
+         tmp(n + 1) = set
+         call move_alloc(tmp, model%joint_sets)
+         ids = [ids, set%ids]
+         if (state%joint_sets(r)%n > 0) then
+            at = [at, state%joint_sets(r)%where]
+         else
+            at = [at, spread(state%joint_sets(r)%at, 1, size(set%ids))]
+         end if
+      end do
+      dup = first_repeat(ids)
+      if (dup(2) > 0) then
+         if (at(dup(1)) > 0) then
+            call line_error(state, at(dup(2)), 'duplicate element id '//itoa(ids(dup(2)))// &
+               ' (first defined at '//where_text(state, at(dup(1)))//')', error)
+         else
+            call line_error(state, at(dup(2)), 'duplicate element id '//itoa(ids(dup(2)))// &
+               ': a massif element has it already (ids are unique over the model)', error)
+         end if
+      end if
+   end subroutine resolve_joints
+
+   subroutine one_set(state, model, raw, origin, next_id, set, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, allocatable, intent(inout) :: origin(:)
+      integer, intent(inout) :: next_id
+      type(joint_set_t), intent(out) :: set
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: edges(:, :)
+      character(len=:), allocatable :: msg
+      integer :: i, bad
+      set%name = raw%name
+      set%etype = raw%etype
+      set%law = raw%law
+      set%integration = raw%integration
+      set%thickness = raw%thickness
+      do i = 1, size(model%laws)
+         if (same_name(model%laws(i)%law%name, raw%law)) set%law_index = i
+      end do
+      if (set%law_index == 0) then
+         call line_error(state, raw%at, "undefined interface law '"//raw%law// &
+            "'; known laws:"//law_names(model), error)
+         return
+      end if
+      ! a thin layer hands its law strains (jump / THICKNESS): the law must accept them
+      if (set%etype == 'THIN_LAYER') then
+         msg = model%laws(set%law_index)%law%strain_refusal()
+         if (len(msg) > 0) then
+            call line_error(state, raw%at, "joint set '"//set%name//"': a THIN_LAYER joint "// &
+               "passes strains (jump / THICKNESS) to its law, but law '"//raw%law//"': "// &
+               msg//"; use GOODMAN4, GOODMAN6 or SPRING joints", error)
+            return
+         end if
+      end if
+      if (len(raw%edges) > 0) then
+         call generated(state, model, raw, origin, next_id, set, edges, error)
+      else
+         ! Katona doublets may start apart (node-to-node contact with an initial gap)
+         call explicit_joints(state, model, raw, set, edges, error, &
+            allow_gap=is_katona(model%laws(set%law_index)%law))
+      end if
+      if (allocated(error)) return
+      if (set%etype /= 'SPRING') return
+      allocate (set%tributary(size(set%conn, 2)), set%tangent(2, size(set%conn, 2)))
+      call spring_tributaries(model%mesh%x, model%analysis%kind, model%analysis%thickness, &
+         set%conn(1, :), edges, set%tributary, set%tangent, bad, error)
+      if (allocated(error)) then
+         ! the message is copied first: line_error's intent(out) error is freed on entry
+         msg = "joint set '"//set%name//"', spring "//itoa(set%ids(bad))//' at node '// &
+            itoa(model%mesh%node_id(set%conn(1, bad)))//': '//error%message
+         call line_error(state, spring_line(raw, bad), msg, error)
+         return
+      end if
+      if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
+         sin(raw%angle*PI/180.0_wp)], 2, size(set%conn, 2))
+   end subroutine one_set
+
+   !> ' a b' names of the interface laws (for messages).
+   function law_names(model) result(list)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: list
+      integer :: i
+      list = ''
+      do i = 1, size(model%laws)
+         call add_name(list, model%laws(i)%law%name)
+      end do
+      if (len(list) == 0) list = ' (none: define one with *INTERFACE_LAW, NAME=..., TYPE=...)'
+   end function law_names
+
+   !> ' a b' names of the edge sets (edges) or element sets (for messages).
+   function set_names(model, edges) result(list)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: edges
+      character(len=:), allocatable :: list
+      integer :: i
+      list = ''
+      if (edges) then
+         do i = 1, size(model%mesh%edge_sets)
+            call add_name(list, model%mesh%edge_sets(i)%name)
+         end do
+      else
+         do i = 1, size(model%mesh%esets)
+            call add_name(list, model%mesh%esets(i)%name)
+         end do
+      end if
+      if (len(list) == 0) list = ' (none)'
+   end function set_names
+
+   pure integer function spring_line(raw, k) result(at)
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, intent(in) :: k
+      at = raw%at
+      if (raw%n >= k .and. k > 0) at = raw%where(k)
+   end function spring_line
+
+   !> EDGES=, SIDE=: splits the mesh and builds the set; edges(nen, m) = face-1 joint edges.
+   subroutine generated(state, model, raw, origin, next_id, set, edges, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, allocatable, intent(inout) :: origin(:)
+      integer, intent(inout) :: next_id
+      type(joint_set_t), intent(inout) :: set
+      integer, allocatable, intent(out) :: edges(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(split_result_t) :: res
+      type(error_t), allocatable :: e
+      integer, allocatable :: dupof(:)
+      integer :: ke, ks, nen, nn0, i
+      ke = model%mesh%find_edge_set(raw%edges)
+      if (ke == 0) then
+         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
+            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
+         return
+      end if
+      ks = model%mesh%find_eset(raw%side)
+      if (ks == 0) then
+         call line_error(state, raw%at, "undefined element set '"//raw%side// &
+            "' in SIDE=; known element sets:"//set_names(model, .false.), error)
+         return
+      end if
+      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
+      if ((set%etype == 'GOODMAN4' .and. nen /= 2) .or. (set%etype == 'GOODMAN6' .and. &
+          nen /= 3)) then
+         call line_error(state, raw%at, set%etype//" joints need "// &
+            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
+            //raw%edges//"' has "//itoa(nen)//'-node edges: use '// &
+            trim(merge('GOODMAN6', 'GOODMAN4', nen == 3))//' (or THIN_LAYER, SPRING)', error)
+         return
+      end if
+      nn0 = model%mesh%nnode()
+      call split_along_edges(model%mesh, ke, ks, origin, res, e)
+      if (allocated(e)) then
+         call line_error(state, raw%at, e%message, error)
+         return
+      end if
+      allocate (dupof(nn0), source=0)
+      do i = 1, size(res%created, 2)
+         dupof(res%created(1, i)) = res%created(2, i)
+      end do
+      call extend_to_duplicates(model, ks, dupof)
+      if (set%etype == 'SPRING') then
+         set%conn = res%doublets
+      else
+         set%conn = res%conn
+      end if
+      edges = res%conn([1, 2], :)
+      if (nen == 3) edges = res%conn([1, 2, 5], :)
+      set%ids = [(next_id + i, i=1, size(set%conn, 2))]
+      next_id = next_id + size(set%conn, 2)
+   end subroutine generated
+
+   !> Supports and imposed displacements on split nodes also hold the duplicates; pressure
+   !> edges on SIDE-only sides move to them (point forces stay where they were given).
+   subroutine extend_to_duplicates(model, ks, dupof)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: ks, dupof(:)
+      integer :: k, p, n
+      associate (sup => model%supports)
+         if (allocated(sup%node)) then
+            n = size(sup%node)
+            do k = 1, n
+               if (dupof(sup%node(k)) == 0) cycle
+               sup%node = [sup%node, dupof(sup%node(k))]
+               sup%dof = [sup%dof, sup%dof(k)]
+            end do
+         end if
+      end associate
+      if (.not. allocated(model%patterns)) return
+      do p = 1, size(model%patterns)
+         associate (pat => model%patterns(p))
+            select case (pat%kind)
+            case ('DISPLACEMENT')
+               n = size(pat%node)
+               do k = 1, n
+                  if (dupof(pat%node(k)) == 0) cycle
+                  pat%node = [pat%node, dupof(pat%node(k))]
+                  pat%dof = [pat%dof, pat%dof(k)]
+                  pat%value = [pat%value, pat%value(k)]
+               end do
+            case ('PRESSURE')
+               call remap_side_edges(model%mesh, ks, dupof, pat%edge)
+            end select
+         end associate
+      end do
+   end subroutine extend_to_duplicates
+end module pecplas_io_deck_resolve_joints

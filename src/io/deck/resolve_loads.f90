@@ -1,0 +1,277 @@
+!> Resolves *BOUNDARY, *LOAD and *STEP references once the mesh is built: node ids and
+!> node sets become (node, dof) lists, edge sets become edges, element set names become
+!> indices, pattern names in steps become pattern indices.
+module pecplas_io_deck_resolve_loads
+   use pecplas_base_error, only: error_t
+   use pecplas_io_text_fields, only: parse_int, same_name, upper, add_name
+   use pecplas_io_deck_state, only: deck_state_t, raw_item_t, raw_step_t, line_error
+   use pecplas_model_type, only: model_t
+   use pecplas_model_mesh, only: mesh_t
+   use pecplas_model_loads, only: load_pattern_t, step_t
+   use pecplas_base_strings, only: itoa
+   implicit none (type, external)
+   private
+
+   public :: resolve_supports, resolve_patterns, resolve_steps
+
+contains
+
+   !> Internal node numbers of a target: a node id or a node-set name.
+   subroutine target_nodes(state, mesh, item, nodes, error)
+      type(deck_state_t), intent(in) :: state
+      type(mesh_t), intent(in) :: mesh
+      type(raw_item_t), intent(in) :: item
+      integer, allocatable, intent(out) :: nodes(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: id, k
+      logical :: is_id
+      call parse_int(item%target, id, is_id)
+      if (is_id) then
+         k = state%node_lookup%index(id)
+         if (k == 0) then
+            call line_error(state, item%at, 'undefined node '//item%target// &
+               ': no *NODES line defines it', error)
+            return
+         end if
+         nodes = [k]
+         return
+      end if
+      k = mesh%find_nset(item%target)
+      if (k == 0) then
+         call line_error(state, item%at, "undefined node set '"//item%target// &
+            "'; known node sets:"//nset_names(mesh), error)
+         return
+      end if
+      nodes = mesh%nsets(k)%nodes
+   end subroutine target_nodes
+
+   !> Fixed dofs, each (node, dof) once.
+   subroutine resolve_supports(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: fixed(:, :)
+      integer, allocatable :: nodes(:)
+      integer :: i, j, d
+      allocate (fixed(2, model%mesh%nnode()))
+      fixed = .false.
+      do i = 1, state%nboundary
+         call target_nodes(state, model%mesh, state%boundary(i), nodes, error)
+         if (allocated(error)) return
+         do j = 1, size(nodes)
+            do d = state%boundary(i)%dof(1), state%boundary(i)%dof(2)
+               fixed(d, nodes(j)) = .true.
+            end do
+         end do
+      end do
+      model%supports%node = [((j, d=1, count(fixed(:, j))), j=1, size(fixed, 2))]
+      model%supports%dof = pack(spread([1, 2], 2, size(fixed, 2)), fixed)
+   end subroutine resolve_supports
+
+   !> model%patterns from the *LOAD blocks: node sets expanded to (node, dof) entries,
+   !> edge sets to edges (3, n), element set names (or ALL) to indices.
+   subroutine resolve_patterns(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, i
+      allocate (model%patterns(0))
+      if (.not. allocated(state%patterns)) return
+      deallocate (model%patterns)
+      allocate (model%patterns(size(state%patterns)))
+      do p = 1, size(state%patterns)
+         associate (raw => state%patterns(p), pat => model%patterns(p))
+            pat%name = raw%name
+            pat%kind = raw%kind
+            allocate (pat%node(0), pat%dof(0), pat%value(0), pat%edge(3, 0), pat%pressure(0), &
+               pat%eset(0), pat%vector(2, 0))
+            do i = 1, raw%n
+               call add_item(state, model%mesh, raw%kind, raw%items(i), pat, error)
+               if (allocated(error)) return
+            end do
+         end associate
+      end do
+   end subroutine resolve_patterns
+
+   subroutine add_item(state, mesh, kind, item, pat, error)
+      type(deck_state_t), intent(in) :: state
+      type(mesh_t), intent(in) :: mesh
+      character(len=*), intent(in) :: kind
+      type(raw_item_t), intent(in) :: item
+      type(load_pattern_t), intent(inout) :: pat
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: nodes(:), sets(:), edges(:, :)
+      integer :: k, n
+      select case (kind)
+      case ('FORCE', 'DISPLACEMENT')
+         call target_nodes(state, mesh, item, nodes, error)
+         if (allocated(error)) return
+         n = size(nodes)
+         pat%node = [pat%node, nodes]
+         pat%dof = [pat%dof, spread(item%dof(1), 1, n)]
+         pat%value = [pat%value, spread(item%value(1), 1, n)]
+      case ('PRESSURE')
+         k = mesh%find_edge_set(item%target)
+         if (k == 0) then
+            call line_error(state, item%at, "undefined edge set '"//item%target// &
+               "'; known edge sets:"//edge_set_names(mesh), error)
+            return
+         end if
+         ! pattern edges are (3, n), third node 0 on linear sides
+         associate (en => mesh%edge_sets(k)%nodes)
+            n = size(en, 2)
+            allocate (edges(3, n))
+            edges = 0
+            edges(1:size(en, 1), :) = en
+         end associate
+         pat%edge = reshape([pat%edge, edges], [3, size(pat%edge, 2) + n])
+         pat%pressure = [pat%pressure, spread(item%value(1), 1, n)]
+      case default
+         if (upper(item%target) == 'ALL') then
+            allocate (sets(size(mesh%esets)))
+            sets = [(k, k=1, size(mesh%esets))]
+         else
+            k = mesh%find_eset(item%target)
+            if (k == 0) then
+               call line_error(state, item%at, "undefined element set '"//item%target// &
+                  "'; known element sets:"//eset_names(mesh)//' (or ALL)', error)
+               return
+            end if
+            allocate (sets(1))
+            sets(1) = k
+         end if
+         n = size(sets)
+         pat%eset = [pat%eset, sets]
+         pat%vector = reshape([pat%vector, spread(item%value, 2, n)], [2, size(pat%vector, 2) + n])
+      end select
+   end subroutine add_item
+
+   !> model%steps from the *STEP blocks: pattern names to indices, each at most once.
+   subroutine resolve_steps(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer :: s, i, k, p
+      allocate (model%steps(size(state%steps)))
+      do s = 1, size(state%steps)
+         associate (raw => state%steps(s), step => model%steps(s))
+            step%name = raw%name
+            step%increments = raw%increments
+            step%file = state%lines%file(raw%at)
+            step%line = state%lines%line(raw%at)
+            step%arc_length = raw%arc_length
+            step%max_increments = raw%max_increments
+            step%iterations_wanted = raw%iterations_wanted
+            step%min_length = raw%min_length
+            step%max_length = raw%max_length
+            step%dof = raw%dof
+            step%displacement = raw%displacement
+            allocate (step%pattern(raw%n), step%target(raw%n))
+            do i = 1, raw%n
+               p = 0
+               do k = 1, size(model%patterns)
+                  if (same_name(model%patterns(k)%name, raw%items(i)%target)) p = k
+               end do
+               if (p == 0) then
+                  call line_error(state, raw%items(i)%at, "undefined load pattern '"// &
+                     raw%items(i)%target//"'; known patterns:"//pattern_names(model%patterns), &
+                     error)
+                  return
+               end if
+               if (any(step%pattern(1:i - 1) == p)) then
+                  call line_error(state, raw%items(i)%at, "load pattern '"// &
+                     raw%items(i)%target//"' is named twice in step '"//raw%name//"'", error)
+                  return
+               end if
+               step%pattern(i) = p
+               step%target(i) = raw%items(i)%value(1)
+            end do
+            if (raw%arc_length) then
+               call resolve_arc_step(state, model, raw, step, error)
+               if (allocated(error)) return
+            end if
+         end associate
+      end do
+   end subroutine resolve_steps
+
+   !> An arc-length step scales force patterns only (imposed displacements have no limit
+   !> point to pass: load control follows them) and at least one must change; its target node
+   !> must exist.
+   subroutine resolve_arc_step(state, model, raw, step, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(raw_step_t), intent(in) :: raw
+      type(step_t), intent(inout) :: step
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      logical :: force
+      force = .false.
+      do i = 1, size(step%pattern)
+         if (model%patterns(step%pattern(i))%kind == 'DISPLACEMENT') then
+            call line_error(state, raw%items(i)%at, "CONTROL=ARC_LENGTH scales force "// &
+               "patterns only; '"//model%patterns(step%pattern(i))%name//"' is a displacement "// &
+               'pattern (load control follows imposed displacements: give it a step of its own)', &
+               error)
+            return
+         end if
+         force = .true.
+      end do
+      if (.not. force) then
+         call line_error(state, raw%at, "CONTROL=ARC_LENGTH needs a force pattern in step '"// &
+            raw%name//"'", error)
+         return
+      end if
+      if (raw%node_id > 0) then
+         step%node = findloc(model%mesh%node_id, raw%node_id, dim=1)
+         if (step%node == 0) then
+            call line_error(state, raw%at, 'NODE='//itoa(raw%node_id)//': no such node', error)
+            return
+         end if
+      end if
+   end subroutine resolve_arc_step
+
+   !> ' a b c' lists of names for messages (' (none)' when empty).
+   function nset_names(mesh) result(list)
+      type(mesh_t), intent(in) :: mesh
+      character(len=:), allocatable :: list
+      integer :: k
+      list = ''
+      do k = 1, size(mesh%nsets)
+         call add_name(list, mesh%nsets(k)%name)
+      end do
+      if (len(list) == 0) list = ' (none)'
+   end function nset_names
+
+   function edge_set_names(mesh) result(list)
+      type(mesh_t), intent(in) :: mesh
+      character(len=:), allocatable :: list
+      integer :: k
+      list = ''
+      do k = 1, size(mesh%edge_sets)
+         call add_name(list, mesh%edge_sets(k)%name)
+      end do
+      if (len(list) == 0) list = ' (none)'
+   end function edge_set_names
+
+   function eset_names(mesh) result(list)
+      type(mesh_t), intent(in) :: mesh
+      character(len=:), allocatable :: list
+      integer :: k
+      list = ''
+      do k = 1, size(mesh%esets)
+         call add_name(list, mesh%esets(k)%name)
+      end do
+   end function eset_names
+
+   function pattern_names(patterns) result(list)
+      type(load_pattern_t), intent(in) :: patterns(:)
+      character(len=:), allocatable :: list
+      integer :: k
+      list = ''
+      do k = 1, size(patterns)
+         call add_name(list, patterns(k)%name)
+      end do
+      if (len(list) == 0) list = ' (none)'
+   end function pattern_names
+
+end module pecplas_io_deck_resolve_loads

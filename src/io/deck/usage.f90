@@ -1,0 +1,191 @@
+!> Warnings about parts of a read deck that do nothing: a load pattern no step uses, a
+!> material no section uses, a node or edge set nothing refers to, a step that leaves every
+!> load factor where it was; and initial stresses that are tensile (a geostatic surface
+!> below the top of its set, a homogeneous state with a tensile principal stress).
+!> Each warning names the defining line (pecplas_base_warnings); none changes the run.
+module pecplas_io_deck_usage
+   use pecplas_base_kinds, only: wp
+   use pecplas_io_text_fields, only: same_name, upper
+   use pecplas_io_deck_state, only: deck_state_t
+   use pecplas_model_type, only: model_t
+   implicit none (type, external)
+   private
+
+   public :: check_usage
+
+contains
+
+   subroutine check_usage(state, model)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      call unused_patterns(state, model)
+      call unused_materials(state, model)
+      call unused_sets(state, model)
+      call idle_steps(model)
+      call tensile_initial(model)
+   end subroutine check_usage
+
+   subroutine unused_patterns(state, model)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      integer :: p, s
+      logical :: used
+      if (.not. allocated(state%patterns)) return
+      do p = 1, size(state%patterns)
+         used = .false.
+         do s = 1, size(model%steps)
+            if (any(model%steps(s)%pattern == p)) used = .true.
+         end do
+         if (.not. used) call warn_at(state, model, state%patterns(p)%at, "load pattern '"// &
+            state%patterns(p)%name//"' is used by no *STEP: it is never applied")
+      end do
+   end subroutine unused_patterns
+
+   subroutine unused_materials(state, model)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      integer :: m, k
+      logical :: used
+      if (.not. allocated(model%materials) .or. .not. allocated(state%material_at)) return
+      do m = 1, min(size(model%materials), size(state%material_at))
+         used = .false.
+         if (allocated(state%sections)) then
+            do k = 1, size(state%sections)
+               if (same_name(state%sections(k)%material, model%materials(m)%m%name)) &
+                  used = .true.
+            end do
+         end if
+         if (.not. used) call warn_at(state, model, state%material_at(m), "material '"// &
+            model%materials(m)%m%name//"' is used by no *SECTION")
+      end do
+   end subroutine unused_materials
+
+   !> Node sets are used by *BOUNDARY and *LOAD lines; edge sets by *LOAD and *JOINTS.
+   subroutine unused_sets(state, model)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      integer :: k
+      if (allocated(state%nsets)) then
+         do k = 1, size(state%nsets)
+            if (.not. named(state, state%nsets(k)%name, .false.)) call warn_at(state, model, &
+               state%nsets(k)%at, "node set '"//state%nsets(k)%name// &
+               "' is used by no *BOUNDARY or *LOAD line")
+         end do
+      end if
+      if (allocated(state%edge_sets)) then
+         do k = 1, size(state%edge_sets)
+            if (.not. named(state, state%edge_sets(k)%name, .true.)) call warn_at(state, &
+               model, state%edge_sets(k)%at, "edge set '"//state%edge_sets(k)%name// &
+               "' is used by no *LOAD or *JOINTS line")
+         end do
+      end if
+   end subroutine unused_sets
+
+   !> True when a *BOUNDARY or *LOAD item (or, for edges, a *JOINTS EDGES=) names `name`.
+   logical function named(state, name, edges) result(used)
+      type(deck_state_t), intent(in) :: state
+      character(len=*), intent(in) :: name
+      logical, intent(in) :: edges
+      integer :: i, p
+      used = .false.
+      if (allocated(state%boundary)) then
+         do i = 1, state%nboundary
+            if (same_name(state%boundary(i)%target, name)) used = .true.
+         end do
+      end if
+      if (allocated(state%patterns)) then
+         do p = 1, size(state%patterns)
+            do i = 1, state%patterns(p)%n
+               if (same_name(state%patterns(p)%items(i)%target, name)) used = .true.
+            end do
+         end do
+      end if
+      if (edges .and. allocated(state%joint_sets)) then
+         do i = 1, size(state%joint_sets)
+            if (allocated(state%joint_sets(i)%edges)) then
+               if (same_name(state%joint_sets(i)%edges, name)) used = .true.
+            end if
+         end do
+      end if
+   end function named
+
+   !> Factors start at 0; a step sets those it names. A step that names only patterns at
+   !> the factor they already have applies nothing.
+   subroutine idle_steps(model)
+      type(model_t), intent(inout) :: model
+      real(wp), allocatable :: factor(:)
+      integer :: s
+      logical :: changes
+      if (.not. allocated(model%patterns) .or. .not. allocated(model%steps)) return
+      allocate (factor(size(model%patterns)))
+      factor = 0.0_wp
+      do s = 1, size(model%steps)
+         associate (st => model%steps(s))
+            changes = any(factor(st%pattern) /= st%target)
+            factor(st%pattern) = st%target
+            if (.not. changes) call model%warnings%add("step '"//st%name//"' changes no "// &
+               'load factor (every pattern it names is already at its target): it applies '// &
+               'nothing', st%file, st%line)
+         end associate
+      end do
+   end subroutine idle_steps
+
+   subroutine tensile_initial(model)
+      type(model_t), intent(inout) :: model
+      real(wp) :: top, smax, centre, radius
+      integer :: i
+      character(len=32) :: b1, b2
+      if (.not. allocated(model%initial_stresses)) return
+      do i = 1, size(model%initial_stresses)
+         associate (init => model%initial_stresses(i))
+            if (init%kind == 'GEOSTATIC') then
+               top = set_top(model, init%eset)
+               if (init%surface < top .and. init%surcharge <= 0.0_wp) then
+                  write (b1, '(g0.6)') init%surface
+                  write (b2, '(g0.6)') top
+                  call model%warnings%add('geostatic y_surface = '//trim(b1)//' is below '// &
+                     "the top of set '"//init%set//"' (y = "//trim(b2)//'): the initial '// &
+                     'stress above y_surface is tensile (sigma_v = q + gamma (y_surface - y) '// &
+                     '< 0)', init%file, init%line)
+               end if
+            else if (upper(init%kind) == 'HOMOGENEOUS') then
+               centre = 0.5_wp*(init%stress(1) + init%stress(2))
+               radius = hypot(0.5_wp*(init%stress(1) - init%stress(2)), init%stress(4))
+               smax = max(centre + radius, init%stress(3))
+               if (smax > 0.0_wp) then
+                  write (b1, '(g0.6)') smax
+                  call model%warnings%add('initial stress is tensile: largest principal '// &
+                     'stress '//trim(b1)//' > 0 (tension is positive; soil is usually '// &
+                     'compressed)', init%file, init%line)
+               end if
+            end if
+         end associate
+      end do
+   end subroutine tensile_initial
+
+   !> Highest y of the nodes of element set `s` (0: every set).
+   real(wp) function set_top(model, s) result(top)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s
+      integer :: k
+      top = -huge(1.0_wp)
+      do k = 1, size(model%mesh%esets)
+         if (s /= 0 .and. k /= s) cycle
+         if (size(model%mesh%esets(k)%conn) == 0) cycle
+         top = max(top, maxval(model%mesh%x(2, pack(model%mesh%esets(k)%conn, .true.))))
+      end do
+   end function set_top
+
+   subroutine warn_at(state, model, at, text)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: at
+      character(len=*), intent(in) :: text
+      if (at < 1 .or. at > state%lines%n) then
+         call model%warnings%add(text)
+      else
+         call model%warnings%add(text, state%lines%file(at), state%lines%line(at))
+      end if
+   end subroutine warn_at
+
+end module pecplas_io_deck_usage

@@ -1,0 +1,62 @@
+!> Load patterns, supports and load steps.
+!> A pattern is a fixed spatial distribution (forces, pressures, body forces, imposed
+!> displacements); a step drives the factor of each pattern it names linearly to a target
+!> over its increments. Patterns a step does not name keep their factor.
+module pecplas_model_loads
+   use pecplas_base_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: load_pattern_t, step_t, support_t
+   public :: LOAD_KINDS
+
+   !> Kinds of pattern, as written in the deck (*LOAD, TYPE=...).
+   character(len=*), parameter :: LOAD_KINDS(5) = [character(len=12) :: 'FORCE', 'PRESSURE', &
+      'BODY_FORCE', 'GRAVITY', 'DISPLACEMENT']
+
+   type :: load_pattern_t
+      character(len=:), allocatable :: name
+      !> One of LOAD_KINDS.
+      character(len=:), allocatable :: kind
+      !> FORCE / DISPLACEMENT: one entry per (node, dof): value = force or displacement
+      !> at factor 1. dof 1 = x (r), 2 = y (z).
+      integer, allocatable :: node(:), dof(:)
+      real(wp), allocatable :: value(:)
+      !> PRESSURE: edges (3, n) as in edge_set_t (third node 0 for 2-node edges) and the
+      !> pressure of each edge (positive = pushing into the body).
+      integer, allocatable :: edge(:, :)
+      real(wp), allocatable :: pressure(:)
+      !> BODY_FORCE: element sets and force per unit volume (2, n);
+      !> GRAVITY: element sets and unit direction (2, n), magnitude = material unit weight.
+      integer, allocatable :: eset(:)
+      real(wp), allocatable :: vector(:, :)
+   end type load_pattern_t
+
+   !> Fixed (zero) displacements.
+   type :: support_t
+      integer, allocatable :: node(:), dof(:)
+   end type support_t
+
+   type :: step_t
+      character(len=:), allocatable :: name
+      integer :: increments = 1
+      !> Arc-length control (the load factor of the step is an unknown of each increment);
+      !> else load control (fixed fractions of the step).
+      logical :: arc_length = .false.
+      !> Arc-length: the most increments of the step, the iterations an increment should take
+      !> (its length adapts to them), the length bounds as multiples of the first one.
+      integer :: max_increments = 0, iterations_wanted = 6
+      real(wp) :: min_length = 1.0e-4_wp, max_length = 10.0_wp
+      !> Arc-length: stop when node `node` (internal index; 0 none) reaches displacement
+      !> `displacement` along `dof` (1 = x/r, 2 = y/z).
+      integer :: node = 0, dof = 0
+      real(wp) :: displacement = 0.0_wp
+      !> Patterns named in the step and their factor at its end.
+      integer, allocatable :: pattern(:)
+      real(wp), allocatable :: target(:)
+      !> Deck position of the step (for messages).
+      character(len=:), allocatable :: file
+      integer :: line = 0
+   end type step_t
+
+end module pecplas_model_loads

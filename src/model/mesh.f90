@@ -1,0 +1,109 @@
+!> Nodes, element sets, node sets and edge (boundary) sets of a 2D mesh.
+!> Internal node and element numbers are dense (1..n); user ids are kept for messages.
+module pecplas_model_mesh
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_strings, only: same_name
+   implicit none (type, external)
+   private
+
+   public :: mesh_t, element_set_t, node_set_t, edge_set_t
+
+   !> Elements of one type sharing a material (one block of the deck or one Gmsh group).
+   type :: element_set_t
+      character(len=:), allocatable :: name
+      !> Element type name as in the deck: 'T3', 'T6', 'Q4', 'Q8', 'Q8R'.
+      character(len=:), allocatable :: etype
+      !> Connectivity (nodes per element, number of elements), internal node numbers,
+      !> corners counter-clockwise first, then mid-side nodes (node i+n/2 between i and i+1).
+      integer, allocatable :: conn(:, :)
+      !> User element ids (for messages).
+      integer, allocatable :: ids(:)
+      !> Material name given by *SECTION, and its index in model%materials.
+      character(len=:), allocatable :: material
+      integer :: material_index = 0
+   end type element_set_t
+
+   !> A named list of nodes.
+   type :: node_set_t
+      character(len=:), allocatable :: name
+      integer, allocatable :: nodes(:)
+   end type node_set_t
+
+   !> A named list of element edges (for pressures and, later, joints).
+   !> nodes(:, k) are the edge nodes: end, end, [mid] with the body on the left when
+   !> walking from the first to the second end node.
+   type :: edge_set_t
+      character(len=:), allocatable :: name
+      integer, allocatable :: nodes(:, :)
+   end type edge_set_t
+
+   type :: mesh_t
+      !> Coordinates (2, nnode): x, y (plane) or r, z (axisymmetric).
+      real(wp), allocatable :: x(:, :)
+      !> User node ids, internal number i has user id node_id(i).
+      integer, allocatable :: node_id(:)
+      type(element_set_t), allocatable :: esets(:)
+      type(node_set_t), allocatable :: nsets(:)
+      type(edge_set_t), allocatable :: edge_sets(:)
+   contains
+      procedure :: nnode => mesh_nnode
+      procedure :: nelem => mesh_nelem
+      procedure :: find_eset => mesh_find_eset
+      procedure :: find_nset => mesh_find_nset
+      procedure :: find_edge_set => mesh_find_edge_set
+   end type mesh_t
+
+contains
+
+   pure integer function mesh_nnode(this) result(n)
+      class(mesh_t), intent(in) :: this
+      n = 0
+      if (allocated(this%x)) n = size(this%x, 2)
+   end function mesh_nnode
+
+   !> Total number of massif elements over all sets.
+   pure integer function mesh_nelem(this) result(n)
+      class(mesh_t), intent(in) :: this
+      integer :: i
+      n = 0
+      if (.not. allocated(this%esets)) return
+      do i = 1, size(this%esets)
+         n = n + size(this%esets(i)%conn, 2)
+      end do
+   end function mesh_nelem
+
+   !> Index of the element set named `name` (case-insensitive), 0 if none.
+   integer function mesh_find_eset(this, name) result(k)
+      class(mesh_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer :: i
+      k = 0
+      if (.not. allocated(this%esets)) return
+      do i = 1, size(this%esets)
+         if (same_name(this%esets(i)%name, name)) k = i
+      end do
+   end function mesh_find_eset
+
+   integer function mesh_find_nset(this, name) result(k)
+      class(mesh_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer :: i
+      k = 0
+      if (.not. allocated(this%nsets)) return
+      do i = 1, size(this%nsets)
+         if (same_name(this%nsets(i)%name, name)) k = i
+      end do
+   end function mesh_find_nset
+
+   integer function mesh_find_edge_set(this, name) result(k)
+      class(mesh_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer :: i
+      k = 0
+      if (.not. allocated(this%edge_sets)) return
+      do i = 1, size(this%edge_sets)
+         if (same_name(this%edge_sets(i)%name, name)) k = i
+      end do
+   end function mesh_find_edge_set
+
+end module pecplas_model_mesh

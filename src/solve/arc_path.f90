@@ -1,0 +1,255 @@
+!> Arc-length path following over one step (pecplas_solve_arc_length for the constraint):
+!> increments of adapted length from the current converged state, with the step's load
+!> factor an unknown, until the step's target load (landed on exactly by one
+!> load-controlled increment), a target displacement of a node, a number of increments, a
+!> maximum of the load that the path has passed, or a failure.
+!> Used by *STEP, CONTROL=ARC_LENGTH and, from a force-controlled step that cannot be
+!> converged, as the probe that tells a limit load from a convergence failure.
+module pecplas_solve_arc_path
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: step_t
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_iterate, only: attempt_t, outcome_t
+   use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
+   use pecplas_solve_arc_length, only: adapt_length
+   use pecplas_problem_arc_trace, only: arc_trace_t, arc_request_t, arc_end_t, END_TARGET, &
+      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
+   use pecplas_solve_residual, only: load_vectors, free_part
+   use pecplas_io_results_file, only: results_file_t
+   use pecplas_solve_output, only: stop_pending
+   use pecplas_base_strings, only: g6
+   implicit none (type, external)
+   private
+
+   public :: trace_arc
+
+   !> The path has become flat when |current stiffness parameter| stays below this for
+   !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
+   !> limit is where the plateau began, traced FLAT_COUNT - 1 increments beyond.
+   real(wp), parameter :: SP_FLAT = 2.0e-3_wp
+   integer, parameter :: FLAT_COUNT = 3
+   !> A maximum counts once the load has fallen in this many increments after it.
+   integer, parameter :: BEYOND_PEAK = 2
+   !> Load-controlled step that tests a singular tangent for a mechanism (step fraction).
+   real(wp), parameter :: PROBE_STEP = 1.0e-3_wp
+
+contains
+
+   !> Follows the path of `tr` (its request set up, or a path restored from a restart with
+   !> tr%started) until it ends (tr%res%kind). After every converged increment the trace,
+   !> updated as the next increment will need it, is recorded in the run's position before
+   !> the increment is written, so that a restart goes on exactly where the path was.
+   subroutine trace_arc(model, problem, results, run, istep, f0, ftarget, inc_in_step, tr, &
+         error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      integer, intent(inout) :: inc_in_step
+      type(arc_trace_t), intent(inout) :: tr
+      type(error_t), allocatable, intent(out) :: error
+      type(attempt_t) :: att
+      type(outcome_t) :: out
+      real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
+      real(wp) :: tau, k_inc, time
+      integer :: method, wanted
+      logical :: landed
+
+      associate (step => model%steps(istep), req => tr%req, res => tr%res, dl => tr%dl, &
+                 dl0 => tr%dl0, level => tr%level, nflat => tr%nflat, lc_mode => tr%lc_mode)
+         att%f0 = f0
+         att%ftarget = ftarget
+         wanted = step%iterations_wanted
+         if (tr%started) then
+            ! a restored path: the checks the interrupted run made after its last increment
+            tau = res%tau
+            res%kind = path_end(step, res, req, problem%state%u)
+            if (res%kind /= 0) return
+         else
+            tau = req%tau_start
+            dl = req%dl
+            if (.not. (dl > 0.0_wp)) then
+               call first_length(problem, f0, ftarget, req%dtau_first, dl, error)
+               if (allocated(error)) return
+            end if
+            dl0 = dl
+            level = 0
+            nflat = 0
+            lc_mode = .false.
+            res%tau = tau
+            res%reason = ''
+            tr%started = .true.
+         end if
+         do while (res%increments < req%max_increments)
+            if (lc_mode) then
+               ! load control where it converges (after a singular arc iteration that a
+               ! load-controlled step passed): increments of 1/INCREMENTS of the step
+               att%arc = .false.
+               att%tau0 = tau
+               att%tau1 = min(tau + 1.0_wp/step%increments, 1.0_wp)
+               call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+               if (allocated(error)) return
+               if (.not. out%converged) then
+                  call problem%state%rollback()
+                  lc_mode = .false.
+                  dl = dl0
+                  cycle
+               end if
+               landed = att%tau1 >= 1.0_wp
+            else
+               att%arc = .true.
+               att%dl = dl
+               att%tau0 = tau
+               att%tau1 = tau
+               if (allocated(run%du_prev)) att%du_prev = run%du_prev
+               call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+               if (allocated(error)) return
+               landed = .false.
+               if (out%converged .and. out%tau > 1.0_wp + 1.0e-12_wp) then
+                  ! beyond the step's target: land on it with one load-controlled increment
+                  call problem%state%rollback()
+                  att%arc = .false.
+                  att%tau1 = 1.0_wp
+                  call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+                  if (allocated(error)) return
+                  landed = out%converged
+               end if
+               if (.not. out%converged .and. .not. landed .and. out%singular) then
+                  ! the states the arc iteration tried make the tangent singular: is the
+                  ! structure a mechanism here, or did the iteration pick wrong states? A
+                  ! load-controlled step a little further decides (it converges: go on)
+                  call problem%state%rollback()
+                  att%arc = .false.
+                  att%tau1 = min(tau + PROBE_STEP, 1.0_wp)
+                  call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+                  if (allocated(error)) return
+                  landed = out%converged .and. att%tau1 >= 1.0_wp
+                  if (out%converged) then
+                     level = 0
+                     lc_mode = .true.
+                  else
+                     res%mechanism = .true.
+                     out%reason = 'the tangent with the next slip/contact states is singular and '// &
+                        'no equilibrium exists a little further (step fraction '// &
+                        g6(att%tau1)//'): '//out%reason
+                  end if
+               end if
+            end if
+            if (.not. out%converged) then
+               call problem%state%rollback()
+               if (level >= model%solver%max_cuts .or. dl <= step%min_length*dl0) then
+                  res%kind = END_FAILED
+                  res%reason = out%reason
+                  return
+               end if
+               level = level + 1
+               problem%cuts = problem%cuts + 1
+               dl = 0.5_wp*dl
+               if (.not. run%quiet) write (*, '(a,es9.2)') '   no convergence: arc length cut to ', dl
+               cycle
+            end if
+            res%mechanism = .false.
+            k_inc = (out%tau - tau)/max(norm2(out%du), tiny(1.0_wp))
+            if (run%k_first == 0.0_wp) run%k_first = k_inc
+            res%sp = k_inc/run%k_first
+            tau = out%tau
+            res%tau = tau
+            res%increments = res%increments + 1
+            inc_in_step = inc_in_step + 1
+            time = req%time0 + req%time_span*real(res%increments, wp)/real(req%max_increments + 1, wp)
+            if (landed) time = real(istep, wp)
+            ! the load's maximum along the path, and whether it is flat (this increment will
+            ! be the run's number problem%increments + 1, at the factors accept_increment sets)
+            if (tau > res%tau_peak) then
+               res%tau_peak = tau
+               res%peak_increment = problem%increments + 1
+               res%peak_factors = att%f0 + (att%ftarget - att%f0)*tau
+               res%beyond = 0
+            else
+               res%beyond = res%beyond + 1
+            end if
+            nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
+            if (nflat == 1) then
+               res%flat_increment = problem%increments + 1
+               res%tau_flat = tau
+            end if
+            res%flat = nflat >= FLAT_COUNT
+            ! the next increment's length, should the path go on
+            dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+               step%max_length*dl0)
+            level = 0
+            ! (an increment that lands on the target ends the path: none goes on)
+            if (landed) then
+               call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
+                  0.0_wp, f0, fint, out%du)
+            else
+               call problem%position%record(istep, inc_in_step, tau, 0.0_wp, 0, run%k_first, &
+                  0.0_wp, f0, fint, out%du, tr)
+            end if
+            ! landing on the target of the last step ends the run (END_TARGET below, and a
+            ! load-control probe ends its step there): that increment is written once
+            call accept_increment(model, problem, results, run, att, out, method, u, fint, &
+               reaction, istep, inc_in_step, time, landed, merge(0, 1, landed .or. .not. att%arc), &
+               error, landed .and. istep == size(model%steps))
+            if (allocated(error)) return
+            if (landed) then
+               res%kind = END_TARGET
+               return
+            end if
+            if (stop_pending(model, problem, .false.)) then
+               res%kind = END_INTERRUPTED
+               return
+            end if
+            res%kind = path_end(step, res, req, u)
+            if (res%kind /= 0) return
+         end do
+         res%kind = END_MAX
+         if (res%beyond >= BEYOND_PEAK .or. res%flat) res%kind = END_LIMIT
+      end associate
+   end subroutine trace_arc
+
+   !> How the path ends after a converged, written increment that did not land on the
+   !> target (0: it goes on), from the path so far and the displacements `u`.
+   integer function path_end(step, res, req, u) result(kind)
+      type(step_t), intent(in) :: step
+      type(arc_end_t), intent(in) :: res
+      type(arc_request_t), intent(in) :: req
+      real(wp), intent(in) :: u(:, :)
+      kind = 0
+      if (req%tau_pass > 0.0_wp .and. res%tau > req%tau_pass .and. res%beyond == 0 .and. &
+          .not. res%flat) then
+         kind = END_PASSED
+      else if (step%node > 0) then
+         if ((u(step%dof, step%node) - step%displacement)*sign(1.0_wp, step%displacement) &
+             >= 0.0_wp) kind = END_NODE
+      end if
+      if (kind /= 0) return
+      if (res%beyond >= BEYOND_PEAK .and. res%tau <= 0.0_wp) then
+         kind = END_UNLOADED
+      else if (req%stop_at_limit .and. (res%beyond >= BEYOND_PEAK .or. res%flat)) then
+         kind = END_LIMIT
+      end if
+   end function path_end
+
+   !> Length of an increment that would raise the step fraction by dtau along the response
+   !> of the run's factorised matrix to the step's load.
+   subroutine first_length(problem, f0, ftarget, dtau, dl, error)
+      type(problem_t), intent(inout) :: problem
+      real(wp), intent(in) :: f0(:), ftarget(:), dtau
+      real(wp), intent(out) :: dl
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: fbase(:, :), fq(:, :), up(:, :), q(:), v(:)
+      call load_vectors(problem, f0, ftarget, 0.0_wp, fbase, fq, up)
+      q = free_part(problem, fq)
+      allocate (v(size(q)))
+      call problem%solver%solve(q, v, error)
+      if (allocated(error)) return
+      problem%solves = problem%solves + 1
+      dl = dtau*norm2(v)
+   end subroutine first_length
+
+end module pecplas_solve_arc_path

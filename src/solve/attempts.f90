@@ -1,0 +1,208 @@
+!> What the increment loops share: the run's progress (run_t), the chain of methods an
+!> increment is tried with, and the acceptance of a converged increment (commit, results
+!> row, progress line).
+!>
+!> The chain (when *SOLVER, FALLBACK=YES, the default): an increment the run's method cannot
+!> converge is tried again from the last converged state by the next methods of
+!>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
+!> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
+!> Modified Newton gives up as soon as its residual's rate shows it would crawl
+!> (pecplas_solve_iterate); the others run to the iteration cap. Katona contact iterates its contact states inside
+!> modified or full Newton (its quasi-Newton is modified Newton).
+module pecplas_solve_attempts
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_RUN, ERR_SINGULAR
+   use pecplas_model_type, only: model_t
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_output, only: write_increment, progress_line
+   use pecplas_base_timers, only: wall_time
+   use pecplas_solve_iterate, only: attempt_t, outcome_t, iterate_increment, &
+      METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
+   use pecplas_solve_residual, only: free_part, load_vectors
+   use pecplas_base_strings, only: itoa
+   use pecplas_base_progress_eta, only: progress_eta_t
+   use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_increment, only: limit_point_t
+   use pecplas_solve_katona_increment, only: katona_increment, katona_arc_t
+   implicit none (type, external)
+   private
+
+   public :: run_t, try_chain, accept_increment, method_chain
+
+   type :: run_t
+      logical :: quiet = .false.
+      real(wp) :: cpu_start = 0.0_wp
+      !> Internal forces of the last converged state.
+      real(wp), allocatable :: fint_conv(:, :)
+      !> Free displacement increment of the last converged increment (empty at first).
+      real(wp), allocatable :: du_prev(:)
+      !> Step fraction / |Δu| of the step's first increment (the reference of the current
+      !> stiffness parameter); 0 until known.
+      real(wp) :: k_first = 0.0_wp
+      !> Where the load had its maximum, when the run stops at a limit load.
+      type(limit_point_t) :: limit
+      !> Time-left estimate, printed every few seconds of a long run (not with --quiet).
+      type(progress_eta_t) :: eta
+   end type run_t
+
+contains
+
+   !> Methods tried for an increment, in order.
+   function method_chain(model, katona) result(methods)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: katona
+      integer, allocatable :: methods(:)
+      select case (model%solver%method)
+      case ('NEWTON')
+         ! BFGS on the last factorised tangent: where a singular tangent stalls Newton
+         ! (a mechanism forming at a limit load)
+         methods = [METHOD_NEWTON, METHOD_QUASI]
+      case ('QUASI_NEWTON')
+         methods = [METHOD_QUASI, METHOD_NEWTON]
+      case default
+         methods = [METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON]
+      end select
+      if (katona) then
+         where (methods == METHOD_QUASI) methods = METHOD_MODIFIED
+         if (size(methods) == 3) methods = methods([1, 3])
+      end if
+      if (.not. model%solver%fallback) methods = methods(1:1)
+   end function method_chain
+
+   !> Tries `att` with each method of the chain until one converges; `out%reason` gathers
+   !> why the others failed. The state is rolled back after each failure.
+   subroutine try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(run_t), intent(in) :: run
+      type(attempt_t), intent(inout) :: att
+      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
+      type(outcome_t), intent(out) :: out
+      integer, intent(out) :: method
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: methods(:)
+      character(len=:), allocatable :: reasons
+      integer :: i
+      methods = method_chain(model, problem%katona%active)
+      reasons = ''
+      do i = 1, size(methods)
+         method = methods(i)
+         att%method = method
+         att%line_search = model%solver%line_search .and. method /= METHOD_MODIFIED
+         ! only modified Newton's linear rate predicts its end reliably; the others run to
+         ! the cap (BFGS converges irregularly while joint states still change)
+         att%give_up_early = i < size(methods) .and. method == METHOD_MODIFIED
+         if (problem%katona%active) then
+            call katona_attempt(model, problem, run, att, u, fint, reaction, out, error)
+         else
+            call iterate_increment(model, problem, att, run%fint_conv, u, fint, reaction, out, &
+               error)
+         end if
+         if (allocated(error)) then
+            ! a failed material return or a singular system of trial states fails the attempt
+            if (error%kind /= ERR_RUN .and. error%kind /= ERR_SINGULAR) return
+            out%converged = .false.
+            out%singular = error%kind == ERR_SINGULAR
+            out%reason = error%message
+            if (.not. out%singular) out%reason = 'a material or law could not return: '// &
+               error%message
+            deallocate (error)
+         end if
+         problem%iterations = problem%iterations + out%iterations
+         problem%line_searches = problem%line_searches + out%line_searches
+         if (out%converged) return
+         call problem%state%rollback()
+         if (len(reasons) > 0) reasons = reasons//'; '
+         reasons = reasons//method_name(method)//': '//out%reason
+      end do
+      out%reason = reasons
+   end subroutine try_chain
+
+   !> A Katona increment (pecplas_solve_katona_increment), under load or arc-length control.
+   subroutine katona_attempt(model, problem, run, att, u, fint, reaction, out, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(run_t), intent(in) :: run
+      type(attempt_t), intent(in) :: att
+      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
+      type(outcome_t), intent(out) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(katona_arc_t) :: arc
+      real(wp), allocatable :: fbase(:, :), up(:, :)
+      out%reason = ''
+      if (att%arc) then
+         call load_vectors(problem, att%f0, att%ftarget, att%tau0, fbase, arc%fq, up)
+         arc%q = free_part(problem, arc%fq)
+         arc%dl = att%dl
+         arc%tau = att%tau0
+         if (allocated(att%du_prev)) then
+            if (size(att%du_prev) > 0) arc%du_prev = att%du_prev
+         end if
+         call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau0, &
+            run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
+            out%blowup, out%iterations, out%residual, error, arc)
+         out%tau = arc%tau
+         if (.not. arc%ok) out%reason = arc%reason
+      else
+         call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau1, &
+            run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
+            out%blowup, out%iterations, out%residual, error)
+         out%tau = att%tau1
+      end if
+      if (allocated(error)) return
+      if (out%converged) then
+         out%du = free_part(problem, u - problem%state%u)
+      else if (len(out%reason) > 0) then
+         continue
+      else if (out%blowup) then
+         out%reason = 'the residual became infinite or NaN'
+      else
+         out%reason = 'contact iteration cap reached'
+      end if
+   end subroutine katona_attempt
+
+   !> Commits a converged increment at step fraction out%tau, writes it and prints its line.
+   !> `time` is the pseudo-time of the results file; `control` 0 load, 1 arc-length.
+   !> `final`: the run certainly ends after this increment (written once, see
+   !> results_file_t%write_increment).
+   subroutine accept_increment(model, problem, results, run, att, out, method, u, fint, &
+         reaction, istep, inc, time, last, control, error, final)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      type(attempt_t), intent(in) :: att
+      type(outcome_t), intent(in) :: out
+      integer, intent(in) :: method, istep, inc, control
+      real(wp), intent(in) :: u(:, :), fint(:, :), reaction(:, :), time
+      logical, intent(in) :: last
+      type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: final
+      real(wp) :: t_now, t_out
+      character(len=:), allocatable :: how
+      problem%increments = problem%increments + 1
+      problem%by_method(method) = problem%by_method(method) + 1
+      if (control == 1) problem%arc_increments = problem%arc_increments + 1
+      call problem%state%commit()
+      problem%state%u = u
+      problem%state%factors = att%f0 + (att%ftarget - att%f0)*out%tau
+      run%fint_conv = fint
+      if (allocated(out%du)) run%du_prev = out%du
+      call cpu_time(t_now)
+      t_out = wall_time()
+      call write_increment(model, problem, results, istep, inc, time, out%iterations, &
+         out%residual, t_now - run%cpu_start, reaction, last, &
+         [method, out%line_searches, control], error, final)
+      problem%time%output = problem%time%output + (wall_time() - t_out)
+      if (allocated(error)) return
+      if (run%quiet) return
+      how = ''
+      if (method_name(method) /= model%solver%method) how = '  '//method_name(method)
+      if (out%line_searches > 0) how = how//'  ls '//itoa(out%line_searches)
+      if (control == 1) how = how//'  arc'
+      call progress_line(model, problem, istep, inc, out%tau, out%iterations, out%residual, how)
+      if (run%eta%due(wall_time())) write (*, '(a)') ' progress: '// &
+         run%eta%line(problem%increments, wall_time())
+   end subroutine accept_increment
+
+end module pecplas_solve_attempts

@@ -1,0 +1,445 @@
+!> The incremental–iterative solution (thesis Annex A, extended): each load step is split
+!> into increments, under load control (fixed fractions of the step) or arc-length control
+!> (*STEP, CONTROL=ARC_LENGTH: pecplas_solve_arc_path). An increment is tried by the chain
+!> of methods (pecplas_solve_attempts), then halved up to `max_cuts` times.
+!>
+!> Statuses, each a claim about the run:
+!>   completed   every step reached its end;
+!>   limit load  the load-displacement path has a maximum: the arc-length path passed it (the
+!>               load fell in two increments after it) or became flat (current stiffness
+!>               parameter ~ 0); under load control a step that cannot be converged is probed
+!>               by arc-length from the last converged state, which either passes the failed
+!>               load (the run goes on) or establishes the maximum; /limit stores where;
+!>   diverged    no equilibrium was found, with the reason of each method;
+!>   stopped     an arc-length step used its MAX_INCREMENTS before its target.
+module pecplas_solve_increments
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: step_t
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_iterate, only: attempt_t, outcome_t
+   use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
+   use pecplas_solve_arc_path, only: trace_arc
+   use pecplas_problem_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &
+      END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED, PATH_STEP, PATH_PROBE
+   use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_increment, only: limit_point_t
+   use pecplas_base_strings, only: itoa, g6
+   use pecplas_base_timers, only: wall_time
+   use pecplas_base_signals, only: interrupt_requested, interrupt_signal
+   use pecplas_solve_output, only: stop_pending
+   implicit none (type, external)
+   private
+
+   public :: run_increments
+
+contains
+
+   !> Runs every step. `status`: 'completed', 'limit load', 'diverged' or 'stopped';
+   !> `message` says why a run stopped. Converged increments are written as they come.
+   !> `limit`: where the limit is, when the status is 'limit load' (as written to /limit).
+   subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      logical, intent(in) :: quiet
+      character(len=:), allocatable, intent(out) :: status, message
+      type(error_t), allocatable, intent(out) :: error
+      type(limit_point_t), intent(out), optional :: limit
+      type(run_t) :: run
+      real(wp), allocatable :: f0(:), ftarget(:)
+      integer :: istep, istep0
+
+      call cpu_time(run%cpu_start)
+      run%quiet = quiet
+      call run%eta%start(wall_time(), sum(model%steps%increments), 10.0_wp)
+      status = 'completed'
+      message = 'all steps completed'
+      ! the initial stresses are in equilibrium with their own nodal forces
+      run%fint_conv = problem%initial_force
+      istep0 = 1
+      ! restart: resume the step loop where the run read back stopped (pecplas_solve_restart)
+      if (problem%position%resume) then
+         run%fint_conv = problem%position%fint_conv
+         istep0 = problem%position%istep
+         if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
+      end if
+      do istep = istep0, size(model%steps)
+         f0 = problem%state%factors
+         if (problem%position%resume) f0 = problem%position%f0
+         ftarget = f0
+         ftarget(model%steps(istep)%pattern) = model%steps(istep)%target
+         run%k_first = 0.0_wp
+         if (problem%position%resume) run%k_first = problem%position%k_first
+         if (model%steps(istep)%arc_length) then
+            call arc_step(model, problem, results, run, istep, f0, ftarget, status, message, &
+               error)
+         else
+            call load_step(model, problem, results, run, istep, f0, ftarget, status, message, &
+               error)
+         end if
+         if (allocated(error) .or. status /= 'completed') exit
+      end do
+      if (allocated(error)) return
+      if (status == 'limit load') call results%write_limit(run%limit, error)
+      if (present(limit) .and. status == 'limit load') limit = run%limit
+   end subroutine run_increments
+
+   !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and
+   !> grown back after success.
+   subroutine load_step(model, problem, results, run, istep, f0, ftarget, status, message, &
+         error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      character(len=:), allocatable, intent(inout) :: status, message
+      type(error_t), allocatable, intent(out) :: error
+      type(attempt_t) :: att
+      type(outcome_t) :: out
+      type(arc_trace_t) :: probe
+      real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
+      real(wp) :: tau, dt, dt0
+      integer :: level, inc, method
+      logical :: probing
+
+      associate (step => model%steps(istep))
+         att%f0 = f0
+         att%ftarget = ftarget
+         dt0 = 1.0_wp/step%increments
+         dt = dt0
+         tau = 0.0_wp
+         level = 0
+         inc = 0
+         probing = .false.
+         if (problem%position%resume) then
+            associate (pos => problem%position)
+               dt = pos%dt; tau = pos%tau; level = pos%level; inc = pos%inc_in_step
+               ! (restart data of an older version stopped inside a probe hold no size)
+               if (.not. (dt > 0.0_wp)) dt = dt0
+               ! stopped in the middle of a limit probe: go on with it
+               probing = pos%path == PATH_PROBE
+               if (probing) then
+                  probe = pos%arc
+                  tau = probe%req%tau_start; dt = probe%req%dtau_first; level = probe%req%cuts
+               end if
+               pos%resume = .false.
+            end associate
+         end if
+         do while (tau < 1.0_wp - 1.0e-12_wp)
+            if (.not. probing) then
+               dt = min(dt, 1.0_wp - tau)
+               att%arc = .false.
+               att%tau0 = tau
+               att%tau1 = tau + dt
+               call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+               if (allocated(error)) return
+            end if
+            if (probing .or. .not. out%converged) then
+               if (.not. probing) then
+                  if (level < model%solver%max_cuts) then
+                     level = level + 1
+                     problem%cuts = problem%cuts + 1
+                     dt = 0.5_wp*dt
+                     if (.not. run%quiet) write (*, '(a,es9.2,a)') &
+                        '   no convergence: increment cut to ', dt, ' of the step'
+                     cycle
+                  end if
+                  if (.not. probe_allowed(model, f0, ftarget)) then
+                     call diverged(step, istep, tau + dt, level, out%reason, status, message)
+                     return
+                  end if
+                  ! cannot be converged at any cut: is it a maximum of the load?
+                  if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
+                     'probing the path by arc-length from the last converged state'
+                  call probe_request(model, istep, tau, dt, level, out%reason, run%du_prev, probe)
+               end if
+               probing = .false.
+               call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, probe, &
+                  error)
+               if (allocated(error)) return
+               associate (res => probe%res, why => probe%req%why)
+                  select case (res%kind)
+                  case (END_INTERRUPTED)
+                     call interrupted_status(problem, status, message)
+                  case (END_PASSED, END_TARGET)
+                     ! a convergence failure, not a limit: load control goes on from here
+                     ! (a probe that landed on the target: the run may have to stop there)
+                     if (res%kind == END_TARGET) then
+                        if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
+                     end if
+                     tau = res%tau
+                     level = 0
+                     dt = dt0
+                     cycle
+                  case (END_LIMIT, END_UNLOADED)
+                     call limit_reached(model, problem, run, step, istep, res, status, message)
+                  case (END_FAILED)
+                     if (mechanism(res)) then
+                        call limit_reached(model, problem, run, step, istep, res, status, message)
+                     else
+                        call diverged(step, istep, tau + dt, level, why//'; the '// &
+                           'arc-length probe from fraction '//g6(tau)//' '//probe_failure(res), &
+                           status, message)
+                     end if
+                  case default
+                     call diverged(step, istep, tau + dt, level, why//'; the arc-length '// &
+                        'probe from fraction '//g6(tau)//' '//probe_failure(res), status, message)
+                  end select
+               end associate
+               return
+            end if
+            tau = att%tau1
+            inc = inc + 1
+            if (run%k_first == 0.0_wp .and. allocated(out%du)) &
+               run%k_first = dt/max(norm2(out%du), tiny(1.0_wp))
+            ! the loop's position after this increment (the size grows back below), for the
+            ! restart data written with the increment
+            call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
+               level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint, out%du)
+            ! the end of the last step ends the run: that increment is written once
+            call accept_increment(model, problem, results, run, att, out, method, u, fint, &
+               reaction, istep, inc, real(istep - 1, wp) + tau, tau >= 1.0_wp - 1.0e-12_wp, 0, &
+               error, tau >= 1.0_wp - 1.0e-12_wp .and. istep == size(model%steps))
+            if (allocated(error)) return
+            if (interrupted(model, problem, istep, tau, status, message)) return
+            if (level > 0) then
+               level = level - 1
+               dt = min(dt0, 2.0_wp*dt)
+            end if
+         end do
+      end associate
+   end subroutine load_step
+
+   !> A step under arc-length control.
+   subroutine arc_step(model, problem, results, run, istep, f0, ftarget, status, message, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      character(len=:), allocatable, intent(inout) :: status, message
+      type(error_t), allocatable, intent(out) :: error
+      type(arc_trace_t) :: path
+      integer :: inc
+      associate (step => model%steps(istep), res => path%res)
+         inc = 0
+         path%req%tau_start = 0.0_wp
+         if (problem%position%resume) then
+            path%req%tau_start = problem%position%tau
+            inc = problem%position%inc_in_step
+            ! the path under way when the run stopped (restart data of an older version
+            ! hold none: a new path starts from the converged state)
+            if (problem%position%path == PATH_STEP) path = problem%position%arc
+            problem%position%resume = .false.
+            ! stopped after the increment that landed on the step's target: step done
+            if (path%req%tau_start >= 1.0_wp - 1.0e-12_wp) return
+         end if
+         if (.not. path%started) then
+            path%req%origin = PATH_STEP
+            path%req%dl = 0.0_wp
+            path%req%dtau_first = 1.0_wp/step%increments
+            path%req%max_increments = step%max_increments
+            path%req%time0 = real(istep - 1, wp)
+         end if
+         call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, path, error)
+         if (allocated(error)) return
+         select case (res%kind)
+         case (END_TARGET)
+            ! the step ends on its target: the run may have to stop after that increment
+            if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
+         case (END_INTERRUPTED)
+            call interrupted_status(problem, status, message)
+         case (END_NODE)
+            if (res%beyond > 0 .and. res%tau < res%tau_peak) then
+               call limit_reached(model, problem, run, step, istep, res, status, message)
+            end if
+         case (END_LIMIT, END_UNLOADED)
+            call limit_reached(model, problem, run, step, istep, res, status, message)
+         case (END_FAILED)
+            if (mechanism(res)) then
+               call limit_reached(model, problem, run, step, istep, res, status, message)
+            else
+               call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
+                  message)
+            end if
+         case (END_MAX)
+            status = 'stopped'
+            message = 'step '//itoa(istep)//' ('//step%name//'): MAX_INCREMENTS='// &
+               itoa(step%max_increments)//' arc-length increments used at step fraction '// &
+               g6(res%tau)//' before the target (no maximum of the load on the way)'
+         case default
+            call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
+               message)
+         end select
+      end associate
+   end subroutine arc_step
+
+   !> The limit probe of a load-controlled step whose increment from fraction `tau` (size
+   !> `dt`, `cuts` halvings) failed for `why`: an arc-length path from the last converged
+   !> state, first length that of the last converged increment (`du_prev`, else along the
+   !> stiffness response), that ends as soon as it passes tau + dt rising or shows a limit.
+   subroutine probe_request(model, istep, tau, dt, cuts, why, du_prev, probe)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep, cuts
+      real(wp), intent(in) :: tau, dt
+      character(len=*), intent(in) :: why
+      real(wp), allocatable, intent(in) :: du_prev(:)
+      type(arc_trace_t), intent(out) :: probe
+      associate (req => probe%req)
+         req%origin = PATH_PROBE
+         req%tau_start = tau
+         req%tau_pass = tau + dt
+         req%dl = 0.0_wp
+         if (allocated(du_prev)) req%dl = norm2(du_prev)
+         req%dtau_first = dt
+         req%max_increments = model%solver%limit_probe
+         req%stop_at_limit = .true.
+         req%time0 = real(istep - 1, wp) + tau
+         req%time_span = 0.5_wp*dt
+         req%cuts = cuts
+         req%why = why
+      end associate
+   end subroutine probe_request
+
+   !> A probe needs a growing force and no changing imposed displacement (unloading that
+   !> fails is no limit), and a budget.
+   logical function probe_allowed(model, f0, ftarget) result(ok)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      integer :: p
+      ok = model%solver%limit_probe > 0
+      if (.not. ok) return
+      ok = .false.
+      do p = 1, size(f0)
+         if (model%patterns(p)%kind == 'DISPLACEMENT') then
+            if (ftarget(p) /= f0(p)) then
+               ok = .false.
+               return
+            end if
+         else if (abs(ftarget(p)) > abs(f0(p))) then
+            ok = .true.
+         end if
+      end do
+   end function probe_allowed
+
+   subroutine limit_reached(model, problem, run, step, istep, res, status, message)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(run_t), intent(inout) :: run
+      type(step_t), intent(in) :: step
+      integer, intent(in) :: istep
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable, intent(inout) :: status, message
+      integer :: p
+      status = 'limit load'
+      run%limit%step = istep
+      run%limit%stiffness_parameter = res%sp
+      message = 'limit load in step '//itoa(istep)//' ('//step%name//'): '
+      ! every kind reports the largest load traced; the plateau its start as the increment
+      run%limit%global_increment = res%peak_increment
+      run%limit%fraction = res%tau_peak
+      run%limit%pattern_factors = res%peak_factors
+      if (mechanism(res)) then
+         ! the path rose to here; the next states make the tangent singular
+         run%limit%kind = 'mechanism'
+         message = message//'the structure becomes a mechanism at step fraction '// &
+            g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'): beyond it the '// &
+            'tangent with the next slip/contact states is singular and no equilibrium exists '// &
+            'a little further'
+      else if (res%beyond >= 2 .or. .not. res%flat) then
+         run%limit%kind = 'passed'
+         message = message//'the load-displacement path has a maximum at step fraction '// &
+            g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), traced '// &
+            itoa(res%beyond)//' increments beyond it'
+      else
+         ! the plateau: where it began, and the largest load traced on it
+         run%limit%kind = 'flat'
+         run%limit%global_increment = res%flat_increment ! where the plateau began
+         message = message//'the load-displacement path is flat (current stiffness '// &
+            'parameter '//g6(res%sp)//') from step fraction '//g6(res%tau_flat)// &
+            ' (increment '//itoa(res%flat_increment)//'), traced '// &
+            itoa(problem%increments - res%flat_increment)//' increments along it, its '// &
+            'largest load at step fraction '//g6(res%tau_peak)
+      end if
+      message = message//'; load factors at the peak:'
+      do p = 1, size(run%limit%pattern_factors)
+         if (run%limit%pattern_factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
+            message = message//' '//model%patterns(p)%name//' = '// &
+            g6(run%limit%pattern_factors(p))
+      end do
+      if (problem%increments > 0) message = message//'; every converged increment is in '// &
+         'the results file (/limit says where the peak is)'
+   end subroutine limit_reached
+
+   !> True (with status 'interrupted') when the run must stop after this increment: a
+   !> termination signal (SIGTERM, SIGINT, SIGHUP: pecplas_base_signals) or the
+   !> --stop-after-increments test hook.
+   logical function interrupted(model, problem, istep, tau, status, message)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: tau
+      character(len=:), allocatable, intent(inout) :: status, message
+      interrupted = stop_pending(model, problem, tau >= 1.0_wp - 1.0e-12_wp .and. &
+         istep == size(model%steps))
+      if (interrupted) call interrupted_status(problem, status, message)
+   end function interrupted
+
+   subroutine interrupted_status(problem, status, message)
+      type(problem_t), intent(in) :: problem
+      character(len=:), allocatable, intent(inout) :: status, message
+      status = 'interrupted'
+      if (interrupt_requested()) then
+         message = 'stopped by '//interrupt_signal()//' after increment '// &
+            itoa(problem%increments)//'; continue with --restart'
+      else if (problem%position%stop_now(.false., problem%increments)) then
+         message = 'stopped after the requested number of increments '// &
+            '(--stop-after-increments); continue with --restart'
+      else
+         message = 'stopped by a termination signal to another MPI rank after increment '// &
+            itoa(problem%increments)//'; continue with --restart'
+      end if
+   end subroutine interrupted_status
+
+   !> An arc-length path that rose to its last converged point and cannot go on because the
+   !> tangent with the next slip/contact states is singular, and a load-controlled step a
+   !> little further (1e-3 of the step) finds no equilibrium either: the load-displacement
+   !> path ends at a mechanism (a zero pivot: the limit of a rigid-plastic interface).
+   logical function mechanism(res)
+      type(arc_end_t), intent(in) :: res
+      mechanism = res%kind == END_FAILED .and. res%increments > 0 .and. res%beyond == 0 .and. &
+         res%mechanism
+   end function mechanism
+
+   subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)
+      type(step_t), intent(in) :: step
+      integer, intent(in) :: istep, cuts
+      real(wp), intent(in) :: tau_failed
+      character(len=*), intent(in) :: reason
+      character(len=:), allocatable, intent(inout) :: status, message
+      status = 'diverged'
+      message = 'step '//itoa(istep)//' ('//step%name//') did not converge at step '// &
+         'fraction '//g6(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
+         '); last converged state kept in the results file'
+   end subroutine diverged
+
+   function probe_failure(res) result(text)
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable :: text
+      select case (res%kind)
+      case (END_MAX)
+         text = 'traced '//itoa(res%increments)//' increments to fraction '//g6(res%tau)// &
+            ' without passing the failed load or a maximum'
+      case (END_NODE)
+         text = 'reached the step''s target displacement'
+      case default
+         text = 'failed after '//itoa(res%increments)//' increments: '//res%reason
+      end select
+   end function probe_failure
+
+end module pecplas_solve_increments

@@ -1,0 +1,372 @@
+!> The equilibrium iterations of one increment (thesis Annex A, extended): from the last
+!> converged state to the load of step fraction tau1 (load control), or along an arc of
+!> length dl with tau unknown (pecplas_solve_arc_length), by one of three methods:
+!>   MODIFIED_NEWTON  the factorised stiffness of the run (the thesis's method);
+!>   QUASI_NEWTON     the same factorisation with BFGS updates (pecplas_solve_bfgs);
+!>   NEWTON           the consistent tangent refactorised every iteration,
+!> each with an optional line search (pecplas_solve_line_search; not with arc-length).
+!> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
+!> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
+!> singular tangent, a material that could not return, no real arc-length root.
+module pecplas_solve_iterate
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
+   use pecplas_model_type, only: model_t
+   use pecplas_problem_type, only: problem_t
+   use pecplas_solve_stiffness, only: factorise_stiffness
+   use pecplas_base_timers, only: wall_time
+   use pecplas_solve_bfgs, only: bfgs_t
+   use pecplas_solve_line_search, only: line_search_t
+   use pecplas_solve_arc_length, only: arc_root, arc_predictor_sign
+   use pecplas_solve_residual, only: load_vectors, free_residual, free_part, add_free, &
+      joint_signature
+   use pecplas_fe_assembly, only: internal_forces
+   implicit none (type, external)
+   private
+
+   public :: attempt_t, outcome_t, iterate_increment
+   public :: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
+
+   integer, parameter :: METHOD_MODIFIED = 1, METHOD_QUASI = 2, METHOD_NEWTON = 3
+
+   !> What to try: method, line search, control, and the step's load path
+   !> factors(tau) = f0 + (ftarget - f0) tau.
+   type :: attempt_t
+      integer :: method = METHOD_MODIFIED
+      logical :: line_search = .false.
+      !> Give up as soon as the residual's rate shows the cap will be missed (a later method
+      !> of the chain takes over); false for the last method, which runs to the cap.
+      logical :: give_up_early = .false.
+      !> Arc-length control (tau unknown, ||Δu|| = dl); else load control to tau1.
+      logical :: arc = .false.
+      real(wp) :: dl = 0.0_wp
+      !> Previous converged free increment (the arc predictor's sign); may be empty.
+      real(wp), allocatable :: du_prev(:)
+      real(wp), allocatable :: f0(:), ftarget(:)
+      real(wp) :: tau0 = 0.0_wp, tau1 = 0.0_wp
+   end type attempt_t
+
+   type :: outcome_t
+      logical :: converged = .false., blowup = .false.
+      integer :: iterations = 0, line_searches = 0
+      real(wp) :: residual = 0.0_wp
+      !> Step fraction reached (tau1 under load control).
+      real(wp) :: tau = 0.0_wp
+      !> Why it failed ('' when converged); singular: the system of the states the iteration
+      !> reached has no unique solution (a mechanism under those states).
+      character(len=:), allocatable :: reason
+      logical :: singular = .false.
+      !> Free displacement increment of the increment.
+      real(wp), allocatable :: du(:)
+   end type outcome_t
+
+   !> Early give-up of a method that is not the chain's last (see `hopeless`).
+   !> Memory of the BFGS pairs (2 n reals each): every pair of the increment while they fit
+   !> in BFGS_BYTES, else the newest ones (at least BFGS_MIN_PAIRS; limited memory).
+   real(wp), parameter :: BFGS_BYTES = 256.0_wp*2.0_wp**20
+   integer, parameter :: BFGS_MIN_PAIRS = 10
+   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
+
+contains
+
+   pure function method_name(method) result(name)
+      integer, intent(in) :: method
+      character(len=:), allocatable :: name
+      select case (method)
+      case (METHOD_MODIFIED)
+         name = 'MODIFIED_NEWTON'
+      case (METHOD_QUASI)
+         name = 'QUASI_NEWTON'
+      case default
+         name = 'NEWTON'
+      end select
+   end function method_name
+
+   !> One increment from the converged state (problem%state, with internal forces
+   !> `fint_conv`): u, fint (internal forces) and reaction at the end, and the outcome.
+   subroutine iterate_increment(model, problem, att, fint_conv, u, fint, reaction, out, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(attempt_t), intent(in) :: att
+      real(wp), intent(in) :: fint_conv(:, :)
+      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
+      type(outcome_t), intent(out) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: fext(:, :), fbase(:, :), fq(:, :), up(:, :), r(:), q(:), &
+         du(:), vq(:), gfree(:), gold(:), hist(:), dtot(:), u_iter(:, :)
+      integer, allocatable :: states(:)
+      type(bfgs_t) :: bfgs
+      type(line_search_t) :: ls
+      real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
+      integer :: neq, it
+      logical :: moved, ok, elastic_now
+
+      neq = problem%dofs%neq
+      out%reason = ''
+      call load_vectors(problem, att%f0, att%ftarget, merge(att%tau0, att%tau1, att%arc), &
+         fbase, fq, up)
+      tau = merge(att%tau0, att%tau1, att%arc)
+      fext = fbase + tau*fq
+      u = problem%state%u
+      where (problem%dofs%eq == 0) u = up
+      moved = any(u /= problem%state%u) .or. (tau /= att%tau0 .and. any(fq /= 0.0_wp))
+      allocate (reaction(2, size(u, 2)), r(neq), du(neq), gfree(neq), dtot(neq), source=0.0_wp)
+      allocate (hist(0:model%solver%max_iterations + 1), states(0:model%solver%max_iterations + 1))
+      hist = 0.0_wp
+      states = 0
+      if (att%method == METHOD_QUASI) call bfgs%reset(neq, min(model%solver%max_iterations, &
+         max(BFGS_MIN_PAIRS, int(BFGS_BYTES/(16.0_wp*max(neq, 1))))))
+      q = free_part(problem, fq)
+      fint = fint_conv
+      if (any(u /= problem%state%u)) then
+         call forces(u, error)
+         if (allocated(error)) return
+      end if
+      out%tau = tau
+
+      if (att%arc) then
+         ! predictor: tangent (or stiffness) response to the step load, along the last
+         ! converged increment
+         if (att%method == METHOD_NEWTON) then
+            call refactorise(error)
+            if (allocated(error)) return
+         end if
+         allocate (vq(neq))
+         call apply_operator(q, vq, error)
+         if (allocated(error)) return
+         if (.not. (norm2(vq) > 0.0_wp)) then
+            out%reason = 'the step load does not move the free nodes (no arc-length direction)'
+            return
+         end if
+         dtau = arc_predictor_sign(att%du_prev, vq)*att%dl/norm2(vq)
+         dtot = dtau*vq
+         tau = tau + dtau
+         fext = fbase + tau*fq
+         u_iter = u
+         call add_free(problem, dtot, u)
+         gold = free_part(problem, fint)
+         call forces(u, error)
+         if (allocated(error)) return
+         if (att%method == METHOD_QUASI) call push_pair(u - u_iter)
+         moved = .true.
+      end if
+
+      it = 0
+      do
+         call free_residual(problem, fext, fint, r, reaction, rnorm, ref)
+         out%residual = 0.0_wp
+         if (ref > 0.0_wp) out%residual = rnorm/ref
+         hist(it) = out%residual
+         states(it) = joint_signature(problem%state%joints)
+         out%iterations = it
+         out%tau = tau
+         if ((rnorm <= model%solver%tolerance*ref .or. rnorm == 0.0_wp) .and. &
+             (it > 0 .or. .not. moved)) then
+            out%converged = .true.
+            exit
+         end if
+         out%blowup = .not. (rnorm < huge(1.0_wp))
+         if (out%blowup) then
+            out%reason = 'the residual became infinite or NaN'
+            return
+         end if
+         if (it >= model%solver%max_iterations) then
+            out%reason = cap_reason(hist(0:it), states(0:it), model%solver%max_iterations)
+            return
+         end if
+         if (att%give_up_early .and. it >= MIN_RATE_ITERS) then
+            if (hopeless(hist(0:it), model%solver%tolerance, model%solver%max_iterations, &
+                att%method == METHOD_MODIFIED)) then
+               out%reason = 'stagnating residual (its rate would miss the iteration cap)'
+               return
+            end if
+         end if
+         elastic_now = .false.
+         ! full Newton: the tangent of the current iterate; at the first iteration the last
+         ! factorisation (the previous increment's tangent) unless there is none yet
+         if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
+            call refactorise(error)
+            if (allocated(error)) return
+         end if
+         call apply_operator(r, du, error)
+         if (allocated(error)) return
+         if (att%arc) then
+            if (att%method /= METHOD_MODIFIED .or. .not. allocated(vq)) then
+               if (.not. allocated(vq)) allocate (vq(neq))
+               call apply_operator(q, vq, error)
+               if (allocated(error)) return
+            end if
+            call arc_root(dtot, du, vq, att%dl, dtau, ok)
+            if (.not. ok) then
+               out%reason = 'the arc-length constraint has no real root'
+               return
+            end if
+            du = du + dtau*vq
+            tau = tau + dtau
+            fext = fbase + tau*fq
+         end if
+         u_iter = u
+         gold = free_part(problem, fint)
+         call add_free(problem, du, u)
+         call forces(u, error)
+         if (allocated(error)) return
+         eta = 1.0_wp
+         if (att%line_search .and. .not. att%arc) then
+            g0 = dot_product(du, r)
+            call free_residual(problem, fext, fint, gfree, reaction, rnorm, ref)
+            g1 = dot_product(du, gfree)
+            call ls%start(g0, g1)
+            do while (ls%next(eta))
+               u = u_iter
+               call add_free(problem, eta*du, u)
+               call forces(u, error)
+               if (allocated(error)) then
+                  if (error%kind /= ERR_RUN) return
+                  deallocate (error)
+                  call ls%update(ieee_nan())
+                  cycle
+               end if
+               call free_residual(problem, fext, fint, gfree, reaction, rnorm, ref)
+               call ls%update(dot_product(du, gfree))
+            end do
+            out%line_searches = out%line_searches + ls%evals
+            eta = ls%eta
+         end if
+         dtot = dtot + eta*du
+         if (att%method == METHOD_QUASI) call push_pair(u - u_iter)
+         it = it + 1
+      end do
+      out%du = dtot
+
+   contains
+
+      !> Internal forces at u (a failed material return is a run error: the increment fails).
+      subroutine forces(uu, err)
+         real(wp), intent(in) :: uu(:, :)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp) :: t0
+         t0 = wall_time()
+         call internal_forces(model, problem%rules, uu, problem%state, fint, err, &
+            problem%time%laws)
+         problem%time%residual = problem%time%residual + (wall_time() - t0)
+         if (allocated(err)) then
+            if (err%kind /= ERR_SINGULAR) err%kind = ERR_RUN
+         end if
+      end subroutine forces
+
+      !> BFGS pair from the step du_step (nodal layout) and the change of free internal forces.
+      subroutine push_pair(du_step)
+         real(wp), intent(in) :: du_step(:, :)
+         logical :: kept
+         call bfgs%push(free_part(problem, du_step), free_part(problem, fint) - gold, kept)
+      end subroutine push_pair
+
+      !> Full Newton: the consistent tangent at the current state. A singular tangent (a
+      !> perfectly plastic zone, a joint in full slip) is no mechanism of the model: this
+      !> iteration uses the elastic stiffness instead.
+      subroutine refactorise(err)
+         type(error_t), allocatable, intent(out) :: err
+         call factorise_stiffness(model, problem, .true., err, tangent_solver=.true.)
+         if (allocated(err)) then
+            if (err%kind /= ERR_SINGULAR) return
+            deallocate (err)
+            elastic_now = .true.
+            problem%singular_tangents = problem%singular_tangents + 1
+            if (.not. problem%separate_tangent) call factorise_stiffness(model, problem, &
+               .false., err)
+         end if
+      end subroutine refactorise
+
+      logical function tangent_ready()
+         tangent_ready = .true.
+         if (problem%separate_tangent) tangent_ready = problem%tangent_factorised
+      end function tangent_ready
+
+      !> x = (iteration operator) b: K^-1 b, H b (BFGS), or K_t^-1 b.
+      subroutine apply_operator(b, x, err)
+         real(wp), intent(in), contiguous :: b(:)
+         real(wp), intent(out), contiguous :: x(:)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp), allocatable :: bq(:), alpha(:)
+         real(wp) :: t0
+         t0 = wall_time()
+         select case (att%method)
+         case (METHOD_QUASI)
+            bq = b
+            allocate (alpha(max(bfgs%m, 1)))
+            call bfgs%first_loop(bq, alpha)
+            call problem%solver%solve(bq, x, err)
+            if (.not. allocated(err)) call bfgs%second_loop(alpha, x)
+         case (METHOD_NEWTON)
+            if (problem%separate_tangent .and. .not. elastic_now) then
+               call problem%tsolver%solve(b, x, err)
+            else
+               call problem%solver%solve(b, x, err)
+            end if
+         case default
+            call problem%solver%solve(b, x, err)
+         end select
+         problem%solves = problem%solves + 1
+         problem%time%solve = problem%time%solve + (wall_time() - t0)
+      end subroutine apply_operator
+
+   end subroutine iterate_increment
+
+   !> Why the iteration cap was reached: cycling joint states (the residual stalls while the
+   !> count of slipping/open points keeps changing), a stagnating residual, or the cap alone.
+   function cap_reason(hist, states, cap) result(reason)
+      real(wp), intent(in) :: hist(0:)
+      integer, intent(in) :: states(0:)
+      integer, intent(in) :: cap
+      character(len=:), allocatable :: reason
+      integer :: n, k, changes
+      character(len=16) :: buf
+      n = ubound(hist, 1)
+      write (buf, '(i0)') cap
+      reason = 'iteration cap ('//trim(buf)//') reached'
+      if (n < 10) return
+      k = n - 9
+      if (minval(hist(k:n)) < 0.5_wp*minval(hist(0:k - 1))) return
+      changes = count(states(k:n) /= states(k - 1:n - 1))
+      if (changes >= 3) then
+         reason = 'cycling joint states (the residual stalls while slip/open states flip)'
+      else
+         reason = 'stagnating residual'
+      end if
+   end function cap_reason
+
+   !> Modified Newton (linear convergence): true when the mean contraction of the last
+   !> RATE_SPAN iterations cannot bring the residual below `tol` within min(cap, MN_BUDGET)
+   !> iterations (the next method of the chain is cheaper than a crawl). Other methods
+   !> converge irregularly (BFGS speeds up as pairs accumulate, a tangent changes with the
+   !> slip states): true only when the residual has not fallen over SLOW_SPAN iterations.
+   pure logical function hopeless(hist, tol, cap, linear)
+      real(wp), intent(in) :: hist(0:)
+      real(wp), intent(in) :: tol
+      integer, intent(in) :: cap
+      logical, intent(in) :: linear
+      real(wp) :: rate, need
+      integer :: n
+      n = ubound(hist, 1)
+      hopeless = .false.
+      if (.not. linear) then
+         if (n < SLOW_SPAN) return
+         hopeless = minval(hist(n - SLOW_SPAN/2:n)) >= minval(hist(0:n - SLOW_SPAN/2 - 1))
+         return
+      end if
+      if (.not. (hist(n - RATE_SPAN) > 0.0_wp) .or. .not. (hist(n) > 0.0_wp)) return
+      rate = (hist(n)/hist(n - RATE_SPAN))**(1.0_wp/RATE_SPAN)
+      if (rate >= 1.0_wp) then
+         hopeless = .true.
+         return
+      end if
+      need = log(tol/hist(n))/log(rate)
+      hopeless = n + need > real(min(cap, MN_BUDGET), wp)
+   end function hopeless
+
+   pure real(wp) function ieee_nan() result(x)
+      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+      x = ieee_value(x, ieee_quiet_nan)
+   end function ieee_nan
+
+end module pecplas_solve_iterate

@@ -1,0 +1,217 @@
+!> What a run shows: the results file rows and the one-line progress per increment.
+module pecplas_solve_output
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_model_type, only: model_t
+   use pecplas_problem_type, only: problem_t
+   use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_increment, only: increment_result_t
+   use pecplas_joints_laws_coulomb, only: plastic_slip
+   use pecplas_solve_restart, only: pack_restart
+   use pecplas_model_options, only: EXACT_ALWAYS, EXACT_ON_STOP
+   use pecplas_base_signals, only: interrupt_requested
+   use pecplas_base_parallel, only: parallel_any
+   use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
+   implicit none (type, external)
+   private
+
+   public :: write_increment, progress_line, stop_pending
+
+contains
+
+   !> Writes one converged increment; fields only every `output%every` increments and at the
+   !> end of each step, the history row and the restart data (/restart) always.
+   !> `how` = (method, line searches, control) of the increment (see the history columns).
+   !> `final`: the run certainly ends after this increment (results_file_t%write_increment).
+   !> The displacements and the massif's stresses, strains and histories are lent to the
+   !> results (moved, not copied: 128+ MB each at 10^6 unknowns) and given back before the
+   !> return, whatever happens.
+   subroutine write_increment(model, problem, results, istep, inc, time, iters, residual, &
+         cpu, reaction, last_of_step, how, error, final)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      integer, intent(in) :: istep, inc, iters, how(3)
+      real(wp), intent(in) :: time, residual, cpu
+      real(wp), intent(in) :: reaction(:, :)
+      logical, intent(in) :: last_of_step
+      type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: final
+      type(increment_result_t) :: r
+      type(error_estimate_t) :: est
+
+      r%step = istep
+      r%increment = inc
+      r%global_increment = problem%increments
+      r%time = time
+      r%pattern_factors = problem%state%factors
+      r%iterations = iters
+      r%method = how(1)
+      r%line_searches = how(2)
+      r%control = how(3)
+      r%residual = residual
+      r%cpu_time = cpu
+      r%write_fields = last_of_step .or. mod(inc, max(1, model%output%every)) == 0
+      if (r%write_fields) then
+         ! the estimate reads the state: before its arrays are lent
+         if (model%output%error_estimate) call estimate_error(model, problem, est, error)
+         if (allocated(error)) return
+         r%reaction = reaction
+         call joint_fields(model, problem, r)
+         call lend(problem, r)
+         if (model%output%error_estimate) call add_estimate(est, r)
+      end if
+      ! exact restart data with this increment when the run stops after it (or always)
+      problem%position%exact = exact_due(model, problem)
+      ! with the state to restart from, replaced at every converged increment (with the
+      ! fields, its lent arrays by reference: pack_restart does not read them)
+      call results%write_increment(r, error, pack_restart(model, problem, r%write_fields), final)
+      ! rank 0 alone writes: when it cannot, every rank of an MPI run stops with it
+      if (parallel_any(allocated(error)) .and. .not. allocated(error)) then
+         call fatal_error(error, 'rank 0 could not write the results file (its message is '// &
+            'on its standard error)')
+         call results%note_failure(error%message)
+      end if
+      if (r%write_fields) call give_back(problem, r)
+   end subroutine write_increment
+
+   !> Whether the restart data written now carry what makes a restarted run exact
+   !> (*OUTPUT, EXACT_RESTART=): with every increment, never, or (ON_STOP) when the run is
+   !> to stop after this one, on a termination signal or --stop-after-increments (a signal
+   !> that comes while it is written stops the run after the next: stop_pending).
+   logical function exact_due(model, problem) result(due)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      select case (model%output%exact_restart)
+      case (EXACT_ALWAYS)
+         due = .true.
+      case (EXACT_ON_STOP)
+         ! the ranks of an MPI run decide together (a signal may reach them apart)
+         due = parallel_any(interrupt_requested()) .or. &
+            problem%position%stop_now(.false., problem%increments)
+      case default
+         due = .false.
+      end select
+   end function exact_due
+
+   !> True when the run must stop after the increment just written: a termination signal
+   !> (on any rank of an MPI run: all ranks stop together) or the --stop-after-increments
+   !> hook (`finished`: the run ends there anyway). Under
+   !> EXACT_RESTART=ON_STOP a signal that came after that increment's restart data were
+   !> packed without the exact part is acted on after the next increment, which has it.
+   logical function stop_pending(model, problem, finished) result(stop)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      logical, intent(in) :: finished
+      stop = parallel_any(interrupt_requested()) .or. &
+         problem%position%stop_now(finished, problem%increments)
+      if (stop .and. model%output%exact_restart == EXACT_ON_STOP) stop = problem%position%exact
+   end function stop_pending
+
+   !> Moves u and the massif's stress, strain and hist arrays of `problem` into `r`.
+   subroutine lend(problem, r)
+      type(problem_t), intent(inout) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s
+      associate (st => problem%state)
+         call move_alloc(st%u, r%displacement)
+         allocate (r%set_fields(size(st%sets)))
+         do s = 1, size(st%sets)
+            call move_alloc(st%sets(s)%stress, r%set_fields(s)%stress)
+            call move_alloc(st%sets(s)%strain, r%set_fields(s)%strain)
+            call move_alloc(st%sets(s)%hist, r%set_fields(s)%state)
+         end do
+      end associate
+   end subroutine lend
+
+   !> Gives back to `problem` what `lend` moved into `r`.
+   subroutine give_back(problem, r)
+      type(problem_t), intent(inout) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s
+      associate (st => problem%state)
+         call move_alloc(r%displacement, st%u)
+         do s = 1, size(st%sets)
+            call move_alloc(r%set_fields(s)%stress, st%sets(s)%stress)
+            call move_alloc(r%set_fields(s)%strain, st%sets(s)%strain)
+            call move_alloc(r%set_fields(s)%state, st%sets(s)%hist)
+         end do
+      end associate
+   end subroutine give_back
+
+   !> Error indicators of the massif and joint elements with the fields.
+   subroutine add_estimate(est, r)
+      type(error_estimate_t), intent(in) :: est
+      type(increment_result_t), intent(inout) :: r
+      integer :: s
+      r%estimated = .true.
+      r%error_estimate = est%eta
+      r%energy_norm = est%energy
+      do s = 1, size(r%set_fields)
+         r%set_fields(s)%error_indicator = est%sets(s)%eta
+      end do
+      if (.not. allocated(r%joint_fields)) return
+      do s = 1, size(r%joint_fields)
+         r%joint_fields(s)%error_indicator = est%joints(s)%eta
+      end do
+   end subroutine add_estimate
+
+   !> Converged joint fields of every joint set; the plastic slip is the law's own
+   !> (pecplas_joints_laws_coulomb: plastic_slip, 0 for a law without one).
+   subroutine joint_fields(model, problem, r)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s, e, ip
+      associate (js => problem%state%joints)
+         if (.not. allocated(js%sets)) return
+         allocate (r%joint_fields(size(js%sets)))
+         do s = 1, size(js%sets)
+            associate (st => js%sets(s), f => r%joint_fields(s), &
+                       law => model%laws(model%joint_sets(s)%law_index)%law)
+               f%eps = st%eps
+               f%sigma = st%sigma
+               f%mode = st%mode
+               f%state = st%hist
+               allocate (f%slip(size(st%mode, 1), size(st%mode, 2)))
+               do e = 1, size(st%mode, 2)
+                  do ip = 1, size(st%mode, 1)
+                     f%slip(ip, e) = plastic_slip(law, st%hist(:, ip, e))
+                  end do
+               end do
+            end associate
+         end do
+      end associate
+   end subroutine joint_fields
+
+   !> One line per converged increment: step, increment, step fraction, iterations, residual
+   !> (and, with joints, the number of joint points in slip and in separation), then the
+   !> method when it is not the run's own, line searches, and 'arc' under arc-length control.
+   subroutine progress_line(model, problem, istep, inc, tau, iters, residual, how_text)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: istep, inc, iters
+      real(wp), intent(in) :: tau, residual
+      character(len=*), intent(in) :: how_text
+      character(len=120) :: joints
+      integer :: nslip, nopen
+      joints = ''
+      if (allocated(model%joint_sets)) then
+         if (size(model%joint_sets) > 0) then
+            call problem%state%joints%count_modes(nslip, nopen)
+            write (joints, '(a,i0,a,i0)') '  slip ', nslip, ' open ', nopen
+         end if
+      end if
+      ! Katona contact: state iterations of the increment, numeric factorisations so far
+      if (problem%katona%active) write (joints, '(a,a,i0,a,i0)') trim(joints), '  states ', &
+         problem%katona%last_state_iterations, ' factorisations ', problem%factorisations
+      write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
+         adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
+         '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)// &
+         how_text
+      ! one line per increment reaches a redirected log at once (a killed run keeps it)
+      flush (output_unit)
+   end subroutine progress_line
+
+end module pecplas_solve_output

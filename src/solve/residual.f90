@@ -1,0 +1,95 @@
+!> Load vectors, the residual on the free equations, and conversions between nodal arrays
+!> (2, nnode) and vectors of the free equations, shared by the iteration methods.
+module pecplas_solve_residual
+   use pecplas_base_kinds, only: wp
+   use pecplas_problem_type, only: problem_t
+   use pecplas_joints_state, only: joint_state_t
+   use pecplas_joints_laws_type, only: MODE_SLIP, MODE_OPEN
+   implicit none (type, external)
+   private
+
+   public :: load_vectors, free_residual, free_part, add_free, joint_signature
+
+contains
+
+   !> The step's loads at step fraction tau: F_ext = fbase + tau fq, with fbase the initial
+   !> stress forces plus the patterns at their step-start factors f0 and fq the change of the
+   !> force patterns over the step; up the imposed displacements at fraction `tau_up`.
+   subroutine load_vectors(problem, f0, ftarget, tau_up, fbase, fq, up)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: f0(:), ftarget(:), tau_up
+      real(wp), allocatable, intent(out) :: fbase(:, :), fq(:, :), up(:, :)
+      integer :: p
+      fbase = problem%initial_force
+      allocate (fq, up, mold=fbase)
+      fq = 0.0_wp
+      up = 0.0_wp
+      do p = 1, size(f0)
+         fbase = fbase + f0(p)*problem%pattern_force(:, :, p)
+         if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%pattern_force(:, :, p)
+         up = up + (f0(p) + (ftarget(p) - f0(p))*tau_up)*problem%pattern_disp(:, :, p)
+      end do
+   end subroutine load_vectors
+
+   !> r = F_ext - F_int on the free equations, the reactions (F_int - F_ext on the supported
+   !> ones), ||r|| and the reference of the convergence test: the applied loads and
+   !> reactions (not the initial-stress forces, which would loosen the criterion; those only
+   !> when nothing else acts).
+   subroutine free_residual(problem, fext, fint, r, reaction, rnorm, ref)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: fext(:, :), fint(:, :)
+      real(wp), intent(out) :: r(:), reaction(:, :), rnorm, ref
+      integer :: i, d, k
+      reaction = fint - fext
+      do i = 1, size(fint, 2)
+         do d = 1, 2
+            k = problem%dofs%eq(d, i)
+            if (k > 0) then
+               r(k) = fext(d, i) - fint(d, i)
+               reaction(d, i) = 0.0_wp
+            end if
+         end do
+      end do
+      rnorm = norm2(r)
+      ref = max(norm2(pack(fext - problem%initial_force, problem%dofs%eq > 0)), norm2(reaction))
+      if (ref == 0.0_wp) ref = norm2(pack(problem%initial_force, problem%dofs%eq > 0))
+   end subroutine free_residual
+
+   !> The free equations' entries of a nodal array.
+   function free_part(problem, a) result(v)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: a(:, :)
+      real(wp), allocatable :: v(:)
+      integer :: k
+      allocate (v(problem%dofs%neq))
+      do k = 1, problem%dofs%neq
+         v(k) = a(problem%dofs%eq_dir(k), problem%dofs%eq_node(k))
+      end do
+   end function free_part
+
+   !> u = u + v on the free equations.
+   subroutine add_free(problem, v, u)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: v(:)
+      real(wp), intent(inout) :: u(:, :)
+      integer :: k
+      do k = 1, problem%dofs%neq
+         u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) = &
+            u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + v(k)
+      end do
+   end subroutine add_free
+
+   !> A number that changes when the trial slip/open states of the joint points change
+   !> (the count of slipping points plus 100003 times the open ones).
+   pure integer function joint_signature(joints) result(sig)
+      type(joint_state_t), intent(in) :: joints
+      integer :: s
+      sig = 0
+      if (.not. allocated(joints%sets)) return
+      do s = 1, size(joints%sets)
+         sig = sig + count(joints%sets(s)%mode_trial == MODE_SLIP) + &
+            100003*count(joints%sets(s)%mode_trial == MODE_OPEN)
+      end do
+   end function joint_signature
+
+end module pecplas_solve_residual

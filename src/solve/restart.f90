@@ -1,0 +1,433 @@
+!> Restart: the driver's state after a converged increment, packed for the results file's
+!> /restart group (pecplas_io_results_restart) and read back into a freshly prepared problem
+!> so that `pecplas DECK --restart OLD.h5` continues the step loop where OLD.h5 stopped.
+!> Packed: the position in the step loop (pecplas_problem_position) and the run counters,
+!> displacements, pattern factors, converged internal forces, the massif's stresses,
+!> strains and histories, the joints' law strains, stresses, histories and modes, and the
+!> Katona doublets' states and multipliers, and the matrices factorised during the run that
+!> its next iterations solve with (item `operators`: see pack_restart).
+module pecplas_solve_restart
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, input_error, fatal_error
+   use pecplas_base_strings, only: itoa
+   use pecplas_model_type, only: model_t
+   use pecplas_problem_type, only: problem_t, K_SOLVER, K_TSOLVER
+   use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
+   use pecplas_solve_stiffness, only: factorise_values, partitioned
+   use pecplas_linalg_sparse, only: csc_t
+   use pecplas_io_results_restart, only: restart_data_t, read_restart_group
+   use pecplas_io_results_checksum, only: deck_checksum
+   use pecplas_base_signals, only: crash_guard_begin, crash_guard_end
+   implicit none (type, external)
+   private
+
+   public :: pack_restart, restore_restart
+
+   !> Layout version of the packed data (a file with another one is refused).
+   real(wp), parameter :: LAYOUT = 1.0_wp
+   integer, parameter :: NPOS = 13
+
+contains
+
+   !> The restart data of the last converged increment (problem%position must be recorded).
+   !> `fields`: the increment is written with its fields, filled from this same state
+   !> (pecplas_solve_output): the displacements and the massif's stresses, strains and
+   !> histories are then given by reference to them (the results file links its datasets)
+   !> instead of copied.
+   !> The next increment's first iteration solves with the last factorisation (full Newton:
+   !> the tangent of the last iterate that refactorised; a full-Newton fallback: its own
+   !> solver's). Its matrix is packed (`operator`, `tangent_operator`; the item `operators`
+   !> says which, the Katona augmentation factor and whether the data are exact) unless it
+   !> is the set-up stiffness, which the restarted run factorises anyway, so that the
+   !> restarted run solves with the same factorisations. Only when problem%position%exact
+   !> (*OUTPUT, EXACT_RESTART=: with the increment the run stops after, with every one, or
+   !> never), and not in a run whose ranks each hold a part of the matrix.
+   function pack_restart(model, problem, fields) result(data)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      logical, intent(in) :: fields
+      type(restart_data_t) :: data
+      real(wp) :: ops(4)
+      integer :: s
+      logical :: tangents
+      associate (p => problem%position, st => problem%state, kt => problem%katona)
+         call data%add('position', [LAYOUT, real(p%istep, wp), real(p%inc_in_step, wp), &
+            real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%increments, wp), &
+            real(problem%iterations, wp), real(problem%cuts, wp), kt%force_scale, &
+            kt%max_penetration])
+         call data%add('f0', p%f0)
+         call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
+         ! the arc-length path under way, and the last increment's displacement increment
+         ! that directs it (a limit probe's first length, an arc predictor's sign)
+         if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
+         call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
+         if (p%path /= PATH_NONE) then
+            call data%add('arc_peak_factors', p%arc%res%peak_factors)
+            call data%add('arc_why', text_codes(p%arc%req%why))
+         end if
+         if (fields) then
+            call data%add_field('u', 'displacement', 0)
+         else
+            call data%add('u', reshape(st%u, [size(st%u)]))
+         end if
+         call data%add('factors', st%factors)
+         tangents = tangents_carried(model, problem)
+         do s = 1, size(st%sets)
+            if (tangents .and. allocated(st%sets(s)%tangent)) &
+               call data%add('tangent_'//itoa(s), reshape(st%sets(s)%tangent, &
+               [size(st%sets(s)%tangent)]))
+            if (fields) then
+               call data%add_field('stress_'//itoa(s), 'stress', s)
+               call data%add_field('strain_'//itoa(s), 'strain', s)
+               call data%add_field('hist_'//itoa(s), 'state', s)
+            else
+               call data%add('stress_'//itoa(s), flat3(st%sets(s)%stress))
+               call data%add('strain_'//itoa(s), flat3(st%sets(s)%strain))
+               call data%add('hist_'//itoa(s), flat3(st%sets(s)%hist))
+            end if
+         end do
+         if (allocated(st%joints%sets)) then
+            do s = 1, size(st%joints%sets)
+               associate (j => st%joints%sets(s))
+                  call data%add('joint_eps_'//itoa(s), flat3(j%eps))
+                  call data%add('joint_sigma_'//itoa(s), flat3(j%sigma))
+                  call data%add('joint_hist_'//itoa(s), flat3(j%hist))
+                  call data%add('joint_mode_'//itoa(s), real(reshape(j%mode, [size(j%mode)]), wp))
+                  if (tangents .and. allocated(j%tangent)) call data%add('joint_tangent_'// &
+                     itoa(s), reshape(j%tangent, [size(j%tangent)]))
+               end associate
+            end do
+         end if
+         if (kt%active) then
+            call data%add('katona_mode', real(kt%mode, wp))
+            call data%add('katona_sign', real(kt%sgn, wp))
+            call data%add('katona_broken', merge(1.0_wp, 0.0_wp, kt%broken))
+            call data%add('katona_force', reshape(kt%f, [size(kt%f)]))
+            call data%add('katona_z', reshape(kt%z, [size(kt%z)]))
+            call data%add('katona_anchor', kt%anchor)
+         end if
+         ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
+         if (p%exact .and. .not. partitioned(model)) then
+            if (problem%solver_moved .and. problem%k_owner == K_SOLVER) then
+               call data%add('operator', problem%k%values)
+               ops(1) = 1.0_wp
+            else if (problem%tangent_factorised .and. problem%k_owner == K_TSOLVER) then
+               call data%add('tangent_operator', problem%k%values)
+               ops(2) = 1.0_wp
+            end if
+         end if
+         call data%add('operators', ops)
+      end associate
+   end function pack_restart
+
+   !> Reads the restart data of `path` into `problem` (set up and initialised for `model`,
+   !> the same deck) and marks its position to be resumed. Input errors (exit 2): no restart
+   !> data, another deck, data that does not fit.
+   subroutine restore_restart(path, model, problem, error)
+      character(len=*), intent(in) :: path
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      type(restart_data_t) :: data
+      character(len=:), allocatable :: names(:), msg
+      real(wp) :: deck_sum
+      logical :: guarded
+      integer :: nj
+
+      nj = 0
+      if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
+      names = restart_names(size(problem%state%sets), nj)
+      ! a damaged file may crash the HDF5 library itself: an input error, not a crash
+      guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
+         ': the HDF5 library crashed reading it (the file is damaged)')
+      call read_restart_group(path, names, data, deck_sum, error)
+      if (guarded) call crash_guard_end()
+      if (allocated(error)) then
+         msg = error%text()
+         call input_error(error, 'cannot restart from '//path//': '//msg)
+         return
+      end if
+      if (.not. allocated(model%deck_text)) then
+         call input_error(error, 'cannot restart: the deck text is unknown')
+         return
+      end if
+      ! the paths of the files read do not count (pecplas_io_results_checksum, deck_identity)
+      if (deck_sum /= deck_checksum(model%deck_text)) then
+         call input_error(error, 'cannot restart from '//path//': it was written by another '// &
+            'deck (its deck text differs from '//model%deck_file//'); restart with the deck '// &
+            'that wrote it')
+         return
+      end if
+      call unpack_data(data, model, problem, error)
+      if (.not. allocated(error)) call restore_operators(data, model, problem, error)
+      if (allocated(error)) then
+         msg = error%text()
+         call input_error(error, 'cannot restart from '//path// &
+            ': its restart data does not fit this deck ('//msg//')')
+      end if
+   end subroutine restore_restart
+
+   !> Puts the restart data into `problem` and marks its position to be resumed.
+   subroutine unpack_data(data, model, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      logical :: tangents
+      integer :: s, nj
+      nj = 0
+      if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
+      associate (p => problem%position, st => problem%state, kt => problem%katona)
+         call data%get('position', NPOS, v, error)
+         if (allocated(error)) return
+         if (v(1) /= LAYOUT) then
+            call fatal_error(error, 'restart data of another layout version')
+            return
+         end if
+         p%istep = nint(v(2)); p%inc_in_step = nint(v(3)); p%level = nint(v(4))
+         p%tau = v(5); p%dt = v(6); p%k_first = v(7); p%k_conv = v(8)
+         problem%increments = nint(v(9)); problem%iterations = nint(v(10))
+         problem%cuts = nint(v(11)); kt%force_scale = v(12); kt%max_penetration = v(13)
+         if (p%istep < 1 .or. p%istep > size(model%steps)) then
+            call fatal_error(error, 'restart step '//itoa(p%istep)//' is not a step of the deck')
+            return
+         end if
+         call data%get('f0', size(st%factors), p%f0, error)
+         if (allocated(error)) return
+         call unpack_path(data, problem, error)
+         if (allocated(error)) return
+         p%exact = .false.
+         if (data%has('operators')) then
+            call data%get('operators', 4, v, error)
+            if (allocated(error)) return
+            p%exact = v(4) /= 0.0_wp
+         end if
+         ! (datasets of an earlier state may remain in the group: read only what this one
+         ! wrote)
+         tangents = tangents_carried(model, problem)
+         call data%get('fint_conv', size(st%u), v, error)
+         if (allocated(error)) return
+         p%fint_conv = reshape(v, shape(st%u))
+         call data%get('u', size(st%u), v, error)
+         if (allocated(error)) return
+         st%u = reshape(v, shape(st%u))
+         call data%get('factors', size(st%factors), v, error)
+         if (allocated(error)) return
+         st%factors = v
+         do s = 1, size(st%sets)
+            if (tangents .and. data%has('tangent_'//itoa(s)) .and. &
+                allocated(st%sets(s)%tangent)) &
+               call get4(data, 'tangent_'//itoa(s), st%sets(s)%tangent, error)
+            if (allocated(error)) return
+            call get3(data, 'stress_'//itoa(s), st%sets(s)%stress, error)
+            if (.not. allocated(error)) call get3(data, 'strain_'//itoa(s), st%sets(s)%strain, error)
+            if (.not. allocated(error)) call get3(data, 'hist_'//itoa(s), st%sets(s)%hist, error)
+            if (allocated(error)) return
+         end do
+         do s = 1, nj
+            associate (j => st%joints%sets(s))
+               call get3(data, 'joint_eps_'//itoa(s), j%eps, error)
+               if (.not. allocated(error)) call get3(data, 'joint_sigma_'//itoa(s), j%sigma, error)
+               if (.not. allocated(error)) call get3(data, 'joint_hist_'//itoa(s), j%hist, error)
+               if (.not. allocated(error)) call data%get('joint_mode_'//itoa(s), size(j%mode), v, &
+                  error)
+               if (allocated(error)) return
+               j%mode = reshape(nint(v), shape(j%mode))
+               if (tangents .and. data%has('joint_tangent_'//itoa(s)) .and. &
+                   allocated(j%tangent)) &
+                  call get4(data, 'joint_tangent_'//itoa(s), j%tangent, error)
+               if (allocated(error)) return
+            end associate
+         end do
+         if (kt%active) then
+            call data%get('katona_mode', kt%nd, v, error)
+            if (allocated(error)) return
+            kt%mode = nint(v)
+            call data%get('katona_sign', kt%nd, v, error)
+            if (allocated(error)) return
+            kt%sgn = nint(v)
+            call data%get('katona_broken', kt%nd, v, error)
+            if (allocated(error)) return
+            kt%broken = v /= 0.0_wp
+            call data%get('katona_force', 2*kt%nd, v, error)
+            if (allocated(error)) return
+            kt%f = reshape(v, shape(kt%f))
+            call data%get('katona_z', 2*kt%nd, v, error)
+            if (allocated(error)) return
+            kt%z = reshape(v, shape(kt%z))
+            call data%get('katona_anchor', kt%nd, kt%anchor, error)
+            if (allocated(error)) return
+            call kt%begin_increment()
+         end if
+         ! trial = converged everywhere, as after a commit
+         call st%rollback()
+         p%resume = .true.
+      end associate
+   end subroutine unpack_data
+
+   !> The arc-length path under way and the last displacement increment (absent from restart
+   !> data of an older version: no path, no increment).
+   subroutine unpack_path(data, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:), peak(:), why(:)
+      associate (p => problem%position)
+         if (data%has('du_prev')) then
+            call data%get('du_prev', problem%dofs%neq, p%du_prev, error)
+            if (allocated(error)) return
+         end if
+         p%path = PATH_NONE
+         if (.not. data%has('arc')) return
+         call data%get('arc', 1 + ARC_VECTOR, v, error)
+         if (allocated(error)) return
+         if (.not. any(v(1) == real([PATH_NONE, PATH_STEP, PATH_PROBE], wp))) then
+            call fatal_error(error, 'restart data arc names no kind of path')
+            return
+         end if
+         p%path = nint(v(1))
+         if (p%path == PATH_NONE) return
+         call data%get('arc_peak_factors', size(problem%state%factors), peak, error)
+         if (allocated(error)) return
+         call data%get('arc_why', max(1, data%length('arc_why')), why, error)
+         if (allocated(error)) return
+         call p%arc%from_vector(v(2:), peak, codes_text(why))
+      end associate
+   end subroutine unpack_path
+
+   !> A text as reals: its length, then its character codes.
+   pure function text_codes(text) result(v)
+      character(len=:), allocatable, intent(in) :: text
+      real(wp), allocatable :: v(:)
+      integer :: i
+      if (.not. allocated(text)) then
+         v = [0.0_wp]
+         return
+      end if
+      v = [real(len(text), wp), (real(ichar(text(i:i)), wp), i = 1, len(text))]
+   end function text_codes
+
+   pure function codes_text(v) result(text)
+      real(wp), intent(in) :: v(:)
+      character(len=:), allocatable :: text
+      integer :: i, n
+      n = max(0, min(nint(v(1)), size(v) - 1))
+      allocate (character(len=n) :: text)
+      do i = 1, n
+         text(i:i) = achar(max(0, min(255, nint(v(i + 1)))))
+      end do
+   end function codes_text
+
+   !> Factorises the matrices the interrupted run had factorised (see pack_restart); data
+   !> without the item `operators` (written before it existed), and a run whose ranks each
+   !> hold a part of the matrix (whatever ranks wrote the data), restart from the set-up
+   !> factorisation.
+   subroutine restore_operators(data, model, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: ops(:), v(:)
+      if (.not. data%has('operators')) return
+      call data%get('operators', 4, ops, error)
+      if (allocated(error)) return
+      if (partitioned(model)) return
+      if (ops(1) /= 0.0_wp) then
+         call get_operator(data, 'operator', problem%k, v, error)
+         if (allocated(error)) return
+         ! the matrix is augmented when the run's was (a Katona body held by its contacts)
+         if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
+         call factorise_values(model, problem, v, .false., error)
+      else if (ops(2) /= 0.0_wp) then
+         call get_operator(data, 'tangent_operator', problem%k, v, error)
+         if (.not. allocated(error)) call factorise_values(model, problem, v, .true., error)
+      end if
+   end subroutine restore_operators
+
+   !> The packed matrix `name` on the run's stiffness pattern k. Where this run stores the
+   !> upper triangle (pecplas_solve_stiffness, upper_storage) and the data hold the whole
+   !> matrix (written by a version that stored it whole), its upper triangle is taken.
+   subroutine get_operator(data, name, k, v, error)
+      type(restart_data_t), intent(in) :: data
+      character(len=*), intent(in) :: name
+      type(csc_t), intent(in) :: k
+      real(wp), allocatable, intent(out) :: v(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: whole(:)
+      integer :: nw
+      nw = k%whole_nnz()
+      if (k%upper .and. data%length(name) == nw .and. nw /= k%nnz()) then
+         call data%get(name, nw, whole, error)
+         if (.not. allocated(error)) call k%upper_of_whole(whole, v)
+      else
+         call data%get(name, k%nnz(), v, error)
+      end if
+   end subroutine get_operator
+
+   !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
+   pure function restart_names(nsets, njoint) result(names)
+      integer, intent(in) :: nsets, njoint
+      character(len=:), allocatable :: names(:)
+      character(len=32), allocatable :: list(:)
+      integer :: s
+      list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
+         'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
+         'katona_anchor', 'operators', 'operator', 'tangent_operator', 'du_prev', 'arc', &
+         'arc_peak_factors', 'arc_why']
+      do s = 1, nsets
+         list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
+            'hist_'//itoa(s), 'tangent_'//itoa(s)]
+      end do
+      do s = 1, njoint
+         list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &
+            'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s), 'joint_tangent_'//itoa(s)]
+      end do
+      names = list
+   end function restart_names
+
+   pure function flat3(a) result(v)
+      real(wp), intent(in) :: a(:, :, :)
+      real(wp), allocatable :: v(:)
+      v = reshape(a, [size(a)])
+   end function flat3
+
+   subroutine get4(data, name, a, error)
+      type(restart_data_t), intent(in) :: data
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: a(:, :, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      call data%get(name, size(a), v, error)
+      if (allocated(error)) return
+      a = reshape(v, shape(a))
+   end subroutine get4
+
+   !> The points' consistent tangents of the last update are carried when an arc-length path
+   !> may follow: its predictor assembles the tangent from them before any update of the
+   !> increment (a load-controlled increment updates the points first, and its first solve
+   !> uses the carried factorisation).
+   logical function tangents_carried(model, problem) result(carried)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer :: i
+      carried = .false.
+      if (.not. problem%position%exact) return
+      carried = problem%position%path /= PATH_NONE
+      do i = problem%position%istep, size(model%steps)
+         carried = carried .or. model%steps(i)%arc_length
+      end do
+   end function tangents_carried
+
+   subroutine get3(data, name, a, error)
+      type(restart_data_t), intent(in) :: data
+      character(len=*), intent(in) :: name
+      real(wp), intent(inout) :: a(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      call data%get(name, size(a), v, error)
+      if (allocated(error)) return
+      a = reshape(v, shape(a))
+   end subroutine get3
+
+end module pecplas_solve_restart
