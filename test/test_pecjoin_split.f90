@@ -88,8 +88,8 @@ contains
       if (allocated(error)) return
       call setup_problem(model, problem, error)
       if (allocated(error)) return
-      call check(error, problem%dofs%eq(1, node(model, 13)) == 0 .and. &
-         problem%dofs%eq(1, node(model, 15)) == 0 .and. problem%dofs%eq(1, node(model, 14)) > 0, &
+      call check(error, problem%system%dofs%eq(1, node(model, 13)) == 0 .and. &
+         problem%system%dofs%eq(1, node(model, 15)) == 0 .and. problem%system%dofs%eq(1, node(model, 14)) > 0, &
          'x fixed at duplicates 13 (set left) and 15 (node 6), free at 14')
       if (allocated(error)) return
       associate (sup => model%supports)
@@ -117,7 +117,7 @@ contains
          end associate
          if (allocated(error)) return
       end do
-      call check(error, problem%dofs%eq(2, node(model, 13)) == 0, 'y of 13 imposed (no equation)')
+      call check(error, problem%system%dofs%eq(2, node(model, 13)) == 0, 'y of 13 imposed (no equation)')
    end subroutine test_rules
 
    !> Node sets gain the duplicates; edge sets on the upper body move to them, the

@@ -86,7 +86,7 @@ contains
       w0 = wall_time()
       call prepare_run(model, problem, nflipped, jpoints, error)
       if (allocated(error)) return
-      row%ndof = problem%dofs%neq
+      row%ndof = problem%system%dofs%neq
       scratch = scratch_name(deck, tag)
       call results%create(scratch, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
@@ -96,7 +96,7 @@ contains
          return
       end if
       call run_increments(model, problem, results, .true., status, message, run_err)
-      row%wall = wall_time() - w0 - problem%time%output
+      row%wall = wall_time() - w0 - problem%stats%time%output
       if (allocated(run_err)) status = 'failed'
       call results%discard()
       row%status = status
