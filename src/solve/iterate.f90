@@ -5,6 +5,10 @@
 !>   QUASI_NEWTON     the same factorisation with BFGS updates (pecplas_solve_bfgs);
 !>   NEWTON           the consistent tangent refactorised every iteration,
 !> each with an optional line search (pecplas_solve_line_search; not with arc-length).
+!> An increment of imposed displacement enters the first iteration through the operator,
+!> K du = F_ext - F_int(u_n) - K_fc dup (the stiffness columns of the constrained DOFs
+!> times their change), so that the whole body follows the moved nodes from the start;
+!> its later iterations, like every update, integrate each point from the converged state.
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
@@ -21,6 +25,7 @@ module pecplas_solve_iterate
    use pecplas_solve_residual, only: load_vectors, free_residual, free_part, add_free, &
       joint_signature
    use pecplas_fe_assembly, only: internal_forces
+   use pecplas_fe_imposed, only: imposed_forces
    implicit none (type, external)
    private
 
@@ -99,7 +104,7 @@ contains
       type(line_search_t) :: ls
       real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
       integer :: neq, it
-      logical :: moved, ok, elastic_now
+      logical :: moved, ok, elastic_now, imposed
 
       neq = problem%system%dofs%neq
       out%reason = ''
@@ -118,7 +123,10 @@ contains
          max(BFGS_MIN_PAIRS, int(BFGS_BYTES/(16.0_wp*max(neq, 1))))))
       q = free_part(problem, fq)
       fint = fint_conv
-      if (any(u /= problem%state%u)) then
+      ! moved imposed displacements: their linear response is the first iteration's load
+      ! (load control; an arc-length increment keeps them at the step-start fraction)
+      imposed = any(u /= problem%state%u) .and. .not. att%arc
+      if (any(u /= problem%state%u) .and. att%arc) then
          call forces(u, error)
          if (allocated(error)) return
       end if
@@ -188,6 +196,10 @@ contains
             call refactorise(error)
             if (allocated(error)) return
          end if
+         if (it == 0 .and. imposed) then
+            call subtract_imposed(error)
+            if (allocated(error)) return
+         end if
          call apply_operator(r, du, error)
          if (allocated(error)) return
          if (att%arc) then
@@ -211,7 +223,9 @@ contains
          call forces(u, error)
          if (allocated(error)) return
          eta = 1.0_wp
-         if (att%line_search .and. .not. att%arc) then
+         ! (not along the first step of an imposed increment: its residual at eta = 0 is
+         ! that of the linear response, not of a state the search could return to)
+         if (att%line_search .and. .not. att%arc .and. .not. (it == 0 .and. imposed)) then
             g0 = dot_product(du, r)
             call free_residual(problem, fext, fint, gfree, reaction, rnorm, ref)
             g1 = dot_product(du, gfree)
@@ -233,12 +247,38 @@ contains
             eta = ls%eta
          end if
          dtot = dtot + eta*du
-         if (att%method == METHOD_QUASI) call push_pair(u - u_iter)
+         ! a BFGS pair relates free displacements to free forces: not the imposed step
+         if (att%method == METHOD_QUASI .and. .not. (it == 0 .and. imposed)) &
+            call push_pair(u - u_iter)
          it = it + 1
       end do
       out%du = dtot
 
    contains
+
+      !> r = r - K_fc dup on the free equations, dup the change of the imposed displacements
+      !> (u holds the new ones, the free DOFs the converged values), K the matrix of the
+      !> operator: the points' consistent tangents (Newton, and quasi-Newton on a Newton
+      !> run's tangent) or the elastic stiffness; hist(0) becomes the linearised residual.
+      subroutine subtract_imposed(err)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp), allocatable :: fimp(:, :)
+         logical :: tangent
+         select case (att%method)
+         case (METHOD_NEWTON)
+            tangent = .not. elastic_now
+         case (METHOD_QUASI)
+            tangent = .not. problem%linear%separate_tangent
+         case default
+            tangent = .false.
+         end select
+         allocate (fimp, mold=u)
+         call imposed_forces(model, problem%system%dofs, problem%system%rules, problem%state, &
+            u - problem%state%u, tangent, fimp, err)
+         if (allocated(err)) return
+         r = r - free_part(problem, fimp)
+         if (ref > 0.0_wp) hist(0) = norm2(r)/ref
+      end subroutine subtract_imposed
 
       !> Internal forces at u (a failed material return is a run error: the increment fails).
       subroutine forces(uu, err)
