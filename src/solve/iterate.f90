@@ -191,8 +191,14 @@ contains
          end if
          elastic_now = .false.
          ! full Newton: the tangent of the current iterate; at the first iteration the last
-         ! factorisation (the previous increment's tangent) unless there is none yet
-         if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
+         ! factorisation (the previous increment's tangent) unless there is none yet, or the
+         ! elastic stiffness when imposed displacements move and the points' tangents are a
+         ! discarded attempt's (after a rollback: see subtract_imposed)
+         if (att%method == METHOD_NEWTON .and. it == 0 .and. imposed .and. &
+             .not. problem%state%converged_tangents) then
+            call elastic_operator(error)
+            if (allocated(error)) return
+         else if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
             call refactorise(error)
             if (allocated(error)) return
          end if
@@ -259,7 +265,9 @@ contains
       !> r = r - K_fc dup on the free equations, dup the change of the imposed displacements
       !> (u holds the new ones, the free DOFs the converged values), K the matrix of the
       !> operator: the points' consistent tangents (Newton, and quasi-Newton on a Newton
-      !> run's tangent) or the elastic stiffness; hist(0) becomes the linearised residual.
+      !> run's tangent) or the elastic stiffness (modified Newton, quasi-Newton on it, and
+      !> Newton when the tangents are not the converged state's); hist(0) becomes the
+      !> linearised residual.
       subroutine subtract_imposed(err)
          type(error_t), allocatable, intent(out) :: err
          real(wp), allocatable :: fimp(:, :)
@@ -300,6 +308,15 @@ contains
          logical :: kept
          call bfgs%push(free_part(problem, du_step), free_part(problem, fint) - gold, kept)
       end subroutine push_pair
+
+      !> Full Newton, first iteration after a rollback: the elastic stiffness (the run's own
+      !> factorisation when it keeps one apart from the tangent's, else factorised now).
+      subroutine elastic_operator(err)
+         type(error_t), allocatable, intent(out) :: err
+         elastic_now = .true.
+         if (.not. problem%linear%separate_tangent) call factorise_stiffness(model, problem, &
+            .false., err)
+      end subroutine elastic_operator
 
       !> Full Newton: the consistent tangent at the current state. A singular tangent (a
       !> perfectly plastic zone, a joint in full slip) is no mechanism of the model: this
