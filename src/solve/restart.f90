@@ -261,8 +261,10 @@ contains
             if (allocated(error)) return
             call kt%begin_increment()
          end if
-         ! trial = converged everywhere, as after a commit
+         ! trial = converged everywhere, as after a commit; the points' tangents are the
+         ! converged state's when carried (else the set-up's: not those of the state)
          call st%rollback()
+         st%converged_tangents = tangents
          p%resume = .true.
       end associate
    end subroutine unpack_data
