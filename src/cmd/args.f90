@@ -12,7 +12,6 @@ module pecplas_cmd_args
    use, intrinsic :: iso_fortran_env, only: output_unit
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT
-   use pecplas_base_strings, only: itoa
    use pecplas_io_text_parse, only: parse_real, parse_int
    use pecplas_cmd_command, only: command_error
    implicit none (type, external)
@@ -69,9 +68,9 @@ module pecplas_cmd_args
       type(word_t), allocatable :: notes(:)
       type(option_t), allocatable :: options(:)
       procedure(lines_function), pointer, nopass :: version => null()
-      !> The positional words: name in texts, noun in messages, help, count range
-      !> (max -1: any number), and how many options are declared before them (their place
-      !> in the generated usage line).
+      !> The positional words: name in texts, noun in messages, help, count range (min 0
+      !> or 1, max 0 when none are declared, 1, or -1: any number), and how many options are
+      !> declared before them (their place in the generated usage line).
       character(len=:), allocatable :: pos_metavar, pos_noun, pos_help
       integer :: pos_min = 0, pos_max = 0, pos_at = 0
       type(word_t), allocatable :: words(:)
@@ -141,9 +140,10 @@ contains
       call add(this, names, metavar, k, help, repeatable, hidden)
    end subroutine parser_add_option
 
-   !> Declares the positional words: from `min` to `max` of them (max -1: any number),
-   !> `metavar` in the texts, `noun` in the messages ("no deck given", "only one deck may
-   !> be given"). Their place in the generated usage line is after the options declared so far.
+   !> Declares the positional words: at least `min` (0 or 1) and at most `max` (1, or -1 for
+   !> any number) of them, `metavar` in the texts, `noun` in the messages ("no deck given",
+   !> "only one deck may be given"). Their place in the generated usage line is after the
+   !> options declared so far.
    subroutine parser_add_positional(this, metavar, noun, help, min, max)
       class(arg_parser_t), intent(inout) :: this
       character(len=*), intent(in) :: metavar, noun, help
@@ -151,8 +151,8 @@ contains
       this%pos_metavar = metavar
       this%pos_noun = noun
       this%pos_help = help
-      this%pos_min = min
-      this%pos_max = max
+      this%pos_min = merge(1, 0, min >= 1)
+      this%pos_max = merge(1, -1, max == 1)
       this%pos_at = size(this%options)
    end subroutine parser_add_positional
 
@@ -223,12 +223,9 @@ contains
                if (this%pos_max == 0) then
                   call input_error(error, this%usage_error_text('unexpected word '''// &
                      word//''''))
-               else if (this%pos_max == 1) then
+               else
                   call input_error(error, this%usage_error_text('only one '// &
                      this%pos_noun//' may be given'))
-               else
-                  call input_error(error, this%usage_error_text('at most '// &
-                     itoa(this%pos_max)//' '//this%pos_noun//'s may be given'))
                end if
                return
             end if
@@ -259,14 +256,8 @@ contains
             end if
          end associate
       end do
-      if (size(this%words) < this%pos_min) then
-         if (this%pos_min == 1) then
-            call input_error(error, this%usage_error_text('no '//this%pos_noun//' given'))
-         else
-            call input_error(error, this%usage_error_text('at least '//itoa(this%pos_min)// &
-               ' '//this%pos_noun//'s must be given'))
-         end if
-      end if
+      if (size(this%words) < this%pos_min) call input_error(error, &
+         this%usage_error_text('no '//this%pos_noun//' given'))
    end subroutine parser_read
 
    !> Reads the words `args` as `read` does and answers what ends the program here:
