@@ -130,7 +130,7 @@ contains
       do k = size(keys), 1, -1
          if (base%has(keys(k))) cycle
          if (k > size(THESIS_KEYS)) then
-            code = command_error(COMMAND, EXIT_INPUT, '--perturb '//trim(keys(k))//': the law '// &
+            code = command_error(COMMAND, EXIT_INPUT, 'option --perturb: the law '// &
                runner%law_type//' has no parameter '//trim(keys(k)))
             return
          end if
