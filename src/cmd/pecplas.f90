@@ -33,7 +33,6 @@ module pecplas_cmd_pecplas
 
    !> Program name in error messages.
    character(len=*), parameter :: COMMAND = 'pecplas'
-   !> Exit code of a run interrupted (SIGTERM/SIGINT, or --stop-after-increments).
 
    public :: pecplas_main, run_deck
 
