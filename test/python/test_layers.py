@@ -1,5 +1,5 @@
 """The source tree is layered: each folder of src/ uses only folders below it, so no two
-folders reach each other through `use` statements (doc/architecture.md).
+folders reach each other through `use` statements.
 
 The folder of a Fortran file is the folder holding it (src/model/refine/x.f90 belongs to
 src/model/refine, not to src/model); folder A depends on folder B when a file of A uses a
