@@ -32,9 +32,7 @@ dataset or exit code differs, 2 on bad arguments.
 import argparse
 import csv
 import json
-import math
 import os
-import re
 import shutil
 import subprocess
 import sys

@@ -6,8 +6,8 @@ src/model/refine, not to src/model); folder A depends on folder B when a file of
 module (or extends a module by a submodule) defined in B. A *folder circle* is a strongly
 connected component of two or more folders of that graph. The test fails on any circle and
 prints, for each, the `use` lines from one of its folders into another, as FILE:LINE, the
-pairs with the fewest lines first (the likeliest to point the wrong way; at most 5 a pair). Pure Python, no
-build needed: the modules are found by their `module NAME` lines.
+pairs with the fewest lines first (the likeliest to point the wrong way; at most 5 a pair).
+Pure Python, no build needed: the modules are found by their `module NAME` lines.
 """
 import collections
 import re
