@@ -9,6 +9,7 @@ module pecplas_cmd_pecplas
    use pecplas_base_version, only: PROGRAM_NAME, VERSION
    use pecplas_base_files, only: make_directories, path_stem, path_dir, same_file, exit_now
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: method_name
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_prepare, only: prepare_run
@@ -376,7 +377,7 @@ contains
       write (*, '(a)') ' title: '//title//'   units: '//units
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
          model%mesh%nelem(), '  equations ', problem%system%dofs%neq, '  steps ', size(model%steps), &
-         '  solver ', linear_solver_name(model), ' / ', model%solver%method
+         '  solver ', linear_solver_name(model), ' / ', method_name(model%solver%method)
       if (allocated(model%laws)) then
          do i = 1, size(model%laws)
             if (len(model%laws(i)%law%describe()) > 0) write (*, '(a)') ' law '// &
@@ -386,7 +387,7 @@ contains
       if (.not. allocated(model%joint_sets)) return
       do i = 1, size(model%joint_sets)
          associate (js => model%joint_sets(i))
-            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%etype// &
+            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%type_name()// &
                ', law '//js%law
          end associate
       end do

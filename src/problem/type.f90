@@ -4,6 +4,7 @@ module pecplas_problem_type
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: METHOD_NEWTON
    use pecplas_fe_dofs, only: new_dofs
    use pecplas_fe_state, only: fe_state_t
    use pecplas_fe_loads, only: pattern_vectors
@@ -81,7 +82,7 @@ contains
             end associate
          end associate
       end do
-      problem%linear%separate_tangent = model%solver%method /= 'NEWTON'
+      problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
       npat = 0

@@ -16,8 +16,8 @@ module pecplas_solve_attempts
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_output, only: write_increment, progress_line
    use pecplas_base_timers, only: wall_time
-   use pecplas_solve_iterate, only: attempt_t, outcome_t, iterate_increment, &
-      METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
+   use pecplas_solve_iterate, only: attempt_t, outcome_t, iterate_increment
+   use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_solve_residual, only: free_part, load_vectors
    use pecplas_base_strings, only: itoa
    use pecplas_base_progress_eta, only: progress_eta_t
@@ -53,11 +53,11 @@ contains
       logical, intent(in) :: katona
       integer, allocatable :: methods(:)
       select case (model%solver%method)
-      case ('NEWTON')
+      case (METHOD_NEWTON)
          ! BFGS on the last factorised tangent: where a singular tangent stalls Newton
          ! (a mechanism forming at a limit load)
          methods = [METHOD_NEWTON, METHOD_QUASI]
-      case ('QUASI_NEWTON')
+      case (METHOD_QUASI)
          methods = [METHOD_QUASI, METHOD_NEWTON]
       case default
          methods = [METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON]
@@ -197,7 +197,7 @@ contains
       if (allocated(error)) return
       if (run%quiet) return
       how = ''
-      if (method_name(method) /= model%solver%method) how = '  '//method_name(method)
+      if (method /= model%solver%method) how = '  '//method_name(method)
       if (out%line_searches > 0) how = how//'  ls '//itoa(out%line_searches)
       if (control == 1) how = how//'  arc'
       call progress_line(model, problem, istep, inc, out%tau, out%iterations, out%residual, how)

@@ -12,6 +12,7 @@ module pecplas_solve_iterate
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_base_timers, only: wall_time
@@ -25,9 +26,6 @@ module pecplas_solve_iterate
    private
 
    public :: attempt_t, outcome_t, iterate_increment
-   public :: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
-
-   integer, parameter :: METHOD_MODIFIED = 1, METHOD_QUASI = 2, METHOD_NEWTON = 3
 
    !> What to try: method, line search, control, and the step's load path
    !> factors(tau) = f0 + (ftarget - f0) tau.
@@ -68,19 +66,6 @@ module pecplas_solve_iterate
    integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
 
 contains
-
-   pure function method_name(method) result(name)
-      integer, intent(in) :: method
-      character(len=:), allocatable :: name
-      select case (method)
-      case (METHOD_MODIFIED)
-         name = 'MODIFIED_NEWTON'
-      case (METHOD_QUASI)
-         name = 'QUASI_NEWTON'
-      case default
-         name = 'NEWTON'
-      end select
-   end function method_name
 
    !> One increment from the converged state (problem%state, with internal forces
    !> `fint_conv`): u, fint (internal forces) and reaction at the end, and the outcome.

@@ -5,6 +5,7 @@ module pecplas_solve_stiffness
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_SINGULAR, fatal_error
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: METHOD_NEWTON
    use pecplas_model_provenance, only: place_t
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
@@ -32,7 +33,7 @@ contains
       logical :: symmetric, tangent
       name = model%solver%linear
       if (name /= 'AUTO') return
-      tangent = model%solver%method == 'NEWTON'
+      tangent = model%solver%method == METHOD_NEWTON
       if (present(tangent_of_fallback)) tangent = tangent .or. tangent_of_fallback
       ! The elastic stiffness of modified Newton is symmetric positive definite: CHOLMOD.
       ! Full Newton with a non-symmetric consistent tangent (non-associated plasticity,
