@@ -1,7 +1,7 @@
-!> Katona contact (doc/theory.md §6.5, thesis (I.12)–(I.14)): the node doublets of every joint set
-!> whose law is KATONA, their contact states and multipliers, and the run counters. Held by
-!> the driver's problem_t; built by pecplas_joints_katona_doublets, solved by
-!> pecplas_solve_katona_increment.
+!> Katona contact (doc/theory.md §6.5, thesis (I.12)–(I.14)): the node doublets of every joint
+!> set held by Katona contact (joint_set_t%is_katona, a law of TYPE=KATONA), their contact
+!> states and multipliers, and the run counters. Held by the driver's problem_t; built by
+!> pecplas_joints_katona_doublets, solved by pecplas_solve_katona_increment.
 !>
 !> Conventions are the laws' (pecplas_joints_laws_type): per doublet k the relative displacement
 !> z = (eps_n, eps_t) = Dk U with eps_n = -g_n closure positive, and the multipliers are the
