@@ -1,5 +1,5 @@
 """Strip-footing decks for the nonlinear-solution tests (test_footing_paths.py), on the graded
-half-model mesh of test/data/plasticity/make_footing.py: weightless Mohr-Coulomb soil, a
+half-model mesh of tools/pecplas_py/decks/make_footing.py: weightless Mohr-Coulomb soil, a
 footing of half-width b = 1 m on x in [0, 1] at y = 0, symmetry axis and far side on rollers,
 base fixed.
 
@@ -9,12 +9,10 @@ stiff_footing the top row of elements under the footing is a stiff elastic plate
 the soil's), so that both drives load the same rigid footing. An optional surcharge q acts on
 the surface beyond the footing (and under it, under force control) in a first step.
 """
-import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[0] / "data" / "plasticity"))
-import make_footing  # noqa: E402
+from pecplas_py.decks import make_footing
 
 B = 1.0
 

@@ -17,13 +17,10 @@ arc-length (doc/theory.md §4).
 """
 import math
 import re
-import sys
-from pathlib import Path
 
 import h5py
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 from footing_decks import deck  # noqa: E402
 from deck_runs import run as run_deck  # noqa: E402
 

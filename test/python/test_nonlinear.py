@@ -18,14 +18,12 @@ honest statuses (doc/theory.md, 'Nonlinear solution').
   per cent).
 """
 import re
-import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 from deck_runs import run  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]

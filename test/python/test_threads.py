@@ -18,7 +18,6 @@ from those of the same deck with an elastic sand by more than 1 % of their large
 only the elastic predictor would have been compared)."""
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -26,8 +25,9 @@ import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 from pecplas_exe import pecplas_cmd  # noqa: E402
+
+from pecplas_py import script_cmd
 
 RTOL = 1e-12
 
@@ -41,7 +41,7 @@ SETTINGS = {"NEWTON": ("TOLERANCE=1e-8", 3, 0.6), "MODIFIED_NEWTON": ("TOLERANCE
 def make_deck(tmp, method, threads, sand=DP_SAND):
     base = tmp / "s5_r3.inp"
     if not base.exists():
-        subprocess.run([sys.executable, str(ROOT / "tools/make_s5_deck.py"), "--refine", "3",
+        subprocess.run([*script_cmd("decks.make_s5_deck"), "--refine", "3",
                         "--cycles", "1", "-o", str(base)], check=True, cwd=ROOT,
                        capture_output=True)
     text = base.read_text()

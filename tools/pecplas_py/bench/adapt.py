@@ -2,13 +2,13 @@
 """Adaptive refinement beside uniform refinement (make bench), error of a goal against wall time.
 
 S2 pile (goal: head settlement at 2000 kN): `pecplas DECK --target-error 1% --goal node:1:y`
-from the coarsest deck of the work-precision series (tools/make_s2_decks.py, level 3, first
+from the coarsest deck of the work-precision series (tools/pecplas_py/decks/make_s2_decks.py, level 3, first
 loading step, 5 increments, full Newton), for the Mohr-Coulomb interface (Q4/GOODMAN4 and
 Q8/GOODMAN6) and Katona contact (Q4); the uniform series and the Richardson references are those
-of doc/bench/work_precision.csv (tools/bench_work_precision.py, not rerun here).
+of doc/bench/work_precision.csv (tools/pecplas_py/bench/work_precision.py, not rerun here).
 
 Strip footing (goal: settlement of the footing centre at 150 kPa): the Drucker-Prager footing of
-tools/bench_scaling.py (Q8, 10 m x 5 m half model, geostatic stress, 150 kPa in 2 increments); uniform
+tools/pecplas_py/bench/scaling.py (Q8, 10 m x 5 m half model, geostatic stress, 150 kPa in 2 increments); uniform
 series nx x nx/2 for nx = 10 .. 80 run here (Richardson reference over the three finest), and the
 adaptive sequence from nx = 10 (target 0.2 %).
 
@@ -27,17 +27,15 @@ import csv
 import math
 import os
 import re
-import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import bench_common as bc                        # noqa: E402
-import bench_scaling as bsc                      # noqa: E402
-import make_s2_decks as g2                       # noqa: E402
-import wp_decks as wd                            # noqa: E402
-from wp_analysis import cheapest_within, relative_error, richardson  # noqa: E402
-from wp_report import label, plot                # noqa: E402
+from pecplas_py.bench import common as bc
+from pecplas_py.bench import scaling as bsc
+from pecplas_py.decks import make_s2_decks as g2
+from pecplas_py.bench import wp_decks as wd
+from pecplas_py.bench.wp_analysis import cheapest_within, relative_error, richardson
+from pecplas_py.bench.wp_report import label, plot
 
 S2_CASES = [("mohr_coulomb", "Q4"), ("katona", "Q4"), ("mohr_coulomb", "Q8")]
 FOOTING_NX = (10, 20, 40, 80)
@@ -266,7 +264,7 @@ def timing_text(runs, wp):
 
 def write_fragment(prov, wp, ada, fruns, fada, frich, quick):
     lines = ["## Adaptive refinement beside uniform refinement (S2, strip footing)", "",
-             f"`python3 tools/bench_adapt.py{' --quick' if quick else ''}` (commit "
+             f"`python3 -m pecplas_py.bench.adapt{' --quick' if quick else ''}` (commit "
              f"{prov['commit']}, {prov['date']}). " + timing_text(ada + fruns + fada, wp)
              + " Adaptive series: "
              "`pecplas DECK --target-error 1% --goal node:N:y` (footing: 0.2 %), every level a point at the "

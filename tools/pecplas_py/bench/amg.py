@@ -2,12 +2,12 @@
 """Would an iterative solver scale better on the footing's tangents? AMG-preconditioned CG
 on the very matrices the program factorises (make bench).
 
-The scaling bench (tools/bench_scaling.py) finds the Drucker-Prager footing's time per
+The scaling bench (tools/pecplas_py/bench/scaling.py) finds the Drucker-Prager footing's time per
 increment growing as N^1.3: a sparse factorisation's cost grows faster than N, and the Newton
 iterations grow with the mesh. An iterative solver whose cost grows as N would be the remedy
 only if its iteration count stayed flat on these matrices. This part measures that count.
 
-For each size of the footing mesh (tools/bench_scaling.py decks, 1e4 to 1e6 equations), and
+For each size of the footing mesh (tools/pecplas_py/bench/scaling.py decks, 1e4 to 1e6 equations), and
 for the same mesh with an elastic soil (the contrast: the elastic stiffness), the release
 `pecplas-bench-tangent` runs the deck and writes the matrix of the run's last factorisation
 (the consistent tangent of the last Newton iteration; the elastic stiffness for the elastic
@@ -21,26 +21,24 @@ only indicative. The growth of each with N is fitted by least squares on log-log
 
 Writes doc/bench/amg.csv and the fragment doc/bench/amg.md.
 
-    python3 tools/bench_amg.py [--quick] [--sizes 1e4 1e5 ...]
+    python3 -m pecplas_py.bench.amg [--quick] [--sizes 1e4 1e5 ...]
 """
 import argparse
 import os
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import (BENCH_DIR, executable, load1, load_range, one_thread,  # noqa: E402
-                          write_csv, write_fragment)
+from pecplas_py.bench.common import (BENCH_DIR, executable, load1, load_range, one_thread,
+                                     write_csv, write_fragment)
 
 # one thread for the BLAS under numpy and scipy too (set before they load it), as for the
 # program's runs
 one_thread()
 import numpy as np  # noqa: E402
 
-import bench_scaling  # noqa: E402
+from pecplas_py.bench import scaling as bench_scaling
 
 SIZES = (1e4, 3e4, 1e5, 3e5, 1e6)
 QUICK_SIZES = (1e4, 3e4, 1e5)
@@ -163,7 +161,7 @@ def power(x):
 
 def fragment(rows, quick):
     loads = load_range([r[-1] for r in rows])
-    md = ["## An iterative solver on the footing's tangents (`tools/bench_amg.py`)", "",
+    md = ["## An iterative solver on the footing's tangents (`tools/pecplas_py/bench/amg.py`)", "",
           "The matrix of the last factorisation of each footing run of the scaling section "
           "(the consistent tangent of the last Newton iteration, Drucker-Prager soil), and "
           "the elastic stiffness of the same mesh for contrast, written by "

@@ -1,10 +1,10 @@
-"""Shared pieces of the `make bench` scripts (tools/bench_*.py).
+"""Shared pieces of the `make bench` scripts (tools/pecplas_py/bench/*.py).
 
 Every benchmark CSV records where its numbers come from: `write_csv` appends the columns
 `commit` and `machine` to every row. Every timing comes from a run made by the script that
 writes the chart (`run_timed`), never from a stored number.
 
-    from bench_common import ROOT, BENCH_DIR, executable, run_timed, write_csv, provenance
+    from pecplas_py.bench.common import ROOT, BENCH_DIR, executable, run_timed, write_csv, provenance
 """
 import csv
 import math
@@ -14,18 +14,16 @@ import subprocess
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from pecplas_py import ROOT
+from pecplas_py.exe import exe_path
+
 BENCH_DIR = ROOT / "doc" / "bench"
 
 
 def executable(target="pecplas"):
-    """Path of a release executable (builds it if needed)."""
-    r = subprocess.run(["fpm", "run", "--profile", "release", "--target", target,
-                        "--runner", "echo"], cwd=ROOT, capture_output=True, text=True)
-    if r.returncode != 0:
-        raise RuntimeError(f"fpm could not build {target}:\n{r.stderr}")
-    path = Path(r.stdout.split()[-1])
-    return str(path if path.is_absolute() else ROOT / path)  # whatever the caller's cwd
+    """Path of a release executable (pecplas_py.exe: $PECPLAS_BIN's build, else fpm's release
+    build, built if needed); raises ExeError (a RuntimeError) when there is none."""
+    return exe_path(target)
 
 
 def provenance():
@@ -108,7 +106,7 @@ def write_csv(path, header, rows):
 
 def write_fragment(name, text):
     """A markdown section of the benchmark summary: doc/bench/<name>.md (collected by
-    tools/bench_summary.py into doc/bench/README.md)."""
+    tools/pecplas_py/bench/summary.py into doc/bench/README.md)."""
     BENCH_DIR.mkdir(parents=True, exist_ok=True)
     p = BENCH_DIR / f"{name}.md"
     p.write_text(text.rstrip() + "\n")

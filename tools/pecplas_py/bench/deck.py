@@ -11,16 +11,13 @@ loaded machine are not headline figures); the whole run once.
 
 Writes doc/bench/deck.csv and the fragment doc/bench/deck.md.
 
-    python3 tools/bench_deck.py [--quick]
+    python3 -m pecplas_py.bench.deck [--quick]
 """
 import argparse
 import statistics
-import sys
 import tempfile
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1  # noqa: E402
+from pecplas_py.bench.common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1
 
 REPEATS = 3
 COLUMNS = ["n", "equations", "keyword_read_s", "mesh_read_s", "ratio", "elastic_run_s",

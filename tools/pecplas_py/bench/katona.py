@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Katona contact against the Mohr–Coulomb penalty joint, by speed (part of `make bench`):
-the S1 opening–closing shear box and the S2-type pile of tools/make_katona_pile.py (h = 0.2 and
+the S1 opening–closing shear box and the S2-type pile of tools/pecplas_py/decks/make_katona_pile.py (h = 0.2 and
 0.05 m), each with Katona (Lagrange multipliers, rigid contact), and with the penalty joint
 under full Newton and under modified Newton alone (`FALLBACK=NO`, the thesis's method). The
 decks differ only by the law TYPE and the *SOLVER line. A run longer than --limit seconds is
@@ -10,10 +10,10 @@ saddle-factor comparison of `pecplas-bench-katona` on the pile and finer Hertz m
 Every wall time is measured here (median of --repeats runs when a run takes less than 5 s),
 beside the 1-minute load average when the case started: on a machine shared with other work
 (load above the core count) the times are longer than on an idle one, the ratios less so.
-Writes doc/bench/katona.csv and the fragment doc/bench/katona.md (tools/bench_summary.py puts
+Writes doc/bench/katona.csv and the fragment doc/bench/katona.md (tools/pecplas_py/bench/summary.py puts
 it into doc/bench/README.md).
 
-    python3 tools/bench_katona.py [--limit 120] [--repeats 3] [--quick] [--out DIR]
+    python3 -m pecplas_py.bench.katona [--limit 120] [--repeats 3] [--quick] [--out DIR]
 """
 import argparse
 import os
@@ -21,13 +21,12 @@ import re
 import shutil
 import statistics
 import subprocess
-import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import (BENCH_DIR, ROOT, executable, run_timed,  # noqa: E402
-                          write_csv, write_fragment, load1)
+from pecplas_py.bench.common import (BENCH_DIR, ROOT, executable, run_timed,
+                                     write_csv, write_fragment, load1)
+from pecplas_py import script_cmd
 
 HEADER = ["case", "law", "method", "equations", "status", "increments", "requested",
           "iterations", "factorisations", "state_iterations", "state_max", "wall_s",
@@ -57,7 +56,7 @@ def set_solver(text, method):
 
 def pile_deck(tmp, h, law, method):
     path = tmp / f"pile_{h:g}_{law.lower()}_{method}.inp"
-    subprocess.run([sys.executable, str(ROOT / "tools/make_katona_pile.py"), "--h", str(h),
+    subprocess.run([*script_cmd("decks.make_katona_pile"), "--h", str(h),
                     "--law", law, "--method",
                     "NEWTON" if method == "newton" else "MODIFIED_NEWTON", "--out", str(path)],
                    check=True, capture_output=True)
@@ -151,9 +150,9 @@ def fragment(rows, sad, prov, limit):
     cores = os.cpu_count() or 1
     busy = max(loads) > cores
     md = ["## Katona contact: speed against the penalty joint", "",
-          f"`tools/bench_katona.py` (commit `{prov['commit']}`, {prov['date']}): S1 "
+          f"`tools/pecplas_py/bench/katona.py` (commit `{prov['commit']}`, {prov['date']}): S1 "
           "opening–closing (decks of `input/s1/`, Katona: `test/data/katona/s1_open_close.inp`) "
-          "and the pile of `tools/make_katona_pile.py` (load 2000 kN in 20 increments, unload in "
+          "and the pile of `tools/pecplas_py/decks/make_katona_pile.py` (load 2000 kN in 20 increments, unload in "
           "20), the law TYPE and the *SOLVER method being the only differences. Wall seconds of "
           "the whole run (median of the repeats), release build; load = 1-minute load average "
           f"when the case started, on {cores} cores"
@@ -246,7 +245,7 @@ def main(argv=None):
             bench = shutil.copy2(executable("pecplas-bench-katona"), tmp / "bench-katona")
             sad["pile h = 0.05 m"] = saddle(bench, pile_deck(tmp, 0.05, "KATONA", "katona"))
             hertz = tmp / "hertz_h005.inp"
-            subprocess.run([sys.executable, str(ROOT / "tools/make_hertz_deck.py"), "--h", "0.05",
+            subprocess.run([*script_cmd("decks.make_hertz_deck"), "--h", "0.05",
                             "--out", str(hertz)], check=True, capture_output=True)
             sad["Hertz h = 0.05 mm"] = saddle(bench, hertz)
     out = Path(a.out)

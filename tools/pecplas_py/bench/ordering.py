@@ -2,7 +2,7 @@
 """Fill-reducing orderings for CHOLMOD on the elastic block (make bench).
 
 pecplas-bench-ordering builds the elastic plane-strain square of Q4 or Q8 elements (the
-squares of tools/bench_solver.py), runs it through the program for its stiffness matrix and,
+squares of tools/pecplas_py/bench/solver.py), runs it through the program for its stiffness matrix and,
 for each ordering, analyses and factorises that matrix REPEATS times in the same process:
 
 - AMD: CHOLMOD's approximate minimum degree alone;
@@ -20,17 +20,14 @@ average is recorded with each case.
 
 Writes doc/bench/ordering.csv and the fragment doc/bench/ordering.md.
 
-    python3 tools/bench_ordering.py [--quick] [--repeat 3] [--render]
+    python3 -m pecplas_py.bench.ordering [--quick] [--repeat 3] [--render]
 """
 import argparse
 import csv
 import os
-import sys
 import tempfile
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1  # noqa
+from pecplas_py.bench.common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1
 
 COLUMNS = ["element", "n", "equations", "ordering", "used", "nnz_L", "flops",
            "analyse_s", "analyse_min_s", "analyse_max_s", "factorise_s", "factorise_min_s",
@@ -63,7 +60,7 @@ def measure(exe, cases, orderings, repeats, tmp):
 
 
 def fragment(rows, repeats):
-    md = ["## CHOLMOD fill-reducing ordering (`tools/bench_ordering.py`)", "",
+    md = ["## CHOLMOD fill-reducing ordering (`tools/pecplas_py/bench/ordering.py`)", "",
           "The elastic plane-strain squares of the overhead benchmark; for each ordering, "
           "nnz(L) and the flop count of CHOLMOD's analysis (independent of the machine's "
           "load) and the analysis (ordering + symbolic) and numeric factorisation times, "

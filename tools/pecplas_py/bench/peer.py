@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """A peer side by side: our code and CalculiX (ccx) on the same meshes.
 
-1. The S2 frictional pile (tools/make_s2_decks.py, axisymmetric): ours with the Mohr-Coulomb
+1. The S2 frictional pile (tools/pecplas_py/decks/make_s2_decks.py, axisymmetric): ours with the Mohr-Coulomb
    penalty joints and with Katona contact, CalculiX with face-to-face penalty contact and
-   Coulomb friction on the deck exported by tools/export_abaqus.py (same K_n, K_t as ours).
+   Coulomb friction on the deck exported by tools/pecplas_py/peers/export_abaqus.py (same K_n, K_t as ours).
 2. The CGS-4 inclined-plane block (plane strain, test/data/joints/inclined_plane.inp): slip
    limit F/G against (tan a + mu)/(1 - mu tan a) = 0.412371.
 
@@ -13,7 +13,7 @@ wall time with its spread [min - max], with the 1-minute load average when the c
 (--quick: one run per case).
 Writes doc/bench/peer.csv, doc/bench/peer_pile.png, doc/bench/peer_block.png, doc/bench/peer.md.
 
-    python3 tools/bench_peer.py [--quick] [--keep DIR]
+    python3 -m pecplas_py.bench.peer [--quick] [--keep DIR]
 """
 import argparse
 import math
@@ -29,9 +29,9 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import bench_common as bc  # noqa: E402
-import export_abaqus as ex  # noqa: E402
+from pecplas_py.bench import common as bc
+from pecplas_py.peers import export_abaqus as ex
+from pecplas_py import script_cmd
 
 ROOT = bc.ROOT
 HEAD_LOAD = 2000.0
@@ -175,7 +175,7 @@ def ccx_shaft(dat, m, time, faces):
 # ---------------------------------------------------------------- scenes
 def pile(exe, work, refine, rows):
     d = work / f"s2_r{refine}"
-    subprocess.run([sys.executable, str(ROOT / "tools" / "make_s2_decks.py"), "--refine",
+    subprocess.run([*script_cmd("decks.make_s2_decks"), "--refine",
                     str(refine), "--out", str(d)], check=True, capture_output=True)
     tag = "" if refine == 1 else f"_r{refine}"
     mc, ka = d / "s2" / f"s2_mohr_coulomb{tag}.inp", d / "s2" / f"s2_katona{tag}.inp"
@@ -227,7 +227,7 @@ def tied_tip(text):
 
 
 def _ours_shaft(h5):
-    from s2_results import last_key, shaft
+    from pecplas_py.scenes.s2_results import last_key, shaft
     try:
         return shaft(h5, last_key(h5, 1))[3]
     except Exception:          # a joint kind without tributary data: leave it out
@@ -331,8 +331,8 @@ def fragment(rows, version, quick=False):
     states what the numbers show."""
     pile = [r for r in rows if r[0].startswith("S2")]
     t = ["## A peer side by side: CalculiX", "",
-         "`python3 tools/bench_peer.py` (`--quick`: reference mesh only, one run per case). "
-         "The same meshes, exported by `tools/export_abaqus.py`; ours and `ccx` (CalculiX "
+         "`python3 -m pecplas_py.bench.peer` (`--quick`: reference mesh only, one run per case). "
+         "The same meshes, exported by `tools/pecplas_py/peers/export_abaqus.py`; ours and `ccx` (CalculiX "
          f"{version}) run on one thread each (OMP_NUM_THREADS=1, ccx also "
          "CCX_NPROC_EQUATION_SOLVER=1), wall times of whole runs (input to results). "
          + timing_text(rows, quick), "",

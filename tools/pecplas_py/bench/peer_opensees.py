@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """A second peer: OpenSees (openseespy, UmfPack) on the elastic plane-strain block.
 
-The block of tools/opensees_block.py (Q4 cantilever, nx = 2 ny) at about 1e4, 1e5 and 1e6
+The block of tools/pecplas_py/peers/opensees_block.py (Q4 cantilever, nx = 2 ny) at about 1e4, 1e5 and 1e6
 dofs (quick: 1e4 and 1e5). For each size, ours (`pecplas DECK`) and OpenSees
-(`python3 tools/opensees_block.py MESH.npz OUT.npz`) run alternately, each in its own
+(`python3 -m pecplas_py.peers.opensees_block MESH.npz OUT.npz`) run alternately, each in its own
 process, one thread each (OMP_NUM_THREADS, OPENBLAS_NUM_THREADS, MKL_NUM_THREADS = 1), timed
 by bench_common.run_timed: wall time of the whole run (start-up, input, solve, output) and
 peak resident memory; median, min and max over the repeats (3 by default). The load average
@@ -15,7 +15,7 @@ every nodal displacement within FIELD_TOL of the largest; otherwise the script f
 
 Writes doc/bench/peer_opensees.csv and doc/bench/peer_opensees.md.
 
-    python3 tools/bench_peer_opensees.py [--quick] [--sizes 1e4 1e5] [--repeat 3] [--keep DIR]
+    python3 -m pecplas_py.bench.peer_opensees [--quick] [--sizes 1e4 1e5] [--repeat 3] [--keep DIR]
 """
 import argparse
 import json
@@ -29,10 +29,9 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import bench_common as bc  # noqa: E402
-import opensees_block as ob  # noqa: E402
-from bench_scaling import parse_summary  # noqa: E402
+from pecplas_py.bench import common as bc
+from pecplas_py.peers import opensees_block as ob
+from pecplas_py.bench.scaling import parse_summary
 
 # Both codes solve K u = f directly (CHOLMOD / UMFPACK): they differ only by rounding, of the
 # order of eps times the condition number, which grows like the dofs: measured 3e-13, 1.6e-11
@@ -94,7 +93,7 @@ def one_size(exe, work, target, repeat):
     load = os.getloadavg()[0]
     for _ in range(repeat):        # alternate, so that both codes see the same machine load
         ours.append(bc.run_timed([exe, deck, "-o", h5], timeout=1800))
-        peer.append(bc.run_timed([sys.executable, Path(ob.__file__), npz, out], timeout=1800))
+        peer.append(bc.run_timed([sys.executable, "-m", ob.__name__, npz, out], timeout=1800))
         for r, name in ((ours[-1], "pecplas"), (peer[-1], "OpenSees")):
             if r["rc"] != 0:
                 raise SystemExit(f"bench_peer_opensees: {name} failed on {nx} x {ny} "
@@ -129,9 +128,9 @@ def fragment(rows, version, quick):
     for r in rows:
         by.setdefault(r[3], {})[r[5]] = r
     t = ["## A peer side by side: OpenSees on the elastic block", "",
-         f"`python3 tools/bench_peer_opensees.py`{' --quick' if quick else ''} "
+         f"`python3 -m pecplas_py.bench.peer_opensees`{' --quick' if quick else ''} "
          f"(openseespy {version}, its bundled UMFPACK). The elastic plane-strain cantilever "
-         "block of `tools/opensees_block.py` (Q4, 2 m x 1 m, clamped left edge, 100 kN "
+         "block of `tools/pecplas_py/peers/opensees_block.py` (Q4, 2 m x 1 m, clamped left edge, 100 kN "
          "shear on the right edge, E = 1e5 kPa, nu = 0.3), the same mesh for both codes. "
          "Ours: the deck, one increment (CHOLMOD), results file with displacements only; "
          "OpenSees: `quad` + `ElasticIsotropic` `PlaneStrain`, `UmfPack`, numberer `Plain`, "

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Scaling: an elastic-plastic strip footing from about 1e4 to 1e6 equations.
 
-Mesh: tools/make_default_deck.py (Q8, half model, 10 m x 5 m, footing half-width 1 m), soil
+Mesh: tools/pecplas_py/decks/make_default_deck.py (Q8, half model, 10 m x 5 m, footing half-width 1 m), soil
 turned into Drucker-Prager fitted to Mohr-Coulomb in plane strain (E = 2e4 kPa, nu = 0.3,
 c = 10 kPa, phi = psi = 30 deg: associated, so the consistent tangent is symmetric and full
 Newton uses CHOLMOD). Drucker-Prager rather than Mohr-Coulomb because its smooth cone needs
@@ -23,22 +23,21 @@ slowest run of each size for its spread.
 
 Writes doc/bench/scaling.csv, doc/bench/scaling.png and the fragment doc/bench/scaling.md.
 
-    python3 tools/bench_scaling.py [--quick] [--pecplas PATH]
+    python3 -m pecplas_py.bench.scaling [--quick] [--pecplas PATH]
 """
 import argparse
 import os
 import re
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import (BENCH_DIR, ROOT, executable, load1, run_timed,  # noqa: E402
-                          write_csv, write_fragment)
+from pecplas_py.bench.common import (BENCH_DIR, executable, load1, run_timed,
+                                     write_csv, write_fragment)
+from pecplas_py import script_cmd
 
 INCREMENTS = 2
 REPEATS = 3
@@ -65,7 +64,7 @@ def size_for(target):
 
 
 def make_deck(nx, ny, path):
-    subprocess.run([sys.executable, str(ROOT / "tools" / "make_default_deck.py"), "--nx",
+    subprocess.run([*script_cmd("decks.make_default_deck"), "--nx",
                     str(nx), "--ny", str(ny), "--width", "10", "--depth", "5", "--footing", "1",
                     "-o", str(path)], check=True)
     text = path.read_text()
@@ -231,7 +230,7 @@ def fragment(rows, p, q, wall, quick):
                 "[min – max]" if reps else "one run per size")
     th_text = ("/".join(str(k) for k in threads) if threads
                else os.environ.get("OPENBLAS_NUM_THREADS", "?"))
-    L = ["## Scaling (`tools/bench_scaling.py`)", "",
+    L = ["## Scaling (`tools/pecplas_py/bench/scaling.py`)", "",
          "Strip footing (Q8, Drucker–Prager matched to Mohr–Coulomb in plane strain, "
          "c = 10 kPa, φ = ψ = 30°), geostatic initial "
          "stress (K0 = 0.5), then 300 kPa in 2 increments, full Newton with CHOLMOD, results "

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Scaling of a linear run: the elastic plane-strain Q4 block from about 1e4 to 1e6 equations.
 
-The block is that of the OpenSees peer bench (tools/opensees_block.py: 2 m x 1 m cantilever,
+The block is that of the OpenSees peer bench (tools/pecplas_py/peers/opensees_block.py: 2 m x 1 m cantilever,
 keyword deck, one increment, displacements written). One increment of a linear run is one
 assembly, one factorisation and one solve, so its time per increment is the program's own
-scaling without Newton iterations; the plastic footing of tools/bench_scaling.py adds the
+scaling without Newton iterations; the plastic footing of tools/pecplas_py/bench/scaling.py adds the
 growth of the iteration count with the mesh.
 
 For each size the release pecplas runs REPEATS times in its own process, one thread
@@ -15,23 +15,21 @@ between the two largest sizes (5e5 and 1e6) shows a kink at the top, if any.
 
 Writes doc/bench/scaling_elastic.csv and the fragment doc/bench/scaling_elastic.md.
 
-    python3 tools/bench_scaling_elastic.py [--quick] [--pecplas PATH] [--render]
+    python3 -m pecplas_py.bench.scaling_elastic [--quick] [--pecplas PATH] [--render]
 """
 import argparse
 import csv
 import os
 import statistics
-import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, executable, load1, run_timed, write_csv, write_fragment  # noqa: E402
-from bench_scaling import fit_exponent, parse_summary  # noqa: E402
-import opensees_block as block  # noqa: E402
+from pecplas_py.bench.common import BENCH_DIR, executable, load1, run_timed, write_csv, write_fragment
+from pecplas_py.bench.scaling import fit_exponent, parse_summary
+from pecplas_py.peers import opensees_block as block
 
 REPEATS = 3
 SIZES = (1e4, 3e4, 1e5, 3e5, 5e5, 1e6)
@@ -91,7 +89,7 @@ def fragment(rows, wall):
     p, _ = fit_exponent(n, t)
     slopes = local_slopes(n, t)
     _, text = verdict(p, slopes)
-    L = ["## Scaling of a linear run (`tools/bench_scaling_elastic.py`)", "",
+    L = ["## Scaling of a linear run (`tools/pecplas_py/bench/scaling_elastic.py`)", "",
          "The elastic plane-strain Q4 block of the OpenSees peer section (keyword deck, one "
          "increment: one assembly, one CHOLMOD factorisation, one solve; displacements "
          f"written). One thread; median of {REPEATS} runs per size with the spread "

@@ -15,7 +15,7 @@
 
 Writes doc/bench/solver.csv, doc/bench/laws.csv and the fragments solver.md, laws.md.
 
-    python3 tools/bench_solver.py [--quick]
+    python3 -m pecplas_py.bench.solver [--quick]
 """
 import argparse
 import os
@@ -23,8 +23,8 @@ import re
 import statistics
 import tempfile
 
-from bench_common import (BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1,
-                          fresh_memory_gbs)
+from pecplas_py.bench.common import (BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1,
+                                     fresh_memory_gbs)
 
 COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
            "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",

@@ -16,11 +16,10 @@ root attribute status).
 Writes doc/bench/stability.csv, stability_s1.png, stability_s2.png and the fragment
 doc/bench/stability.md.
 
-    python3 tools/bench_stability.py [--quick] [--pecplas PATH]
+    python3 -m pecplas_py.bench.stability [--quick] [--pecplas PATH]
 """
 import argparse
 import re
-import sys
 import tempfile
 import time
 from pathlib import Path
@@ -28,9 +27,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import (BENCH_DIR, ROOT, executable, run_timed, write_csv,  # noqa: E402
-                          write_fragment)
+from pecplas_py.bench.common import (BENCH_DIR, ROOT, executable, run_timed, write_csv,
+                                     write_fragment)
 
 SCENES = {
     "s1": {"deck": ROOT / "input/s1/s1_open_close_kn1e5.inp", "katona": None, "E": 1e5,
@@ -196,7 +194,7 @@ def converging_range(rows, scene, method):
 
 
 def fragment(rows, cap, timeout, wall, quick):
-    L = ["## Stability maps (`tools/bench_stability.py`)", "",
+    L = ["## Stability maps (`tools/pecplas_py/bench/stability.py`)", "",
          f"Mean iterations per converged increment; a run fails when an increment does not "
          f"converge within {cap} iterations after 3 halvings, or after {timeout:g} s "
          f"(timeout): 'converges' means within this budget (S1 modified Newton at "

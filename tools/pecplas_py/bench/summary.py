@@ -1,18 +1,16 @@
 #!/usr/bin/env python3
-"""Collects the benchmark fragments doc/bench/*.md (written by tools/bench_*.py through
+"""Collects the benchmark fragments doc/bench/*.md (written by tools/pecplas_py/bench/*.py through
 bench_common.write_fragment) into doc/bench/README.md, in a fixed order (stability, scaling,
 scaling_elastic, amg, work_precision, advice, peer, peer_opensees, then the others
 alphabetically), under a header with the commit, machine and date (bench_common.provenance)
 and, if given, the wall time of the whole suite.
 
-    python3 tools/bench_summary.py [--wall SECONDS] [--dir doc/bench] [--keep-header]
+    python3 -m pecplas_py.bench.summary [--wall SECONDS] [--dir doc/bench] [--keep-header]
 """
 import argparse
-import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_common import BENCH_DIR, provenance  # noqa: E402
+from pecplas_py.bench.common import BENCH_DIR, provenance
 
 ORDER = ("stability", "scaling", "scaling_elastic", "amg", "work_precision", "advice", "peer", "peer_opensees")
 OUTPUT = "README.md"
@@ -28,7 +26,7 @@ def ordered_fragments(directory):
 
 def header(prov, wall=None):
     lines = ["# Benchmarks", "",
-             "Written by `tools/bench_summary.py` from the fragments of the `tools/bench_*.py` "
+             "Written by `tools/pecplas_py/bench/summary.py` from the fragments of the `tools/pecplas_py/bench/*.py` "
              "scripts; every number below was measured in the run that wrote it (CSV files "
              "next to this one carry commit and machine on every row).", "",
              f"- commit: `{prov['commit']}`", f"- machine: {prov['machine']}",

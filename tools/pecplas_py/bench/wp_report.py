@@ -1,10 +1,10 @@
 """Names, chart, advice table and summary fragments of the work-precision study
-(tools/bench_work_precision.py)."""
+(tools/pecplas_py/bench/work_precision.py)."""
 import math
 import os
 
-import bench_common as bc
-from wp_analysis import cheapest_within
+from pecplas_py.bench import common as bc
+from pecplas_py.bench.wp_analysis import cheapest_within
 
 S2_LOAD, Q_FIX = 2000.0, 2.83
 SOLVER_NAME = {("NEWTON", False): "full Newton", ("MODIFIED_NEWTON", False): "modified Newton",
@@ -113,7 +113,7 @@ def write_fragments(runs, refs, adv, quick, scenes, scene_model):
     timing = timing_text([r.get("load1", math.nan) for r in runs
                           if not r["status"].startswith("skipped")])
     md = ["## Work-precision (S2, S6)", "",
-          f"`python3 tools/bench_work_precision.py{' --quick' if quick else ''}` (commit "
+          f"`python3 -m pecplas_py.bench.work_precision{' --quick' if quick else ''}` (commit "
           f"{prov['commit']}, {prov['date']}): {len(ok)} of {len(runs)} runs completed, "
           f"{sum(r['wall'] for r in ok):.0f} s of runs. S2: head settlement at 2000 kN (end of "
           f"loading, unloading not run); S6: head uplift at {Q_FIX} kN (a load below every "

@@ -11,7 +11,7 @@ by the release `pecplas` with a timeout, and the outcome classified:
            names the deck with line 0 and is counted apart as "whole deck")
   file left (exit 2 with a results file written)
 
-Usage: tools/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
+Usage: tools/pecplas_py/checks/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
        [--seed 1] [--keep DIR] [--jobs 1] [--json FILE] [--sources DECK ...]
 Only source decks whose unmutated run takes less than --max-source-seconds are used (also
 among those given with --sources), so that the run stays short and a timeout is a hang. Failing cases are copied to --keep (default
@@ -19,7 +19,6 @@ build/mutate_decks) with their stderr, to reproduce them. Exit 1 when any crash,
 line or file left was seen."""
 import argparse
 import json
-import os
 import random
 import re
 import shutil
@@ -30,7 +29,9 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from pecplas_py import ROOT
+from pecplas_py.exe import ExeError, exe_path
+
 GARBAGE = ["abc", "1e999", "-1e999", "nan", "NaN", "inf", "-inf", "0", "-0", "1e-320",
            "1e308", "-1e308", "2147483648", "-2147483649", "99999999999999999999", "*", ",",
            "", "-7", "3.5.1", "1d400", "0x10", "1e8", "100000000", "-1", "0.5236"]
@@ -181,7 +182,8 @@ def one_case(args, srcs, case):
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("-n", type=int, default=10000, help="number of mutated decks")
-    p.add_argument("--exe", default=os.environ.get("PECPLAS_BIN", ""))
+    p.add_argument("--exe", help="pecplas executable (default: pecplas_py.exe: $PECPLAS_BIN, "
+                   "else fpm's release build)")
     p.add_argument("--timeout", type=float, default=20.0, help="seconds per run (hang bound)")
     p.add_argument("--max-source-seconds", type=float, default=2.0)
     p.add_argument("--seed", type=int, default=1)
@@ -192,11 +194,10 @@ def main():
                    "under input/); those that run in under --max-source-seconds are used")
     args = p.parse_args()
     if not args.exe:
-        cands = sorted(ROOT.glob("build/*/app/pecplas"), key=lambda q: q.stat().st_mtime)
-        if not cands:
-            sys.exit("no pecplas executable: build it (fpm build --profile release) or "
-                     "give --exe")
-        args.exe = str(cands[-1])
+        try:
+            args.exe = exe_path("pecplas")
+        except ExeError as e:
+            sys.exit(f"no pecplas executable: {e}")
     args.exe = str(Path(args.exe).resolve())
     srcs = sources(args.exe, args.max_source_seconds, args.timeout,
                    [Path(q).resolve() for q in args.sources or []])

@@ -4,7 +4,7 @@ half-width b = 1 m on weightless Tresca soil (Mohr-Coulomb with phi = psi = 0, c
 half model by symmetry, pushed down under displacement control. Prandtl's limit pressure is
 q_u = (2 + pi) c = 51.416 kPa.
 
-    python3 test/data/plasticity/make_footing.py [--elem T6|Q8] [--nf 4] [--bias 1.3] [-o FILE]
+    python3 -m pecplas_py.decks.make_footing [--elem T6|Q8] [--nf 4] [--bias 1.3] [-o FILE]
 
 The mesh is structured and graded: `nf` elements under the footing, 2 `nf` from its edge
 to x = 3b and `nf` down to y = -b (where Prandtl's mechanism lives), their sizes growing by
@@ -120,7 +120,7 @@ def main():
     qu = (2.0 + math.pi) * 10.0
     with open(a.output, "w") as f:
         f.write(f"""** Smooth rigid strip footing on weightless Tresca soil (written by make_footing.py:
-**   python3 test/data/plasticity/make_footing.py --elem {a.elem} --nf {a.nf} --bias {a.bias}
+**   python3 -m pecplas_py.decks.make_footing --elem {a.elem} --nf {a.nf} --bias {a.bias}
 **     --grow {a.grow} --settle {a.settle} --increments {a.increments} --nu {a.nu} --tol {a.tol:g} --maxit {a.maxit}).
 ** Half model: footing half-width b = 1 m on x in [0, 1] at y = 0, domain 5 m x 4 m,
 ** {len(elements)} {a.elem} elements: {a.nf} under the half footing, {2 * a.nf} from its edge to x = 3 m and

@@ -23,6 +23,8 @@ Usage: make_hertz_deck.py [--h 0.1] [--out test/data/katona/hertz.inp]
 import argparse
 import math
 
+from pecplas_py.deck import Deck
+
 R, E1, E2, NU, F = 50.0, 70.0e3, 210.0e3, 0.3, 35.0e3
 GROWTH = 1.15
 
@@ -97,46 +99,36 @@ def main():
     estar = 1.0 / ((1 - NU**2) / E1 + (1 - NU**2) / E2)
     a = math.sqrt(4 * F * R / (math.pi * estar))
     p0 = 2 * F / (math.pi * a)
-    out = ['** Hertz line contact, Katona (written by tools/make_hertz_deck.py, h = %g mm).' % h,
-           '** R = 50 mm, E = 70 GPa on 210 GPa, nu = 0.3, F = 35 kN/mm (F/2 on this half):',
-           '** a = %.4f mm, p0 = %.2f MPa.' % (a, p0),
-           '*TITLE', 'Hertz line contact (Katona, frictionless)', '*UNITS', 'N, mm, MPa',
-           '*ANALYSIS, TYPE=PLANE_STRAIN', '*NODES']
-    out += ['%d, %.15g, %.15g' % (k + 1, x, y) for k, (x, y) in enumerate(nodes)]
+    d = Deck(fmt='.15g')
+    d.comment('Hertz line contact, Katona (written by tools/pecplas_py/decks/make_hertz_deck.py, '
+              'h = %g mm).' % h,
+              'R = 50 mm, E = 70 GPa on 210 GPa, nu = 0.3, F = 35 kN/mm (F/2 on this half):',
+              'a = %.4f mm, p0 = %.2f MPa.' % (a, p0))
+    d.title('Hertz line contact (Katona, frictionless)').units('N, mm, MPa')
+    d.analysis('PLANE_STRAIN').nodes([(k + 1, x, y) for k, (x, y) in enumerate(nodes)])
     eid = 0
     for name, etype, els in (('block', 'Q4', belems), ('cylinder', 'Q4', celems),
                              ('core', 'T3', ctri)):
-        out.append('*ELEMENTS, TYPE=%s, SET=%s' % (etype, name))
-        for c in els:
-            eid += 1
-            out.append('%d, %s' % (eid, ', '.join(str(v) for v in c)))
-    out += ['*MATERIAL, NAME=block_steel', 'E = %g, NU = %g' % (E2, NU),
-            '*MATERIAL, NAME=cylinder_al', 'E = %g, NU = %g' % (E1, NU),
-            '*SECTION, SET=block, MATERIAL=block_steel',
-            '*SECTION, SET=cylinder, MATERIAL=cylinder_al',
-            '*SECTION, SET=core, MATERIAL=cylinder_al',
-            '*INTERFACE_LAW, NAME=hertz, TYPE=KATONA', 'MU = 0',
-            '*JOINTS, TYPE=SPRING, SET=contact, LAW=hertz']
+        d.elements(etype, name, [(eid + k + 1, *c) for k, c in enumerate(els)])
+        eid += len(els)
+    d.material('block_steel', E=E2, NU=NU).material('cylinder_al', E=E1, NU=NU)
+    d.section('block', 'block_steel').section('cylinder', 'cylinder_al')
+    d.section('core', 'cylinder_al')
+    d.interface_law('hertz', 'KATONA', 'MU = 0')
     top = len(by) - 1
-    for i in range(nf + 1):
-        eid += 1
-        out.append('%d, %d, %d' % (eid, bid[i, 0], cid[0, i]))
-    out.append('*NSET, NAME=base')
-    out += [', '.join(str(bid[i, top]) for i in range(k, min(k + 12, len(bx))))
-            for k in range(0, len(bx), 12)]
+    d.joints('SPRING', 'contact', 'hertz',
+             [(eid + i + 1, bid[i, 0], cid[0, i]) for i in range(nf + 1)])
     sym = [bid[0, j] for j in range(len(by))] + [cid[i, 0] for i in range(len(radii))] + \
         [centre]
-    out.append('*NSET, NAME=symmetry')
-    out += [', '.join(str(v) for v in sym[k:k + 12]) for k in range(0, len(sym), 12)]
-    out += ['*BOUNDARY', 'base, XY', 'symmetry, X']
+    d.nset('base', [bid[i, top] for i in range(len(bx))], per_line=12)
+    d.nset('symmetry', sym, per_line=12)
+    d.boundary('base, XY', 'symmetry, X')
     jt = len(phis) - 1
     ring = [centre] + [cid[i, jt] for i in reversed(range(len(radii)))]
-    out.append('*EDGES, NAME=flat_top')
-    out += ['%d, %d' % (ring[k], ring[k + 1]) for k in range(len(ring) - 1)]
-    out += ['*LOAD, NAME=load, TYPE=PRESSURE', 'flat_top, %.15g' % (F / (2 * R)),
-            '*STEP, NAME=press, INCREMENTS=1', 'load, 1', '*OUTPUT, EVERY=1']
-    with open(args.out, 'w') as f:
-        f.write('\n'.join(out) + '\n')
+    d.edges('flat_top', [(ring[k], ring[k + 1]) for k in range(len(ring) - 1)])
+    d.load('load', 'PRESSURE', ('flat_top', F / (2 * R)))
+    d.step('press', 1, 'load, 1').output(EVERY=1)
+    d.write(args.out)
     print('%s: %d nodes, %d elements, %d doublets; a = %.4f mm, p0 = %.2f MPa'
           % (args.out, len(nodes), len(belems) + len(celems) + len(ctri), nf + 1, a, p0))
 

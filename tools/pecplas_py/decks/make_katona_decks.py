@@ -14,7 +14,9 @@ non-uniform mesh, joined by generated Katona doublets (EDGES/SIDE) along y = 0:
 """
 import os
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from pecplas_py import ROOT
+
+HERE = str(ROOT / "test" / "data" / "katona")
 XS = [0.0, 0.3, 1.1, 2.0]
 YL = [-1.0, -0.4, 0.0]
 YU = [0.0, 0.25, 0.5]

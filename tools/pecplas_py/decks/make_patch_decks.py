@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the joint patch-test decks of test/data/joints/ (run from anywhere):
 
-    python3 test/data/joints/make_patch_decks.py
+    python3 -m pecplas_py.decks.make_patch_decks
 
 Two blocks (2 elements wide, 1 high each) pressed together by a uniform pressure P on top,
 the lower block on rollers at its base. With one elastic material for both blocks the
@@ -16,9 +16,10 @@ split node also holds its duplicate" is applied.
 """
 
 import math
-from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
+from pecplas_py import ROOT
+
+HERE = ROOT / "test" / "data" / "joints"
 P = 100.0
 E, NU = 1.0e4, 0.3
 # law stiffnesses per unit length (per unit strain for the thin layer, / THICKNESS)

@@ -8,17 +8,15 @@
   part of each deck (nodes, elements, joint elements, node and edge sets) in mesh_rN.inp,
   the rest in template.inp, which includes mesh_r{{REFINE}}.inp; table.csv.
 
-    python3 tools/make_sweep_examples.py [--out input/sweeps]
+    python3 -m pecplas_py.decks.make_sweep_examples [--out input/sweeps]
 """
 import argparse
 import csv
-import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-import make_s2_decks  # noqa: E402
-import make_s6_decks  # noqa: E402
+from pecplas_py import ROOT
+from pecplas_py.decks import make_s2_decks
+from pecplas_py.decks import make_s6_decks
 
 MESH_KEYWORDS = ("*NODES", "*ELEMENTS", "*JOINTS", "*NSET", "*EDGES")
 S2_REFINES = (1, 2, 3)
@@ -40,7 +38,7 @@ def s6_table_iv1(out):
     text = text.replace("S6 pile pull-out, modjoin, refine 1",
                         "S6 pile pull-out, modjoin, table IV.1 case {{CASE_TITLE}}")
     head = ("** Template of the table IV.1 sweep (pecplas-sweep make template.inp table.csv);\n"
-            "** written by tools/make_sweep_examples.py from input/s6/s6_modjoin.inp.\n")
+            "** written by tools/pecplas_py/decks/make_sweep_examples.py from input/s6/s6_modjoin.inp.\n")
     (out / "template.inp").write_text(head + text)
     with (out / "table.csv").open("w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
@@ -76,10 +74,10 @@ def s2_mesh(out):
         template = t
         (out / f"mesh_r{r}.inp").write_text(
             f"** S2 mesh at refinement {r} ({len(m.elements)} Q4, {len(m.nodes)} nodes), "
-            "included by template.inp;\n** written by tools/make_sweep_examples.py.\n"
+            "included by template.inp;\n** written by tools/pecplas_py/decks/make_sweep_examples.py.\n"
             + "\n".join(mesh) + "\n")
     head = ["** Template of the S2 mesh series (pecplas-sweep make template.inp table.csv);",
-            "** written by tools/make_sweep_examples.py from tools/make_s2_decks.py."]
+            "** written by tools/pecplas_py/decks/make_sweep_examples.py from tools/pecplas_py/decks/make_s2_decks.py."]
     (out / "template.inp").write_text("\n".join(head + template) + "\n")
     (out / "table.csv").write_text("case,REFINE\n"
                                    + "".join(f"r{r},{r}\n" for r in S2_REFINES))

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Export one of our decks (doc/deck.md) to an Abaqus-style CalculiX input (`ccx`), for the
-side-by-side benchmark tools/bench_peer.py (`doc/bench/README.md`).
+side-by-side benchmark tools/pecplas_py/bench/peer.py (`doc/bench/README.md`).
 
 Covered: *NODES, *ELEMENTS (Q4, Q8, Q8R, T3), *MATERIAL (elastic E, NU, GAMMA), *SECTION, *NSET,
 *BOUNDARY (fixed components), *EDGES + *LOAD TYPE=PRESSURE, *LOAD TYPE=FORCE,
@@ -22,7 +22,7 @@ The geostatic state: CalculiX has no "equilibrated initial stress" option, so th
 given at every integration point (*INITIAL CONDITIONS, TYPE=STRESS) and the self-weight that
 balances them is applied as *DLOAD GRAV in every step (density GAMMA / g).
 
-    python3 tools/export_abaqus.py DECK OUT.inp [--kn K] [--kt K] [--pair surface|node]
+    python3 -m pecplas_py.peers.export_abaqus DECK OUT.inp [--kn K] [--kt K] [--pair surface|node]
 """
 import argparse
 import math
@@ -162,7 +162,7 @@ def export(m, out, kn=None, kt=None, pair="surface", warn=print):
     axi = m["analysis"].startswith("AXI")
     cpe = {"Q4": "CAX4" if axi else "CPE4", "T3": "CAX3" if axi else "CPE3",
            "Q8": "CAX8" if axi else "CPE8", "Q8R": "CAX8R" if axi else "CPE8R"}
-    L = ["** Exported from our deck by tools/export_abaqus.py for CalculiX (ccx)",
+    L = ["** Exported from our deck by tools/pecplas_py/peers/export_abaqus.py for CalculiX (ccx)",
          "*HEADING", "exported deck", "*NODE"]
     L += [f"{k}, {x:.12g}, {y:.12g}, 0" for k, (x, y) in sorted(m["nodes"].items())]
     sets = {}

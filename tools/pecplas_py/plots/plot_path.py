@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plot a pecplas-path result: tau-eps_t, eps_n-eps_t and the stress path tau-sigma_n.
 
-usage: tools/plot_path.py RESULT.csv [RESULT2.csv ...] [-o FIGURE.png]
+usage: python3 -m pecplas_py.plots.plot_path RESULT.csv [RESULT2.csv ...] [-o FIGURE.png]
 
 Each CSV (columns step, eps_t, eps_n, sigma_n, tau, mode, plastic_slip, as written by
 pecplas-path) becomes one curve; the figure goes next to the first CSV (same name, .png)
@@ -16,7 +16,8 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
-from save_figure import save_figure  # noqa: E402
+
+from pecplas_py.figures import save_figure
 
 
 def read_path_csv(path):

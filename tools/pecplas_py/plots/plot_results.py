@@ -4,7 +4,7 @@ component at the last written increment (element average of the Gauss-point valu
 when a load pattern acts on an edge or node set of its own name (e.g. the pile head `head`
 of the default deck), the load-displacement curve of its loaded node beside it.
 
-    python3 tools/plot_results.py output/default.h5 [-o out.png] [--component yy]
+    python3 -m pecplas_py.plots.plot_results output/default.h5 [-o out.png] [--component yy]
                                   [--increment N] [--scale S]
 Components: xx, yy, zz, xy (tension positive).
 
@@ -26,7 +26,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
-from save_figure import save_figure  # noqa: E402
+
+from pecplas_py.figures import save_figure
 
 COMPONENTS = {"xx": 0, "yy": 1, "zz": 2, "xy": 3}
 # corner nodes in boundary order; quadratic elements walk corner, mid, corner, ...

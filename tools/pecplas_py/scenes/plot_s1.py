@@ -3,11 +3,10 @@
 shear stress and mean shear stress of the lower block against the load, for the results of
 the decks of input/s1/ (run by `make s1`), and the normal stress of the opening-closing cases.
 
-    python3 tools/plot_s1.py [DIR]          # default output/s1; writes PNGs there
+    python3 -m pecplas_py.scenes.plot_s1 [DIR]          # default output/s1; writes PNGs there
 """
-from pathlib import Path
 
-from scene_cli import scene_dir
+from pecplas_py.scenes.scene_cli import scene_dir
 
 import h5py
 import matplotlib
@@ -15,7 +14,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from save_figure import save_figure  # noqa: E402
+
+from pecplas_py.figures import save_figure
 
 
 def series(path):

@@ -4,12 +4,10 @@ interface models, sigma_n and tau along the shaft at the end of loading and of u
 the S3 curves for psi = 0, 1, 5, 15, 30°. Reads output/s2/*.h5 and output/s3/*.h5
 (`make s2`, `make s3`) and writes PNGs beside them.
 
-    python3 tools/plot_s2.py [OUTPUT_DIR]
+    python3 -m pecplas_py.scenes.plot_s2 [OUTPUT_DIR]
 """
-import sys
-from pathlib import Path
 
-from scene_cli import scene_dir
+from pecplas_py.scenes.scene_cli import scene_dir
 
 import matplotlib
 
@@ -17,9 +15,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from s2_results import head_curve, last_key, shaft  # noqa: E402
-from save_figure import save_figure  # noqa: E402
+from pecplas_py.scenes.s2_results import head_curve, last_key, shaft
+from pecplas_py.figures import save_figure
 
 
 def main():

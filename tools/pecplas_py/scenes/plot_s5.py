@@ -5,12 +5,10 @@ interface of the FE shear box at a few instants of the cycle, and the mid-interf
 law, CNL 100 kPa) on the same slip path. Reads output/s5/s5_shear_box.h5 (`make s5`), runs
 pecplas-path in output/s5 and writes PNGs there.
 
-    python3 tools/plot_s5.py [OUTPUT_DIR]
+    python3 -m pecplas_py.scenes.plot_s5 [OUTPUT_DIR]
 """
-import sys
-from pathlib import Path
 
-from scene_cli import scene_dir
+from pecplas_py.scenes.scene_cli import scene_dir
 
 import matplotlib
 
@@ -18,10 +16,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from s5_results import (L, compare, interface, keys_and_steps, mid_history,  # noqa: E402
-                        point_driver, step_ends)
-from save_figure import save_figure  # noqa: E402
+from pecplas_py.scenes.s5_results import (L, compare, interface, keys_and_steps, mid_history,
+                                          point_driver, step_ends)
+from pecplas_py.figures import save_figure
 
 
 def main():

@@ -6,13 +6,11 @@ axial force along the pile at the thesis's loads 2.83, 4.40, 6.28 kN or up to th
 along the shaft at four loads (IV.8); tau, sigma_n, tau/sigma_n against the relative slip at
 depths 0.525, 1.016, 1.581 m (IV.9).
 
-    python3 tools/plot_s6.py [DIR]     # DIR holds s6_*.h5 (default output/s6)
+    python3 -m pecplas_py.scenes.plot_s6 [DIR]     # DIR holds s6_*.h5 (default output/s6)
 """
 import math
-import sys
-from pathlib import Path
 
-from scene_cli import scene_dir
+from pecplas_py.scenes.scene_cli import scene_dir
 
 import h5py
 import matplotlib
@@ -20,9 +18,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from s6_results import head_curve, keys_and_loads, shaft  # noqa: E402
-from save_figure import save_figure  # noqa: E402
+from pecplas_py.scenes.s6_results import head_curve, keys_and_loads, shaft
+from pecplas_py.figures import save_figure
 
 DEPTHS = (0.525, 1.016, 1.581)   # points of interest of the thesis [m]
 QS = (2.83, 4.40, 6.28)          # measured cycle peaks [kN]

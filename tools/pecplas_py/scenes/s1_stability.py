@@ -9,8 +9,8 @@ rows to test/reference/s1_stability.json, and --doc writes the table of doc/vali
 that file (72 runs take minutes: too slow for the tests, which rerun a few rows against the
 file and check the table against it).
 
-    python3 tools/s1_stability.py [--pecplas PATH] [--max-iterations 10000] [--json]
-    python3 tools/s1_stability.py --doc [--check]
+    python3 -m pecplas_py.scenes.s1_stability [--pecplas PATH] [--max-iterations 10000] [--json]
+    python3 -m pecplas_py.scenes.s1_stability --doc [--check]
 """
 import argparse
 import json
@@ -23,7 +23,9 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+from pecplas_py import ROOT
+from pecplas_py.exe import exe_path
+
 TEMPLATE = ROOT / "input" / "s1" / "s1_open_close_kn1e5.inp"
 E1 = 1e5
 REFERENCE = ROOT / "test" / "reference" / "s1_stability.json"
@@ -61,13 +63,12 @@ def table(rows):
 def doc_block(check):
     """Writes (or with `check` compares) the table of doc/validation.md from the reference
     file; returns the diff ('' when up to date)."""
-    sys.path.insert(0, str(Path(__file__).resolve().parent))
-    from doc_blocks import update
+    from pecplas_py.doc_blocks import update
     rows = json.loads(REFERENCE.read_text())["rows"]
-    note = ("<!-- from test/reference/s1_stability.json (written by tools/s1_stability.py "
+    note = ("<!-- from test/reference/s1_stability.json (written by tools/pecplas_py/scenes/s1_stability.py "
             "--json): its runs take minutes, too slow for make test; test/python/test_docs.py "
             "reruns three rows against the file and checks its physics -->")
-    return update(DOC, "s1_stability.py", {"s1-stability": note + "\n" + table(rows)}, check)
+    return update(DOC, "scenes/s1_stability.py", {"s1-stability": note + "\n" + table(rows)}, check)
 
 
 def run(exe, ratio, method, tol, maxit, tmp, fallback="YES"):
@@ -108,9 +109,7 @@ def main():
         sys.stdout.write(diff)
         return 1 if diff else 0
     rows = []
-    exe = a.pecplas or subprocess.run(
-        ["fpm", "run", "--profile", "release", "--target", "pecplas", "--runner", "echo"],
-        cwd=ROOT, capture_output=True, text=True).stdout.split()[-1]
+    exe = a.pecplas or exe_path("pecplas")
     print(HEADER)
     with tempfile.TemporaryDirectory() as t:
         tmp = Path(t)
@@ -125,7 +124,7 @@ def main():
     if a.json:
         REFERENCE.write_text(json.dumps({
             "about": "Stability of the S1 opening-closing test against K_n / E1 (written by "
-                     "tools/s1_stability.py --json; the table of doc/validation.md is "
+                     "tools/pecplas_py/scenes/s1_stability.py --json; the table of doc/validation.md is "
                      "rendered from it; test/python/test_docs.py reruns a few rows and checks "
                      "the physics: interpenetration = sigma_n / K_n, full Newton completes).",
             "max_iterations": a.max_iterations, "rows": rows}, indent=1) + "\n")

@@ -5,18 +5,16 @@ results of `make s2 s3` (OUTPUT_DIR/s2/*.h5, OUTPUT_DIR/s3/*.h5). Each value car
 physics check it passed; test/python/test_s2_s3.py compares fresh runs with the values and
 asserts the same checks on them, so regenerate only after the checks pass (run the test).
 
-    python3 tools/s2_reference.py [OUTPUT_DIR] [-o test/reference/s2_s3.json]
+    python3 -m pecplas_py.scenes.s2_reference [OUTPUT_DIR] [-o test/reference/s2_s3.json]
 """
 import argparse
 import json
 import math
-import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from s2_results import scene_values  # noqa: E402
+from pecplas_py import ROOT
+from pecplas_py.scenes.s2_results import scene_values
 
-ROOT = Path(__file__).resolve().parents[1]
 S2 = ("goodman", "ghaboussi", "spring", "mohr_coulomb", "katona")
 PSI = (0, 1, 5, 15, 30)
 K0, GAMMA, PHI, D, L = 0.5, 18.0, 30.0, 1.0, 10.0
@@ -98,10 +96,10 @@ def main():
         cases[name] = {"deck": f"input/{name[:2]}/{name}.inp",
                        "values": {k: {"value": round(x, 6), "unit": UNITS[k], "check": c[k]}
                                   for k, x in v.items()}}
-    doc = {"about": "Scenes S2 and S3 at refinement 1 (tools/make_s2_decks.py): stored "
+    doc = {"about": "Scenes S2 and S3 at refinement 1 (tools/pecplas_py/decks/make_s2_decks.py): stored "
                     "results of the program, each checked against the physics written "
                     "beside it (test/python/test_s2_s3.py asserts the checks and compares "
-                    "fresh runs). Written by tools/s2_reference.py.",
+                    "fresh runs). Written by tools/pecplas_py/scenes/s2_reference.py.",
            "tolerance": {"rel": 1e-3,
                          "why": "same code and decks: Newton stops at a residual of 1e-4 "
                                 "of the load, so builds (debug/release, BLAS, solver "

@@ -1,14 +1,15 @@
-"""Reading S5 shear-box results (used by tools/plot_s5.py and test/python/test_s5.py):
+"""Reading S5 shear-box results (used by tools/pecplas_py/scenes/plot_s5.py and test/python/test_s5.py):
 interface distributions, the mid-interface history, and the point driver (pecplas-path) on the
 mid-interface slip path."""
-import os
 import subprocess
 from pathlib import Path
 
 import h5py
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+from pecplas_py import ROOT
+from pecplas_py.exe import exe_cmd
+
 L = 0.31
 SIGMA_N0 = 100.0
 LAW = """*INTERFACE_LAW, NAME=iii6_dr80, TYPE=MODJOIN_CYCLIC, LENGTH_UNIT=MM, MODEL_UNIT=M
@@ -59,13 +60,7 @@ def point_driver(targets, workdir, steps=200):
     deck = workdir / "s5_point.inp"
     deck.write_text(LAW + f"*PATH, TYPE=CNL, SIGMA_N0={SIGMA_N0}, STEPS={steps}\n"
                     + ", ".join(f"{t:.12g}" for t in targets) + "\n")
-    exe = os.environ.get("PECPLAS_PATH_BIN")
-    if not exe and os.environ.get("PECPLAS_BIN"):
-        cand = Path(os.environ["PECPLAS_BIN"]).with_name("pecplas-path")
-        exe = str(cand) if cand.exists() else None
-    cmd = [exe] if exe else ["fpm", "run", "--profile", "release", "--target", "pecplas-path",
-                             "--"]
-    r = subprocess.run([*cmd, str(deck), "-o", str(workdir / "s5_point"), "--quiet"], cwd=ROOT,
+    r = subprocess.run([*exe_cmd("pecplas-path"), str(deck), "-o", str(workdir / "s5_point"), "--quiet"], cwd=ROOT,
                        capture_output=True, text=True)
     if r.returncode != 0:
         raise RuntimeError("pecplas-path: " + r.stderr)

@@ -1,4 +1,4 @@
-"""The command line shared by the scene scripts (tools/plot_s*.py): one optional directory,
+"""The command line shared by the scene scripts (scenes/plot_s*.py): one optional directory,
 `--help` from the script's docstring, and a clear error when the directory does not exist."""
 import argparse
 from pathlib import Path
