@@ -94,9 +94,10 @@ class Deck:
         return self.keyword("ANALYSIS", TYPE=type, **params)
 
     def nodes(self, nodes, fmt=None):
-        """*NODES from {id: (x, y)} or [(id, x, y), ...]."""
+        """*NODES from {id: (x, y)}, [(id, x, y), ...] or [(id, (x, y)), ...]."""
         self.keyword("NODES")
-        items = nodes.items() if isinstance(nodes, dict) else ((n[0], n[1:]) for n in nodes)
+        items = nodes.items() if isinstance(nodes, dict) else (
+            (n[0], n[1] if len(n) == 2 else n[1:]) for n in nodes)
         for nid, (x, y) in items:
             self.data(nid, x, y, fmt=fmt)
         return self

@@ -36,6 +36,7 @@ from pecplas_py.decks import make_s2_decks as g2
 from pecplas_py.bench import wp_decks as wd
 from pecplas_py.bench.wp_analysis import cheapest_within, relative_error, richardson
 from pecplas_py.bench.wp_report import label, plot
+from pecplas_py.results import Results
 
 S2_CASES = [("mohr_coulomb", "Q4"), ("katona", "Q4"), ("mohr_coulomb", "Q8")]
 FOOTING_NX = (10, 20, 40, 80)
@@ -126,11 +127,9 @@ def run_footing(exe):
             r = bc.run_timed([exe, str(deck), "-o", str(h5), "--quiet"], timeout=600)
             value = None
             if r["rc"] == 0:
-                import h5py
-                with h5py.File(h5, "r") as f:
-                    ids = list(f["mesh/node_ids"][()])
-                    u = f["increments"][sorted(f["increments"])[-1]]["displacement"][()]
-                value = -float(u[ids.index(node), 1])
+                with Results(h5) as res:
+                    u = res.field(res.last_key(), "displacement")
+                    value = -float(u[res.node_index(node), 1])
             runs.append(dict(scene="footing", model="drucker_prager", element="Q8",
                              method="NEWTON", series="mesh", level=nx, increments=2,
                              dofs=bsc.equations(nx, nx // 2), wall=r["wall"], value=value,

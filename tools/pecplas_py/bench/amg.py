@@ -24,7 +24,6 @@ Writes doc/bench/amg.csv and the fragment doc/bench/amg.md.
     python3 -m pecplas_py.bench.amg [--quick] [--sizes 1e4 1e5 ...]
 """
 import argparse
-import os
 import subprocess
 import tempfile
 import time

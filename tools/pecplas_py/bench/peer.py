@@ -26,12 +26,12 @@ import sys
 import tempfile
 from pathlib import Path
 
-import h5py
 import numpy as np
 
 from pecplas_py.bench import common as bc
 from pecplas_py.peers import export_abaqus as ex
 from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 ROOT = bc.ROOT
 HEAD_LOAD = 2000.0
@@ -51,12 +51,11 @@ def find_node(m, x, y):
 def ours_curve(h5, node, comp, pattern):
     """(pattern factor, displacement component of `node`) for every written increment, with
     the starting point (0, 0)."""
-    with h5py.File(h5) as f:
-        rows = np.nonzero(f["history/fields"][:])[0]
-        fac = f["history/pattern_factors"][:, pattern][rows]
-        keys = sorted(f["increments"].keys())
-        u = np.array([f["increments"][k]["displacement"][node - 1, comp] for k in keys])
-        steps = f["history/step"][:][rows]
+    with Results(h5) as r:
+        rows = r.field_rows()
+        fac = r.pattern_factors(rows)[:, pattern]
+        u = r.fields("displacement")[:, node - 1, comp]
+        steps = r.history("step")[rows]
     return np.r_[0.0, fac], np.r_[0.0, u], np.r_[1, steps]
 
 

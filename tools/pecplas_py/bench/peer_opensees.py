@@ -26,12 +26,12 @@ import sys
 import tempfile
 from pathlib import Path
 
-import h5py
 import numpy as np
 
 from pecplas_py.bench import common as bc
 from pecplas_py.peers import opensees_block as ob
 from pecplas_py.bench.scaling import parse_summary
+from pecplas_py.results import Results
 
 # Both codes solve K u = f directly (CHOLMOD / UMFPACK): they differ only by rounding, of the
 # order of eps times the condition number, which grows like the dofs: measured 3e-13, 1.6e-11
@@ -60,9 +60,8 @@ def opensees_version():
 
 
 def ours_displacement(h5):
-    with h5py.File(h5) as f:
-        last = sorted(f["increments"].keys())[-1]
-        return f["increments"][last]["displacement"][:]
+    with Results(h5) as r:
+        return r.field(r.last_key(), "displacement")
 
 
 def compare(u_ours, u_peer, tip):

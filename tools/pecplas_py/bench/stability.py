@@ -24,11 +24,11 @@ import tempfile
 import time
 from pathlib import Path
 
-import h5py
 import numpy as np
 
 from pecplas_py.bench.common import (BENCH_DIR, ROOT, executable, run_timed, write_csv,
                                      write_fragment)
+from pecplas_py.results import Results
 
 SCENES = {
     "s1": {"deck": ROOT / "input/s1/s1_open_close_kn1e5.inp", "katona": None, "E": 1e5,
@@ -85,11 +85,9 @@ def run_one(exe, scene, sweep, method, ratio, scale, cap, timeout, tmp):
     status, it = "timeout", np.zeros(0, int)
     if not timed_out:
         try:
-            with h5py.File(out) as f:
-                status = str(f.attrs["status"])
-                if isinstance(f.attrs["status"], bytes):
-                    status = f.attrs["status"].decode()
-                it = f["history/iterations"][:]
+            with Results(out) as res:
+                status = res.status
+                it = res.history("iterations")
         except (OSError, KeyError):
             # no results file: the deck was refused before the first increment
             status = "singular K" if "singular" in r["stderr"] else "error"

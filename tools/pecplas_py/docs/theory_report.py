@@ -31,6 +31,7 @@ from pecplas_py import ROOT
 from pecplas_py import doc_blocks
 from pecplas_py.doc_blocks import report_main
 from pecplas_py.exe import exe_cmd
+from pecplas_py.results import Results
 
 SCRIPT = "docs/theory_report.py"
 DOC = ROOT / "doc" / "theory.md"
@@ -58,11 +59,8 @@ def footing_run(out, elem, nf, exe):
                        capture_output=True, text=True)
     if r.returncode != 0:
         raise SystemExit(f"theory_report: {deck} failed (exit {r.returncode}):\n{r.stderr}")
-    import h5py
-    with h5py.File(h5) as f:
-        nodes = f["mesh/node_sets/footing/nodes"][:]
-        last = sorted(f["increments"])[-1]
-        load = f[f"increments/{last}/reaction"][:, 1][nodes].sum()
+    with Results(h5) as res:
+        load = res.field(res.last_key(), "reaction")[:, 1][res.node_set("footing")].sum()
     elements = len(re.findall(r"^\d+,", text.split("*ELEMENTS", 1)[1].split("*", 1)[0], re.M))
     return {"q_over_c": -load / 1.0 / C, "elements": elements}
 

@@ -5,7 +5,7 @@ when a load pattern acts on an edge or node set of its own name (e.g. the pile h
 of the default deck), the load-displacement curve of its loaded node beside it.
 
     python3 -m pecplas_py.plots.plot_results output/default.h5 [-o out.png] [--component yy]
-                                  [--increment N] [--scale S]
+                                                 [--increment N] [--scale S]
 Components: xx, yy, zz, xy (tension positive).
 
 The load of a pattern is its resultant, taken from the support reactions: by equilibrium the
@@ -19,7 +19,6 @@ import argparse
 import sys
 from pathlib import Path
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -28,6 +27,7 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 from pecplas_py.figures import save_figure
+from pecplas_py.results import Results, text
 
 COMPONENTS = {"xx": 0, "yy": 1, "zz": 2, "xy": 3}
 # corner nodes in boundary order; quadratic elements walk corner, mid, corner, ...
@@ -35,27 +35,23 @@ OUTLINE = {"T3": [0, 1, 2], "Q4": [0, 1, 2, 3], "T6": [0, 3, 1, 4, 2, 5],
            "Q8": [0, 4, 1, 5, 2, 6, 3, 7], "Q8R": [0, 4, 1, 5, 2, 6, 3, 7]}
 
 
-def load_curve(f):
+def load_curve(r):
     """(label, load [force units], displacement of the loaded node along the load [length])
     for the first pattern acting on an edge or node set of its own name, else None."""
-    if "history" not in f or "patterns" not in f["history"].attrs:
-        return None
-    names = [n.decode() if isinstance(n, bytes) else str(n)
-             for n in f["history"].attrs["patterns"]]
-    sets = {**dict(f["mesh"].get("edge_sets", {}).items()),
-            **dict(f["mesh"].get("node_sets", {}).items())}
+    names = r.patterns if "history" in r.file else []
+    mesh = r.file["mesh"]
+    sets = {**dict(mesh.get("edge_sets", {}).items()), **dict(mesh.get("node_sets", {}).items())}
     hit = [k for k, n in enumerate(names) if n in sets]
     if not hit:
         return None
     k = hit[0]
-    rows = np.nonzero(f["history/fields"][:])[0]
-    factors = f["history/pattern_factors"][:][rows]
-    keys = sorted(f["increments"].keys())
+    rows = r.field_rows()
+    factors = r.pattern_factors(rows)
+    keys = r.keys
     if len(keys) != len(rows) or len(keys) < 2:
         return None
-    reac = np.array([f["increments"][key]["reaction"][:].sum(axis=0) for key in keys])
-    analysis = f["/"].attrs.get("analysis", "")
-    if (analysis.decode() if isinstance(analysis, bytes) else str(analysis)) == "axisymmetric":
+    reac = r.fields("reaction").sum(axis=1)
+    if r.attr("analysis", "") == "axisymmetric":
         reac[:, 0] = 0.0      # radial reactions of rings do not add up to a force
     design = np.column_stack([np.ones(len(keys)), factors])
     coef = np.linalg.lstsq(design, reac, rcond=None)[0]        # (1 + npattern, 2)
@@ -65,17 +61,16 @@ def load_curve(f):
     direction = -resultant / np.linalg.norm(resultant)         # the load opposes its reactions
     nodes = np.unique(sets[names[k]]["nodes"][:].ravel())
     peak = keys[int(np.argmax(np.abs(factors[:, k])))]
-    u_peak = f["increments"][peak]["displacement"][:][nodes] @ direction
+    u_peak = r.field(peak, "displacement")[nodes] @ direction
     node = nodes[int(np.argmax(np.abs(u_peak)))]
-    u = np.array([f["increments"][key]["displacement"][node] @ direction for key in keys])
+    u = np.array([r.field(key, "displacement")[node] @ direction for key in keys])
     load = factors[:, k] * np.linalg.norm(resultant)
+
     def unit(name):  # the units read from *UNITS; "" when the deck did not state them
-        text = f["/"].attrs.get(name, "")
-        text = text.decode() if isinstance(text, bytes) else str(text)
+        text = str(r.attr(name, ""))
         return "" if text == "(not stated)" else text
     force, length = unit("force_unit"), unit("length_unit")
-    label = (f"'{names[k]}' (node {int(f['mesh/node_ids'][node])})",
-             force.strip(), length.strip())
+    label = (f"'{names[k]}' (node {int(r.node_ids[node])})", force.strip(), length.strip())
     return label, np.r_[0.0, load], np.r_[0.0, u]
 
 
@@ -88,29 +83,28 @@ def main():
     ap.add_argument("--scale", type=float, help="displacement magnification (auto)")
     a = ap.parse_args()
     out = Path(a.output) if a.output else Path(a.h5).with_suffix(".png")
-    with h5py.File(a.h5) as f:
-        x = f["mesh/coordinates"][:]
-        incs = sorted(f["increments"].keys()) if "increments" in f else []
+    with Results(a.h5) as r:
+        x = r.coordinates
+        incs = r.keys
         if not incs:
             sys.exit(f"{a.h5}: no increment with fields")
         key = f"{a.increment:06d}" if a.increment else incs[-1]
-        g = f["increments"][key]
-        u = g["displacement"][:]
+        g = r.increment(key)
+        u = r.field(key, "displacement")
         size = np.ptp(x, axis=0).max()
         scale = a.scale or (0.1 * size / max(np.abs(u).max(), 1e-300))
         polys, values = [], []
-        for name, s in f["mesh/sets"].items():
-            etype = s.attrs["etype"]
-            etype = etype.decode() if isinstance(etype, bytes) else etype
+        for name, s in r.file["mesh/sets"].items():
+            etype = text(s.attrs["etype"])
             conn = s["connectivity"][:]
             stress = g["sets"][name]["stress_mean"][:] if name in g.get("sets", {}) else None
             for e, nodes in enumerate(conn):
                 ring = nodes[OUTLINE[etype]]
                 polys.append(x[ring] + scale * u[ring])
                 values.append(stress[e, COMPONENTS[a.component]] if stress is not None else 0)
-        title = f["/"].attrs.get("title", "")
+        title = r.attr("title", "")
         time = g.attrs.get("time", 0.0)
-        curve = load_curve(f)
+        curve = load_curve(r)
     if curve:
         fig, (ax, axc) = plt.subplots(1, 2, figsize=(12, 5),
                                       gridspec_kw={"width_ratios": [1.4, 1]})
@@ -133,7 +127,6 @@ def main():
     fig.tight_layout()
     save_figure(fig, out, dpi=120)
     print(f"plot_results: {out}")
-
 
 
 if __name__ == "__main__":

@@ -8,7 +8,6 @@ the decks of input/s1/ (run by `make s1`), and the normal stress of the opening-
 
 from pecplas_py.scenes.scene_cli import scene_dir
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -16,24 +15,22 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from pecplas_py.figures import save_figure
+from pecplas_py.results import Results
 
 
 def series(path):
     """load measure (factor of the first pattern), mean joint (sigma_n, tau), lower-block
     mean shear sigma_xy, for each increment with fields."""
-    with h5py.File(path) as f:
-        factors = f["history/pattern_factors"][:]
-        fields = f["history/fields"][:]
-        keys = sorted(f["increments"].keys())
+    with Results(path) as r:
+        factors = r.pattern_factors()
         load, sn, tau, sxy = [0.0], [1.3], [0.0], [0.0]
-        for row, k in zip(np.nonzero(fields)[0], keys):
-            g = f["increments"][k]
-            s = g["joints/joint/stress"][:].reshape(-1, 2)
+        for row, k in zip(r.field_rows(), r.keys):
+            s = r.field(k, "joints/joint/stress").reshape(-1, 2)
             load.append(float(np.ravel(factors[row])[0]))
             sn.append(s[:, 0].mean())
             tau.append(s[:, 1].mean())
-            sxy.append(g["sets/lower/stress"][:].reshape(-1, 4)[:, 3].mean())
-        status = f.attrs["status"]
+            sxy.append(r.field(k, "sets/lower/stress").reshape(-1, 4)[:, 3].mean())
+        status = r.status
     return np.array(load), np.array(sn), np.array(tau), np.array(sxy), status
 
 

@@ -12,7 +12,6 @@ import math
 
 from pecplas_py.scenes.scene_cli import scene_dir
 
-import h5py
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -20,6 +19,7 @@ import numpy as np  # noqa: E402
 
 from pecplas_py.scenes.s6_results import head_curve, keys_and_loads, shaft
 from pecplas_py.figures import save_figure
+from pecplas_py.results import Results
 
 DEPTHS = (0.525, 1.016, 1.581)   # points of interest of the thesis [m]
 QS = (2.83, 4.40, 6.28)          # measured cycle peaks [kN]
@@ -42,9 +42,9 @@ def axial_force(h5, key, q):
 
 
 def slips(h5, keys):
-    with h5py.File(h5) as f:
-        return np.array([f["increments"][k]["joints/shaft/relative_displacement"][:]
-                         .reshape(-1, 2)[:, 1] for k in keys])
+    with Results(h5) as r:
+        return np.array([r.field(k, "joints/shaft/relative_displacement").reshape(-1, 2)[:, 1]
+                         for k in keys])
 
 
 def main():

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from pecplas_py import ROOT
 from pecplas_py.doc_blocks import check_close, report_main, update
+from pecplas_py.results import Results
 
 SCRIPT = "scenes/s1_report.py"
 DOC = ROOT / "doc" / "validation.md"
@@ -24,13 +25,10 @@ DILATANCY = [f"s1_friction_psi{p}_kn{k}" for p in (0, 3, 30) for k in ("5e6", "5
 
 def final_shear(path):
     """(imposed displacement [mm], mean joint tau [kPa]) at the last increment."""
-    import h5py
-    with h5py.File(path) as f:
-        factor = float(f["history/pattern_factors"][-1].ravel()[0])
-        last = sorted(f["increments"].keys())[-1]
-        s = f["increments"][last]["joints/joint/stress"][:].reshape(-1, 2)
-        status = f.attrs["status"]
-    status = status.decode() if isinstance(status, bytes) else str(status)
+    with Results(path) as r:
+        factor = float(r.pattern_factors()[-1].ravel()[0])
+        s = r.field(r.last_key(), "joints/joint/stress").reshape(-1, 2)
+        status = r.status
     if status != "completed":
         raise SystemExit(f"s1_report: {path} {status}, not completed")
     return factor, float(s[:, 1].mean())

@@ -20,11 +20,10 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-import h5py
-import numpy as np
 
 from pecplas_py import ROOT
 from pecplas_py.exe import exe_path
+from pecplas_py.results import Results
 
 TEMPLATE = ROOT / "input" / "s1" / "s1_open_close_kn1e5.inp"
 E1 = 1e5
@@ -82,15 +81,14 @@ def run(exe, ratio, method, tol, maxit, tmp, fallback="YES"):
     deck.write_text(text)
     out = deck.with_suffix(".h5")
     subprocess.run([exe, str(deck), "-o", str(out), "--quiet"], capture_output=True, text=True)
-    with h5py.File(out) as f:
-        it = f["history/iterations"][:]
-        used = f["history/method"][:]
+    with Results(out) as r:
+        it = r.history("iterations")
+        used = r.history("method")
         pen = 0.0
-        for k in f["increments"]:
-            eps = f["increments"][k]["joints/joint/relative_displacement"][:].reshape(-1, 2)
+        for k in r.keys:
+            eps = r.field(k, "joints/joint/relative_displacement").reshape(-1, 2)
             pen = max(pen, eps[:, 0].max())
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
+        status = r.status
     return status, it, used, pen * 1e3
 
 

@@ -1,14 +1,14 @@
-"""Reading S5 shear-box results (used by tools/pecplas_py/scenes/plot_s5.py and test/python/test_s5.py):
+"""Reading S5 shear-box results (used by scenes/plot_s5.py and test/python/test_s5.py):
 interface distributions, the mid-interface history, and the point driver (pecplas-path) on the
 mid-interface slip path."""
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 
 from pecplas_py import ROOT
 from pecplas_py.exe import exe_cmd
+from pecplas_py.results import Results
 
 L = 0.31
 SIGMA_N0 = 100.0
@@ -20,19 +20,18 @@ ALPHA = 0.75, A = 0.25, B = 0.73, PSI = 27, A_G = 0.4, B_CYC = 0.9
 
 def interface(path, key):
     """x, sigma_n, tau, eps_t, eps_n of the joint points (Lobatto: on the doublets), sorted by x."""
-    with h5py.File(path) as f:
-        x = f["mesh/joint_sets/interface/point_coordinates"][:, :, 0].ravel()
-        g = f["increments"][key]["joints/interface"]
-        s = g["stress"][:].reshape(-1, 2)
-        e = g["relative_displacement"][:].reshape(-1, 2)
+    with Results(path) as r:
+        x = r.joint_set("interface")["point_coordinates"][:, :, 0].ravel()
+        s = r.field(key, "joints/interface/stress").reshape(-1, 2)
+        e = r.field(key, "joints/interface/relative_displacement").reshape(-1, 2)
     o = np.argsort(x, kind="stable")
     return x[o], s[o, 0], s[o, 1], e[o, 1], e[o, 0]
 
 
 def keys_and_steps(path):
-    with h5py.File(path) as f:
-        keys = sorted(f["increments"].keys())
-        steps = [int(f["increments"][k].attrs["step"]) for k in keys]
+    with Results(path) as r:
+        keys = r.keys
+        steps = [r.step_of(k) for k in keys]
     return keys, steps
 
 
@@ -60,8 +59,8 @@ def point_driver(targets, workdir, steps=200):
     deck = workdir / "s5_point.inp"
     deck.write_text(LAW + f"*PATH, TYPE=CNL, SIGMA_N0={SIGMA_N0}, STEPS={steps}\n"
                     + ", ".join(f"{t:.12g}" for t in targets) + "\n")
-    r = subprocess.run([*exe_cmd("pecplas-path"), str(deck), "-o", str(workdir / "s5_point"), "--quiet"], cwd=ROOT,
-                       capture_output=True, text=True)
+    r = subprocess.run([*exe_cmd("pecplas-path"), str(deck), "-o", str(workdir / "s5_point"),
+                        "--quiet"], cwd=ROOT, capture_output=True, text=True)
     if r.returncode != 0:
         raise RuntimeError("pecplas-path: " + r.stderr)
     d = np.genfromtxt(workdir / "s5_point.csv", delimiter=",", names=True, dtype=None,

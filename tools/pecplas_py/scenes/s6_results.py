@@ -1,7 +1,8 @@
 """Reading S6 pile pull-out results (used by tools/pecplas_py/scenes/plot_s6.py and test/python/test_s6.py):
 head load-displacement curve, shaft stresses, interpolation at a common load."""
-import h5py
 import numpy as np
+
+from pecplas_py.results import Results
 
 Q_END = 6.28   # kN at pattern factor 1 (tools/pecplas_py/decks/make_s6_decks.py)
 
@@ -16,16 +17,14 @@ def head_curve(path):
     """(head pull [kN], head uplift [m, upwards +]) for every written increment, from 0. The
     pull is the head reaction when the uplift is imposed (MODJOIN decks), else the pressure
     pattern's factor times Q_END (Mohr-Coulomb deck)."""
-    with h5py.File(path) as f:
-        x = f["mesh/coordinates"][:]
+    with Results(path) as r:
+        x = r.coordinates
         centre = np.nonzero((np.abs(x[:, 0]) < 1e-9) & (np.abs(x[:, 1]) < 1e-9))[0][0]
         head = _head_nodes(x)
-        rows = np.nonzero(f["history/fields"][:])[0]
-        keys = sorted(f["increments"].keys())
-        u = np.array([f["increments"][k]["displacement"][centre, 1] for k in keys])
-        react = np.array([f["increments"][k]["reaction"][head, 1].sum() for k in keys])
-        imposed = "TYPE=DISPLACEMENT" in str(f.attrs["deck_text"])
-        load = react if imposed else f["history/pattern_factors"][:, 0][rows] * Q_END
+        u = r.fields("displacement")[:, centre, 1]
+        react = r.fields("reaction")[:, head, 1].sum(axis=1)
+        imposed = "TYPE=DISPLACEMENT" in r.deck_text
+        load = react if imposed else r.pattern_factors(r.field_rows())[:, 0] * Q_END
     return np.r_[0.0, load], np.r_[0.0, u]
 
 
@@ -47,14 +46,14 @@ def uplift_at(path, q):
 
 def shaft(path, key):
     """depths of the shaft points (z < 0), (sigma_n, tau) [kPa] there, modes."""
-    with h5py.File(path) as f:
-        pc = f["mesh/joint_sets/shaft/point_coordinates"][:]
-        g = f["increments"][key]["joints/shaft"]
-        return pc[:, :, 1].ravel(), g["stress"][:].reshape(-1, 2), g["mode"][:].ravel()
+    with Results(path) as r:
+        pc = r.joint_set("shaft")["point_coordinates"][:]
+        return (pc[:, :, 1].ravel(), r.field(key, "joints/shaft/stress").reshape(-1, 2),
+                r.field(key, "joints/shaft/mode").ravel())
 
 
 def keys_and_loads(path):
     """Increment keys and the head pull [kN] at each."""
-    with h5py.File(path) as f:
-        keys = sorted(f["increments"].keys())
+    with Results(path) as r:
+        keys = r.keys
     return keys, head_curve(path)[0][1:]
