@@ -1,5 +1,5 @@
 """Strip-footing decks for the nonlinear-solution tests (test_footing_paths.py), on the graded
-half-model mesh of tools/pecplas_py/decks/make_footing.py: weightless Mohr-Coulomb soil, a
+half-model mesh of pecplas_py.decks.make_footing: weightless Mohr-Coulomb soil, a
 footing of half-width b = 1 m on x in [0, 1] at y = 0, symmetry axis and far side on rollers,
 base fixed.
 

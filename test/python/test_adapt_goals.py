@@ -48,7 +48,7 @@ def run(deck_text, tmp_path, name, *args):
 def uniform_series(model, element):
     """[(DOFs, error)] of the uniform mesh series of doc/bench/work_precision.csv (the
     Newton-type solvers; every one gives the same values) and the model's Richardson
-    reference [m], read as tools/pecplas_py/bench/adapt.py reads them."""
+    reference [m], read as pecplas_py.bench.adapt reads them."""
     rows = [r for r in bench_adapt.csv_runs("s2")
             if (r["model"], r["element"], r["series"]) == (model, element, "mesh")
             and r["status"] == "ok"]

@@ -1,7 +1,7 @@
 """`pecplas --advise DECK` (`doc/adapt.md`, `doc/build.md`) through the real executable: the mesh
 axis is the adaptive sequence, and the configuration advised for 1 % and 5 % really is within its
 claimed error of an independent reference computed here (uniform meshes of the same elastic strip
-footing, tools/pecplas_py/decks/make_default_deck.py, 16 x 8 and 32 x 16 Q8); no results file is written; bad
+footing, pecplas_py.decks.make_default_deck, 16 x 8 and 32 x 16 Q8); no results file is written; bad
 goals are input errors.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""

@@ -1,4 +1,4 @@
-"""The pure-Python pieces of tools/pecplas_py/bench/amg.py on synthetic data (no benchmark run, no
+"""The pure-Python pieces of pecplas_py.bench.amg on synthetic data (no benchmark run, no
 pyamg): the check of the exported matrix's layout, the rigid-body modes, the fits and the
 fragment's claims."""
 from pathlib import Path

@@ -1,5 +1,5 @@
-"""The pure-Python pieces of the HPC benchmark (tools/pecplas_py/bench/mumps.py,
-tools/pecplas_py/bench/mumps_report.py) on synthetic rows: no MPI and no benchmark run here."""
+"""The pure-Python pieces of the HPC benchmark (pecplas_py.bench.mumps,
+pecplas_py.bench.mumps_report) on synthetic rows: no MPI and no benchmark run here."""
 import math
 import re
 

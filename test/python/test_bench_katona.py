@@ -1,7 +1,7 @@
-"""tools/pecplas_py/bench/katona.py without its runs (they are `make bench`): the summary of a completed
+"""pecplas_py.bench.katona without its runs (they are `make bench`): the summary of a completed
 run and the progress lines of a run stopped at the time limit are parsed into the table's
 counts, the decks differ from their sources only by the solver method, and the fragment says
-when the machine was loaded. tools/pecplas_py/bench/summary.py --keep-header keeps the suite's header."""
+when the machine was loaded. pecplas_py.bench.summary --keep-header keeps the suite's header."""
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]

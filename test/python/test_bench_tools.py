@@ -1,4 +1,4 @@
-"""The pure-Python pieces of the benchmark scripts (tools/pecplas_py/bench/*.py) on synthetic data: no
+"""The pure-Python pieces of the benchmark scripts (pecplas_py.bench) on synthetic data: no
 benchmark is run here."""
 
 import csv
@@ -110,7 +110,7 @@ def test_summary_order_and_header(tmp_path):
 
 
 def test_factorisation_flops_read_from_the_solver_line():
-    # the summary line of a run (tools/pecplas_py/bench/scaling.py fits the exponent of these counts)
+    # the summary line of a run (pecplas_py.bench.scaling fits the exponent of these counts)
     out = (" linear solver: CHOLMOD n=10092 nnz(factor)=673122 flops= 7.189E+07 "
            "peak_bytes= 1.162E+07 analyses=1 factorisations=11\n")
     assert bench_scaling.factorisation_flops(out) == 7.189e7

@@ -164,7 +164,7 @@ def test_identify_and_sensitivity_output_that_cannot_be_written_is_an_input_erro
 
 
 def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
-    # reproducer found by tools/pecplas_py/checks/mutate_decks.py: spring 552 of input/s2/s2_katona.inp joined
+    # reproducer found by checks/mutate_decks.py: spring 552 of input/s2/s2_katona.inp joined
     # to node 7 instead of 71, a doublet whose face-2 node lies behind face 1
     src = ROOT / "input" / "s2" / "s2_katona.inp"
     lines = src.read_text().splitlines()
@@ -182,7 +182,7 @@ def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
 
 
 def test_singular_on_split_node_names_the_joints_line(tmp_path):
-    # reproducer found by tools/pecplas_py/checks/mutate_decks.py: KN = 1e308 in test/data/joints/
+    # reproducer found by pecplas_py.checks.mutate_decks: KN = 1e308 in test/data/joints/
     # gmsh_interface.inp; the free node is a duplicate made for the generated joints, so the
     # error names the *JOINTS line that made it
     src = ROOT / "test" / "data" / "joints" / "gmsh_interface.inp"
@@ -199,7 +199,7 @@ def test_singular_on_split_node_names_the_joints_line(tmp_path):
 
 
 def test_huge_modjoin_increment_stops_fast(tmp_path):
-    # reproducer found by tools/pecplas_py/checks/mutate_decks.py (a hang beyond its 20 s bound): the pile of
+    # reproducer found by pecplas_py.checks.mutate_decks (a hang beyond its 20 s bound): the pile of
     # input/s6/s6_modjoin_ag.inp pulled by a factor of -2147483649 asked MODJOIN for ~1e12
     # substeps per increment; such an increment is now refused and cut, and the run stops
     src = ROOT / "input" / "s6" / "s6_modjoin_ag.inp"

@@ -1,5 +1,5 @@
 """Docs that match runs:
-- the S4 numbers of doc/validation.md (generated blocks) equal what tools/pecplas_py/scenes/s4_report.py writes
+- the S4 numbers of doc/validation.md (generated blocks) equal what scenes/s4_report.py writes
   from fresh runs of the S4 decks (pecplas-path, -identify, -sensitivity: a few seconds);
 - the committed decks equal their generators' output (pecplas_py.decks.make_*);
 - every scene script answers --help;

@@ -1,4 +1,4 @@
-"""tools/pecplas_py/peers/export_abaqus.py: our decks written as CalculiX input.
+"""pecplas_py.peers.export_abaqus: our decks written as CalculiX input.
 
 Without ccx: node and element counts, the contact surfaces built from the right element faces,
 master on the stiff side, the tip tied where both sides touch the axis, materials, initial

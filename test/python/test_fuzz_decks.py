@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 from pecplas_exe import pecplas_cmd
 
-from pecplas_py.checks.mutate_decks import mutate_once  # one mutator: checks/mutate_decks.py
 from pecplas_py import script_cmd
+from pecplas_py.checks.mutate_decks import mutate_once  # one mutator: checks/mutate_decks.py
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECKER = script_cmd("checks.check_results")

@@ -1,6 +1,6 @@
 """Joint sets in the results file of the real `pecplas` executable: the joint patch test
 read back independently with h5py (uniform contact pressure 100 at every joint point, all
-in stick), and tools/pecplas_py/checks/check_results.py accepting the file and catching damaged joint data.
+in stick), and pecplas_py.checks.check_results accepting the file and catching damaged joint data.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else runs through fpm."""
 

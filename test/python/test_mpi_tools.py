@@ -1,5 +1,5 @@
-"""The pure-Python pieces of the MPI check and benchmark (tools/pecplas_py/checks/mpi_check.py,
-tools/pecplas_py/bench/mumps.py) on synthetic data: no MPI needed."""
+"""The pure-Python pieces of the MPI check and benchmark (pecplas_py.checks.mpi_check,
+pecplas_py.bench.mumps) on synthetic data: no MPI needed."""
 
 import numpy as np
 import pytest

@@ -1,4 +1,4 @@
-"""A small sample of tools/pecplas_py/checks/mutate_decks.py (the full run of 10 000 decks is a tool, not a
+"""A small sample of pecplas_py.checks.mutate_decks (the full run of 10 000 decks is a tool, not a
 test): 40 mutated copies of three fast decks must give no crash, no hang beyond the 20 s
 bound, no input error without file:line and no results file after an input error."""
 import json

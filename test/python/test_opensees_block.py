@@ -1,4 +1,4 @@
-"""The elastic block of the OpenSees peer bench (tools/pecplas_py/peers/opensees_block.py): mesh and deck
+"""The elastic block of the OpenSees peer bench (pecplas_py.peers.opensees_block): mesh and deck
 generation without OpenSees, our solve of the generated deck, and (only where openseespy is
 installed) the OpenSees runner against our solve on the same small mesh."""
 import importlib.util
@@ -12,9 +12,9 @@ from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 
+from pecplas_py import script_cmd
 from pecplas_py.bench import peer_opensees as bpo
 from pecplas_py.peers import opensees_block as ob
-from pecplas_py import script_cmd
 
 HAVE_OPENSEES = importlib.util.find_spec("openseespy") is not None
 

@@ -1,4 +1,4 @@
-"""Runs the files written by the Fortran suite `io_results` through tools/pecplas_py/checks/check_results.py,
+"""Runs the files written by the Fortran suite `io_results` through pecplas_py.checks.check_results,
 and checks that the checker itself catches broken files.
 
 Run from the project root:

@@ -53,7 +53,7 @@ def temporaries(directory):
 
 
 def check_file(h5, xmf, status):
-    """tools/pecplas_py/checks/check_results.py (in this process): structure, history rows against field
+    """pecplas_py.checks.check_results (in this process): structure, history rows against field
     groups, every XDMF reference a dataset of the file with its shape, no NaN."""
     problems, _ = check_results.check(str(h5), status, str(xmf))
     assert not problems, f"{h5}: {problems}"

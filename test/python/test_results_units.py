@@ -46,7 +46,7 @@ def attr(obj, name):
                          ids=lambda p: p.stem)
 def test_every_dataset_described(tmp_path, deck):
     """Every float dataset has units (components where it has a component axis) and the
-    XDMF references joint datasets that exist: tools/pecplas_py/checks/check_results.py walks the file."""
+    XDMF references joint datasets that exist: pecplas_py.checks.check_results walks the file."""
     out = tmp_path / "r.h5"
     r = run(deck, out)
     assert r.returncode == 0, r.stderr

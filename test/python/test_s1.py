@@ -54,8 +54,9 @@ def test_no_nan(results):
 
 def test_docs_match_fresh_runs(tmp_path):
     """The S1 dilatancy numbers of doc/validation.md (generated block written by
-    tools/pecplas_py/scenes/s1_report.py) equal those of fresh runs of the six decks to the last printed digit."""
+    scenes/s1_report.py) equal those of fresh runs of the six decks to the last printed digit."""
     from pecplas_py.scenes import s1_report
     runs = s1_report.run_decks(s1_report.DILATANCY, tmp_path, pecplas_cmd())
     diff = s1_report.check_doc(runs)
-    assert not diff, diff + "\nregenerate: make s1 (python3 -m pecplas_py.scenes.s1_report output/s1)"
+    assert not diff, diff + ("\nregenerate: make s1 (python3 -m pecplas_py.scenes.s1_report "
+                             "output/s1)")

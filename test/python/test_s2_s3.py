@@ -9,7 +9,7 @@ capacity computed by hand from the initial stresses, Q_s = int_0^L K0 gamma z ta
 is permanent, the shaft shear has reversed somewhere (negative skin friction) and residual
 stresses remain; S3: the head load at a fixed settlement rises with psi.
 
-Stored regression values (test/reference/s2_s3.json, written by tools/pecplas_py/scenes/s2_reference.py): every
+Stored regression values (test/reference/s2_s3.json, written by scenes/s2_reference.py): every
 case's head settlement at 1000 / 2000 kN, permanent settlement, peak shaft sigma_n, shaft
 resultant and head load at 15 mm, compared within the file's relative tolerance (1e-3: same
 code); the physics check written beside each value is asserted on the stored values.
@@ -207,7 +207,7 @@ def test_stored_references_pass_their_physics_checks():
 
 def test_committed_decks_match_the_generator(tmp_path):
     """input/s2, input/s3 and input/default.inp (what `make run` runs) are what
-    tools/pecplas_py/decks/make_s2_decks.py writes; default.inp is the Goodman deck under its own header."""
+    pecplas_py.decks.make_s2_decks writes; default.inp is the Goodman deck under its own header."""
     subprocess.run([*script_cmd("decks.make_s2_decks"), "--out",
                     str(tmp_path)], check=True, capture_output=True)
     for new in [*tmp_path.glob("s2/*.inp"), *tmp_path.glob("s3/*.inp")]:
@@ -220,7 +220,8 @@ def test_committed_decks_match_the_generator(tmp_path):
 
 def test_docs_match_fresh_runs(runs):
     """The S2/S3 numbers of doc/validation.md and README.md (generated blocks written by
-    tools/pecplas_py/scenes/s2_report.py) equal those of these fresh runs to the last printed digit."""
+    pecplas_py.scenes.s2_report) equal those of these fresh runs to the last printed digit."""
     from pecplas_py.scenes import s2_report
     diff = s2_report.check_docs({c: runs[c] for c in CASES})
-    assert not diff, diff + "\nregenerate: make s2 s3 (python3 -m pecplas_py.scenes.s2_report output)"
+    assert not diff, diff + ("\nregenerate: make s2 s3 (python3 -m pecplas_py.scenes.s2_report "
+                             "output)")

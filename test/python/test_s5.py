@@ -80,9 +80,10 @@ def test_regression_values(run):
 
 
 def test_docs_match_fresh_run(run):
-    """The S5 numbers of doc/validation.md (generated block written by tools/pecplas_py/scenes/s5_report.py)
+    """The S5 numbers of doc/validation.md (generated block written by pecplas_py.scenes.s5_report)
     equal those of this fresh run to the last printed digit."""
     from pecplas_py.scenes import s5_report
     h5, out = run
     diff = s5_report.check_doc(h5, out)
-    assert not diff, diff + "\nregenerate: make s5 (python3 -m pecplas_py.scenes.s5_report output/s5)"
+    assert not diff, diff + ("\nregenerate: make s5 (python3 -m pecplas_py.scenes.s5_report "
+                             "output/s5)")

@@ -139,8 +139,9 @@ def test_modjoin_vs_mohr_coulomb_reported(runs):
 
 
 def test_docs_match_fresh_runs(runs):
-    """The S6 numbers of doc/validation.md (generated blocks written by tools/pecplas_py/scenes/s6_report.py)
+    """The S6 numbers of doc/validation.md (generated blocks written by pecplas_py.scenes.s6_report)
     equal those of these fresh runs to the last printed digit."""
     from pecplas_py.scenes import s6_report
     diff = s6_report.check_doc(runs)
-    assert not diff, diff + "\nregenerate: make s6 (python3 -m pecplas_py.scenes.s6_report output/s6)"
+    assert not diff, diff + ("\nregenerate: make s6 (python3 -m pecplas_py.scenes.s6_report "
+                             "output/s6)")

@@ -1,4 +1,4 @@
-"""The pure pieces of the work-precision benchmark (tools/pecplas_py/bench/wp_analysis.py, tools/pecplas_py/bench/wp_decks.py),
+"""The pure pieces of the work-precision benchmark (bench/wp_analysis.py, bench/wp_decks.py),
 on synthetic data: no program runs.
 
 - Richardson: f(h) = f0 + C h^p is exact for the three-level formula, so the limit and the

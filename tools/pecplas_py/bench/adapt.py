@@ -2,13 +2,13 @@
 """Adaptive refinement beside uniform refinement (make bench), error of a goal against wall time.
 
 S2 pile (goal: head settlement at 2000 kN): `pecplas DECK --target-error 1% --goal node:1:y`
-from the coarsest deck of the work-precision series (tools/pecplas_py/decks/make_s2_decks.py, level 3, first
+from the coarsest deck of the work-precision series (decks/make_s2_decks.py, level 3, first
 loading step, 5 increments, full Newton), for the Mohr-Coulomb interface (Q4/GOODMAN4 and
 Q8/GOODMAN6) and Katona contact (Q4); the uniform series and the Richardson references are those
-of doc/bench/work_precision.csv (tools/pecplas_py/bench/work_precision.py, not rerun here).
+of doc/bench/work_precision.csv (bench/work_precision.py, not rerun here).
 
 Strip footing (goal: settlement of the footing centre at 150 kPa): the Drucker-Prager footing of
-tools/pecplas_py/bench/scaling.py (Q8, 10 m x 5 m half model, geostatic stress, 150 kPa in 2 increments); uniform
+bench/scaling.py (Q8, 10 m x 5 m half model, geostatic stress, 150 kPa in 2 increments); uniform
 series nx x nx/2 for nx = 10 .. 80 run here (Richardson reference over the three finest), and the
 adaptive sequence from nx = 10 (target 0.2 %).
 
@@ -32,10 +32,10 @@ from pathlib import Path
 
 from pecplas_py.bench import common as bc
 from pecplas_py.bench import scaling as bsc
-from pecplas_py.decks import make_s2_decks as g2
 from pecplas_py.bench import wp_decks as wd
 from pecplas_py.bench.wp_analysis import cheapest_within, relative_error, richardson
 from pecplas_py.bench.wp_report import label, plot
+from pecplas_py.decks import make_s2_decks as g2
 from pecplas_py.results import Results
 
 S2_CASES = [("mohr_coulomb", "Q4"), ("katona", "Q4"), ("mohr_coulomb", "Q8")]

@@ -2,12 +2,12 @@
 """Would an iterative solver scale better on the footing's tangents? AMG-preconditioned CG
 on the very matrices the program factorises (make bench).
 
-The scaling bench (tools/pecplas_py/bench/scaling.py) finds the Drucker-Prager footing's time per
+The scaling bench (bench/scaling.py) finds the Drucker-Prager footing's time per
 increment growing as N^1.3: a sparse factorisation's cost grows faster than N, and the Newton
 iterations grow with the mesh. An iterative solver whose cost grows as N would be the remedy
 only if its iteration count stayed flat on these matrices. This part measures that count.
 
-For each size of the footing mesh (tools/pecplas_py/bench/scaling.py decks, 1e4 to 1e6 equations), and
+For each size of the footing mesh (bench/scaling.py decks, 1e4 to 1e6 equations), and
 for the same mesh with an elastic soil (the contrast: the elastic stiffness), the release
 `pecplas-bench-tangent` runs the deck and writes the matrix of the run's last factorisation
 (the consistent tangent of the last Newton iteration; the elastic stiffness for the elastic

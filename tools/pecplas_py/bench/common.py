@@ -4,7 +4,8 @@ Every benchmark CSV records where its numbers come from: `write_csv` appends the
 `commit` and `machine` to every row. Every timing comes from a run made by the script that
 writes the chart (`run_timed`), never from a stored number.
 
-    from pecplas_py.bench.common import ROOT, BENCH_DIR, executable, run_timed, write_csv, provenance
+    from pecplas_py.bench.common import (ROOT, BENCH_DIR, executable, run_timed, write_csv,
+                                         provenance)
 """
 import csv
 import math
@@ -106,7 +107,7 @@ def write_csv(path, header, rows):
 
 def write_fragment(name, text):
     """A markdown section of the benchmark summary: doc/bench/<name>.md (collected by
-    tools/pecplas_py/bench/summary.py into doc/bench/README.md)."""
+    bench/summary.py into doc/bench/README.md)."""
     BENCH_DIR.mkdir(parents=True, exist_ok=True)
     p = BENCH_DIR / f"{name}.md"
     p.write_text(text.rstrip() + "\n")

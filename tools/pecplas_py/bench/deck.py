@@ -17,7 +17,8 @@ import argparse
 import statistics
 import tempfile
 
-from pecplas_py.bench.common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1
+from pecplas_py.bench.common import (BENCH_DIR, executable, load1, run_timed, write_csv,
+                                     write_fragment)
 
 REPEATS = 3
 COLUMNS = ["n", "equations", "keyword_read_s", "mesh_read_s", "ratio", "elastic_run_s",

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Katona contact against the Mohr–Coulomb penalty joint, by speed (part of `make bench`):
-the S1 opening–closing shear box and the S2-type pile of tools/pecplas_py/decks/make_katona_pile.py (h = 0.2 and
+the S1 opening–closing shear box and the S2-type pile of decks/make_katona_pile.py (h = 0.2 and
 0.05 m), each with Katona (Lagrange multipliers, rigid contact), and with the penalty joint
 under full Newton and under modified Newton alone (`FALLBACK=NO`, the thesis's method). The
 decks differ only by the law TYPE and the *SOLVER line. A run longer than --limit seconds is
@@ -10,7 +10,7 @@ saddle-factor comparison of `pecplas-bench-katona` on the pile and finer Hertz m
 Every wall time is measured here (median of --repeats runs when a run takes less than 5 s),
 beside the 1-minute load average when the case started: on a machine shared with other work
 (load above the core count) the times are longer than on an idle one, the ratios less so.
-Writes doc/bench/katona.csv and the fragment doc/bench/katona.md (tools/pecplas_py/bench/summary.py puts
+Writes doc/bench/katona.csv and the fragment doc/bench/katona.md (bench/summary.py puts
 it into doc/bench/README.md).
 
     python3 -m pecplas_py.bench.katona [--limit 120] [--repeats 3] [--quick] [--out DIR]
@@ -24,9 +24,9 @@ import subprocess
 import tempfile
 from pathlib import Path
 
+from pecplas_py import script_cmd
 from pecplas_py.bench.common import (BENCH_DIR, ROOT, executable, run_timed,
                                      write_csv, write_fragment, load1)
-from pecplas_py import script_cmd
 
 HEADER = ["case", "law", "method", "equations", "status", "increments", "requested",
           "iterations", "factorisations", "state_iterations", "state_max", "wall_s",
@@ -152,7 +152,8 @@ def fragment(rows, sad, prov, limit):
     md = ["## Katona contact: speed against the penalty joint", "",
           f"`tools/pecplas_py/bench/katona.py` (commit `{prov['commit']}`, {prov['date']}): S1 "
           "opening–closing (decks of `input/s1/`, Katona: `test/data/katona/s1_open_close.inp`) "
-          "and the pile of `tools/pecplas_py/decks/make_katona_pile.py` (load 2000 kN in 20 increments, unload in "
+          "and the pile of `tools/pecplas_py/decks/make_katona_pile.py` (load 2000 kN in 20 "
+          "increments, unload in "
           "20), the law TYPE and the *SOLVER method being the only differences. Wall seconds of "
           "the whole run (median of the repeats), release build; load = 1-minute load average "
           f"when the case started, on {cores} cores"

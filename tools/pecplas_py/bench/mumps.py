@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Distributed solve: CHOLMOD on 1 and 2 threads against MUMPS on 1 and 2 MPI ranks.
 
-Two problems from tools/pecplas_py/decks/make_default_deck.py (Q8, plane strain, half strip footing 10 m x 5 m):
+Two problems from decks/make_default_deck.py (Q8, plane strain, half strip footing 10 m x 5 m):
 `elastic` (the deck as written, linear: 6 increments) and `dp_footing` (the Drucker-Prager
-footing of tools/pecplas_py/bench/scaling.py: geostatic stress, then 300 kPa in 2 increments, full
+footing of bench/scaling.py: geostatic stress, then 300 kPa in 2 increments, full
 Newton; associated, so the tangent is symmetric: CHOLMOD, and MUMPS as LDL^T). Sizes: 1e5,
 1e6 and 3e6 equations (--quick: 1e4 and 3e4; --sizes picks others), run one at a time,
 smallest first. Each run uses the MPI build (make build-mpi); a run over --timeout is
@@ -16,7 +16,7 @@ INFOG(16)/(17)) and the MB it used (INFOG(21)); CHOLMOD's factor entries and flo
 ordering that ran (from the program's 'linear solver:' line); the load during the run (mean
 number of runnable tasks, the sampling process excluded) and the 1-minute load average at its
 end. A timing taken at load > 2 is marked not final. Before each run the memory it needs is
-predicted from the smaller sizes already run (tools/pecplas_py/bench/mumps_report.py); a run that would
+predicted from the smaller sizes already run (bench/mumps_report.py); a run that would
 not fit in the memory available now is skipped and says so.
 
 Rows are merged into doc/bench/mumps.csv (a rerun replaces the row of the same problem, size,
@@ -38,11 +38,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from pecplas_py import script_cmd
 from pecplas_py.bench.common import BENCH_DIR, ROOT, provenance, write_fragment
 from pecplas_py.bench.mumps_report import (CONFIGS, GB20_MB, fit, fragment,  # noqa: F401
                                            predicted_total_mb)
 from pecplas_py.bench.scaling import equations, make_deck as make_dp_deck, size_for
-from pecplas_py import script_cmd
 
 HEADER = ["problem", "equations", "solver", "ordering", "threads", "ranks", "status",
           "increments", "iterations", "factorisations", "time_per_increment_s",

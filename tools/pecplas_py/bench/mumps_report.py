@@ -1,4 +1,4 @@
-"""The analysis of tools/pecplas_py/bench/mumps.py's rows: power-law fits of memory, fill and flops
+"""The analysis of bench/mumps.py's rows: power-law fits of memory, fill and flops
 against the number of equations N, the memory a run will need (predicted before it starts),
 the largest mesh within 20 GB, the extrapolation to 1e7-1e8 equations on 16-64 ranks, and
 the fragment doc/bench/mumps.md. Rows are dicts with the columns of bench_mumps.HEADER."""
@@ -198,7 +198,8 @@ def fragment(rows, wall=None):
     not_final = sum(1 for r in rows if r["status"] == "completed" and r.get("final") != "yes")
     L = ["## Distributed solve: MUMPS against CHOLMOD (`tools/pecplas_py/bench/mumps.py`)", "",
          "Q8 plane strain, half strip footing 10 m × 5 m: `elastic` (linear, the steps of "
-         "tools/pecplas_py/decks/make_default_deck.py: 6 increments) and `dp_footing` (Drucker–Prager, "
+         "tools/pecplas_py/decks/make_default_deck.py: 6 increments) and `dp_footing` "
+         "(Drucker–Prager, "
          "geostatic stress then 300 kPa in 2 increments, full Newton). CHOLMOD on 1 and 2 "
          "threads; MUMPS (LDL^T, distributed assembled input) on 1 and 2 MPI ranks of 1 "
          "thread, every rank holding the whole model (doc/mpi.md). Time per increment = "

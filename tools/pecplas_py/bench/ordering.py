@@ -2,7 +2,7 @@
 """Fill-reducing orderings for CHOLMOD on the elastic block (make bench).
 
 pecplas-bench-ordering builds the elastic plane-strain square of Q4 or Q8 elements (the
-squares of tools/pecplas_py/bench/solver.py), runs it through the program for its stiffness matrix and,
+squares of bench/solver.py), runs it through the program for its stiffness matrix and,
 for each ordering, analyses and factorises that matrix REPEATS times in the same process:
 
 - AMD: CHOLMOD's approximate minimum degree alone;
@@ -27,7 +27,8 @@ import csv
 import os
 import tempfile
 
-from pecplas_py.bench.common import BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1
+from pecplas_py.bench.common import (BENCH_DIR, executable, load1, run_timed, write_csv,
+                                     write_fragment)
 
 COLUMNS = ["element", "n", "equations", "ordering", "used", "nnz_L", "flops",
            "analyse_s", "analyse_min_s", "analyse_max_s", "factorise_s", "factorise_min_s",

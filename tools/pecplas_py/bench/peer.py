@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """A peer side by side: our code and CalculiX (ccx) on the same meshes.
 
-1. The S2 frictional pile (tools/pecplas_py/decks/make_s2_decks.py, axisymmetric): ours with the Mohr-Coulomb
+1. The S2 frictional pile (decks/make_s2_decks.py, axisymmetric): ours with the Mohr-Coulomb
    penalty joints and with Katona contact, CalculiX with face-to-face penalty contact and
-   Coulomb friction on the deck exported by tools/pecplas_py/peers/export_abaqus.py (same K_n, K_t as ours).
+   Coulomb friction on the deck exported by peers/export_abaqus.py (same K_n, K_t as ours).
 2. The CGS-4 inclined-plane block (plane strain, test/data/joints/inclined_plane.inp): slip
    limit F/G against (tan a + mu)/(1 - mu tan a) = 0.412371.
 
@@ -28,9 +28,9 @@ from pathlib import Path
 
 import numpy as np
 
+from pecplas_py import script_cmd
 from pecplas_py.bench import common as bc
 from pecplas_py.peers import export_abaqus as ex
-from pecplas_py import script_cmd
 from pecplas_py.results import Results
 
 ROOT = bc.ROOT
@@ -331,7 +331,8 @@ def fragment(rows, version, quick=False):
     pile = [r for r in rows if r[0].startswith("S2")]
     t = ["## A peer side by side: CalculiX", "",
          "`python3 -m pecplas_py.bench.peer` (`--quick`: reference mesh only, one run per case). "
-         "The same meshes, exported by `tools/pecplas_py/peers/export_abaqus.py`; ours and `ccx` (CalculiX "
+         "The same meshes, exported by `tools/pecplas_py/peers/export_abaqus.py`; ours and `ccx` "
+         "(CalculiX "
          f"{version}) run on one thread each (OMP_NUM_THREADS=1, ccx also "
          "CCX_NPROC_EQUATION_SOLVER=1), wall times of whole runs (input to results). "
          + timing_text(rows, quick), "",

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A second peer: OpenSees (openseespy, UmfPack) on the elastic plane-strain block.
 
-The block of tools/pecplas_py/peers/opensees_block.py (Q4 cantilever, nx = 2 ny) at about 1e4, 1e5 and 1e6
+The block of peers/opensees_block.py (Q4 cantilever, nx = 2 ny) at about 1e4, 1e5 and 1e6
 dofs (quick: 1e4 and 1e5). For each size, ours (`pecplas DECK`) and OpenSees
 (`python3 -m pecplas_py.peers.opensees_block MESH.npz OUT.npz`) run alternately, each in its own
 process, one thread each (OMP_NUM_THREADS, OPENBLAS_NUM_THREADS, MKL_NUM_THREADS = 1), timed
@@ -29,8 +29,8 @@ from pathlib import Path
 import numpy as np
 
 from pecplas_py.bench import common as bc
-from pecplas_py.peers import opensees_block as ob
 from pecplas_py.bench.scaling import parse_summary
+from pecplas_py.peers import opensees_block as ob
 from pecplas_py.results import Results
 
 # Both codes solve K u = f directly (CHOLMOD / UMFPACK): they differ only by rounding, of the
@@ -129,7 +129,8 @@ def fragment(rows, version, quick):
     t = ["## A peer side by side: OpenSees on the elastic block", "",
          f"`python3 -m pecplas_py.bench.peer_opensees`{' --quick' if quick else ''} "
          f"(openseespy {version}, its bundled UMFPACK). The elastic plane-strain cantilever "
-         "block of `tools/pecplas_py/peers/opensees_block.py` (Q4, 2 m x 1 m, clamped left edge, 100 kN "
+         "block of `tools/pecplas_py/peers/opensees_block.py` (Q4, 2 m x 1 m, clamped left edge, "
+         "100 kN "
          "shear on the right edge, E = 1e5 kPa, nu = 0.3), the same mesh for both codes. "
          "Ours: the deck, one increment (CHOLMOD), results file with displacements only; "
          "OpenSees: `quad` + `ElasticIsotropic` `PlaneStrain`, `UmfPack`, numberer `Plain`, "
@@ -138,12 +139,14 @@ def fragment(rows, version, quick):
          "each whole run in its own process, one thread each; median [min - max] of the "
          "runs. Ratio = OpenSees median / our median; paired: the median [min - max] of "
          "OpenSees / ours over the pairs of runs made one after the other (less sensitive "
-         "to the machine's load changing between pairs). Phases (run of median time): ours from its "
+         "to the machine's load changing between pairs). Phases (run of median time): ours from "
+         "its "
          "end-of-run summary (read+setup is the deck reading), OpenSees from timers in the "
          "runner (build: the Python loop of `node`/`element` calls; analyze: assembly and "
          "UMFPACK factorisation and solve); the rest of each wall time is start-up "
          "(for OpenSees, Python and `import openseespy`).", "",
-         "| dofs | code | runs | wall [s] | ratio | paired | peak [MB] | tip u_y [m] | tip rel. diff | "
+         "| dofs | code | runs | wall [s] | ratio | paired | peak [MB] | tip u_y [m] | tip rel. "
+         "diff | "
          "field max diff | phases [s] | load avg |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for ndof, codes in by.items():
         ours = codes["ours"]

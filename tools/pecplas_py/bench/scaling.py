@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Scaling: an elastic-plastic strip footing from about 1e4 to 1e6 equations.
 
-Mesh: tools/pecplas_py/decks/make_default_deck.py (Q8, half model, 10 m x 5 m, footing half-width 1 m), soil
+Mesh: decks/make_default_deck.py (Q8, half model, 10 m x 5 m, footing half-width 1 m), soil
 turned into Drucker-Prager fitted to Mohr-Coulomb in plane strain (E = 2e4 kPa, nu = 0.3,
 c = 10 kPa, phi = psi = 30 deg: associated, so the consistent tangent is symmetric and full
 Newton uses CHOLMOD). Drucker-Prager rather than Mohr-Coulomb because its smooth cone needs
@@ -35,9 +35,9 @@ from pathlib import Path
 
 import numpy as np
 
+from pecplas_py import script_cmd
 from pecplas_py.bench.common import (BENCH_DIR, executable, load1, run_timed,
                                      write_csv, write_fragment)
-from pecplas_py import script_cmd
 
 INCREMENTS = 2
 REPEATS = 3

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Scaling of a linear run: the elastic plane-strain Q4 block from about 1e4 to 1e6 equations.
 
-The block is that of the OpenSees peer bench (tools/pecplas_py/peers/opensees_block.py: 2 m x 1 m cantilever,
+The block is that of the OpenSees peer bench (peers/opensees_block.py: 2 m x 1 m cantilever,
 keyword deck, one increment, displacements written). One increment of a linear run is one
 assembly, one factorisation and one solve, so its time per increment is the program's own
-scaling without Newton iterations; the plastic footing of tools/pecplas_py/bench/scaling.py adds the
+scaling without Newton iterations; the plastic footing of bench/scaling.py adds the
 growth of the iteration count with the mesh.
 
 For each size the release pecplas runs REPEATS times in its own process, one thread
@@ -27,7 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
-from pecplas_py.bench.common import BENCH_DIR, executable, load1, run_timed, write_csv, write_fragment
+from pecplas_py.bench.common import (BENCH_DIR, executable, load1, run_timed, write_csv,
+                                     write_fragment)
 from pecplas_py.bench.scaling import fit_exponent, parse_summary
 from pecplas_py.peers import opensees_block as block
 

@@ -23,8 +23,8 @@ import re
 import statistics
 import tempfile
 
-from pecplas_py.bench.common import (BENCH_DIR, executable, run_timed, write_csv, write_fragment, load1,
-                                     fresh_memory_gbs)
+from pecplas_py.bench.common import (BENCH_DIR, executable, fresh_memory_gbs, load1, run_timed,
+                                     write_csv, write_fragment)
 
 COLUMNS = ["element", "n", "equations", "read_setup_s", "assembly_s", "factorisation_s",
            "solve_s", "residual_s", "output_s", "total_s", "bare_cholmod_s", "ratio",

@@ -26,7 +26,8 @@ def ordered_fragments(directory):
 
 def header(prov, wall=None):
     lines = ["# Benchmarks", "",
-             "Written by `tools/pecplas_py/bench/summary.py` from the fragments of the `tools/pecplas_py/bench/*.py` "
+             "Written by `tools/pecplas_py/bench/summary.py` from the fragments of the "
+             "`tools/pecplas_py/bench/*.py` "
              "scripts; every number below was measured in the run that wrote it (CSV files "
              "next to this one carry commit and machine on every row).", "",
              f"- commit: `{prov['commit']}`", f"- machine: {prov['machine']}",

@@ -3,12 +3,12 @@
 error of the head settlement at a fixed load against a Richardson-extrapolated reference,
 versus wall time, for interface model x joint element x solver x mesh level x increments.
 
-The decks come from the scene generators (tools/pecplas_py/decks/make_s2_decks.py, tools/pecplas_py/decks/make_s6_decks.py)
-with only the studied knobs edited (tools/pecplas_py/bench/wp_decks.py): the loading step alone (S2: 0 ->
+The decks come from the scene generators (decks/make_s2_decks.py, decks/make_s6_decks.py)
+with only the studied knobs edited (bench/wp_decks.py): the loading step alone (S2: 0 ->
 2000 kN; S6: 0 -> Q_FIX, a load every model reaches before its limit), its increments, the
 solver method, Q4 or Q8 (GOODMAN6 / 6-node thin layer), fields written at the step end only.
 
-Reference per interface model: Richardson extrapolation (tools/pecplas_py/bench/wp_analysis.py) of the Q4 mesh
+Reference per interface model: Richardson extrapolation (bench/wp_analysis.py) of the Q4 mesh
 series at the base increments, three finest levels it completed; the observed order p is
 printed. Errors: `error` against the run's own model reference (discretisation error: the
 work-precision charts), `scene_error` against the scene's reference model (S2 Mohr-Coulomb
@@ -31,14 +31,14 @@ import time
 from pathlib import Path
 
 from pecplas_py.bench import common as bc
-from pecplas_py.decks import make_s2_decks as g2
-from pecplas_py.decks import make_s6_decks as g6
-from pecplas_py.scenes import s2_results
-from pecplas_py.scenes import s6_results
 from pecplas_py.bench import wp_decks as wd
 from pecplas_py.bench.wp_analysis import relative_error, richardson
 from pecplas_py.bench.wp_report import (Q_FIX, S2_LOAD, SCENE_REF, advice, label, plot,
                                         write_fragments)
+from pecplas_py.decks import make_s2_decks as g2
+from pecplas_py.decks import make_s6_decks as g6
+from pecplas_py.scenes import s2_results
+from pecplas_py.scenes import s6_results
 
 # seconds per DOF for 10 increments, measured on this code on 2 shared cores (full mode,
 # machine busy); Newton's cost grows about as sqrt(increments): fewer iterations each

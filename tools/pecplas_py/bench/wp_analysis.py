@@ -1,4 +1,4 @@
-"""The pure pieces of the work-precision study (tools/pecplas_py/bench/work_precision.py), tested by
+"""The pure pieces of the work-precision study (bench/work_precision.py), tested by
 test/python/test_work_precision.py: Richardson extrapolation from three mesh levels with the
 observed order, and the cheapest configuration within an error tolerance."""
 import math

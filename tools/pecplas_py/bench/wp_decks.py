@@ -1,5 +1,5 @@
-"""Deck variants for the work-precision study (tools/pecplas_py/bench/work_precision.py): small, checked
-edits of the decks that tools/pecplas_py/decks/make_s2_decks.py and tools/pecplas_py/decks/make_s6_decks.py generate, so that the
+"""Deck variants for the work-precision study (bench/work_precision.py): small, checked
+edits of the decks that decks/make_s2_decks.py and decks/make_s6_decks.py generate, so that the
 study always runs the generators' current scenes (their fixes included) and changes only what
 it varies: solver method, increments, the load steps, output frequency, and Q4 -> Q8 with
 GOODMAN6 / 6-node thin-layer joints.

@@ -1,5 +1,5 @@
 """Names, chart, advice table and summary fragments of the work-precision study
-(tools/pecplas_py/bench/work_precision.py)."""
+(bench/work_precision.py)."""
 import math
 import os
 

@@ -2,7 +2,8 @@
 """Check a PECPLAS results file (HDF5) and its XDMF sidecar.
 
 Usage:
-    python3 -m pecplas_py.checks.check_results RESULTS.h5 [--expect-status STATUS] [--xmf FILE | --no-xdmf]
+    python3 -m pecplas_py.checks.check_results RESULTS.h5 [--expect-status STATUS]
+                                               [--xmf FILE | --no-xdmf]
     python3 -m pecplas_py.checks.check_results --left RESULTS.h5
 
 Checks that the required attributes, groups and datasets exist, that every /history

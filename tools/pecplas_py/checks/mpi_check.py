@@ -26,9 +26,10 @@ MUMPS) on 2 ranks with rank 0's 10th results-file write failing on purpose
 the file holding the increments written before (not hang while rank 1 waits). --unit runs Fortran test suites of the MPI build's test
 program (e.g. linalg_mumps) under `mpirun -np N` for each N: every rank must pass them all.
 
-Usage: python3 -m pecplas_py.checks.mpi_check PECPLAS_BIN DECK... [--singular DECK...] [--np 1 2] [--work DIR]
-                          [--restart DECK N] [--signal DECK] [--write-failure DECK]
-                          [--unit TESTS_BIN SUITE...]
+Usage: python3 -m pecplas_py.checks.mpi_check PECPLAS_BIN DECK... [--singular DECK...]
+                                            [--np 1 2] [--work DIR]
+                                            [--restart DECK N] [--signal DECK] [--write-failure DECK]
+                                            [--unit TESTS_BIN SUITE...]
 Exit status 0 when every comparison holds, 1 otherwise (each failure printed).
 """
 

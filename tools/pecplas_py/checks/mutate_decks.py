@@ -11,7 +11,7 @@ by the release `pecplas` with a timeout, and the outcome classified:
            names the deck with line 0 and is counted apart as "whole deck")
   file left (exit 2 with a results file written)
 
-Usage: tools/pecplas_py/checks/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
+Usage: checks/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
        [--seed 1] [--keep DIR] [--jobs 1] [--json FILE] [--sources DECK ...]
 Only source decks whose unmutated run takes less than --max-source-seconds are used (also
 among those given with --sources), so that the run stays short and a timeout is a hang. Failing cases are copied to --keep (default

@@ -7,7 +7,7 @@ nx x ny eight-node quadrangles (Q8), half model by symmetry.
 
 The defaults give the committed input/examples/strip_footing.inp (`make run
 DECK=input/examples/strip_footing.inp`; it was `make run`'s deck before the S2 pile,
-tools/pecplas_py/decks/make_s2_decks.py, took that place).
+decks/make_s2_decks.py, took that place).
 Larger meshes (e.g. --nx 200 --ny 100) are handy to time the deck reader.
 """
 import argparse

@@ -57,7 +57,8 @@ def main():
             c = [nid[i, j], nid[i + 1, j], nid[i + 1, j + 1], nid[i, j + 1]]
             (pile if (i < npile and j >= jtip) else soil).append(c)
     top = len(zs) - 1
-    out = ['** Pile for the Katona / penalty speed comparison (tools/pecplas_py/decks/make_katona_pile.py,',
+    out = ['** Pile for the Katona / penalty speed comparison '
+           '(tools/pecplas_py/decks/make_katona_pile.py,',
            '** h = %g m, law %s). Assumptions: see the generator docstring.' % (h, args.law),
            '*TITLE', 'axisymmetric pile, %s interface' % args.law, '*UNITS', 'kN, m, kPa',
            '*ANALYSIS, TYPE=AXISYMMETRIC', '*NODES']

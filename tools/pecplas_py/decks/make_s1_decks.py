@@ -9,7 +9,7 @@ nu = 0.3, bottom of the lower block fixed, upper block guided (v = 0 on its top)
 szz = -1.3 kPa as well (isotropic initial state), force control up to the limit load;
 opening/closing by an imposed vertical displacement of the upper block.
 
-    python3 -m pecplas_py.decks.make_s1_decks            # all decks
+    python3 -m pecplas_py.decks.make_s1_decks  # all decks
 """
 import argparse
 from pathlib import Path

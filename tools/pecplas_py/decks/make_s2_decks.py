@@ -162,11 +162,13 @@ def deck(m, model, refine, psi=0.0, title=None, kt=E_SOIL, unload=True):
 def default_deck(m):
     """The Goodman deck at refinement 1 with a header naming it `make run`'s default."""
     head = ["** input/default.inp: the deck `make run` runs (-> output/default.h5, .xmf and",
-            "** the head load-settlement picture output/default.png). It is scene S2 (doc/validation.md)",
+            "** the head load-settlement picture output/default.png). It is scene S2 "
+            "(doc/validation.md)",
             "** with the Goodman interface at refinement 1, identical to input/s2/s2_goodman.inp",
             "** below this header: a 1 m pile, 10 m long, loaded 0 -> 2000 kN -> 0; runs in about",
             "** a second.",
-            "** Written by tools/pecplas_py/decks/make_s2_decks.py (do not edit: regenerate). Other decks:",
+            "** Written by tools/pecplas_py/decks/make_s2_decks.py (do not edit: regenerate). "
+            "Other decks:",
             "** input/examples/ (strip footing), input/s1 ... input/s6 (the thesis scenes).",
             "**"]
     return "\n".join(head) + "\n" + deck(m, "goodman", 1)

@@ -38,7 +38,8 @@ def s6_table_iv1(out):
     text = text.replace("S6 pile pull-out, modjoin, refine 1",
                         "S6 pile pull-out, modjoin, table IV.1 case {{CASE_TITLE}}")
     head = ("** Template of the table IV.1 sweep (pecplas-sweep make template.inp table.csv);\n"
-            "** written by tools/pecplas_py/decks/make_sweep_examples.py from input/s6/s6_modjoin.inp.\n")
+            "** written by tools/pecplas_py/decks/make_sweep_examples.py from "
+            "input/s6/s6_modjoin.inp.\n")
     (out / "template.inp").write_text(head + text)
     with (out / "table.csv").open("w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
@@ -74,10 +75,12 @@ def s2_mesh(out):
         template = t
         (out / f"mesh_r{r}.inp").write_text(
             f"** S2 mesh at refinement {r} ({len(m.elements)} Q4, {len(m.nodes)} nodes), "
-            "included by template.inp;\n** written by tools/pecplas_py/decks/make_sweep_examples.py.\n"
+            "included by template.inp;\n** written by "
+            "tools/pecplas_py/decks/make_sweep_examples.py.\n"
             + "\n".join(mesh) + "\n")
     head = ["** Template of the S2 mesh series (pecplas-sweep make template.inp table.csv);",
-            "** written by tools/pecplas_py/decks/make_sweep_examples.py from tools/pecplas_py/decks/make_s2_decks.py."]
+            "** written by tools/pecplas_py/decks/make_sweep_examples.py from "
+            "tools/pecplas_py/decks/make_s2_decks.py."]
     (out / "template.inp").write_text("\n".join(head + template) + "\n")
     (out / "table.csv").write_text("case,REFINE\n"
                                    + "".join(f"r{r},{r}\n" for r in S2_REFINES))

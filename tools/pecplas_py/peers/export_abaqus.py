@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Export one of our decks (doc/deck.md) to an Abaqus-style CalculiX input (`ccx`), for the
-side-by-side benchmark tools/pecplas_py/bench/peer.py (`doc/bench/README.md`).
+side-by-side benchmark bench/peer.py (`doc/bench/README.md`).
 
 Covered: *NODES, *ELEMENTS (Q4, Q8, Q8R, T3), *MATERIAL (elastic E, NU, GAMMA), *SECTION, *NSET,
 *BOUNDARY (fixed components), *EDGES + *LOAD TYPE=PRESSURE, *LOAD TYPE=FORCE,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The elastic plane-strain block of the OpenSees peer bench (tools/pecplas_py/bench/peer_opensees.py).
+"""The elastic plane-strain block of the OpenSees peer bench (bench/peer_opensees.py).
 
 A cantilever block W x H = 2 m x 1 m of nx x ny bilinear quadrangles (Q4, nx = 2 ny), clamped
 on its left edge (x = 0, both dofs), loaded on its right edge (x = W) by a vertical force of
@@ -14,7 +14,7 @@ system, one `LoadControl` step of 1, `Linear` algorithm.
 
 Only `run_opensees` needs OpenSees (openseespy); the rest is plain numpy.
 
-    python3 -m pecplas_py.peers.opensees_block MESH.npz OUT.npz     # run OpenSees on a saved mesh
+    python3 -m pecplas_py.peers.opensees_block MESH.npz OUT.npz  # run OpenSees on a saved mesh
 """
 import json
 import sys

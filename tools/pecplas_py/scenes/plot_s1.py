@@ -3,7 +3,7 @@
 shear stress and mean shear stress of the lower block against the load, for the results of
 the decks of input/s1/ (run by `make s1`), and the normal stress of the opening-closing cases.
 
-    python3 -m pecplas_py.scenes.plot_s1 [DIR]          # default output/s1; writes PNGs there
+    python3 -m pecplas_py.scenes.plot_s1 [DIR]  # default output/s1; writes PNGs there
 """
 
 from pecplas_py.scenes.scene_cli import scene_dir

@@ -15,8 +15,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from pecplas_py.scenes.s2_results import head_curve, last_key, shaft
 from pecplas_py.figures import save_figure
+from pecplas_py.scenes.s2_results import head_curve, last_key, shaft
 
 
 def main():

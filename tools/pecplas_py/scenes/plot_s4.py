@@ -7,7 +7,7 @@ and ten cycles, both III.6 sets, at +/-2 mm and +/-1 mm, with the end-of-cycle e
 fig. III.26), III.31 (cyclic CND at 193 kPa), and table III.4 as bars
 (when output/s4/sensitivity.csv exists), from the CSVs written by `make s4`.
 
-    python3 -m pecplas_py.scenes.plot_s4 [DIR]          # default output/s4; writes PNGs there
+    python3 -m pecplas_py.scenes.plot_s4 [DIR]  # default output/s4; writes PNGs there
 """
 import csv
 
@@ -106,7 +106,7 @@ def versions(d):
     plt.close(fig)
 
 
-STEPS_CYC = 200  # increments per segment of the cyclic decks (tools/pecplas_py/decks/make_s4_decks.py)
+STEPS_CYC = 200  # increments per segment of the cyclic decks (decks/make_s4_decks.py)
 
 
 def cycle_ends(r):

@@ -16,9 +16,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from pecplas_py.figures import save_figure
 from pecplas_py.scenes.s5_results import (L, compare, interface, keys_and_steps, mid_history,
                                           point_driver, step_ends)
-from pecplas_py.figures import save_figure
 
 
 def main():

@@ -6,7 +6,7 @@ axial force along the pile at the thesis's loads 2.83, 4.40, 6.28 kN or up to th
 along the shaft at four loads (IV.8); tau, sigma_n, tau/sigma_n against the relative slip at
 depths 0.525, 1.016, 1.581 m (IV.9).
 
-    python3 -m pecplas_py.scenes.plot_s6 [DIR]     # DIR holds s6_*.h5 (default output/s6)
+    python3 -m pecplas_py.scenes.plot_s6 [DIR]  # DIR holds s6_*.h5 (default output/s6)
 """
 import math
 
@@ -17,9 +17,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from pecplas_py.scenes.s6_results import head_curve, keys_and_loads, shaft
 from pecplas_py.figures import save_figure
 from pecplas_py.results import Results
+from pecplas_py.scenes.s6_results import head_curve, keys_and_loads, shaft
 
 DEPTHS = (0.525, 1.016, 1.581)   # points of interest of the thesis [m]
 QS = (2.83, 4.40, 6.28)          # measured cycle peaks [kN]

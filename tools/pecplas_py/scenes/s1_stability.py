@@ -64,7 +64,8 @@ def doc_block(check):
     file; returns the diff ('' when up to date)."""
     from pecplas_py.doc_blocks import update
     rows = json.loads(REFERENCE.read_text())["rows"]
-    note = ("<!-- from test/reference/s1_stability.json (written by tools/pecplas_py/scenes/s1_stability.py "
+    note = ("<!-- from test/reference/s1_stability.json (written by "
+            "tools/pecplas_py/scenes/s1_stability.py "
             "--json): its runs take minutes, too slow for make test; test/python/test_docs.py "
             "reruns three rows against the file and checks its physics -->")
     return update(DOC, "scenes/s1_stability.py", {"s1-stability": note + "\n" + table(rows)}, check)
@@ -122,7 +123,8 @@ def main():
     if a.json:
         REFERENCE.write_text(json.dumps({
             "about": "Stability of the S1 opening-closing test against K_n / E1 (written by "
-                     "tools/pecplas_py/scenes/s1_stability.py --json; the table of doc/validation.md is "
+                     "tools/pecplas_py/scenes/s1_stability.py --json; the table of "
+                     "doc/validation.md is "
                      "rendered from it; test/python/test_docs.py reruns a few rows and checks "
                      "the physics: interpenetration = sigma_n / K_n, full Newton completes).",
             "max_iterations": a.max_iterations, "rows": rows}, indent=1) + "\n")

@@ -96,7 +96,8 @@ def main():
         cases[name] = {"deck": f"input/{name[:2]}/{name}.inp",
                        "values": {k: {"value": round(x, 6), "unit": UNITS[k], "check": c[k]}
                                   for k, x in v.items()}}
-    doc = {"about": "Scenes S2 and S3 at refinement 1 (tools/pecplas_py/decks/make_s2_decks.py): stored "
+    doc = {"about": "Scenes S2 and S3 at refinement 1 (tools/pecplas_py/decks/make_s2_decks.py): "
+                    "stored "
                     "results of the program, each checked against the physics written "
                     "beside it (test/python/test_s2_s3.py asserts the checks and compares "
                     "fresh runs). Written by tools/pecplas_py/scenes/s2_reference.py.",

@@ -1,4 +1,4 @@
-"""Reading S2/S3 pile results (used by tools/pecplas_py/scenes/plot_s2.py and the tests): head load-settlement
+"""Reading S2/S3 pile results (used by scenes/plot_s2.py and the tests): head load-settlement
 curve, shaft stresses, shaft shear resultant."""
 import numpy as np
 

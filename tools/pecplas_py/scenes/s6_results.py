@@ -1,10 +1,10 @@
-"""Reading S6 pile pull-out results (used by tools/pecplas_py/scenes/plot_s6.py and test/python/test_s6.py):
+"""Reading S6 pile pull-out results (used by scenes/plot_s6.py and test/python/test_s6.py):
 head load-displacement curve, shaft stresses, interpolation at a common load."""
 import numpy as np
 
 from pecplas_py.results import Results
 
-Q_END = 6.28   # kN at pattern factor 1 (tools/pecplas_py/decks/make_s6_decks.py)
+Q_END = 6.28   # kN at pattern factor 1 (decks/make_s6_decks.py)
 
 
 def _head_nodes(x):
