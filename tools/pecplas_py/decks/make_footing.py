@@ -15,6 +15,8 @@ write the test deck footing_t6.inp (run from this directory).
 import argparse
 import math
 
+from pecplas_py.deck import Deck
+
 
 def graded(a, b, h, grow, fine_end):
     """Coordinates from a to b: steps h up to fine_end, then growing by `grow` (last step
@@ -118,50 +120,34 @@ def main():
     base = [ids[(i, 0)] for i in range(2 * nx + 1) if (i, 0) in ids]
 
     qu = (2.0 + math.pi) * 10.0
-    with open(a.output, "w") as f:
-        f.write(f"""** Smooth rigid strip footing on weightless Tresca soil (written by make_footing.py:
+    d = Deck(fmt=".10g")
+    d.line(f"""** Smooth rigid strip footing on weightless Tresca soil (written by make_footing.py:
 **   python3 -m pecplas_py.decks.make_footing --elem {a.elem} --nf {a.nf} --bias {a.bias}
-**     --grow {a.grow} --settle {a.settle} --increments {a.increments} --nu {a.nu} --tol {a.tol:g} --maxit {a.maxit}).
+**     --grow {a.grow} --settle {a.settle} --increments {a.increments} --nu {a.nu} \
+--tol {a.tol:g} --maxit {a.maxit}).
 ** Half model: footing half-width b = 1 m on x in [0, 1] at y = 0, domain 5 m x 4 m,
-** {len(elements)} {a.elem} elements: {a.nf} under the half footing, {2 * a.nf} from its edge to x = 3 m and
+** {len(elements)} {a.elem} elements: {a.nf} under the half footing, {2 * a.nf} from its edge \
+to x = 3 m and
 ** {a.nf} down to y = -1 m (Prandtl's mechanism), sizes growing by {a.bias} away from the footing
 ** edge, then by {a.grow} to the far boundaries. Symmetry axis and right side on rollers
 ** (u_x = 0), base fixed. The footing nodes are pushed down by {a.settle} m in {a.increments}
 ** increments, free to slide horizontally (smooth footing).
 ** Soil: Mohr-Coulomb with phi = psi = 0 (Tresca), c = 10 kPa, E = 1e4 kPa, NU = {a.nu}.
 ** Prandtl: q_u = (2 + pi) c = {qu:.3f} kPa, i.e. a footing reaction of {qu:.3f} kN per m on
-** the half model.
-*TITLE
-smooth strip footing, Tresca, {a.elem} mesh
-*UNITS
-kN, m, kPa
-*ANALYSIS, TYPE=PLANE_STRAIN
-*NODES
-""")
-        for k, (x, y) in enumerate(nodes, 1):
-            f.write(f"{k}, {x:.10g}, {y:.10g}\n")
-        f.write(f"*ELEMENTS, TYPE={a.elem}, SET=soil\n")
-        for k, e in enumerate(elements, 1):
-            f.write(f"{k}, " + ", ".join(str(n) for n in e) + "\n")
-        f.write(f"""*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB
-E = 1e4, NU = {a.nu}, C = 10, PHI = 0, PSI = 0
-*SECTION, SET=soil, MATERIAL=clay
-""")
-        for name, lst in (("footing", footing), ("axis", left), ("far", right), ("base", base)):
-            f.write(f"*NSET, NAME={name}\n")
-            for k in range(0, len(lst), 10):
-                f.write(", ".join(str(n) for n in lst[k:k + 10]) + "\n")
-        f.write(f"""*BOUNDARY
-axis, X
-far, X
-base, XY
-*LOAD, NAME=settle, TYPE=DISPLACEMENT
-footing, Y, -1.0
-*STEP, NAME=push, INCREMENTS={a.increments}
-settle, {a.settle}
-*SOLVER, METHOD=NEWTON, TOLERANCE={a.tol:g}, MAX_ITERATIONS={a.maxit}, MAX_CUTS=8
-*OUTPUT, STRESSES=NO, STRAINS=NO
-""")
+** the half model.""")
+    d.title(f"smooth strip footing, Tresca, {a.elem} mesh").units("kN, m, kPa")
+    d.analysis("PLANE_STRAIN").nodes(list(enumerate(nodes, 1)))
+    d.elements(a.elem, "soil", [(k, *e) for k, e in enumerate(elements, 1)])
+    d.material("clay", f"E = 1e4, NU = {a.nu}, C = 10, PHI = 0, PSI = 0", type="MOHR_COULOMB")
+    d.section("soil", "clay")
+    for name, lst in (("footing", footing), ("axis", left), ("far", right), ("base", base)):
+        d.nset(name, lst, per_line=10)
+    d.boundary("axis, X", "far, X", "base, XY")
+    d.load("settle", "DISPLACEMENT", "footing, Y, -1.0")
+    d.step("push", a.increments, f"settle, {a.settle}")
+    d.solver(METHOD="NEWTON", TOLERANCE=f"{a.tol:g}", MAX_ITERATIONS=a.maxit, MAX_CUTS=8)
+    d.output(STRESSES=False, STRAINS=False)
+    d.write(a.output)
 
 
 def node_x(xs, i):

@@ -18,6 +18,8 @@ Usage: make_katona_pile.py [--h 0.05] [--law KATONA] [--method MODIFIED_NEWTON]
 import argparse
 import math
 
+from pecplas_py.deck import Deck
+
 GROWTH = 1.05
 
 
@@ -57,45 +59,35 @@ def main():
             c = [nid[i, j], nid[i + 1, j], nid[i + 1, j + 1], nid[i, j + 1]]
             (pile if (i < npile and j >= jtip) else soil).append(c)
     top = len(zs) - 1
-    out = ['** Pile for the Katona / penalty speed comparison '
-           '(tools/pecplas_py/decks/make_katona_pile.py,',
-           '** h = %g m, law %s). Assumptions: see the generator docstring.' % (h, args.law),
-           '*TITLE', 'axisymmetric pile, %s interface' % args.law, '*UNITS', 'kN, m, kPa',
-           '*ANALYSIS, TYPE=AXISYMMETRIC', '*NODES']
-    out += ['%d, %.12g, %.12g' % (k + 1, r, z) for k, (r, z) in enumerate(out_nodes)]
+    d = Deck(fmt='.12g')
+    d.comment('Pile for the Katona / penalty speed comparison '
+              '(tools/pecplas_py/decks/make_katona_pile.py,',
+              'h = %g m, law %s). Assumptions: see the generator docstring.' % (h, args.law))
+    d.title('axisymmetric pile, %s interface' % args.law).units('kN, m, kPa')
+    d.analysis('AXISYMMETRIC').nodes([(k + 1, r, z) for k, (r, z) in enumerate(out_nodes)])
     eid = 0
     for name, els in (('soil', soil), ('pile', pile)):
-        out.append('*ELEMENTS, TYPE=Q4, SET=%s' % name)
-        for c in els:
-            eid += 1
-            out.append('%d, %s' % (eid, ', '.join(str(v) for v in c)))
-    out += ['*MATERIAL, NAME=soil', 'E = 2e4, NU = 0.3, GAMMA = 18',
-            '*MATERIAL, NAME=concrete', 'E = 2e7, NU = 0.2, GAMMA = 18',
-            '*SECTION, SET=soil, MATERIAL=soil', '*SECTION, SET=pile, MATERIAL=concrete',
-            '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 0.0, 0.5',
-            '*INTERFACE_LAW, NAME=shaft, TYPE=%s' % args.law,
-            'KN = 2e7, KT = 2e4, PHI = 30, C = 0',
-            '*EDGES, NAME=interface']
-    out += ['%d, %d' % (nid[npile, j], nid[npile, j + 1]) for j in range(jtip, top)]
-    out += ['%d, %d' % (nid[i, jtip], nid[i + 1, jtip]) for i in range(npile)]
-    out.append('*JOINTS, TYPE=GOODMAN4, SET=interface, LAW=shaft, EDGES=interface, SIDE=pile')
-
-    def nset(name, ids):
-        out.append('*NSET, NAME=%s' % name)
-        out.extend(', '.join(str(v) for v in ids[k:k + 12]) for k in range(0, len(ids), 12))
-
-    nset('bottom', [nid[i, 0] for i in range(len(rs))])
-    nset('outer', [nid[len(rs) - 1, j] for j in range(len(zs))])
-    nset('axis', [nid[0, j] for j in range(len(zs))])
-    out += ['*BOUNDARY', 'bottom, XY', 'outer, X', 'axis, X', '*EDGES, NAME=head']
-    out += ['%d, %d' % (nid[i, top], nid[i + 1, top]) for i in range(npile)]
+        d.elements('Q4', name, [(eid + k + 1, *c) for k, c in enumerate(els)])
+        eid += len(els)
+    d.material('soil', 'E = 2e4, NU = 0.3, GAMMA = 18')
+    d.material('concrete', 'E = 2e7, NU = 0.2, GAMMA = 18')
+    d.section('soil', 'soil').section('pile', 'concrete')
+    d.initial_stress('GEOSTATIC', 'ALL, 0.0, 0.5')
+    d.interface_law('shaft', args.law, 'KN = 2e7, KT = 2e4, PHI = 30, C = 0')
+    d.edges('interface', [(nid[npile, j], nid[npile, j + 1]) for j in range(jtip, top)]
+            + [(nid[i, jtip], nid[i + 1, jtip]) for i in range(npile)])
+    d.keyword('JOINTS', TYPE='GOODMAN4', SET='interface', LAW='shaft', EDGES='interface',
+              SIDE='pile')
+    d.nset('bottom', [nid[i, 0] for i in range(len(rs))], per_line=12)
+    d.nset('outer', [nid[len(rs) - 1, j] for j in range(len(zs))], per_line=12)
+    d.nset('axis', [nid[0, j] for j in range(len(zs))], per_line=12)
+    d.boundary('bottom, XY', 'outer, X', 'axis, X')
+    d.edges('head', [(nid[i, top], nid[i + 1, top]) for i in range(npile)])
     q = 2000.0 / (math.pi * 0.25)
-    out += ['*LOAD, NAME=head, TYPE=PRESSURE', 'head, %.10g' % q,
-            '*SOLVER, METHOD=%s, MAX_ITERATIONS=500, MAX_CUTS=6' % args.method,
-            '*STEP, NAME=load, INCREMENTS=20', 'head, 1',
-            '*STEP, NAME=unload, INCREMENTS=20', 'head, 0', '*OUTPUT, EVERY=20']
-    with open(args.out, 'w') as f:
-        f.write('\n'.join(out) + '\n')
+    d.load('head', 'PRESSURE', 'head, %.10g' % q)
+    d.solver(METHOD=args.method, MAX_ITERATIONS=500, MAX_CUTS=6)
+    d.step('load', 20, 'head, 1').step('unload', 20, 'head, 0').output(EVERY=20)
+    d.write(args.out)
     print('%s: %d nodes, %d elements' % (args.out, len(out_nodes), len(pile) + len(soil)))
 
 

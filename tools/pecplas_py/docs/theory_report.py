@@ -31,7 +31,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from pecplas_py import ROOT
+from pecplas_py import ROOT, script_cmd
 from pecplas_py import doc_blocks
 from pecplas_py.doc_blocks import report_main
 from pecplas_py.exe import exe_cmd
@@ -40,7 +40,6 @@ from pecplas_py.results import Results
 SCRIPT = "docs/theory_report.py"
 DOC = ROOT / "doc" / "theory.md"
 STORE = ROOT / "test" / "reference" / "theory_tables.json"
-MAKE_FOOTING = ROOT / "test" / "data" / "plasticity" / "make_footing.py"
 C = 10.0                       # kPa, cohesion of the footing and cylinder decks
 PRANDTL = 2.0 + math.pi        # q_u / c
 #: (element type of the deck, --nf): the footing meshes of the table
@@ -52,7 +51,7 @@ CELLS = ("2x1", "4x2", "6x3")
 def footing_run(out, elem, nf, exe):
     """q_u / c and the element count of one footing deck (written into `out`)."""
     deck = Path(out) / f"footing_{elem}_nf{nf}.inp"
-    subprocess.run([sys.executable, str(MAKE_FOOTING), "--elem", "Q8" if elem == "Q8R" else elem,
+    subprocess.run([*script_cmd("decks.make_footing"), "--elem", "Q8" if elem == "Q8R" else elem,
                     "--nf", str(nf), "-o", str(deck)], check=True, capture_output=True)
     text = deck.read_text()
     if elem == "Q8R":
