@@ -68,6 +68,9 @@ GENERATORS = [
     (["make_s6_decks", "--out", "{tmp}"], "input"),
     (["make_default_deck", "-o", "{tmp}/strip_footing.inp"], "input/examples"),
     (["make_hertz_deck", "--out", "{tmp}/hertz.inp"], "test/data/katona"),
+    (["make_katona_decks", "--out", "{tmp}"], "test/data/katona"),
+    (["make_patch_decks", "--out", "{tmp}"], "test/data/joints"),
+    (["make_footing", "-o", "{tmp}/footing_t6.inp"], "test/data/plasticity"),
 ]
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the Katona joint patch decks of test/data/katona (run from anywhere).
+"""Writes the Katona joint patch decks of test/data/katona (or --out DIR).
 
 Two blocks of different materials, width 2, lower height H1 = 1, upper height H2 = 0.5, on a
 non-uniform mesh, joined by generated Katona doublets (EDGES/SIDE) along y = 0:
@@ -12,9 +12,11 @@ non-uniform mesh, joined by generated Katona doublets (EDGES/SIDE) along y = 0:
 - float_*: the upper block is held only by its contacts (pressure P on top, nothing else):
   R is singular (augmented path) and sigma_n = P at every doublet, exactly.
 """
+import argparse
 import os
 
 from pecplas_py import ROOT
+from pecplas_py.deck import Deck
 
 HERE = str(ROOT / "test" / "data" / "katona")
 XS = [0.0, 0.3, 1.1, 2.0]
@@ -64,72 +66,62 @@ def block(nodes, xs, ys, quad8, first_node, first_elem, bottom=None):
     return elems, ids, len(gx), len(gy)
 
 
-def deck(name, etype, jtype, axi, floating):
+def deck(name, etype, jtype, axi, floating, out_dir=HERE):
     quad8 = etype == 'Q8'
     nodes = []
     low, lid, nx, ny = block(nodes, XS, YL, quad8, 1, 1)
     up, uid, _, nyu = block(nodes, XS, YU, quad8, 1001, 101,
                             bottom=[lid[i, ny - 1] for i in range(nx)])
     step = 2 if quad8 else 1
-    out = ['** Written by make_katona_decks.py (see its docstring for the exact solution).',
-           '*TITLE', f'Katona joint patch test, {jtype}, {"axisymmetric" if axi else "plane strain"}'
-           f', {"floating upper block" if floating else "imposed displacement"}',
-           '*UNITS', 'kN, m, kPa']
+    d = Deck(fmt='.12g')
+    d.comment('Written by make_katona_decks.py (see its docstring for the exact solution).')
+    d.title(f'Katona joint patch test, {jtype}, {"axisymmetric" if axi else "plane strain"}, '
+            f'{"floating upper block" if floating else "imposed displacement"}')
+    d.units('kN, m, kPa')
     if axi:
-        out.append('*ANALYSIS, TYPE=AXISYMMETRIC')
-    out.append('*NODES')
-    out += [f'{n}, {x:.12g}, {y:.12g}' for n, x, y in nodes]
+        d.analysis('AXISYMMETRIC')
+    d.nodes(nodes)
     for sname, els in (('lower', low), ('upper', up)):
-        out.append(f'*ELEMENTS, TYPE={etype}, SET={sname}')
-        out += [f'{e}, ' + ', '.join(str(c) for c in conn) for e, conn in els]
-    out += ['*MATERIAL, NAME=soft', f'E = {E1:g}, NU = {NU1:g}',
-            '*MATERIAL, NAME=stiff', f'E = {E2:g}, NU = {NU2:g}',
-            '*SECTION, SET=lower, MATERIAL=soft', '*SECTION, SET=upper, MATERIAL=stiff',
-            '*INTERFACE_LAW, NAME=contact, TYPE=KATONA', 'MU = 0',
-            '*EDGES, NAME=interface']
-    for i in range(0, nx - 1, step):
-        e = [uid[i, 0], uid[i + step, 0]]
-        if quad8:
-            e.append(uid[i + 1, 0])
-        out.append(', '.join(str(v) for v in e))
-    out.append(f'*JOINTS, TYPE={jtype}, SET=joint, LAW=contact, EDGES=interface, SIDE=upper')
-    out.append('*NSET, NAME=base')
-    out.append(', '.join(str(lid[i, 0]) for i in range(nx)))
-    out += ['*BOUNDARY', 'base, Y']
+        d.elements(etype, sname, [(e, *conn) for e, conn in els])
+    d.material('soft', E=E1, NU=NU1).material('stiff', E=E2, NU=NU2)
+    d.section('lower', 'soft').section('upper', 'stiff')
+    d.interface_law('contact', 'KATONA', 'MU = 0')
+    d.edges('interface', [[uid[i, 0], uid[i + step, 0]] + ([uid[i + 1, 0]] if quad8 else [])
+                          for i in range(0, nx - 1, step)])
+    d.keyword('JOINTS', TYPE=jtype, SET='joint', LAW='contact', EDGES='interface', SIDE='upper')
+    d.nset('base', [lid[i, 0] for i in range(nx)]).boundary('base, Y')
     if axi:
-        out.append('*NSET, NAME=axis')
-        out.append(', '.join(str(lid[0, j]) for j in range(ny) if (0, j) in lid) + ', ' +
-                   ', '.join(str(uid[0, j]) for j in range(1, nyu) if (0, j) in uid))
-        out += ['*BOUNDARY', 'axis, X']
+        d.nset('axis', [lid[0, j] for j in range(ny) if (0, j) in lid]
+               + [uid[0, j] for j in range(1, nyu) if (0, j) in uid])
+        d.boundary('axis, X')
     else:
-        out += ['*BOUNDARY', f'{lid[0, 0]}, X']
+        d.boundary(f'{lid[0, 0]}, X')
     top = [uid[i, nyu - 1] for i in range(nx)]
     if floating:
         if not axi:
             # frictionless contact holds nothing in x: one node does (y stays free)
-            out += ['*BOUNDARY', f'{uid[0, nyu - 1]}, X']
-        out.append('*EDGES, NAME=top')
-        for i in range(0, nx - 1, step):
-            e = [top[i], top[i + step]] + ([top[i + 1]] if quad8 else [])
-            out.append(', '.join(str(v) for v in e))
-        out += ['*LOAD, NAME=p, TYPE=PRESSURE', f'top, {P:g}',
-                '*STEP, NAME=press, INCREMENTS=2', 'p, 1']
+            d.boundary(f'{uid[0, nyu - 1]}, X')
+        d.edges('top', [[top[i], top[i + step]] + ([top[i + 1]] if quad8 else [])
+                        for i in range(0, nx - 1, step)])
+        d.load('p', 'PRESSURE', f'top, {P:g}').step('press', 2, 'p, 1')
     else:
         if not axi:
-            out += ['*BOUNDARY', f'{uid[0, nyu - 1]}, X']
-        out.append('*NSET, NAME=top')
-        out.append(', '.join(str(v) for v in top))
-        out += ['*LOAD, NAME=push, TYPE=DISPLACEMENT', f'top, Y, {-DELTA:g}',
-                '*STEP, NAME=push, INCREMENTS=2', 'push, 1']
-    with open(os.path.join(HERE, name + '.inp'), 'w') as f:
-        f.write('\n'.join(out) + '\n')
+            d.boundary(f'{uid[0, nyu - 1]}, X')
+        d.nset('top', top)
+        d.load('push', 'DISPLACEMENT', f'top, Y, {-DELTA:g}').step('push', 2, 'push, 1')
+    d.write(os.path.join(out_dir, name + '.inp'))
 
 
 if __name__ == '__main__':
-    deck('disp_spring_plane', 'Q4', 'SPRING', False, False)
-    deck('disp_goodman4_plane', 'Q4', 'GOODMAN4', False, False)
-    deck('disp_goodman6_plane', 'Q8', 'GOODMAN6', False, False)
-    deck('disp_spring_axi', 'Q4', 'SPRING', True, False)
-    deck('disp_goodman6_axi', 'Q8', 'GOODMAN6', True, False)
-    deck('float_spring_plane', 'Q4', 'SPRING', False, True)
-    deck('float_goodman6_axi', 'Q8', 'GOODMAN6', True, True)
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument('--out', default=HERE, help=f'directory (default {HERE})')
+    out = ap.parse_args().out
+    os.makedirs(out, exist_ok=True)
+    for args in (('disp_spring_plane', 'Q4', 'SPRING', False, False),
+                 ('disp_goodman4_plane', 'Q4', 'GOODMAN4', False, False),
+                 ('disp_goodman6_plane', 'Q8', 'GOODMAN6', False, False),
+                 ('disp_spring_axi', 'Q4', 'SPRING', True, False),
+                 ('disp_goodman6_axi', 'Q8', 'GOODMAN6', True, False),
+                 ('float_spring_plane', 'Q4', 'SPRING', False, True),
+                 ('float_goodman6_axi', 'Q8', 'GOODMAN6', True, True)):
+        deck(*args, out_dir=out)

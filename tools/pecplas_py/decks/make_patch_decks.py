@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the joint patch-test decks of test/data/joints/ (run from anywhere):
 
-    python3 -m pecplas_py.decks.make_patch_decks
+    python3 -m pecplas_py.decks.make_patch_decks [--out DIR]
 
 Two blocks (2 elements wide, 1 high each) pressed together by a uniform pressure P on top,
 the lower block on rollers at its base. With one elastic material for both blocks the
@@ -15,9 +15,12 @@ sets that name only the original interface nodes): exact only if the rule "a sup
 split node also holds its duplicate" is applied.
 """
 
+import argparse
 import math
+from pathlib import Path
 
 from pecplas_py import ROOT
+from pecplas_py.deck import Deck
 
 HERE = ROOT / "test" / "data" / "joints"
 P = 100.0
@@ -94,21 +97,22 @@ def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None
         title += ", generated doublets"
     if angle:
         title += f", joint inclined at {angle:g} deg"
-    lines = ["** Written by make_patch_decks.py (see its docstring for the exact solution)."]
+    d = Deck(fmt=".15g")
+    d.comment("Written by make_patch_decks.py (see its docstring for the exact solution).")
     if note:
-        lines += ["** " + note]
-    lines += ["*TITLE", title, "*UNITS", "kN, m, kPa"]
+        d.comment(note)
+    d.title(title).units("kN, m, kPa")
     if axi:
-        lines += ["*ANALYSIS, TYPE=AXISYMMETRIC"]
-    lines += ["*NODES"] + [f"{i}, {x:.15g}, {y:.15g}" for i, (x, y) in nodes]
-    lines += [f"*ELEMENTS, TYPE={etype}, SET=lower"]
-    lines += [", ".join(map(str, [k + 1] + e)) for k, e in enumerate(le)]
-    lines += [f"*ELEMENTS, TYPE={etype}, SET=upper"]
-    lines += [", ".join(map(str, [k + 11] + e)) for k, e in enumerate(ue)]
-    lines += ["*MATERIAL, NAME=soil", f"E = {E:g}, NU = {NU:g}",
-              "*SECTION, SET=lower, MATERIAL=soil", "*SECTION, SET=upper, MATERIAL=soil"]
+        d.analysis("AXISYMMETRIC")
+    d.nodes(nodes)
+    d.elements(etype, "lower", [(k + 1, *e) for k, e in enumerate(le)])
+    d.elements(etype, "upper", [(k + 11, *e) for k, e in enumerate(ue)])
+    d.material("soil", E=E, NU=NU).section("lower", "soil").section("upper", "soil")
     kn, kt = (KN * THICK, KT * THICK) if jtype == "THIN_LAYER" else (KN, KT)
-    lines += law or ["*INTERFACE_LAW, NAME=contact, TYPE=ELASTIC", f"KN = {kn:g}, KT = {kt:g}"]
+    if law:
+        d.line(*law)
+    else:
+        d.interface_law("contact", "ELASTIC", KN=kn, KT=kt)
     opts = f"*JOINTS, TYPE={jtype}, SET=joint, LAW=contact" + extra
     if integration:
         opts += f", INTEGRATION={integration}"
@@ -123,13 +127,11 @@ def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None
                 edges.append([face1[i], face1[i + 1]])
             else:
                 edges.append([face1[2 * i], face1[2 * i + 2], face1[2 * i + 1]])
-        lines += ["*EDGES, NAME=interface"] + [", ".join(map(str, e)) for e in edges]
-        lines += [opts + ", EDGES=interface, SIDE=upper"]
+        d.edges("interface", edges).line(opts + ", EDGES=interface, SIDE=upper")
     else:
-        lines += [opts]
+        d.line(opts)
         if jtype == "SPRING":
-            for c in range(len(face1)):
-                lines.append(f"{101 + c}, {face1[c]}, {face2[c]}")
+            d.rows([(101 + c, face1[c], face2[c]) for c in range(len(face1))])
         else:
             for i in range(2):
                 if order == 1:
@@ -138,16 +140,13 @@ def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None
                     c = 2 * i
                     conn = [face1[c], face1[c + 2], face2[c + 2], face2[c], face1[c + 1],
                             face2[c + 1]]
-                lines.append(", ".join(map(str, [101 + i] + conn)))
-    base = [i for i in lid[0] if i]
-    lines += ["*NSET, NAME=base", ", ".join(map(str, base))]
-    lines += ["*BOUNDARY", "base, Z" if axi else "base, Y"]
+                d.data(101 + i, *conn)
+    d.nset("base", [i for i in lid[0] if i]).boundary("base, Z" if axi else "base, Y")
     if generated and not axi:
         sides = [row[0] for row in lid + uid if row[0]] + [row[-1] for row in lid + uid if row[-1]]
-        lines += ["*NSET, NAME=sides", ", ".join(map(str, sorted(set(sides))))]
-        lines += ["*BOUNDARY", "sides, X"]
+        d.nset("sides", sorted(set(sides))).boundary("sides, X")
     elif not axi:
-        lines += [f"{lid[0][0]}, X"]
+        d.line(f"{lid[0][0]}, X")
     t = uid[-1]
     top_edges = []
     for i in range(2):
@@ -155,12 +154,17 @@ def deck(jtype, axi=False, generated=False, order=1, angle=0.0, integration=None
             top_edges.append([t[i], t[i + 1]])
         else:
             top_edges.append([t[2 * i], t[2 * i + 2], t[2 * i + 1]])
-    lines += ["*EDGES, NAME=top"] + [", ".join(map(str, e)) for e in top_edges]
-    lines += ["*LOAD, NAME=p, TYPE=PRESSURE", f"top, {P:g}"]
+    d.edges("top", top_edges).load("p", "PRESSURE", f"top, {P:g}")
     if method:
-        lines += [f"*SOLVER, METHOD={method}"]
-    lines += ["*STEP, NAME=press, INCREMENTS=2", "p, 1"]
-    return "\n".join(lines) + "\n"
+        d.solver(METHOD=method)
+    d.step("press", 2, "p, 1")
+    return d.text()
+
+
+def parse_args():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default=str(HERE), help=f"directory (default {HERE})")
+    return ap.parse_args()
 
 
 def main():
@@ -186,9 +190,11 @@ def main():
         "SPRING", law=["*INTERFACE_LAW, NAME=contact, TYPE=SPRING", "PHI = 30, E_RYG = 0.5"],
         note="Spring (Frank) law without KN, KT: default penalty 1e5 E_RYG R_max / (mean "
              "tributary) at set-up, R_max = 2 (D11 + G) / 3 here.")))
+    out = Path(parse_args().out)
+    out.mkdir(parents=True, exist_ok=True)
     for name, text in cases:
-        (HERE / name).write_text(text)
-        print("wrote", name)
+        (out / name).write_text(text)
+        print("wrote", out / name)
 
 
 if __name__ == "__main__":
