@@ -10,12 +10,12 @@ import re
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
 
 from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 # a 2 x 1 Q8 strip footing (2 m x 1 m block, footing half-width 1 m, elastic, gravity then
@@ -51,9 +51,9 @@ def uniform(pecplas, tmp_path_factory):
         deck = footing(tmp / f"u{nx}.inp", nx, nx // 2)
         r = run(pecplas, deck, "-o", tmp / f"u{nx}.h5", "--quiet")
         assert r.returncode == 0, r.stderr
-        with h5py.File(tmp / f"u{nx}.h5", "r") as f:
-            x = f["mesh/coordinates"][()]
-            u = f["increments"][sorted(f["increments"])[-1]]["displacement"][()]
+        with Results(tmp / f"u{nx}.h5") as r:
+            x = r.coordinates
+            u = r.field(r.last_key(), "displacement")
         out.append((x, u))
     return out
 

@@ -13,6 +13,8 @@ import h5py
 import pytest
 from pecplas_exe import pecplas_cmd
 
+from pecplas_py.results import Results
+
 ROOT = Path(__file__).resolve().parents[2]
 TRUST = ROOT / "test" / "data" / "trust"
 
@@ -36,9 +38,9 @@ def test_warnings_printed_and_stored(tmp_path):
     assert r.returncode == 0, r.stderr  # a warning never changes the exit code
     lines = [s for s in r.stderr.splitlines() if ": warning: " in s]
     assert len(lines) == len(WARNINGS), r.stderr
-    with h5py.File(out) as f:
-        stored = [s.decode() if isinstance(s, bytes) else s for s in f.attrs["warnings"]]
-        assert f.attrs["status"] in ("completed", b"completed")
+    with Results(out) as r:
+        stored = r.attr("warnings")
+        assert r.status == "completed"
     assert stored == lines  # the file holds exactly what was printed
     for line, phrase in WARNINGS:
         hits = [s for s in lines if s.startswith(f"{TRUST / 'warn_all.inp'}:{line}: warning: ")
@@ -51,8 +53,8 @@ def test_no_warning_stores_empty_list(tmp_path):
     r = run(TRUST / "good_bom.inp", out=out)
     assert r.returncode == 0, r.stderr
     assert ": warning: " not in r.stderr
-    with h5py.File(out) as f:
-        assert len(f.attrs["warnings"]) == 0
+    with Results(out) as r:
+        assert len(r.attr("warnings")) == 0
 
 
 @pytest.mark.parametrize("deck, line, phrase", [
@@ -230,9 +232,8 @@ def test_large_displacement_warning_joins_the_list(tmp_path):
     r = run(deck, out=out)
     assert r.returncode == 0, r.stderr
     assert "small-strain theory no longer holds" in r.stderr
-    with h5py.File(out) as f:
-        stored = [s.decode() if isinstance(s, bytes) else s for s in f.attrs["warnings"]]
-        message = f.attrs["status_message"]
-        message = message.decode() if isinstance(message, bytes) else str(message)
+    with Results(out) as res:
+        stored = res.attr("warnings")
+        message = res.attr("status_message")
     assert any("small-strain theory no longer holds" in s for s in stored), stored
     assert "small-strain theory no longer holds" in message

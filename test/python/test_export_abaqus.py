@@ -11,7 +11,6 @@ import shutil
 import subprocess
 from pathlib import Path
 
-import h5py
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -19,6 +18,7 @@ from pecplas_py.peers import export_abaqus as ex
 from pecplas_exe import pecplas_cmd  # noqa: E402
 
 from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 E, NU, KN, P, H = 1.0e4, 0.3, 1.0e5, 100.0, 1.0
 M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
@@ -148,8 +148,8 @@ def ours(deck, out):
     r = subprocess.run([*pecplas_cmd(), str(deck), "-o", str(out), "--quiet"], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    with h5py.File(out) as f:
-        return -f["increments"][sorted(f["increments"])[-1]]["displacement"][7, 1]
+    with Results(out) as r:
+        return -r.field(r.last_key(), "displacement")[7, 1]
 
 
 @pytest.mark.skipif(shutil.which("ccx") is None, reason="CalculiX (ccx) is not on the PATH")

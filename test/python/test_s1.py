@@ -5,10 +5,11 @@ a fresh temporary directory every time (never a file left by an earlier run)."""
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
+
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -20,14 +21,14 @@ def results(tmp_path_factory):
                           "--quiet"], cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     assert path.exists(), "pecplas exited 0 but wrote no " + str(path)
-    with h5py.File(path) as f:
-        steps = f["history/step"][:]
+    with Results(path) as r:
+        steps = r.history("step")
         rows = {}
-        for key in f["increments"]:
-            g = f["increments"][key]
-            j = g["joints/joint"]
-            rows[int(key)] = (int(g.attrs["step"]), j["stress"][:].reshape(-1, 2),
-                              j["mode"][:].ravel(), j["relative_displacement"][:].reshape(-1, 2))
+        for key in r.keys:
+            j = "joints/joint/"
+            rows[int(key)] = (r.step_of(key), r.field(key, j + "stress").reshape(-1, 2),
+                              r.field(key, j + "mode").ravel(),
+                              r.field(key, j + "relative_displacement").reshape(-1, 2))
         yield steps, rows
 
 

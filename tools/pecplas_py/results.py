@@ -18,11 +18,14 @@ import numpy as np
 
 
 def text(value):
-    """An attribute as str when it is text (bytes, NumPy bytes or str), else unchanged."""
+    """An attribute as str when it is text (bytes, NumPy bytes or str), a list of str when it
+    is a list of texts (e.g. `warnings`, `patterns`), else unchanged."""
     if isinstance(value, (bytes, np.bytes_)):
         return value.decode()
     if isinstance(value, np.str_):
         return str(value)
+    if isinstance(value, np.ndarray) and value.dtype.kind in "OSU":
+        return [text(v) for v in value.tolist()]
     return value
 
 
