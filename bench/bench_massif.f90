@@ -37,14 +37,14 @@ program bench_massif
    peak = peak_memory_mb()
    if (code /= 0) error stop 'bench run failed'
 
-   call create_matrix_file(base//'.matrix.h5', problem%k, f, error)
+   call create_matrix_file(base//'.matrix.h5', problem%linear%k, f, error)
    call h5fclose_f(f, err)
    if (allocated(error)) then
       write (0, '(a)') 'pecplas-bench: '//error%text()
       error stop 1
    end if
 
-   write (*, '(a3,i9,i10,7f9.3,f9.1,2f9.3)') etype, n, problem%dofs%neq, problem%time%setup, &
-      problem%time%assembly, problem%time%factorisation, problem%time%solve, &
-      problem%time%residual, problem%time%output, total, peak, cpu1 - cpu0
+   write (*, '(a3,i9,i10,7f9.3,f9.1,2f9.3)') etype, n, problem%system%dofs%neq, problem%stats%time%setup, &
+      problem%stats%time%assembly, problem%stats%time%factorisation, problem%stats%time%solve, &
+      problem%stats%time%residual, problem%stats%time%output, total, peak, cpu1 - cpu0
 end program bench_massif

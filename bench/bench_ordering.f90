@@ -58,7 +58,7 @@ program bench_ordering
    code = run_deck(base//'.inp', base//'.h5', .true., model, problem)
    if (code /= 0) error stop 'bench run failed'
 
-   neq = int(problem%k%n, c_int)
+   neq = int(problem%linear%k%n, c_int)
    allocate (b(neq), x(neq), xref(neq), ta(repeats), tf(repeats))
    b = 1.0_wp
    first = .true.
@@ -68,18 +68,18 @@ program bench_ordering
          h = pecplas_cholmod_new(0_c_int)
          call pecplas_cholmod_set_ordering(h, METHODS(m))
          t0 = wall_time()
-         rc = pecplas_cholmod_analyse(h, neq, problem%k%colptr, problem%k%rowind)
+         rc = pecplas_cholmod_analyse(h, neq, problem%linear%k%colptr, problem%linear%k%rowind)
          ta(r) = wall_time() - t0
          if (rc /= 0) error stop 'analysis failed'
          t0 = wall_time()
-         rc = pecplas_cholmod_factorise(h, neq, problem%k%colptr, problem%k%rowind, &
-            problem%k%values)
+         rc = pecplas_cholmod_factorise(h, neq, problem%linear%k%colptr, problem%linear%k%rowind, &
+            problem%linear%k%values)
          tf(r) = wall_time() - t0
          if (rc /= 0) error stop 'factorisation failed'
          if (LABELS(m) == 'RULE2') then
             t0 = wall_time()
-            rc = pecplas_cholmod_factorise(h, neq, problem%k%colptr, problem%k%rowind, &
-               problem%k%values)
+            rc = pecplas_cholmod_factorise(h, neq, problem%linear%k%colptr, problem%linear%k%rowind, &
+               problem%linear%k%values)
             tf(r) = wall_time() - t0
             if (rc /= 0) error stop 'second factorisation failed'
          end if

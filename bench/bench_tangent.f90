@@ -35,19 +35,19 @@ program bench_tangent
    call get_command_argument(1, arg); deck = trim(arg)
    call get_command_argument(2, arg); out = trim(arg)
    code = run_deck(deck, out//'.run.h5', .true., model, problem)
-   if (code /= 0 .or. .not. allocated(problem%k%values)) error stop 'bench run failed'
+   if (code /= 0 .or. .not. allocated(problem%linear%k%values)) error stop 'bench run failed'
    ! the values in k must be those a solver factorised last (not a later assembly)
-   if (problem%k_owner == 0) error stop 'the matrix held at the end was not factorised'
+   if (problem%linear%k_owner == 0) error stop 'the matrix held at the end was not factorised'
 
    u = free_part(problem, problem%state%u)
-   allocate (ku(problem%k%n))
-   call problem%k%matvec(u, ku)
-   call create_matrix_file(out, problem%k, f, error)
-   if (.not. allocated(error)) call h5_attr(f, 'factorisations', problem%factorisations, error)
-   if (.not. allocated(error)) call h5_attr(f, 'factorisation_s', problem%time%factorisation, &
+   allocate (ku(problem%linear%k%n))
+   call problem%linear%k%matvec(u, ku)
+   call create_matrix_file(out, problem%linear%k, f, error)
+   if (.not. allocated(error)) call h5_attr(f, 'factorisations', problem%stats%factorisations, error)
+   if (.not. allocated(error)) call h5_attr(f, 'factorisation_s', problem%stats%time%factorisation, &
       error)
-   if (.not. allocated(error)) call h5_write(f, 'eq_node', problem%dofs%eq_node, error)
-   if (.not. allocated(error)) call h5_write(f, 'eq_dir', problem%dofs%eq_dir, error)
+   if (.not. allocated(error)) call h5_write(f, 'eq_node', problem%system%dofs%eq_node, error)
+   if (.not. allocated(error)) call h5_write(f, 'eq_dir', problem%system%dofs%eq_dir, error)
    if (.not. allocated(error)) call h5_write(f, 'coordinates', model%mesh%x, error)
    if (.not. allocated(error)) call h5_write(f, 'u_free', u, error)
    if (.not. allocated(error)) call h5_write(f, 'k_u', ku, error)

@@ -41,7 +41,7 @@ program bench_katona
    if (.not. allocated(error)) call setup_problem(model, problem, error)
    ! the Katona doublets are set up with the initial stresses (as the program does)
    if (.not. allocated(error)) call initialise_stresses(model, problem, error)
-   if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &
+   if (.not. allocated(error)) call set_default_penalties(model, problem%system%rules, &
       problem%state%joints, error)
    if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)
    if (allocated(error)) then
@@ -49,34 +49,34 @@ program bench_katona
       error stop 1
    end if
    if (.not. problem%katona%active) error stop 'the deck has no Katona joint set'
-   n = problem%dofs%neq
+   n = problem%system%dofs%neq
    m = 2*problem%katona%nd
    t0 = wall_time()
-   call problem%solver%factorise(problem%k, error)
+   call problem%linear%solver%factorise(problem%linear%k, error)
    t_fact = wall_time() - t0
    allocate (b(n), x(n), source=1.0_wp)
    t0 = wall_time()
-   call problem%solver%solve(b, x, error)
+   call problem%linear%solver%solve(b, x, error)
    t_solve = wall_time() - t0
    t0 = wall_time()
-   call build_flexibility(problem%katona, problem%dofs, problem%solver, g, error)
+   call build_flexibility(problem%katona, problem%system%dofs, problem%linear%solver, g, error)
    t_g = wall_time() - t0
    ! saddle matrix: R (full storage) and the doublet rows
-   call coo%init(n + m, problem%k%nnz() + 16*m)
+   call coo%init(n + m, problem%linear%k%nnz() + 16*m)
    do j = 1, n
-      do p = problem%k%colptr(j) + 1, problem%k%colptr(j + 1)
-         call coo%add(problem%k%rowind(p) + 1, j, problem%k%values(p))
+      do p = problem%linear%k%colptr(j) + 1, problem%linear%k%colptr(j + 1)
+         call coo%add(problem%linear%k%rowind(p) + 1, j, problem%linear%k%values(p))
       end do
    end do
    do k = 1, problem%katona%nd
       c = doublet_rows(problem%katona, k)
       do r = 1, 2
          ! a row on supported dofs only is no constraint (the solver gives it lambda = 0)
-         if (all(problem%dofs%eq(:, problem%katona%node(:, k)) == 0 .or. &
+         if (all(problem%system%dofs%eq(:, problem%katona%node(:, k)) == 0 .or. &
                  transpose(c(r, :, :)) == 0.0_wp)) call coo%add(n + 2*k - 2 + r, n + 2*k - 2 + r, 1.0_wp)
          do a = 1, 2
             do d = 1, 2
-               q = problem%dofs%eq(d, problem%katona%node(a, k))
+               q = problem%system%dofs%eq(d, problem%katona%node(a, k))
                if (q == 0 .or. c(r, a, d) == 0.0_wp) cycle
                call coo%add(n + 2*k - 2 + r, q, c(r, a, d))
                call coo%add(q, n + 2*k - 2 + r, c(r, a, d))

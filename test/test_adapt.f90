@@ -106,7 +106,7 @@ contains
          call estimate_error(model, problem, est, error)
          if (allocated(error)) return
          e2(k) = est%energy**2
-         nd(k) = problem%dofs%neq
+         nd(k) = problem%system%dofs%neq
          if (k == 4) exit
          allocate (all_marked(model%mesh%nelem()), source=.true.)
          call refine_marked(model, all_marked, fine, reason)

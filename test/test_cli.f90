@@ -71,13 +71,13 @@ contains
       call check_close(error, problem%state%sets(1)%stress(1, 4, 1), &
          nu/(1.0_wp - nu)*problem%state%sets(1)%stress(2, 4, 1), 1.0e-12_wp, 'K0 = nu/(1-nu)')
       if (allocated(error)) return
-      call check(error, problem%iterations == problem%increments .and. problem%increments == 6 &
-         .and. problem%factorisations == 1, 'linear: 6 increments, 1 iteration each, 1 factorisation')
+      call check(error, problem%stats%iterations == problem%stats%increments .and. problem%stats%increments == 6 &
+         .and. problem%stats%factorisations == 1, 'linear: 6 increments, 1 iteration each, 1 factorisation')
       if (allocated(error)) return
       ! the law updates are timed inside the residual computation (a nanosecond clock: each
       ! timed update adds at least one clock read)
-      call check(error, problem%time%laws > 0.0_wp .and. &
-         problem%time%laws <= problem%time%residual, 'law-update time is part of residual time')
+      call check(error, problem%stats%time%laws > 0.0_wp .and. &
+         problem%stats%time%laws <= problem%stats%time%residual, 'law-update time is part of residual time')
       if (allocated(error)) return
       call rd%open(out, error)
       if (allocated(error)) return
@@ -209,7 +209,7 @@ contains
          'the step: '//status//' / '//message)
       if (allocated(error)) return
       ! MAX_CUTS = 2 halvings, then the arc-length probe (which cuts its own lengths)
-      call check(error, problem%cuts >= 2, 'MAX_CUTS = 2 cuts were tried')
+      call check(error, problem%stats%cuts >= 2, 'MAX_CUTS = 2 cuts were tried')
    end subroutine test_diverge
 
 end module test_cli

@@ -90,7 +90,7 @@ contains
       associate (set => model%mesh%esets(1), st => problem%state%sets(1))
          do e = 1, size(set%conn, 2)
             do g = 1, st%ngauss
-               call massif_gauss_point(problem%rules(1), g, model%analysis%kind, &
+               call massif_gauss_point(problem%system%rules(1), g, model%analysis%kind, &
                   model%analysis%thickness, model%mesh%x(:, set%conn(:, e)), pt, error)
                if (allocated(error)) return
                d = lame_stress(pt%x, axi) - st%stress(:, g, e)

@@ -97,14 +97,14 @@ contains
       if (allocated(error)) return
       do pass = 1, 2
          tangent = pass == 2
-         call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
+         call assemble_stiffness(model, problem%system%dofs, problem%system%rules, problem%state, tangent, &
             bwhole, whole, error)
          if (allocated(error)) return
          ntrip = bwhole%entries
          allocate (summed(whole%nnz()), source=0.0_wp)
          nsum = 0
          do r = 0, NRANKS - 1
-            call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, &
+            call assemble_stiffness(model, problem%system%dofs, problem%system%rules, problem%state, &
                tangent, bpart, part, error, share_t(rank=r, nranks=NRANKS))
             if (allocated(error)) return
             nsum = nsum + bpart%entries
@@ -113,9 +113,9 @@ contains
             if (katona .and. r == 0) then
                ! rank 0 holds the doublet couplings that the augmentation adds to
                problem%katona%alpha = 1.0_wp
-               call add_augmentation(problem%katona, problem%dofs, part, error)
+               call add_augmentation(problem%katona, problem%system%dofs, part, error)
                if (.not. allocated(error)) call add_augmentation(problem%katona, &
-                  problem%dofs, whole, error)
+                  problem%system%dofs, whole, error)
                problem%katona%alpha = 0.0_wp
                if (allocated(error)) return
             end if

@@ -42,7 +42,7 @@ contains
       if (allocated(error)) return
       worst = 0.0_wp
       do el = 1, 4
-         call massif_gauss_coordinates(problem%rules(1), &
+         call massif_gauss_coordinates(problem%system%rules(1), &
             model%mesh%x(:, model%mesh%esets(1)%conn(:, el)), xg)
          do g = 1, 4
             sv = gamma*(0.0_wp - xg(2, g))
@@ -54,7 +54,7 @@ contains
       call check_close(error, worst, 0.0_wp, 0.0_wp, 'stresses = geostatic + surcharge', &
          atol=1.0e-9_wp*q)
       if (allocated(error)) return
-      call check(error, problem%iterations == 2, 'the rest step needs no iteration, the '// &
+      call check(error, problem%stats%iterations == 2, 'the rest step needs no iteration, the '// &
          'surcharge one per increment')
    end subroutine test_column
 

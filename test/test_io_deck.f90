@@ -7,7 +7,7 @@ module test_io_deck
    use pecplas_base_error, only: error_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_type, only: model_t
-   use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
+   use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, METHOD_MODIFIED, METHOD_NEWTON
    use pecplas_massif_materials_elastic, only: elastic_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
@@ -180,7 +180,7 @@ contains
       if (allocated(error)) return
       ! options not given in the deck keep the defaults of options.f90
       call check(error, model%solver%linear == 'AUTO' .and. &
-         model%solver%method == 'MODIFIED_NEWTON' .and. near(model%solver%tolerance, 1.0e-4_wp) &
+         model%solver%method == METHOD_MODIFIED .and. near(model%solver%tolerance, 1.0e-4_wp) &
          .and. model%solver%max_iterations == 50 .and. model%solver%max_cuts == 5, &
          'solver defaults')
       if (allocated(error)) return
@@ -271,7 +271,7 @@ contains
       type(model_t) :: model
       call load('good_axisym.inp', model, error)
       if (allocated(error)) return
-      call check(error, model%solver%linear == 'UMFPACK' .and. model%solver%method == 'NEWTON' &
+      call check(error, model%solver%linear == 'UMFPACK' .and. model%solver%method == METHOD_NEWTON &
          .and. near(model%solver%tolerance, 1.0e-6_wp) .and. model%solver%max_iterations == 20 &
          .and. model%solver%max_cuts == 3, '*SOLVER parameters, case-insensitive values')
       if (allocated(error)) return

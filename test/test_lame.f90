@@ -63,7 +63,7 @@ contains
       err_u = 0.0_wp
       do i = 1, model%mesh%nnode()
          ! the centre nodes of the quadratic grid belong to no Q8: not part of the solution
-         if (all(problem%dofs%eq(:, i) == 0)) cycle
+         if (all(problem%system%dofs%eq(:, i) == 0)) cycle
          r = norm2(model%mesh%x(:, i))
          if (axi) r = model%mesh%x(1, i)
          call lame_exact(r, ur, hoop)
@@ -76,13 +76,13 @@ contains
       end do
       num = 0.0_wp; den = 0.0_wp; err_hoop = 0.0_wp
       associate (set => model%mesh%esets(1), st => problem%state%sets(1))
-         nen = problem%elems(1)%e%nnode()
+         nen = problem%system%elems(1)%e%nnode()
          allocate (xe(2, nen), ue(2, nen))
          do e = 1, size(set%conn, 2)
             xe = model%mesh%x(:, set%conn(:, e))
             ue = problem%state%u(:, set%conn(:, e))
             do g = 1, st%ngauss
-               call massif_gauss_point(problem%rules(1), g, model%analysis%kind, &
+               call massif_gauss_point(problem%system%rules(1), g, model%analysis%kind, &
                   model%analysis%thickness, xe, pt, error)
                if (allocated(error)) return
                x = pt%x; dvol = pt%dvol

@@ -298,23 +298,23 @@ contains
          problem)
       call check(error, code == 3, 'pad_slip stops when the pad slides away')
       if (allocated(error)) return
-      call check(error, problem%kbuild%fast > 0, 'the Newton iterations of the run used the map')
+      call check(error, problem%linear%kbuild%fast > 0, 'the Newton iterations of the run used the map')
       if (allocated(error)) return
       associate (p => problem)
-         call assemble_stiffness(model, p%dofs, p%rules, p%state, .false., p%kbuild, p%k, error)
+         call assemble_stiffness(model, p%system%dofs, p%system%rules, p%state, .false., p%linear%kbuild, p%linear%k, error)
          if (allocated(error)) return
-         kel = p%k
-         call assemble_stiffness(model, p%dofs, p%rules, p%state, .true., p%kbuild, p%k, error)
+         kel = p%linear%k
+         call assemble_stiffness(model, p%system%dofs, p%system%rules, p%state, .true., p%linear%kbuild, p%linear%k, error)
          if (allocated(error)) return
-         call assemble_stiffness(model, p%dofs, p%rules, p%state, .true., fresh, kfull, error)
+         call assemble_stiffness(model, p%system%dofs, p%system%rules, p%state, .true., fresh, kfull, error)
          if (allocated(error)) return
       end associate
-      call check(error, .not. upper_storage(model) .and. .not. problem%k%upper, &
+      call check(error, .not. upper_storage(model) .and. .not. problem%linear%k%upper, &
          'a run with a non-symmetric tangent (UMFPACK) stores the whole matrix')
       if (allocated(error)) return
       call check(error, fresh%full == 1 .and. fresh%fast == 0, 'a fresh builder sorts')
       if (allocated(error)) return
-      call check(error, same_matrix(problem%k, kfull), 'mapped tangent equals the full conversion')
+      call check(error, same_matrix(problem%linear%k, kfull), 'mapped tangent equals the full conversion')
       if (allocated(error)) return
       call check(error, &
          maxval(abs(kel%values - kfull%values)) > 1.0e-6_wp*maxval(abs(kfull%values)), &
@@ -340,10 +340,10 @@ contains
          model, problem)
       call check(error, code == 0, 'the elastic block runs')
       if (allocated(error)) return
-      call check(error, upper_storage(model) .and. problem%k%upper, &
+      call check(error, upper_storage(model) .and. problem%linear%k%upper, &
          'a run whose matrices all go to CHOLMOD stores the upper triangle')
       if (allocated(error)) return
-      call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .false., &
+      call assemble_stiffness(model, problem%system%dofs, problem%system%rules, problem%state, .false., &
          fresh, kfull, error)
       if (allocated(error)) return
       call check(error, .not. kfull%upper, 'assembled without `upper`: the whole matrix')
@@ -353,29 +353,29 @@ contains
          do p = kfull%colptr(j) + 1, kfull%colptr(j + 1)
             if (kfull%rowind(p) + 1 > j) cycle
             kept = kept + 1
-            q = problem%k%locate(kfull%rowind(p) + 1, j)
+            q = problem%linear%k%locate(kfull%rowind(p) + 1, j)
             call check(error, q > 0, 'every upper entry of the whole matrix is stored')
             if (allocated(error)) return
-            call check(error, problem%k%values(q) == kfull%values(p), &
+            call check(error, problem%linear%k%values(q) == kfull%values(p), &
                'with the same value, to the last bit')
             if (allocated(error)) return
          end do
       end do
-      call check(error, kept == problem%k%nnz() .and. kept < kfull%nnz(), &
+      call check(error, kept == problem%linear%k%nnz() .and. kept < kfull%nnz(), &
          'and nothing else (fewer entries than the whole matrix)')
       if (allocated(error)) return
       ! the values of the whole matrix, as restart data written before this storage hold it
-      call check(error, problem%k%whole_nnz() == kfull%nnz(), &
+      call check(error, problem%linear%k%whole_nnz() == kfull%nnz(), &
          'whole_nnz counts the entries of the whole matrix')
       if (allocated(error)) return
-      call problem%k%upper_of_whole(kfull%values, taken)
-      call check(error, all(taken == problem%k%values), &
+      call problem%linear%k%upper_of_whole(kfull%values, taken)
+      call check(error, all(taken == problem%linear%k%values), &
          'upper_of_whole takes the upper triangle from the whole matrix, to the last bit')
       if (allocated(error)) return
       b = det_vector(kfull%n, 3)
       allocate (x1(kfull%n), x2(kfull%n))
-      call s1%analyse(problem%k, error)
-      if (.not. allocated(error)) call s1%factorise(problem%k, error)
+      call s1%analyse(problem%linear%k, error)
+      if (.not. allocated(error)) call s1%factorise(problem%linear%k, error)
       if (.not. allocated(error)) call s1%solve(b, x1, error)
       if (.not. allocated(error)) call s2%analyse(kfull, error)
       if (.not. allocated(error)) call s2%factorise(kfull, error)

@@ -118,7 +118,7 @@ contains
          1.0e-8_wp, 'top ring reaction = -sigma_1 pi R^2')
       if (allocated(error)) return
       call check(error, all(nint(problem%state%sets(1)%hist(6, :, :)) == RETURN_EDGE) .and. &
-         problem%factorisations == 1, 'edge returns, one factorisation (modified Newton)')
+         problem%stats%factorisations == 1, 'edge returns, one factorisation (modified Newton)')
    end subroutine test_triaxial
 
    !> Smooth rigid strip footing, Tresca c = 10, 196 T6 (footing_t6.inp): the footing

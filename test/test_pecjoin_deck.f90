@@ -43,7 +43,7 @@ contains
       if (allocated(error)) return
       associate (js => model%joint_sets(1))
          call check(error, model%laws(1)%law%name == 'contact' .and. js%law_index == 1 .and. &
-            js%etype == 'THIN_LAYER' .and. js%integration == 'GAUSS' .and. &
+            js%is_thin_layer() .and. js%integration == 'GAUSS' .and. &
             abs(js%thickness - 0.01_wp) < 1.0e-15_wp .and. size(js%conn, 1) == 6 .and. &
             size(js%conn, 2) == 2, 'THIN_LAYER on quadratic edges: 2 joints of 6 nodes, e = 0.01')
          if (allocated(error)) return

@@ -127,7 +127,7 @@ contains
          call check(error, code == 0, name//': the run completes')
       end if
       if (allocated(error)) return
-      call check(error, problem%iterations <= 3*problem%increments, name// &
+      call check(error, problem%stats%iterations <= 3*problem%stats%increments, name// &
          ': full Newton with the law tangent, at most 3 iterations per increment on average')
       if (allocated(error)) return
       ! every segment gets the increments of the longest one (0.001 mm there)

@@ -114,7 +114,7 @@ contains
          call check(error, .false., 'penalty_spring_plane.inp runs')
          return
       end if
-      call massif_rmax(model, problem%rules, rmax, error)
+      call massif_rmax(model, problem%system%rules, rmax, error)
       if (allocated(error)) return
       call check_close(error, rmax, 2.0_wp*(d11 + g)/3.0_wp, 1.0e-12_wp, 'R_max = 2 (D11 + G)/3')
       if (allocated(error)) return

@@ -7,6 +7,7 @@ module test_pecjoin_split
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_joints, only: JOINT_GOODMAN4
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t, setup_problem
    use pecplas_testing, only: unittest_t, new_unittest, check
@@ -56,7 +57,7 @@ contains
          if (allocated(error)) return
       end do
       associate (js => model%joint_sets(1))
-         call check(error, js%etype == 'GOODMAN4' .and. size(js%conn, 2) == 2 .and. &
+         call check(error, js%kind == JOINT_GOODMAN4 .and. size(js%conn, 2) == 2 .and. &
             all(js%ids == [5, 6]), 'two GOODMAN4 joints with ids 5, 6')
          if (allocated(error)) return
          call check(error, all(model%mesh%node_id(js%conn(:, 1)) == [4, 5, 14, 13]) .and. &
@@ -88,8 +89,8 @@ contains
       if (allocated(error)) return
       call setup_problem(model, problem, error)
       if (allocated(error)) return
-      call check(error, problem%dofs%eq(1, node(model, 13)) == 0 .and. &
-         problem%dofs%eq(1, node(model, 15)) == 0 .and. problem%dofs%eq(1, node(model, 14)) > 0, &
+      call check(error, problem%system%dofs%eq(1, node(model, 13)) == 0 .and. &
+         problem%system%dofs%eq(1, node(model, 15)) == 0 .and. problem%system%dofs%eq(1, node(model, 14)) > 0, &
          'x fixed at duplicates 13 (set left) and 15 (node 6), free at 14')
       if (allocated(error)) return
       associate (sup => model%supports)
@@ -117,7 +118,7 @@ contains
          end associate
          if (allocated(error)) return
       end do
-      call check(error, problem%dofs%eq(2, node(model, 13)) == 0, 'y of 13 imposed (no equation)')
+      call check(error, problem%system%dofs%eq(2, node(model, 13)) == 0, 'y of 13 imposed (no equation)')
    end subroutine test_rules
 
    !> Node sets gain the duplicates; edge sets on the upper body move to them, the
@@ -174,7 +175,7 @@ contains
             'tip joint from 5 to 6 with the duplicate of 5 on face 2')
          if (allocated(error)) return
          k = findloc(shaft%conn(1, :), node(model, 5), dim=1)
-         call check(error, shaft%etype == 'SPRING' .and. size(shaft%conn, 2) == 2 .and. k > 0, &
+         call check(error, shaft%is_spring() .and. size(shaft%conn, 2) == 2 .and. k > 0, &
             'two shaft springs, one at the corner')
          if (allocated(error)) return
          call check(error, shaft%conn(2, k) == d5, 'the corner spring reuses the duplicate of 5')

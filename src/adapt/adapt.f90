@@ -90,7 +90,7 @@ contains
          if (allocated(error)) return
          call estimate_error(model, problem, est, error)
          if (allocated(error)) return
-         lev%ndof = problem%dofs%neq
+         lev%ndof = problem%system%dofs%neq
          lev%nelem = model%mesh%nelem()
          lev%eta_rel = est%eta/max(est%energy, tiny(1.0_wp))
          select case (kind)
@@ -103,7 +103,7 @@ contains
                return
             end if
             dof = merge(opts%goal_dof, loaded_direction(model, problem), opts%goal_dof > 0)
-            if (all(problem%dofs%eq(dof, model%mesh%nsets(iset)%nodes) > 0)) then
+            if (all(problem%system%dofs%eq(dof, model%mesh%nsets(iset)%nodes) > 0)) then
                call fatal_error(error, "node set '"//opts%goal_set//"' has no support or "// &
                   'imposed displacement in '//merge('x', 'y', dof == 1)//': its reaction is zero')
                return
@@ -179,10 +179,10 @@ contains
       r = 0.0_wp
       do i = 1, size(nodes)
          n = nodes(i)
-         if (problem%dofs%eq(dof, n) > 0) cycle
-         fext = problem%initial_force(dof, n)
+         if (problem%system%dofs%eq(dof, n) > 0) cycle
+         fext = problem%system%initial_force(dof, n)
          do p = 1, size(problem%state%factors)
-            fext = fext + problem%state%factors(p)*problem%pattern_force(dof, n, p)
+            fext = fext + problem%state%factors(p)*problem%system%pattern_force(dof, n, p)
          end do
          r = r + problem%position%fint_conv(dof, n) - fext
       end do
@@ -199,8 +199,8 @@ contains
       do s = 1, size(model%steps)
          do j = 1, size(model%steps(s)%pattern)
             p = model%steps(s)%pattern(j)
-            w = w + sum(abs(problem%pattern_force(:, :, p)), dim=2) + &
-               sum(abs(problem%pattern_disp(:, :, p)), dim=2)
+            w = w + sum(abs(problem%system%pattern_force(:, :, p)), dim=2) + &
+               sum(abs(problem%system%pattern_disp(:, :, p)), dim=2)
          end do
       end do
       dof = merge(1, 2, w(1) > w(2))

@@ -261,7 +261,7 @@ contains
       integer, intent(out) :: dof
       logical, allocatable :: free(:, :)
       real(wp), allocatable :: u(:, :)
-      free = problem%dofs%eq(:, 1:nnode0) > 0
+      free = problem%system%dofs%eq(:, 1:nnode0) > 0
       if (.not. any(free .and. problem%state%u(:, 1:nnode0) /= 0.0_wp)) free = .true.
       u = merge(problem%state%u(:, 1:nnode0), 0.0_wp, free)
       if (inode == 0) inode = maxloc(norm2(u, dim=1), dim=1)

@@ -7,6 +7,7 @@ module pecplas_advise_run
    use pecplas_base_error, only: error_t, input_error
    use pecplas_base_version, only: VERSION
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: method_kind
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_prepare, only: prepare_run
@@ -82,11 +83,11 @@ contains
          model%steps(s)%increments = max(1, nint(row%factor*model%steps(s)%increments))
       end do
       row%increments = model%steps(size(model%steps))%increments
-      model%solver%method = trim(row%method)
+      model%solver%method = method_kind(row%method)
       w0 = wall_time()
       call prepare_run(model, problem, nflipped, jpoints, error)
       if (allocated(error)) return
-      row%ndof = problem%dofs%neq
+      row%ndof = problem%system%dofs%neq
       scratch = scratch_name(deck, tag)
       call results%create(scratch, model, VERSION, gauss_coordinates(model, problem), error, &
          jpoints)
@@ -96,7 +97,7 @@ contains
          return
       end if
       call run_increments(model, problem, results, .true., status, message, run_err)
-      row%wall = wall_time() - w0 - problem%time%output
+      row%wall = wall_time() - w0 - problem%stats%time%output
       if (allocated(run_err)) status = 'failed'
       call results%discard()
       row%status = status

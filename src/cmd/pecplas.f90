@@ -9,6 +9,7 @@ module pecplas_cmd_pecplas
    use pecplas_base_version, only: PROGRAM_NAME, VERSION
    use pecplas_base_files, only: make_directories, path_stem, path_dir, same_file, exit_now
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: method_name
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_prepare, only: prepare_run
@@ -236,7 +237,7 @@ contains
          code = command_error(COMMAND, error%exit_code(), error%text())
          return
       end if
-      problem%time%setup = wall_time() - w0 - problem%time%assembly - problem%time%factorisation
+      problem%stats%time%setup = wall_time() - w0 - problem%stats%time%assembly - problem%stats%time%factorisation
       outfile = outfile_in
       if (len(outfile) == 0) then
          if (allocated(model%output%file)) then
@@ -375,8 +376,8 @@ contains
       write (*, '(a)') PROGRAM_NAME//' '//VERSION//'  deck '//deck//'  ->  '//outfile
       write (*, '(a)') ' title: '//title//'   units: '//units
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
-         model%mesh%nelem(), '  equations ', problem%dofs%neq, '  steps ', size(model%steps), &
-         '  solver ', linear_solver_name(model), ' / ', model%solver%method
+         model%mesh%nelem(), '  equations ', problem%system%dofs%neq, '  steps ', size(model%steps), &
+         '  solver ', linear_solver_name(model), ' / ', method_name(model%solver%method)
       if (allocated(model%laws)) then
          do i = 1, size(model%laws)
             if (len(model%laws(i)%law%describe()) > 0) write (*, '(a)') ' law '// &
@@ -386,7 +387,7 @@ contains
       if (.not. allocated(model%joint_sets)) return
       do i = 1, size(model%joint_sets)
          associate (js => model%joint_sets(i))
-            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%etype// &
+            write (*, '(a,i0,a)') ' joints '//js%name//': ', size(js%conn, 2), ' '//js%type_name()// &
                ', law '//js%law
          end associate
       end do
@@ -401,22 +402,22 @@ contains
       if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
       flush (0)
       if (quiet) return
-      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%increments, &
-         ' increments, ', problem%iterations, ' iterations, ', problem%cuts, ' cuts, ', &
-         problem%factorisations, ' factorisations, ', problem%solves, ' solves, ', sec(cpu), ' s CPU'
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%stats%increments, &
+         ' increments, ', problem%stats%iterations, ' iterations, ', problem%stats%cuts, ' cuts, ', &
+         problem%stats%factorisations, ' factorisations, ', problem%stats%solves, ' solves, ', sec(cpu), ' s CPU'
       ! which method converged the increments (doc/theory.md §4, the chain)
       write (*, '(a,3(i0,a),i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
-         problem%by_method(1), ', quasi-Newton ', problem%by_method(2), ', Newton ', &
-         problem%by_method(3), '; under arc-length ', problem%arc_increments, &
-         '; line-search residuals ', problem%line_searches, '; singular tangents ', &
-         problem%singular_tangents, ' (elastic stiffness used)'
-      associate (t => problem%time)
+         problem%stats%by_method(1), ', quasi-Newton ', problem%stats%by_method(2), ', Newton ', &
+         problem%stats%by_method(3), '; under arc-length ', problem%stats%arc_increments, &
+         '; line-search residuals ', problem%stats%line_searches, '; singular tangents ', &
+         problem%stats%singular_tangents, ' (elastic stiffness used)'
+      associate (t => problem%stats%time)
          write (*, '(a,8(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
             sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
             '  residual ', sec(t%residual), ' (laws ', sec(t%laws)//')', '  output ', &
             sec(t%output), '  total ', sec(wall)
       end associate
-      associate (t => problem%time)
+      associate (t => problem%stats%time)
          if (t%rank_wall_max > 0.0_wp) write (*, '(a,i0,a)') ' ranks: ', parallel_size(), &
             ', each assembles the stiffness of its own elements: wall '// &
             sec(t%rank_wall_min)//' to '//sec(t%rank_wall_max)//' s, CPU '// &
@@ -424,7 +425,7 @@ contains
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
          trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
-      if (allocated(problem%solver)) write (*, '(a)') ' linear solver: '//problem%solver%report()
+      if (allocated(problem%linear%solver)) write (*, '(a)') ' linear solver: '//problem%linear%solver%report()
       if (problem%katona%active) then
          associate (k => problem%katona)
             write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &

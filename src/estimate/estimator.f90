@@ -42,7 +42,7 @@ contains
       eta2 = 0.0_wp; en2 = 0.0_wp
       do is = 1, size(model%mesh%esets)
          associate (set => model%mesh%esets(is), st => problem%state%sets(is), &
-                    rule => problem%rules(is))
+                    rule => problem%system%rules(is))
             nen = size(set%conn, 1); nel = size(set%conn, 2); ng = st%ngauss
             nvert = merge(3, 4, set%etype(1:1) == 'T')
             call set_compliance(model, is, cinv, error)

@@ -23,7 +23,7 @@ contains
       character(len=:), allocatable :: rule
       rule = 'GAUSS'
       if (allocated(set%integration)) rule = set%integration
-      call new_joint_element(set%etype, size(set%conn, 1), rule, set%thickness, elem, error)
+      call new_joint_element(set%type_name(), size(set%conn, 1), rule, set%thickness, elem, error)
       if (allocated(error)) error%message = 'joint set '//set%name//': '//error%message
    end subroutine joint_set_element
 

@@ -113,7 +113,7 @@ contains
                js(k) = s; je(k) = e
                a(k) = set%conn(1, e)
                b(k) = set%conn(2, e)
-               spring(k) = set%etype == 'SPRING'
+               spring(k) = set%is_spring()
                do m = 1, 2
                   q = merge(a(k), b(k), m == 1)
                   call compare(q)

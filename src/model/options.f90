@@ -8,7 +8,7 @@ module pecplas_model_options
 
    !> output_options_t%exact_restart values.
    integer, parameter, public :: EXACT_NO = 0, EXACT_ON_STOP = 1, EXACT_ALWAYS = 2
-   public :: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, NONLINEAR_METHODS
+   public :: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, NONLINEAR_METHODS, method_name, method_kind
 
    integer, parameter :: PLANE_STRAIN = 1, AXISYMMETRIC = 2
 
@@ -18,8 +18,13 @@ module pecplas_model_options
       'UMFPACK', 'MUMPS']
    !> MODIFIED_NEWTON: the run's stiffness factorised once (the thesis); QUASI_NEWTON: the
    !> same with BFGS updates; NEWTON: the consistent tangent every iteration.
+   !> NONLINEAR_METHODS(m) is the deck and results name of method m.
    character(len=*), parameter :: NONLINEAR_METHODS(3) = [character(len=16) :: &
       'MODIFIED_NEWTON', 'QUASI_NEWTON', 'NEWTON']
+   enum, bind(c)
+      enumerator :: METHOD_MODIFIED = 1, METHOD_QUASI, METHOD_NEWTON
+   end enum
+   public :: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON
 
    type :: analysis_t
       !> PLANE_STRAIN or AXISYMMETRIC.
@@ -30,7 +35,8 @@ module pecplas_model_options
 
    type :: solver_options_t
       character(len=:), allocatable :: linear
-      character(len=:), allocatable :: method
+      !> METHOD_MODIFIED, METHOD_QUASI or METHOD_NEWTON (*SOLVER METHOD=).
+      integer :: method = METHOD_MODIFIED
       !> Residual-force criterion ||FR|| <= tol ||F|| (thesis default 1e-4).
       real(wp) :: tolerance = 1.0e-4_wp
       integer :: max_iterations = 50
@@ -64,5 +70,24 @@ module pecplas_model_options
       !> killed outright), 'NO' never (*OUTPUT, EXACT_RESTART=).
       integer :: exact_restart = EXACT_ON_STOP
    end type output_options_t
+
+contains
+
+   !> The deck and results name of nonlinear method `method` (NONLINEAR_METHODS).
+   pure function method_name(method) result(name)
+      integer, intent(in) :: method
+      character(len=:), allocatable :: name
+      name = trim(NONLINEAR_METHODS(max(1, min(size(NONLINEAR_METHODS), method))))
+   end function method_name
+
+   !> The method named `name` (one of NONLINEAR_METHODS, upper case), 0 if none.
+   pure integer function method_kind(name) result(method)
+      character(len=*), intent(in) :: name
+      integer :: m
+      method = 0
+      do m = 1, size(NONLINEAR_METHODS)
+         if (trim(name) == trim(NONLINEAR_METHODS(m))) method = m
+      end do
+   end function method_kind
 
 end module pecplas_model_options

@@ -147,7 +147,7 @@ contains
                   return
                end if
                level = level + 1
-               problem%cuts = problem%cuts + 1
+               problem%stats%cuts = problem%stats%cuts + 1
                dl = 0.5_wp*dl
                if (.not. run%quiet) write (*, '(a,es9.2)') '   no convergence: arc length cut to ', dl
                cycle
@@ -163,10 +163,10 @@ contains
             time = req%time0 + req%time_span*real(res%increments, wp)/real(req%max_increments + 1, wp)
             if (landed) time = real(istep, wp)
             ! the load's maximum along the path, and whether it is flat (this increment will
-            ! be the run's number problem%increments + 1, at the factors accept_increment sets)
+            ! be the run's number problem%stats%increments + 1, at the factors accept_increment sets)
             if (tau > res%tau_peak) then
                res%tau_peak = tau
-               res%peak_increment = problem%increments + 1
+               res%peak_increment = problem%stats%increments + 1
                res%peak_factors = att%f0 + (att%ftarget - att%f0)*tau
                res%beyond = 0
             else
@@ -174,7 +174,7 @@ contains
             end if
             nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
             if (nflat == 1) then
-               res%flat_increment = problem%increments + 1
+               res%flat_increment = problem%stats%increments + 1
                res%tau_flat = tau
             end if
             res%flat = nflat >= FLAT_COUNT
@@ -246,9 +246,9 @@ contains
       call load_vectors(problem, f0, ftarget, 0.0_wp, fbase, fq, up)
       q = free_part(problem, fq)
       allocate (v(size(q)))
-      call problem%solver%solve(q, v, error)
+      call problem%linear%solver%solve(q, v, error)
       if (allocated(error)) return
-      problem%solves = problem%solves + 1
+      problem%stats%solves = problem%stats%solves + 1
       dl = dtau*norm2(v)
    end subroutine first_length
 

@@ -16,8 +16,8 @@ module pecplas_solve_attempts
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_output, only: write_increment, progress_line
    use pecplas_base_timers, only: wall_time
-   use pecplas_solve_iterate, only: attempt_t, outcome_t, iterate_increment, &
-      METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
+   use pecplas_solve_iterate, only: attempt_t, outcome_t, iterate_increment
+   use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_solve_residual, only: free_part, load_vectors
    use pecplas_base_strings, only: itoa
    use pecplas_base_progress_eta, only: progress_eta_t
@@ -53,11 +53,11 @@ contains
       logical, intent(in) :: katona
       integer, allocatable :: methods(:)
       select case (model%solver%method)
-      case ('NEWTON')
+      case (METHOD_NEWTON)
          ! BFGS on the last factorised tangent: where a singular tangent stalls Newton
          ! (a mechanism forming at a limit load)
          methods = [METHOD_NEWTON, METHOD_QUASI]
-      case ('QUASI_NEWTON')
+      case (METHOD_QUASI)
          methods = [METHOD_QUASI, METHOD_NEWTON]
       case default
          methods = [METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON]
@@ -108,8 +108,8 @@ contains
                error%message
             deallocate (error)
          end if
-         problem%iterations = problem%iterations + out%iterations
-         problem%line_searches = problem%line_searches + out%line_searches
+         problem%stats%iterations = problem%stats%iterations + out%iterations
+         problem%stats%line_searches = problem%stats%line_searches + out%line_searches
          if (out%converged) return
          call problem%state%rollback()
          if (len(reasons) > 0) reasons = reasons//'; '
@@ -180,9 +180,9 @@ contains
       logical, intent(in), optional :: final
       real(wp) :: t_now, t_out
       character(len=:), allocatable :: how
-      problem%increments = problem%increments + 1
-      problem%by_method(method) = problem%by_method(method) + 1
-      if (control == 1) problem%arc_increments = problem%arc_increments + 1
+      problem%stats%increments = problem%stats%increments + 1
+      problem%stats%by_method(method) = problem%stats%by_method(method) + 1
+      if (control == 1) problem%stats%arc_increments = problem%stats%arc_increments + 1
       call problem%state%commit()
       problem%state%u = u
       problem%state%factors = att%f0 + (att%ftarget - att%f0)*out%tau
@@ -193,16 +193,16 @@ contains
       call write_increment(model, problem, results, istep, inc, time, out%iterations, &
          out%residual, t_now - run%cpu_start, reaction, last, &
          [method, out%line_searches, control], error, final)
-      problem%time%output = problem%time%output + (wall_time() - t_out)
+      problem%stats%time%output = problem%stats%time%output + (wall_time() - t_out)
       if (allocated(error)) return
       if (run%quiet) return
       how = ''
-      if (method_name(method) /= model%solver%method) how = '  '//method_name(method)
+      if (method /= model%solver%method) how = '  '//method_name(method)
       if (out%line_searches > 0) how = how//'  ls '//itoa(out%line_searches)
       if (control == 1) how = how//'  arc'
       call progress_line(model, problem, istep, inc, out%tau, out%iterations, out%residual, how)
       if (run%eta%due(wall_time())) write (*, '(a)') ' progress: '// &
-         run%eta%line(problem%increments, wall_time())
+         run%eta%line(problem%stats%increments, wall_time())
    end subroutine accept_increment
 
 end module pecplas_solve_attempts

@@ -25,12 +25,12 @@ contains
       allocate (gxy(size(model%mesh%esets)))
       do s = 1, size(model%mesh%esets)
          associate (set => model%mesh%esets(s), st => problem%state%sets(s))
-            nn = problem%rules(s)%nnode
+            nn = problem%system%rules(s)%nnode
             allocate (xe(2, nn))
             allocate (gxy(s)%xy(2, st%ngauss, size(set%conn, 2)))
             do e = 1, size(set%conn, 2)
                xe = model%mesh%x(:, set%conn(:, e))
-               call massif_gauss_coordinates(problem%rules(s), xe, gxy(s)%xy(:, :, e))
+               call massif_gauss_coordinates(problem%system%rules(s), xe, gxy(s)%xy(:, :, e))
             end do
             deallocate (xe)
          end associate

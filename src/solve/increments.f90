@@ -57,7 +57,7 @@ contains
       status = 'completed'
       message = 'all steps completed'
       ! the initial stresses are in equilibrium with their own nodal forces
-      run%fint_conv = problem%initial_force
+      run%fint_conv = problem%system%initial_force
       istep0 = 1
       ! restart: resume the step loop where the run read back stopped (pecplas_solve_restart)
       if (problem%position%resume) then
@@ -142,7 +142,7 @@ contains
                if (.not. probing) then
                   if (level < model%solver%max_cuts) then
                      level = level + 1
-                     problem%cuts = problem%cuts + 1
+                     problem%stats%cuts = problem%stats%cuts + 1
                      dt = 0.5_wp*dt
                      if (.not. run%quiet) write (*, '(a,es9.2,a)') &
                         '   no convergence: increment cut to ', dt, ' of the step'
@@ -363,7 +363,7 @@ contains
          message = message//'the load-displacement path is flat (current stiffness '// &
             'parameter '//g6(res%sp)//') from step fraction '//g6(res%tau_flat)// &
             ' (increment '//itoa(res%flat_increment)//'), traced '// &
-            itoa(problem%increments - res%flat_increment)//' increments along it, its '// &
+            itoa(problem%stats%increments - res%flat_increment)//' increments along it, its '// &
             'largest load at step fraction '//g6(res%tau_peak)
       end if
       message = message//'; load factors at the peak:'
@@ -372,7 +372,7 @@ contains
             message = message//' '//model%patterns(p)%name//' = '// &
             g6(run%limit%pattern_factors(p))
       end do
-      if (problem%increments > 0) message = message//'; every converged increment is in '// &
+      if (problem%stats%increments > 0) message = message//'; every converged increment is in '// &
          'the results file (/limit says where the peak is)'
    end subroutine limit_reached
 
@@ -396,13 +396,13 @@ contains
       status = 'interrupted'
       if (interrupt_requested()) then
          message = 'stopped by '//interrupt_signal()//' after increment '// &
-            itoa(problem%increments)//'; continue with --restart'
-      else if (problem%position%stop_now(.false., problem%increments)) then
+            itoa(problem%stats%increments)//'; continue with --restart'
+      else if (problem%position%stop_now(.false., problem%stats%increments)) then
          message = 'stopped after the requested number of increments '// &
             '(--stop-after-increments); continue with --restart'
       else
          message = 'stopped by a termination signal to another MPI rank after increment '// &
-            itoa(problem%increments)//'; continue with --restart'
+            itoa(problem%stats%increments)//'; continue with --restart'
       end if
    end subroutine interrupted_status
 

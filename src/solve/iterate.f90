@@ -12,6 +12,7 @@ module pecplas_solve_iterate
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_base_timers, only: wall_time
@@ -25,9 +26,6 @@ module pecplas_solve_iterate
    private
 
    public :: attempt_t, outcome_t, iterate_increment
-   public :: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
-
-   integer, parameter :: METHOD_MODIFIED = 1, METHOD_QUASI = 2, METHOD_NEWTON = 3
 
    !> What to try: method, line search, control, and the step's load path
    !> factors(tau) = f0 + (ftarget - f0) tau.
@@ -69,19 +67,6 @@ module pecplas_solve_iterate
 
 contains
 
-   pure function method_name(method) result(name)
-      integer, intent(in) :: method
-      character(len=:), allocatable :: name
-      select case (method)
-      case (METHOD_MODIFIED)
-         name = 'MODIFIED_NEWTON'
-      case (METHOD_QUASI)
-         name = 'QUASI_NEWTON'
-      case default
-         name = 'NEWTON'
-      end select
-   end function method_name
-
    !> One increment from the converged state (problem%state, with internal forces
    !> `fint_conv`): u, fint (internal forces) and reaction at the end, and the outcome.
    subroutine iterate_increment(model, problem, att, fint_conv, u, fint, reaction, out, error)
@@ -101,14 +86,14 @@ contains
       integer :: neq, it
       logical :: moved, ok, elastic_now
 
-      neq = problem%dofs%neq
+      neq = problem%system%dofs%neq
       out%reason = ''
       call load_vectors(problem, att%f0, att%ftarget, merge(att%tau0, att%tau1, att%arc), &
          fbase, fq, up)
       tau = merge(att%tau0, att%tau1, att%arc)
       fext = fbase + tau*fq
       u = problem%state%u
-      where (problem%dofs%eq == 0) u = up
+      where (problem%system%dofs%eq == 0) u = up
       moved = any(u /= problem%state%u) .or. (tau /= att%tau0 .and. any(fq /= 0.0_wp))
       allocate (reaction(2, size(u, 2)), r(neq), du(neq), gfree(neq), dtot(neq), source=0.0_wp)
       allocate (hist(0:model%solver%max_iterations + 1), states(0:model%solver%max_iterations + 1))
@@ -246,9 +231,9 @@ contains
          type(error_t), allocatable, intent(out) :: err
          real(wp) :: t0
          t0 = wall_time()
-         call internal_forces(model, problem%rules, uu, problem%state, fint, err, &
-            problem%time%laws)
-         problem%time%residual = problem%time%residual + (wall_time() - t0)
+         call internal_forces(model, problem%system%rules, uu, problem%state, fint, err, &
+            problem%stats%time%laws)
+         problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
          if (allocated(err)) then
             if (err%kind /= ERR_SINGULAR) err%kind = ERR_RUN
          end if
@@ -271,15 +256,15 @@ contains
             if (err%kind /= ERR_SINGULAR) return
             deallocate (err)
             elastic_now = .true.
-            problem%singular_tangents = problem%singular_tangents + 1
-            if (.not. problem%separate_tangent) call factorise_stiffness(model, problem, &
+            problem%stats%singular_tangents = problem%stats%singular_tangents + 1
+            if (.not. problem%linear%separate_tangent) call factorise_stiffness(model, problem, &
                .false., err)
          end if
       end subroutine refactorise
 
       logical function tangent_ready()
          tangent_ready = .true.
-         if (problem%separate_tangent) tangent_ready = problem%tangent_factorised
+         if (problem%linear%separate_tangent) tangent_ready = problem%linear%tangent_factorised
       end function tangent_ready
 
       !> x = (iteration operator) b: K^-1 b, H b (BFGS), or K_t^-1 b.
@@ -295,19 +280,19 @@ contains
             bq = b
             allocate (alpha(max(bfgs%m, 1)))
             call bfgs%first_loop(bq, alpha)
-            call problem%solver%solve(bq, x, err)
+            call problem%linear%solver%solve(bq, x, err)
             if (.not. allocated(err)) call bfgs%second_loop(alpha, x)
          case (METHOD_NEWTON)
-            if (problem%separate_tangent .and. .not. elastic_now) then
-               call problem%tsolver%solve(b, x, err)
+            if (problem%linear%separate_tangent .and. .not. elastic_now) then
+               call problem%linear%tsolver%solve(b, x, err)
             else
-               call problem%solver%solve(b, x, err)
+               call problem%linear%solver%solve(b, x, err)
             end if
          case default
-            call problem%solver%solve(b, x, err)
+            call problem%linear%solver%solve(b, x, err)
          end select
-         problem%solves = problem%solves + 1
-         problem%time%solve = problem%time%solve + (wall_time() - t0)
+         problem%stats%solves = problem%stats%solves + 1
+         problem%stats%time%solve = problem%stats%time%solve + (wall_time() - t0)
       end subroutine apply_operator
 
    end subroutine iterate_increment

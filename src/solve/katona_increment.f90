@@ -79,24 +79,24 @@ contains
       real(wp) :: rnorm, ref, t0
       integer :: p, i, d, k, nstates, nit, n2
 
-      associate (kt => problem%katona, dofs => problem%dofs)
+      associate (kt => problem%katona, dofs => problem%system%dofs)
          n2 = 2*kt%nd
-         fext = problem%initial_force
+         fext = problem%system%initial_force
          allocate (up(2, size(fint_conv, 2)), source=0.0_wp)
          do p = 1, size(factors)
-            fext = fext + factors(p)*problem%pattern_force(:, :, p)
-            up = up + factors(p)*problem%pattern_disp(:, :, p)
+            fext = fext + factors(p)*problem%system%pattern_force(:, :, p)
+            up = up + factors(p)*problem%system%pattern_disp(:, :, p)
          end do
          u = problem%state%u
          where (dofs%eq == 0) u = up
          allocate (fint, mold=fint_conv)
          ! before the first converged increment the driver's fint_conv is the initial-stress
          ! load, which holds the initial contact forces too: the massif's own is needed here
-         if (any(u /= problem%state%u) .or. problem%increments == 0) then
+         if (any(u /= problem%state%u) .or. problem%stats%increments == 0) then
             t0 = wall_time()
-            call internal_forces(model, problem%rules, u, problem%state, fint, error, &
-               problem%time%laws)
-            problem%time%residual = problem%time%residual + (wall_time() - t0)
+            call internal_forces(model, problem%system%rules, u, problem%state, fint, error, &
+               problem%stats%time%laws)
+            problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
             if (allocated(error)) call as_run_error(error)
             if (allocated(error)) return
          else
@@ -125,8 +125,8 @@ contains
                end do
             end do
             rnorm = norm2(r)
-            ref = max(norm2(pack(fext - problem%initial_force, dofs%eq > 0)), norm2(reaction))
-            if (ref == 0.0_wp) ref = norm2(pack(problem%initial_force, dofs%eq > 0))
+            ref = max(norm2(pack(fext - problem%system%initial_force, dofs%eq > 0)), norm2(reaction))
+            if (ref == 0.0_wp) ref = norm2(pack(problem%system%initial_force, dofs%eq > 0))
             residual = 0.0_wp
             if (ref > 0.0_wp) residual = rnorm/ref
             ! at least one solve: the states must be checked against the new loads. A state of
@@ -150,20 +150,20 @@ contains
                   if (allocated(error)) return
                end if
             end if
-            if (kt%g_stamp /= problem%factorisations) then
+            if (kt%g_stamp /= problem%stats%factorisations) then
                t0 = wall_time()
-               call build_flexibility(kt, dofs, problem%solver, kt%g, error)
+               call build_flexibility(kt, dofs, problem%linear%solver, kt%g, error)
                if (allocated(error)) return
-               kt%g_stamp = problem%factorisations
+               kt%g_stamp = problem%stats%factorisations
                kt%g_builds = kt%g_builds + 1
                kt%time_flexibility = kt%time_flexibility + (wall_time() - t0)
-               problem%solves = problem%solves + n2
+               problem%stats%solves = problem%stats%solves + n2
             end if
             t0 = wall_time()
-            call problem%solver%solve(rhs, v, error)
+            call problem%linear%solver%solve(rhs, v, error)
             if (allocated(error)) return
             call relative_displacements(kt, u, zj)
-            problem%time%solve = problem%time%solve + (wall_time() - t0)
+            problem%stats%time%solve = problem%stats%time%solve + (wall_time() - t0)
             if (present(arc)) then
                call arc_states(arc, iters == 0, v, error)
                if (allocated(error)) return
@@ -178,19 +178,19 @@ contains
                if (allocated(error)) return
                t0 = wall_time()
                call add_dt_free(kt, dofs, -h, rhs)
-               call problem%solver%solve(rhs, v, error)
-               problem%time%solve = problem%time%solve + (wall_time() - t0)
+               call problem%linear%solver%solve(rhs, v, error)
+               problem%stats%time%solve = problem%stats%time%solve + (wall_time() - t0)
                if (allocated(error)) return
-               problem%solves = problem%solves + 2
+               problem%stats%solves = problem%stats%solves + 2
             end if
             iters = iters + 1
             do k = 1, dofs%neq
                u(dofs%eq_dir(k), dofs%eq_node(k)) = u(dofs%eq_dir(k), dofs%eq_node(k)) + v(k)
             end do
             t0 = wall_time()
-            call internal_forces(model, problem%rules, u, problem%state, fint, error, &
-               problem%time%laws)
-            problem%time%residual = problem%time%residual + (wall_time() - t0)
+            call internal_forces(model, problem%system%rules, u, problem%state, fint, error, &
+               problem%stats%time%laws)
+            problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
             if (allocated(error)) call as_run_error(error)
             if (allocated(error)) return
          end do
@@ -221,14 +221,14 @@ contains
          real(wp) :: dtau, dnew, x, xa, fa, fb, fx
          integer :: loop, side
          logical :: bracketed
-         associate (kt => problem%katona, dofs => problem%dofs)
-            if (.not. allocated(arc%vq) .or. arc%vq_stamp /= problem%factorisations) then
+         associate (kt => problem%katona, dofs => problem%system%dofs)
+            if (.not. allocated(arc%vq) .or. arc%vq_stamp /= problem%stats%factorisations) then
                if (allocated(arc%vq)) deallocate (arc%vq)
                allocate (arc%vq(dofs%neq))
-               call problem%solver%solve(arc%q, arc%vq, err)
+               call problem%linear%solver%solve(arc%q, arc%vq, err)
                if (allocated(err)) return
-               arc%vq_stamp = problem%factorisations
-               problem%solves = problem%solves + 1
+               arc%vq_stamp = problem%stats%factorisations
+               problem%stats%solves = problem%stats%solves + 1
             end if
             if (.not. allocated(arc%du)) allocate (arc%du(dofs%neq), source=0.0_wp)
             vr = v
@@ -295,16 +295,16 @@ contains
          real(wp), intent(in) :: xx
          real(wp), intent(out) :: phi, root
          type(error_t), allocatable, intent(out) :: e2
-         associate (kt => problem%katona, dofs => problem%dofs)
+         associate (kt => problem%katona, dofs => problem%system%dofs)
             call apply_d_free(kt, dofs, vr + xx*arc%vq, w)
             call solve_states(kt, w, reshape(zj, [n2]), h, flips, nit, e2)
             nstates = nstates + nit
             if (allocated(e2)) return
             tmp = 0.0_wp
             call add_dt_free(kt, dofs, -h, tmp)
-            call problem%solver%solve(tmp, v, e2)
+            call problem%linear%solver%solve(tmp, v, e2)
             if (allocated(e2)) return
-            problem%solves = problem%solves + 1
+            problem%stats%solves = problem%stats%solves + 1
             base = vr + v
             phi = sum((arc%du + base + xx*arc%vq)**2) - arc%dl**2
             call arc_root(arc%du, base, arc%vq, arc%dl, root, arc%ok, dirn)

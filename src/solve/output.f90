@@ -43,7 +43,7 @@ contains
 
       r%step = istep
       r%increment = inc
-      r%global_increment = problem%increments
+      r%global_increment = problem%stats%increments
       r%time = time
       r%pattern_factors = problem%state%factors
       r%iterations = iters
@@ -89,7 +89,7 @@ contains
       case (EXACT_ON_STOP)
          ! the ranks of an MPI run decide together (a signal may reach them apart)
          due = parallel_any(interrupt_requested()) .or. &
-            problem%position%stop_now(.false., problem%increments)
+            problem%position%stop_now(.false., problem%stats%increments)
       case default
          due = .false.
       end select
@@ -105,7 +105,7 @@ contains
       type(problem_t), intent(in) :: problem
       logical, intent(in) :: finished
       stop = parallel_any(interrupt_requested()) .or. &
-         problem%position%stop_now(finished, problem%increments)
+         problem%position%stop_now(finished, problem%stats%increments)
       if (stop .and. model%output%exact_restart == EXACT_ON_STOP) stop = problem%position%exact
    end function stop_pending
 
@@ -205,7 +205,7 @@ contains
       end if
       ! Katona contact: state iterations of the increment, numeric factorisations so far
       if (problem%katona%active) write (joints, '(a,a,i0,a,i0)') trim(joints), '  states ', &
-         problem%katona%last_state_iterations, ' factorisations ', problem%factorisations
+         problem%katona%last_state_iterations, ' factorisations ', problem%stats%factorisations
       write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
          '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)// &

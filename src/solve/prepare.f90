@@ -41,7 +41,7 @@ contains
       call check_geometry(model, error)
       if (.not. allocated(error)) call orient_edge_sets(model%mesh, error)
       if (.not. allocated(error)) call setup_problem(model, problem, error)
-      if (.not. allocated(error)) call set_default_penalties(model, problem%rules, &
+      if (.not. allocated(error)) call set_default_penalties(model, problem%system%rules, &
          problem%state%joints, error)
       if (.not. allocated(error)) call initialise_stresses(model, problem, error)
       if (.not. allocated(error)) call factorise_stiffness(model, problem, .false., error)

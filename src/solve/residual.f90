@@ -20,14 +20,14 @@ contains
       real(wp), intent(in) :: f0(:), ftarget(:), tau_up
       real(wp), allocatable, intent(out) :: fbase(:, :), fq(:, :), up(:, :)
       integer :: p
-      fbase = problem%initial_force
+      fbase = problem%system%initial_force
       allocate (fq, up, mold=fbase)
       fq = 0.0_wp
       up = 0.0_wp
       do p = 1, size(f0)
-         fbase = fbase + f0(p)*problem%pattern_force(:, :, p)
-         if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%pattern_force(:, :, p)
-         up = up + (f0(p) + (ftarget(p) - f0(p))*tau_up)*problem%pattern_disp(:, :, p)
+         fbase = fbase + f0(p)*problem%system%pattern_force(:, :, p)
+         if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%system%pattern_force(:, :, p)
+         up = up + (f0(p) + (ftarget(p) - f0(p))*tau_up)*problem%system%pattern_disp(:, :, p)
       end do
    end subroutine load_vectors
 
@@ -43,7 +43,7 @@ contains
       reaction = fint - fext
       do i = 1, size(fint, 2)
          do d = 1, 2
-            k = problem%dofs%eq(d, i)
+            k = problem%system%dofs%eq(d, i)
             if (k > 0) then
                r(k) = fext(d, i) - fint(d, i)
                reaction(d, i) = 0.0_wp
@@ -51,8 +51,8 @@ contains
          end do
       end do
       rnorm = norm2(r)
-      ref = max(norm2(pack(fext - problem%initial_force, problem%dofs%eq > 0)), norm2(reaction))
-      if (ref == 0.0_wp) ref = norm2(pack(problem%initial_force, problem%dofs%eq > 0))
+      ref = max(norm2(pack(fext - problem%system%initial_force, problem%system%dofs%eq > 0)), norm2(reaction))
+      if (ref == 0.0_wp) ref = norm2(pack(problem%system%initial_force, problem%system%dofs%eq > 0))
    end subroutine free_residual
 
    !> The free equations' entries of a nodal array.
@@ -61,9 +61,9 @@ contains
       real(wp), intent(in) :: a(:, :)
       real(wp), allocatable :: v(:)
       integer :: k
-      allocate (v(problem%dofs%neq))
-      do k = 1, problem%dofs%neq
-         v(k) = a(problem%dofs%eq_dir(k), problem%dofs%eq_node(k))
+      allocate (v(problem%system%dofs%neq))
+      do k = 1, problem%system%dofs%neq
+         v(k) = a(problem%system%dofs%eq_dir(k), problem%system%dofs%eq_node(k))
       end do
    end function free_part
 
@@ -73,9 +73,9 @@ contains
       real(wp), intent(in) :: v(:)
       real(wp), intent(inout) :: u(:, :)
       integer :: k
-      do k = 1, problem%dofs%neq
-         u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) = &
-            u(problem%dofs%eq_dir(k), problem%dofs%eq_node(k)) + v(k)
+      do k = 1, problem%system%dofs%neq
+         u(problem%system%dofs%eq_dir(k), problem%system%dofs%eq_node(k)) = &
+            u(problem%system%dofs%eq_dir(k), problem%system%dofs%eq_node(k)) + v(k)
       end do
    end subroutine add_free
 

@@ -11,7 +11,8 @@ module pecplas_solve_restart
    use pecplas_base_error, only: error_t, input_error, fatal_error
    use pecplas_base_strings, only: itoa
    use pecplas_model_type, only: model_t
-   use pecplas_problem_type, only: problem_t, K_SOLVER, K_TSOLVER
+   use pecplas_problem_type, only: problem_t
+   use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
    use pecplas_solve_stiffness, only: factorise_values, partitioned
    use pecplas_linalg_sparse, only: csc_t
@@ -52,8 +53,8 @@ contains
       logical :: tangents
       associate (p => problem%position, st => problem%state, kt => problem%katona)
          call data%add('position', [LAYOUT, real(p%istep, wp), real(p%inc_in_step, wp), &
-            real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%increments, wp), &
-            real(problem%iterations, wp), real(problem%cuts, wp), kt%force_scale, &
+            real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%stats%increments, wp), &
+            real(problem%stats%iterations, wp), real(problem%stats%cuts, wp), kt%force_scale, &
             kt%max_penetration])
          call data%add('f0', p%f0)
          call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
@@ -108,11 +109,11 @@ contains
          end if
          ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
          if (p%exact .and. .not. partitioned(model)) then
-            if (problem%solver_moved .and. problem%k_owner == K_SOLVER) then
-               call data%add('operator', problem%k%values)
+            if (problem%linear%solver_moved .and. problem%linear%k_owner == K_SOLVER) then
+               call data%add('operator', problem%linear%k%values)
                ops(1) = 1.0_wp
-            else if (problem%tangent_factorised .and. problem%k_owner == K_TSOLVER) then
-               call data%add('tangent_operator', problem%k%values)
+            else if (problem%linear%tangent_factorised .and. problem%linear%k_owner == K_TSOLVER) then
+               call data%add('tangent_operator', problem%linear%k%values)
                ops(2) = 1.0_wp
             end if
          end if
@@ -187,8 +188,8 @@ contains
          end if
          p%istep = nint(v(2)); p%inc_in_step = nint(v(3)); p%level = nint(v(4))
          p%tau = v(5); p%dt = v(6); p%k_first = v(7); p%k_conv = v(8)
-         problem%increments = nint(v(9)); problem%iterations = nint(v(10))
-         problem%cuts = nint(v(11)); kt%force_scale = v(12); kt%max_penetration = v(13)
+         problem%stats%increments = nint(v(9)); problem%stats%iterations = nint(v(10))
+         problem%stats%cuts = nint(v(11)); kt%force_scale = v(12); kt%max_penetration = v(13)
          if (p%istep < 1 .or. p%istep > size(model%steps)) then
             call fatal_error(error, 'restart step '//itoa(p%istep)//' is not a step of the deck')
             return
@@ -275,7 +276,7 @@ contains
       real(wp), allocatable :: v(:), peak(:), why(:)
       associate (p => problem%position)
          if (data%has('du_prev')) then
-            call data%get('du_prev', problem%dofs%neq, p%du_prev, error)
+            call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
             if (allocated(error)) return
          end if
          p%path = PATH_NONE
@@ -334,13 +335,13 @@ contains
       if (allocated(error)) return
       if (partitioned(model)) return
       if (ops(1) /= 0.0_wp) then
-         call get_operator(data, 'operator', problem%k, v, error)
+         call get_operator(data, 'operator', problem%linear%k, v, error)
          if (allocated(error)) return
          ! the matrix is augmented when the run's was (a Katona body held by its contacts)
          if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
          call factorise_values(model, problem, v, .false., error)
       else if (ops(2) /= 0.0_wp) then
-         call get_operator(data, 'tangent_operator', problem%k, v, error)
+         call get_operator(data, 'tangent_operator', problem%linear%k, v, error)
          if (.not. allocated(error)) call factorise_values(model, problem, v, .true., error)
       end if
    end subroutine restore_operators

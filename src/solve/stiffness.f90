@@ -5,8 +5,10 @@ module pecplas_solve_stiffness
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_SINGULAR, fatal_error
    use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: METHOD_NEWTON
    use pecplas_model_provenance, only: place_t
-   use pecplas_problem_type, only: problem_t, K_SOLVER, K_TSOLVER
+   use pecplas_problem_type, only: problem_t
+   use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_fe_assembly, only: assemble_stiffness
    use pecplas_linalg_solver, only: new_linear_solver
    use pecplas_base_timers, only: wall_time
@@ -31,7 +33,7 @@ contains
       logical :: symmetric, tangent
       name = model%solver%linear
       if (name /= 'AUTO') return
-      tangent = model%solver%method == 'NEWTON'
+      tangent = model%solver%method == METHOD_NEWTON
       if (present(tangent_of_fallback)) tangent = tangent .or. tangent_of_fallback
       ! The elastic stiffness of modified Newton is symmetric positive definite: CHOLMOD.
       ! Full Newton with a non-symmetric consistent tangent (non-associated plasticity,
@@ -62,7 +64,7 @@ contains
 
    !> `tangent`: consistent tangents (full Newton) instead of elastic stiffness;
    !> `tangent_solver`: into the fallback's own solver when the run has one
-   !> (problem%separate_tangent), keeping the run's factorisation.
+   !> (problem%linear%separate_tangent), keeping the run's factorisation.
    subroutine factorise_stiffness(model, problem, tangent, error, tangent_solver)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
@@ -75,7 +77,7 @@ contains
       real(wp) :: c0
 
       separate = .false.
-      if (present(tangent_solver)) separate = tangent_solver .and. problem%separate_tangent
+      if (present(tangent_solver)) separate = tangent_solver .and. problem%linear%separate_tangent
       if (separate) then
          call factorise_tangent(model, problem, error)
          return
@@ -84,51 +86,51 @@ contains
       parts = partitioned(model)
       mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
-      problem%k_owner = 0
+      problem%linear%k_owner = 0
       if (mumps) call cpu_time(c0)
-      call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, tangent, &
-         problem%kbuild, problem%k, error, share_of_run(parts), upper_storage(model))
+      call assemble_stiffness(model, problem%system%dofs, problem%system%rules, problem%state, tangent, &
+         problem%linear%kbuild, problem%linear%k, error, share_of_run(parts), upper_storage(model))
       if (mumps) call rank_times(problem, wall_time() - t0, c0)
       if (parts) call agree_on_error(error)
       if (allocated(error)) return
       if (problem%katona%alpha > 0.0_wp .and. (.not. parts .or. parallel_rank() == 0)) then
-         call add_augmentation(problem%katona, problem%dofs, problem%k, error)
+         call add_augmentation(problem%katona, problem%system%dofs, problem%linear%k, error)
          if (allocated(error)) return
       end if
-      problem%time%assembly = problem%time%assembly + (wall_time() - t0)
+      problem%stats%time%assembly = problem%stats%time%assembly + (wall_time() - t0)
       t0 = wall_time()
-      if (.not. allocated(problem%solver)) then
-         call new_linear_solver(linear_solver_name(model), problem%solver, error)
+      if (.not. allocated(problem%linear%solver)) then
+         call new_linear_solver(linear_solver_name(model), problem%linear%solver, error)
          if (allocated(error)) return
-         call mumps_summed_input(problem%solver, parts)
-         call problem%solver%analyse(problem%k, error)
+         call mumps_summed_input(problem%linear%solver, parts)
+         call problem%linear%solver%analyse(problem%linear%k, error)
          if (allocated(error)) return
       end if
-      call problem%solver%factorise(problem%k, error)
+      call problem%linear%solver%factorise(problem%linear%k, error)
       if (allocated(error)) call katona_augment(model, problem, error)
       if (allocated(error)) then
          if (error%kind == ERR_SINGULAR) then
             error%message = 'the stiffness matrix is singular: '// &
-               problem%dofs%describe(model, problem%solver%bad_equation)// &
+               problem%system%dofs%describe(model, problem%linear%solver%bad_equation)// &
                ' can move without resistance (a mechanism: missing supports in *BOUNDARY?). '// &
                'Solver said: '//error%message
             ! name the line that defines that node
-            if (problem%solver%bad_equation >= 1 .and. &
-                problem%solver%bad_equation <= problem%dofs%neq) then
-               p = model%provenance%node(problem%dofs%eq_node(problem%solver%bad_equation))
+            if (problem%linear%solver%bad_equation >= 1 .and. &
+                problem%linear%solver%bad_equation <= problem%system%dofs%neq) then
+               p = model%provenance%node(problem%system%dofs%eq_node(problem%linear%solver%bad_equation))
                call model%provenance%locate(error, p, trim(p%keyword))
             end if
          end if
          return
       end if
       ! the set-up's is the first factorisation
-      if (problem%factorisations > 0) problem%solver_moved = .true.
-      problem%k_owner = K_SOLVER
-      problem%factorisations = problem%factorisations + 1
-      problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
+      if (problem%stats%factorisations > 0) problem%linear%solver_moved = .true.
+      problem%linear%k_owner = K_SOLVER
+      problem%stats%factorisations = problem%stats%factorisations + 1
+      problem%stats%time%factorisation = problem%stats%time%factorisation + (wall_time() - t0)
    end subroutine factorise_stiffness
 
-   !> The fallback tangent into problem%tsolver (created and analysed on first use).
+   !> The fallback tangent into problem%linear%tsolver (created and analysed on first use).
    subroutine factorise_tangent(model, problem, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
@@ -138,29 +140,29 @@ contains
       parts = partitioned(model)
       mumps = model%solver%linear == 'MUMPS'
       t0 = wall_time()
-      problem%tangent_factorised = .false.
-      problem%k_owner = 0
+      problem%linear%tangent_factorised = .false.
+      problem%linear%k_owner = 0
       if (mumps) call cpu_time(c0)
-      call assemble_stiffness(model, problem%dofs, problem%rules, problem%state, .true., &
-         problem%kbuild, problem%k, error, share_of_run(parts), upper_storage(model))
+      call assemble_stiffness(model, problem%system%dofs, problem%system%rules, problem%state, .true., &
+         problem%linear%kbuild, problem%linear%k, error, share_of_run(parts), upper_storage(model))
       if (mumps) call rank_times(problem, wall_time() - t0, c0)
       if (parts) call agree_on_error(error)
       if (allocated(error)) return
-      problem%time%assembly = problem%time%assembly + (wall_time() - t0)
+      problem%stats%time%assembly = problem%stats%time%assembly + (wall_time() - t0)
       t0 = wall_time()
-      if (.not. allocated(problem%tsolver)) then
-         call new_linear_solver(linear_solver_name(model, .true.), problem%tsolver, error)
+      if (.not. allocated(problem%linear%tsolver)) then
+         call new_linear_solver(linear_solver_name(model, .true.), problem%linear%tsolver, error)
          if (allocated(error)) return
-         call mumps_summed_input(problem%tsolver, parts)
-         call problem%tsolver%analyse(problem%k, error)
+         call mumps_summed_input(problem%linear%tsolver, parts)
+         call problem%linear%tsolver%analyse(problem%linear%k, error)
          if (allocated(error)) return
       end if
-      call problem%tsolver%factorise(problem%k, error)
-      problem%time%factorisation = problem%time%factorisation + (wall_time() - t0)
+      call problem%linear%tsolver%factorise(problem%linear%k, error)
+      problem%stats%time%factorisation = problem%stats%time%factorisation + (wall_time() - t0)
       if (allocated(error)) return
-      problem%factorisations = problem%factorisations + 1
-      problem%tangent_factorised = .true.
-      problem%k_owner = K_TSOLVER
+      problem%stats%factorisations = problem%stats%factorisations + 1
+      problem%linear%tangent_factorised = .true.
+      problem%linear%k_owner = K_TSOLVER
    end subroutine factorise_tangent
 
    !> A restarted run: factorises the matrix of `values` (a matrix of this run's stiffness
@@ -173,32 +175,32 @@ contains
       real(wp), intent(in) :: values(:)
       logical, intent(in) :: tangent_solver
       type(error_t), allocatable, intent(out) :: error
-      if (size(values) /= problem%k%nnz()) then
+      if (size(values) /= problem%linear%k%nnz()) then
          call fatal_error(error, 'a factorised matrix of another pattern')
          return
       end if
-      problem%k%values = values
-      problem%k_owner = 0
+      problem%linear%k%values = values
+      problem%linear%k_owner = 0
       if (tangent_solver) then
-         problem%tangent_factorised = .false.
-         if (.not. allocated(problem%tsolver)) then
-            call new_linear_solver(linear_solver_name(model, .true.), problem%tsolver, error)
+         problem%linear%tangent_factorised = .false.
+         if (.not. allocated(problem%linear%tsolver)) then
+            call new_linear_solver(linear_solver_name(model, .true.), problem%linear%tsolver, error)
             if (allocated(error)) return
-            call mumps_summed_input(problem%tsolver, partitioned(model))
-            call problem%tsolver%analyse(problem%k, error)
+            call mumps_summed_input(problem%linear%tsolver, partitioned(model))
+            call problem%linear%tsolver%analyse(problem%linear%k, error)
             if (allocated(error)) return
          end if
-         call problem%tsolver%factorise(problem%k, error)
+         call problem%linear%tsolver%factorise(problem%linear%k, error)
          if (allocated(error)) return
-         problem%tangent_factorised = .true.
-         problem%k_owner = K_TSOLVER
+         problem%linear%tangent_factorised = .true.
+         problem%linear%k_owner = K_TSOLVER
       else
-         call problem%solver%factorise(problem%k, error)
+         call problem%linear%solver%factorise(problem%linear%k, error)
          if (allocated(error)) return
-         problem%solver_moved = .true.
-         problem%k_owner = K_SOLVER
+         problem%linear%solver_moved = .true.
+         problem%linear%k_owner = K_SOLVER
       end if
-      problem%factorisations = problem%factorisations + 1
+      problem%stats%factorisations = problem%stats%factorisations + 1
    end subroutine factorise_values
 
    !> A singular R with Katona contact (a body held only by its contacts): factorises
@@ -215,16 +217,16 @@ contains
       if (problem%katona%alpha > 0.0_wp) return
       deallocate (error)
       parts = partitioned(model)
-      allocate (diag(problem%k%n))
-      call problem%k%diagonal(diag)
+      allocate (diag(problem%linear%k%n))
+      call problem%linear%k%diagonal(diag)
       if (parts) call parallel_sum(diag) ! each rank holds a part of R
       problem%katona%alpha = maxval(diag)
       if (.not. parts .or. parallel_rank() == 0) then
-         call add_augmentation(problem%katona, problem%dofs, problem%k, error)
+         call add_augmentation(problem%katona, problem%system%dofs, problem%linear%k, error)
       end if
       if (parts) call agree_on_error(error)
       if (allocated(error)) return
-      call problem%solver%factorise(problem%k, error)
+      call problem%linear%solver%factorise(problem%linear%k, error)
    end subroutine katona_augment
 
    !> True when each rank assembles only its share of the elements (pecplas_fe_share): an
@@ -243,7 +245,7 @@ contains
       real(wp), intent(in) :: wall, cpu0
       real(wp) :: t(4), c1
       call cpu_time(c1)
-      associate (tm => problem%time)
+      associate (tm => problem%stats%time)
          tm%rank_wall = tm%rank_wall + wall
          tm%rank_cpu = tm%rank_cpu + (c1 - cpu0)
          t = [tm%rank_wall, -tm%rank_wall, tm%rank_cpu, -tm%rank_cpu]

@@ -15,7 +15,7 @@ module pecplas_io_deck_reader_options
    use pecplas_model_adapt_request, only: parse_target, parse_goal_spec, goal_spec_t, &
       GOAL_NODE, GOAL_REACTION
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
-      NONLINEAR_METHODS, EXACT_NO, EXACT_ON_STOP, EXACT_ALWAYS
+      NONLINEAR_METHODS, EXACT_NO, EXACT_ON_STOP, EXACT_ALWAYS, method_name, method_kind
    implicit none (type, external)
    private
 
@@ -101,6 +101,7 @@ contains
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
       logical :: found
+      character(len=:), allocatable :: method
       call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'LINEAR', &
          'METHOD', 'TOLERANCE', 'MAX_ITERATIONS', 'MAX_CUTS', 'FALLBACK', 'LINE_SEARCH', &
          'LIMIT_PROBE', 'THREADS'], error)
@@ -113,8 +114,10 @@ contains
             'or choose LINEAR=AUTO, CHOLMOD or UMFPACK', error)
          return
       end if
-      call param_choice(state, block, 'METHOD', NONLINEAR_METHODS, model%solver%method, error)
+      method = method_name(model%solver%method)
+      call param_choice(state, block, 'METHOD', NONLINEAR_METHODS, method, error)
       if (allocated(error)) return
+      model%solver%method = method_kind(method)
       call param_real(state, block, 'TOLERANCE', model%solver%tolerance, found, error)
       if (allocated(error)) return
       if (found .and. .not. (model%solver%tolerance > 0.0_wp .and. &

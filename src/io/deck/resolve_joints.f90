@@ -15,7 +15,7 @@ module pecplas_io_deck_resolve_joints
    use pecplas_io_deck_raw_joints, only: raw_joint_set_t
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_model_type, only: model_t
-   use pecplas_model_joints, only: joint_set_t
+   use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
    use pecplas_joints_elements_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
@@ -95,7 +95,7 @@ contains
       character(len=:), allocatable :: msg
       integer :: i, bad
       set%name = raw%name
-      set%etype = raw%etype
+      set%kind = joint_kind(raw%etype)
       set%law = raw%law
       set%integration = raw%integration
       set%thickness = raw%thickness
@@ -108,7 +108,7 @@ contains
          return
       end if
       ! a thin layer hands its law strains (jump / THICKNESS): the law must accept them
-      if (set%etype == 'THIN_LAYER') then
+      if (set%is_thin_layer()) then
          msg = model%laws(set%law_index)%law%strain_refusal()
          if (len(msg) > 0) then
             call line_error(state, raw%at, "joint set '"//set%name//"': a THIN_LAYER joint "// &
@@ -125,7 +125,7 @@ contains
             allow_gap=is_katona(model%laws(set%law_index)%law))
       end if
       if (allocated(error)) return
-      if (set%etype /= 'SPRING') return
+      if (.not. set%is_spring()) return
       allocate (set%tributary(size(set%conn, 2)), set%tangent(2, size(set%conn, 2)))
       call spring_tributaries(model%mesh%x, model%analysis%kind, model%analysis%thickness, &
          set%conn(1, :), edges, set%tributary, set%tangent, bad, error)
@@ -205,9 +205,9 @@ contains
          return
       end if
       nen = size(model%mesh%edge_sets(ke)%nodes, 1)
-      if ((set%etype == 'GOODMAN4' .and. nen /= 2) .or. (set%etype == 'GOODMAN6' .and. &
+      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
           nen /= 3)) then
-         call line_error(state, raw%at, set%etype//" joints need "// &
+         call line_error(state, raw%at, set%type_name()//" joints need "// &
             trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
             //raw%edges//"' has "//itoa(nen)//'-node edges: use '// &
             trim(merge('GOODMAN6', 'GOODMAN4', nen == 3))//' (or THIN_LAYER, SPRING)', error)
@@ -224,7 +224,7 @@ contains
          dupof(res%created(1, i)) = res%created(2, i)
       end do
       call extend_to_duplicates(model, ks, dupof)
-      if (set%etype == 'SPRING') then
+      if (set%is_spring()) then
          set%conn = res%doublets
       else
          set%conn = res%conn

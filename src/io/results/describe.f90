@@ -73,7 +73,7 @@ contains
          associate (set => model%joint_sets(s), j => units%joints(s))
             ! a thin layer works with strains: displacements / thickness (doc/results.md)
             j%eps = units%length
-            if (set%etype == 'THIN_LAYER') j%eps = '1'
+            if (set%is_thin_layer()) j%eps = '1'
             call model%laws(set%law_index)%law%state_names(j%state)
          end associate
       end do

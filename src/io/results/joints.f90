@@ -93,7 +93,7 @@ contains
             allocate (conn0, source=set%conn - 1)
             ids = set%ids
             call h5_attr(g, 'name', set%name, error)
-            if (.not. allocated(error)) call h5_attr(g, 'etype', set%etype, error)
+            if (.not. allocated(error)) call h5_attr(g, 'etype', set%type_name(), error)
             if (.not. allocated(error)) call h5_attr(g, 'law', set%law, error)
             if (.not. allocated(error)) call h5_attr(g, 'integration', set%integration, error)
             if (.not. allocated(error)) call h5_attr(g, 'thickness', set%thickness, error)

@@ -102,7 +102,7 @@ contains
       integer :: e, ip, j, k, k0, npair, pairs(2, 3)
       associate (set => model%joint_sets(s), st => jstate%sets(s))
          k0 = size(kt%area)
-         if (set%etype == 'SPRING') then
+         if (set%is_spring()) then
             kt%node = reshape([kt%node, set%conn(1:2, :)], [2, k0 + size(set%conn, 2)])
             kt%t = reshape([kt%t, set%tangent], [2, k0 + size(set%conn, 2)])
             kt%area = [kt%area, set%tributary]

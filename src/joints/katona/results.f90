@@ -48,7 +48,7 @@ contains
             do k = 1, kt%nd
                if (kt%set_of(k) == s) of_node(kt%node(1, k)) = k
             end do
-            if (set%etype == 'SPRING') then
+            if (set%is_spring()) then
                do e = 1, size(set%conn, 2)
                   k = of_node(set%conn(1, e))
                   st%sigma_trial(:, 1, e) = sig(:, k)

@@ -288,7 +288,7 @@ contains
       character(len=:), allocatable, intent(out) :: reason
       integer :: s
       do s = 1, size(fine%joint_sets)
-         if (fine%joint_sets(s)%etype /= 'SPRING') cycle
+         if (.not. fine%joint_sets(s)%is_spring()) cycle
          if (size(fine%joint_sets(s)%conn, 2) == size(model%joint_sets(s)%conn, 2)) cycle
          call spring_measures(fine, s, reason)
          if (allocated(reason)) return

@@ -1,0 +1,21 @@
+!> What a run counts and times for its summary and its results file: increments, iterations,
+!> cuts, factorisations, solves, line searches, singular tangents, increments converged by
+!> each method, and the phase timers.
+module pecplas_problem_stats
+   use pecplas_base_timers, only: timers_t
+   implicit none (type, external)
+   private
+
+   public :: run_stats_t
+
+   type :: run_stats_t
+      integer :: increments = 0, iterations = 0, cuts = 0, factorisations = 0, solves = 0
+      !> Line-search residual evaluations; tangents found singular (elastic used instead);
+      !> increments converged by each method (modified, quasi-, full Newton) and under
+      !> arc-length control.
+      integer :: line_searches = 0, singular_tangents = 0, arc_increments = 0
+      integer :: by_method(3) = 0
+      type(timers_t) :: time
+   end type run_stats_t
+
+end module pecplas_problem_stats
