@@ -23,7 +23,7 @@ from pecplas_py import doc_blocks
 from pecplas_py import script_cmd
 from pecplas_py.decks.make_hertz_deck import E1, E2, F, NU, R
 from pecplas_py.doc_blocks import report_main
-from pecplas_py.docs.validation_report import below, minus
+from pecplas_py.docs.validation_report import HERTZ_RESULTANT, minus, within
 from pecplas_py.exe import exe_cmd
 
 SCRIPT = "docs/hertz_report.py"
@@ -108,8 +108,9 @@ def block(v):
             "its run):\n"
             f"a = {v['a_fe']:.3f} mm ({signed(100 * (v['a_fe'] / v['a'] - 1))} %), "
             f"p0 = {v['p_fe']:.1f} MPa ({signed(100 * (v['p_fe'] / v['p0'] - 1))} %), "
-            f"profile within {100 * v['p_err']:.2f} % of p0, resultant F/2 within "
-            f"{below(v['resultant'])};\n{v['states']} state iterations in {v['increments']} "
+            f"profile within {100 * v['p_err']:.2f} % of p0, resultant F/2 "
+            f"{within(v['resultant'], HERTZ_RESULTANT, 'resultant/(F/2) - 1')};\n"
+            f"{v['states']} state iterations in {v['increments']} "
             f"{inc}, {v['factorisations']} {fac}.")
 
 
