@@ -17,10 +17,10 @@ and strings must be equal. Not compared: the time stamps and timings (created, c
 finished, cpu_time), the version, the `checksum` attributes (hashes of the data compared
 here) and pecplas-sweep's bookkeeping. Exit codes of the programs are compared too.
 
-    tools/compare_results.py --old OLD_BIN --new NEW_BIN          # run both, compare
-    tools/compare_results.py --old OLD_BIN --store DIR            # run OLD once, keep in DIR
-    tools/compare_results.py --baseline DIR --new NEW_BIN         # compare NEW with DIR
-    tools/compare_results.py --baseline DIR --no-run              # again, without running
+    python3 -m pecplas_py.checks.compare_results --old OLD_BIN --new NEW_BIN   # run both, compare
+    python3 -m pecplas_py.checks.compare_results --old OLD_BIN --store DIR     # run OLD once, keep
+    python3 -m pecplas_py.checks.compare_results --baseline DIR --new NEW_BIN  # NEW against DIR
+    python3 -m pecplas_py.checks.compare_results --baseline DIR --no-run       # again, no run
 
 OLD_BIN, NEW_BIN: a folder holding pecplas, pecplas-path, pecplas-identify and
 pecplas-sensitivity (`fpm install --prefix P` -> P/bin, a CMake build folder, fpm's
@@ -39,7 +39,8 @@ import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from pecplas_py import ROOT, script_cmd
+
 #: names (last path component) of datasets and attributes that are no results
 IGNORED = {"created", "completed", "finished", "cpu_time", "version", "checksum"}
 MANIFEST = "manifest.json"
@@ -54,11 +55,8 @@ class Failure(Exception):
 
 # ------------------------------------------------------------------ the decks
 def sweep_tool():
-    """pecplas-sweep (tools/pecplas_sweep.py, wherever under tools/ it lives)."""
-    found = sorted(ROOT.glob("tools/**/pecplas_sweep.py"))
-    if not found:
-        raise Failure("pecplas_sweep.py not found under tools/")
-    return found[0]
+    """pecplas-sweep: the command that runs programs/pecplas_sweep.py of this tree."""
+    return script_cmd("programs.pecplas_sweep")
 
 
 def jobs():
@@ -115,7 +113,7 @@ def run_job(name, kind, args, bins, out):
     # a sweep: its decks written once into SWEEP_DECKS (the same path in every run)
     decks = ROOT / SWEEP_DECKS / Path(args).name
     shutil.rmtree(decks, ignore_errors=True)
-    r = subprocess.run([sys.executable, sweep_tool(), "make", f"{args}/template.inp",
+    r = subprocess.run([*sweep_tool(), "make", f"{args}/template.inp",
                         f"{args}/table.csv", "-o", decks], cwd=ROOT, capture_output=True,
                        text=True)
     if r.returncode != 0:
