@@ -27,15 +27,12 @@ arc-length (doc/theory.md §4).
 """
 import math
 import re
-import sys
-from pathlib import Path
 
-import h5py
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from footing_decks import deck  # noqa: E402
-from deck_runs import run as run_deck  # noqa: E402
+from footing_decks import deck
+from deck_runs import run as run_deck
+from pecplas_py.results import Results
 
 
 def run(text, tmp_path, name):
@@ -44,9 +41,8 @@ def run(text, tmp_path, name):
     p, status, hist, limit, _ = run_deck(text, tmp_path, name)
     ids = [int(v) for v in re.search(r"\*NSET, NAME=footing\n([\d, \n]+?)\*", text)
            .group(1).replace("\n", ",").split(",") if v.strip()]
-    with h5py.File(tmp_path / f"{name}.h5", "r") as f:
-        reaction = [-f["increments"][k]["reaction"][()][[i - 1 for i in ids], 1].sum()
-                    for k in sorted(f["increments"].keys())]
+    with Results(tmp_path / f"{name}.h5") as r:
+        reaction = [-r.field(k, "reaction")[[i - 1 for i in ids], 1].sum() for k in r.keys]
     return p, status, hist, limit, np.array(reaction)
 
 
