@@ -6,6 +6,7 @@
  */
 #define _GNU_SOURCE
 #include <dlfcn.h>
+#include <stdlib.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -18,17 +19,23 @@ static const char *const BLAS_SETTERS[] = {"openblas_set_num_threads", "bli_thre
 static const char *const BLAS_NAMES[] = {"OpenBLAS", "BLIS", "MKL"};
 
 /* Sets n threads for OpenMP and for the BLAS. Returns the index (1-based) of the BLAS
- * whose setter was called, 0 when none is loaded. */
+ * whose setter was called, 0 when none is loaded.
+ * Test hook: PECPLAS_TEST_BLAS_THREADS=M (M >= 1) gives the BLAS M threads whatever n is, so
+ * that test/python/test_threads.py can hold the BLAS at one thread and require the program's
+ * own parallel loops to give the same bits on 1 and 2 threads. */
 int pecplas_threads_set(int n) {
     if (n < 1) n = 1;
 #ifdef _OPENMP
     omp_set_num_threads(n);
     omp_set_dynamic(0);
 #endif
+    int nblas = n;
+    const char *hook = getenv("PECPLAS_TEST_BLAS_THREADS");
+    if (hook && atoi(hook) >= 1) nblas = atoi(hook);
     for (int k = 0; k < 3; k++) {
         set_threads_fn f = (set_threads_fn)dlsym(RTLD_DEFAULT, BLAS_SETTERS[k]);
         if (f) {
-            f(n);
+            f(nblas);
             return k + 1;
         }
     }

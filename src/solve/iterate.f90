@@ -5,6 +5,10 @@
 !>   QUASI_NEWTON     the same factorisation with BFGS updates (pecplas_solve_bfgs);
 !>   NEWTON           the consistent tangent refactorised every iteration,
 !> each with an optional line search (pecplas_solve_line_search; not with arc-length).
+!> An increment of imposed displacement enters the first iteration through the operator,
+!> K du = F_ext - F_int(u_n) - K_fc dup (the stiffness columns of the constrained DOFs
+!> times their change), so that the whole body follows the moved nodes from the start;
+!> its later iterations, like every update, integrate each point from the converged state.
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
@@ -23,6 +27,7 @@ module pecplas_solve_iterate
    use pecplas_solve_residual, only: load_vectors, free_residual, free_part, add_free, &
       joint_signature, internal_forces_at
    use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
+   use pecplas_fe_imposed, only: imposed_forces
    implicit none (type, external)
    private
 
@@ -75,7 +80,7 @@ contains
       type(line_search_t) :: ls
       real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
       integer :: neq, it
-      logical :: moved, ok, elastic_now
+      logical :: moved, ok, elastic_now, imposed
 
       neq = problem%system%dofs%neq
       out%reason = ''
@@ -94,7 +99,10 @@ contains
          max(BFGS_MIN_PAIRS, int(BFGS_BYTES/(16.0_wp*max(neq, 1))))))
       q = free_part(problem, fq)
       fint = fint_conv
-      if (any(u /= problem%state%u)) then
+      ! moved imposed displacements: their linear response is the first iteration's load
+      ! (load control; an arc-length increment keeps them at the step-start fraction)
+      imposed = any(u /= problem%state%u) .and. .not. att%arc
+      if (any(u /= problem%state%u) .and. att%arc) then
          call forces(u, error)
          if (allocated(error)) return
       end if
@@ -159,9 +167,19 @@ contains
          end if
          elastic_now = .false.
          ! full Newton: the tangent of the current iterate; at the first iteration the last
-         ! factorisation (the previous increment's tangent) unless there is none yet
-         if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
+         ! factorisation (the previous increment's tangent) unless there is none yet, or the
+         ! elastic stiffness when imposed displacements move and the points' tangents are a
+         ! discarded attempt's (after a rollback: see subtract_imposed)
+         if (att%method == METHOD_NEWTON .and. it == 0 .and. imposed .and. &
+             .not. problem%state%converged_tangents) then
+            call elastic_operator(error)
+            if (allocated(error)) return
+         else if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
             call refactorise(error)
+            if (allocated(error)) return
+         end if
+         if (it == 0 .and. imposed) then
+            call subtract_imposed(error)
             if (allocated(error)) return
          end if
          call apply_operator(r, du, error)
@@ -187,7 +205,9 @@ contains
          call forces(u, error)
          if (allocated(error)) return
          eta = 1.0_wp
-         if (att%line_search .and. .not. att%arc) then
+         ! (not along the first step of an imposed increment: its residual at eta = 0 is
+         ! that of the linear response, not of a state the search could return to)
+         if (att%line_search .and. .not. att%arc .and. .not. (it == 0 .and. imposed)) then
             g0 = dot_product(du, r)
             call free_residual(problem, fext, fint, gfree, reaction, rnorm, ref)
             g1 = dot_product(du, gfree)
@@ -209,12 +229,40 @@ contains
             eta = ls%eta
          end if
          dtot = dtot + eta*du
-         if (att%method == METHOD_QUASI) call push_pair(u - u_iter)
+         ! a BFGS pair relates free displacements to free forces: not the imposed step
+         if (att%method == METHOD_QUASI .and. .not. (it == 0 .and. imposed)) &
+            call push_pair(u - u_iter)
          it = it + 1
       end do
       out%du = dtot
 
    contains
+
+      !> r = r - K_fc dup on the free equations, dup the change of the imposed displacements
+      !> (u holds the new ones, the free DOFs the converged values), K the matrix of the
+      !> operator: the points' consistent tangents (Newton, and quasi-Newton on a Newton
+      !> run's tangent) or the elastic stiffness (modified Newton, quasi-Newton on it, and
+      !> Newton when the tangents are not the converged state's); hist(0) becomes the
+      !> linearised residual.
+      subroutine subtract_imposed(err)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp), allocatable :: fimp(:, :)
+         logical :: tangent
+         select case (att%method)
+         case (METHOD_NEWTON)
+            tangent = .not. elastic_now
+         case (METHOD_QUASI)
+            tangent = .not. problem%linear%separate_tangent
+         case default
+            tangent = .false.
+         end select
+         allocate (fimp, mold=u)
+         call imposed_forces(model, problem%system%dofs, problem%system%rules, problem%state, &
+            u - problem%state%u, tangent, fimp, err)
+         if (allocated(err)) return
+         r = r - free_part(problem, fimp)
+         if (ref > 0.0_wp) hist(0) = norm2(r)/ref
+      end subroutine subtract_imposed
 
       !> Internal forces at u (a failed material return is a run error: the increment fails).
       subroutine forces(uu, err)
@@ -229,6 +277,15 @@ contains
          logical :: kept
          call bfgs%push(free_part(problem, du_step), free_part(problem, fint) - gold, kept)
       end subroutine push_pair
+
+      !> Full Newton, first iteration after a rollback: the elastic stiffness (the run's own
+      !> factorisation when it keeps one apart from the tangent's, else factorised now).
+      subroutine elastic_operator(err)
+         type(error_t), allocatable, intent(out) :: err
+         elastic_now = .true.
+         if (.not. problem%linear%separate_tangent) call factorise_stiffness(model, problem, &
+            .false., err)
+      end subroutine elastic_operator
 
       !> Full Newton: the consistent tangent at the current state. A singular tangent (a
       !> perfectly plastic zone, a joint in full slip) is no mechanism of the model: this

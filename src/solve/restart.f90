@@ -13,7 +13,8 @@ module pecplas_solve_restart
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
-   use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
+   use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
+      ARC_VECTOR_V1
    use pecplas_solve_stiffness, only: factorise_values, partitioned
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
@@ -261,8 +262,10 @@ contains
             if (allocated(error)) return
             call kt%begin_increment()
          end if
-         ! trial = converged everywhere, as after a commit
+         ! trial = converged everywhere, as after a commit; the points' tangents are the
+         ! converged state's when carried (else the set-up's: not those of the state)
          call st%rollback()
+         st%converged_tangents = tangents
          p%resume = .true.
       end associate
    end subroutine unpack_data
@@ -281,7 +284,12 @@ contains
          end if
          p%path = PATH_NONE
          if (.not. data%has('arc')) return
-         call data%get('arc', 1 + ARC_VECTOR, v, error)
+         ! (restart data of an older version: ARC_VECTOR_V1 numbers)
+         if (data%length('arc') == 1 + ARC_VECTOR_V1) then
+            call data%get('arc', 1 + ARC_VECTOR_V1, v, error)
+         else
+            call data%get('arc', 1 + ARC_VECTOR, v, error)
+         end if
          if (allocated(error)) return
          if (.not. any(v(1) == real([PATH_NONE, PATH_STEP, PATH_PROBE], wp))) then
             call fatal_error(error, 'restart data arc names no kind of path')
@@ -406,8 +414,10 @@ contains
 
    !> The points' consistent tangents of the last update are carried when an arc-length path
    !> may follow: its predictor assembles the tangent from them before any update of the
-   !> increment (a load-controlled increment updates the points first, and its first solve
-   !> uses the carried factorisation).
+   !> increment; and when the deck imposes displacements: the first iteration of an
+   !> increment that moves them multiplies their change by the stiffness of those tangents
+   !> (pecplas_solve_iterate). Other load-controlled increments update the points first, and
+   !> their first solve uses the carried factorisation.
    logical function tangents_carried(model, problem) result(carried)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
@@ -418,6 +428,8 @@ contains
       do i = problem%position%istep, size(model%steps)
          carried = carried .or. model%steps(i)%arc_length
       end do
+      if (allocated(model%patterns)) carried = carried .or. &
+         any([(model%patterns(i)%kind == 'DISPLACEMENT', i=1, size(model%patterns))])
    end function tangents_carried
 
    subroutine get3(data, name, a, error)
