@@ -11,6 +11,7 @@
 #                                                                     (tools/bench_work_precision.py)
 #   5. adaptive refinement on the S2 pile, beside the uniform series   (tools/bench_adapt.py)
 #   6. a peer side by side: CalculiX on the same problem              (tools/bench_peer.py)
+#      and Newton's iteration count beside CalculiX's on a footing  (tools/bench_peer_footing.py)
 #      and OpenSees on the elastic block, 1e4 .. 1e6 dofs       (tools/bench_peer_opensees.py)
 #   6b. deck reading: keyword mesh against *MESH on the same mesh     (tools/bench_deck.py)
 #   6c. Katona contact against the penalty joint, by speed (S1, pile)  (tools/bench_katona.py)
@@ -52,7 +53,7 @@ pip_need openseespy "the peer of tools/bench_peer_opensees.py" \
 pip_need pyamg "the AMG of tools/bench_amg.py" pyamg==5.4.1
 mkdir -p doc/bench
 start=$(date +%s)
-for part in solver ordering stability scaling scaling_elastic amg work_precision adapt peer peer_opensees deck katona; do
+for part in solver ordering stability scaling scaling_elastic amg work_precision adapt peer peer_footing peer_opensees deck katona; do
   t0=$(date +%s)
   echo "== make bench: tools/bench_$part.py ${mode[*]}"
   $PYTHON "tools/bench_$part.py" "${mode[@]}"

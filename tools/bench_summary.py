@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Collects the benchmark fragments doc/bench/*.md (written by tools/bench_*.py through
 bench_common.write_fragment) into doc/bench/README.md, in a fixed order (stability, scaling,
-scaling_elastic, amg, work_precision, advice, peer, peer_opensees, then the others
+scaling_elastic, amg, work_precision, advice, peer, peer_footing, peer_opensees, then the others
 alphabetically), under a header with the commit, machine and date (bench_common.provenance)
 and, if given, the wall time of the whole suite.
 
@@ -14,7 +14,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_common import BENCH_DIR, provenance  # noqa: E402
 
-ORDER = ("stability", "scaling", "scaling_elastic", "amg", "work_precision", "advice", "peer", "peer_opensees")
+ORDER = ("stability", "scaling", "scaling_elastic", "amg", "work_precision", "advice", "peer",
+         "peer_footing", "peer_opensees")
 OUTPUT = "README.md"
 
 

@@ -395,3 +395,47 @@ def test_solver_case_maps_the_two_programs_lines_to_the_columns(monkeypatch, tmp
     lines["bare"] = "\n"
     with pytest.raises(RuntimeError, match="pecplas-bench-bare Q4 707 failed"):
         bench_solver.one_case("pecplas-bench", "pecplas-bench-bare", "Q4", 707, str(tmp_path))
+
+
+def test_footing_peer_ccx_counts_and_plateau():
+    """CalculiX's .sta: a cut attempt (number ending in U) counts its iterations and a cut,
+    not an increment; the plateau is the last 'total force' block's -RF_y per unit width."""
+    import bench_peer_footing as bf
+    sta = ("SUMMARY OF JOB INFORMATION\n"
+           "  STEP      INC     ATT  ITRS     TOT TIME     STEP TIME      INC TIME\n"
+           "     1          1     1     6  0.5E-01  0.5E-01  0.5E-01\n"
+           "     1          2     1U    4  0.1E+00  0.1E+00  0.5E-01\n"
+           "     1          2     2     5  0.1E+00  0.1E+00  0.25E-01\n")
+    assert bf.ccx_counts(sta) == (2, 15, 1)
+    dat = ("\n total force (fx,fy,fz) for set FOOTING and time  0.95E+00\n\n"
+           "        6.7E+00 -5.257025E+02 -7.6E-14\n"
+           "\n total force (fx,fy,fz) for set FOOTING and time  0.1E+01\n\n"
+           "        6.8E+00 -5.258250E+02  1.0E-13\n")
+    assert bf.ccx_plateau(dat) == pytest.approx(525.825, abs=1e-9)
+
+
+def test_footing_peer_fragment_ratios():
+    """The footing table: iterations per increment and the ratio to CalculiX's count on the
+    same mesh and element, the plateau's relative difference; rows of other soils or drives
+    go to the second table."""
+    import bench_peer_footing as bf
+    rows = [["2k", "ours", "Q8R", "vm", "settle", 2003, 20, 76, 0, "1.19", "525.8", 0, "0.5", 1],
+            ["2k", "CalculiX", "Q8R", "vm", "settle", 2003, 20, 60, 0, "23.47", "525.8", 0,
+             "0.5", 1],
+            ["2k", "ours", "Q8R", "mc", "settle", 2003, 20, 105, 0, "2.01", "3068.2", 0,
+             "0.5", 1]]
+    text = bf.fragment(rows)
+    assert "| 2k | Q8R | 2003 | ours | 20 | 76 | 3.8 | 1.27 | 0 | 1.19 | 525.8 | +0.00% |" in text
+    assert "| 2k | Q8R | mc | settle | 2003 | 20 | 105 | 0 | 2.01 | 3068.2 |" in text
+
+
+def test_footing_decks_reproduce_the_base_mesh():
+    """refine 1 is the 2 000-equation mesh: 22 x 17 corner lines of the quadratic mesh,
+    21 x 16 Q8 (1 083 nodes) or 42 x 32 Q4 (1 419 nodes); refine m splits every side in m."""
+    import make_footing_peer_decks as fd
+    nodes, els, *_ = fd.mesh("Q8", 1)
+    assert (len(nodes), len(els)) == (1083, 336)
+    nodes, els, *_ = fd.mesh("Q4", 1)
+    assert (len(nodes), len(els)) == (1419, 1344)
+    nodes, els, *_ = fd.mesh("Q8", 3)
+    assert len(els) == 336 * 9
