@@ -142,7 +142,7 @@ contains
       call check_patch('float_goodman6_axi', P, .true., error)
    end subroutine test_float_goodman6
 
-   !> Hertz (doc/validation.md) on test/data/katona/hertz.inp (tools/make_hertz_deck.py, h = 0.1 mm):
+   !> Hertz (doc/validation.md) on test/data/katona/hertz.inp (tools/pecplas_py/decks/make_hertz_deck.py, h = 0.1 mm):
    !> a = sqrt(4 F R / (pi E*)), p0 = 2 F / (pi a) within 2 % (a: midway between the last
    !> closed and the first open doublet, +-h/2 = 0.8 %); p(x) within 5 % of p0 of
    !> p0 sqrt(1 - x^2/a^2) at the doublets in contact; resultant = F/2 (half model) to 1e-8

@@ -1,9 +1,8 @@
-"""The elastic block of the OpenSees peer bench (tools/opensees_block.py): mesh and deck
+"""The elastic block of the OpenSees peer bench (pecplas_py.peers.opensees_block): mesh and deck
 generation without OpenSees, our solve of the generated deck, and (only where openseespy is
 installed) the OpenSees runner against our solve on the same small mesh."""
 import importlib.util
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -12,10 +11,10 @@ import pytest
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
 
-import bench_peer_opensees as bpo  # noqa: E402
-import opensees_block as ob  # noqa: E402
+from pecplas_py import script_cmd
+from pecplas_py.bench import peer_opensees as bpo
+from pecplas_py.peers import opensees_block as ob
 
 HAVE_OPENSEES = importlib.util.find_spec("openseespy") is not None
 
@@ -133,7 +132,7 @@ def test_opensees_runner_agrees_with_ours(tmp_path):
     largest displacement, so the bound holds for it too."""
     m, u = _ours(tmp_path, 20, 10)
     ob.save_mesh(m, tmp_path / "m.npz")
-    r = subprocess.run([sys.executable, str(ROOT / "tools" / "opensees_block.py"),
+    r = subprocess.run([*script_cmd("peers.opensees_block"),
                         str(tmp_path / "m.npz"), str(tmp_path / "o.npz")],
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr

@@ -32,7 +32,6 @@ the final sand stresses differ from those of the same deck with an elastic sand 
 import os
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -40,8 +39,9 @@ import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 from pecplas_exe import pecplas_cmd  # noqa: E402
+
+from pecplas_py import script_cmd
 
 ELASTIC_SAND = "*MATERIAL, NAME=sand\nE = 1e5, NU = 0.3"
 DP_SAND = ("*MATERIAL, NAME=sand, TYPE=DRUCKER_PRAGER\n"
@@ -52,7 +52,7 @@ SETTINGS = {"NEWTON": ("TOLERANCE=1e-8", 3, 0.6), "MODIFIED_NEWTON": ("TOLERANCE
 def make_deck(tmp, method, threads, sand=DP_SAND):
     base = tmp / "s5_r3.inp"
     if not base.exists():
-        subprocess.run([sys.executable, str(ROOT / "tools/make_s5_deck.py"), "--refine", "3",
+        subprocess.run([*script_cmd("decks.make_s5_deck"), "--refine", "3",
                         "--cycles", "1", "-o", str(base)], check=True, cwd=ROOT,
                        capture_output=True)
     text = base.read_text()
