@@ -93,8 +93,6 @@ def test_compare_measures_tip_and_field():
     assert field == pytest.approx(2e-9 / (2 + 2e-9), rel=1e-6)
 
 
-@pytest.mark.skipif(not HAVE_OPENSEES, reason="openseespy is not installed (only make bench "
-                    "installs it): the OpenSees runner cannot be checked")
 def block_system(m):
     """(K, f, free) of the block on its free dofs: plane-strain Q4, 2 x 2 Gauss points, the
     element both codes use (checked: our solution's backward error against it is ~1e-16)."""
@@ -123,6 +121,8 @@ def block_system(m):
     return k[np.ix_(free, free)], f[free], free
 
 
+@pytest.mark.skipif(not HAVE_OPENSEES, reason="openseespy is not installed (only make bench "
+                    "installs it): the OpenSees runner cannot be checked")
 def test_opensees_runner_agrees_with_ours(tmp_path):
     """The same Q4 stiffness (2 x 2 Gauss points) and load: the same linear system K x = f,
     solved directly by both. Each solution is backward stable: its residual within n eps of
