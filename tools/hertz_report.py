@@ -21,7 +21,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import doc_blocks  # noqa: E402
 from doc_blocks import report_main  # noqa: E402
 from make_hertz_deck import E1, E2, F, NU, R  # noqa: E402
-from validation_report import below, minus  # noqa: E402
+from validation_report import HERTZ_RESULTANT, minus, within  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SCRIPT = "hertz_report.py"
@@ -104,8 +104,9 @@ def block(v):
             f"{v['doublets']} doublets; written by `tools/hertz_report.py` from its run):\n"
             f"a = {v['a_fe']:.3f} mm ({signed(100 * (v['a_fe'] / v['a'] - 1))} %), "
             f"p0 = {v['p_fe']:.1f} MPa ({signed(100 * (v['p_fe'] / v['p0'] - 1))} %), "
-            f"profile within {100 * v['p_err']:.2f} % of p0, resultant F/2 within "
-            f"{below(v['resultant'])};\n{v['states']} state iterations in {v['increments']} "
+            f"profile within {100 * v['p_err']:.2f} % of p0, resultant F/2 "
+            f"{within(v['resultant'], HERTZ_RESULTANT, 'resultant/(F/2) - 1')};\n"
+            f"{v['states']} state iterations in {v['increments']} "
             f"{inc}, {v['factorisations']} {fac}.")
 
 

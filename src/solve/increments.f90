@@ -36,7 +36,8 @@ module pecplas_solve_increments
 
 contains
 
-   !> Runs every step. `status`: 'completed', 'limit load', 'diverged' or 'stopped';
+   !> Runs every step. `status`: 'completed', 'limit load', 'diverged', 'stopped' or
+   !> 'interrupted' (a termination signal, or the --stop-after-increments test hook);
    !> `message` says why a run stopped. Converged increments are written as they come.
    !> `limit`: where the limit is, when the status is 'limit load' (as written to /limit).
    subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
