@@ -4,8 +4,8 @@
 # program on 1, 2, 4, 8, 16 threads (pecplas-bench); configurations of CHOLMOD's
 # factorisation on the assembled matrices (pecplas-bench-threads: threads of CHOLMOD's OpenMP
 # regions, BLAS threads, flops per BLAS thread); the Drucker-Prager strip footing of
-# tools/bench_scaling.py at 3e5 equations (pecplas). Writes OUT/log.txt (OUT default
-# /tmp/out); tools/bench_threads_report.py turns the log into doc/bench/threads.csv and .png.
+# pecplas_py.bench.scaling at 3e5 equations (pecplas). Writes OUT/log.txt (OUT default
+# /tmp/out); pecplas_py.bench.threads_report turns the log into doc/bench/threads.csv and .png.
 #
 #   bash tools/bench_threads.sh [small|full] [DIR]
 #
@@ -14,7 +14,7 @@
 # pecplas-bench-bare-old in it (an earlier program's bare factorisation, compared), and
 # ompblas.tar.xz (the libraries of Debian's libopenblas0-openmp, to compare OpenBLAS's OpenMP
 # build with its pthreads build), footing_10000.inp and footing_300000.inp(.xz) (decks of
-# tools/bench_scaling.py make_deck). `small` checks the script in seconds on any machine.
+# pecplas_py.bench.scaling make_deck). `small` checks the script in seconds on any machine.
 set -u
 MODE=${1:-full}
 D=$(cd "${2:-$(dirname "$0")}" && pwd)

@@ -2,7 +2,7 @@
 """Thread scaling on a many-core node: the log of tools/bench_threads.sh -> doc/bench/threads.csv
 and doc/bench/threads.png (the page doc/bench/threads.md reads them).
 
-    python3 tools/bench_threads_report.py [LOG]     (default doc/bench/threads_node16.log)
+    python3 -m pecplas_py.bench.threads_report [LOG]     (default doc/bench/threads_node16.log)
 
 Log lines read (written by tools/bench_threads.sh):
   RUN TAG threads=N load=L <pecplas-bench line: element n equations setup assembly
@@ -18,7 +18,7 @@ import re
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from pecplas_py import ROOT
 BENCH = ROOT / "doc" / "bench"
 HEADER = ["section", "case", "threads", "regions", "blas_threads", "blas_flops_per_thread",
           "blas_build", "program", "factorisation_s", "solve_s", "assembly_s", "residual_s",
