@@ -67,6 +67,7 @@ program tester
    use test_io_deck_mesh_lines, only: collect_io_deck_mesh_lines
    use test_massif_kernels, only: collect_massif_kernels
    use test_linalg_omp_serial, only: collect_linalg_omp_serial
+   use test_cmd_args, only: collect_cmd_args
    implicit none (type, external)
    type(testsuite_t), allocatable :: suites(:)
    character(len=128) :: arg1, arg2
@@ -140,6 +141,7 @@ program tester
    suites = [suites, new_testsuite('io_results_checksum', collect_io_results_checksum)]
    suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
    suites = [suites, new_testsuite('linalg_omp_serial', collect_linalg_omp_serial)]
+   suites = [suites, new_testsuite('cmd_args', collect_cmd_args)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -1,6 +1,7 @@
 !> Errors as values: every fallible routine ends with
 !> `type(error_t), allocatable, intent(out) :: error` and callers
-!> write `if (allocated(error)) return`. Only `app/` turns an error into an exit code.
+!> write `if (allocated(error)) return`. Only the command layer (`src/cmd/`) turns an error
+!> into an exit code (`exit_code`); the programs of `app/` hand that code to the system.
 module pecplas_base_error
    implicit none (type, external)
    private

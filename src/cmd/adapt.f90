@@ -36,12 +36,12 @@ contains
       integer :: n
       call parse_target(target, opts%target, msg)
       if (allocated(msg)) then
-         code = command_error('pecplas', EXIT_INPUT, '--target-error: '//msg)
+         code = command_error('pecplas', EXIT_INPUT, 'option --target-error: '//msg)
          return
       end if
       call parse_goal_spec(goal, spec, msg)
       if (allocated(msg)) then
-         code = command_error('pecplas', EXIT_INPUT, '--goal: '//msg)
+         code = command_error('pecplas', EXIT_INPUT, 'option --goal: '//msg)
          return
       end if
       call read_deck(deck, model, error)
@@ -53,6 +53,7 @@ contains
       threads = resolve_threads(model%solver%threads)
       call apply_threads(threads)
       model%solver%threads = threads%n
+      model%solver%threads_used = threads
       opts%goal_kind = spec%kind
       opts%goal_dof = spec%dof
       msg = 'the energy norm'
@@ -60,14 +61,14 @@ contains
       case (GOAL_NODE)
          opts%goal_node = findloc(model%mesh%node_id, spec%node_id, 1)
          if (opts%goal_node == 0) then
-            code = command_error('pecplas', EXIT_INPUT, '--goal: the deck has no node '// &
+            code = command_error('pecplas', EXIT_INPUT, 'option --goal: the deck has no node '// &
                itoa(spec%node_id))
             return
          end if
          msg = 'node '//itoa(spec%node_id)//' '//merge('x', 'y', opts%goal_dof == 1)
       case (GOAL_REACTION)
          if (model%mesh%find_nset(spec%set) == 0) then
-            code = command_error('pecplas', EXIT_INPUT, '--goal: expected reaction:SET '// &
+            code = command_error('pecplas', EXIT_INPUT, 'option --goal: expected reaction:SET '// &
                "with SET a node set of the deck (*NSET), no set '"//spec%set//"'")
             return
          end if

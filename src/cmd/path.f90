@@ -12,6 +12,7 @@ module pecplas_cmd_path
    use pecplas_studies_path_driver, only: path_result_t, run_path
    use pecplas_studies_path_writers, only: write_path_csv, write_path_h5
    use pecplas_cmd_command, only: command_error
+   use pecplas_cmd_args, only: arg_parser_t, VALUE_POSITIVE_REAL
    use pecplas_base_strings, only: itoa
    implicit none (type, external)
    private
@@ -19,80 +20,43 @@ module pecplas_cmd_path
    !> Program name in error messages.
    character(len=*), parameter :: COMMAND = 'pecplas-path'
 
-   public :: path_main, run_path_deck
-
-   character(len=*), parameter :: USAGE = 'usage: pecplas-path DECK [-o BASE] [--quiet] '// &
-      '[--max-seconds S]'
+   public :: path_main, run_path_deck, path_command_line
 
 contains
+
+   !> The options of pecplas-path.
+   subroutine path_command_line(cli)
+      type(arg_parser_t), intent(out) :: cli
+      call cli%init(COMMAND, 'Integrates one interface law on a CNL/CND/CNS path (doc/path.md) '// &
+         'and writes BASE.csv and BASE.h5. A progress line with the time left is printed '// &
+         'every 5 s.', path_version)
+      call cli%add_positional('DECK', 'deck', 'the path deck: *INTERFACE_LAW and *PATH', 1, 1)
+      call cli%add_option('-o --output', 'BASE', 'writes BASE.csv and BASE.h5 (default: the '// &
+         '*OUTPUT file of the deck, else output/<deck>)')
+      call cli%add_flag('--quiet -q', 'no header, progress or summary lines')
+      call cli%add_option('--max-seconds', 'S', 'stop after S seconds of wall time (exit 3, '// &
+         'files written with status "stopped", complete = 0)', VALUE_POSITIVE_REAL)
+      call cli%add_note('Exit codes: 0 completed, 2 input error, 3 path stopped early.')
+   end subroutine path_command_line
 
    !> Runs the command for the words `args`; returns the exit code.
    integer function path_main(args) result(code)
       character(len=*), intent(in) :: args(:)
-      character(len=:), allocatable :: deck, base
+      type(arg_parser_t) :: cli
       type(path_result_t) :: res
-      logical :: quiet
-      integer :: i, ios
-      real(wp) :: max_seconds
-      quiet = .false.
-      max_seconds = 0.0_wp
-      deck = ''
-      base = ''
-      i = 0
-      do while (i < size(args))
-         i = i + 1
-         select case (trim(args(i)))
-         case ('--quiet', '-q')
-            quiet = .true.
-         case ('--max-seconds')
-            ios = 1
-            if (i < size(args)) read (args(i + 1), *, iostat=ios) max_seconds
-            if (ios /= 0 .or. .not. (max_seconds > 0.0_wp)) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option --max-seconds needs a '// &
-                  'number of seconds > 0. '//USAGE)
-               return
-            end if
-            i = i + 1
-         case ('-o', '--output')
-            if (i == size(args)) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
-               return
-            end if
-            i = i + 1
-            base = trim(args(i))
-         case ('--help', '-h')
-            write (*, '(a)') USAGE
-            write (*, '(a)') '  Integrates one interface law on a CNL/CND/CNS path and '// &
-               'writes BASE.csv and BASE.h5'
-            write (*, '(a)') '  (default: the *OUTPUT file of the deck, else output/<deck>).'
-            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 path stopped early.'
-            write (*, '(a)') '  --max-seconds S: stop after S seconds of wall time (exit 3, '// &
-               'files written with status "stopped", complete = 0).'
-            write (*, '(a)') '  A progress line with the time left is printed every 5 s.'
-            code = EXIT_OK
-            return
-         case ('--version')
-            write (*, '(a)') 'pecplas-path '//VERSION
-            code = EXIT_OK
-            return
-         case default
-            if (args(i)(1:1) == '-') then
-               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
-               return
-            end if
-            if (len(deck) > 0) then
-               code = command_error(COMMAND, EXIT_INPUT, 'only one deck may be given. '//USAGE)
-               return
-            end if
-            deck = trim(args(i))
-         end select
-      end do
-      if (len(deck) == 0) then
-         code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
-         return
-      end if
-      code = run_path_deck(deck, base, quiet, res, max_seconds)
+      logical :: done
+      call path_command_line(cli)
+      call cli%parse(args, code, done)
+      if (done) return
+      code = run_path_deck(cli%positional(1), cli%text('-o'), cli%given('--quiet'), res, &
+         cli%real_value('--max-seconds', 0.0_wp))
    end function path_main
+
+   !> What --version prints.
+   subroutine path_version(lines)
+      character(len=:), allocatable, intent(out) :: lines(:)
+      lines = [COMMAND//' '//VERSION]
+   end subroutine path_version
 
    !> Runs the path deck `deck`, writing `base_in`.csv/.h5 (empty: *OUTPUT or
    !> output/<deck>); returns the exit code and the rows computed (for tests).

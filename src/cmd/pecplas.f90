@@ -25,160 +25,95 @@ module pecplas_cmd_pecplas
    use pecplas_base_signals, only: install_signal_handlers, interrupt_signal
    use pecplas_base_timers, only: wall_time
    use pecplas_cmd_command, only: command_error
+   use pecplas_cmd_args, only: arg_parser_t, VALUE_POSITIVE_INTEGER
    use pecplas_solve_restart, only: restore_restart
    use pecplas_base_provenance, only: version_lines
-   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads, &
+      parts_text
    use pecplas_base_parallel, only: parallel_rank, parallel_size, parallel_any
    implicit none (type, external)
    private
 
    !> Program name in error messages.
    character(len=*), parameter :: COMMAND = 'pecplas'
-   !> Exit code of a run interrupted (SIGTERM/SIGINT, or --stop-after-increments).
 
-   public :: pecplas_main, run_deck
-
-   character(len=*), parameter :: USAGE = 'usage: pecplas DECK [-o FILE.h5] [--quiet] '// &
-      '[--restart OLD.h5] [--strict] | '// &
-      'pecplas --advise DECK [--goal node:N:x|y | --advise-node N] [--max-dofs N] | '// &
-      'pecplas DECK --target-error E% [--goal node:N:x|y | reaction:SET[:x|y] | limit] '// &
-      '[--max-dofs N] [-o FILE.h5]'
+   public :: pecplas_main, run_deck, pecplas_command_line
 
 contains
+
+   !> The options of pecplas: one analysis, --advise, --target-error.
+   subroutine pecplas_command_line(cli)
+      type(arg_parser_t), intent(out) :: cli
+      call cli%init(COMMAND, 'Runs the keyword deck DECK (doc/deck.md) and writes HDF5 '// &
+         'results with an XDMF sidecar; or refines the mesh adaptively (--target-error, '// &
+         'doc/adapt.md); or advises a method, increments and mesh (--advise).', pecplas_version)
+      call cli%add_usage('pecplas DECK [-o FILE.h5] [--quiet] [--restart OLD.h5] [--strict]')
+      call cli%add_usage('pecplas --advise DECK [--goal node:N:x|y | --advise-node N] '// &
+         '[--max-dofs N]')
+      call cli%add_usage('pecplas DECK --target-error E% [--goal node:N:x|y | '// &
+         'reaction:SET[:x|y] | limit] [--max-dofs N] [-o FILE.h5]')
+      call cli%add_positional('DECK', 'deck', 'the keyword deck', 1, 1)
+      call cli%add_option('-o --output', 'FILE.h5', 'results file (default: the deck''s '// &
+         '*OUTPUT file, else output/<deck>.h5)')
+      call cli%add_flag('--quiet -q', 'no banner, no line per increment, no summary')
+      call cli%add_option('--restart', 'OLD.h5', 'continue from the last converged '// &
+         'increment of OLD.h5, a results file of the same deck (give -o NEW.h5)')
+      call cli%add_flag('--strict', 'any warning (printed as "file:line: warning: ...") is '// &
+         'an input error: exit 2, no results file')
+      call cli%add_option('--target-error', 'E', 'adaptive refinement (solve, estimate, '// &
+         'refine the elements with the largest indicators, re-solve) until the estimated '// &
+         'error of the goal is below E (1% or 0.01), or --max-dofs is reached; writes the '// &
+         'last level')
+      call cli%add_option('--goal', 'GOAL', 'the goal of --target-error: node:N:x|y a '// &
+         'displacement, reaction:SET[:x|y] the support reactions on a node set, limit the '// &
+         'limit load (default: the energy norm); of --advise: node:N:x|y only')
+      call cli%add_option('--max-dofs', 'N', 'DOF budget of --target-error and --advise '// &
+         '(default 100000)', VALUE_POSITIVE_INTEGER)
+      call cli%add_flag('--advise', 'runs the first loading step under MODIFIED_NEWTON/'// &
+         'NEWTON and x1/2, x1, x2 increments on each mesh of the adaptive sequence '// &
+         '(reference: NEWTON x2, refined until the goal''s estimated error is 0.2 %), '// &
+         'prints their cost and error and the cheapest within 1 % and 5 %; writes no results')
+      call cli%add_option('--advise-node', 'N', 'the goal of --advise: the larger free '// &
+         'displacement component of node N (default: the node that moves most)', &
+         VALUE_POSITIVE_INTEGER)
+      ! test hook: stop as if interrupted after N converged increments in all
+      call cli%add_option('--stop-after-increments', 'N', 'stop as interrupted after N '// &
+         'increments', VALUE_POSITIVE_INTEGER, hidden=.true.)
+      call cli%add_note('Exit codes: 0 completed, 2 input error, 3 run stopped early '// &
+         '(or results not writable), 4 interrupted (SIGTERM, SIGINT, SIGHUP).')
+   end subroutine pecplas_command_line
 
    !> Runs the program for the command-line words `args`; returns the exit code.
    integer function pecplas_main(args) result(code)
       character(len=*), intent(in) :: args(:)
-      character(len=:), allocatable :: deck, outfile, restart, target, goal
-      logical :: quiet, advise, strict
+      type(arg_parser_t) :: cli
+      character(len=:), allocatable :: deck, target, goal
       type(model_t) :: model
       type(problem_t) :: problem
-      integer :: i, node, ios, stop_after, max_dofs
+      integer :: max_dofs
+      logical :: done
 
-      restart = ''
-      target = ''
-      goal = ''
-      max_dofs = 0
-      stop_after = 0
-      advise = .false.
-      node = 0
-      quiet = .false.
-      strict = .false.
-      deck = ''
-      outfile = ''
-      i = 0
-      do while (i < size(args))
-         i = i + 1
-         select case (trim(args(i)))
-         case ('--quiet', '-q')
-            quiet = .true.
-         case ('--strict')
-            strict = .true.
-         case ('--advise')
-            advise = .true.
-         case ('--advise-node')
-            ios = 1
-            if (i < size(args)) read (args(i + 1), *, iostat=ios) node
-            if (ios /= 0 .or. node <= 0) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option --advise-node needs a node '// &
-                  'id > 0. '//USAGE)
-               return
-            end if
-            i = i + 1
-         case ('--target-error', '--goal', '--max-dofs')
-            if (i == size(args)) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))// &
-                  ' needs a value. '//USAGE)
-               return
-            end if
-            i = i + 1
-            if (trim(args(i - 1)) == '--target-error') target = trim(args(i))
-            if (trim(args(i - 1)) == '--goal') goal = trim(args(i))
-            if (trim(args(i - 1)) == '--max-dofs') then
-               read (args(i), *, iostat=ios) max_dofs
-               if (ios /= 0 .or. max_dofs <= 0) then
-                  code = command_error(COMMAND, EXIT_INPUT, 'option --max-dofs needs a '// &
-                     'number > 0. '//USAGE)
-                  return
-               end if
-            end if
-         case ('--restart')
-            if (i == size(args)) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option --restart needs the results '// &
-                  'file to continue. '//USAGE)
-               return
-            end if
-            i = i + 1
-            restart = trim(args(i))
-         case ('--stop-after-increments')
-            ! test hook: stop as if interrupted after N converged increments in all
-            ios = 1
-            if (i < size(args)) read (args(i + 1), *, iostat=ios) stop_after
-            if (ios /= 0 .or. stop_after <= 0) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option --stop-after-increments '// &
-                  'needs a number > 0. '//USAGE)
-               return
-            end if
-            i = i + 1
-         case ('-o', '--output')
-            if (i == size(args)) then
-               code = command_error(COMMAND, EXIT_INPUT, 'option '//trim(args(i))//' needs a file name. '//USAGE)
-               return
-            end if
-            i = i + 1
-            outfile = trim(args(i))
-         case ('--help', '-h')
-            write (*, '(a)') USAGE
-            write (*, '(a)') '  Runs the keyword deck DECK and writes HDF5 results (default '// &
-               'output/<deck>.h5) with an XDMF sidecar.'
-            write (*, '(a)') '  Exit codes: 0 completed, 2 input error, 3 run stopped early '// &
-               '(or results not writable), 4 interrupted (SIGTERM, SIGINT, SIGHUP).'
-            write (*, '(a)') '  --strict: any warning (printed as "file:line: warning: ...") '// &
-               'is an input error: exit 2, no results file.'
-            write (*, '(a)') '  --target-error E: adaptive refinement (solve, estimate, '// &
-               'refine the elements with the largest indicators, re-solve) until the '// &
-               'estimated error of the goal (--goal node:N:x|y, reaction:SET[:x|y] the support '// &
-               'reactions on a node set, limit the limit load; default the energy norm) is '// &
-               'below E, or --max-dofs (default 100000) is reached; writes the last level.'
-            write (*, '(a)') '  --advise: runs the first loading step under MODIFIED_NEWTON/'// &
-               'NEWTON and x1/2, x1, x2 increments on each mesh of the adaptive sequence '// &
-               '(reference: NEWTON x2, refined until the goal''s estimated error is 0.2 %), '// &
-               'prints their cost and error and the cheapest within 1 % and 5 %; writes no results.'
-            code = EXIT_OK
-            return
-         case ('--version')
-            call print_version()
-            code = EXIT_OK
-            return
-         case default
-            if (args(i)(1:1) == '-') then
-               code = command_error(COMMAND, EXIT_INPUT, 'unknown option '//trim(args(i))//'. '//USAGE)
-               return
-            end if
-            if (len(deck) > 0) then
-               code = command_error(COMMAND, EXIT_INPUT, 'only one deck may be given. '//USAGE)
-               return
-            end if
-            deck = trim(args(i))
-         end select
-      end do
-      if (len(deck) == 0) then
-         code = command_error(COMMAND, EXIT_INPUT, 'no deck given. '//USAGE)
-         return
-      end if
-      if (advise) then
-         code = advise_main(deck, node, goal, max_dofs)
+      call pecplas_command_line(cli)
+      call cli%parse(args, code, done)
+      if (done) return
+      deck = cli%positional(1)
+      target = cli%text('--target-error')
+      goal = cli%text('--goal')
+      max_dofs = cli%int_value('--max-dofs', 0)
+      if (cli%given('--advise')) then
+         code = advise_main(deck, cli%int_value('--advise-node', 0), goal, max_dofs)
          return
       end if
       if (len(target) > 0) then
-         code = adapt_main(deck, target, goal, max_dofs, outfile)
+         code = adapt_main(deck, target, goal, max_dofs, cli%text('-o'))
          return
       else if (len(goal) > 0 .or. max_dofs > 0) then
-         code = command_error(COMMAND, EXIT_INPUT, '--goal and --max-dofs need '// &
-            '--target-error. '//USAGE)
+         code = cli%usage_error('--goal and --max-dofs need --target-error')
          return
       end if
-      code = run_deck(deck, outfile, quiet, model, problem, restart, stop_after, strict)
+      code = run_deck(deck, cli%text('-o'), cli%given('--quiet'), model, problem, &
+         cli%text('--restart'), cli%int_value('--stop-after-increments', 0), &
+         cli%given('--strict'))
    end function pecplas_main
 
    !> Runs `deck`, writing `outfile` (empty: the deck's *OUTPUT file or output/<deck>.h5).
@@ -223,6 +158,7 @@ contains
          threads = resolve_threads(model%solver%threads)
          call apply_threads(threads)
          model%solver%threads = threads%n
+         model%solver%threads_used = threads
       end if
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
       if (.not. allocated(error)) call model%warnings%print(0)
@@ -319,15 +255,11 @@ contains
       if (status == 'interrupted') code = EXIT_INTERRUPTED
    end function run_deck
 
-   !> --version: version, commit, compiler, linked library versions.
-   subroutine print_version()
-      character(len=:), allocatable :: lines(:)
-      integer :: i
+   !> What --version prints: version, commit, compiler, linked library versions.
+   subroutine pecplas_version(lines)
+      character(len=:), allocatable, intent(out) :: lines(:)
       lines = version_lines()
-      do i = 1, size(lines)
-         write (*, '(a)') trim(lines(i))
-      end do
-   end subroutine print_version
+   end subroutine pecplas_version
 
    !> The input file of the run (deck or *INCLUDE, as listed in the deck text) that is the
    !> file `output` (same file, whatever the spelling); '' if none.
@@ -424,7 +356,7 @@ contains
             sec(t%rank_cpu_min)//' to '//sec(t%rank_cpu_max)//' s'
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
-         trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
+         trim(merge('on ', 'off', threads%openmp))//'; '//parts_text(threads)//')'
       if (allocated(problem%linear%solver)) write (*, '(a)') ' linear solver: '//problem%linear%solver%report()
       if (problem%katona%active) then
          associate (k => problem%katona)
@@ -438,14 +370,6 @@ contains
       end if
       write (*, '(a)') ' status: '//status//'  results: '//outfile
    end subroutine summary
-
-   !> The BLAS whose threads were set, or a note that none was found (single-threaded BLAS).
-   function blas_name(blas) result(name)
-      character(len=*), intent(in) :: blas
-      character(len=:), allocatable :: name
-      name = blas
-      if (len(blas) == 0) name = 'without thread control'
-   end function blas_name
 
    !> Seconds with 3 decimals and a leading zero ("0.012").
    function sec(t) result(s)

@@ -15,7 +15,6 @@ module pecplas_fe_imposed
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t, joint_stiffness
    use pecplas_joints_points, only: joint_set_element, joint_element_points
-   use pecplas_joints_laws_katona, only: is_katona
    use pecplas_fe_element_context, only: element_context
    implicit none (type, external)
    private
@@ -91,9 +90,10 @@ contains
       integer :: s, e, ip, k, nn
       if (.not. allocated(model%joint_sets)) return
       do s = 1, size(model%joint_sets)
+         ! Katona sets have no law and no stiffness: their doublets are the contact operator's
+         if (model%joint_sets(s)%is_katona()) cycle
          associate (set => model%joint_sets(s), st => state%joints%sets(s), &
                     law => model%laws(model%joint_sets(s)%law_index)%law)
-            if (is_katona(law)) cycle
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nn = elem%nnode()

@@ -1,7 +1,8 @@
 !> Initial stresses (*INITIAL_STRESS, thesis §II.1.1) put into the integration-point state:
-!> massif points take the homogeneous or geostatic stress at their position; joint points take
-!> the stress of the adjacent massif (the element set around the joint's first face-1 node)
-!> projected on the joint frame, sigma_n = -n.sigma.n, tau = t.sigma.n, which also
+!> massif points take the homogeneous or geostatic stress at their position; each joint
+!> point takes, at its own position, the initial stress of the massif beside its element
+!> (pecplas_fe_joint_side: the element on face 1, the mean over the sets around a spring's
+!> node) projected on the joint frame, sigma_n = -n.sigma.n, tau = t.sigma.n, which also
 !> initialises the law history (e.g. MODJOIN's sigma_n0).
 module pecplas_fe_initial
    use pecplas_base_kinds, only: wp
@@ -13,6 +14,7 @@ module pecplas_fe_initial
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_fe_joint_initial, only: joint_stress_from_massif, set_joint_stress
    use pecplas_joints_points, only: joint_point_geometry
+   use pecplas_fe_joint_side, only: mesh_index_t, beside_sets
    implicit none (type, external)
    private
 
@@ -27,8 +29,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: xg(:, :), xy(:, :, :), t(:, :, :), sigma0(:, :, :)
       real(wp) :: stress(4)
-      integer :: s, e, g, js, eset
+      integer, allocatable :: sets(:)
+      integer :: s, e, g, js
       logical :: hit
+      type(mesh_index_t) :: index
 
       do s = 1, size(model%mesh%esets)
          associate (set => model%mesh%esets(s), st => state%sets(s))
@@ -44,15 +48,16 @@ contains
          end associate
       end do
       if (.not. allocated(model%joint_sets)) return
+      if (size(model%joint_sets) == 0) return
+      call index%build(model)
       do js = 1, size(model%joint_sets)
-         eset = adjacent_set(model, model%joint_sets(js)%conn(1, 1))
          call joint_point_geometry(model, js, xy, t, error)
          if (allocated(error)) return
          allocate (sigma0(2, size(xy, 2), size(xy, 3)), source=0.0_wp)
          do e = 1, size(xy, 3)
+            call beside_sets(model, index, model%joint_sets(js), e, sets)
             do g = 1, size(xy, 2)
-               stress = 0.0_wp
-               call stress_at(model, eset, xy(:, g, e), stress, hit)
+               call mean_stress_at(model, sets, xy(:, g, e), stress, hit)
                if (hit) sigma0(:, g, e) = joint_stress_from_massif(stress, t(:, g, e))
             end do
          end do
@@ -87,18 +92,28 @@ contains
       end do
    end subroutine stress_at
 
-   !> The element set of the first element that uses `node` (0 if none).
-   integer function adjacent_set(model, node) result(k)
+   !> Mean over the element sets `sets` of their initial stress at x, of those that an
+   !> *INITIAL_STRESS entry covers (hit = .false. when none does; stress 0).
+   subroutine mean_stress_at(model, sets, x, stress, hit)
       type(model_t), intent(in) :: model
-      integer, intent(in) :: node
-      integer :: s
-      do s = 1, size(model%mesh%esets)
-         if (any(model%mesh%esets(s)%conn == node)) then
-            k = s
-            return
-         end if
+      integer, intent(in) :: sets(:)
+      real(wp), intent(in) :: x(2)
+      real(wp), intent(out) :: stress(4)
+      logical, intent(out) :: hit
+      real(wp) :: one(4)
+      integer :: i, n
+      logical :: h
+      stress = 0.0_wp
+      n = 0
+      do i = 1, size(sets)
+         one = 0.0_wp
+         call stress_at(model, sets(i), x, one, h)
+         if (.not. h) cycle
+         stress = stress + one
+         n = n + 1
       end do
-      k = 0
-   end function adjacent_set
+      hit = n > 0
+      if (n > 1) stress = stress/real(n, wp)
+   end subroutine mean_stress_at
 
 end module pecplas_fe_initial

@@ -17,8 +17,8 @@ module pecplas_problem_arc_trace
    !> What a path is: none under way, a *STEP, CONTROL=ARC_LENGTH, or the probe of a
    !> load-controlled step that could not be converged at any cut.
    integer, parameter :: PATH_NONE = 0, PATH_STEP = 1, PATH_PROBE = 2
-   !> Length of the packed vector.
-   integer, parameter, public :: ARC_VECTOR = 26
+   !> Length of the packed vector (ARC_VECTOR_V1: restart data written before s_peak).
+   integer, parameter, public :: ARC_VECTOR = 27, ARC_VECTOR_V1 = 26
 
    type :: arc_request_t
       integer :: origin = PATH_STEP
@@ -42,8 +42,13 @@ module pecplas_problem_arc_trace
       real(wp) :: tau = 0.0_wp
       integer :: increments = 0
       !> Peak: largest step fraction, where (global increment), increments traced beyond it,
-      !> last current stiffness parameter; flat: the plateau criterion held.
+      !> last current stiffness parameter; flat: the plateau criterion held. The path starts
+      !> at its first state (tau_start), so the peak is never below the load it started from.
       real(wp) :: tau_peak = -huge(1.0_wp), sp = 1.0_wp
+      !> Displacement conjugate to the step's load, q.u, at the peak: an increment counts as
+      !> beyond the peak only when the loaded points have moved on past it (else the path
+      !> turned back onto an unloading branch).
+      real(wp) :: s_peak = -huge(1.0_wp)
       integer :: peak_increment = 0, beyond = 0
       real(wp), allocatable :: peak_factors(:)
       logical :: flat = .false.
@@ -82,14 +87,16 @@ contains
             real(q%cuts, wp), this%dl, this%dl0, real(this%level, wp), real(this%nflat, wp), &
             flag(this%lc_mode), flag(this%started), r%tau, real(r%increments, wp), &
             r%tau_peak, r%sp, real(r%peak_increment, wp), real(r%beyond, wp), flag(r%flat), &
-            flag(r%mechanism), real(r%flat_increment, wp), r%tau_flat]
+            flag(r%mechanism), real(r%flat_increment, wp), r%tau_flat, r%s_peak]
       end associate
    end function trace_to_vector
 
-   !> The trace of `v` (from to_vector), with its peak factors and the probe's reason.
+   !> The trace of `v` (from to_vector, ARC_VECTOR or ARC_VECTOR_V1 long: then no s_peak, so
+   !> every increment below the peak counts as beyond it, as then), with its peak factors
+   !> and the probe's reason.
    subroutine trace_from_vector(this, v, peak_factors, why)
       class(arc_trace_t), intent(out) :: this
-      real(wp), intent(in) :: v(ARC_VECTOR), peak_factors(:)
+      real(wp), intent(in) :: v(:), peak_factors(:)
       character(len=*), intent(in) :: why
       associate (q => this%req, r => this%res)
          q%origin = nint(v(1)); q%tau_start = v(2); q%tau_pass = v(3); q%dl = v(4)
@@ -100,6 +107,7 @@ contains
          r%tau = v(17); r%increments = nint(v(18)); r%tau_peak = v(19); r%sp = v(20)
          r%peak_increment = nint(v(21)); r%beyond = nint(v(22)); r%flat = v(23) /= 0.0_wp
          r%mechanism = v(24) /= 0.0_wp; r%flat_increment = nint(v(25)); r%tau_flat = v(26)
+         if (size(v) >= ARC_VECTOR) r%s_peak = v(27)
          r%peak_factors = peak_factors
          r%reason = ''
       end associate

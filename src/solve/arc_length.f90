@@ -19,7 +19,9 @@ module pecplas_solve_arc_length
 
 contains
 
-   !> dtau of the corrector (see the module); ok false when the roots are complex.
+   !> dtau of the corrector (see the module); without a real root it is the vertex -b/(2a)
+   !> and ok is true. ok is false only when a = v_q.v_q is not positive (v_q zero or NaN) or
+   !> dtau is NaN.
    !> `direction` (default du): the increment the new one should not turn back from (the
    !> predictor's direction when du is still zero).
    subroutine arc_root(du, vr, vq, dl, dtau, ok, direction)

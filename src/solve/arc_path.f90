@@ -5,13 +5,22 @@
 !> maximum of the load that the path has passed, or a failure.
 !> Used by *STEP, CONTROL=ARC_LENGTH and, from a force-controlled step that cannot be
 !> converged, as the probe that tells a limit load from a convergence failure.
+!>
+!> The path starts at its first state, which is its first candidate for the peak, and goes
+!> forward: its first increment raises the step fraction (the operator's response at a state
+!> where the tangent fails is no guide to the direction), later ones follow the previous
+!> increment. A maximum counts as passed only when the displacement conjugate to the step's
+!> load, s = q.u, has moved on beyond the peak's; an arc increment that ends below the peak
+!> with s back behind it has turned onto an unloading branch (its load fell because the
+!> structure unloaded, not because it passed a maximum) and is refused like one that did not
+!> converge: the length is halved.
 module pecplas_solve_arc_path
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t
    use pecplas_problem_type, only: problem_t
-   use pecplas_solve_iterate, only: attempt_t, outcome_t
+   use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_arc_length, only: adapt_length
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_request_t, arc_end_t, END_TARGET, &
@@ -54,8 +63,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(attempt_t) :: att
       type(outcome_t) :: out
-      real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
-      real(wp) :: tau, k_inc, time
+      real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
+      real(wp) :: tau, k_inc, time, s
       integer :: method, wanted
       logical :: landed
 
@@ -64,6 +73,7 @@ contains
          att%f0 = f0
          att%ftarget = ftarget
          wanted = step%iterations_wanted
+         call step_load(problem, f0, ftarget, fq)
          if (tr%started) then
             ! a restored path: the checks the interrupted run made after its last increment
             tau = res%tau
@@ -82,6 +92,12 @@ contains
             lc_mode = .false.
             res%tau = tau
             res%reason = ''
+            ! the first state of the path: the peak until an increment rises above it
+            res%tau_peak = tau
+            res%peak_increment = problem%stats%increments
+            res%peak_factors = att%factors(tau)
+            res%s_peak = sum(fq*problem%state%u)
+            res%beyond = 0
             tr%started = .true.
          end if
          do while (res%increments < req%max_increments)
@@ -105,7 +121,10 @@ contains
                att%dl = dl
                att%tau0 = tau
                att%tau1 = tau
-               if (allocated(run%du_prev)) att%du_prev = run%du_prev
+               ! the first increment of the path raises the load (no previous increment
+               ! directs the predictor), the next ones follow the previous increment
+               if (allocated(att%du_prev)) deallocate (att%du_prev)
+               if (allocated(run%du_prev) .and. res%increments > 0) att%du_prev = run%du_prev
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
                landed = .false.
@@ -138,6 +157,17 @@ contains
                         g6(att%tau1)//'): '//out%reason
                   end if
                end if
+               if (att%arc .and. out%converged) then
+                  if (turned_back(res, out%tau, sum(fq*u), load_noise(problem, model%solver% &
+                      tolerance, att, out%tau, reaction, fq))) then
+                     out%converged = .false.
+                     res%mechanism = .false.
+                     out%reason = 'the path turns back: the arc increment ends at step '// &
+                        'fraction '//g6(out%tau)//', below the largest '//g6(res%tau_peak)// &
+                        ', with the loaded points moved back (an unloading branch, no '// &
+                        'maximum passed)'
+                  end if
+               end if
             end if
             if (.not. out%converged) then
                call problem%state%rollback()
@@ -164,10 +194,12 @@ contains
             if (landed) time = real(istep, wp)
             ! the load's maximum along the path, and whether it is flat (this increment will
             ! be the run's number problem%stats%increments + 1, at the factors accept_increment sets)
+            s = sum(fq*u)
             if (tau > res%tau_peak) then
                res%tau_peak = tau
                res%peak_increment = problem%stats%increments + 1
-               res%peak_factors = att%f0 + (att%ftarget - att%f0)*tau
+               res%peak_factors = att%factors(tau)
+               res%s_peak = s
                res%beyond = 0
             else
                res%beyond = res%beyond + 1
@@ -234,6 +266,43 @@ contains
          kind = END_LIMIT
       end if
    end function path_end
+
+   !> The step's load per unit fraction, q (nodal layout), whose product with the
+   !> displacements, s = q.u, is the displacement conjugate to the step's load.
+   subroutine step_load(problem, f0, ftarget, fq)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      real(wp), allocatable, intent(out) :: fq(:, :)
+      real(wp), allocatable :: fbase(:, :), up(:, :)
+      call load_vectors(problem, f0, ftarget, 0.0_wp, fbase, fq, up)
+   end subroutine step_load
+
+   !> An arc increment to step fraction tau with conjugate displacement s has turned back:
+   !> it ends below the peak of the path with s not beyond the peak's, before a maximum is
+   !> established (after that the path may go back, e.g. a snap-back).
+   pure logical function turned_back(res, tau, s, noise)
+      type(arc_end_t), intent(in) :: res
+      real(wp), intent(in) :: tau, s, noise
+      turned_back = tau < res%tau_peak - noise .and. s <= res%s_peak .and. &
+         res%beyond < BEYOND_PEAK .and. .not. res%flat
+   end function turned_back
+
+   !> How far the step fraction of two converged states may differ by the convergence test
+   !> alone: each leaves a residual up to tol max(||F_ext||, ||reactions||), worth that over
+   !> ||q|| in step fraction (q the step's load on the free equations).
+   real(wp) function load_noise(problem, tol, att, tau, reaction, fq) result(noise)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: tol, tau, reaction(:, :), fq(:, :)
+      type(attempt_t), intent(in) :: att
+      real(wp), allocatable :: fbase(:, :), fq_(:, :), up(:, :)
+      real(wp) :: qn
+      noise = 0.0_wp
+      qn = norm2(free_part(problem, fq))
+      if (.not. (qn > 0.0_wp)) return
+      call load_vectors(problem, att%f0, att%ftarget, tau, fbase, fq_, up)
+      noise = 2.0_wp*tol*max(norm2(free_part(problem, fbase + tau*fq_ - &
+         problem%system%initial_force)), norm2(reaction))/qn
+   end function load_noise
 
    !> Length of an increment that would raise the step fraction by dtau along the response
    !> of the run's factorised matrix to the step's load.

@@ -6,19 +6,24 @@
 !> Statuses, each a claim about the run:
 !>   completed   every step reached its end;
 !>   limit load  the load-displacement path has a maximum: the arc-length path passed it (the
-!>               load fell in two increments after it) or became flat (current stiffness
-!>               parameter ~ 0); under load control a step that cannot be converged is probed
-!>               by arc-length from the last converged state, which either passes the failed
-!>               load (the run goes on) or establishes the maximum; /limit stores where;
-!>   diverged    no equilibrium was found, with the reason of each method;
-!>   stopped     an arc-length step used its MAX_INCREMENTS before its target.
+!>               load fell in two increments after it while the loaded points moved on) or
+!>               became flat (current stiffness parameter ~ 0); under load control a step
+!>               that cannot be converged is probed by arc-length from the last converged
+!>               state, which either passes the failed load (the run goes on) or establishes
+!>               the maximum; /limit stores the largest converged load of the path (the
+!>               probe's start included), never a load the path fell to;
+!>   diverged    no equilibrium was found, with the reason of each method and the last
+!>               converged state (increment, load factors);
+!>   stopped     an arc-length step used its MAX_INCREMENTS before its target;
+!>   interrupted a termination signal or --stop-after-increments: the run stopped after a
+!>               converged increment and goes on with --restart.
 module pecplas_solve_increments
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t
    use pecplas_problem_type, only: problem_t
-   use pecplas_solve_iterate, only: attempt_t, outcome_t
+   use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_arc_path, only: trace_arc
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &
@@ -36,7 +41,8 @@ module pecplas_solve_increments
 
 contains
 
-   !> Runs every step. `status`: 'completed', 'limit load', 'diverged' or 'stopped';
+   !> Runs every step. `status`: 'completed', 'limit load', 'diverged', 'stopped' or
+   !> 'interrupted' (a termination signal, or the --stop-after-increments test hook);
    !> `message` says why a run stopped. Converged increments are written as they come.
    !> `limit`: where the limit is, when the status is 'limit load' (as written to /limit).
    subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
@@ -149,13 +155,15 @@ contains
                      cycle
                   end if
                   if (.not. probe_allowed(model, f0, ftarget)) then
-                     call diverged(step, istep, tau + dt, level, out%reason, status, message)
+                     call diverged(model, problem, istep, tau + dt, level, out%reason, status, &
+                        message)
                      return
                   end if
                   ! cannot be converged at any cut: is it a maximum of the load?
                   if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
                      'probing the path by arc-length from the last converged state'
-                  call probe_request(model, istep, tau, dt, level, out%reason, run%du_prev, probe)
+                  call probe_request(model, istep, tau, dt, level, out%reason, run%k_first, &
+                     probe)
                end if
                probing = .false.
                call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, probe, &
@@ -181,13 +189,14 @@ contains
                      if (mechanism(res)) then
                         call limit_reached(model, problem, run, step, istep, res, status, message)
                      else
-                        call diverged(step, istep, tau + dt, level, why//'; the '// &
+                        call diverged(model, problem, istep, tau + dt, level, why//'; the '// &
                            'arc-length probe from fraction '//g6(tau)//' '//probe_failure(res), &
                            status, message)
                      end if
                   case default
-                     call diverged(step, istep, tau + dt, level, why//'; the arc-length '// &
-                        'probe from fraction '//g6(tau)//' '//probe_failure(res), status, message)
+                     call diverged(model, problem, istep, tau + dt, level, why//'; the '// &
+                        'arc-length probe from fraction '//g6(tau)//' '//probe_failure(res), &
+                        status, message)
                   end select
                end associate
                return
@@ -264,8 +273,8 @@ contains
             if (mechanism(res)) then
                call limit_reached(model, problem, run, step, istep, res, status, message)
             else
-               call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
-                  message)
+               call diverged(model, problem, istep, res%tau, model%solver%max_cuts, &
+                  res%reason, status, message)
             end if
          case (END_MAX)
             status = 'stopped'
@@ -273,29 +282,33 @@ contains
                itoa(step%max_increments)//' arc-length increments used at step fraction '// &
                g6(res%tau)//' before the target (no maximum of the load on the way)'
          case default
-            call diverged(step, istep, res%tau, model%solver%max_cuts, res%reason, status, &
-               message)
+            call diverged(model, problem, istep, res%tau, model%solver%max_cuts, res%reason, &
+               status, message)
          end select
       end associate
    end subroutine arc_step
 
    !> The limit probe of a load-controlled step whose increment from fraction `tau` (size
    !> `dt`, `cuts` halvings) failed for `why`: an arc-length path from the last converged
-   !> state, first length that of the last converged increment (`du_prev`, else along the
-   !> stiffness response), that ends as soon as it passes tau + dt rising or shows a limit.
-   subroutine probe_request(model, istep, tau, dt, cuts, why, du_prev, probe)
+   !> state that ends as soon as it passes tau + dt rising or shows a limit. Its first
+   !> length is the displacement the step's initial stiffness `k_first` (fraction per unit
+   !> displacement of its first increment) gives for dt; without a converged increment in
+   !> the step, the response of the factorised operator to dt. Not the length of the last
+   !> increment: near a limit that increment may have run far along the plateau, and an arc
+   !> that long from a state where the tangent fails converges, if at all, on an unloading
+   !> branch.
+   subroutine probe_request(model, istep, tau, dt, cuts, why, k_first, probe)
       type(model_t), intent(in) :: model
       integer, intent(in) :: istep, cuts
-      real(wp), intent(in) :: tau, dt
+      real(wp), intent(in) :: tau, dt, k_first
       character(len=*), intent(in) :: why
-      real(wp), allocatable, intent(in) :: du_prev(:)
       type(arc_trace_t), intent(out) :: probe
       associate (req => probe%req)
          req%origin = PATH_PROBE
          req%tau_start = tau
          req%tau_pass = tau + dt
          req%dl = 0.0_wp
-         if (allocated(du_prev)) req%dl = norm2(du_prev)
+         if (k_first > 0.0_wp) req%dl = dt/k_first
          req%dtau_first = dt
          req%max_increments = model%solver%limit_probe
          req%stop_at_limit = .true.
@@ -335,7 +348,6 @@ contains
       integer, intent(in) :: istep
       type(arc_end_t), intent(in) :: res
       character(len=:), allocatable, intent(inout) :: status, message
-      integer :: p
       status = 'limit load'
       run%limit%step = istep
       run%limit%stiffness_parameter = res%sp
@@ -366,12 +378,8 @@ contains
             itoa(problem%stats%increments - res%flat_increment)//' increments along it, its '// &
             'largest load at step fraction '//g6(res%tau_peak)
       end if
-      message = message//'; load factors at the peak:'
-      do p = 1, size(run%limit%pattern_factors)
-         if (run%limit%pattern_factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
-            message = message//' '//model%patterns(p)%name//' = '// &
-            g6(run%limit%pattern_factors(p))
-      end do
+      message = message//'; load factors at the peak:'//factors_text(model, step, &
+         run%limit%pattern_factors)
       if (problem%stats%increments > 0) message = message//'; every converged increment is in '// &
          'the results file (/limit says where the peak is)'
    end subroutine limit_reached
@@ -416,17 +424,43 @@ contains
          res%mechanism
    end function mechanism
 
-   subroutine diverged(step, istep, tau_failed, cuts, reason, status, message)
-      type(step_t), intent(in) :: step
+   !> Status 'diverged': where and why, and the last converged state (its increment and
+   !> load factors: the largest load the run can vouch for), kept in the results file.
+   subroutine diverged(model, problem, istep, tau_failed, cuts, reason, status, message)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
       integer, intent(in) :: istep, cuts
       real(wp), intent(in) :: tau_failed
       character(len=*), intent(in) :: reason
       character(len=:), allocatable, intent(inout) :: status, message
-      status = 'diverged'
-      message = 'step '//itoa(istep)//' ('//step%name//') did not converge at step '// &
-         'fraction '//g6(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
-         '); last converged state kept in the results file'
+      associate (step => model%steps(istep))
+         status = 'diverged'
+         message = 'step '//itoa(istep)//' ('//step%name//') did not converge at step '// &
+            'fraction '//g6(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
+            '); last converged state: '
+         if (problem%stats%increments > 0) then
+            message = message//'increment '//itoa(problem%stats%increments)//', load '// &
+               'factors'//factors_text(model, step, problem%state%factors)
+         else
+            message = message//'the initial state'
+         end if
+         message = message//', kept in the results file'
+      end associate
    end subroutine diverged
+
+   !> ' name = value' for each pattern that has a factor or that the step drives.
+   function factors_text(model, step, factors) result(text)
+      type(model_t), intent(in) :: model
+      type(step_t), intent(in) :: step
+      real(wp), intent(in) :: factors(:)
+      character(len=:), allocatable :: text
+      integer :: p
+      text = ''
+      do p = 1, size(factors)
+         if (factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
+            text = text//' '//model%patterns(p)%name//' = '//g6(factors(p))
+      end do
+   end function factors_text
 
    function probe_failure(res) result(text)
       type(arc_end_t), intent(in) :: res

@@ -12,6 +12,7 @@
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
+!> newton_method_t is this solver behind the contract of pecplas_solve_method.
 module pecplas_solve_iterate
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
@@ -24,44 +25,20 @@ module pecplas_solve_iterate
    use pecplas_solve_line_search, only: line_search_t
    use pecplas_solve_arc_length, only: arc_root, arc_predictor_sign
    use pecplas_solve_residual, only: load_vectors, free_residual, free_part, add_free, &
-      joint_signature
-   use pecplas_fe_assembly, only: internal_forces
+      joint_signature, internal_forces_at
+   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
    use pecplas_fe_imposed, only: imposed_forces
    implicit none (type, external)
    private
 
-   public :: attempt_t, outcome_t, iterate_increment
+   public :: newton_method_t
 
-   !> What to try: method, line search, control, and the step's load path
-   !> factors(tau) = f0 + (ftarget - f0) tau.
-   type :: attempt_t
-      integer :: method = METHOD_MODIFIED
-      logical :: line_search = .false.
-      !> Give up as soon as the residual's rate shows the cap will be missed (a later method
-      !> of the chain takes over); false for the last method, which runs to the cap.
-      logical :: give_up_early = .false.
-      !> Arc-length control (tau unknown, ||Δu|| = dl); else load control to tau1.
-      logical :: arc = .false.
-      real(wp) :: dl = 0.0_wp
-      !> Previous converged free increment (the arc predictor's sign); may be empty.
-      real(wp), allocatable :: du_prev(:)
-      real(wp), allocatable :: f0(:), ftarget(:)
-      real(wp) :: tau0 = 0.0_wp, tau1 = 0.0_wp
-   end type attempt_t
-
-   type :: outcome_t
-      logical :: converged = .false., blowup = .false.
-      integer :: iterations = 0, line_searches = 0
-      real(wp) :: residual = 0.0_wp
-      !> Step fraction reached (tau1 under load control).
-      real(wp) :: tau = 0.0_wp
-      !> Why it failed ('' when converged); singular: the system of the states the iteration
-      !> reached has no unique solution (a mechanism under those states).
-      character(len=:), allocatable :: reason
-      logical :: singular = .false.
-      !> Free displacement increment of the increment.
-      real(wp), allocatable :: du(:)
-   end type outcome_t
+   !> Modified Newton, quasi-Newton (BFGS) and full Newton (att%method), with or without
+   !> line search, under load or arc-length control.
+   type, extends(increment_method_t) :: newton_method_t
+   contains
+      procedure :: solve_increment => newton_solve_increment
+   end type newton_method_t
 
    !> Early give-up of a method that is not the chain's last (see `hopeless`).
    !> Memory of the BFGS pairs (2 n reals each): every pair of the increment while they fit
@@ -71,6 +48,20 @@ module pecplas_solve_iterate
    integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
 
 contains
+
+   !> The contract of pecplas_solve_method: iterate_increment.
+   subroutine newton_solve_increment(this, model, problem, att, fint_conv, u, fint, reaction, &
+         out, error)
+      class(newton_method_t), intent(inout) :: this
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(attempt_t), intent(in) :: att
+      real(wp), intent(in) :: fint_conv(:, :)
+      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
+      type(outcome_t), intent(out) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call iterate_increment(model, problem, att, fint_conv, u, fint, reaction, out, error)
+   end subroutine newton_solve_increment
 
    !> One increment from the converged state (problem%state, with internal forces
    !> `fint_conv`): u, fint (internal forces) and reaction at the end, and the outcome.
@@ -277,14 +268,7 @@ contains
       subroutine forces(uu, err)
          real(wp), intent(in) :: uu(:, :)
          type(error_t), allocatable, intent(out) :: err
-         real(wp) :: t0
-         t0 = wall_time()
-         call internal_forces(model, problem%system%rules, uu, problem%state, fint, err, &
-            problem%stats%time%laws)
-         problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
-         if (allocated(err)) then
-            if (err%kind /= ERR_SINGULAR) err%kind = ERR_RUN
-         end if
+         call internal_forces_at(model, problem, uu, fint, err)
       end subroutine forces
 
       !> BFGS pair from the step du_step (nodal layout) and the change of free internal forces.

@@ -13,7 +13,8 @@ module pecplas_solve_restart
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
-   use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR
+   use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
+      ARC_VECTOR_V1
    use pecplas_solve_stiffness, only: factorise_values, partitioned
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
@@ -283,7 +284,12 @@ contains
          end if
          p%path = PATH_NONE
          if (.not. data%has('arc')) return
-         call data%get('arc', 1 + ARC_VECTOR, v, error)
+         ! (restart data of an older version: ARC_VECTOR_V1 numbers)
+         if (data%length('arc') == 1 + ARC_VECTOR_V1) then
+            call data%get('arc', 1 + ARC_VECTOR_V1, v, error)
+         else
+            call data%get('arc', 1 + ARC_VECTOR, v, error)
+         end if
          if (allocated(error)) return
          if (.not. any(v(1) == real([PATH_NONE, PATH_STEP, PATH_PROBE], wp))) then
             call fatal_error(error, 'restart data arc names no kind of path')

@@ -1,5 +1,5 @@
 """Full Newton on an imposed settlement: the smooth rigid strip footing on von Mises soil of
-tools/make_footing_peer_decks.py (c_u = 100 kPa, E = 1e5 kPa, weightless, 0.05 m in 20
+pecplas_py.decks.make_footing_peer_decks (c_u = 100 kPa, E = 1e5 kPa, weightless, 0.05 m in 20
 increments, TOLERANCE=1e-4; 2 675 equations with Q4, 2 003 with Q8 and Q8R).
 
 Each element completes the 20 increments with no cut and at most 5 iterations per increment
@@ -11,20 +11,13 @@ reaction at the last increment - is within 0.5 % of CalculiX's on the same mesh 
 increment entered the first iteration through the tangent (doc/theory.md §4) these runs took
 140, 187 and 881 iterations, Q8R with 4 cuts.
 """
-import sys
-from pathlib import Path
-
 import h5py
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import make_footing_peer_decks as decks  # noqa: E402
+from pecplas_py.decks import make_footing_peer_decks as decks
+from deck_runs import run
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from deck_runs import run  # noqa: E402
-
-#: CalculiX 2.20's plateau on the same meshes (kPa; tools/bench_peer.py, footing rows)
+#: CalculiX 2.20's plateau on the same meshes (kPa; pecplas_py.bench.peer_footing)
 CCX_PLATEAU = {"Q4": 563.9, "Q8": 535.5, "Q8R": 525.8}
 
 

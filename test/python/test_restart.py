@@ -60,16 +60,16 @@ def interrupted_and_restarted(tmp_path, deck, n):
     # Katona, friction limit: stopped after increment cuts (the halved size is resumed)
     ("test/data/katona/pad_slip.inp", 6)])
 def test_restart_equals_uninterrupted(tmp_path, deck, n):
-    """Final displacements and joint stresses equal the uninterrupted run's to 1e-12
-    (relative to their largest value: the same arithmetic from the same state, roundoff
-    only); the restarted history continues the interrupted one row for row."""
+    """Final displacements and joint stresses equal the uninterrupted run's to the last bit
+    (the same arithmetic from the same state, on the same machine and thread setting); the
+    restarted history continues the interrupted one row for row."""
     (ua, ja, rows_a, st_a), (_, _, rows_b, _), (uc, jc, rows_c, st_c) = \
         interrupted_and_restarted(tmp_path, deck, n)
     assert st_a == st_c
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
     assert ja.keys() == jc.keys()
     for name in ja:
-        assert np.abs(jc[name] - ja[name]).max() <= 1e-12 * np.abs(ja[name]).max(), name
+        assert np.array_equal(jc[name], ja[name]), name
     assert rows_b + rows_c == rows_a
 
 
@@ -90,7 +90,7 @@ def test_restart_from_another_deck_is_refused(tmp_path):
 def test_sigterm_then_restart_equals_uninterrupted(tmp_path):
     """A real SIGTERM (what Slurm sends before its kill) in the middle of the MODJOIN cyclic
     run: exit 4, status 'interrupted'; the run restarted from that file ends where the
-    uninterrupted run ends (displacements and joint stresses to 1e-12). The signal's moment
+    uninterrupted run ends (displacements and joint stresses to the last bit). The signal's moment
     is the machine's: the assertion holds wherever it lands."""
     import signal
     import time
@@ -120,9 +120,9 @@ def test_sigterm_then_restart_equals_uninterrupted(tmp_path):
     ua, ja, _, _ = last_fields(full)
     uc, jc, _, _ = last_fields(rest)
     print(f"SIGTERM after {done} of {total} increments; restarted to the end")
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
     for name in ja:
-        assert np.abs(jc[name] - ja[name]).max() <= 1e-12 * np.abs(ja[name]).max(), name
+        assert np.array_equal(jc[name], ja[name]), name
 
 
 
@@ -169,8 +169,8 @@ def restart_links(path, set_name):
     (2, set())])
 def test_restart_from_linked_or_copied_data(tmp_path, every, linked):
     """The MODJOIN cyclic run stopped after 31 increments and restarted equals the
-    uninterrupted run to 1e-12 (final displacements and joint stresses relative to their
-    largest value: the same arithmetic from the same state), whether its restart data are
+    uninterrupted run to the last bit (final displacements and joint stresses: the same
+    arithmetic from the same state), whether its restart data are
     links to the fields of the last increment or copies of their own."""
     deck = variant(tmp_path, CYCLIC, "*OUTPUT, EVERY=1\n", f"*OUTPUT, EVERY={every}\n")
     (ua, ja, rows_a, st_a), (_, _, rows_b, _), (uc, jc, rows_c, st_c) = \
@@ -179,9 +179,9 @@ def test_restart_from_linked_or_copied_data(tmp_path, every, linked):
     assert fields == (every == 1)
     assert {n for n, t in links.items() if t} == linked, links
     assert st_a == st_c == "completed"
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
     for name in ja:
-        assert np.abs(jc[name] - ja[name]).max() <= 1e-12 * np.abs(ja[name]).max(), name
+        assert np.array_equal(jc[name], ja[name]), name
     assert rows_b + rows_c == rows_a
 
 
@@ -190,8 +190,8 @@ def test_plastic_restart_links_copies_and_values_agree(tmp_path):
     first increments) stopped after 13 of its increments, its restart data links (fields
     every increment, the history included), copies (fields every 2nd increment) or values
     of fields not written (no stresses or strains in the fields): the three restarts end
-    with the displacements of the uninterrupted run to 1e-12 of their largest (the same
-    state and the same last factorised tangent restored, the same arithmetic)."""
+    with the displacements of the uninterrupted run to the last bit (the same state and the
+    same last factorised tangent restored, the same arithmetic)."""
     ends = {}
     for output, expect in [("*OUTPUT, EVERY=1", {"u", "stress_1", "strain_1", "hist_1"}),
                            ("*OUTPUT, EVERY=2", set()),
@@ -205,9 +205,8 @@ def test_plastic_restart_links_copies_and_values_agree(tmp_path):
         assert {n for n, t in links.items() if t} == expect, (output, links)
         assert st == "completed"
         ends[output] = uc
-    scale = np.abs(ua).max()
     for output, uc in ends.items():
-        assert np.abs(uc - ua).max() <= 1e-12 * scale, output
+        assert np.array_equal(uc, ua), output
 
 
 def test_restart_of_a_fallback_run_carries_its_tangent(tmp_path):
@@ -215,8 +214,8 @@ def test_restart_of_a_fallback_run_carries_its_tangent(tmp_path):
     converge only by the full-Newton fallback, which keeps its own factorisation of the
     tangent and starts each increment with it. Stopped after 40 increments, the restart data
     hold that matrix (`tangent_operator`, not the run's own stiffness, which is still the
-    set-up one) and the restarted run ends on the uninterrupted run's displacements to 1e-12
-    of their largest (without it: 4.9e-7)."""
+    set-up one) and the restarted run ends on the uninterrupted run's displacements to the
+    last bit (without it: 4.9e-7 of their largest)."""
     deck = variant(tmp_path, FOOTING, "METHOD=NEWTON, TOLERANCE", "METHOD=MODIFIED_NEWTON, TOLERANCE")
     (ua, _, _, st_a), _, (uc, _, _, st_c) = interrupted_and_restarted(tmp_path, deck, 40)
     with h5py.File(tmp_path / "full.h5") as f:
@@ -226,7 +225,7 @@ def test_restart_of_a_fallback_run_carries_its_tangent(tmp_path):
         assert list(r["operators"][:2]) == [0.0, 1.0]
         assert "tangent_operator" in r and "operator" not in r
     assert st_a == st_c == "completed"
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
 
 
 def test_restart_without_the_matrix(tmp_path):
@@ -340,8 +339,8 @@ def limit_of(path):
     100])
 def test_restart_inside_an_arc_length_step(tmp_path, n):
     """MODJOIN CNL shear under force control with CONTROL=ARC_LENGTH (peak and softening),
-    stopped after n increments and restarted: the same final displacements to 1e-12 of the
-    largest, the same status 'limit load' and the same limit (increment, fraction, load
+    stopped after n increments and restarted: the same final displacements to the last
+    bit, the same status 'limit load' and the same limit (increment, fraction, load
     factors, exactly: the path's peak is part of the carried state)."""
     d = ROOT / "test/data/modjoin/fe_cnl_force_arc.inp"
     (ua, _, rows_a, st_a), (_, _, rows_b, _), (uc, _, rows_c, st_c) = \
@@ -349,7 +348,7 @@ def test_restart_inside_an_arc_length_step(tmp_path, n):
     assert st_a == st_c == "limit load"
     assert rows_b + rows_c == rows_a
     assert limit_of(tmp_path / "rest.h5") == limit_of(tmp_path / "full.h5")
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
 
 
 def test_restart_inside_a_limit_probe(tmp_path):
@@ -358,7 +357,7 @@ def test_restart_inside_a_limit_probe(tmp_path):
     probe takes over (doc/theory.md §4). Stopped after 24 increments, inside the probe, and
     restarted: the probe goes on (it looped for ever on zero-size load increments before the
     probe's state was carried) and the run ends as the uninterrupted one, status 'limit
-    load' with the same limit and final displacements to 1e-12 of the largest."""
+    load' with the same limit and final displacements to the last bit."""
     text = deck(nf=2, stiff_footing=True, drive="pressure", pressure=70.0, increments=20,
                 solver="*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=30, MAX_CUTS=8")
     d = tmp_path / "force.inp"
@@ -369,7 +368,7 @@ def test_restart_inside_a_limit_probe(tmp_path):
     assert control[:23].sum() == 0 and control[23] == 1  # increment 24 is the probe's first
     assert st_a == st_c == "limit load"
     assert limit_of(tmp_path / "rest.h5") == limit_of(tmp_path / "full.h5")
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
 
 
 @pytest.mark.parametrize("deck,every", [
@@ -382,8 +381,8 @@ def test_restart_inside_a_limit_probe(tmp_path):
 def test_restart_anywhere(tmp_path, deck, every):
     """Stopped after every `every`-th increment and restarted, each run stops after exactly
     that increment and the restarted one ends as the uninterrupted one: the same status, the same limit when there is one, the same final
-    displacements to 1e-12 of the largest (the restart data carry all the run's arithmetic
-    depends on, wherever it stops)."""
+    displacements to the last bit (the restart data carry all the run's arithmetic depends
+    on, wherever it stops)."""
     d = ROOT / deck
     full = tmp_path / "full.h5"
     r = run([d, "-o", full], d.parent)
@@ -402,7 +401,7 @@ def test_restart_anywhere(tmp_path, deck, every):
         assert len(rows) == total - n, (n, len(rows))
         err = np.abs(uc - ua).max() / np.abs(ua).max()
         same_limit = st_a != "limit load" or limit_of(rest) == limit_of(full)
-        if st_c != st_a or err > 1e-12 or not same_limit:
+        if st_c != st_a or err != 0.0 or not same_limit:
             bad.append((n, st_c, err, same_limit))
         part.unlink()
         rest.unlink()
@@ -415,7 +414,7 @@ def test_exact_restart_modes(tmp_path):
     a signal), so a run that is not stopped writes none (its cost per increment is saved).
     ALWAYS: written with every increment, so that even a run killed outright (SIGKILL, no
     chance to write anything more) restarts from its `.tmp` file to the uninterrupted run's
-    final displacements within 1e-12 of the largest."""
+    final displacements to the last bit."""
     import signal
     import time
     d = ROOT / "test/data/modjoin/fe_cyclic.inp"
@@ -448,7 +447,7 @@ def test_exact_restart_modes(tmp_path):
     uc, _, _, _ = last_fields(rest)
     with h5py.File(left[0]) as f:
         print(f"SIGKILL after {len(f['history/step'])} increments; restarted to the end")
-    assert np.abs(uc - ua).max() <= 1e-12 * np.abs(ua).max()
+    assert np.array_equal(uc, ua)
 
 
 @pytest.mark.parametrize("damaged,item", [
@@ -530,6 +529,9 @@ def test_restart_from_a_file_written_before_checksums(tmp_path):
     r = run_oedometer("-o", full)
     assert r.returncode == 0, r.stderr
     u1, u2 = last_fields(out)[0], last_fields(full)[0]
+    # not to the last bit: the fixture's state was computed by another build, whose rounding
+    # the last increments carry on (4.7e-16 of the largest displacement measured with three
+    # OpenBLAS kernels); 1e-12 is a margin, not a bound derived from the tangent's condition
     assert np.max(np.abs(u1 - u2)) <= 1e-12 * np.max(np.abs(u2))
 
 
@@ -600,4 +602,4 @@ def test_deck_longer_than_the_stack_runs_stops_and_restarts(tmp_path):
     assert status == status_rest == "completed"
     assert rows_rest == rows_full[3:]  # the restarted file holds the increments after 3
     # linear elastic oedometer: the restarted run repeats the uninterrupted one to roundoff
-    assert np.max(np.abs(u_rest - u_full)) <= 1e-12 * np.max(np.abs(u_full))
+    assert np.array_equal(u_rest, u_full)
