@@ -112,8 +112,8 @@ def test_limit_probe_under_load_control(tmp_path):
                         pressure=pressure, increments=n, solver=solver)
             p, status, hist, limit, _ = run_deck(text, tmp_path, f"load{nf}_{n}")
             loads = hist["pattern_factors"][:, 0]
-            with h5py.File(tmp_path / f"load{nf}_{n}.h5", "r") as f:
-                message = f.attrs["status_message"]
+            with Results(tmp_path / f"load{nf}_{n}.h5") as f:
+                message = f.attr("status_message")
             if status == "limit load":
                 peak = limit["factors"][0]
                 print(f"nf = {nf}, {n} increments: limit load {peak:.3f} kPa "
