@@ -219,8 +219,10 @@ contains
             tiny(1.0_wp), 'spring points at their face-1 nodes')
          if (allocated(error)) return
       end associate
-      call execute_command_line('python3 -m pecplas_py.checks.check_results '//out//' --expect-status '// &
-         'completed > '//DIR//'/check.log 2>&1', exitstat=stat)
+      ! the tools' package from tools/ (the test runs in the project root), whoever runs it
+      call execute_command_line('PYTHONPATH=tools${PYTHONPATH:+:$PYTHONPATH} python3 -m '// &
+         'pecplas_py.checks.check_results '//out//' --expect-status completed > '//DIR// &
+         '/check.log 2>&1', exitstat=stat)
       call check(error, stat == 0, 'tools/pecplas_py/checks/check_results.py passes (see '//DIR//'/check.log)')
    end subroutine test_results
 

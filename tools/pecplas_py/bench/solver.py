@@ -8,8 +8,8 @@
    pecplas-bench-bare, in a process of its own, a bare CHOLMOD analyse + factorise + solve
    of the SAME matrix (written by the run to an HDF5 file, read untimed); the ratio
    total / bare is the price of everything that is not the sparse factorisation. Both run
-   under the same thread setting (OMP_NUM_THREADS: OpenMP, CHOLMOD's team and the BLAS, see
-   doc/deck.md *SOLVER THREADS=), 1 and 2 threads; each case is run REPEATS times and reported
+   under the same thread setting (OMP_NUM_THREADS, each part's threads as the program's rule
+   gives them, see doc/deck.md *SOLVER THREADS=), 1 and 2 threads; each case is run REPEATS times and reported
    as median and spread (min-max), with the 1-minute load average at the start of each case:
    a rerun on a quiet machine should land within the spread.
 
@@ -244,11 +244,10 @@ def solver_fragment(rows):
     md += overhead_lines(rows)
     md += cpu_lines(rows)
     if any(dict(zip(COLUMNS + EXTRA, r))["threads"] > 1 for r in rows):
-        md += ["", "With more than one thread the ratio is less reliable: CHOLMOD 3 asks for "
-               "a fixed team of 4 threads, which the program caps through OpenMP's dynamic "
-               "adjustment (doc/deck.md, *SOLVER THREADS=), and that adjustment sizes each team from the "
-               "load average of the moment, which the program's own run has just raised when "
-               "the bare factorisation starts. The 1-thread rows have no such effect."]
+        md += ["", "With more than one thread the run and the bare solve give each part the "
+               "threads of the program's rule (doc/deck.md, *SOLVER THREADS=: element loops n, "
+               "CHOLMOD's regions as plain code, every BLAS call n threads; thread scaling on "
+               "a 16-core node in threads.md)."]
     worst = max(d[EXTRA.index("load1") + len(COLUMNS)] for d in rows)
     if worst > 2:
         md += ["", f"**Not final: load average up to {worst:.1f} on {os.cpu_count()} cores** "
