@@ -13,6 +13,9 @@ PY_SCRIPTS := $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("
 PY_USERBASE := $(shell $(PYTHON) -m site --user-base 2>/dev/null)
 export PATH := $(if $(PY_SCRIPTS),$(PY_SCRIPTS):)$(PATH)$(if $(PY_USERBASE),:$(PY_USERBASE)/bin)
 export PYTHON
+# The Python tools are one package, tools/pecplas_py (doc/tools.md): every script runs as
+# `$(PYTHON) -m pecplas_py.<role>.<script>` with tools/ on PYTHONPATH.
+export PYTHONPATH := $(CURDIR)/tools$(if $(PYTHONPATH),:$(PYTHONPATH))
 
 FPM ?= fpm
 DECK ?= input/default.inp
@@ -52,8 +55,8 @@ help:
 	@echo "                OpenSees side by side; CSV/PNG and README.md in doc/bench/ (BENCH=quick: ~4 min)"
 	@echo "  make docs     rewrite every generated block of the docs from fresh runs: scenes S1-S6"
 	@echo "                (as make s1 ... s6) and the numbers of the test suites quoted in"
-	@echo "                doc/validation.md and doc/theory.md (tools/validation_report.py,"
-	@echo "                hertz_report.py, theory_report.py: minutes, stored in test/reference)"
+	@echo "                doc/validation.md and doc/theory.md (pecplas_py.docs.validation_report,"
+	@echo "                hertz_report, theory_report: minutes, stored in test/reference)"
 	@echo "  make clean    remove build/ (fpm and CMake builds); results in output/ stay"
 	@echo "One suite:  fpm test -- SUITE [TEST]   or   ctest --test-dir $(CMAKE_DIR) -R SUITE"
 
@@ -70,7 +73,7 @@ run: build
 	@mkdir -p "$(dir $(OUT))"
 	$(FPM) run --profile release --target pecplas -- "$(DECK)" -o "$(OUT)"
 	@test -f "$(OUT)" || { echo "make run: pecplas wrote no $(OUT)" >&2; exit 1; }
-	@$(PYTHON) tools/plot_results.py "$(OUT)" -o "$(basename $(OUT)).png" || echo "make run: no picture (matplotlib missing?)"
+	@$(PYTHON) -m pecplas_py.plots.plot_results "$(OUT)" -o "$(basename $(OUT)).png" || echo "make run: no picture (matplotlib missing?)"
 	@echo "make run: results of $(DECK) written to $(OUT) (+ $(basename $(OUT)).xmf for ParaView, $(basename $(OUT)).png)"
 
 test: deps
@@ -91,8 +94,8 @@ s1: build
 	    2>/dev/null && rc=0 || rc=$$?; \
 	  echo "make s1: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
-	@$(PYTHON) tools/plot_s1.py output/s1
-	@$(PYTHON) tools/s1_report.py output/s1
+	@$(PYTHON) -m pecplas_py.scenes.plot_s1 output/s1
+	@$(PYTHON) -m pecplas_py.scenes.s1_report output/s1
 
 s2 s3: build
 	@mkdir -p output/$@
@@ -102,12 +105,13 @@ s2 s3: build
 	    2>/dev/null && rc=0 || rc=$$?; \
 	  echo "make $@: $$n exit $$rc"; \
 	done
-	@$(PYTHON) tools/plot_s2.py output
-	@if [ -d output/s2 ] && [ -d output/s3 ]; then $(PYTHON) tools/s2_report.py output; \
+	@$(PYTHON) -m pecplas_py.scenes.plot_s2 output
+	@if [ -d output/s2 ] && [ -d output/s3 ]; then \
+	  $(PYTHON) -m pecplas_py.scenes.s2_report output; \
 	  else echo "make $@: run make s2 s3 to write the S2/S3 numbers of the docs"; fi
 # S4: every path deck, then the identification of the CNL curves (thesis III.17-III.20) and
-# the sensitivity table (III.4), then the figures; tools/s4_report.py then writes the S4
-# numbers of doc/validation.md. The tables are also kept as .txt files.
+# the sensitivity table (III.4), then the figures; pecplas_py.scenes.s4_report then writes
+# the S4 numbers of doc/validation.md. The tables are also kept as .txt files.
 S4_RUN = $(FPM) run --profile release --target
 s4: build
 	@mkdir -p output/s4
@@ -124,16 +128,16 @@ s4: build
 	done
 	@$(S4_RUN) pecplas-sensitivity -- -o output/s4/sensitivity.csv 2>&1 \
 	  | tee output/s4/sensitivity.txt
-	@$(PYTHON) tools/plot_s4.py output/s4
-	@$(PYTHON) tools/s4_report.py output/s4
+	@$(PYTHON) -m pecplas_py.scenes.plot_s4 output/s4
+	@$(PYTHON) -m pecplas_py.scenes.s4_report output/s4
 
-# S5: the FE shear box, then the figures (plot_s5.py runs pecplas-path on the mid-interface path).
+# S5: the FE shear box, then the figures (scenes/plot_s5.py runs pecplas-path on the mid-interface path).
 s5: build
 	@mkdir -p output/s5
 	@$(FPM) run --profile release --target pecplas -- input/s5/s5_shear_box.inp \
 	  -o output/s5/s5_shear_box.h5 --quiet && echo "make s5: s5_shear_box completed"
-	@$(PYTHON) tools/plot_s5.py output/s5
-	@$(PYTHON) tools/s5_report.py output/s5
+	@$(PYTHON) -m pecplas_py.scenes.plot_s5 output/s5
+	@$(PYTHON) -m pecplas_py.scenes.s5_report output/s5
 
 s6: build
 	@mkdir -p output/s6
@@ -143,8 +147,8 @@ s6: build
 	    2>/dev/null && rc=0 || rc=$$?; \
 	  echo "make s6: $$n exit $$rc (0 completed, 3 stopped: limit load or divergence)"; \
 	done
-	@$(PYTHON) tools/plot_s6.py output/s6
-	@$(PYTHON) tools/s6_report.py output/s6
+	@$(PYTHON) -m pecplas_py.scenes.plot_s6 output/s6
+	@$(PYTHON) -m pecplas_py.scenes.s6_report output/s6
 
 # The optional MPI build (doc/mpi.md): CMake with -DPECPLAS_MPI=ON in its own tree, so the
 # default serial builds stay as they are.
@@ -158,7 +162,7 @@ build-mpi:
 
 test-mpi: build-mpi
 	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas_tests
-	$(PYTHON) tools/mpi_check.py $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
+	$(PYTHON) -m pecplas_py.checks.mpi_check $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
 	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
 	  --signal test/data/plasticity/footing_t6.inp --write-failure test/data/plasticity/footing_t6.inp \
 	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps
@@ -166,14 +170,15 @@ test-mpi: build-mpi
 bench: deps
 	@bash tools/bench.sh
 
-# Every generated block of the docs (text between `<!-- BEGIN generated by tools/SCRIPT: NAME -->`
-# and `<!-- END generated: NAME -->`): the scenes write theirs, tools/validation_report.py runs
-# the test suites whose numbers the docs quote, tools/s1_stability.py renders its stored runs.
+# Every generated block of the docs (text between
+# `<!-- BEGIN generated by tools/pecplas_py/SCRIPT: NAME -->` and `<!-- END generated: NAME -->`):
+# the scenes write theirs, pecplas_py.docs.validation_report runs the test suites whose numbers
+# the docs quote, pecplas_py.scenes.s1_stability renders its stored runs.
 docs: s1 s2 s3 s4 s5 s6
-	$(PYTHON) tools/validation_report.py output/validation --run
-	$(PYTHON) tools/hertz_report.py output/hertz --run
-	$(PYTHON) tools/theory_report.py output/theory --run
-	$(PYTHON) tools/s1_stability.py --doc
+	$(PYTHON) -m pecplas_py.docs.validation_report output/validation --run
+	$(PYTHON) -m pecplas_py.docs.hertz_report output/hertz --run
+	$(PYTHON) -m pecplas_py.docs.theory_report output/theory --run
+	$(PYTHON) -m pecplas_py.scenes.s1_stability --doc
 
 clean:
 	rm -rf build .pytest_cache

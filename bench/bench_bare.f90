@@ -1,8 +1,9 @@
 !> `pecplas-bench-bare FILE.matrix.h5`: the bare CHOLMOD solve of pecplas-bench's baseline,
 !> in a process of its own: reads the matrix a run assembled (bench_matrix; not timed), then
-!> analyse + factorise + one solve through the program's CHOLMOD calls (same ordering rule,
-!> no checks) and prints one line: analyse, factorise, solve and their sum [s, wall],
-!> nnz(L), user and system CPU times of the three calls [s].
+!> analyse + factorise + one solve through the program's CHOLMOD calls (same ordering rule and
+!> thread configuration for OMP_NUM_THREADS, no checks) and prints one line: analyse,
+!> factorise, solve and their sum [s, wall], nnz(L), user and system CPU times of the three
+!> calls [s].
 program bench_bare
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int
    use pecplas_base_kinds, only: wp
@@ -14,6 +15,7 @@ program bench_bare
       pecplas_cholmod_lnz
    use bench_matrix, only: read_matrix_file
    use bench_process, only: cpu_times
+   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
    implicit none (type, external)
    character(len=4096) :: arg
    type(csc_t) :: k
@@ -22,6 +24,7 @@ program bench_bare
    integer(c_int) :: rc
    real(wp) :: t0, t_an, t_fa, t_so, lnz, cpu0(2), cpu1(2)
    real(wp), allocatable :: b(:), x(:)
+   type(thread_setting_t) :: threads
 
    if (command_argument_count() /= 1) error stop 'usage: pecplas-bench-bare FILE.matrix.h5'
    call get_command_argument(1, arg)
@@ -32,6 +35,9 @@ program bench_bare
    end if
    allocate (b(k%n), x(k%n))
    b = 1.0_wp
+   ! the threads of each part as the program gives them (OMP_NUM_THREADS)
+   threads = resolve_threads(0)
+   call apply_threads(threads)
    cpu0 = cpu_times()
    h = pecplas_cholmod_new(0_c_int)
    t0 = wall_time()

@@ -1,7 +1,7 @@
 !> `pecplas-bench-tangent DECK OUT.h5`: runs DECK through the whole program (quiet, results
 !> in OUT.h5.run.h5) and writes the matrix of the run's last factorisation (for a Newton run:
 !> the consistent tangent of the last iteration) to OUT.h5, so that another linear solver can
-!> be tried on the very matrices the program factorises (tools/bench_amg.py):
+!> be tried on the very matrices the program factorises (tools/pecplas_py/bench/amg.py):
 !>   colptr, rowind,  the matrix (bench_matrix: 0-based CSC, attribute `upper`)
 !>   values
 !>   eq_node, eq_dir  node (1-based) and direction (1 = x, 2 = y) of each equation

@@ -1,6 +1,6 @@
 !> Values that tests measure and the documentation quotes (doc/validation.md, doc/theory.md):
 !> when the environment variable PECPLAS_REPORT names a file, `report(key, values)` appends
-!> one line `key v1 v2 ...` to it; otherwise it does nothing. tools/validation_report.py runs
+!> one line `key v1 v2 ...` to it; otherwise it does nothing. tools/pecplas_py/docs/validation_report.py runs
 !> the suites with it set and writes the generated blocks of the docs from the lines.
 module doc_report
    use pecplas_base_kinds, only: wp

@@ -38,6 +38,7 @@ program tester
    use test_pecjoin_laws_tangent, only: collect_pecjoin_laws_tangent
    use test_pecjoin_path, only: collect_pecjoin_path
    use test_massif_plasticity, only: collect_massif_plasticity
+   use test_massif_tangent_fd, only: collect_massif_tangent_fd
    use test_massif_plasticity_dp, only: collect_massif_plasticity_dp
    use test_massif_plasticity_paths, only: collect_massif_plasticity_paths
    use test_massif_plasticity_fe, only: collect_massif_plasticity_fe
@@ -107,6 +108,7 @@ program tester
    suites = [suites, new_testsuite('pecjoin_laws_tangent', collect_pecjoin_laws_tangent)]
    suites = [suites, new_testsuite('pecjoin_path', collect_pecjoin_path)]
    suites = [suites, new_testsuite('massif_plasticity', collect_massif_plasticity)]
+   suites = [suites, new_testsuite('massif_tangent_fd', collect_massif_tangent_fd)]
    suites = [suites, new_testsuite('massif_plasticity_dp', collect_massif_plasticity_dp)]
    suites = [suites, new_testsuite('massif_plasticity_paths', collect_massif_plasticity_paths)]
    suites = [suites, new_testsuite('massif_plasticity_fe', collect_massif_plasticity_fe)]

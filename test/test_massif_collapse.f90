@@ -12,7 +12,7 @@
 !> The values are reported for doc/theory.md 8.4 (test/doc_report.f90); with the environment
 !> variable PECPLAS_REPORT_COLLAPSE set, `cylinder_locking` also runs the whole table of the
 !> doc (T3, Q4, T6, Q8, Q8R on 2 x 1, 4 x 2, 6 x 3 cells, and 4 x 2 driven 15 times further),
-!> for tools/theory_report.py.
+!> for tools/pecplas_py/docs/theory_report.py.
 module test_massif_collapse
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error

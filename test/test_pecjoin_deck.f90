@@ -1,9 +1,11 @@
 !> Deck input of joints and interface laws: the good decks give the expected model (laws,
-!> joint sets, integration, thickness); every bad deck of test/data/joints/bad_*.inp fails
+!> joint sets, integration, thickness; a TYPE=KATONA law is Katona contact, no law, and marks
+!> its joint sets); every bad deck of test/data/joints/bad_*.inp fails
 !> with an input error naming its file, line and keyword and the key words of the message,
 !> and through `run_deck` it exits with code 2 and writes no results file.
 module test_pecjoin_deck
    use pecplas_base_kinds, only: wp
+   use pecplas_joints_laws_checks, only: tan_deg
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
@@ -52,19 +54,39 @@ contains
       if (allocated(error)) return
       call check(error, model%joint_sets(1)%integration == 'LOBATTO' .and. &
          all(model%joint_sets(1)%ids == [101, 102]), 'LOBATTO, explicit ids 101, 102')
+      if (allocated(error)) return
+      ! TYPE=KATONA: contact parameters, no interface law; the set that uses it is a Katona set
+      call read_deck('test/data/katona/pad_stick.inp', model, error)
+      if (allocated(error)) return
+      call check(error, size(model%laws) == 0 .and. size(model%contacts) == 1, &
+         'a KATONA law is a contact, not an interface law')
+      if (allocated(error)) return
+      associate (js => model%joint_sets(1), c => model%contacts(1))
+         call check(error, js%is_katona() .and. js%contact_index == 1 .and. &
+            js%law_index == 0 .and. js%law == 'friction' .and. c%name == 'friction', &
+            'its joint set is marked Katona and refers to the contact')
+         if (allocated(error)) return
+         ! PHI = 16.69924423399362 deg, C = 0 as written (tan of the same double: exact)
+         call check(error, c%mu == tan_deg(16.69924423399362_wp) .and. c%c == 0.0_wp .and. &
+            c%tension == 0.0_wp, 'the contact parameters as written')
+      end associate
    end subroutine test_good
 
    subroutine test_bad_laws(error)
       type(error_t), allocatable, intent(out) :: error
       call run_bad_cases(DATA, [ &
          bad('unknown_law_type', 3, '*INTERFACE_LAW', "unknown interface law type 'COULOMB'", &
-             'known types:', 'ELASTIC'), &
+             'known types: ELASTIC', 'KATONA'), &
          bad('undefined_law', 5, '*JOINTS', "undefined interface law 'friction'", &
              'known laws: contact'), &
          bad('law_parameter', 4, '*INTERFACE_LAW', 'KN and KT must be positive'), &
          bad('law_unknown_parameter', 4, '*INTERFACE_LAW', 'unknown parameter KX', 'KN KT'), &
          bad('duplicate_law', 5, '*INTERFACE_LAW', "'Contact' is defined twice", &
-             'bad_duplicate_law.inp:3')], error)
+             'bad_duplicate_law.inp:3'), &
+         bad('duplicate_contact', 5, '*INTERFACE_LAW', "'Contact' is defined twice", &
+             'bad_duplicate_contact.inp:3'), &
+         bad('duplicate_contact2', 5, '*INTERFACE_LAW', "'Contact' is defined twice", &
+             'bad_duplicate_contact2.inp:3')], error)
    end subroutine test_bad_laws
 
    subroutine test_bad_explicit(error)
@@ -132,7 +154,7 @@ contains
          count = count + 1
       end do
       close (u)
-      call check(error, count >= 19, 'the 19 bad joint decks were run')
+      call check(error, count >= 21, 'the 21 bad joint decks were run')
    end subroutine test_exit_codes
 
 end module test_pecjoin_deck

@@ -1,16 +1,18 @@
 !> Katona contact (Lagrange multipliers on node doublets) through the whole program:
 !> joint patch tests with an exact uniform pressure and zero interpenetration (springs,
 !> Goodman 4/6 doublets, plane strain and axisymmetric, regular and floating bodies), the
-!> Hertz line contact against the closed form (doc/validation.md), the S1 opening-closing cycle, and
-!> separation at the tensile strength.
+!> Hertz line contact against the closed form (doc/validation.md), the S1 opening-closing cycle,
+!> separation at the tensile strength, and the state iteration's answer when it cannot settle.
 module test_pecjoin_katona
    use pecplas_base_kinds, only: wp
-   use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_error, only: error_t, fatal_error, ERR_RUN
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
    use pecplas_problem_type, only: problem_t
-   use pecplas_joints_laws_type, only: MODE_OPEN
+   use pecplas_joints_laws_type, only: MODE_OPEN, MODE_SLIP
+   use pecplas_joints_katona_type, only: katona_t
+   use pecplas_joints_katona_states, only: solve_states, MAX_FLIPS
    use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
@@ -35,7 +37,8 @@ contains
                new_unittest('floating_goodman6_axi', test_float_goodman6), &
                new_unittest('hertz_line_contact', test_hertz), &
                new_unittest('s1_open_close', test_s1_open_close), &
-               new_unittest('tensile_strength', test_tension)]
+               new_unittest('tensile_strength', test_tension), &
+               new_unittest('unsettled_states_fail', test_unsettled_states)]
    end subroutine collect_pecjoin_katona
 
    subroutine run(name, model, problem, code)
@@ -139,7 +142,7 @@ contains
       call check_patch('float_goodman6_axi', P, .true., error)
    end subroutine test_float_goodman6
 
-   !> Hertz (doc/validation.md) on test/data/katona/hertz.inp (tools/make_hertz_deck.py, h = 0.1 mm):
+   !> Hertz (doc/validation.md) on test/data/katona/hertz.inp (tools/pecplas_py/decks/make_hertz_deck.py, h = 0.1 mm):
    !> a = sqrt(4 F R / (pi E*)), p0 = 2 F / (pi a) within 2 % (a: midway between the last
    !> closed and the first open doublet, +-h/2 = 0.8 %); p(x) within 5 % of p0 of
    !> p0 sqrt(1 - x^2/a^2) at the doublets in contact; resultant = F/2 (half model) to 1e-8
@@ -255,6 +258,37 @@ contains
             'the doublets open (eps_n < 0) and the bond is broken')
       end associate
    end subroutine test_tension
+
+   !> One doublet, slipping (s = +1) at the start of the increment, with a flexibility
+   !> G = [1 -0.9; -0.9 1] that couples N and T, mu = 2, w = (1, 3) (pressed and pushed along
+   !> +t). Slip gives N (G11 + mu G12) = w_n, N = -1.25 < 0: open; open leaves z = w, pressed
+   !> in and moved 3 from its anchor: slip again, and so on. After MAX_FLIPS changes the doublet
+   !> is held in a state its own checks reject: solve_states must report a run error (the
+   !> increment is cut), not accept the held state, nor (as the iteration once did) come back
+   !> in stick anchored where the open iterate had moved it.
+   subroutine test_unsettled_states(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err
+      type(katona_t) :: kt
+      real(wp) :: h(2)
+      integer :: flips(1), nit
+      kt%nd = 1
+      call kt%allocate_states()
+      kt%mu = [2.0_wp]
+      kt%cohesion = [0.0_wp]
+      kt%tension = [0.0_wp]
+      kt%gap0 = [0.0_wp]
+      kt%g = reshape([1.0_wp, -0.9_wp, -0.9_wp, 1.0_wp], [2, 2])
+      kt%mode = MODE_SLIP
+      kt%sgn = 1
+      call kt%begin_increment()
+      flips = 0
+      call solve_states(kt, [1.0_wp, 3.0_wp], [0.0_wp, 0.0_wp], h, flips, nit, err)
+      call check(error, allocated(err), 'an unsettled state iteration reports an error')
+      if (allocated(error)) return
+      call check(error, err%kind == ERR_RUN .and. flips(1) == MAX_FLIPS, &
+         'a run error after MAX_FLIPS changes of the doublet: '//err%message)
+   end subroutine test_unsettled_states
 
    !> Runs disp_spring_plane.inp pulled up by DELTA with TENSION = `tension`.
    subroutine pulled(tension, model, problem, code, error)

@@ -4,7 +4,7 @@
 !> so every joint point carries sigma_n = P cos^2 a and tau = -P sin a cos a (a = joint
 !> inclination), to round-off, for every joint type, explicit and generated doublets, plane
 !> strain and axisymmetric, Gauss and Lobatto points, modified and full Newton.
-!> The results file holds the same joint fields and passes tools/check_results.py.
+!> The results file holds the same joint fields and passes tools/pecplas_py/checks/check_results.py.
 module test_pecjoin_patch
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
@@ -219,9 +219,11 @@ contains
             tiny(1.0_wp), 'spring points at their face-1 nodes')
          if (allocated(error)) return
       end associate
-      call execute_command_line('python3 tools/check_results.py '//out//' --expect-status '// &
-         'completed > '//DIR//'/check.log 2>&1', exitstat=stat)
-      call check(error, stat == 0, 'tools/check_results.py passes (see '//DIR//'/check.log)')
+      ! the tools' package from tools/ (the test runs in the project root), whoever runs it
+      call execute_command_line('PYTHONPATH=tools${PYTHONPATH:+:$PYTHONPATH} python3 -m '// &
+         'pecplas_py.checks.check_results '//out//' --expect-status completed > '//DIR// &
+         '/check.log 2>&1', exitstat=stat)
+      call check(error, stat == 0, 'tools/pecplas_py/checks/check_results.py passes (see '//DIR//'/check.log)')
    end subroutine test_results
 
 end module test_pecjoin_patch

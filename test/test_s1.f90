@@ -1,5 +1,5 @@
 !> Scene S1, the shear box of the thesis (figs II.1–II.5), through the whole program with the
-!> decks of input/s1/ (tools/make_s1_decks.py): plateaus of the cohesive and frictional
+!> decks of input/s1/ (tools/pecplas_py/decks/make_s1_decks.py): plateaus of the cohesive and frictional
 !> joints, the limit load under force control, the effect of dilatancy with stiff and soft
 !> K_n, and an opening–closing cycle.
 module test_s1

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # `make install PREFIX=DIR` (default ~/.local): builds the release profile with fpm and puts
 # pecplas, pecplas-path, pecplas-identify, pecplas-sensitivity and pecplas-sweep (the Python
-# sweep tool, tools/pecplas_sweep.py) into DIR/bin. fpm install would also install the
-# benchmark programs, so it installs into a staging directory and only the four are copied.
+# sweep tool, tools/pecplas_py/programs/pecplas_sweep.py, stand-alone) into DIR/bin. fpm install
+# would also install the benchmark programs, so it installs into a staging directory and only
+# the four are copied.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 prefix=${1:-$HOME/.local}
@@ -16,7 +17,7 @@ mkdir -p "$prefix/bin"
 for p in "${PROGRAMS[@]}"; do
   install -m 755 "$stage/bin/$p" "$prefix/bin/$p"
 done
-install -m 755 tools/pecplas_sweep.py "$prefix/bin/pecplas-sweep"
+install -m 755 tools/pecplas_py/programs/pecplas_sweep.py "$prefix/bin/pecplas-sweep"
 echo "installed into $prefix/bin: ${PROGRAMS[*]} pecplas-sweep"
 case ":$PATH:" in
   *":$prefix/bin:"*) ;;

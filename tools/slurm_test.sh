@@ -5,6 +5,7 @@
 # with pecplas-sweep, waits, collects the head settlements, and stops the daemons it started.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+export PYTHONPATH=$PWD/tools${PYTHONPATH:+:$PYTHONPATH}  # pecplas_py (doc/tools.md)
 ROOT=$PWD
 FPM=${FPM:-fpm}
 work=$ROOT/build/slurm
@@ -78,9 +79,9 @@ exe=${PECPLAS_BIN:-$("$FPM" run --profile release --target pecplas --runner echo
 exe=$(realpath "$exe")
 out=$work/s2_mesh
 rm -rf "$out"
-python3 tools/pecplas_sweep.py make input/sweeps/s2_mesh/template.inp \
+python3 -m pecplas_py.programs.pecplas_sweep make input/sweeps/s2_mesh/template.inp \
   input/sweeps/s2_mesh/table.csv -o "$out"
-jobline=$(python3 tools/pecplas_sweep.py slurm "$out" --partition test --time 00:30:00 \
+jobline=$(python3 -m pecplas_py.programs.pecplas_sweep slurm "$out" --partition test --time 00:30:00 \
   --pecplas "$exe" --submit)
 echo "$jobline"
 job=$(grep -oE 'submitted job [0-9]+' <<<"$jobline" | awk '{print $3}')
@@ -91,6 +92,6 @@ while squeue -h -j "$job" 2>/dev/null | grep -q .; do
 done
 sacct -j "$job" 2>/dev/null || true
 ls "$out"/slurm-*.out
-python3 tools/pecplas_sweep.py collect "$out" -q settlement=disp:0,0:y@head=1
+python3 -m pecplas_py.programs.pecplas_sweep collect "$out" -q settlement=disp:0,0:y@head=1
 cat "$out/collected.csv"
 echo "test-slurm: job $job: $(grep -c completed "$out/collected.csv") of 3 array tasks completed in $(( $(date +%s) - t0 )) s"

@@ -14,6 +14,7 @@
 # Exits non-zero when any stage failed. The Makefile sets FPM, PYTHON, CMAKE_DIR and JOBS.
 set -uo pipefail
 cd "$(dirname "$0")/.."
+export PYTHONPATH=$PWD/tools${PYTHONPATH:+:$PYTHONPATH}  # pecplas_py (doc/tools.md)
 
 FPM=${FPM:-fpm}
 PYTHON=${PYTHON:-python3}

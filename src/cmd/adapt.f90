@@ -53,6 +53,7 @@ contains
       threads = resolve_threads(model%solver%threads)
       call apply_threads(threads)
       model%solver%threads = threads%n
+      model%solver%threads_used = threads
       opts%goal_kind = spec%kind
       opts%goal_dof = spec%dof
       msg = 'the energy norm'

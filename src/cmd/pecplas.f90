@@ -28,7 +28,8 @@ module pecplas_cmd_pecplas
    use pecplas_cmd_args, only: arg_parser_t, VALUE_POSITIVE_INTEGER
    use pecplas_solve_restart, only: restore_restart
    use pecplas_base_provenance, only: version_lines
-   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads, &
+      parts_text
    use pecplas_base_parallel, only: parallel_rank, parallel_size, parallel_any
    implicit none (type, external)
    private
@@ -157,6 +158,7 @@ contains
          threads = resolve_threads(model%solver%threads)
          call apply_threads(threads)
          model%solver%threads = threads%n
+         model%solver%threads_used = threads
       end if
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
       if (.not. allocated(error)) call model%warnings%print(0)
@@ -354,7 +356,7 @@ contains
             sec(t%rank_cpu_min)//' to '//sec(t%rank_cpu_max)//' s'
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
-         trim(merge('on ', 'off', threads%openmp))//', BLAS '//blas_name(threads%blas)//')'
+         trim(merge('on ', 'off', threads%openmp))//'; '//parts_text(threads)//')'
       if (allocated(problem%linear%solver)) write (*, '(a)') ' linear solver: '//problem%linear%solver%report()
       if (problem%katona%active) then
          associate (k => problem%katona)
@@ -368,14 +370,6 @@ contains
       end if
       write (*, '(a)') ' status: '//status//'  results: '//outfile
    end subroutine summary
-
-   !> The BLAS whose threads were set, or a note that none was found (single-threaded BLAS).
-   function blas_name(blas) result(name)
-      character(len=*), intent(in) :: blas
-      character(len=:), allocatable :: name
-      name = blas
-      if (len(blas) == 0) name = 'without thread control'
-   end function blas_name
 
    !> Seconds with 3 decimals and a leading zero ("0.012").
    function sec(t) result(s)

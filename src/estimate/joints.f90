@@ -55,7 +55,8 @@ contains
       associate (set => model%joint_sets(s), st => joints%sets(s))
          nel = size(set%conn, 2)
          allocate (eta(nel), source=0.0_wp)
-         if (set%is_spring() .or. nel == 0) return
+         ! (a Katona set has no stiffness at its points: no energy to measure)
+         if (set%is_spring() .or. set%is_katona() .or. nel == 0) return
          call joint_set_element(set, elem, error)
          if (allocated(error)) return
          np = elem%npoint()

@@ -1,7 +1,9 @@
 !> Joint contributions to the global problem: state set-up, stiffness blocks (elastic
 !> tangent of the law for modified Newton, consistent tangent for full Newton) and internal
 !> forces with the law update at every joint point. Called by the massif assembly
-!> (pecplas_fe_assembly), which owns the global matrix and vectors.
+!> (pecplas_fe_assembly), which owns the global matrix and vectors. A Katona set
+!> (joint_set_t%is_katona) has no law: its points carry the doublets' stresses
+!> (pecplas_joints_katona_results), no history, no stiffness.
 module pecplas_fe_joint_assembly
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
@@ -14,7 +16,6 @@ module pecplas_fe_joint_assembly
       joint_force, joint_stiffness
    use pecplas_joints_state, only: joint_state_t, joint_set_state_t
    use pecplas_joints_points, only: joint_set_element, joint_element_points, element_context
-   use pecplas_joints_laws_katona, only: is_katona
    use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    use pecplas_fe_share, only: share_t
    implicit none (type, external)
@@ -25,7 +26,7 @@ module pecplas_fe_joint_assembly
 contains
 
    !> Allocates the state of every joint set: zero stress and strain, the law history from
-   !> zero initial stress, mode stick, tangents = elastic tangents.
+   !> zero initial stress, mode stick, tangents = elastic tangents (zero for a Katona set).
    subroutine setup_joint_state(model, jstate, error)
       type(model_t), intent(in) :: model
       type(joint_state_t), intent(out) :: jstate
@@ -38,49 +39,59 @@ contains
       allocate (jstate%sets(size(model%joint_sets)))
       do s = 1, size(model%joint_sets)
          associate (set => model%joint_sets(s), st => jstate%sets(s))
-            if (set%law_index < 1 .or. set%law_index > size(model%laws)) then
-               call fatal_error(error, 'joint set '//set%name//' has no interface law')
-               return
+            ns = 0
+            if (.not. set%is_katona()) then
+               if (set%law_index < 1 .or. set%law_index > size(model%laws)) then
+                  call fatal_error(error, 'joint set '//set%name//' has no interface law')
+                  return
+               end if
+               ns = model%laws(set%law_index)%law%nstate()
             end if
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
-            associate (law => model%laws(set%law_index)%law)
-               np = elem%npoint()
-               nel = size(set%conn, 2)
-               ns = law%nstate()
-               st%npoint = np
-               st%nstate = ns
-               allocate (st%eps(2, np, nel), st%sigma(2, np, nel), source=0.0_wp)
-               allocate (st%hist(ns, np, nel), source=0.0_wp)
-               allocate (st%mode(np, nel), source=MODE_STICK)
+            np = elem%npoint()
+            nel = size(set%conn, 2)
+            st%npoint = np
+            st%nstate = ns
+            allocate (st%eps(2, np, nel), st%sigma(2, np, nel), source=0.0_wp)
+            allocate (st%hist(ns, np, nel), source=0.0_wp)
+            allocate (st%mode(np, nel), source=MODE_STICK)
+            if (.not. set%is_katona()) then
                do e = 1, nel
                   do ip = 1, np
-                     call law%init_state(st%sigma(:, ip, e), st%hist(:, ip, e))
+                     call model%laws(set%law_index)%law%init_state(st%sigma(:, ip, e), &
+                        st%hist(:, ip, e))
                   end do
                end do
-               allocate (st%eps_trial, source=st%eps)
-               allocate (st%sigma_trial, source=st%sigma)
-               allocate (st%hist_trial, source=st%hist)
-               allocate (st%mode_trial, source=st%mode)
-               allocate (st%tangent(2, 2, np, nel))
-            end associate
+            end if
+            allocate (st%eps_trial, source=st%eps)
+            allocate (st%sigma_trial, source=st%sigma)
+            allocate (st%hist_trial, source=st%hist)
+            allocate (st%mode_trial, source=st%mode)
+            allocate (st%tangent(2, 2, np, nel))
          end associate
       end do
       call reset_joint_tangents(model, jstate)
    end subroutine setup_joint_state
 
    !> Sets every stored tangent to the law's elastic tangent of the converged state (after
-   !> set-up, or after a law changed, e.g. a default penalty stiffness was given).
+   !> set-up, or after a law changed, e.g. a default penalty stiffness was given); zero for
+   !> a Katona set.
    subroutine reset_joint_tangents(model, jstate)
       type(model_t), intent(in) :: model
       type(joint_state_t), intent(inout) :: jstate
       integer :: s, e, ip
       if (.not. allocated(jstate%sets)) return
       do s = 1, size(jstate%sets)
-         associate (st => jstate%sets(s), law => model%laws(model%joint_sets(s)%law_index)%law)
+         associate (st => jstate%sets(s), set => model%joint_sets(s))
+            if (set%is_katona()) then
+               st%tangent = 0.0_wp
+               cycle
+            end if
             do e = 1, size(st%tangent, 4)
                do ip = 1, st%npoint
-                  call law%elastic_tangent(st%hist(:, ip, e), st%tangent(:, :, ip, e))
+                  call model%laws(set%law_index)%law%elastic_tangent(st%hist(:, ip, e), &
+                     st%tangent(:, :, ip, e))
                end do
             end do
          end associate
@@ -111,16 +122,15 @@ contains
       if (.not. allocated(model%joint_sets)) return
       if (present(share)) part = share
       do s = 1, size(model%joint_sets)
-         associate (set => model%joint_sets(s), st => jstate%sets(s), &
-                    law => model%laws(model%joint_sets(s)%law_index)%law)
-            ! Katona sets add zero blocks (their law has no stiffness): the pattern keeps the
+         associate (set => model%joint_sets(s), st => jstate%sets(s))
+            ! Katona sets add zero blocks (they have no stiffness): the pattern keeps the
             ! doublet couplings that the augmented form of a singular R needs
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()
             nel = size(set%conn, 2)
             call part%range(nel, e1, e2)
-            if (is_katona(law) .and. .not. part%whole()) then
+            if (set%is_katona() .and. .not. part%whole()) then
                e1 = 1
                e2 = merge(nel, 0, part%rank == 0)
             end if
@@ -147,10 +157,10 @@ contains
                end if
                ke = 0.0_wp
                do ip = 1, size(pts)
-                  if (tangent) then
+                  if (tangent .or. set%is_katona()) then
                      c = st%tangent(:, :, ip, e)
                   else
-                     call law%elastic_tangent(st%hist(:, ip, e), c)
+                     call model%laws(set%law_index)%law%elastic_tangent(st%hist(:, ip, e), c)
                   end if
                   call joint_stiffness(pts(ip), c, ke)
                end do
@@ -200,10 +210,10 @@ contains
       integer :: s, e, nd, nel, j, bad
       if (.not. allocated(model%joint_sets)) return
       do s = 1, size(model%joint_sets)
+         ! Katona sets: their multipliers are added by pecplas_solve_katona_increment
+         if (model%joint_sets(s)%is_katona()) cycle
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
                     law => model%laws(model%joint_sets(s)%law_index)%law)
-            ! Katona sets: their multipliers are added by pecplas_solve_katona_increment
-            if (is_katona(law)) cycle
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()

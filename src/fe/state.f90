@@ -30,6 +30,10 @@ module pecplas_fe_state
       type(set_state_t), allocatable :: sets(:)
       !> Joint sets (PECJOIN), committed and rolled back with the massif.
       type(joint_state_t) :: joints
+      !> True while the points' tangents (massif and joints) are those of the converged
+      !> state's last update: set by commit, cleared by rollback (the tangents are then those
+      !> of the discarded attempt's last iterate).
+      logical :: converged_tangents = .true.
    contains
       procedure :: commit => state_commit
       procedure :: rollback => state_rollback
@@ -49,6 +53,7 @@ contains
          end associate
       end do
       call this%joints%commit()
+      this%converged_tangents = .true.
    end subroutine state_commit
 
    !> Discards the trial values (an increment that is cut).
@@ -63,6 +68,7 @@ contains
          end associate
       end do
       call this%joints%rollback()
+      this%converged_tangents = .false.
    end subroutine state_rollback
 
 end module pecplas_fe_state

@@ -30,8 +30,9 @@ module pecplas_linalg_cholmod
    public :: pecplas_cholmod_flops, pecplas_cholmod_peak_memory, pecplas_cholmod_set_ordering
    public :: ORDER_RULE, ORDER_CHOLMOD_DEFAULT, ORDER_METIS_NODES, ORDER_AMD, ORDER_METIS
    public :: ORDER_NESDIS
-   ! Serial OpenMP regions around a one-thread factorisation (omp_serial.c), for tests.
-   public :: pecplas_omp_serial_begin, pecplas_omp_serial_end
+   ! The cap on the OpenMP regions of CHOLMOD's factorisation (omp_serial.c), for tests.
+   public :: pecplas_omp_serial_begin, pecplas_omp_serial_end, pecplas_omp_cap_begin
+   public :: pecplas_omp_cap_end
 
    !> Orderings pecplas_cholmod_set_ordering accepts: the project's rule (the default of every
    !> new handle), CHOLMOD's own default strategy, METIS on the graph of nodes (equations with
@@ -46,6 +47,13 @@ module pecplas_linalg_cholmod
       subroutine pecplas_omp_serial_begin() bind(C)
       end subroutine
       subroutine pecplas_omp_serial_end() bind(C)
+      end subroutine
+      !> Until pecplas_omp_cap_end, OpenMP regions of this thread get at most n threads.
+      subroutine pecplas_omp_cap_begin(n) bind(C)
+         import :: c_int
+         integer(c_int), value :: n
+      end subroutine
+      subroutine pecplas_omp_cap_end() bind(C)
       end subroutine
       type(c_ptr) function pecplas_cholmod_new(ldl) bind(C)
          import :: c_ptr, c_int

@@ -22,9 +22,10 @@
 #include <omp.h>
 #endif
 
-/* omp_serial.c: OpenMP regions of the calling thread run serially in between */
-void pecplas_omp_serial_begin(void);
-void pecplas_omp_serial_end(void);
+/* threads_shim.c: in between, CHOLMOD's OpenMP regions and BLAS calls on this thread get
+ * the threads the program's configuration gives them */
+void pecplas_threads_calls_begin(void);
+void pecplas_threads_calls_end(void);
 
 /* Requested fill-reducing ordering: the project's rule, CHOLMOD's own default strategy, or
  * one CHOLMOD ordering code (CHOLMOD_AMD, CHOLMOD_METIS, CHOLMOD_NESDIS, ...). */
@@ -239,21 +240,13 @@ int pecplas_cholmod_factorise(void *handle, int n, const int *colptr, const int 
         try_nested_dissection(h, &pattern);
     }
     h->nfact++;
-#ifdef _OPENMP
     /* CHOLMOD 3.x asks for a fixed team, num_threads(CHOLMOD_OMP_NUM_THREADS = 4), in its
-     * supernodal factorisation whatever OMP_NUM_THREADS says; on fewer cores that
-     * oversubscribes. Dynamic adjustment caps a team at min(cores, omp_get_max_threads())
-     * less the load average, so never above the program's thread setting
-     * (pecplas_threads_set); restored afterwards. */
-    int dynamic = omp_get_dynamic(), one = omp_get_max_threads() == 1;
-    omp_set_dynamic(1);
-    if (one) pecplas_omp_serial_begin(); /* omp_serial.c: no team of one per region */
-#endif
+     * supernodal factorisation whatever OMP_NUM_THREADS says, and the BLAS splits each of its
+     * calls among all the threads it is given: the program's thread configuration decides
+     * both here (threads_shim.c, omp_serial.c). */
+    pecplas_threads_calls_begin();
     cholmod_factorize(&a, h->L, &h->c);
-#ifdef _OPENMP
-    if (one) pecplas_omp_serial_end();
-    omp_set_dynamic(dynamic);
-#endif
+    pecplas_threads_calls_end();
     return h->c.status;
 }
 
@@ -270,7 +263,10 @@ int pecplas_cholmod_solve(void *handle, int n, int nrhs, const double *b, double
     bd.x = (void *)b;
     bd.xtype = CHOLMOD_REAL;
     bd.dtype = CHOLMOD_DOUBLE;
-    if (!cholmod_solve2(CHOLMOD_A, h->L, &bd, NULL, &h->X, NULL, &h->Y, &h->E, &h->c))
+    pecplas_threads_calls_begin();
+    int ok = cholmod_solve2(CHOLMOD_A, h->L, &bd, NULL, &h->X, NULL, &h->Y, &h->E, &h->c);
+    pecplas_threads_calls_end();
+    if (!ok)
         return h->c.status < 0 ? h->c.status : CHOLMOD_INVALID;
     memcpy(x, h->X->x, sizeof(double) * (size_t)n * (size_t)nrhs);
     return h->c.status;

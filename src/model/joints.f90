@@ -1,5 +1,6 @@
 !> Joint (interface) element sets of a model: node doublets connected through an
-!> interface law of the PECJOIN family.
+!> interface law of the PECJOIN family (penalty joints), or held by Katona contact
+!> (Lagrange multipliers on the doublets).
 module pecplas_model_joints
    use pecplas_base_kinds, only: wp
    implicit none (type, external)
@@ -13,6 +14,12 @@ module pecplas_model_joints
       enumerator :: JOINT_SPRING = 1, JOINT_GOODMAN4, JOINT_GOODMAN6, JOINT_THIN_LAYER
    end enum
    public :: JOINT_SPRING, JOINT_GOODMAN4, JOINT_GOODMAN6, JOINT_THIN_LAYER
+   !> How a joint set holds its doublets: an interface law at its points (penalty: springs
+   !> of the law's stiffness) or Katona contact (multipliers on its node doublets).
+   enum, bind(c)
+      enumerator :: JOINT_PENALTY = 1, JOINT_KATONA
+   end enum
+   public :: JOINT_PENALTY, JOINT_KATONA
    character(len=*), parameter :: JOINT_TYPES(4) = [character(len=10) :: 'SPRING', 'GOODMAN4', &
       'GOODMAN6', 'THIN_LAYER']
 
@@ -25,9 +32,11 @@ module pecplas_model_joints
       !> springs: (face-1 node, face-2 node).
       integer, allocatable :: conn(:, :)
       integer, allocatable :: ids(:)
-      !> Interface law name and its index in model%laws.
+      !> Interface law name; JOINT_PENALTY or JOINT_KATONA (set by the deck reader from the
+      !> law's type); the law's index in model%laws (penalty) or model%contacts (Katona).
       character(len=:), allocatable :: law
-      integer :: law_index = 0
+      integer :: method = JOINT_PENALTY
+      integer :: law_index = 0, contact_index = 0
       !> 'GAUSS' or 'LOBATTO' (Newton–Cotes) integration along Goodman joints.
       character(len=:), allocatable :: integration
       !> Thin layer thickness e (THIN_LAYER only).
@@ -39,6 +48,7 @@ module pecplas_model_joints
       procedure :: type_name
       procedure :: is_spring
       procedure :: is_thin_layer
+      procedure :: is_katona
    end type joint_set_t
 
 contains
@@ -75,5 +85,11 @@ contains
       class(joint_set_t), intent(in) :: this
       is_thin_layer = this%kind == JOINT_THIN_LAYER
    end function is_thin_layer
+
+   !> True for a set held by Katona contact (no interface law at its points).
+   pure logical function is_katona(this)
+      class(joint_set_t), intent(in) :: this
+      is_katona = this%method == JOINT_KATONA
+   end function is_katona
 
 end module pecplas_model_joints

@@ -1,6 +1,7 @@
 !> Analysis, solver and output options of a model, with their defaults.
 module pecplas_model_options
    use pecplas_base_kinds, only: wp
+   use pecplas_linalg_threads, only: thread_setting_t
    implicit none (type, external)
    private
 
@@ -53,6 +54,8 @@ module pecplas_model_options
       !> Threads (OpenMP, CHOLMOD, BLAS): *SOLVER THREADS=; 0 = not given (then
       !> OMP_NUM_THREADS, else 1). After start-up, the number the run used.
       integer :: threads = 0
+      !> After start-up, the threads each part of the run got (pecplas_linalg_threads).
+      type(thread_setting_t) :: threads_used
    end type solver_options_t
 
    type :: output_options_t

@@ -8,6 +8,7 @@ module pecplas_model_type
    use pecplas_model_joints, only: joint_set_t
    use pecplas_model_initial, only: initial_stress_t
    use pecplas_joints_laws_type, only: interface_law_box_t
+   use pecplas_model_contact, only: katona_contact_t
    use pecplas_model_provenance, only: provenance_t
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_units, only: units_t
@@ -28,8 +29,11 @@ module pecplas_model_type
       type(analysis_t) :: analysis
       type(mesh_t) :: mesh
       type(material_box_t), allocatable :: materials(:)
-      !> Interface laws (*INTERFACE_LAW) and joint element sets (*JOINTS).
+      !> Interface laws (*INTERFACE_LAW) and joint element sets (*JOINTS). A law of
+      !> TYPE=KATONA is no constitutive law: it is kept in `contacts`, and the joint sets
+      !> that use it are Katona contact sets (joint_set_t%is_katona).
       type(interface_law_box_t), allocatable :: laws(:)
+      type(katona_contact_t), allocatable :: contacts(:)
       type(joint_set_t), allocatable :: joint_sets(:)
       type(support_t) :: supports
       !> Initial stresses (*INITIAL_STRESS), applied in order (later entries overwrite).

@@ -20,7 +20,7 @@ module pecplas_solve_arc_path
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t
    use pecplas_problem_type, only: problem_t
-   use pecplas_solve_iterate, only: attempt_t, outcome_t
+   use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_arc_length, only: adapt_length
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_request_t, arc_end_t, END_TARGET, &
@@ -95,7 +95,7 @@ contains
             ! the first state of the path: the peak until an increment rises above it
             res%tau_peak = tau
             res%peak_increment = problem%stats%increments
-            res%peak_factors = f0 + (ftarget - f0)*tau
+            res%peak_factors = att%factors(tau)
             res%s_peak = sum(fq*problem%state%u)
             res%beyond = 0
             tr%started = .true.
@@ -198,7 +198,7 @@ contains
             if (tau > res%tau_peak) then
                res%tau_peak = tau
                res%peak_increment = problem%stats%increments + 1
-               res%peak_factors = att%f0 + (att%ftarget - att%f0)*tau
+               res%peak_factors = att%factors(tau)
                res%s_peak = s
                res%beyond = 0
             else

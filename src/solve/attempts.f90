@@ -7,8 +7,10 @@
 !>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
 !> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
 !> Modified Newton gives up as soon as its residual's rate shows it would crawl
-!> (pecplas_solve_iterate); the others run to the iteration cap. Katona contact iterates its contact states inside
-!> modified or full Newton (its quasi-Newton is modified Newton).
+!> (pecplas_solve_iterate); the others run to the iteration cap. Every method is one
+!> increment solver (pecplas_solve_method) chosen for the model by
+!> pecplas_solve_method_factory; Katona contact iterates its contact states inside modified
+!> or full Newton (it has no quasi-Newton: modified Newton takes its place in the chain).
 module pecplas_solve_attempts
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_RUN, ERR_SINGULAR
@@ -16,14 +18,13 @@ module pecplas_solve_attempts
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_output, only: write_increment, progress_line
    use pecplas_base_timers, only: wall_time
-   use pecplas_solve_iterate, only: attempt_t, outcome_t, iterate_increment
+   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
+   use pecplas_solve_method_factory, only: new_increment_method
    use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
-   use pecplas_solve_residual, only: free_part, load_vectors
    use pecplas_base_strings, only: itoa
    use pecplas_base_progress_eta, only: progress_eta_t
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: limit_point_t
-   use pecplas_solve_katona_increment, only: katona_increment, katona_arc_t
    implicit none (type, external)
    private
 
@@ -47,10 +48,11 @@ module pecplas_solve_attempts
 
 contains
 
-   !> Methods tried for an increment, in order.
-   function method_chain(model, katona) result(methods)
+   !> Methods tried for an increment, in order; `quasi_newton`: whether the increment
+   !> solver can take quasi-Newton iterations.
+   function method_chain(model, quasi_newton) result(methods)
       type(model_t), intent(in) :: model
-      logical, intent(in) :: katona
+      logical, intent(in) :: quasi_newton
       integer, allocatable :: methods(:)
       select case (model%solver%method)
       case (METHOD_NEWTON)
@@ -62,7 +64,7 @@ contains
       case default
          methods = [METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON]
       end select
-      if (katona) then
+      if (.not. quasi_newton) then
          where (methods == METHOD_QUASI) methods = METHOD_MODIFIED
          if (size(methods) == 3) methods = methods([1, 3])
       end if
@@ -80,10 +82,12 @@ contains
       type(outcome_t), intent(out) :: out
       integer, intent(out) :: method
       type(error_t), allocatable, intent(out) :: error
+      class(increment_method_t), allocatable :: solver
       integer, allocatable :: methods(:)
       character(len=:), allocatable :: reasons
       integer :: i
-      methods = method_chain(model, problem%katona%active)
+      call new_increment_method(problem, solver)
+      methods = method_chain(model, solver%has_quasi_newton())
       reasons = ''
       do i = 1, size(methods)
          method = methods(i)
@@ -92,12 +96,8 @@ contains
          ! only modified Newton's linear rate predicts its end reliably; the others run to
          ! the cap (BFGS converges irregularly while joint states still change)
          att%give_up_early = i < size(methods) .and. method == METHOD_MODIFIED
-         if (problem%katona%active) then
-            call katona_attempt(model, problem, run, att, u, fint, reaction, out, error)
-         else
-            call iterate_increment(model, problem, att, run%fint_conv, u, fint, reaction, out, &
-               error)
-         end if
+         call solver%solve_increment(model, problem, att, run%fint_conv, u, fint, reaction, &
+            out, error)
          if (allocated(error)) then
             ! a failed material return or a singular system of trial states fails the attempt
             if (error%kind /= ERR_RUN .and. error%kind /= ERR_SINGULAR) return
@@ -117,49 +117,6 @@ contains
       end do
       out%reason = reasons
    end subroutine try_chain
-
-   !> A Katona increment (pecplas_solve_katona_increment), under load or arc-length control.
-   subroutine katona_attempt(model, problem, run, att, u, fint, reaction, out, error)
-      type(model_t), intent(in) :: model
-      type(problem_t), intent(inout) :: problem
-      type(run_t), intent(in) :: run
-      type(attempt_t), intent(in) :: att
-      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
-      type(outcome_t), intent(out) :: out
-      type(error_t), allocatable, intent(out) :: error
-      type(katona_arc_t) :: arc
-      real(wp), allocatable :: fbase(:, :), up(:, :)
-      out%reason = ''
-      if (att%arc) then
-         call load_vectors(problem, att%f0, att%ftarget, att%tau0, fbase, arc%fq, up)
-         arc%q = free_part(problem, arc%fq)
-         arc%dl = att%dl
-         arc%tau = att%tau0
-         if (allocated(att%du_prev)) then
-            if (size(att%du_prev) > 0) arc%du_prev = att%du_prev
-         end if
-         call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau0, &
-            run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
-            out%blowup, out%iterations, out%residual, error, arc)
-         out%tau = arc%tau
-         if (.not. arc%ok) out%reason = arc%reason
-      else
-         call katona_increment(model, problem, att%f0 + (att%ftarget - att%f0)*att%tau1, &
-            run%fint_conv, att%method == METHOD_NEWTON, u, fint, reaction, out%converged, &
-            out%blowup, out%iterations, out%residual, error)
-         out%tau = att%tau1
-      end if
-      if (allocated(error)) return
-      if (out%converged) then
-         out%du = free_part(problem, u - problem%state%u)
-      else if (len(out%reason) > 0) then
-         continue
-      else if (out%blowup) then
-         out%reason = 'the residual became infinite or NaN'
-      else
-         out%reason = 'contact iteration cap reached'
-      end if
-   end subroutine katona_attempt
 
    !> Commits a converged increment at step fraction out%tau, writes it and prints its line.
    !> `time` is the pseudo-time of the results file; `control` 0 load, 1 arc-length.
@@ -185,7 +142,7 @@ contains
       if (control == 1) problem%stats%arc_increments = problem%stats%arc_increments + 1
       call problem%state%commit()
       problem%state%u = u
-      problem%state%factors = att%f0 + (att%ftarget - att%f0)*out%tau
+      problem%state%factors = att%factors(out%tau)
       run%fint_conv = fint
       if (allocated(out%du)) run%du_prev = out%du
       call cpu_time(t_now)

@@ -23,7 +23,7 @@ module pecplas_solve_increments
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t
    use pecplas_problem_type, only: problem_t
-   use pecplas_solve_iterate, only: attempt_t, outcome_t
+   use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_arc_path, only: trace_arc
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &

@@ -5,9 +5,14 @@
 !>   QUASI_NEWTON     the same factorisation with BFGS updates (pecplas_solve_bfgs);
 !>   NEWTON           the consistent tangent refactorised every iteration,
 !> each with an optional line search (pecplas_solve_line_search; not with arc-length).
+!> An increment of imposed displacement enters the first iteration through the operator,
+!> K du = F_ext - F_int(u_n) - K_fc dup (the stiffness columns of the constrained DOFs
+!> times their change), so that the whole body follows the moved nodes from the start;
+!> its later iterations, like every update, integrate each point from the converged state.
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
+!> newton_method_t is this solver behind the contract of pecplas_solve_method.
 module pecplas_solve_iterate
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
@@ -20,43 +25,20 @@ module pecplas_solve_iterate
    use pecplas_solve_line_search, only: line_search_t
    use pecplas_solve_arc_length, only: arc_root, arc_predictor_sign
    use pecplas_solve_residual, only: load_vectors, free_residual, free_part, add_free, &
-      joint_signature
-   use pecplas_fe_assembly, only: internal_forces
+      joint_signature, internal_forces_at
+   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
+   use pecplas_fe_imposed, only: imposed_forces
    implicit none (type, external)
    private
 
-   public :: attempt_t, outcome_t, iterate_increment
+   public :: newton_method_t
 
-   !> What to try: method, line search, control, and the step's load path
-   !> factors(tau) = f0 + (ftarget - f0) tau.
-   type :: attempt_t
-      integer :: method = METHOD_MODIFIED
-      logical :: line_search = .false.
-      !> Give up as soon as the residual's rate shows the cap will be missed (a later method
-      !> of the chain takes over); false for the last method, which runs to the cap.
-      logical :: give_up_early = .false.
-      !> Arc-length control (tau unknown, ||Δu|| = dl); else load control to tau1.
-      logical :: arc = .false.
-      real(wp) :: dl = 0.0_wp
-      !> Previous converged free increment (the arc predictor's sign); may be empty.
-      real(wp), allocatable :: du_prev(:)
-      real(wp), allocatable :: f0(:), ftarget(:)
-      real(wp) :: tau0 = 0.0_wp, tau1 = 0.0_wp
-   end type attempt_t
-
-   type :: outcome_t
-      logical :: converged = .false., blowup = .false.
-      integer :: iterations = 0, line_searches = 0
-      real(wp) :: residual = 0.0_wp
-      !> Step fraction reached (tau1 under load control).
-      real(wp) :: tau = 0.0_wp
-      !> Why it failed ('' when converged); singular: the system of the states the iteration
-      !> reached has no unique solution (a mechanism under those states).
-      character(len=:), allocatable :: reason
-      logical :: singular = .false.
-      !> Free displacement increment of the increment.
-      real(wp), allocatable :: du(:)
-   end type outcome_t
+   !> Modified Newton, quasi-Newton (BFGS) and full Newton (att%method), with or without
+   !> line search, under load or arc-length control.
+   type, extends(increment_method_t) :: newton_method_t
+   contains
+      procedure :: solve_increment => newton_solve_increment
+   end type newton_method_t
 
    !> Early give-up of a method that is not the chain's last (see `hopeless`).
    !> Memory of the BFGS pairs (2 n reals each): every pair of the increment while they fit
@@ -66,6 +48,20 @@ module pecplas_solve_iterate
    integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
 
 contains
+
+   !> The contract of pecplas_solve_method: iterate_increment.
+   subroutine newton_solve_increment(this, model, problem, att, fint_conv, u, fint, reaction, &
+         out, error)
+      class(newton_method_t), intent(inout) :: this
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(attempt_t), intent(in) :: att
+      real(wp), intent(in) :: fint_conv(:, :)
+      real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
+      type(outcome_t), intent(out) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call iterate_increment(model, problem, att, fint_conv, u, fint, reaction, out, error)
+   end subroutine newton_solve_increment
 
    !> One increment from the converged state (problem%state, with internal forces
    !> `fint_conv`): u, fint (internal forces) and reaction at the end, and the outcome.
@@ -84,7 +80,7 @@ contains
       type(line_search_t) :: ls
       real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
       integer :: neq, it
-      logical :: moved, ok, elastic_now
+      logical :: moved, ok, elastic_now, imposed
 
       neq = problem%system%dofs%neq
       out%reason = ''
@@ -103,7 +99,10 @@ contains
          max(BFGS_MIN_PAIRS, int(BFGS_BYTES/(16.0_wp*max(neq, 1))))))
       q = free_part(problem, fq)
       fint = fint_conv
-      if (any(u /= problem%state%u)) then
+      ! moved imposed displacements: their linear response is the first iteration's load
+      ! (load control; an arc-length increment keeps them at the step-start fraction)
+      imposed = any(u /= problem%state%u) .and. .not. att%arc
+      if (any(u /= problem%state%u) .and. att%arc) then
          call forces(u, error)
          if (allocated(error)) return
       end if
@@ -168,9 +167,19 @@ contains
          end if
          elastic_now = .false.
          ! full Newton: the tangent of the current iterate; at the first iteration the last
-         ! factorisation (the previous increment's tangent) unless there is none yet
-         if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
+         ! factorisation (the previous increment's tangent) unless there is none yet, or the
+         ! elastic stiffness when imposed displacements move and the points' tangents are a
+         ! discarded attempt's (after a rollback: see subtract_imposed)
+         if (att%method == METHOD_NEWTON .and. it == 0 .and. imposed .and. &
+             .not. problem%state%converged_tangents) then
+            call elastic_operator(error)
+            if (allocated(error)) return
+         else if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
             call refactorise(error)
+            if (allocated(error)) return
+         end if
+         if (it == 0 .and. imposed) then
+            call subtract_imposed(error)
             if (allocated(error)) return
          end if
          call apply_operator(r, du, error)
@@ -196,7 +205,9 @@ contains
          call forces(u, error)
          if (allocated(error)) return
          eta = 1.0_wp
-         if (att%line_search .and. .not. att%arc) then
+         ! (not along the first step of an imposed increment: its residual at eta = 0 is
+         ! that of the linear response, not of a state the search could return to)
+         if (att%line_search .and. .not. att%arc .and. .not. (it == 0 .and. imposed)) then
             g0 = dot_product(du, r)
             call free_residual(problem, fext, fint, gfree, reaction, rnorm, ref)
             g1 = dot_product(du, gfree)
@@ -218,25 +229,46 @@ contains
             eta = ls%eta
          end if
          dtot = dtot + eta*du
-         if (att%method == METHOD_QUASI) call push_pair(u - u_iter)
+         ! a BFGS pair relates free displacements to free forces: not the imposed step
+         if (att%method == METHOD_QUASI .and. .not. (it == 0 .and. imposed)) &
+            call push_pair(u - u_iter)
          it = it + 1
       end do
       out%du = dtot
 
    contains
 
+      !> r = r - K_fc dup on the free equations, dup the change of the imposed displacements
+      !> (u holds the new ones, the free DOFs the converged values), K the matrix of the
+      !> operator: the points' consistent tangents (Newton, and quasi-Newton on a Newton
+      !> run's tangent) or the elastic stiffness (modified Newton, quasi-Newton on it, and
+      !> Newton when the tangents are not the converged state's); hist(0) becomes the
+      !> linearised residual.
+      subroutine subtract_imposed(err)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp), allocatable :: fimp(:, :)
+         logical :: tangent
+         select case (att%method)
+         case (METHOD_NEWTON)
+            tangent = .not. elastic_now
+         case (METHOD_QUASI)
+            tangent = .not. problem%linear%separate_tangent
+         case default
+            tangent = .false.
+         end select
+         allocate (fimp, mold=u)
+         call imposed_forces(model, problem%system%dofs, problem%system%rules, problem%state, &
+            u - problem%state%u, tangent, fimp, err)
+         if (allocated(err)) return
+         r = r - free_part(problem, fimp)
+         if (ref > 0.0_wp) hist(0) = norm2(r)/ref
+      end subroutine subtract_imposed
+
       !> Internal forces at u (a failed material return is a run error: the increment fails).
       subroutine forces(uu, err)
          real(wp), intent(in) :: uu(:, :)
          type(error_t), allocatable, intent(out) :: err
-         real(wp) :: t0
-         t0 = wall_time()
-         call internal_forces(model, problem%system%rules, uu, problem%state, fint, err, &
-            problem%stats%time%laws)
-         problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
-         if (allocated(err)) then
-            if (err%kind /= ERR_SINGULAR) err%kind = ERR_RUN
-         end if
+         call internal_forces_at(model, problem, uu, fint, err)
       end subroutine forces
 
       !> BFGS pair from the step du_step (nodal layout) and the change of free internal forces.
@@ -245,6 +277,15 @@ contains
          logical :: kept
          call bfgs%push(free_part(problem, du_step), free_part(problem, fint) - gold, kept)
       end subroutine push_pair
+
+      !> Full Newton, first iteration after a rollback: the elastic stiffness (the run's own
+      !> factorisation when it keeps one apart from the tangent's, else factorised now).
+      subroutine elastic_operator(err)
+         type(error_t), allocatable, intent(out) :: err
+         elastic_now = .true.
+         if (.not. problem%linear%separate_tangent) call factorise_stiffness(model, problem, &
+            .false., err)
+      end subroutine elastic_operator
 
       !> Full Newton: the consistent tangent at the current state. A singular tangent (a
       !> perfectly plastic zone, a joint in full slip) is no mechanism of the model: this

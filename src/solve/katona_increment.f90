@@ -1,7 +1,9 @@
 !> One load increment of a model with Katona contact (doc/theory.md §6.5, the Katona incremental-
-!> iterative path with a bordered saddle-point solve). Replaces the driver's Newton loop for
-!> such models only (pecplas_solve_increments dispatches here); the rest of the driver
-!> (cuts, limit loads, output) is shared.
+!> iterative path with a bordered saddle-point solve): katona_method_t, the increment solver
+!> of pecplas_solve_method for such models (pecplas_solve_method_factory chooses it). The load
+!> path, the load vectors, the internal forces and the residual are those of every method
+!> (pecplas_solve_residual); the rest of the driver (fallback chain, cuts, limit loads,
+!> output) is shared.
 !>
 !> Each outer iteration linearises the massif (and any penalty joints) at u_j and solves
 !>     [R  D^T] [du]   [F - f_int(u_j)]
@@ -14,22 +16,34 @@
 !> iteration is exact and the second only confirms the residual.
 module pecplas_solve_katona_increment
    use pecplas_base_kinds, only: wp
-   use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
+   use pecplas_base_error, only: error_t, ERR_SINGULAR
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
+   use pecplas_model_options, only: METHOD_NEWTON
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_base_timers, only: wall_time
-   use pecplas_fe_assembly, only: internal_forces
    use pecplas_joints_laws_type, only: MODE_OPEN
    use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces, &
       apply_d_free, add_dt_free, build_flexibility
    use pecplas_joints_katona_states, only: solve_states
    use pecplas_joints_katona_results, only: katona_joint_fields
    use pecplas_solve_arc_length, only: arc_root, arc_predictor_sign
+   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
+   use pecplas_solve_residual, only: load_vectors, internal_forces_at, free_residual, &
+      free_part, add_free
    implicit none (type, external)
    private
 
-   public :: katona_increment, katona_arc_t
+   public :: katona_method_t
+
+   !> Katona contact iterated inside modified Newton (the run's factorisation) or full Newton
+   !> (att%method == METHOD_NEWTON: the consistent tangent every outer iteration); no
+   !> quasi-Newton.
+   type, extends(increment_method_t) :: katona_method_t
+   contains
+      procedure :: solve_increment => katona_solve_increment
+      procedure :: has_quasi_newton => katona_has_quasi_newton
+   end type katona_method_t
 
    !> Arc-length data of a Katona increment: the free step load q (per unit step fraction)
    !> and its nodal form fq, the length dl and the previous converged increment (the
@@ -51,53 +65,63 @@ module pecplas_solve_katona_increment
 
 contains
 
-   !> Same contract as the driver's solve_increment: u, fint (without contact forces),
-   !> reaction (with them) at the end; converged / blowup / iterations / residual.
-   !> Arc-length control (pecplas_solve_arc_length) when `arc` is present: the loads grow
-   !> from those of `factors` by dtau fq, dtau an unknown held by ||Δu|| = arc%dl; the
-   !> load-factor row and column border the same saddle-point system: per outer iteration
-   !> v_q = R^-1 q joins v_r = R^-1 r, and the contact states and dtau are solved together
-   !> by a short fixed point (states for dtau, dtau for the states' forces).
-   subroutine katona_increment(model, problem, factors, fint_conv, newton, u, fint, reaction, &
-         converged, blowup, iters, residual, error, arc)
+   pure logical function katona_has_quasi_newton(this) result(yes)
+      class(katona_method_t), intent(in) :: this
+      yes = .false.
+   end function katona_has_quasi_newton
+
+   !> The contract of pecplas_solve_method: u, fint (without contact forces), reaction (with
+   !> them) at the end. Arc-length control (pecplas_solve_arc_length) when att%arc: the loads
+   !> grow from those of step fraction att%tau0 by dtau fq, dtau an unknown held by
+   !> ||Δu|| = att%dl; the load-factor row and column border the same saddle-point system:
+   !> per outer iteration v_q = R^-1 q joins v_r = R^-1 r, and the contact states and dtau
+   !> are solved together by a short fixed point (states for dtau, dtau for the states'
+   !> forces).
+   subroutine katona_solve_increment(this, model, problem, att, fint_conv, u, fint, reaction, &
+         out, error)
+      class(katona_method_t), intent(inout) :: this
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
-      real(wp), intent(in) :: factors(:), fint_conv(:, :)
-      !> Consistent tangents every outer iteration (else the run's factorisation).
-      logical, intent(in) :: newton
+      type(attempt_t), intent(in) :: att
+      real(wp), intent(in) :: fint_conv(:, :)
       real(wp), allocatable, intent(out) :: u(:, :), fint(:, :), reaction(:, :)
-      logical, intent(out) :: converged, blowup
-      integer, intent(out) :: iters
-      real(wp), intent(out) :: residual
+      type(outcome_t), intent(out) :: out
       type(error_t), allocatable, intent(out) :: error
-      type(katona_arc_t), intent(inout), optional :: arc
-      real(wp), allocatable :: fext(:, :), up(:, :), fc(:, :), r(:), rhs(:), v(:), w(:), &
-         zj(:, :), h(:)
+      type(katona_arc_t) :: arc
+      real(wp), allocatable :: fext(:, :), fbase(:, :), fq(:, :), up(:, :), fc(:, :), r(:), &
+         rhs(:), v(:), w(:), zj(:, :), h(:)
       !> Arc-length work vectors (arc_states, phi_at).
       real(wp), allocatable :: vr(:), base(:), tmp(:), dirn(:)
       integer, allocatable :: flips(:)
-      real(wp) :: rnorm, ref, t0
-      integer :: p, i, d, k, nstates, nit, n2
+      real(wp) :: rnorm, ref, t0, tau
+      integer :: k, nstates, nit, n2
+      logical :: newton
 
-      associate (kt => problem%katona, dofs => problem%system%dofs)
+      out%reason = ''
+      newton = att%method == METHOD_NEWTON
+      associate (kt => problem%katona, dofs => problem%system%dofs, iters => out%iterations, &
+                 residual => out%residual, converged => out%converged, blowup => out%blowup)
          n2 = 2*kt%nd
-         fext = problem%system%initial_force
-         allocate (up(2, size(fint_conv, 2)), source=0.0_wp)
-         do p = 1, size(factors)
-            fext = fext + factors(p)*problem%system%pattern_force(:, :, p)
-            up = up + factors(p)*problem%system%pattern_disp(:, :, p)
-         end do
+         tau = merge(att%tau0, att%tau1, att%arc)
+         call load_vectors(problem, att%f0, att%ftarget, tau, fbase, fq, up)
+         fext = fbase + tau*fq
+         out%tau = tau
+         if (att%arc) then
+            arc%fq = fq
+            arc%q = free_part(problem, fq)
+            arc%dl = att%dl
+            arc%tau = att%tau0
+            if (allocated(att%du_prev)) then
+               if (size(att%du_prev) > 0) arc%du_prev = att%du_prev
+            end if
+         end if
          u = problem%state%u
          where (dofs%eq == 0) u = up
          allocate (fint, mold=fint_conv)
          ! before the first converged increment the driver's fint_conv is the initial-stress
          ! load, which holds the initial contact forces too: the massif's own is needed here
          if (any(u /= problem%state%u) .or. problem%stats%increments == 0) then
-            t0 = wall_time()
-            call internal_forces(model, problem%system%rules, u, problem%state, fint, error, &
-               problem%stats%time%laws)
-            problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
-            if (allocated(error)) call as_run_error(error)
+            call internal_forces_at(model, problem, u, fint, error)
             if (allocated(error)) return
          else
             fint = fint_conv
@@ -113,20 +137,8 @@ contains
          do
             fc = 0.0_wp
             call add_contact_forces(kt, kt%f_trial, fc)
-            reaction = fint + fc - fext
-            do i = 1, size(u, 2)
-               do d = 1, 2
-                  k = dofs%eq(d, i)
-                  if (k > 0) then
-                     r(k) = -reaction(d, i)
-                     rhs(k) = fext(d, i) - fint(d, i)
-                     reaction(d, i) = 0.0_wp
-                  end if
-               end do
-            end do
-            rnorm = norm2(r)
-            ref = max(norm2(pack(fext - problem%system%initial_force, dofs%eq > 0)), norm2(reaction))
-            if (ref == 0.0_wp) ref = norm2(pack(problem%system%initial_force, dofs%eq > 0))
+            call free_residual(problem, fext, fint + fc, r, reaction, rnorm, ref)
+            rhs = free_part(problem, fext - fint)
             residual = 0.0_wp
             if (ref > 0.0_wp) residual = rnorm/ref
             ! at least one solve: the states must be checked against the new loads. A state of
@@ -140,7 +152,14 @@ contains
                exit
             end if
             blowup = .not. (rnorm < huge(1.0_wp))
-            if (iters >= model%solver%max_iterations .or. blowup) return
+            if (blowup) then
+               out%reason = 'the residual became infinite or NaN'
+               return
+            end if
+            if (iters >= model%solver%max_iterations) then
+               out%reason = 'contact iteration cap reached'
+               return
+            end if
             if (newton .and. iters > 0) then
                call factorise_stiffness(model, problem, .true., error)
                if (allocated(error)) then
@@ -164,11 +183,15 @@ contains
             if (allocated(error)) return
             call relative_displacements(kt, u, zj)
             problem%stats%time%solve = problem%stats%time%solve + (wall_time() - t0)
-            if (present(arc)) then
+            if (att%arc) then
                call arc_states(arc, iters == 0, v, error)
                if (allocated(error)) return
-               if (.not. arc%ok) return
+               if (.not. arc%ok) then
+                  out%reason = arc%reason
+                  return
+               end if
                fext = fext + arc%dtau*arc%fq
+               out%tau = arc%tau
             else
                call apply_d_free(kt, dofs, v, w)
                t0 = wall_time()
@@ -184,14 +207,8 @@ contains
                problem%stats%solves = problem%stats%solves + 2
             end if
             iters = iters + 1
-            do k = 1, dofs%neq
-               u(dofs%eq_dir(k), dofs%eq_node(k)) = u(dofs%eq_dir(k), dofs%eq_node(k)) + v(k)
-            end do
-            t0 = wall_time()
-            call internal_forces(model, problem%system%rules, u, problem%state, fint, error, &
-               problem%stats%time%laws)
-            problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
-            if (allocated(error)) call as_run_error(error)
+            call add_free(problem, v, u)
+            call internal_forces_at(model, problem, u, fint, error)
             if (allocated(error)) return
          end do
          ! converged: bookkeeping, joint results, and the contact state is accepted
@@ -206,6 +223,7 @@ contains
          call katona_joint_fields(model, kt, u, problem%state%joints, error)
          if (allocated(error)) return
          call kt%commit()
+         out%du = free_part(problem, u - problem%state%u)
       end associate
 
    contains
@@ -219,7 +237,7 @@ contains
          real(wp), intent(inout) :: v(:)
          type(error_t), allocatable, intent(out) :: err
          real(wp) :: dtau, dnew, x, xa, fa, fb, fx
-         integer :: loop, side
+         integer :: loop
          logical :: bracketed
          associate (kt => problem%katona, dofs => problem%system%dofs)
             if (.not. allocated(arc%vq) .or. arc%vq_stamp /= problem%stats%factorisations) then
@@ -250,7 +268,6 @@ contains
             xa = dtau
             fa = fb
             bracketed = .false.
-            side = 0
             do loop = 1, MAX_ARC_LOOPS
                if (abs(fb) <= 1.0e-10_wp*arc%dl**2 .and. abs(dnew - dtau) <= 1.0e-8_wp* &
                    max(abs(dtau), 1.0e-12_wp)) exit
@@ -265,11 +282,9 @@ contains
                   xa = dtau
                   fa = fb
                   bracketed = .true.
-                  side = 0
                else if (bracketed) then
                   ! the retained end stays: halve its value (Illinois)
-                  side = side + 1
-                  if (side >= 1) fa = 0.5_wp*fa
+                  fa = 0.5_wp*fa
                end if
                dtau = x
                fb = fx
@@ -312,12 +327,6 @@ contains
          end associate
       end subroutine phi_at
 
-   end subroutine katona_increment
-
-   !> A material that cannot return cuts the increment (as in the driver).
-   subroutine as_run_error(error)
-      type(error_t), allocatable, intent(inout) :: error
-      if (error%kind /= ERR_SINGULAR) error%kind = ERR_RUN
-   end subroutine as_run_error
+   end subroutine katona_solve_increment
 
 end module pecplas_solve_katona_increment

@@ -158,7 +158,8 @@ contains
    end subroutine add_estimate
 
    !> Converged joint fields of every joint set; the plastic slip is the law's own
-   !> (pecplas_joints_laws_coulomb: plastic_slip, 0 for a law without one).
+   !> (pecplas_joints_laws_coulomb: plastic_slip, 0 for a law without one and for a Katona
+   !> set, which has no law at its points).
    subroutine joint_fields(model, problem, r)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
@@ -168,16 +169,17 @@ contains
          if (.not. allocated(js%sets)) return
          allocate (r%joint_fields(size(js%sets)))
          do s = 1, size(js%sets)
-            associate (st => js%sets(s), f => r%joint_fields(s), &
-                       law => model%laws(model%joint_sets(s)%law_index)%law)
+            associate (st => js%sets(s), f => r%joint_fields(s), set => model%joint_sets(s))
                f%eps = st%eps
                f%sigma = st%sigma
                f%mode = st%mode
                f%state = st%hist
-               allocate (f%slip(size(st%mode, 1), size(st%mode, 2)))
+               allocate (f%slip(size(st%mode, 1), size(st%mode, 2)), source=0.0_wp)
+               if (set%is_katona()) cycle
                do e = 1, size(st%mode, 2)
                   do ip = 1, size(st%mode, 1)
-                     f%slip(ip, e) = plastic_slip(law, st%hist(:, ip, e))
+                     f%slip(ip, e) = plastic_slip(model%laws(set%law_index)%law, &
+                        st%hist(:, ip, e))
                   end do
                end do
             end associate

@@ -1,16 +1,29 @@
-!> Load vectors, the residual on the free equations, and conversions between nodal arrays
-!> (2, nnode) and vectors of the free equations, shared by the iteration methods.
+!> The step's load path and load vectors, the internal forces and the residual on the free
+!> equations, and conversions between nodal arrays (2, nnode) and vectors of the free
+!> equations, shared by every increment method (pecplas_solve_method).
 module pecplas_solve_residual
    use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t, ERR_SINGULAR, ERR_RUN
+   use pecplas_base_timers, only: wall_time
+   use pecplas_model_type, only: model_t
+   use pecplas_fe_assembly, only: internal_forces
    use pecplas_problem_type, only: problem_t
    use pecplas_joints_state, only: joint_state_t
    use pecplas_joints_laws_type, only: MODE_SLIP, MODE_OPEN
    implicit none (type, external)
    private
 
-   public :: load_vectors, free_residual, free_part, add_free, joint_signature
+   public :: path_factor, load_vectors, internal_forces_at, free_residual, free_part, add_free, &
+      joint_signature
 
 contains
+
+   !> The load path of a step: pattern factor f0 + (ftarget - f0) tau at step fraction tau,
+   !> from the factor f0 at the start of the step to its target ftarget.
+   elemental real(wp) function path_factor(f0, ftarget, tau) result(f)
+      real(wp), intent(in) :: f0, ftarget, tau
+      f = f0 + (ftarget - f0)*tau
+   end function path_factor
 
    !> The step's loads at step fraction tau: F_ext = fbase + tau fq, with fbase the initial
    !> stress forces plus the patterns at their step-start factors f0 and fq the change of the
@@ -27,9 +40,28 @@ contains
       do p = 1, size(f0)
          fbase = fbase + f0(p)*problem%system%pattern_force(:, :, p)
          if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%system%pattern_force(:, :, p)
-         up = up + (f0(p) + (ftarget(p) - f0(p))*tau_up)*problem%system%pattern_disp(:, :, p)
+         up = up + path_factor(f0(p), ftarget(p), tau_up)*problem%system%pattern_disp(:, :, p)
       end do
    end subroutine load_vectors
+
+   !> Internal forces fint at the nodal displacements u from the converged state (timed as
+   !> the residual). A material or law that cannot return is a run error (the attempt fails,
+   !> the increment is retried or cut); a singular system stays ERR_SINGULAR.
+   subroutine internal_forces_at(model, problem, u, fint, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      real(wp), intent(in) :: u(:, :)
+      real(wp), intent(out) :: fint(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      t0 = wall_time()
+      call internal_forces(model, problem%system%rules, u, problem%state, fint, error, &
+         problem%stats%time%laws)
+      problem%stats%time%residual = problem%stats%time%residual + (wall_time() - t0)
+      if (allocated(error)) then
+         if (error%kind /= ERR_SINGULAR) error%kind = ERR_RUN
+      end if
+   end subroutine internal_forces_at
 
    !> r = F_ext - F_int on the free equations, the reactions (F_int - F_ext on the supported
    !> ones), ||r|| and the reference of the convergence test: the applied loads and

@@ -262,8 +262,10 @@ contains
             if (allocated(error)) return
             call kt%begin_increment()
          end if
-         ! trial = converged everywhere, as after a commit
+         ! trial = converged everywhere, as after a commit; the points' tangents are the
+         ! converged state's when carried (else the set-up's: not those of the state)
          call st%rollback()
+         st%converged_tangents = tangents
          p%resume = .true.
       end associate
    end subroutine unpack_data
@@ -412,8 +414,10 @@ contains
 
    !> The points' consistent tangents of the last update are carried when an arc-length path
    !> may follow: its predictor assembles the tangent from them before any update of the
-   !> increment (a load-controlled increment updates the points first, and its first solve
-   !> uses the carried factorisation).
+   !> increment; and when the deck imposes displacements: the first iteration of an
+   !> increment that moves them multiplies their change by the stiffness of those tangents
+   !> (pecplas_solve_iterate). Other load-controlled increments update the points first, and
+   !> their first solve uses the carried factorisation.
    logical function tangents_carried(model, problem) result(carried)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
@@ -424,6 +428,8 @@ contains
       do i = problem%position%istep, size(model%steps)
          carried = carried .or. model%steps(i)%arc_length
       end do
+      if (allocated(model%patterns)) carried = carried .or. &
+         any([(model%patterns(i)%kind == 'DISPLACEMENT', i=1, size(model%patterns))])
    end function tangents_carried
 
    subroutine get3(data, name, a, error)

@@ -2,6 +2,8 @@
 with -rs, as tools/test_all.sh runs it); a skip without a reason is reported as a failure."""
 import pytest
 
+import pecplas_py  # noqa: F401  (tools/ on the PYTHONPATH of the scripts the tests start)
+
 
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_makereport(item, call):

@@ -4,9 +4,8 @@ increment (test_nonlinear.py, test_footing_paths.py)."""
 import subprocess
 from pathlib import Path
 
-import h5py
-
 from pecplas_exe import pecplas_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -19,13 +18,11 @@ def run(text, tmp_path, name):
     p = subprocess.run(pecplas_cmd() + [str(deck), "-o", str(out), "--quiet"],
                        capture_output=True, text=True, cwd=ROOT, timeout=300)
     assert out.exists(), p.stderr
-    with h5py.File(out, "r") as f:
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
-        hist = {k: f["history"][k][()] for k in f["history"]}
-        limit = None
-        if "limit" in f:
-            limit = {"factors": f["limit/pattern_factors"][()],
-                     "increment": int(f["limit"].attrs["global_increment"])}
-        u = {k: f["increments"][k]["displacement"][()] for k in sorted(f["increments"])}
+    with Results(out) as r:
+        status = r.status
+        hist = r.history()
+        limit = r.limit()
+        if limit is not None:
+            limit = {"factors": limit["factors"], "increment": limit["global_increment"]}
+        u = {k: r.field(k, "displacement") for k in r.keys}
     return p, status, hist, limit, u

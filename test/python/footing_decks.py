@@ -1,5 +1,5 @@
 """Strip-footing decks for the nonlinear-solution tests (test_footing_paths.py), on the graded
-half-model mesh of test/data/plasticity/make_footing.py: weightless Mohr-Coulomb soil, a
+half-model mesh of pecplas_py.decks.make_footing: weightless Mohr-Coulomb soil, a
 footing of half-width b = 1 m on x in [0, 1] at y = 0, symmetry axis and far side on rollers,
 base fixed.
 
@@ -9,12 +9,8 @@ stiff_footing the top row of elements under the footing is a stiff elastic plate
 the soil's), so that both drives load the same rigid footing. An optional surcharge q acts on
 the surface beyond the footing (and under it, under force control) in a first step.
 """
-import sys
-from pathlib import Path
-
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[0] / "data" / "plasticity"))
-import make_footing  # noqa: E402
+from pecplas_py.deck import Deck
+from pecplas_py.decks import make_footing
 
 B = 1.0
 
@@ -39,38 +35,31 @@ def deck(elem="T6", nf=2, c=10.0, phi=0.0, psi=0.0, q=0.0, drive="settle", settl
         xc = sum(nodes[n - 1][0] for n in e[:3]) / 3.0
         yc = sum(nodes[n - 1][1] for n in e[:3]) / 3.0
         (plate if stiff_footing and xc < B and yc > y_first else soil).append(e)
-    out = [f"*TITLE\nstrip footing, {elem}, c = {c:g}, phi = {phi:g}, psi = {psi:g}, q = {q:g}",
-           "*UNITS\nkN, m, kPa", "*ANALYSIS, TYPE=PLANE_STRAIN", "*NODES"]
-    out += [f"{k}, {x:.10g}, {y:.10g}" for k, (x, y) in enumerate(nodes, 1)]
+    d = Deck(fmt=".10g")
+    d.title(f"strip footing, {elem}, c = {c:g}, phi = {phi:g}, psi = {psi:g}, q = {q:g}")
+    d.units("kN, m, kPa").analysis("PLANE_STRAIN").nodes(list(enumerate(nodes, 1)))
     for name, els in (("soil", soil), ("plate", plate)):
         if els:
-            out.append(f"*ELEMENTS, TYPE={elem}, SET={name}")
-            out += [f"{elements.index(e) + 1}, " + ", ".join(map(str, e)) for e in els]
-    out.append(f"*MATERIAL, NAME=soil, TYPE=MOHR_COULOMB\nE = 1e4, NU = 0.3, C = {c:g}, "
-               f"PHI = {phi:g}, PSI = {psi:g}")
-    out.append("*SECTION, SET=soil, MATERIAL=soil")
+            d.elements(elem, name, [(elements.index(e) + 1, *e) for e in els])
+    d.material("soil", f"E = 1e4, NU = 0.3, C = {c:g}, PHI = {phi:g}, PSI = {psi:g}",
+               type="MOHR_COULOMB")
+    d.section("soil", "soil")
     if plate:
-        out.append("*MATERIAL, NAME=plate\nE = 1e7, NU = 0.3\n*SECTION, SET=plate, MATERIAL=plate")
+        d.material("plate", "E = 1e7, NU = 0.3").section("plate", "plate")
     for name, lst in (("footing", footing), ("axis", left), ("far", right), ("base", base)):
-        out.append(f"*NSET, NAME={name}")
-        out += [", ".join(map(str, lst[k:k + 10])) for k in range(0, len(lst), 10)]
-    out.append("*EDGES, NAME=under")
-    out += [f"{a}, {b}, {m}" for a, b, m in inner]
-    out.append("*EDGES, NAME=beside")
-    out += [f"{a}, {b}, {m}" for a, b, m in outer]
-    out.append("*BOUNDARY\naxis, X\nfar, X\nbase, XY")
+        d.nset(name, lst, per_line=10)
+    d.edges("under", inner).edges("beside", outer)
+    d.boundary("axis, X", "far, X", "base, XY")
     if q > 0:
-        out.append(f"*LOAD, NAME=surcharge, TYPE=PRESSURE\nbeside, {q:g}")
-        if drive == "pressure":
-            out.append(f"under, {q:g}")
+        d.load("surcharge", "PRESSURE", f"beside, {q:g}",
+               *([f"under, {q:g}"] if drive == "pressure" else []))
     if drive == "settle":
-        out.append("*LOAD, NAME=settle, TYPE=DISPLACEMENT\nfooting, Y, -1.0")
+        d.load("settle", "DISPLACEMENT", "footing, Y, -1.0")
     else:
-        out.append("*LOAD, NAME=press, TYPE=PRESSURE\nunder, 1.0")
+        d.load("press", "PRESSURE", "under, 1.0")
     if q > 0:
-        out.append("*STEP, NAME=surcharge, INCREMENTS=1\nsurcharge, 1")
+        d.step("surcharge", 1, "surcharge, 1")
     target = f"settle, {settle:g}" if drive == "settle" else f"press, {pressure:g}"
-    out.append(f"*STEP, NAME=push, INCREMENTS={increments}{step_options}\n{target}")
-    out.append(solver)
-    out.append("*OUTPUT, STRESSES=NO, STRAINS=NO")
-    return "\n".join(out) + "\n"
+    d.line(f"*STEP, NAME=push, INCREMENTS={increments}{step_options}", target)
+    d.line(solver).output(STRESSES=False, STRAINS=False)
+    return d.text()

@@ -7,11 +7,12 @@ Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 from pecplas_exe import pecplas_cmd
+
+from pecplas_py import script_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
 DECK = ROOT / "test/data/adapt/lshape.inp"
@@ -38,7 +39,7 @@ def test_energy_target_met_last_level_written(pecplas, tmp_path):
     assert len(levels) >= 2 and dofs == sorted(set(dofs))
     assert est[-1] <= 15.0 and all(e > 15.0 for e in est[:-1])
     assert "target met at level %d" % len(levels) in r.stdout
-    check = subprocess.run([sys.executable, str(ROOT / "tools/check_results.py"), str(out)],
+    check = subprocess.run([*script_cmd("checks.check_results"), str(out)],
                            capture_output=True, text=True)
     assert check.returncode == 0, check.stdout + check.stderr
 

@@ -16,16 +16,13 @@ Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm.
 import math
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import bench_adapt  # noqa: E402
+from pecplas_py.bench import adapt as bench_adapt
 from footing_decks import deck as footing_deck  # noqa: E402
 
 LEVEL = re.compile(r"^\s+(\d+)\s+(\d+)\s+(\d+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s*$")
@@ -51,7 +48,7 @@ def run(deck_text, tmp_path, name, *args):
 def uniform_series(model, element):
     """[(DOFs, error)] of the uniform mesh series of doc/bench/work_precision.csv (the
     Newton-type solvers; every one gives the same values) and the model's Richardson
-    reference [m], read as tools/bench_adapt.py reads them."""
+    reference [m], read as pecplas_py.bench.adapt reads them."""
     rows = [r for r in bench_adapt.csv_runs("s2")
             if (r["model"], r["element"], r["series"]) == (model, element, "mesh")
             and r["status"] == "ok"]

@@ -1,20 +1,21 @@
 """`pecplas --advise DECK` (`doc/adapt.md`, `doc/build.md`) through the real executable: the mesh
 axis is the adaptive sequence, and the configuration advised for 1 % and 5 % really is within its
 claimed error of an independent reference computed here (uniform meshes of the same elastic strip
-footing, tools/make_default_deck.py, 16 x 8 and 32 x 16 Q8); no results file is written; bad
+footing, pecplas_py.decks.make_default_deck, 16 x 8 and 32 x 16 Q8); no results file is written; bad
 goals are input errors.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
 import re
 import subprocess
-import sys
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
+
+from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 # a 2 x 1 Q8 strip footing (2 m x 1 m block, footing half-width 1 m, elastic, gravity then
@@ -35,7 +36,7 @@ def run(pecplas, *args, cwd=ROOT):
 
 
 def footing(path, nx, ny):
-    subprocess.run([sys.executable, str(ROOT / "tools/make_default_deck.py"), "--nx", str(nx),
+    subprocess.run([*script_cmd("decks.make_default_deck"), "--nx", str(nx),
                     "--ny", str(ny), *GEOMETRY, "-o", str(path)], check=True,
                    capture_output=True)
     return path
@@ -50,9 +51,9 @@ def uniform(pecplas, tmp_path_factory):
         deck = footing(tmp / f"u{nx}.inp", nx, nx // 2)
         r = run(pecplas, deck, "-o", tmp / f"u{nx}.h5", "--quiet")
         assert r.returncode == 0, r.stderr
-        with h5py.File(tmp / f"u{nx}.h5", "r") as f:
-            x = f["mesh/coordinates"][()]
-            u = f["increments"][sorted(f["increments"])[-1]]["displacement"][()]
+        with Results(tmp / f"u{nx}.h5") as r:
+            x = r.coordinates
+            u = r.field(r.last_key(), "displacement")
         out.append((x, u))
     return out
 

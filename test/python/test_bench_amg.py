@@ -1,7 +1,6 @@
-"""The pure-Python pieces of tools/bench_amg.py on synthetic data (no benchmark run, no
+"""The pure-Python pieces of pecplas_py.bench.amg on synthetic data (no benchmark run, no
 pyamg): the check of the exported matrix's layout, the rigid-body modes, the fits and the
 fragment's claims."""
-import sys
 from pathlib import Path
 
 import h5py
@@ -9,9 +8,8 @@ import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
 
-import bench_amg  # noqa: E402
+from pecplas_py.bench import amg as bench_amg
 
 
 def spd_matrix(n, seed=1):
@@ -129,7 +127,7 @@ def test_rows_read_back_from_the_csv_give_the_same_fragment(tmp_path, monkeypatc
     rows = rows_from(0.3, 1.4)
     rows[2][5] = bench_amg.MAX_CG + 1
     monkeypatch.setattr(bench_amg, "BENCH_DIR", tmp_path)
-    import bench_common
+    from pecplas_py.bench import common as bench_common
     bench_common.write_csv(tmp_path / "amg.csv", bench_amg.HEADER, rows)
     back = bench_amg.read_rows(tmp_path / "amg.csv")
     assert back == rows
@@ -139,7 +137,7 @@ def test_rows_read_back_from_the_csv_give_the_same_fragment(tmp_path, monkeypatc
 def test_elastic_deck_turns_the_scaling_footing_elastic(tmp_path):
     # the contrast rows must really be elastic: the footing deck of the scaling bench with
     # its Drucker-Prager line made elastic (same E, nu, weight), and any other deck refused
-    import bench_scaling
+    from pecplas_py.bench import scaling as bench_scaling
     deck = tmp_path / "footing.inp"
     bench_scaling.make_deck(8, 4, deck)
     bench_amg.elastic_deck(deck)

@@ -1,15 +1,12 @@
-"""The pure-Python pieces of the HPC benchmark (tools/bench_mumps.py,
-tools/bench_mumps_report.py) on synthetic rows: no MPI and no benchmark run here."""
+"""The pure-Python pieces of the HPC benchmark (pecplas_py.bench.mumps,
+pecplas_py.bench.mumps_report) on synthetic rows: no MPI and no benchmark run here."""
 import math
 import re
-import sys
-from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-import bench_mumps  # noqa: E402
-import bench_mumps_report as rep  # noqa: E402
+from pecplas_py.bench import mumps as bench_mumps
+from pecplas_py.bench import mumps_report as rep
 
 NAN = float("nan")
 

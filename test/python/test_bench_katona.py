@@ -1,14 +1,12 @@
-"""tools/bench_katona.py without its runs (they are `make bench`): the summary of a completed
+"""pecplas_py.bench.katona without its runs (they are `make bench`): the summary of a completed
 run and the progress lines of a run stopped at the time limit are parsed into the table's
 counts, the decks differ from their sources only by the solver method, and the fragment says
-when the machine was loaded. tools/bench_summary.py --keep-header keeps the suite's header."""
-import sys
+when the machine was loaded. pecplas_py.bench.summary --keep-header keeps the suite's header."""
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import bench_katona as bk  # noqa: E402
-import bench_summary  # noqa: E402
+from pecplas_py.bench import katona as bk
+from pecplas_py.bench import summary as bench_summary
 
 SUMMARY = """ nodes 20  elements 3  equations 20  steps 3  solver CHOLMOD / MODIFIED_NEWTON
  step  1   compress inc    1  fraction  0.2000  iter   1  residual  1.0E-12

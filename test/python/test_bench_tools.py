@@ -1,23 +1,21 @@
-"""The pure-Python pieces of the benchmark scripts (tools/bench_*.py) on synthetic data: no
+"""The pure-Python pieces of the benchmark scripts (pecplas_py.bench) on synthetic data: no
 benchmark is run here."""
 
 import csv
 import math
 import re
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
 
-import bench_common  # noqa: E402
-import bench_scaling  # noqa: E402
-import bench_stability  # noqa: E402
-import bench_summary  # noqa: E402
-import make_default_deck  # noqa: E402
+from pecplas_py.bench import common as bench_common
+from pecplas_py.bench import scaling as bench_scaling
+from pecplas_py.bench import stability as bench_stability
+from pecplas_py.bench import summary as bench_summary
+from pecplas_py.decks import make_default_deck
 
 
 def test_exponent_fit_recovers_a_power_law():
@@ -112,7 +110,7 @@ def test_summary_order_and_header(tmp_path):
 
 
 def test_factorisation_flops_read_from_the_solver_line():
-    # the summary line of a run (tools/bench_scaling.py fits the exponent of these counts)
+    # the summary line of a run (pecplas_py.bench.scaling fits the exponent of these counts)
     out = (" linear solver: CHOLMOD n=10092 nnz(factor)=673122 flops= 7.189E+07 "
            "peak_bytes= 1.162E+07 analyses=1 factorisations=11\n")
     assert bench_scaling.factorisation_flops(out) == 7.189e7
@@ -120,7 +118,7 @@ def test_factorisation_flops_read_from_the_solver_line():
 
 
 def test_elastic_scaling_slopes_and_kink_verdict():
-    import bench_scaling_elastic as el
+    from pecplas_py.bench import scaling_elastic as el
     # an exact power law N^1.1: every local slope is 1.1, the target (<= 1.25, no kink) is met
     n = [1e4, 1e5, 5e5, 1e6]
     t = [2e-6 * x**1.1 for x in n]
@@ -142,7 +140,7 @@ def test_elastic_scaling_slopes_and_kink_verdict():
 
 def test_solver_overhead_lines_add_up():
     import re
-    import bench_solver
+    from pecplas_py.bench import solver as bench_solver
     # one 1e6 row: total 6.0, bare 4.0; the named parts and the rest add up to total - bare
     d = {c: 0.0 for c in bench_solver.COLUMNS + bench_solver.EXTRA}
     d.update(element="Q4", equations=999698, read_setup_s=0.4, assembly_s=0.5,
@@ -208,7 +206,7 @@ def test_load_range_of_known_loads():
 def _peer_rows(walls, timing=True):
     """Synthetic peer.csv rows: one pile mesh and the block, every code with the wall times
     {code: (median, min, max)}; timing=False: the 11 columns written before the spread."""
-    import bench_peer
+    from pecplas_py.bench import peer as bench_peer
     codes = ["ours, Mohr-Coulomb penalty", bench_peer.TIED, "ours, Katona", "CalculiX"]
     rows = []
     for scene, cs in (("S2 pile r1", codes), ("CGS-4 block", codes[:1] + codes[2:])):
@@ -223,7 +221,7 @@ def _peer_rows(walls, timing=True):
 
 
 def test_peer_median_spread_and_ratio_range():
-    import bench_peer
+    from pecplas_py.bench import peer as bench_peer
     assert bench_peer.spread([1.3, 0.9, 1.1]) == (1.1, 0.9, 1.3)
     # CalculiX 1.0 [0.8 - 1.2] against ours 0.2 [0.1 - 0.4]: 5 [0.8/0.4 = 2, 1.2/0.1 = 12]
     assert bench_peer.ratio_spread((1.0, 0.8, 1.2), (0.2, 0.1, 0.4)) == pytest.approx(
@@ -231,7 +229,7 @@ def test_peer_median_spread_and_ratio_range():
 
 
 def test_peer_fragment_states_median_load_and_threads():
-    import bench_peer
+    from pecplas_py.bench import peer as bench_peer
     walls = {c: (0.2, 0.1, 0.4) for c in ("ours, Mohr-Coulomb penalty", bench_peer.TIED,
                                            "ours, Katona")}
     walls["CalculiX"] = (1.0, 0.8, 1.2)
@@ -286,7 +284,7 @@ def test_scaling_render_keeps_the_csv_rows_and_their_provenance(tmp_path, monkey
 
 def _solver_row(run_user, run_sys, equations=999698):
     """A 1e6 solver row (median and [min, max] of the run's user and system times)."""
-    import bench_solver
+    from pecplas_py.bench import solver as bench_solver
     d = {c: 0.0 for c in bench_solver.COLUMNS + bench_solver.EXTRA}
     d.update(element="Q4", equations=equations, threads=1, run_user_s=run_user[1],
              run_user_min_s=run_user[0], run_user_max_s=run_user[2], run_sys_s=run_sys[1],
@@ -296,7 +294,7 @@ def _solver_row(run_user, run_sys, equations=999698):
 
 
 def test_solver_cpu_lines_say_where_the_spread_is():
-    import bench_solver
+    from pecplas_py.bench import solver as bench_solver
     # user time steady (4.0-4.1), system time spread (1.4-3.2): the sentence is made
     lines = bench_solver.cpu_lines([_solver_row((4.0, 4.05, 4.1), (1.4, 2.0, 3.2)),
                                     _solver_row((0.1, 0.1, 0.1), (0.1, 0.1, 0.1), 99458)])
@@ -314,7 +312,7 @@ def test_solver_cpu_lines_say_where_the_spread_is():
 def test_solver_overhead_split_adds_up_to_total_minus_bare():
     # one thread: the user, system and no-CPU parts are each the run's minus the bare's, so
     # they add up to total - bare; the user-time ratio is the run's over the bare's
-    import bench_solver
+    from pecplas_py.bench import solver as bench_solver
     names = bench_solver.COLUMNS + bench_solver.EXTRA
     d = dict(zip(names, _solver_row((4.0, 4.4, 4.5), (1.0, 2.0, 3.0))))
     d.update(total_s=7.0, bare_cholmod_s=4.6)   # bare: user 3.1, system 1.4, no CPU 0.1
@@ -331,7 +329,7 @@ def test_solver_overhead_split_adds_up_to_total_minus_bare():
 def test_fresh_memory_rate_is_measured():
     # a real measurement of this machine (8 MB, fast): positive and finite, and far below
     # what a memory-less copy could claim (no machine fills fresh pages at 1000 GB/s)
-    import bench_common
+    from pecplas_py.bench import common as bench_common
     rate = bench_common.fresh_memory_gbs(mb=8, repeats=3)
     assert 0.0 < rate < 1000.0
 
@@ -340,7 +338,7 @@ def test_solver_csv_of_an_earlier_version_renders_without_cpu_lines(tmp_path):
     # a solver.csv written before the CPU-time columns (its header as the earlier
     # bench_solver wrote it): they read as nan, and the fragment has no CPU lines rather
     # than wrong ones; the committed CSV, with them, renders them
-    import bench_solver
+    from pecplas_py.bench import solver as bench_solver
     cpu = {"run_user_s", "run_sys_s", "bare_user_s", "bare_sys_s", "run_user_min_s",
            "run_user_max_s", "run_sys_min_s", "run_sys_max_s", "bare_sys_min_s",
            "bare_sys_max_s"}
@@ -368,7 +366,7 @@ def test_solver_case_maps_the_two_programs_lines_to_the_columns(monkeypatch, tmp
     # the run's line (pecplas-bench) and the bare's line (pecplas-bench-bare, a process of
     # its own) as the programs print them; each number must land in its own column and the
     # ratio be total / bare
-    import bench_solver
+    from pecplas_py.bench import solver as bench_solver
     lines = {"bench": " Q4      707    999698    0.540    0.510    3.738    0.232    0.133    0.199"
                       "    5.775   1792.8    4.080    1.700\n",
              "bare": "    0.700    2.850    0.244    3.794  1.05E+08    3.050    0.750\n"}
@@ -395,3 +393,47 @@ def test_solver_case_maps_the_two_programs_lines_to_the_columns(monkeypatch, tmp
     lines["bare"] = "\n"
     with pytest.raises(RuntimeError, match="pecplas-bench-bare Q4 707 failed"):
         bench_solver.one_case("pecplas-bench", "pecplas-bench-bare", "Q4", 707, str(tmp_path))
+
+
+def test_footing_peer_ccx_counts_and_plateau():
+    """CalculiX's .sta: a cut attempt (number ending in U) counts its iterations and a cut,
+    not an increment; the plateau is the last 'total force' block's -RF_y per unit width."""
+    from pecplas_py.bench import peer_footing as bf
+    sta = ("SUMMARY OF JOB INFORMATION\n"
+           "  STEP      INC     ATT  ITRS     TOT TIME     STEP TIME      INC TIME\n"
+           "     1          1     1     6  0.5E-01  0.5E-01  0.5E-01\n"
+           "     1          2     1U    4  0.1E+00  0.1E+00  0.5E-01\n"
+           "     1          2     2     5  0.1E+00  0.1E+00  0.25E-01\n")
+    assert bf.ccx_counts(sta) == (2, 15, 1)
+    dat = ("\n total force (fx,fy,fz) for set FOOTING and time  0.95E+00\n\n"
+           "        6.7E+00 -5.257025E+02 -7.6E-14\n"
+           "\n total force (fx,fy,fz) for set FOOTING and time  0.1E+01\n\n"
+           "        6.8E+00 -5.258250E+02  1.0E-13\n")
+    assert bf.ccx_plateau(dat) == pytest.approx(525.825, abs=1e-9)
+
+
+def test_footing_peer_fragment_ratios():
+    """The footing table: iterations per increment and the ratio to CalculiX's count on the
+    same mesh and element, the plateau's relative difference; rows of other soils or drives
+    go to the second table."""
+    from pecplas_py.bench import peer_footing as bf
+    rows = [["2k", "ours", "Q8R", "vm", "settle", 2003, 20, 76, 0, "1.19", "525.8", 0, "0.5", 1],
+            ["2k", "CalculiX", "Q8R", "vm", "settle", 2003, 20, 60, 0, "23.47", "525.8", 0,
+             "0.5", 1],
+            ["2k", "ours", "Q8R", "mc", "settle", 2003, 20, 105, 0, "2.01", "3068.2", 0,
+             "0.5", 1]]
+    text = bf.fragment(rows)
+    assert "| 2k | Q8R | 2003 | ours | 20 | 76 | 3.8 | 1.27 | 0 | 1.19 | 525.8 | +0.00% |" in text
+    assert "| 2k | Q8R | mc | settle | 2003 | 20 | 105 | 0 | 2.01 | 3068.2 |" in text
+
+
+def test_footing_decks_reproduce_the_base_mesh():
+    """refine 1 is the 2 000-equation mesh: 22 x 17 corner lines of the quadratic mesh,
+    21 x 16 Q8 (1 083 nodes) or 42 x 32 Q4 (1 419 nodes); refine m splits every side in m."""
+    from pecplas_py.decks import make_footing_peer_decks as fd
+    nodes, els, *_ = fd.mesh("Q8", 1)
+    assert (len(nodes), len(els)) == (1083, 336)
+    nodes, els, *_ = fd.mesh("Q4", 1)
+    assert (len(nodes), len(els)) == (1419, 1344)
+    nodes, els, *_ = fd.mesh("Q8", 3)
+    assert len(els) == 336 * 9

@@ -1,17 +1,16 @@
-"""tools/compare_results.py, the check that a change leaves the results of input/ as they were,
+"""checks/compare_results.py, the check that a change leaves the results of input/ as they were,
 on small files written here: equal files compare as 0; a number moved by 1e-10 of its
 dataset's largest entry, a changed integer, string or exit code, a dataset or CSV row more or
 less are each reported; time stamps, timings and checksum attributes are not compared."""
 import json
-import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 
+from pecplas_py.checks import compare_results as cr
+
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import compare_results as cr  # noqa: E402
 
 
 def write_h5(path, u=(1.0, 2.0, -4.0), mode=(1, 2), status="completed", cpu=0.5, extra=False,

@@ -13,6 +13,8 @@ import h5py
 import pytest
 from pecplas_exe import pecplas_cmd
 
+from pecplas_py.results import Results
+
 ROOT = Path(__file__).resolve().parents[2]
 TRUST = ROOT / "test" / "data" / "trust"
 
@@ -36,9 +38,9 @@ def test_warnings_printed_and_stored(tmp_path):
     assert r.returncode == 0, r.stderr  # a warning never changes the exit code
     lines = [s for s in r.stderr.splitlines() if ": warning: " in s]
     assert len(lines) == len(WARNINGS), r.stderr
-    with h5py.File(out) as f:
-        stored = [s.decode() if isinstance(s, bytes) else s for s in f.attrs["warnings"]]
-        assert f.attrs["status"] in ("completed", b"completed")
+    with Results(out) as r:
+        stored = r.attr("warnings")
+        assert r.status == "completed"
     assert stored == lines  # the file holds exactly what was printed
     for line, phrase in WARNINGS:
         hits = [s for s in lines if s.startswith(f"{TRUST / 'warn_all.inp'}:{line}: warning: ")
@@ -51,8 +53,8 @@ def test_no_warning_stores_empty_list(tmp_path):
     r = run(TRUST / "good_bom.inp", out=out)
     assert r.returncode == 0, r.stderr
     assert ": warning: " not in r.stderr
-    with h5py.File(out) as f:
-        assert len(f.attrs["warnings"]) == 0
+    with Results(out) as r:
+        assert len(r.attr("warnings")) == 0
 
 
 @pytest.mark.parametrize("deck, line, phrase", [
@@ -164,7 +166,7 @@ def test_identify_and_sensitivity_output_that_cannot_be_written_is_an_input_erro
 
 
 def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
-    # reproducer found by tools/mutate_decks.py: spring 552 of input/s2/s2_katona.inp joined
+    # reproducer found by checks/mutate_decks.py: spring 552 of input/s2/s2_katona.inp joined
     # to node 7 instead of 71, a doublet whose face-2 node lies behind face 1
     src = ROOT / "input" / "s2" / "s2_katona.inp"
     lines = src.read_text().splitlines()
@@ -182,7 +184,7 @@ def test_katona_interpenetrated_doublet_names_its_line(tmp_path):
 
 
 def test_singular_on_split_node_names_the_joints_line(tmp_path):
-    # reproducer found by tools/mutate_decks.py: KN = 1e308 in test/data/joints/
+    # reproducer found by pecplas_py.checks.mutate_decks: KN = 1e308 in test/data/joints/
     # gmsh_interface.inp; the free node is a duplicate made for the generated joints, so the
     # error names the *JOINTS line that made it
     src = ROOT / "test" / "data" / "joints" / "gmsh_interface.inp"
@@ -199,7 +201,7 @@ def test_singular_on_split_node_names_the_joints_line(tmp_path):
 
 
 def test_huge_modjoin_increment_stops_fast(tmp_path):
-    # reproducer found by tools/mutate_decks.py (a hang beyond its 20 s bound): the pile of
+    # reproducer found by pecplas_py.checks.mutate_decks (a hang beyond its 20 s bound): the pile of
     # input/s6/s6_modjoin_ag.inp pulled by a factor of -2147483649 asked MODJOIN for ~1e12
     # substeps per increment; such an increment is now refused and cut, and the run stops
     src = ROOT / "input" / "s6" / "s6_modjoin_ag.inp"
@@ -230,9 +232,8 @@ def test_large_displacement_warning_joins_the_list(tmp_path):
     r = run(deck, out=out)
     assert r.returncode == 0, r.stderr
     assert "small-strain theory no longer holds" in r.stderr
-    with h5py.File(out) as f:
-        stored = [s.decode() if isinstance(s, bytes) else s for s in f.attrs["warnings"]]
-        message = f.attrs["status_message"]
-        message = message.decode() if isinstance(message, bytes) else str(message)
+    with Results(out) as res:
+        stored = res.attr("warnings")
+        message = res.attr("status_message")
     assert any("small-strain theory no longer holds" in s for s in stored), stored
     assert "small-strain theory no longer holds" in message

@@ -1,7 +1,7 @@
 """Docs that match runs:
-- the S4 numbers of doc/validation.md (generated blocks) equal what tools/s4_report.py writes
+- the S4 numbers of doc/validation.md (generated blocks) equal what scenes/s4_report.py writes
   from fresh runs of the S4 decks (pecplas-path, -identify, -sensitivity: a few seconds);
-- the committed decks equal their generators' output (tools/make_*.py);
+- the committed decks equal their generators' output (pecplas_py.decks.make_*);
 - every scene script answers --help;
 - no tracked file cites the project's private references (its specification file, issue
   numbers, work sessions), which a user of the repository cannot see. Files of src/ and
@@ -12,14 +12,15 @@ import filecmp
 import json
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
-from pecplas_exe import exe_cmd
+from pecplas_exe import exe_cmd, exe_path
+
+from pecplas_py import script_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-TOOLS = ROOT / "tools"
+PACKAGE = ROOT / "tools" / "pecplas_py"
 
 # Source files that may still cite the specification, issues or sessions (to be rewritten to
 # cite the thesis or doc/; remove a file from this list once it is clean). Only src/ and
@@ -60,13 +61,16 @@ def test_allow_list_only_sources():
 
 # generator command -> (directory it writes into, or a single file)
 GENERATORS = [
-    (["make_s1_decks.py", "--out", "{tmp}"], "input/s1"),
-    (["make_s2_decks.py", "--out", "{tmp}"], "input"),
-    (["make_s4_decks.py", "--out", "{tmp}"], "input/s4"),
-    (["make_s5_deck.py", "-o", "{tmp}/s5_shear_box.inp"], "input/s5"),
-    (["make_s6_decks.py", "--out", "{tmp}"], "input"),
-    (["make_default_deck.py", "-o", "{tmp}/strip_footing.inp"], "input/examples"),
-    (["make_hertz_deck.py", "--out", "{tmp}/hertz.inp"], "test/data/katona"),
+    (["make_s1_decks", "--out", "{tmp}"], "input/s1"),
+    (["make_s2_decks", "--out", "{tmp}"], "input"),
+    (["make_s4_decks", "--out", "{tmp}"], "input/s4"),
+    (["make_s5_deck", "-o", "{tmp}/s5_shear_box.inp"], "input/s5"),
+    (["make_s6_decks", "--out", "{tmp}"], "input"),
+    (["make_default_deck", "-o", "{tmp}/strip_footing.inp"], "input/examples"),
+    (["make_hertz_deck", "--out", "{tmp}/hertz.inp"], "test/data/katona"),
+    (["make_katona_decks", "--out", "{tmp}"], "test/data/katona"),
+    (["make_patch_decks", "--out", "{tmp}"], "test/data/joints"),
+    (["make_footing", "-o", "{tmp}/footing_t6.inp"], "test/data/plasticity"),
 ]
 
 
@@ -75,24 +79,28 @@ GENERATORS = [
 def test_committed_decks_equal_generators(tmp_path, cmd, committed):
     """Each generated file equals the committed one byte for byte (regenerate and commit)."""
     args = [a.format(tmp=tmp_path) for a in cmd]
-    r = subprocess.run([sys.executable, str(TOOLS / args[0]), *args[1:]], cwd=ROOT,
+    r = subprocess.run([*script_cmd("decks." + args[0]), *args[1:]], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
     written = [p for p in tmp_path.rglob("*.inp")]
     assert written, f"{cmd[0]} wrote no deck"
     differ = [str(p.relative_to(tmp_path)) for p in written
               if not filecmp.cmp(p, ROOT / committed / p.relative_to(tmp_path), shallow=False)]
-    assert not differ, (f"{committed}: committed decks differ from `python3 tools/{cmd[0]}`: "
+    assert not differ, (f"{committed}: committed decks differ from "
+                        f"`python3 -m pecplas_py.decks.{cmd[0]}`: "
                         + ", ".join(differ))
 
 
 def test_plot_scripts_help():
-    """--help of every tools/plot_*.py prints the usage and exits 0 (no figure, no crash);
-    started together, as each spends its time importing matplotlib."""
-    procs = {p.name: subprocess.Popen([sys.executable, str(p), "--help"], cwd=ROOT,
-                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-             for p in sorted(TOOLS.glob("plot_*.py"))}
-    assert len(procs) >= 6, "the scene scripts tools/plot_*.py are missing"
+    """--help of every plot script (scenes/plot_s*.py, plots/plot_*.py) prints the usage and
+    exits 0 (no figure, no crash); started together, as each spends its time importing
+    matplotlib."""
+    scripts = sorted(PACKAGE.glob("scenes/plot_*.py")) + sorted(PACKAGE.glob("plots/plot_*.py"))
+    procs = {p.name: subprocess.Popen([*script_cmd(f"{p.parent.name}.{p.stem}"), "--help"],
+                                      cwd=ROOT, stdout=subprocess.PIPE,
+                                      stderr=subprocess.STDOUT, text=True)
+             for p in scripts}
+    assert len(procs) >= 6, "the plot scripts scenes/plot_s*.py, plots/plot_*.py are missing"
     bad = []
     for name, proc in procs.items():
         out, _ = proc.communicate(timeout=120)
@@ -104,19 +112,15 @@ def test_plot_scripts_help():
 def test_s4_generated_blocks_match_fresh_runs(tmp_path):
     """Reruns scene S4 (27 point-driver decks, identification, table III.4) and compares the
     generated blocks of doc/validation.md: any difference fails, with the diff."""
-    path_cmd = exe_cmd("pecplas-path")
-    for target in ("pecplas-identify", "pecplas-sensitivity"):
-        exe_cmd(target)  # the same freshness check for the other two executables
-    bin_args = [] if path_cmd[0] == "fpm" else ["--bin", str(Path(path_cmd[0]).parent)]
-    r = subprocess.run([sys.executable, str(TOOLS / "s4_report.py"), str(tmp_path / "s4"),
-                        "--run", "--check", *bin_args], cwd=ROOT, capture_output=True,
-                       text=True, timeout=600)
+    for target in ("pecplas-path", "pecplas-identify", "pecplas-sensitivity"):
+        exe_cmd(target)  # fails the test here when a binary is stale (the script finds them alike)
+    r = subprocess.run([*script_cmd("scenes.s4_report"), str(tmp_path / "s4"), "--run",
+                        "--check"], cwd=ROOT, capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stdout + r.stderr
 
 
 def _s1_stability():
-    sys.path.insert(0, str(TOOLS))
-    import s1_stability
+    from pecplas_py.scenes import s1_stability
     return s1_stability
 
 
@@ -124,7 +128,7 @@ def test_s1_stability_table_is_the_stored_reference():
     """The S1 stability table of doc/validation.md is rendered from
     test/reference/s1_stability.json (72 runs take minutes: too slow to rerun here)."""
     diff = _s1_stability().doc_block(check=True)
-    assert not diff, diff + "\nregenerate: python3 tools/s1_stability.py --doc"
+    assert not diff, diff + "\nregenerate: python3 -m pecplas_py.scenes.s1_stability --doc"
 
 
 def test_s1_stability_reference_physics():
@@ -166,12 +170,9 @@ def test_s1_stability_rows_rerun(tmp_path, exponent, method, fallback):
     Newton alone, completed and diverged): same status, increment, method and iteration counts,
     interpenetration within 1e-3. The rows of the chain and of full Newton cost 10-20 s each
     (the attempts that fail before the cut run the later methods up to MAX_ITERATIONS = 10000)
-    and are rerun by `python3 tools/s1_stability.py --json` only."""
+    and are rerun by `python3 -m pecplas_py.scenes.s1_stability --json` only."""
     s1 = _s1_stability()
-    cmd = exe_cmd("pecplas")
-    exe = cmd[0] if cmd[0] != "fpm" else subprocess.run(
-        ["fpm", "run", "--profile", "release", "--target", "pecplas", "--runner", "echo"],
-        cwd=ROOT, capture_output=True, text=True).stdout.split()[-1]
+    exe = exe_path("pecplas")
     ref = json.loads(s1.REFERENCE.read_text())
     want = [r for r in ref["rows"] if r["kn_over_e1_exp"] == exponent and r["tol"] == 1e-3
             and r["method"] == method.lower() and r["fallback"] == fallback][0]
@@ -188,8 +189,7 @@ def test_rounding_diff_tolerates_only_the_last_digit():
     """The comparison of generated blocks: a number may differ by one unit of its last printed
     digit (a value on a rounding boundary between builds), not more; counts must be equal;
     words must be equal."""
-    sys.path.insert(0, str(TOOLS))
-    from doc_blocks import rounding_diff
+    from pecplas_py.doc_blocks import rounding_diff
     assert rounding_diff("a 78.3 mm, 6.92e-01", "a 78.3 mm, 6.92e-01") == []
     assert rounding_diff("a 78.3 mm, 6.92e-01", "a 78.2 mm, 6.93e-01") == []
     assert rounding_diff("a 78.3 mm", "a 78.5 mm") != []

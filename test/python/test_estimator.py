@@ -7,9 +7,9 @@ Uses $PECPLAS_BIN (set by `make test` and CTest), else runs through fpm."""
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 from pecplas_exe import pecplas_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 DECK = "test/data/estimator/footing_mc.inp"
@@ -20,12 +20,12 @@ def test_error_indicator_written(tmp_path):
     r = subprocess.run([*pecplas_cmd(), DECK, "-o", str(out)], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
-    with h5py.File(out) as f:
-        nel = f["mesh/sets/soil/connectivity"].shape[0]
-        incs = sorted(f["increments"])
+    with Results(out) as res:
+        nel = res.element_set("soil")["connectivity"].shape[0]
+        incs = res.keys
         for k in incs:
-            g = f["increments"][k]
-            eta = g["sets/soil/error_indicator"][...]
+            g = res.increment(k)
+            eta = res.field(k, "sets/soil/error_indicator")
             assert eta.shape == (nel,)
             assert np.all(np.isfinite(eta)) and np.all(eta >= 0)
             # the global estimate is the root sum of squares of the element indicators: the
@@ -36,9 +36,9 @@ def test_error_indicator_written(tmp_path):
                               rtol=(nel + 1) * np.finfo(float).eps, atol=0.0)
             assert g.attrs["energy_norm"] > 0
         # geostatic stresses are linear in depth: recovered exactly, estimate ~ 0
-        first = f["increments"][incs[0]]
+        first = res.increment(incs[0])
         assert first.attrs["error_estimate"] <= 1e-10 * first.attrs["energy_norm"]
         # plastic loading: a non-zero estimate
-        assert f["increments"][incs[-1]].attrs["error_estimate"] > 0
+        assert res.increment(incs[-1]).attrs["error_estimate"] > 0
     xmf = out.with_suffix(".xmf").read_text()
     assert 'Attribute Name="error_indicator" AttributeType="Scalar" Center="Cell"' in xmf

@@ -1,4 +1,4 @@
-"""tools/export_abaqus.py: our decks written as CalculiX input.
+"""pecplas_py.peers.export_abaqus: our decks written as CalculiX input.
 
 Without ccx: node and element counts, the contact surfaces built from the right element faces,
 master on the stiff side, the tip tied where both sides touch the axis, materials, initial
@@ -9,16 +9,16 @@ linear penalty): the joint stays closed and in stick, so the case is elastic and
 import math
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
-import h5py
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import export_abaqus as ex  # noqa: E402
+from pecplas_py.peers import export_abaqus as ex
 from pecplas_exe import pecplas_cmd  # noqa: E402
+
+from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 E, NU, KN, P, H = 1.0e4, 0.3, 1.0e5, 100.0, 1.0
 M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
@@ -55,7 +55,7 @@ def column_deck(axi):
 @pytest.fixture(scope="module")
 def s2(tmp_path_factory):
     d = tmp_path_factory.mktemp("s2")
-    subprocess.run([sys.executable, str(ROOT / "tools" / "make_s2_decks.py"), "--out", str(d)],
+    subprocess.run([*script_cmd("decks.make_s2_decks"), "--out", str(d)],
                    check=True, capture_output=True)
     m = ex.parse_deck(d / "s2" / "s2_mohr_coulomb.inp")
     m["nsets"]["PRINT_NODES"] = [1]
@@ -148,8 +148,8 @@ def ours(deck, out):
     r = subprocess.run([*pecplas_cmd(), str(deck), "-o", str(out), "--quiet"], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    with h5py.File(out) as f:
-        return -f["increments"][sorted(f["increments"])[-1]]["displacement"][7, 1]
+    with Results(out) as r:
+        return -r.field(r.last_key(), "displacement")[7, 1]
 
 
 @pytest.mark.skipif(shutil.which("ccx") is None, reason="CalculiX (ccx) is not on the PATH")

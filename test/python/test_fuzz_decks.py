@@ -5,17 +5,16 @@ behind passes the checker (no NaN, consistent history). Fixed seed, so failures 
 import os
 import random
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 from pecplas_exe import pecplas_cmd
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-from mutate_decks import mutate_once  # noqa: E402  (one mutator: tools/mutate_decks.py)
+from pecplas_py import script_cmd
+from pecplas_py.checks.mutate_decks import mutate_once  # one mutator: checks/mutate_decks.py
 
 ROOT = Path(__file__).resolve().parents[2]
-CHECKER = ROOT / "tools" / "check_results.py"
+CHECKER = script_cmd("checks.check_results")
 SOURCES = ["input/examples/strip_footing.inp", "input/s1/s1_friction_psi3_kn5e6.inp",
            "test/data/cli/oedometer.inp", "test/data/initial/geostatic_column.inp"]
 
@@ -39,7 +38,7 @@ def test_mutated_deck_never_crashes(exe, tmp_path, case):
     if r.returncode == 2:
         assert "pecplas: error:" in r.stderr
     if out.exists():
-        chk = subprocess.run([sys.executable, str(CHECKER), str(out)], capture_output=True,
+        chk = subprocess.run([*CHECKER, str(out)], capture_output=True,
                              text=True)
         assert chk.returncode == 0, chk.stdout + chk.stderr
 

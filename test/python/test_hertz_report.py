@@ -1,16 +1,14 @@
 """The finer Hertz line contact of doc/validation.md (h = 0.05 mm, about 3 s) is written by
-tools/hertz_report.py from its run: here the deck is written and run afresh, its physics
+pecplas_py.docs.hertz_report from its run: here the deck is written and run afresh, its physics
 checked against the closed form, and the committed block must equal the one rendered from the
 run (to the last printed digit: doc_blocks.rounding_diff)."""
-import sys
 from pathlib import Path
 
 import pytest
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import hertz_report as hr  # noqa: E402
+from pecplas_py.docs import hertz_report as hr
 
 
 @pytest.fixture(scope="module")
@@ -34,7 +32,8 @@ def test_hertz_fine_physics(values):
 
 def test_doc_matches_the_run(values):
     diff = hr.check_doc(values)
-    assert not diff, diff + "\nregenerate: tools/hertz_report.py DIR --run (or make docs)"
+    assert not diff, diff + ("\nregenerate: python3 -m pecplas_py.docs.hertz_report DIR --run (or "
+                             "make docs)")
 
 
 def test_a_changed_value_is_caught(values):

@@ -6,8 +6,9 @@ import os
 import subprocess
 from pathlib import Path
 
-import h5py
 import pytest
+
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 PROGRAMS = ["pecplas", "pecplas-path", "pecplas-identify", "pecplas-sensitivity", "pecplas-sweep"]
@@ -39,13 +40,13 @@ def test_installed_pecplas_runs_default_deck(prefix, tmp_path):
     r = subprocess.run([str(prefix / "bin/pecplas"), str(ROOT / "input/default.inp"), "-o",
                         str(out), "--quiet"], cwd=tmp_path, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    with h5py.File(out) as f:
-        assert f.attrs["status"] in ("completed", b"completed")
-        x = f["mesh/coordinates"][:]
+    with Results(out) as r:
+        assert r.status == "completed"
+        x = r.coordinates
         centre = int(((x[:, 0] ** 2 + x[:, 1] ** 2)).argmin())
-        fac = f["history/pattern_factors"][:, 0]
-        key = f"{int(f['history/global_increment'][fac.argmax()]):06d}"
-        s = -f["increments"][key]["displacement"][centre, 1]
+        fac = r.pattern_factors()[:, 0]
+        key = f"{int(r.history('global_increment')[fac.argmax()]):06d}"
+        s = -r.field(key, "displacement")[centre, 1]
     assert abs(s - 0.078) < 0.0005
 
 

@@ -1,12 +1,11 @@
 """Joint sets in the results file of the real `pecplas` executable: the joint patch test
 read back independently with h5py (uniform contact pressure 100 at every joint point, all
-in stick), and tools/check_results.py accepting the file and catching damaged joint data.
+in stick), and pecplas_py.checks.check_results accepting the file and catching damaged joint data.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else runs through fpm."""
 
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -14,8 +13,10 @@ import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
 
+from pecplas_py import script_cmd
+
 ROOT = Path(__file__).resolve().parents[2]
-CHECKER = ROOT / "tools" / "check_results.py"
+CHECKER = script_cmd("checks.check_results")
 DECK = "test/data/joints/patch_goodman6_axi_gen.inp"
 
 
@@ -30,7 +31,7 @@ def results(tmp_path_factory):
 
 
 def checker(path):
-    return subprocess.run([sys.executable, CHECKER, path], capture_output=True, text=True)
+    return subprocess.run([*CHECKER, path], capture_output=True, text=True)
 
 
 def test_checker_accepts_joint_file(results):

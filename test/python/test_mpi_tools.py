@@ -1,14 +1,11 @@
-"""The pure-Python pieces of the MPI check and benchmark (tools/mpi_check.py,
-tools/bench_mumps.py) on synthetic data: no MPI needed."""
-import sys
-from pathlib import Path
+"""The pure-Python pieces of the MPI check and benchmark (pecplas_py.checks.mpi_check,
+pecplas_py.bench.mumps) on synthetic data: no MPI needed."""
 
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-import bench_mumps  # noqa: E402
-import mpi_check  # noqa: E402
+from pecplas_py.bench import mumps as bench_mumps
+from pecplas_py.checks import mpi_check
 
 
 def test_mumps_deck_replaces_the_solver_choice():

@@ -18,15 +18,13 @@ honest statuses (doc/theory.md, 'Nonlinear solution').
   per cent).
 """
 import re
-import sys
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from deck_runs import run  # noqa: E402
+from deck_runs import run
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -135,14 +133,13 @@ def test_quasi_newton_at_1e8(tmp_path, scene):
 def head_uplift_curve(out_h5, force_pattern_scale=None):
     """(uplift of head node 1, pull) per written increment: the pull is the pattern factor
     times `force_pattern_scale` (force control) or the head nodes' reaction (imposed uplift)."""
-    with h5py.File(out_h5, "r") as f:
-        factors = f["history/pattern_factors"][()]
+    with Results(out_h5) as res:
+        factors = res.pattern_factors()
         up, pull = [], []
-        for i, k in enumerate(sorted(f["increments"].keys())):
-            g = f["increments"][k]
-            up.append(g["displacement"][()][0, 1])
+        for i, k in enumerate(res.keys):
+            up.append(res.field(k, "displacement")[0, 1])
             if force_pattern_scale is None:
-                r = g["reaction"][()]
+                r = res.field(k, "reaction")
                 pull.append(abs(r[0, 1] + r[1, 1]))
             else:
                 pull.append(factors[i, -1] * force_pattern_scale)

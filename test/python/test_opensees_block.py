@@ -1,9 +1,8 @@
-"""The elastic block of the OpenSees peer bench (tools/opensees_block.py): mesh and deck
+"""The elastic block of the OpenSees peer bench (pecplas_py.peers.opensees_block): mesh and deck
 generation without OpenSees, our solve of the generated deck, and (only where openseespy is
 installed) the OpenSees runner against our solve on the same small mesh."""
 import importlib.util
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -12,10 +11,10 @@ import pytest
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
 
-import bench_peer_opensees as bpo  # noqa: E402
-import opensees_block as ob  # noqa: E402
+from pecplas_py import script_cmd
+from pecplas_py.bench import peer_opensees as bpo
+from pecplas_py.peers import opensees_block as ob
 
 HAVE_OPENSEES = importlib.util.find_spec("openseespy") is not None
 
@@ -94,8 +93,6 @@ def test_compare_measures_tip_and_field():
     assert field == pytest.approx(2e-9 / (2 + 2e-9), rel=1e-6)
 
 
-@pytest.mark.skipif(not HAVE_OPENSEES, reason="openseespy is not installed (only make bench "
-                    "installs it): the OpenSees runner cannot be checked")
 def block_system(m):
     """(K, f, free) of the block on its free dofs: plane-strain Q4, 2 x 2 Gauss points, the
     element both codes use (checked: our solution's backward error against it is ~1e-16)."""
@@ -124,6 +121,8 @@ def block_system(m):
     return k[np.ix_(free, free)], f[free], free
 
 
+@pytest.mark.skipif(not HAVE_OPENSEES, reason="openseespy is not installed (only make bench "
+                    "installs it): the OpenSees runner cannot be checked")
 def test_opensees_runner_agrees_with_ours(tmp_path):
     """The same Q4 stiffness (2 x 2 Gauss points) and load: the same linear system K x = f,
     solved directly by both. Each solution is backward stable: its residual within n eps of
@@ -133,7 +132,7 @@ def test_opensees_runner_agrees_with_ours(tmp_path):
     largest displacement, so the bound holds for it too."""
     m, u = _ours(tmp_path, 20, 10)
     ob.save_mesh(m, tmp_path / "m.npz")
-    r = subprocess.run([sys.executable, str(ROOT / "tools" / "opensees_block.py"),
+    r = subprocess.run([*script_cmd("peers.opensees_block"),
                         str(tmp_path / "m.npz"), str(tmp_path / "o.npz")],
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr

@@ -6,7 +6,6 @@ test_s2_s3.py).
 Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -14,8 +13,10 @@ import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
 
+from pecplas_py import script_cmd
+
 ROOT = Path(__file__).resolve().parents[2]
-CHECKER = ROOT / "tools" / "check_results.py"
+CHECKER = script_cmd("checks.check_results")
 
 
 @pytest.fixture(scope="session")
@@ -35,7 +36,7 @@ def test_strip_footing_runs_and_geostatic_settlement_is_exact(pecplas, tmp_path)
     # one progress line per increment: 1 geostatic + 5 loading
     assert sum(" inc " in line for line in r.stdout.splitlines()) == 6
     assert "status: completed" in r.stdout
-    chk = subprocess.run([sys.executable, CHECKER, out, "--expect-status", "completed"],
+    chk = subprocess.run([*CHECKER, out, "--expect-status", "completed"],
                          capture_output=True, text=True)
     assert chk.returncode == 0, chk.stdout + chk.stderr
     with h5py.File(out) as f:
@@ -75,7 +76,7 @@ def test_stopped_run_exit_3_keeps_increments(pecplas, tmp_path):
     r = run(pecplas, "test/data/cli/diverge.inp", "-o", out, "--quiet")
     assert r.returncode == 3
     assert r.stdout == ""          # --quiet: nothing on stdout
-    chk = subprocess.run([sys.executable, CHECKER, out, "--expect-status", "diverged"],
+    chk = subprocess.run([*CHECKER, out, "--expect-status", "diverged"],
                          capture_output=True, text=True)
     assert chk.returncode == 0, chk.stdout + chk.stderr
     with h5py.File(out) as f:

@@ -1,4 +1,4 @@
-"""Runs the files written by the Fortran suite `io_results` through tools/check_results.py,
+"""Runs the files written by the Fortran suite `io_results` through pecplas_py.checks.check_results,
 and checks that the checker itself catches broken files.
 
 Run from the project root:
@@ -12,16 +12,17 @@ than it (left by an earlier run) fails the test.
 import os
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
+from pecplas_py import script_cmd
+
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "output" / "test"
-CHECKER = ROOT / "tools" / "check_results.py"
+CHECKER = script_cmd("checks.check_results")
 
 # file written by the Fortran test -> status it must carry
 EXPECTED = {
@@ -56,7 +57,7 @@ def fortran_output():
 
 
 def run_checker(*args):
-    return subprocess.run([sys.executable, str(CHECKER), *map(str, args)],
+    return subprocess.run([*CHECKER, *map(str, args)],
                           capture_output=True, text=True)
 
 

@@ -15,7 +15,6 @@ import re
 import shutil
 import signal
 import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -23,11 +22,11 @@ import h5py
 import numpy as np
 import pytest
 
-from pecplas_exe import pecplas_cmd
+from pecplas_exe import exe_path
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import check_results  # noqa: E402
+from pecplas_py.checks import check_results
+
 OEDOMETER = ROOT / "test" / "data" / "cli" / "oedometer.inp"
 INCLUDES = ROOT / "test" / "data" / "decks"
 S6 = ROOT / "input" / "s6" / "s6_modjoin.inp"
@@ -36,13 +35,7 @@ S6 = ROOT / "input" / "s6" / "s6_modjoin.inp"
 @pytest.fixture(scope="module")
 def exe():
     """The pecplas executable itself (kill must reach it, not an `fpm run` wrapper)."""
-    cmd = pecplas_cmd()
-    if cmd[0] != "fpm":
-        return cmd[0]
-    run = subprocess.run(["fpm", "run", "--target", "pecplas", "--runner", "echo"], cwd=ROOT,
-                         capture_output=True, text=True)
-    assert run.returncode == 0, run.stdout + run.stderr
-    return str(ROOT / run.stdout.split()[-1])
+    return exe_path("pecplas")
 
 
 def digest(path):
@@ -60,7 +53,7 @@ def temporaries(directory):
 
 
 def check_file(h5, xmf, status):
-    """tools/check_results.py (in this process): structure, history rows against field
+    """pecplas_py.checks.check_results (in this process): structure, history rows against field
     groups, every XDMF reference a dataset of the file with its shape, no NaN."""
     problems, _ = check_results.check(str(h5), status, str(xmf))
     assert not problems, f"{h5}: {problems}"

@@ -6,7 +6,6 @@ Run from the project root: python3 -m pytest test/python/test_results_units.py
 
 import re
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
@@ -14,8 +13,7 @@ import pytest
 from pecplas_exe import pecplas_cmd
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import check_results  # noqa: E402
+from pecplas_py.checks import check_results
 
 BLOCK = ROOT / "test" / "data" / "decks" / "good_block_q4.inp"
 GOODMAN = ROOT / "test" / "data" / "joints" / "patch_goodman4_plane.inp"
@@ -48,7 +46,7 @@ def attr(obj, name):
                          ids=lambda p: p.stem)
 def test_every_dataset_described(tmp_path, deck):
     """Every float dataset has units (components where it has a component axis) and the
-    XDMF references joint datasets that exist: tools/check_results.py walks the file."""
+    XDMF references joint datasets that exist: pecplas_py.checks.check_results walks the file."""
     out = tmp_path / "r.h5"
     r = run(deck, out)
     assert r.returncode == 0, r.stderr

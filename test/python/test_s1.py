@@ -5,10 +5,11 @@ a fresh temporary directory every time (never a file left by an earlier run)."""
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
+
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -20,14 +21,14 @@ def results(tmp_path_factory):
                           "--quiet"], cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     assert path.exists(), "pecplas exited 0 but wrote no " + str(path)
-    with h5py.File(path) as f:
-        steps = f["history/step"][:]
+    with Results(path) as r:
+        steps = r.history("step")
         rows = {}
-        for key in f["increments"]:
-            g = f["increments"][key]
-            j = g["joints/joint"]
-            rows[int(key)] = (int(g.attrs["step"]), j["stress"][:].reshape(-1, 2),
-                              j["mode"][:].ravel(), j["relative_displacement"][:].reshape(-1, 2))
+        for key in r.keys:
+            j = "joints/joint/"
+            rows[int(key)] = (r.step_of(key), r.field(key, j + "stress").reshape(-1, 2),
+                              r.field(key, j + "mode").ravel(),
+                              r.field(key, j + "relative_displacement").reshape(-1, 2))
         yield steps, rows
 
 
@@ -54,10 +55,9 @@ def test_no_nan(results):
 
 def test_docs_match_fresh_runs(tmp_path):
     """The S1 dilatancy numbers of doc/validation.md (generated block written by
-    tools/s1_report.py) equal those of fresh runs of the six decks to the last printed digit."""
-    import sys
-    sys.path.insert(0, str(ROOT / "tools"))
-    import s1_report
+    scenes/s1_report.py) equal those of fresh runs of the six decks to the last printed digit."""
+    from pecplas_py.scenes import s1_report
     runs = s1_report.run_decks(s1_report.DILATANCY, tmp_path, pecplas_cmd())
     diff = s1_report.check_doc(runs)
-    assert not diff, diff + "\nregenerate: make s1 (tools/s1_report.py output/s1)"
+    assert not diff, diff + ("\nregenerate: make s1 (python3 -m pecplas_py.scenes.s1_report "
+                             "output/s1)")

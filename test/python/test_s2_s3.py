@@ -9,7 +9,7 @@ capacity computed by hand from the initial stresses, Q_s = int_0^L K0 gamma z ta
 is permanent, the shaft shear has reversed somewhere (negative skin friction) and residual
 stresses remain; S3: the head load at a fixed settlement rises with psi.
 
-Stored regression values (test/reference/s2_s3.json, written by tools/s2_reference.py): every
+Stored regression values (test/reference/s2_s3.json, written by scenes/s2_reference.py): every
 case's head settlement at 1000 / 2000 kN, permanent settlement, peak shaft sigma_n, shaft
 resultant and head load at 15 mm, compared within the file's relative tolerance (1e-3: same
 code); the physics check written beside each value is asserted on the stored values.
@@ -19,18 +19,18 @@ stiff limit (K_t -> infinity), checked by taking the springs' K_t up to 1e4 E_so
 import json
 import math
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import make_s2_decks  # noqa: E402
-from s2_reference import QS_HAND, W_RW, randolph_wroth  # noqa: E402
-from s2_results import head_curve, last_key, scene_values, settlement_at, shaft  # noqa: E402
+from pecplas_py.decks import make_s2_decks
+from pecplas_py.scenes.s2_reference import QS_HAND, W_RW, randolph_wroth
+from pecplas_py.scenes.s2_results import head_curve, last_key, scene_values, settlement_at, shaft
 from pecplas_exe import pecplas_cmd  # noqa: E402
+
+from pecplas_py import script_cmd
 
 QS = 0.5 * 18.0 * math.tan(math.radians(30.0)) * math.pi * 1.0 * 10.0**2 / 2.0
 MODELS = ("goodman", "ghaboussi", "spring", "mohr_coulomb")
@@ -207,8 +207,8 @@ def test_stored_references_pass_their_physics_checks():
 
 def test_committed_decks_match_the_generator(tmp_path):
     """input/s2, input/s3 and input/default.inp (what `make run` runs) are what
-    tools/make_s2_decks.py writes; default.inp is the Goodman deck under its own header."""
-    subprocess.run([sys.executable, str(ROOT / "tools" / "make_s2_decks.py"), "--out",
+    pecplas_py.decks.make_s2_decks writes; default.inp is the Goodman deck under its own header."""
+    subprocess.run([*script_cmd("decks.make_s2_decks"), "--out",
                     str(tmp_path)], check=True, capture_output=True)
     for new in [*tmp_path.glob("s2/*.inp"), *tmp_path.glob("s3/*.inp")]:
         old = ROOT / "input" / new.parent.name / new.name
@@ -220,7 +220,8 @@ def test_committed_decks_match_the_generator(tmp_path):
 
 def test_docs_match_fresh_runs(runs):
     """The S2/S3 numbers of doc/validation.md and README.md (generated blocks written by
-    tools/s2_report.py) equal those of these fresh runs to the last printed digit."""
-    import s2_report
+    pecplas_py.scenes.s2_report) equal those of these fresh runs to the last printed digit."""
+    from pecplas_py.scenes import s2_report
     diff = s2_report.check_docs({c: runs[c] for c in CASES})
-    assert not diff, diff + "\nregenerate: make s2 s3 (tools/s2_report.py output)"
+    assert not diff, diff + ("\nregenerate: make s2 s3 (python3 -m pecplas_py.scenes.s2_report "
+                             "output)")

@@ -13,16 +13,14 @@ point driver's (pecplas-path, same law, CNL 100 kPa) on the same slip path withi
 test/reference/s5_s6.json."""
 import json
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-from s5_results import (L, SIGMA_N0, compare, interface, keys_and_steps,  # noqa: E402
-                        mid_history, point_driver, step_ends)
+from pecplas_py.scenes.s5_results import (L, SIGMA_N0, compare, interface, keys_and_steps,
+                                          mid_history, point_driver, step_ends)
 from pecplas_exe import pecplas_cmd  # noqa: E402
 
 END = 0.02    # m: 'away from the ends' = beyond one wall thickness (H / 5) from each wall
@@ -82,9 +80,10 @@ def test_regression_values(run):
 
 
 def test_docs_match_fresh_run(run):
-    """The S5 numbers of doc/validation.md (generated block written by tools/s5_report.py)
+    """The S5 numbers of doc/validation.md (generated block written by pecplas_py.scenes.s5_report)
     equal those of this fresh run to the last printed digit."""
-    import s5_report
+    from pecplas_py.scenes import s5_report
     h5, out = run
     diff = s5_report.check_doc(h5, out)
-    assert not diff, diff + "\nregenerate: make s5 (tools/s5_report.py output/s5)"
+    assert not diff, diff + ("\nregenerate: make s5 (python3 -m pecplas_py.scenes.s5_report "
+                             "output/s5)")

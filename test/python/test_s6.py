@@ -15,15 +15,13 @@ test/reference/s5_s6.json."""
 import json
 import math
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-from s6_results import head_curve, keys_and_loads, shaft, uplift_at  # noqa: E402
+from pecplas_py.scenes.s6_results import head_curve, keys_and_loads, shaft, uplift_at
 from pecplas_exe import pecplas_cmd  # noqa: E402
 
 A, L, GAMMA, PHI = 0.0275, 1.62, 17.0, 41.0
@@ -141,8 +139,9 @@ def test_modjoin_vs_mohr_coulomb_reported(runs):
 
 
 def test_docs_match_fresh_runs(runs):
-    """The S6 numbers of doc/validation.md (generated blocks written by tools/s6_report.py)
+    """The S6 numbers of doc/validation.md (generated blocks written by pecplas_py.scenes.s6_report)
     equal those of these fresh runs to the last printed digit."""
-    import s6_report
+    from pecplas_py.scenes import s6_report
     diff = s6_report.check_doc(runs)
-    assert not diff, diff + "\nregenerate: make s6 (tools/s6_report.py output/s6)"
+    assert not diff, diff + ("\nregenerate: make s6 (python3 -m pecplas_py.scenes.s6_report "
+                             "output/s6)")

@@ -1,4 +1,4 @@
-"""The pure pieces of the work-precision benchmark (tools/wp_analysis.py, tools/wp_decks.py),
+"""The pure pieces of the work-precision benchmark (bench/wp_analysis.py, bench/wp_decks.py),
 on synthetic data: no program runs.
 
 - Richardson: f(h) = f0 + C h^p is exact for the three-level formula, so the limit and the
@@ -10,16 +10,14 @@ on synthetic data: no program runs.
   2 x 1 block: 7 edges) and turns GOODMAN4 joints into GOODMAN6 with the face mid-nodes.
 """
 import math
-import sys
 from pathlib import Path
 
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-from wp_analysis import cheapest_within, relative_error, richardson  # noqa: E402
-from wp_decks import (count_dofs, first_step_only, scale_steps, set_solver,  # noqa: E402
-                      to_q8)
+from pecplas_py.bench.wp_analysis import cheapest_within, relative_error, richardson
+from pecplas_py.bench.wp_decks import (count_dofs, first_step_only, scale_steps, set_solver,
+                                       to_q8)
 
 
 @pytest.mark.parametrize("p", [1.0, 2.0, 3.5])
@@ -141,7 +139,7 @@ def test_scale_steps_imposed_uplift():
 
 
 def test_timing_text_states_thread_single_runs_and_load():
-    from wp_report import timing_text
+    from pecplas_py.bench.wp_report import timing_text
     t = timing_text([0.52, float("nan"), 1.49])
     assert "one thread (OMP_NUM_THREADS=1)" in t and "single runs" in t
     assert "load average 0.5 - 1.5 when the runs started" in t
@@ -150,7 +148,7 @@ def test_timing_text_states_thread_single_runs_and_load():
 
 
 def test_advice_rows_carry_the_load_of_the_chosen_run():
-    from wp_report import advice
+    from pecplas_py.bench.wp_report import advice
     runs = [dict(scene="s2", model="spring", element="Q4", method="NEWTON", level=n,
                  dofs=100 * n, increments=10, status="ok", wall=w, load1=ld,
                  scene_error=e, error_bound=e)

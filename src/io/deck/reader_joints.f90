@@ -3,8 +3,9 @@
 !>   *JOINTS, TYPE=t, SET=name, LAW=law [, INTEGRATION=GAUSS|LOBATTO] [, THICKNESS=e]
 !>            [, ANGLE=deg] [, EDGES=edge_set, SIDE=element_set]
 !>      data (explicit joints): id, n1, n2[, n3, n4[, n5, n6]]; none with EDGES/SIDE.
-!> Laws are built at once (parameter errors at their lines); joints are resolved after the
-!> whole deck is read (pecplas_io_deck_resolve_joints).
+!> Laws are built at once (parameter errors at their lines); TYPE=KATONA gives Katona contact
+!> parameters (model%contacts), no law. Joints are resolved after the whole deck is read
+!> (pecplas_io_deck_resolve_joints).
 module pecplas_io_deck_reader_joints
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -20,6 +21,7 @@ module pecplas_io_deck_reader_joints
    use pecplas_base_params, only: params_t
    use pecplas_model_joints, only: JOINT_TYPES
    use pecplas_joints_laws_type, only: interface_law_t, interface_law_box_t
+   use pecplas_model_contact, only: katona_contact_t, build_katona_contact, KATONA_TYPE
    use pecplas_joints_laws_checks, only: length_unit_metres, LENGTH_UNIT_KEYS
    implicit none (type, external)
    private
@@ -40,6 +42,7 @@ contains
       type(params_t) :: params
       class(interface_law_t), allocatable :: law
       type(interface_law_box_t), allocatable :: tmp(:)
+      type(katona_contact_t) :: contact
       integer :: i, n, at
       real(wp) :: metres
       logical :: found, ok
@@ -53,18 +56,28 @@ contains
       if (allocated(error)) return
       call check_name(state, block%at, name, error)
       if (allocated(error)) return
-      if (index(state%laws%names()//' ', ' '//upper(ltype)//' ') == 0) then
+      if (index(state%laws%names()//' '//KATONA_TYPE//' ', ' '//upper(ltype)//' ') == 0) then
          call line_error(state, block%at, "unknown interface law type '"//upper(ltype)// &
-            "'; known types:"//state%laws%names(), error)
+            "'; known types:"//state%laws%names()//' '//KATONA_TYPE, error)
          return
       end if
       if (.not. allocated(model%laws)) allocate (model%laws(0))
+      if (.not. allocated(model%contacts)) allocate (model%contacts(0))
       if (.not. allocated(state%law_at)) allocate (state%law_at(0))
+      if (.not. allocated(state%contact_at)) allocate (state%contact_at(0))
       n = size(model%laws)
       do i = 1, n
          if (same_name(model%laws(i)%law%name, name)) then
             call line_error(state, block%at, "interface law '"//name// &
                "' is defined twice (first at "//where_text(state, state%law_at(i))//')', error)
+            return
+         end if
+      end do
+      do i = 1, size(model%contacts)
+         if (same_name(model%contacts(i)%name, name)) then
+            call line_error(state, block%at, "interface law '"//name// &
+               "' is defined twice (first at "//where_text(state, state%contact_at(i))//')', &
+               error)
             return
          end if
       end do
@@ -99,6 +112,13 @@ contains
          call read_pairs(state, i, params, error, model%warnings)
          if (allocated(error)) return
       end do
+      if (upper(ltype) == KATONA_TYPE) then
+         call build_katona_contact(name, params, contact, error)
+         if (allocated(error)) return
+         model%contacts = [model%contacts, contact]
+         state%contact_at = [state%contact_at, block%at]
+         return
+      end if
       call state%laws%new_law(upper(ltype), name, params, law, error)
       if (allocated(error)) return
       if (.not. allocated(law%name)) law%name = name

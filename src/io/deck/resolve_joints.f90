@@ -15,11 +15,11 @@ module pecplas_io_deck_resolve_joints
    use pecplas_io_deck_raw_joints, only: raw_joint_set_t
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_model_type, only: model_t
-   use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6
+   use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6, &
+      JOINT_KATONA
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
    use pecplas_joints_elements_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
-   use pecplas_joints_laws_katona, only: is_katona
    implicit none (type, external)
    private
 
@@ -29,7 +29,8 @@ module pecplas_io_deck_resolve_joints
 
 contains
 
-   !> Fills model%joint_sets (deck order); model%laws is allocated even when empty.
+   !> Fills model%joint_sets (deck order); model%laws and model%contacts are allocated even
+   !> when empty.
    subroutine resolve_joints(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -39,6 +40,7 @@ contains
       integer, allocatable :: origin(:), ids(:), at(:)
       integer :: r, n, i, next_id, dup(2)
       if (.not. allocated(model%laws)) allocate (model%laws(0))
+      if (.not. allocated(model%contacts)) allocate (model%contacts(0))
       if (.not. allocated(model%joint_sets)) allocate (model%joint_sets(0))
       if (.not. allocated(state%joint_sets)) return
       origin = [(i, i=1, model%mesh%nnode())]
@@ -102,13 +104,19 @@ contains
       do i = 1, size(model%laws)
          if (same_name(model%laws(i)%law%name, raw%law)) set%law_index = i
       end do
-      if (set%law_index == 0) then
+      do i = 1, size(model%contacts)
+         if (same_name(model%contacts(i)%name, raw%law)) then
+            set%method = JOINT_KATONA
+            set%contact_index = i
+         end if
+      end do
+      if (set%law_index == 0 .and. set%contact_index == 0) then
          call line_error(state, raw%at, "undefined interface law '"//raw%law// &
             "'; known laws:"//law_names(model), error)
          return
       end if
       ! a thin layer hands its law strains (jump / THICKNESS): the law must accept them
-      if (set%is_thin_layer()) then
+      if (set%is_thin_layer() .and. .not. set%is_katona()) then
          msg = model%laws(set%law_index)%law%strain_refusal()
          if (len(msg) > 0) then
             call line_error(state, raw%at, "joint set '"//set%name//"': a THIN_LAYER joint "// &
@@ -122,7 +130,7 @@ contains
       else
          ! Katona doublets may start apart (node-to-node contact with an initial gap)
          call explicit_joints(state, model, raw, set, edges, error, &
-            allow_gap=is_katona(model%laws(set%law_index)%law))
+            allow_gap=set%is_katona())
       end if
       if (allocated(error)) return
       if (.not. set%is_spring()) return
@@ -148,6 +156,9 @@ contains
       list = ''
       do i = 1, size(model%laws)
          call add_name(list, model%laws(i)%law%name)
+      end do
+      do i = 1, size(model%contacts)
+         call add_name(list, model%contacts(i)%name)
       end do
       if (len(list) == 0) list = ' (none: define one with *INTERFACE_LAW, NAME=..., TYPE=...)'
    end function law_names

@@ -112,10 +112,10 @@ module pecplas_io_deck_state
       type(node_lookup_t) :: node_lookup
       !> Material types known to *MATERIAL.
       type(material_registry_t) :: registry
-      !> Interface law types known to *INTERFACE_LAW, the line of each law of model%laws,
-      !> and the *JOINTS blocks.
+      !> Interface law types known to *INTERFACE_LAW, the line of each law of model%laws
+      !> and of each Katona contact of model%contacts, and the *JOINTS blocks.
       type(law_registry_t) :: laws
-      integer, allocatable :: law_at(:)
+      integer, allocatable :: law_at(:), contact_at(:)
       type(raw_joint_set_t), allocatable :: joint_sets(:)
    end type deck_state_t
 

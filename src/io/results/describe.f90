@@ -74,7 +74,11 @@ contains
             ! a thin layer works with strains: displacements / thickness (doc/results.md)
             j%eps = units%length
             if (set%is_thin_layer()) j%eps = '1'
-            call model%laws(set%law_index)%law%state_names(j%state)
+            if (set%is_katona()) then
+               allocate (j%state(0))
+            else
+               call model%laws(set%law_index)%law%state_names(j%state)
+            end if
          end associate
       end do
    end subroutine plan_units

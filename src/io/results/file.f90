@@ -1,7 +1,8 @@
 !> The results file of a run (HDF5), written while the run goes on:
 !>   /            attributes program, version, format_version, title, units (the *UNITS line),
 !>                length_unit, force_unit, stress_unit (as read from it), deck_file,
-!>                deck_text, analysis, thickness, threads, created, status, complete,
+!>                deck_text, analysis, thickness, threads, the threads of each part and
+!>                the BLAS (see write_threads), created, status, complete,
 !>                status_message, warnings (+ finished, and completed when status = 'completed')
 !>   /mesh        see pecplas_io_results_mesh
 !>   /history     one row per converged increment: step, increment, global_increment, time,
@@ -39,6 +40,7 @@ module pecplas_io_results_file
    use pecplas_io_results_copies, only: copies_t
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
+   use pecplas_linalg_threads, only: thread_setting_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
       joint_points_t, limit_point_t
    use pecplas_io_results_h5, only: h5_init, h5_group, h5_close_group, h5_attr, &
@@ -354,12 +356,30 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'analysis', analysis, error)
       if (.not. allocated(error)) call h5_attr(file, 'thickness', model%analysis%thickness, error)
       if (.not. allocated(error)) call h5_attr(file, 'threads', model%solver%threads, error)
+      if (.not. allocated(error)) call write_threads(file, model%solver%threads_used, error)
       if (.not. allocated(error)) call h5_attr(file, 'created', timestamp(), error)
       if (.not. allocated(error)) call h5_attr(file, 'status', 'running', error)
       if (.not. allocated(error)) call h5_attr(file, 'complete', 0, error)
       if (.not. allocated(error)) call h5_attr(file, 'status_message', '', error)
       if (.not. allocated(error)) call write_warnings(file, model%warnings%lines(), error)
    end subroutine write_root
+
+   !> The threads each part of the run got (pecplas_linalg_threads): root attributes
+   !> threads_element_loops, threads_cholmod_regions, threads_blas, blas_flops_per_thread
+   !> (0: every BLAS call gets threads_blas), blas and blas_threading ('' when not known).
+   subroutine write_threads(file, t, error)
+      integer(hid_t), intent(in) :: file
+      type(thread_setting_t), intent(in) :: t
+      type(error_t), allocatable, intent(out) :: error
+      call h5_attr(file, 'threads_element_loops', t%loops, error)
+      if (.not. allocated(error)) call h5_attr(file, 'threads_cholmod_regions', t%regions, error)
+      if (.not. allocated(error)) call h5_attr(file, 'threads_blas', t%blas_threads, error)
+      if (.not. allocated(error)) call h5_attr(file, 'blas_flops_per_thread', &
+         real(t%blas_work, wp), error)
+      if (.not. allocated(error)) call h5_attr(file, 'blas', text_or_empty(t%blas), error)
+      if (.not. allocated(error)) call h5_attr(file, 'blas_threading', &
+         text_or_empty(t%blas_threading), error)
+   end subroutine write_threads
 
    !> Replaces the root attribute `warnings` of an open file by `list` (the deck's warnings
    !> and those found during the run, e.g. by the driver), one "file:line: warning: text"

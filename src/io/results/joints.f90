@@ -56,7 +56,8 @@ contains
          associate (set => model%joint_sets(s), p => points(s))
             layout(s)%name = safe_name(set%name)
             layout(s)%nel = size(set%conn, 2)
-            layout(s)%nstate = model%laws(set%law_index)%law%nstate()
+            layout(s)%nstate = 0
+            if (.not. set%is_katona()) layout(s)%nstate = model%laws(set%law_index)%law%nstate()
             if (.not. (allocated(p%xy) .and. allocated(p%tangent))) then
                call fatal_error(error, 'results file: no point coordinates for joint set '// &
                   set%name)
@@ -108,12 +109,15 @@ contains
                error)
             if (.not. allocated(error) .and. allocated(set%tributary)) &
                call h5_write(g, 'tributary', set%tributary, error)
-            if (.not. allocated(error) .and. &
-                len(model%laws(set%law_index)%law%describe()) > 0) call h5_attr(g, &
-               'law_description', model%laws(set%law_index)%law%describe(), error)
-            call model%laws(set%law_index)%law%state_names(names)
-            if (.not. allocated(error) .and. size(names) > 0) &
-               call h5_attr(g, 'state_names', names, error)
+            ! (a Katona set has no law at its points: no description, no history)
+            if (.not. set%is_katona()) then
+               if (.not. allocated(error) .and. &
+                   len(model%laws(set%law_index)%law%describe()) > 0) call h5_attr(g, &
+                  'law_description', model%laws(set%law_index)%law%describe(), error)
+               call model%laws(set%law_index)%law%state_names(names)
+               if (.not. allocated(error) .and. size(names) > 0) &
+                  call h5_attr(g, 'state_names', names, error)
+            end if
             call h5_close_group(g)
             if (allocated(error)) exit
          end associate

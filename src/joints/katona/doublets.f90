@@ -16,7 +16,6 @@ module pecplas_joints_katona_doublets
    use pecplas_model_provenance, only: place_t
    use pecplas_joints_state, only: joint_state_t
    use pecplas_joints_laws_type, only: MODE_OPEN
-   use pecplas_joints_laws_katona, only: katona_law_t
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_joints_katona_type, only: katona_t
@@ -44,15 +43,15 @@ contains
       allocate (kt%mu(0), kt%cohesion(0), kt%tension(0))
       if (.not. allocated(model%joint_sets)) return
       do s = 1, size(model%joint_sets)
-         select type (law => model%laws(model%joint_sets(s)%law_index)%law)
-         class is (katona_law_t)
+         if (.not. model%joint_sets(s)%is_katona()) cycle
+         associate (law => model%contacts(model%joint_sets(s)%contact_index))
             k0 = size(kt%area)
             call set_doublets(model, s, jstate, kt, s0, error)
             if (allocated(error)) return
             kt%mu = [real(wp) :: kt%mu, (law%mu, k=k0 + 1, size(kt%area))]
             kt%cohesion = [real(wp) :: kt%cohesion, law%c*kt%area(k0 + 1:)]
             kt%tension = [real(wp) :: kt%tension, law%tensile_limit()*kt%area(k0 + 1:)]
-         end select
+         end associate
       end do
       kt%nd = size(kt%area)
       if (kt%nd == 0) return

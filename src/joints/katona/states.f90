@@ -15,10 +15,17 @@
 !> states (a body sliding away under force control), reported as a run error so the
 !> increment is cut. States are then checked: stick -> open when N < -T_ten, stick -> slip
 !> when |T| > c A + mu N, slip -> open likewise, slip -> stick when the slip since the anchor
-!> reverses (its sign only, when the strength c A + mu N is nil), open -> stick when the
-!> doublet interpenetrates. A doublet that has changed state
-!> MAX_FLIPS times in the increment is frozen (chattering guard) and counted. A doublet row
-!> on supported dofs only (G(i, i) = 0) has a zero multiplier: its supports carry the force.
+!> reverses (its sign only, when the strength c A + mu N is nil), open -> contact when the
+!> doublet interpenetrates: a doublet open at the start of the increment sticks where it
+!> touches; one in contact at the start (opened by an iterate only) is measured from its
+!> converged anchor again, and slips in the direction it has moved from it, if it has. The
+!> states are those of the end of the increment (backward Euler): an iterate's opening does
+!> not break the bond (pecplas_joints_katona_type's commit does, for a doublet that ends
+!> open). A doublet that has changed state MAX_FLIPS times in the increment is frozen
+!> (chattering guard) and counted; if a frozen doublet's state is still rejected when no
+!> other changes, the set is inconsistent and the step fails (a run error: the increment is
+!> cut). A doublet row on supported dofs only (G(i, i) = 0) has a zero multiplier: its
+!> supports carry the force.
 module pecplas_joints_katona_states
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, run_error, singular_error
@@ -76,8 +83,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: a(:, :), gh(:)
       real(wp) :: ftol, gtol
-      integer :: changed, n2
-      character(len=80) :: buf
+      integer :: changed, held, n2
+      character(len=160) :: buf
       n2 = 2*kt%nd
       allocate (a(n2, n2), gh(n2))
       nit = 0
@@ -91,7 +98,14 @@ contains
          kt%f_trial = reshape(h + kt%alpha*(w - gh), [2, kt%nd])
          ftol = FORCE_TOL*max(maxval(abs(kt%f_trial)), maxval(kt%cohesion), tiny(1.0_wp))
          gtol = GAP_TOL*max(maxval(abs(kt%z_trial)), maxval(kt%gap0), tiny(1.0_wp))
-         call update_states(kt, ftol, gtol, flips, changed)
+         call update_states(kt, ftol, gtol, flips, changed, held)
+         if (changed == 0 .and. held > 0) then
+            write (buf, '(a,i0,a,i0,a)') 'Katona contact: ', held, ' doublets changed state ', &
+               MAX_FLIPS, ' times and their states still do not hold (stick, slip and open do '// &
+               'not settle)'
+            call run_error(error, trim(buf))
+            return
+         end if
          if (changed == 0) return
          if (nit >= MAX_STATE_ITERATIONS) then
             write (buf, '(a,i0,a,i0,a)') 'Katona contact: states still changing after ', nit, &
@@ -214,23 +228,26 @@ contains
       if (.not. consistent) x = b
    end subroutine consistent_solution
 
-   !> Applies the state checks of the module header; `changed` counts the doublets changed.
-   subroutine update_states(kt, ftol, gtol, flips, changed)
+   !> Applies the state checks of the module header; `changed` counts the doublets changed,
+   !> `held` the frozen doublets whose state the checks reject (an inconsistent set).
+   subroutine update_states(kt, ftol, gtol, flips, changed, held)
       type(katona_t), intent(inout) :: kt
       real(wp), intent(in) :: ftol, gtol
       integer, intent(inout) :: flips(:)
-      integer, intent(out) :: changed
-      real(wp) :: nf, tf, tlim, limit
+      integer, intent(out) :: changed, held
+      real(wp) :: nf, tf, tlim, limit, anchor, slip
       integer :: k, new_mode, new_sgn
       changed = 0
+      held = 0
       do k = 1, kt%nd
          nf = kt%f_trial(1, k)
          tf = kt%f_trial(2, k)
          tlim = kt%tension(k)
-         if (kt%broken_trial(k)) tlim = 0.0_wp
+         if (kt%broken(k)) tlim = 0.0_wp
          limit = kt%cohesion(k) + kt%mu(k)*nf
          new_mode = kt%mode_trial(k)
          new_sgn = kt%sgn_trial(k)
+         anchor = kt%anchor_trial(k)
          select case (kt%mode_trial(k))
          case (MODE_STICK)
             if (nf < -tlim - ftol) then
@@ -255,17 +272,32 @@ contains
          case default
             if (kt%z_trial(1, k) - kt%gap0(k) > gtol) then
                new_mode = MODE_STICK
-               kt%anchor_trial(k) = kt%z_trial(2, k)
+               if (kt%mode(k) == MODE_OPEN) then
+                  ! open at the start of the increment: it touches here and sticks there
+                  anchor = kt%z_trial(2, k)
+               else
+                  ! in contact at the start, opened by an iterate only: its slip is still
+                  ! measured from the converged anchor, and it slips if it has moved
+                  anchor = kt%anchor(k)
+                  slip = kt%z_trial(2, k) - anchor
+                  if (abs(slip) > gtol) then
+                     new_mode = MODE_SLIP
+                     new_sgn = int(sign(1.0_wp, slip))
+                  end if
+               end if
             end if
          end select
          if (new_mode == kt%mode_trial(k) .and. new_sgn == kt%sgn_trial(k)) cycle
-         if (flips(k) >= MAX_FLIPS) cycle
+         if (flips(k) >= MAX_FLIPS) then
+            held = held + 1
+            cycle
+         end if
          flips(k) = flips(k) + 1
          if (flips(k) == MAX_FLIPS) kt%frozen = kt%frozen + 1
          changed = changed + 1
-         if (new_mode == MODE_OPEN) kt%broken_trial(k) = .true.
          kt%mode_trial(k) = new_mode
          kt%sgn_trial(k) = new_sgn
+         kt%anchor_trial(k) = anchor
       end do
    end subroutine update_states
 

@@ -1,7 +1,7 @@
-!> Katona contact (doc/theory.md §6.5, thesis (I.12)–(I.14)): the node doublets of every joint set
-!> whose law is KATONA, their contact states and multipliers, and the run counters. Held by
-!> the driver's problem_t; built by pecplas_joints_katona_doublets, solved by
-!> pecplas_solve_katona_increment.
+!> Katona contact (doc/theory.md §6.5, thesis (I.12)–(I.14)): the node doublets of every joint
+!> set held by Katona contact (joint_set_t%is_katona, a law of TYPE=KATONA), their contact
+!> states and multipliers, and the run counters. Held by the driver's problem_t; built by
+!> pecplas_joints_katona_doublets, solved by pecplas_solve_katona_increment.
 !>
 !> Conventions are the laws' (pecplas_joints_laws_type): per doublet k the relative displacement
 !> z = (eps_n, eps_t) = Dk U with eps_n = -g_n closure positive, and the multipliers are the
@@ -34,7 +34,6 @@ module pecplas_joints_katona_type
       real(wp), allocatable :: f(:, :), z(:, :), anchor(:)
       !> Trial values of the current increment.
       integer, allocatable :: mode_trial(:), sgn_trial(:)
-      logical, allocatable :: broken_trial(:)
       real(wp), allocatable :: f_trial(:, :), z_trial(:, :), anchor_trial(:)
       !> Augmentation alpha of R_a = R + alpha D^T D (0: R alone is regular).
       real(wp) :: alpha = 0.0_wp
@@ -74,7 +73,6 @@ contains
       allocate (this%anchor(n), source=0.0_wp)
       this%mode_trial = this%mode
       this%sgn_trial = this%sgn
-      this%broken_trial = this%broken
       this%f_trial = this%f
       this%z_trial = this%z
       this%anchor_trial = this%anchor
@@ -85,7 +83,6 @@ contains
       class(katona_t), intent(inout) :: this
       this%mode_trial = this%mode
       this%sgn_trial = this%sgn
-      this%broken_trial = this%broken
       this%f_trial = this%f
       this%z_trial = this%z
       this%anchor_trial = this%anchor
@@ -96,9 +93,11 @@ contains
    subroutine katona_commit(this)
       class(katona_t), intent(inout) :: this
       where (this%mode_trial /= MODE_STICK) this%anchor_trial = this%z_trial(2, :)
+      ! a bond breaks when an increment ends with the doublet open, not when an iterate of
+      ! the state iteration opens it
+      where (this%mode_trial == MODE_OPEN) this%broken = .true.
       this%mode = this%mode_trial
       this%sgn = this%sgn_trial
-      this%broken = this%broken_trial
       this%f = this%f_trial
       this%z = this%z_trial
       this%anchor = this%anchor_trial

@@ -15,7 +15,6 @@ module pecplas_joints_laws_factory
    use pecplas_joints_laws_mohr_coulomb, only: build_mohr_coulomb_law
    use pecplas_joints_laws_modjoin_build, only: build_modjoin_initial_law, build_modjoin_law, &
       build_modjoin_cyclic_law
-   use pecplas_joints_laws_katona, only: build_katona_law
    implicit none (type, external)
    private
 
@@ -59,7 +58,6 @@ contains
       call registry%register('MODJOIN_INITIAL', build_modjoin_initial_law)
       call registry%register('MODJOIN', build_modjoin_law)
       call registry%register('MODJOIN_CYCLIC', build_modjoin_cyclic_law)
-      call registry%register('KATONA', build_katona_law)
    end function default_law_registry
 
    subroutine register_law(registry, name, builder)

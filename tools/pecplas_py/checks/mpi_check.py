@@ -1,0 +1,360 @@
+#!/usr/bin/env python3
+"""The MPI build's acceptance check (`make test-mpi`, doc/mpi.md).
+
+For each deck: one serial run with the deck's own solver (CHOLMOD or UMFPACK, as AUTO
+chooses), then `mpirun -np N pecplas` with *SOLVER, LINEAR=MUMPS for each N; the MUMPS
+results must have the same status, the same increments and iteration counts, and every
+displacement and reaction dataset equal to the serial one within 1e-8 of that dataset's
+largest absolute value (both solvers are backward stable; the converged Newton states differ
+by the residual tolerance times roundoff, far below 1e-8). Only rank 0 may write: the run's
+directory must hold only the results file and its .xmf afterwards. Decks given with
+--singular hold a mechanism: with MUMPS they must end as input errors (exit 2) that name the
+free node, as CHOLMOD and UMFPACK do, and write no results file. On more than one rank the
+run's summary must say that each rank assembled the stiffness of its own elements (the
+partitioned assembly, doc/mpi.md). --restart DECK N stops DECK (with MUMPS) after N
+increments on each rank count and restarts it on each rank count: a run restarted on the
+rank count that wrote the data of one rank (the last factorised matrix carried) must end on
+the uninterrupted one-rank run's displacements to 1e-12 of their largest; every other pair
+(several ranks hold no whole matrix to carry, doc/mpi.md) must complete within RESTART_TOL of
+the uninterrupted run on the restarting rank count (a different first iteration, the same
+equilibrium to the deck's Newton tolerance). --signal DECK runs DECK (with MUMPS) on 2 ranks
+and sends SIGTERM to one rank other than 0 half-way: every rank must stop after the same
+increment (exit 4 from mpirun, status 'interrupted' in rank 0's results file, which names the
+signal's rank; no rank left waiting in a collective). --write-failure DECK runs DECK (with
+MUMPS) on 2 ranks with rank 0's 10th results-file write failing on purpose
+(PECPLAS_TEST_FAIL_WRITE): the run must end at once with exit 3 and the message that names
+the file holding the increments written before (not hang while rank 1 waits). --unit runs Fortran test suites of the MPI build's test
+program (e.g. linalg_mumps) under `mpirun -np N` for each N: every rank must pass them all.
+
+Usage: python3 -m pecplas_py.checks.mpi_check PECPLAS_BIN DECK... [--singular DECK...]
+                                            [--np 1 2] [--work DIR]
+                                            [--restart DECK N] [--signal DECK] [--write-failure DECK]
+                                            [--unit TESTS_BIN SUITE...]
+Exit status 0 when every comparison holds, 1 otherwise (each failure printed).
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+import h5py
+import numpy as np
+
+TOL = 1.0e-8
+RESTART_TOL = 1.0e-5
+COMPARED = ("displacement", "reaction")
+
+
+def mumps_deck(text):
+    """The deck with LINEAR=MUMPS on its *SOLVER line (a *SOLVER line added if it has none)."""
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        if re.match(r"\s*\*SOLVER\b", line, re.I):
+            line = re.sub(r",\s*LINEAR\s*=\s*[A-Za-z]+", "", line, flags=re.I)
+            lines[i] = re.sub(r"(\*SOLVER)", r"\1, LINEAR=MUMPS", line, count=1, flags=re.I)
+            return "\n".join(lines) + "\n"
+    for i, line in enumerate(lines):
+        if re.match(r"\s*\*STEP\b", line, re.I):
+            return "\n".join(lines[:i] + ["*SOLVER, LINEAR=MUMPS"] + lines[i:]) + "\n"
+    raise ValueError("deck has neither *SOLVER nor *STEP")
+
+
+def write_mumps_deck(deck, suffix="mumps"):
+    """The MUMPS variant of `deck` written next to it (so that its relative paths still hold)
+    as a hidden file; its path. The caller removes it."""
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    mdeck = os.path.join(os.path.dirname(os.path.abspath(deck)), f".{stem}_{suffix}.inp")
+    with open(deck) as f:
+        text = mumps_deck(f.read())
+    with open(mdeck, "w") as f:
+        f.write(text)
+    return mdeck
+
+
+def run(cmd, env):
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    return proc, time.perf_counter() - t0
+
+
+def compare(ref_path, got_path):
+    """Problems found between two results files (empty list: equal within TOL)."""
+    problems = []
+    with h5py.File(ref_path, "r") as ref, h5py.File(got_path, "r") as got:
+        for attr in ("status", "complete"):
+            if ref.attrs[attr] != got.attrs[attr]:
+                problems.append(f"{attr}: {ref.attrs[attr]!r} vs {got.attrs[attr]!r}")
+        for name in ("iterations", "global_increment"):
+            a, b = ref["history"][name][()], got["history"][name][()]
+            if a.shape != b.shape or np.any(a != b):
+                problems.append(f"history/{name} differs")
+        if sorted(ref["increments"]) != sorted(got["increments"]):
+            problems.append("different increments written")
+            return problems
+        worst = 0.0
+        for inc in ref["increments"]:
+            for ds in COMPARED:
+                a = ref["increments"][inc][ds][()]
+                b = got["increments"][inc][ds][()]
+                scale = max(np.max(np.abs(a)), np.finfo(float).tiny)
+                err = np.max(np.abs(a - b)) / scale
+                worst = max(worst, err)
+                if not err <= TOL:
+                    problems.append(f"increments/{inc}/{ds}: relative difference {err:.2e}")
+        problems.append(worst)  # last item: the largest difference, for the report
+    return problems
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("binary")
+    parser.add_argument("decks", nargs="+")
+    parser.add_argument("--np", nargs="+", type=int, default=[1, 2])
+    parser.add_argument("--work", default=None)
+    parser.add_argument("--singular", nargs="*", default=[])
+    parser.add_argument("--unit", nargs="+", default=[], metavar="TESTS_BIN SUITE")
+    parser.add_argument("--restart", nargs=2, default=None, metavar=("DECK", "N"))
+    parser.add_argument("--signal", default=None, metavar="DECK")
+    parser.add_argument("--write-failure", default=None, metavar="DECK")
+    args = parser.parse_args()
+    if len(args.unit) == 1:
+        parser.error("--unit needs the test program and at least one suite")
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    # Debian's OpenMPI refuses root unless told (CI runs as root); 2 ranks on 1 core is allowed.
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+    # Waiting ranks yield the core and float: on a shared machine a rank that spins in MPI
+    # waits starves the rank it waits for (measured: footing np=2 95 s spinning, 17 s yielding).
+    env.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")
+    env.setdefault("OMPI_MCA_hwloc_base_binding_policy", "none")
+    work = args.work or tempfile.mkdtemp(prefix="pecplas-mpi-")
+    failures = 0
+    for deck in args.decks:
+        stem = os.path.splitext(os.path.basename(deck))[0]
+        ref = os.path.join(work, f"{stem}_serial.h5")
+        proc, t_ref = run([args.binary, deck, "-o", ref, "--quiet"], env)
+        if proc.returncode != 0:
+            print(f"FAIL {deck}: serial run exit {proc.returncode}\n{proc.stderr}")
+            failures += 1
+            continue
+        mdeck = write_mumps_deck(deck)
+        try:
+            for n in args.np:
+                rundir = os.path.join(work, f"{stem}_np{n}")
+                os.makedirs(rundir, exist_ok=True)
+                out = os.path.join(rundir, "results.h5")
+                proc, t = run(["mpirun", "-np", str(n), args.binary, mdeck, "-o", out], env)
+                if proc.returncode != 0:
+                    print(f"FAIL {deck} np={n}: exit {proc.returncode}\n{proc.stdout}{proc.stderr}")
+                    failures += 1
+                    continue
+                problems = compare(ref, out)
+                worst = problems.pop()
+                extra = sorted(set(os.listdir(rundir)) - {"results.h5", "results.xmf"})
+                if extra:
+                    problems.append(f"files written besides rank 0's results: {extra}")
+                split = assembly_split(proc.stdout)
+                if n > 1 and not (split and split[0] == n):
+                    problems.append("summary does not report a partitioned assembly")
+                if problems:
+                    failures += 1
+                    print(f"FAIL {deck} np={n}:\n  " + "\n  ".join(problems))
+                else:
+                    where = (f"; assembly CPU per rank {split[1]}-{split[2]} s"
+                             if split else "")
+                    print(f"ok   {deck} np={n}: MUMPS = serial within {worst:.1e} "
+                          f"(tolerance {TOL:.0e}); {t:.2f} s vs serial {t_ref:.2f} s{where}")
+        finally:
+            os.remove(mdeck)
+    for deck in args.singular:
+        failures += check_singular(args.binary, deck, args.np, work, env)
+    if args.restart:
+        failures += check_restart(args.binary, args.restart[0], int(args.restart[1]), args.np,
+                                  work, env)
+    if args.signal:
+        failures += check_signal(args.binary, args.signal, work, env)
+    if args.write_failure:
+        failures += check_write_failure(args.binary, args.write_failure, work, env)
+    if args.unit:
+        failures += check_unit(args.unit[0], args.unit[1:], args.np, env)
+    return 1 if failures else 0
+
+
+def assembly_split(stdout):
+    """(ranks, smallest CPU s, largest CPU s) from the summary's 'ranks:' line, or None."""
+    m = re.search(r"ranks: (\d+), each assembles the stiffness of its own elements: "
+                  r"wall [\d.]+ to [\d.]+ s, CPU ([\d.]+) to ([\d.]+) s", stdout)
+    return (int(m.group(1)), float(m.group(2)), float(m.group(3))) if m else None
+
+
+def unit_passed(returncode, stdout, nranks):
+    """True when the test program exited 0 and each of the ranks passed tests, none failed."""
+    tallies = re.findall(r"^(\d+) passed, (\d+) failed$", stdout, re.M)
+    return (returncode == 0 and len(tallies) == nranks
+            and all(int(p) > 0 and int(f) == 0 for p, f in tallies))
+
+
+def check_unit(tests_bin, suites, nps, env):
+    """Number of failed suite runs under mpirun (0: every rank passed every test)."""
+    failures = 0
+    for suite in suites:
+        for n in nps:
+            proc, t = run(["mpirun", "-np", str(n), tests_bin, suite], env)
+            tallies = re.findall(r"^(\d+) passed, (\d+) failed$", proc.stdout, re.M)
+            if unit_passed(proc.returncode, proc.stdout, n):
+                print(f"ok   suite {suite} np={n}: {tallies[0][0]} tests passed on each of "
+                      f"{n} rank(s) ({t:.1f} s)")
+            else:
+                failures += 1
+                print(f"FAIL suite {suite} np={n}: exit {proc.returncode}, tallies {tallies}\n"
+                      f"{proc.stdout}{proc.stderr}")
+    return failures
+
+
+def check_singular(binary, deck, nps, work, env):
+    """Number of failed runs of a deck with a mechanism under MUMPS (0: all as expected)."""
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    mdeck = write_mumps_deck(deck)
+    failures = 0
+    try:
+        for n in nps:
+            out = os.path.join(work, f"{stem}_np{n}.h5")
+            proc, _ = run(["mpirun", "-np", str(n), binary, mdeck, "-o", out, "--quiet"], env)
+            said = "can move without resistance" in proc.stderr and "MUMPS" in proc.stderr
+            if proc.returncode == 2 and said and not os.path.exists(out):
+                print(f"ok   {deck} np={n}: mechanism reported by MUMPS, exit 2, no results file")
+            else:
+                failures += 1
+                print(f"FAIL {deck} np={n}: exit {proc.returncode}, results file "
+                      f"{os.path.exists(out)}\n{proc.stderr}")
+    finally:
+        os.remove(mdeck)
+    return failures
+
+
+def last_displacement(path):
+    with h5py.File(path, "r") as f:
+        return f["increments"][sorted(f["increments"])[-1]]["displacement"][...], \
+            f.attrs["status"]
+
+
+def check_restart(binary, deck, n_stop, nps, work, env):
+    """Number of failed restarts across rank counts (0: all as expected)."""
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    mdeck = write_mumps_deck(deck, "mumps_restart")
+    failures = 0
+
+    def mpirun(n, *args):
+        return run(["mpirun", "-np", str(n), binary, mdeck, "--quiet"] + list(args), env)[0]
+
+    try:
+        full, part = {}, {}
+        for n in nps:
+            full[n] = os.path.join(work, f"{stem}_full_np{n}.h5")
+            part[n] = os.path.join(work, f"{stem}_part_np{n}.h5")
+            proc = mpirun(n, "-o", full[n])
+            stop = mpirun(n, "-o", part[n], "--stop-after-increments", str(n_stop))
+            if proc.returncode != 0 or stop.returncode != 4:
+                print(f"FAIL restart {deck} np={n}: uninterrupted exit {proc.returncode}, "
+                      f"stopped exit {stop.returncode} (4 expected)\n{proc.stderr}{stop.stderr}")
+                return failures + 1
+        ua1, _ = last_displacement(full[min(nps)])
+        for wrote in nps:
+            for n in nps:
+                out = os.path.join(work, f"{stem}_rest_{wrote}to{n}.h5")
+                proc = mpirun(n, "-o", out, "--restart", part[wrote])
+                if proc.returncode != 0:
+                    failures += 1
+                    print(f"FAIL restart {deck} {wrote}->{n} ranks: exit {proc.returncode}\n"
+                          f"{proc.stderr}")
+                    continue
+                uc, status = last_displacement(out)
+                ua, _ = last_displacement(full[n])
+                exact = wrote == n == 1
+                ref = ua1 if exact else ua
+                tol = 1e-12 if exact else RESTART_TOL
+                err = np.abs(uc - ref).max() / np.abs(ref).max()
+                if status == "completed" and err <= tol:
+                    print(f"ok   restart {deck} after {n_stop}: written on {wrote}, restarted "
+                          f"on {n} rank(s): {err:.1e} of the uninterrupted run (limit {tol:.0e})")
+                else:
+                    failures += 1
+                    print(f"FAIL restart {deck} {wrote}->{n} ranks: status {status}, "
+                          f"{err:.1e} of the uninterrupted run (limit {tol:.0e})")
+    finally:
+        os.remove(mdeck)
+    return failures
+
+
+def check_signal(binary, deck, work, env):
+    """Number of failures (0 or 1) of a SIGTERM sent to rank 1 alone of a 2-rank run."""
+    import signal
+    mdeck = write_mumps_deck(deck, "mumps_signal")
+    out = os.path.join(work, "signal.h5")
+    try:
+        proc, t = run(["mpirun", "-np", "2", binary, mdeck, "-o", out, "--quiet"], env)
+        if proc.returncode != 0:
+            print(f"FAIL signal {deck}: the uninterrupted run exit {proc.returncode}")
+            return 1
+        os.remove(out)
+        p = subprocess.Popen(["mpirun", "-np", "2", binary, mdeck, "-o", out, "--quiet"],
+                             env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(0.5 * t)
+        kids = subprocess.run(["pgrep", "-P", str(p.pid), "-f", "pecplas"],
+                              capture_output=True, text=True).stdout.split()
+        if len(kids) == 2:
+            os.kill(int(sorted(kids, key=int)[-1]), signal.SIGTERM)
+        try:
+            _, err = p.communicate(timeout=120)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            print(f"FAIL signal {deck}: the ranks hung after SIGTERM to one of them")
+            return 1
+        if len(kids) != 2 or p.returncode == 0:
+            print(f"ok   signal {deck}: (not tested: the run ended before the signal, or its "
+                  f"ranks were not found: {kids})")
+            return 0
+        with h5py.File(out, "r") as f:
+            status = f.attrs["status"]
+            message = f.attrs["status_message"]
+            rows = len(f["history/step"])
+        if p.returncode == 4 and status == "interrupted" and "another MPI rank" in message:
+            print(f"ok   signal {deck}: SIGTERM to rank 1 alone stopped both ranks after "
+                  f"increment {rows}: {message}")
+            return 0
+        print(f"FAIL signal {deck}: exit {p.returncode}, status {status}: {message}\n{err}")
+        return 1
+    finally:
+        os.remove(mdeck)
+
+
+def check_write_failure(binary, deck, work, env):
+    """Number of failures (0 or 1) of a 2-rank run whose rank 0 cannot write increment 10."""
+    mdeck = write_mumps_deck(deck, "mumps_write")
+    out = os.path.join(work, "write_failure.h5")
+    try:
+        fail_env = dict(env, PECPLAS_TEST_FAIL_WRITE="10")
+        try:
+            proc = subprocess.run(["mpirun", "-np", "2", binary, mdeck, "-o", out, "--quiet"],
+                                  env=fail_env, capture_output=True, text=True, timeout=120)
+        except subprocess.TimeoutExpired:
+            print(f"FAIL write failure {deck}: the ranks hung after rank 0's write failed")
+            return 1
+        said = "cannot write results" in proc.stderr and "failed on purpose" in proc.stderr
+        if proc.returncode == 3 and said and not os.path.exists(out):
+            print(f"ok   write failure {deck}: rank 0's 10th write failed on 2 ranks: exit 3 "
+                  "at once, the increments before kept in the running file")
+            return 0
+        print(f"FAIL write failure {deck}: exit {proc.returncode}\n{proc.stderr}")
+        return 1
+    finally:
+        os.remove(mdeck)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

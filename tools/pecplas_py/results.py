@@ -1,0 +1,151 @@
+"""Reading a results file of pecplas (layout: doc/results.md).
+
+    from pecplas_py.results import Results
+    with Results("output/default.h5") as r:
+        r.status, r.complete, r.attr("title")
+        for key in r.keys:                           # "000001", ... (written increments)
+            u = r.field(key, "displacement")         # (nnode, 2)
+            s = r.field(key, "joints/shaft/stress")  # (nel, npoint, 2)
+        r.history("iterations"), r.pattern_factors(), r.field_rows()
+        r.limit()                                    # None, or {"factors", "global_increment"}
+
+Text attributes come back as `str` (h5py gives bytes for some of them); arrays as NumPy
+arrays. `r.file` is the open h5py.File for what this module does not cover. Scripts that check
+the file's structure itself (checks/check_results.py) walk it with h5py directly.
+"""
+import h5py
+import numpy as np
+
+
+def text(value):
+    """An attribute as str when it is text (bytes, NumPy bytes or str), a list of str when it
+    is a list of texts (e.g. `warnings`, `patterns`), else unchanged."""
+    if isinstance(value, (bytes, np.bytes_)):
+        return value.decode()
+    if isinstance(value, np.str_):
+        return str(value)
+    if isinstance(value, np.ndarray) and value.dtype.kind in "OSU":
+        return [text(v) for v in value.tolist()]
+    return value
+
+
+class Results:
+    """An open results file (read only); use it in a `with` block or call close()."""
+
+    def __init__(self, path):
+        self.path = path
+        self.file = h5py.File(path, "r")
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def close(self):
+        self.file.close()
+
+    # ---- root attributes
+    def attr(self, name, default=None):
+        """Root attribute `name` (text decoded), `default` when absent."""
+        return text(self.file.attrs[name]) if name in self.file.attrs else default
+
+    @property
+    def attrs(self):
+        """Every root attribute, text decoded."""
+        return {k: text(v) for k, v in self.file.attrs.items()}
+
+    @property
+    def status(self):
+        """`completed`, `limit load`, `diverged`, `failed`, `interrupted` or `running`."""
+        return self.attr("status")
+
+    @property
+    def complete(self):
+        return bool(self.attr("complete", 0))
+
+    @property
+    def deck_text(self):
+        return self.attr("deck_text", "")
+
+    # ---- mesh
+    @property
+    def coordinates(self):
+        return self.file["mesh/coordinates"][()]
+
+    @property
+    def node_ids(self):
+        return self.file["mesh/node_ids"][()]
+
+    def node_index(self, node_id):
+        """0-based row of the node with user id `node_id`."""
+        return int(np.nonzero(self.node_ids == node_id)[0][0])
+
+    def node_set(self, name):
+        """0-based node numbers of node set `name`."""
+        return self.file[f"mesh/node_sets/{name}/nodes"][()]
+
+    def element_set(self, name):
+        """The group /mesh/sets/<name> (connectivity, element_ids, gauss_coordinates)."""
+        return self.file[f"mesh/sets/{name}"]
+
+    def joint_set(self, name):
+        """The group /mesh/joint_sets/<name> (point_coordinates, tributary, ...)."""
+        return self.file[f"mesh/joint_sets/{name}"]
+
+    # ---- history: one row per converged increment
+    def history(self, name=None):
+        """The history column `name` (step, increment, iterations, ...), or all as a dict."""
+        if name is None:
+            return {k: v[()] for k, v in self.file["history"].items()}
+        return self.file[f"history/{name}"][()]
+
+    def pattern_factors(self, rows=None):
+        """(nrow, npattern) load factors; only the rows `rows` when given."""
+        pf = self.file["history/pattern_factors"][()]
+        return pf if rows is None else pf[rows]
+
+    @property
+    def patterns(self):
+        """The load pattern names (columns of pattern_factors)."""
+        return [text(n) for n in self.file["history"].attrs.get("patterns", [])]
+
+    def field_rows(self):
+        """History rows whose fields were written (one per increment key, in order)."""
+        return np.nonzero(self.file["history/fields"][()])[0]
+
+    # ---- increments with fields
+    @property
+    def keys(self):
+        """Keys of the written increments, in order."""
+        return sorted(self.file["increments"].keys()) if "increments" in self.file else []
+
+    def increment(self, key):
+        """The group /increments/<key> (attributes step, increment, time, ...)."""
+        return self.file[f"increments/{key}"]
+
+    def step_of(self, key):
+        return int(self.increment(key).attrs["step"])
+
+    def last_key(self, step=None):
+        """The last written increment, of step `step` when given."""
+        keys = self.keys if step is None else [k for k in self.keys if self.step_of(k) == step]
+        return keys[-1]
+
+    def field(self, key, name):
+        """Dataset `name` of increment `key`: displacement, reaction, sets/<set>/stress,
+        joints/<set>/stress, ..."""
+        return self.file[f"increments/{key}/{name}"][()]
+
+    def fields(self, name):
+        """Dataset `name` of every written increment, stacked (nkeys, ...)."""
+        return np.array([self.field(k, name) for k in self.keys])
+
+    # ---- limit load
+    def limit(self):
+        """None, or the limit load found: {'factors': pattern factors, 'global_increment'}."""
+        if "limit" not in self.file:
+            return None
+        g = self.file["limit"]
+        return {"factors": g["pattern_factors"][()],
+                "global_increment": int(g.attrs["global_increment"])}
