@@ -425,7 +425,7 @@ contains
    end function mechanism
 
    !> Status 'diverged': where and why, and the last converged state (its increment and
-   !> load factors: the largest load the run can vouch for), kept in the results file.
+   !> load factors), kept in the results file.
    subroutine diverged(model, problem, istep, tau_failed, cuts, reason, status, message)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem

@@ -77,3 +77,22 @@ def test_exit_codes_and_missing_files(tmp_path, capsys):
     out = capsys.readouterr().out
     assert failed == 1 and "exit code" in out, out
     assert "every deck" not in out and "1 of 2 decks differ" in out, out
+
+
+def test_deck_comments_are_no_results(tmp_path):
+    """Two decks that differ in a `**` comment line only (a generator's path) compare equal;
+    a changed keyword line is reported from the first differing character."""
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    for path, text in ((a, "** by tools/x.py\n*STEP, INCREMENTS=20\n"),
+                       (b, "** by tools/pecplas_py/decks/x.py\n*STEP, INCREMENTS=20\n")):
+        write_h5(path)
+        with h5py.File(path, "a") as f:
+            f.attrs["deck_text"] = text
+    w = cr.Worst()
+    cr.compare_h5(a, b, w)
+    assert not w.problems, w.problems
+    with h5py.File(b, "a") as f:
+        f.attrs["deck_text"] = "*STEP, INCREMENTS=30\n"
+    w = cr.Worst()
+    cr.compare_h5(a, b, w)
+    assert w.problems and "'30'" in w.problems[0], w.problems

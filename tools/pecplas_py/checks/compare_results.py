@@ -13,9 +13,10 @@ The decks, each run as its scene's make target runs it (from the project root):
 Compared: every dataset and every numeric attribute of the HDF5 files, and every cell of the
 CSV files; a number differs when |a - b| > TOL * max(|a|, |b|) over the dataset (or CSV
 column), i.e. relative to the dataset's largest entry, absolute where it is all zero; integers
-and strings must be equal. Not compared: the time stamps and timings (created, completed,
-finished, cpu_time), the version, the `checksum` attributes (hashes of the data compared
-here) and pecplas-sweep's bookkeeping. Exit codes of the programs are compared too.
+and strings must be equal (the deck text without its `**` comment lines). Not compared: the
+time stamps and timings (created, completed, finished, cpu_time), the version, the `checksum`
+and `deck_text_checksum` attributes (hashes of the data and deck text compared here) and
+pecplas-sweep's bookkeeping. Exit codes of the programs are compared too.
 
     python3 -m pecplas_py.checks.compare_results --old OLD_BIN --new NEW_BIN   # run both, compare
     python3 -m pecplas_py.checks.compare_results --old OLD_BIN --store DIR     # run OLD once, keep
@@ -42,7 +43,8 @@ from pathlib import Path
 from pecplas_py import ROOT, script_cmd
 
 #: names (last path component) of datasets and attributes that are no results
-IGNORED = {"created", "completed", "finished", "cpu_time", "version", "checksum"}
+IGNORED = {"created", "completed", "finished", "cpu_time", "version", "checksum",
+           "deck_text_checksum"}
 MANIFEST = "manifest.json"
 #: the results folder of the sweeps' decks, relative to the root: the same in every run, so
 #: the decks' paths written into the results (deck_text) are the same
@@ -179,6 +181,9 @@ class Worst:
 
     def exact(self, a, b, where):
         if a != b:
+            if isinstance(a, str) and isinstance(b, str):  # from the first differing character
+                at = next((i for i, (x, y) in enumerate(zip(a, b)) if x != y), min(len(a), len(b)))
+                a, b, where = a[at:], b[at:], f"{where} (from character {at})"
             show = (lambda x: (x[:60] + "...") if isinstance(x, str) and len(x) > 60 else x)
             self.problems.append(f"{where}: {show(a)!r} against {show(b)!r}")
 
@@ -196,6 +201,12 @@ def as_text(x):
     return x.tolist()
 
 
+def deck(text):
+    """A deck's text without its comment lines (`**`): what the program reads."""
+    text = text.decode() if isinstance(text, bytes) else str(text)
+    return "\n".join(line for line in text.splitlines() if not line.startswith("**"))
+
+
 def compare_attrs(a, b, where, worst):
     # each attribute read once: reading them is most of the time of a comparison
     da = {k: a.attrs[k] for k in a.attrs if k not in IGNORED}
@@ -206,7 +217,8 @@ def compare_attrs(a, b, where, worst):
         elif is_number(da[k]) and is_number(db[k]):
             worst.number(da[k], db[k], f"{where}@{k}")
         else:
-            worst.exact(as_text(da[k]), as_text(db[k]), f"{where}@{k}")
+            worst.exact(deck(da[k]) if k == "deck_text" else as_text(da[k]),
+                        deck(db[k]) if k == "deck_text" else as_text(db[k]), f"{where}@{k}")
 
 
 def compare_h5(old, new, worst):
