@@ -6,8 +6,16 @@
 !> converge is tried again from the last converged state by the next methods of
 !>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
 !> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
-!> Modified Newton gives up as soon as its residual's rate shows it would crawl
-!> (pecplas_solve_iterate); the others run to the iteration cap. Every method is one
+!> Modified and quasi-Newton, when a later method follows them, give up as soon as their
+!> residual's rate shows they would crawl (pecplas_solve_iterate); the last method runs to
+!> the iteration cap. The chain remembers: when a later, stronger method converged the last
+!> increment in more than LEAD_ITERATIONS iterations, the next increment starts with it (its
+!> own chain: QUASI_NEWTON -> NEWTON, NEWTON -> QUASI_NEWTON), so that a run whose
+!> plastic zones make the cheaper methods crawl does not spend their failed attempts again
+!> at every increment; an increment that the remembered method converged within
+!> LEAD_ITERATIONS (nearly linear: unloading, an elastic stretch) hands the next one back
+!> to the run's own method. The remembered method is part of the run's position
+!> (problem%position%lead, kept in the restart data). Every method is one
 !> increment solver (pecplas_solve_method) chosen for the model by
 !> pecplas_solve_method_factory; Katona contact iterates its contact states inside modified
 !> or full Newton (it has no quasi-Newton: modified Newton takes its place in the chain).
@@ -30,6 +38,10 @@ module pecplas_solve_attempts
 
    public :: run_t, try_chain, accept_increment, method_chain
 
+   !> An increment that a remembered later method converged within this many iterations
+   !> hands the next one back to the run's own method (module header).
+   integer, parameter :: LEAD_ITERATIONS = 1
+
    type :: run_t
       logical :: quiet = .false.
       real(wp) :: cpu_start = 0.0_wp
@@ -49,12 +61,21 @@ module pecplas_solve_attempts
 contains
 
    !> Methods tried for an increment, in order; `quasi_newton`: whether the increment
-   !> solver can take quasi-Newton iterations.
-   function method_chain(model, quasi_newton) result(methods)
+   !> solver can take quasi-Newton iterations; `lead`: the method the last increment
+   !> needed (problem%position%lead, 0 for the run's own), whose chain is taken instead when
+   !> it is a stronger method than the run's (METHOD_MODIFIED < METHOD_QUASI < METHOD_NEWTON)
+   !> and the run falls back at all.
+   function method_chain(model, quasi_newton, lead) result(methods)
       type(model_t), intent(in) :: model
       logical, intent(in) :: quasi_newton
+      integer, intent(in), optional :: lead
       integer, allocatable :: methods(:)
-      select case (model%solver%method)
+      integer :: first
+      first = model%solver%method
+      if (present(lead)) then
+         if (model%solver%fallback .and. lead > first) first = lead
+      end if
+      select case (first)
       case (METHOD_NEWTON)
          ! BFGS on the last factorised tangent: where a singular tangent stalls Newton
          ! (a mechanism forming at a limit load)
@@ -87,15 +108,15 @@ contains
       character(len=:), allocatable :: reasons
       integer :: i
       call new_increment_method(problem, solver)
-      methods = method_chain(model, solver%has_quasi_newton())
+      methods = method_chain(model, solver%has_quasi_newton(), problem%position%lead)
       reasons = ''
       do i = 1, size(methods)
          method = methods(i)
          att%method = method
          att%line_search = model%solver%line_search .and. method /= METHOD_MODIFIED
-         ! only modified Newton's linear rate predicts its end reliably; the others run to
-         ! the cap (BFGS converges irregularly while joint states still change)
-         att%give_up_early = i < size(methods) .and. method == METHOD_MODIFIED
+         ! the single-factorisation methods give up on a crawl when a later method follows;
+         ! full Newton, and the chain's last method, run to the cap
+         att%give_up_early = i < size(methods) .and. method /= METHOD_NEWTON
          call solver%solve_increment(model, problem, att, run%fint_conv, u, fint, reaction, &
             out, error)
          if (allocated(error)) then
@@ -143,6 +164,10 @@ contains
       call problem%state%commit()
       problem%state%u = u
       problem%state%factors = att%factors(out%tau)
+      ! the method the next increment starts with (module header)
+      problem%position%lead = 0
+      if (method /= model%solver%method .and. out%iterations > LEAD_ITERATIONS) &
+         problem%position%lead = method
       run%fint_conv = fint
       if (allocated(out%du)) run%du_prev = out%du
       call cpu_time(t_now)
