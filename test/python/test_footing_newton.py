@@ -19,10 +19,10 @@ increment takes the same first step through the operator).
 import re
 import subprocess
 
-import h5py
 import pytest
 
 from pecplas_py.decks import make_footing_peer_decks as decks
+from pecplas_py.results import Results
 from deck_runs import run
 from pecplas_exe import pecplas_cmd
 
@@ -37,9 +37,8 @@ def test_vonmises_footing_newton(tmp_path, element):
     assert status == "completed", p.stderr
     n = len(hist["iterations"])
     total = int(hist["iterations"].sum())
-    with h5py.File(tmp_path / f"footing_{element}.h5", "r") as f:
-        last = sorted(f["increments"])[-1]
-        reaction = f["increments"][last]["reaction"][()]
+    with Results(tmp_path / f"footing_{element}.h5") as res:
+        reaction = res.field(res.last_key(), "reaction")
     nodes, _, ids, nx, ny = decks.mesh(element, 1)
     footing = decks.node_sets(nodes, ids, nx, ny)["footing"]
     plateau = -sum(reaction[i - 1, 1] for i in footing) / decks.B
@@ -51,9 +50,8 @@ def test_vonmises_footing_newton(tmp_path, element):
 
 
 def _plateau(path, element):
-    with h5py.File(path, "r") as f:
-        last = sorted(f["increments"])[-1]
-        reaction = f["increments"][last]["reaction"][()]
+    with Results(path) as res:
+        reaction = res.field(res.last_key(), "reaction")
     nodes, _, ids, nx, ny = decks.mesh(element, 1)
     footing = decks.node_sets(nodes, ids, nx, ny)["footing"]
     return -sum(reaction[i - 1, 1] for i in footing) / decks.B
