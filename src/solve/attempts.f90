@@ -8,7 +8,9 @@
 !> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
 !> Modified and quasi-Newton, when a later method follows them, give up as soon as their
 !> residual's rate shows they would crawl (pecplas_solve_iterate); the last method runs to
-!> the iteration cap. The chain remembers: when a later, stronger method converged the last
+!> the iteration cap. When every method failed, those that gave up early are tried once more,
+!> the strongest first, running to the cap, before the increment is cut (the early give-up
+!> saves time; it never cuts an increment that a crawl would converge). The chain remembers: when a later, stronger method converged the last
 !> increment in more than LEAD_ITERATIONS iterations, the next increment starts with it (its
 !> own chain: QUASI_NEWTON -> NEWTON, NEWTON -> QUASI_NEWTON), so that a run whose
 !> plastic zones make the cheaper methods crawl does not spend their failed attempts again
@@ -106,19 +108,31 @@ contains
       class(increment_method_t), allocatable :: solver
       integer, allocatable :: methods(:)
       character(len=:), allocatable :: reasons
-      integer :: i
+      logical, allocatable :: gave_up(:)
+      integer :: i, k
       call new_increment_method(problem, solver)
       methods = method_chain(model, solver%has_quasi_newton(), problem%position%lead)
       reasons = ''
-      do i = 1, size(methods)
+      allocate (gave_up(size(methods)), source=.false.)
+      ! the chain, then the methods that gave up early once more, the strongest first, each
+      ! run to the cap (a stronger method failed where a slow one would have converged: no
+      ! early give-up may cut an increment that the chain without it converges)
+      do k = 1, 2*size(methods)
+         if (k > size(methods)) then
+            i = 2*size(methods) - k + 1
+            if (.not. gave_up(i)) cycle
+         else
+            i = k
+         end if
          method = methods(i)
          att%method = method
          att%line_search = model%solver%line_search .and. method /= METHOD_MODIFIED
          ! the single-factorisation methods give up on a crawl when a later method follows;
          ! full Newton, and the chain's last method, run to the cap
-         att%give_up_early = i < size(methods) .and. method /= METHOD_NEWTON
+         att%give_up_early = k < size(methods) .and. method /= METHOD_NEWTON
          call solver%solve_increment(model, problem, att, run%fint_conv, u, fint, reaction, &
             out, error)
+         gave_up(i) = out%gave_up .and. k <= size(methods)
          if (allocated(error)) then
             ! a failed material return or a singular system of trial states fails the attempt
             if (error%kind /= ERR_RUN .and. error%kind /= ERR_SINGULAR) return

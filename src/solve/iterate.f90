@@ -170,6 +170,7 @@ contains
             if (hopeless(hist(0:it), model%solver%tolerance, model%solver%max_iterations, &
                 att%method == METHOD_MODIFIED)) then
                out%reason = 'stagnating residual (its rate would miss the iteration cap)'
+               out%gave_up = .true.
                return
             end if
          end if

@@ -53,6 +53,8 @@ module pecplas_solve_method
       !> reached has no unique solution (a mechanism under those states).
       character(len=:), allocatable :: reason
       logical :: singular = .false.
+      !> The attempt gave up early (att%give_up_early: its rate would miss the cap).
+      logical :: gave_up = .false.
       !> Free displacement increment of the increment.
       real(wp), allocatable :: du(:)
    end type outcome_t
