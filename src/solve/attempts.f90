@@ -9,8 +9,10 @@
 !> Modified and quasi-Newton, when a later method follows them, give up as soon as their
 !> residual's rate shows they would crawl (pecplas_solve_iterate); the last method runs to
 !> the iteration cap. When every method failed, those that gave up early are tried once more,
-!> the strongest first, running to the cap, before the increment is cut (the early give-up
-!> saves time; it never cuts an increment that a crawl would converge). The chain remembers: when a later, stronger method converged the last
+!> the strongest first, before the increment is cut: quasi-Newton running to the cap,
+!> modified Newton with a budget of MN_RETRY_BUDGET, as the chain did before it remembered
+!> (the early give-up saves time; it never cuts an increment that the former chain would
+!> have converged). The chain remembers: when a later, stronger method converged the last
 !> increment in more than LEAD_ITERATIONS iterations, the next increment starts with it (its
 !> own chain: QUASI_NEWTON -> NEWTON, NEWTON -> QUASI_NEWTON), so that a run whose
 !> plastic zones make the cheaper methods crawl does not spend their failed attempts again
@@ -28,7 +30,7 @@ module pecplas_solve_attempts
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_output, only: write_increment, progress_line
    use pecplas_base_timers, only: wall_time
-   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
+   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t, CHAIN_BUDGET
    use pecplas_solve_method_factory, only: new_increment_method
    use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_base_strings, only: itoa
@@ -43,6 +45,9 @@ module pecplas_solve_attempts
    !> An increment that a remembered later method converged within this many iterations
    !> hands the next one back to the run's own method (module header).
    integer, parameter :: LEAD_ITERATIONS = 1
+   !> Budget of modified Newton's second attempt (the chain's budget before it remembered
+   !> its methods: the retries never do less than that chain did).
+   integer, parameter :: MN_RETRY_BUDGET = 60
 
    type :: run_t
       logical :: quiet = .false.
@@ -128,8 +133,14 @@ contains
          att%method = method
          att%line_search = model%solver%line_search .and. method /= METHOD_MODIFIED
          ! the single-factorisation methods give up on a crawl when a later method follows;
-         ! full Newton, and the chain's last method, run to the cap
+         ! full Newton, and the chain's last method, run to the cap; a second attempt runs to
+         ! the cap too, but modified Newton's, which gives up past MN_RETRY_BUDGET
          att%give_up_early = k < size(methods) .and. method /= METHOD_NEWTON
+         att%budget = CHAIN_BUDGET
+         if (k > size(methods) .and. method == METHOD_MODIFIED) then
+            att%give_up_early = .true.
+            att%budget = MN_RETRY_BUDGET
+         end if
          call solver%solve_increment(model, problem, att, run%fint_conv, u, fint, reaction, &
             out, error)
          gave_up(i) = out%gave_up .and. k <= size(methods)

@@ -45,15 +45,8 @@ module pecplas_solve_iterate
    real(wp), parameter :: BFGS_BYTES = 256.0_wp*2.0_wp**20
    integer, parameter :: BFGS_MIN_PAIRS = 10
    !> Early give-up of a single-factorisation method that is not the chain's last (see
-   !> `hopeless`), judged from MIN_RATE_ITERS iterations on. CHAIN_BUDGET: the iterations
-   !> such a method may be predicted to need before the stronger method takes over. A
-   !> full-Newton increment takes 3 to 7 iterations, each costing a residual plus an
-   !> assembly and factorisation of the tangent; in the 2D meshes of up to 1e5 equations
-   !> measured (doc/bench/peer_footing.md) a factorisation costs one to three residuals, so
-   !> a full-Newton increment costs about 6 to 28 residuals: a single-factorisation crawl
-   !> predicted past 20 is no saving.
-   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, CHAIN_BUDGET = 20, QN_SPAN = 8, &
-      QN_BLOCK = 4
+   !> `hopeless` and attempt_t%budget), judged from MIN_RATE_ITERS iterations on.
+   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, QN_SPAN = 8, QN_BLOCK = 4
 
 contains
 
@@ -167,8 +160,8 @@ contains
             return
          end if
          if (att%give_up_early .and. it >= MIN_RATE_ITERS) then
-            if (hopeless(hist(0:it), model%solver%tolerance, model%solver%max_iterations, &
-                att%method == METHOD_MODIFIED)) then
+            if (hopeless(hist(0:it), model%solver%tolerance, &
+                min(model%solver%max_iterations, att%budget), att%method == METHOD_MODIFIED)) then
                out%reason = 'stagnating residual (its rate would miss the iteration cap)'
                out%gave_up = .true.
                return
@@ -371,17 +364,17 @@ contains
    end function cap_reason
 
    !> Whether a single-factorisation method followed by a stronger one in the chain should
-   !> give up: true when the residual's contraction predicts more than min(cap, CHAIN_BUDGET)
+   !> give up: true when the residual's contraction predicts more than `budget`
    !> iterations to reach `tol` (or no contraction at all). Modified Newton converges
    !> linearly: its rate is the mean contraction of the last RATE_SPAN iterations. BFGS
    !> converges irregularly (it speeds up as pairs accumulate, single steps may raise the
    !> residual): its rate compares the smallest residual of the last QN_BLOCK iterations
    !> with the smallest of the QN_BLOCK iterations QN_SPAN earlier, so that a single bad step
    !> does not decide, and it is judged from QN_SPAN + QN_BLOCK iterations on.
-   pure logical function hopeless(hist, tol, cap, linear)
+   pure logical function hopeless(hist, tol, budget, linear)
       real(wp), intent(in) :: hist(0:)
       real(wp), intent(in) :: tol
-      integer, intent(in) :: cap
+      integer, intent(in) :: budget
       logical, intent(in) :: linear
       real(wp) :: rate, need, now, before
       integer :: n, span
@@ -404,7 +397,7 @@ contains
          return
       end if
       need = log(tol/now)/log(rate)
-      hopeless = n + need > real(min(cap, CHAIN_BUDGET), wp)
+      hopeless = n + need > real(budget, wp)
    end function hopeless
 
    pure real(wp) function ieee_nan() result(x)

@@ -20,7 +20,10 @@ module pecplas_solve_method
    implicit none (type, external)
    private
 
-   public :: attempt_t, outcome_t, increment_method_t
+   public :: attempt_t, outcome_t, increment_method_t, CHAIN_BUDGET
+
+   !> Default of attempt_t%budget.
+   integer, parameter :: CHAIN_BUDGET = 20
 
    !> What to try: method, line search, control, and the step's load path
    !> factors(tau) = f0 + (ftarget - f0) tau.
@@ -31,6 +34,13 @@ module pecplas_solve_method
       !> Give up as soon as the residual's rate shows the cap will be missed (a later method
       !> of the chain takes over); false for the last method, which runs to the cap.
       logical :: give_up_early = .false.
+      !> The iterations the method may be predicted to need before it gives up early:
+      !> min(cap, budget). The chain's first attempts use CHAIN_BUDGET: a full-Newton
+      !> increment takes 3 to 7 iterations, each costing a residual plus an assembly and
+      !> factorisation of the tangent, about two residuals at 2 000 equations and more on
+      !> larger meshes (doc/bench/peer_footing.md), so a single-factorisation crawl predicted
+      !> past 20 saves nothing.
+      integer :: budget = CHAIN_BUDGET
       !> Arc-length control (tau unknown, ||Δu|| = dl); else load control to tau1.
       logical :: arc = .false.
       real(wp) :: dl = 0.0_wp
