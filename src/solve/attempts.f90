@@ -11,8 +11,8 @@
 !> the iteration cap. When every method failed, those that gave up early are tried once more,
 !> the strongest first, before the increment is cut: quasi-Newton running to the cap,
 !> modified Newton with a budget of MN_RETRY_BUDGET, as the chain did before it remembered
-!> (the early give-up saves time; it never cuts an increment that the former chain would
-!> have converged). The chain remembers: when a later, stronger method converged the last
+!> (the early give-up saves time; every attempt that the chain without it makes from the same
+!> first method is still made). The chain remembers: when a later, stronger method converged the last
 !> increment in more than LEAD_ITERATIONS iterations, the next increment starts with it (its
 !> own chain: QUASI_NEWTON -> NEWTON, NEWTON -> QUASI_NEWTON), so that a run whose
 !> plastic zones make the cheaper methods crawl does not spend their failed attempts again
@@ -45,8 +45,8 @@ module pecplas_solve_attempts
    !> An increment that a remembered later method converged within this many iterations
    !> hands the next one back to the run's own method (module header).
    integer, parameter :: LEAD_ITERATIONS = 1
-   !> Budget of modified Newton's second attempt (the chain's budget before it remembered
-   !> its methods: the retries never do less than that chain did).
+   !> Budget of modified Newton's second attempt (its budget in the chain without early
+   !> give-up of quasi-Newton: the retries make every attempt that chain makes).
    integer, parameter :: MN_RETRY_BUDGET = 60
 
    type :: run_t
