@@ -37,9 +37,9 @@ module pecplas_solve_method
       !> The iterations the method may be predicted to need before it gives up early:
       !> min(cap, budget). The chain's first attempts use CHAIN_BUDGET: a full-Newton
       !> increment takes 3 to 7 iterations, each costing a residual plus an assembly and
-      !> factorisation of the tangent, about two residuals at 2 000 equations and more on
-      !> larger meshes (doc/bench/peer_footing.md), so a single-factorisation crawl predicted
-      !> past 20 saves nothing.
+      !> factorisation of the tangent, about two residuals on the 2 000-equation footing of
+      !> doc/bench/peer_footing.md (a ratio that grows with the mesh), so a
+      !> single-factorisation crawl predicted past 20 saves little or nothing.
       integer :: budget = CHAIN_BUDGET
       !> Arc-length control (tau unknown, ||Δu|| = dl); else load control to tau1.
       logical :: arc = .false.
