@@ -184,3 +184,22 @@ def test_bad_input(installed, tmp_path):
     r = subprocess.run([sys.executable, str(installed), str(bad)], capture_output=True,
                        text=True)
     assert r.returncode == 2 and str(bad) in r.stderr
+
+
+def test_without_element_fields(installed, tmp_path):
+    """A deck whose *OUTPUT writes no element fields (STRESSES=NO, STRAINS=NO): the default
+    picture colours the displacement instead; a stress or plastic field asked for is an input
+    error that says why (exit 2), not a uniform picture."""
+    text = footing_deck(nf=1, c=10.0, drive="settle", settle=0.05, increments=5)
+    assert "*OUTPUT, STRESSES=NO, STRAINS=NO" in text
+    deck = tmp_path / "bare.inp"
+    deck.write_text(text)
+    h5 = tmp_path / "bare.h5"
+    run_pecplas(deck, h5, tmp_path)
+    png, d = plot(installed, h5, tmp_path)
+    assert d["field"] == "u" and len(d["curve"]["load"]) == 6
+    check_png(png, 20)
+    r = subprocess.run([sys.executable, str(installed), str(h5), "--field", "eps_p", "-o",
+                        str(tmp_path / "no.png")], capture_output=True, text=True)
+    assert r.returncode == 2 and "STRESSES=NO" in r.stderr
+    assert not (tmp_path / "no.png").exists()

@@ -189,7 +189,10 @@ def element_values(m, key, field):
                 p = (sx + sy + sz) / 3.0
                 v = p if field == "p" else np.sqrt(
                     0.5 * ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2) + 3.0 * txy ** 2)
+        elif field in ("eps_p", "plastic") and fs is None:
+            v = np.full(n, np.nan)           # no set fields written (*OUTPUT, STRESSES=NO)
         elif field == "eps_p":
+            # an elastic set (no plastic history) never yields
             v = state[:, :, names.index("eps_p_eq")].mean(axis=1) \
                 if state is not None and "eps_p_eq" in names else np.zeros(n)
         elif field == "plastic":
@@ -391,6 +394,10 @@ def draw(m, a):
             raise InputError(f"{m.path}: no fields at increment {a.increment} (written: "
                              f"{int(m.keys[0])} ... {int(m.keys[-1])})")
     field = ALIASES.get(a.field, a.field)
+    if field is None:
+        g = m.f[f"increments/{key}"]
+        field = "syy" if "sets" in g and all("stress_mean" in g["sets"][n]
+                                             for n in g["sets"]) else "u"
     data = {"results": str(m.path), "increment": int(key), "field": field}
     curve = None if a.mesh_only else load_curve(m, key, a.node, a.dof, a.set)
     show_mesh = not a.curve_only
@@ -432,6 +439,10 @@ def draw(m, a):
                 if "eps_p_eq" in names:
                     yielded.append(where[(~now) & (state[:, :, names.index("eps_p_eq")] > 0)])
         values = np.concatenate(values) if values else np.zeros(0)
+        if not np.isfinite(values).any():
+            raise InputError(f"{m.path}: no values of field {field} at increment {int(key)} "
+                             "(the deck's *OUTPUT wrote no element fields: STRESSES=NO?); "
+                             "--curve-only draws the curve alone")
         extend = {(False, False): "neither", (True, False): "min", (False, True): "max",
                   (True, True): "both"}[(bool(np.nanmin(values) < lo), bool(np.nanmax(values) > hi))]
         pc = PolyCollection(polys, array=np.ma.masked_invalid(values), cmap="viridis",
@@ -492,8 +503,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog="pecplas-plot", description=__doc__.split("\n\n")[0])
     ap.add_argument("results", help="a results file of pecplas (.h5)")
     ap.add_argument("-o", "--output", help="PNG file (default: RESULTS with .png)")
-    ap.add_argument("--field", default="syy", choices=[*FIELDS, *ALIASES],
-                    help="the colour field (default syy)")
+    ap.add_argument("--field", choices=[*FIELDS, *ALIASES],
+                    help="the colour field (default syy, or u where no stress was written)")
     ap.add_argument("--component", dest="field", choices=[*ALIASES, *STRESS],
                     help=argparse.SUPPRESS)
     ap.add_argument("--increment", type=int, help="global increment (default: the last)")
