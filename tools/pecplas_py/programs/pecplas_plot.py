@@ -104,6 +104,8 @@ class Model:
 
     def __init__(self, path):
         self.path = Path(path)
+        if not self.path.is_file():
+            raise InputError(f"{path}: no such file (a results file .h5 of pecplas expected)")
         try:
             self.f = h5py.File(path, "r")
         except OSError as e:
