@@ -16,8 +16,8 @@ element's Gauss points yielding at this increment), ux, uy, u (mean of the eleme
 
 The colour scale: by default from the 5th to the 95th percentile of the field over the whole
 model's area, so that a few small, very stiff or very stressed elements (a pile in soil) do
-not make the rest one colour (values beyond get the end colours, shown by the arrows of the colour bar);
-`--range-set SET` the full range over one element set, `--range LO HI` given, `--full-range`
+not make the rest one colour (values beyond get the end colours, shown by the arrows of the
+colour bar); `--range-set SET` the full range over one element set, `--range LO HI` given, `--full-range`
 the full range over the model.
 
 Plastic points: Mohr-Coulomb and Drucker-Prager sets store the kind of each Gauss point's last
@@ -445,8 +445,9 @@ def draw(m, a):
             raise InputError(f"{m.path}: no values of field {field} at increment {int(key)} "
                              "(the deck's *OUTPUT wrote no element fields: STRESSES=NO?); "
                              "--curve-only draws the curve alone")
+        below, above = bool(np.nanmin(values) < lo), bool(np.nanmax(values) > hi)
         extend = {(False, False): "neither", (True, False): "min", (False, True): "max",
-                  (True, True): "both"}[(bool(np.nanmin(values) < lo), bool(np.nanmax(values) > hi))]
+                  (True, True): "both"}[(below, above)]
         pc = PolyCollection(polys, array=np.ma.masked_invalid(values), cmap="viridis",
                             edgecolors="k", linewidths=0.3)
         pc.set_clim(lo, hi)
