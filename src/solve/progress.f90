@@ -9,6 +9,7 @@ module pecplas_solve_progress
    use pecplas_base_kinds, only: wp
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: AXISYMMETRIC
+   use pecplas_model_loads, only: LOAD_FORCE, LOAD_PRESSURE, LOAD_DISPLACEMENT
    use pecplas_base_progress_eta, only: progress_eta_t, duration
    use pecplas_base_strings, only: itoa
    implicit none (type, external)
@@ -137,7 +138,7 @@ contains
       s = ''
       associate (pat => model%patterns(p))
          select case (pat%kind)
-         case ('FORCE')
+         case (LOAD_FORCE)
             if (.not. allocated(pat%value)) return
             do d = 1, 2
                if (.not. any(pat%dof == d)) cycle
@@ -145,7 +146,7 @@ contains
                   axis(model, d)//' = '//num(factor*sum(pat%value, mask=pat%dof == d))// &
                   unit(model, 'force')
             end do
-         case ('DISPLACEMENT')
+         case (LOAD_DISPLACEMENT)
             if (.not. allocated(pat%value)) return
             do d = 1, 2
                n = count(pat%dof == d)
@@ -162,7 +163,7 @@ contains
                end if
                if (n > 1) s = s//' at '//itoa(n)//' nodes'
             end do
-         case ('PRESSURE')
+         case (LOAD_PRESSURE)
             if (.not. allocated(pat%pressure)) return
             if (size(pat%pressure) == 0) return
             if (maxval(pat%pressure) == minval(pat%pressure)) then
