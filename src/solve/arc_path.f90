@@ -9,9 +9,10 @@
 !> The path starts at its first state, which is its first candidate for the peak, and goes
 !> forward: its first increment raises the step fraction (the operator's response at a state
 !> where the tangent fails is no guide to the direction), later ones follow the previous
-!> increment. A maximum counts as passed only when the displacement conjugate to the step's
-!> load, s = q.u, has moved on beyond the peak's; an arc increment that ends below the peak
-!> with s back behind it has turned onto an unloading branch (its load fell because the
+!> increment. A maximum counts as passed only when the load has fallen below the peak by more
+!> than the convergence test leaves undecided (load_noise) and the displacement conjugate to
+!> the step's load, s = q.u, has moved on beyond the peak's; an arc increment that ends below
+!> the peak with s back behind it has turned onto an unloading branch (its load fell because the
 !> structure unloaded, not because it passed a maximum) and is refused like one that did not
 !> converge: the length is halved.
 module pecplas_solve_arc_path
@@ -39,7 +40,8 @@ module pecplas_solve_arc_path
    !> limit is where the plateau began, traced FLAT_COUNT - 1 increments beyond.
    real(wp), parameter :: SP_FLAT = 2.0e-3_wp
    integer, parameter :: FLAT_COUNT = 3
-   !> A maximum counts once the load has fallen in this many increments after it.
+   !> A maximum counts once the load has fallen in this many increments after it, each
+   !> below the peak by more than the load noise of the convergence test (load_noise).
    integer, parameter :: BEYOND_PEAK = 2
    !> Load-controlled step that tests a singular tangent for a mechanism (step fraction).
    real(wp), parameter :: PROBE_STEP = 1.0e-3_wp
@@ -64,7 +66,7 @@ contains
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
-      real(wp) :: tau, k_inc, time, s
+      real(wp) :: tau, k_inc, time, s, noise
       integer :: method, wanted
       logical :: landed
 
@@ -109,6 +111,7 @@ contains
                att%tau1 = min(tau + 1.0_wp/step%increments, 1.0_wp)
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
+               noise = 0.0_wp
                if (.not. out%converged) then
                   call problem%state%rollback()
                   lc_mode = .false.
@@ -128,6 +131,7 @@ contains
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
                landed = .false.
+               noise = 0.0_wp
                if (out%converged .and. out%tau > 1.0_wp + 1.0e-12_wp) then
                   ! beyond the step's target: land on it with one load-controlled increment
                   call problem%state%rollback()
@@ -158,8 +162,8 @@ contains
                   end if
                end if
                if (att%arc .and. out%converged) then
-                  if (turned_back(res, out%tau, sum(fq*u), load_noise(problem, model%solver% &
-                      tolerance, att, out%tau, reaction, fq))) then
+                  noise = load_noise(problem, model%solver%tolerance, att, out%tau, reaction, fq)
+                  if (turned_back(res, out%tau, sum(fq*u), noise)) then
                      out%converged = .false.
                      res%mechanism = .false.
                      out%reason = 'the path turns back: the arc increment ends at step '// &
@@ -201,7 +205,11 @@ contains
                res%peak_factors = att%factors(tau)
                res%s_peak = s
                res%beyond = 0
-            else
+            else if (tau < res%tau_peak - noise) then
+               ! below the peak by more than the convergence test leaves undecided: the load
+               ! fell (a fall within `noise` proves no maximum: two converged states of a
+               ! rising path may lie that far apart, e.g. a stiff penalty joint whose states
+               ! each converge just under the tolerance)
                res%beyond = res%beyond + 1
             end if
             nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
