@@ -130,6 +130,33 @@ def test_quasi_newton_at_1e8(tmp_path, scene):
     assert status == "completed" and mean <= 45
 
 
+def test_no_limit_from_falls_within_the_load_noise(tmp_path):
+    """S2 pile, K_n / E = 1e8, full Newton alone (no fallback, no line search, 30 iterations),
+    loading step only: the pile has no limit at 2000 kN (the same deck under QUASI_NEWTON alone
+    completes, its head settlement growing linearly from 0.7 to 1.0 of the load). Full Newton
+    fails at fraction 0.725 (the stiff penalty joint: singular tangents, states converged just
+    under the tolerance); the limit probe then traces the path to 0.728432, 0.728412,
+    0.728404: two falls of 2e-5 and 8e-6, where the convergence test leaves the step fraction
+    of each state undecided by 1.46e-4 (2 tol max(||F_ext||, ||R||) / ||q||: the geostatic
+    load dwarfs the head load). Those falls are no maximum; the run once stopped there with a
+    false 'limit load'. It must end 'diverged' (with the probe's reason) or go on."""
+    text = (ROOT / "input/s2/s2_mohr_coulomb.inp").read_text()
+    text = re.sub(r"\bKN = [^,]+,", f"KN = {1e8 * 2e4:g},", text)
+    text = re.sub(r"^\*STEP, NAME=unload.*\n(?:(?!\*).*\n)*", "", text, flags=re.M)
+    assert text.count("*STEP") == 1
+    p, status, hist, limit, _ = run(with_solver(text, "*SOLVER, METHOD=NEWTON, FALLBACK=NO, "
+                                                "LINE_SEARCH=NO, MAX_ITERATIONS=30, "
+                                                "MAX_CUTS=3"), tmp_path, "newton")
+    print(f"full Newton: {status}, {len(hist['step'])} increments, last load factor "
+          f"{hist['pattern_factors'][-1, 0]:.6f}")
+    assert limit is None and status in ("diverged", "completed"), p.stdout + p.stderr
+    # the same path under quasi-Newton goes on to the full load: there is no maximum to find
+    _, status_qn, hist_qn, _, _ = run(with_solver(text, "*SOLVER, METHOD=QUASI_NEWTON, "
+                                                  "FALLBACK=NO, MAX_ITERATIONS=1000, "
+                                                  "MAX_CUTS=3"), tmp_path, "qn")
+    assert status_qn == "completed"
+
+
 def head_uplift_curve(out_h5, force_pattern_scale=None):
     """(uplift of head node 1, pull) per written increment: the pull is the pattern factor
     times `force_pattern_scale` (force control) or the head nodes' reaction (imposed uplift)."""
