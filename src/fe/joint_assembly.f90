@@ -90,7 +90,7 @@ contains
             end if
             do e = 1, size(st%tangent, 4)
                do ip = 1, st%npoint
-                  call model%laws(set%law_index)%law%elastic_tangent(st%hist(:, ip, e), &
+                  call model%laws(set_law(set, st))%law%elastic_tangent(st%hist(:, ip, e), &
                      st%tangent(:, :, ip, e))
                end do
             end do
