@@ -8,6 +8,7 @@ module test_io_results_phases
    use pecplas_testing, only: unittest_t, new_unittest, check
    use pecplas_model_type, only: model_t
    use pecplas_io_results_file, only: results_file_t
+   use pecplas_io_results_increment, only: increment_result_t
    use pecplas_io_results_phases, only: write_phase
    use pecplas_io_results_reader, only: results_reader_t
    use test_io_results_data, only: sample_model, sample_gauss, sample_increment, OUT_DIR, &
@@ -45,18 +46,18 @@ contains
          [logical ::], error)
       if (allocated(error)) return
       do k = 1, 2
-         call rf%write_increment(sample_increment(k), error)
+         call rf%write_increment(in_step(k, 1), error)
          if (allocated(error)) return
       end do
       call write_phase(rf, 2, 'excavate', ['DEACTIVATE LINING (1 element)'], [.true., .false.], &
          [logical ::], error)
       if (allocated(error)) return
-      call rf%write_increment(sample_increment(3), error)
+      call rf%write_increment(in_step(3, 2), error)
       if (allocated(error)) return
       call write_phase(rf, 3, 'install', [character(len=30) :: 'ACTIVATE LINING, STRESS=ZERO', &
          'CHANGE_MATERIAL SOIL, clay2'], [.true., .true.], [logical ::], error)
       if (allocated(error)) return
-      call rf%write_increment(sample_increment(4), error)
+      call rf%write_increment(in_step(4, 3), error)
       if (allocated(error)) return
       call rf%finish('completed', '', error)
       if (allocated(error)) return
@@ -144,6 +145,16 @@ contains
       call check(error, allocated(e2), 'phase index 0 is refused')
       call rf%discard()
    end subroutine test_bad_masks
+
+   !> sample_increment(k) as an increment of step `step` (the step is the phase).
+   function in_step(k, step) result(inc)
+      integer, intent(in) :: k, step
+      type(increment_result_t) :: inc
+      inc = sample_increment(k)
+      inc%step = step
+      inc%increment = k
+      if (step > 1) inc%increment = 1
+   end function in_step
 
    subroutine read_text(path, text, error)
       character(len=*), intent(in) :: path

@@ -190,7 +190,18 @@ class Results:
         raise KeyError(f"no phase {index} in {self.path}")
 
     def phase_of(self, key):
-        """The phase index of written increment `key` (its step)."""
+        """The phase index of written increment `key`: the phase of /phases whose first
+        increment is the latest not after it (its step, as the driver writes them), else
+        the increment's step."""
+        if "phases" in self.file:
+            g = int(self.increment(key).attrs["global_increment"])
+            best = None
+            for p in self.file["phases"].values():
+                first = int(p.attrs["first_global_increment"])
+                if 1 <= first <= g and (best is None or first > best[0]):
+                    best = (first, int(p.attrs["index"]))
+            if best is not None:
+                return best[1]
         return self.step_of(key)
 
     def active_sets(self, key):
@@ -204,7 +215,7 @@ class Results:
         """{phase index: key of the last written increment of that phase}."""
         ends = {}
         for k in self.keys:
-            ends[self.step_of(k)] = k
+            ends[self.phase_of(k)] = k
         return ends
 
     # ---- limit load
