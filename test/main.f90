@@ -20,6 +20,7 @@ program tester
    use test_io_results_final, only: collect_io_results_final
    use test_io_results_copies, only: collect_io_results_copies
    use test_io_results_checksum, only: collect_io_results_checksum
+   use test_io_results_phases, only: collect_io_results_phases
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
    use test_linalg_solvers, only: collect_linalg_solvers
@@ -139,6 +140,7 @@ program tester
    suites = [suites, new_testsuite('io_deck_mesh_lines', collect_io_deck_mesh_lines)]
    suites = [suites, new_testsuite('io_results_copies', collect_io_results_copies)]
    suites = [suites, new_testsuite('io_results_checksum', collect_io_results_checksum)]
+   suites = [suites, new_testsuite('io_results_phases', collect_io_results_phases)]
    suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
    suites = [suites, new_testsuite('linalg_omp_serial', collect_linalg_omp_serial)]
    suites = [suites, new_testsuite('cmd_args', collect_cmd_args)]
