@@ -37,6 +37,7 @@ contains
                new_unittest('material_change_inside_yield', test_material_inside), &
                new_unittest('material_change_outside_yield', test_material_outside), &
                new_unittest('excavation_mc_equilibrium', test_mc_equilibrium), &
+               new_unittest('restart_in_phase_two', test_restart), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_phases
 
@@ -325,9 +326,41 @@ contains
       type(problem_t) :: problem
       real(wp), allocatable :: fint(:, :), fext(:, :)
       real(wp) :: w, ry, tol
-      integer :: code, u, i, j, nx, ny, el, s, stop_at
+      integer :: code, stop_at
       character(len=*), parameter :: deck = OUT//'pit.inp'
       call make_directories(OUT)
+      call write_pit(deck)
+      do stop_at = 4, 8, 4
+         code = run_deck(deck, OUT//'pit.h5', .true., model, problem, stop_after=stop_at)
+         call check(error, code == 0 .or. code == 4, 'pit runs to increment '//itoa(stop_at)// &
+            ' (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         allocate (fint, mold=problem%state%u)
+         call internal_forces(model, problem%system%rules, problem%state%u, problem%state, fint, &
+            error)
+         if (allocated(error)) return
+         call problem%state%rollback()
+         fext = problem%system%initial_force
+         ! the active weight (no pattern; the carried load is zero at the phase end)
+         w = -sum(fext(2, :))
+         ry = sum(pack(fint(2, :) - fext(2, :), problem%system%dofs%eq(2, :) == 0))
+         tol = sqrt(real(problem%system%dofs%neq, wp))*1.0e-8_wp*max(w, norm2(fint - fext))
+         call check_close(error, ry, w, 0.0_wp, 'phase '//itoa(stop_at/4)//': vertical '// &
+            'reactions = weight of the active elements', atol=tol)
+         if (allocated(error)) return
+         ! the weight is that of the active elements: 18 x area
+         call check_close(error, w, 18.0_wp*(20.0_wp*9.0_wp - 7.5_wp*1.5_wp*(stop_at/4)), &
+            1.0e-12_wp, 'active weight')
+         if (allocated(error)) return
+         deallocate (fint)
+      end do
+   end subroutine test_mc_equilibrium
+
+   !> A 2-D Mohr–Coulomb block 20 x 9 (8 x 6 Q4) under K0, sides on rollers, a pit of 3
+   !> columns dug in two phases of 4 increments (pit1 the top row, pit2 the one below).
+   subroutine write_pit(deck)
+      character(len=*), intent(in) :: deck
+      integer :: u, i, j, nx, ny, el, s
       nx = 8; ny = 6
       open (newunit=u, file=deck, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'pit', '*NODES'
@@ -371,31 +404,42 @@ contains
          '*STEP, NAME=dig1, INCREMENTS=4', '*DEACTIVATE', 'pit1', &
          '*STEP, NAME=dig2, INCREMENTS=4', '*DEACTIVATE', 'pit2'
       close (u)
-      do stop_at = 4, 8, 4
-         code = run_deck(deck, OUT//'pit.h5', .true., model, problem, stop_after=stop_at)
-         call check(error, code == 0 .or. code == 4, 'pit runs to increment '//itoa(stop_at)// &
-            ' (exit '//itoa(code)//')')
+   end subroutine write_pit
+
+   !> The pit run interrupted in its second phase (after increment 6) and restarted equals
+   !> the run without interruption, to 1e-12 of its largest displacement and of gamma H
+   !> (the restart carries the phase's out-of-balance and replays the phases before).
+   subroutine test_restart(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: whole, resumed
+      character(len=*), parameter :: deck = OUT//'pit_restart.inp'
+      real(wp) :: umax
+      integer :: code, s
+      call make_directories(OUT)
+      call write_pit(deck)
+      code = run_deck(deck, OUT//'pit_whole.h5', .true., model, whole)
+      call check(error, code == 0, 'pit runs')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'pit_part.h5', .true., model, resumed, stop_after=6)
+      call check(error, code == 4, 'pit interrupted after increment 6 (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'pit_resumed.h5', .true., model, resumed, &
+         restart=OUT//'pit_part.h5')
+      call check(error, code == 0, 'pit restarted (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      umax = maxval(abs(whole%state%u))
+      call check_close(error, maxval(abs(resumed%state%u - whole%state%u)), 0.0_wp, 0.0_wp, &
+         'restarted = uninterrupted: displacements', atol=1.0e-12_wp*umax)
+      if (allocated(error)) return
+      do s = 1, size(whole%state%sets)
+         if (.not. whole%state%sets(s)%active) cycle
+         call check_close(error, maxval(abs(resumed%state%sets(s)%stress - &
+            whole%state%sets(s)%stress)), 0.0_wp, 0.0_wp, 'restarted = uninterrupted: '// &
+            'stresses of set '//itoa(s), atol=1.0e-12_wp*18.0_wp*9.0_wp)
          if (allocated(error)) return
-         allocate (fint, mold=problem%state%u)
-         call internal_forces(model, problem%system%rules, problem%state%u, problem%state, fint, &
-            error)
-         if (allocated(error)) return
-         call problem%state%rollback()
-         fext = problem%system%initial_force
-         ! the active weight (no pattern; the carried load is zero at the phase end)
-         w = -sum(fext(2, :))
-         ry = sum(pack(fint(2, :) - fext(2, :), problem%system%dofs%eq(2, :) == 0))
-         tol = sqrt(real(problem%system%dofs%neq, wp))*1.0e-8_wp*max(w, norm2(fint - fext))
-         call check_close(error, ry, w, 0.0_wp, 'phase '//itoa(stop_at/4)//': vertical '// &
-            'reactions = weight of the active elements', atol=tol)
-         if (allocated(error)) return
-         ! the weight is that of the active elements: 18 x area
-         call check_close(error, w, 18.0_wp*(20.0_wp*9.0_wp - 7.5_wp*1.5_wp*(stop_at/4)), &
-            1.0e-12_wp, 'active weight')
-         if (allocated(error)) return
-         deallocate (fint)
       end do
-   end subroutine test_mc_equilibrium
+   end subroutine test_restart
 
    !> Bad phase decks: exit 2, file:line and keyword in the message, no results file.
    subroutine test_bad_decks(error)

@@ -42,7 +42,7 @@ module pecplas_phases_start
    implicit none (type, external)
    private
 
-   public :: start_phase, LINE_LEN
+   public :: start_phase, replay_phases, LINE_LEN
 
    !> Length of a line of the change list (results file).
    integer, parameter :: LINE_LEN = 160
@@ -172,6 +172,23 @@ contains
       end associate
       problem%phase%index = istep
    end subroutine start_phase
+
+   !> The phases of steps 1 to k applied again to a problem just set up (a restart: its
+   !> state is then read over the one they leave).
+   subroutine replay_phases(model, problem, k, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: k
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: fint(:, :)
+      character(len=LINE_LEN), allocatable :: lines(:)
+      logical :: refactorise
+      integer :: i
+      do i = 1, k
+         call start_phase(model, problem, i, fint, refactorise, lines, error)
+         if (allocated(error)) return
+      end do
+   end subroutine replay_phases
 
    !> Before the first step: the load each set holds, and how the initial state came about.
    subroutine first_phase(model, problem, error)

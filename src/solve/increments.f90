@@ -73,6 +73,13 @@ contains
          run%fint_conv = problem%position%fint_conv
          istep0 = problem%position%istep
          if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
+         ! a phased run goes on in the phase in force: the new file records it
+         if (problem%phase%phased) then
+            call record_phase(model, problem, results, istep0, [character(len=LINE_LEN) :: &
+               'resumed by a restart (the changes of this phase were made by the run before)'], &
+               error)
+            if (allocated(error)) return
+         end if
       end if
       do istep = istep0, size(model%steps)
          ! a phased run: the step's changes at its start (a resumed step has them already)
@@ -110,7 +117,6 @@ contains
       integer, intent(in) :: istep
       type(error_t), allocatable, intent(out) :: error
       character(len=LINE_LEN), allocatable :: lines(:)
-      logical, allocatable :: eactive(:), jactive(:)
       logical :: refactorise
       call start_phase(model, problem, istep, run%fint_conv, refactorise, lines, error)
       if (allocated(error)) return
@@ -118,10 +124,7 @@ contains
          call factorise_stiffness(model, problem, .false., error)
          if (allocated(error)) return
       end if
-      eactive = problem%state%sets%active
-      allocate (jactive(0))
-      if (allocated(problem%state%joints%sets)) jactive = problem%state%joints%sets%active
-      call write_phase(results, istep, model%steps(istep)%name, lines, eactive, jactive, error)
+      call record_phase(model, problem, results, istep, lines, error)
       if (allocated(error)) return
       if (.not. run%quiet .and. size(lines) > 0) then
          write (*, '(a)') ' phase '//itoa(istep)//' ('//model%steps(istep)%name//'):'
@@ -133,6 +136,21 @@ contains
          end block
       end if
    end subroutine begin_phase
+
+   !> The phase of step istep in the results file (/phases), with the sets active in it.
+   subroutine record_phase(model, problem, results, istep, lines, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(results_file_t), intent(inout) :: results
+      integer, intent(in) :: istep
+      character(len=*), intent(in) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: eactive(:), jactive(:)
+      eactive = problem%state%sets%active
+      allocate (jactive(0))
+      if (allocated(problem%state%joints%sets)) jactive = problem%state%joints%sets%active
+      call write_phase(results, istep, model%steps(istep)%name, lines, eactive, jactive, error)
+   end subroutine record_phase
 
    !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and
    !> grown back after success.
