@@ -17,6 +17,8 @@ module pecplas_problem_type
    use pecplas_problem_linear, only: linear_system_t
    use pecplas_problem_stats, only: run_stats_t
    use pecplas_problem_position, only: run_position_t
+   use pecplas_problem_phase, only: phase_state_t
+   use pecplas_model_phase_plan, only: is_phased, initial_activity
    use pecplas_fe_joint_assembly, only: setup_joint_state
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
@@ -39,6 +41,8 @@ module pecplas_problem_type
       !> Position of the step loop after the last converged increment (restart).
       type(run_position_t) :: position
       type(run_stats_t) :: stats
+      !> Phases: the phase in force and its carried out-of-balance (pecplas_phases_start).
+      type(phase_state_t) :: phase
    end type problem_t
 
 contains
@@ -50,6 +54,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: d(NCOMP, NCOMP)
       integer :: s, nel, ng, nst, nnode, npat, e, g
+      logical, allocatable :: eactive(:), jactive(:)
 
       nnode = model%mesh%nnode()
       allocate (problem%system%elems(size(model%mesh%esets)), problem%system%rules(size(model%mesh%esets)))
@@ -85,6 +90,13 @@ contains
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
+      ! phases: the sets first activated by a step are inactive until then
+      problem%phase%phased = is_phased(model)
+      if (problem%phase%phased) then
+         call initial_activity(model, eactive, jactive)
+         problem%state%sets%active = eactive
+         if (allocated(problem%state%joints%sets)) problem%state%joints%sets%active = jactive
+      end if
       npat = 0
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (problem%state%u(2, nnode), source=0.0_wp)

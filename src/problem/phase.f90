@@ -1,0 +1,34 @@
+!> Where a phased run stands (doc/theory.md, Phases): the phase whose changes are in force,
+!> the load each element set holds while it is active, and the out-of-balance carried from
+!> the start of the current phase. Not used (empty) by a deck that is not phased.
+module pecplas_problem_phase
+   use pecplas_base_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: phase_state_t, PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, PROCEDURE_NAMES
+
+   !> How the initial stresses of a phased run come about: none (no *INITIAL_STRESS and no
+   !> gravity pattern), the K0 procedure (*INITIAL_STRESS: the stresses are the state, the
+   !> weight of the active sets the load), gravity loading (a GRAVITY pattern applied by
+   !> the steps, no *INITIAL_STRESS).
+   integer, parameter :: PROCEDURE_NONE = 0, PROCEDURE_K0 = 1, PROCEDURE_GRAVITY = 2
+   character(len=*), parameter :: PROCEDURE_NAMES(0:2) = [character(len=14) :: 'none', &
+      'K0 procedure', 'gravity loading']
+
+   type :: phase_state_t
+      !> The deck is phased (pecplas_model_phase_plan's is_phased).
+      logical :: phased = .false.
+      !> Step whose phase changes have been applied (0: none yet).
+      integer :: index = 0
+      integer :: procedure = PROCEDURE_NONE
+      !> Load held by each element set while it is active (2, nnode, nset): its weight under
+      !> a GEOSTATIC initial stress, the nodal forces of a HOMOGENEOUS one, else zero.
+      real(wp), allocatable :: hold(:, :, :)
+      !> The out-of-balance of the phase start (2, nnode), on the free equations: added to
+      !> the external load at the start of the step and taken to zero along the step's load
+      !> path (pecplas_solve_residual's load_vectors).
+      real(wp), allocatable :: carried(:, :)
+   end type phase_state_t
+
+end module pecplas_problem_phase
