@@ -22,7 +22,6 @@ import pytest
 
 from pecplas_exe import pecplas_cmd
 from pecplas_py import script_cmd
-from pecplas_py.decks import make_phase_examples
 from pecplas_py.plots import plot_phases
 from pecplas_py.results import Results
 from pecplas_py.scenes import excavation_report
@@ -36,14 +35,6 @@ def run_deck(deck, out):
                        capture_output=True, text=True, cwd=ROOT, timeout=600)
     assert p.returncode == 0, p.stdout + p.stderr
     return out
-
-
-def test_decks_are_generated():
-    """input/examples holds what make_phase_examples writes (regenerate after a change)."""
-    for name, make in make_phase_examples.DECKS.items():
-        assert (EXAMPLES / name).read_text() == make(), \
-            f"{name} differs from make_phase_examples: run python3 -m " \
-            "pecplas_py.decks.make_phase_examples"
 
 
 def test_blum_closed_form():

@@ -102,7 +102,7 @@ def run_timed(deck, out, bin_dir=None):
     cmd = [*exe_cmd("pecplas", bin_dir), str(deck), "-o", str(out)]
     out.parent.mkdir(parents=True, exist_ok=True)
     t0 = time.monotonic()
-    last, ends = t0, {}
+    ends = {}
     with subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True, env=env) as proc:
         for line in proc.stdout:
             words = line.split()
