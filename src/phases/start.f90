@@ -92,9 +92,13 @@ contains
                   if (ch%target == TARGET_ELEMENTS) then
                      call activate_set(model, problem, ch%set, ch%start == START_WISHED, error)
                      if (allocated(error)) return
-                     call add_line(lines, 'activate element set '//ch%set_name// &
-                        merge(' (wished in place: initial stress)', ' (stress-free)          ', &
-                        ch%start == START_WISHED))
+                     if (ch%start == START_WISHED) then
+                        call add_line(lines, 'activate element set '//ch%set_name// &
+                           ' (wished in place: its initial stress)')
+                     else
+                        call add_line(lines, 'activate element set '//ch%set_name// &
+                           ' (stress-free)')
+                     end if
                   else
                      if (.not. indexed) call index%build(model)
                      indexed = .true.
@@ -104,7 +108,7 @@ contains
                         ' (from the initial stresses of the soil beside it)')
                   end if
                case (CHANGE_MATERIAL)
-                  call change_material(model, st%sets(ch%set), ch%new)
+                  call swap_material(model, st%sets(ch%set), ch%new)
                   call add_line(lines, 'change the material of element set '//ch%set_name// &
                      ' to '//ch%new_name)
                case (CHANGE_LAW)
@@ -194,7 +198,9 @@ contains
       allocate (problem%phase%hold(2, model%mesh%nnode(), nset), source=0.0_wp)
       problem%phase%procedure = PROCEDURE_NONE
       if (allocated(model%patterns)) then
-         if (any(model%patterns%kind == 'GRAVITY')) problem%phase%procedure = PROCEDURE_GRAVITY
+         do i = 1, size(model%patterns)
+            if (model%patterns(i)%kind == 'GRAVITY') problem%phase%procedure = PROCEDURE_GRAVITY
+         end do
       end if
       if (.not. allocated(model%initial_stresses)) return
       if (size(model%initial_stresses) == 0) return
@@ -337,7 +343,7 @@ contains
 
    !> Element set state st takes material m: stresses kept, history restarted (zero, of
    !> the new size), tangents stored when m has no constant tangent (its elastic one).
-   subroutine change_material(model, st, m)
+   subroutine swap_material(model, st, m)
       type(model_t), intent(in) :: model
       type(set_state_t), intent(inout) :: st
       integer, intent(in) :: m
@@ -360,7 +366,7 @@ contains
             end do
          end if
       end associate
-   end subroutine change_material
+   end subroutine swap_material
 
    !> Displacements back to zero; the strains and joint relative displacements measured
    !> from them too. Stresses and histories stay.

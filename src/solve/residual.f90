@@ -27,7 +27,9 @@ contains
 
    !> The step's loads at step fraction tau: F_ext = fbase + tau fq, with fbase the initial
    !> stress forces plus the patterns at their step-start factors f0 and fq the change of the
-   !> force patterns over the step; up the imposed displacements at fraction `tau_up`.
+   !> force patterns over the step; up the imposed displacements at fraction `tau_up`. In a
+   !> phased run the held load of the active sets stands for the initial-stress forces and
+   !> the phase's carried out-of-balance c goes from fbase to zero: fbase + c, fq - c.
    subroutine load_vectors(problem, f0, ftarget, tau_up, fbase, fq, up)
       type(problem_t), intent(in) :: problem
       real(wp), intent(in) :: f0(:), ftarget(:), tau_up
@@ -42,6 +44,11 @@ contains
          if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%system%pattern_force(:, :, p)
          up = up + path_factor(f0(p), ftarget(p), tau_up)*problem%system%pattern_disp(:, :, p)
       end do
+      ! a phase's out-of-balance, carried from the step start to zero at its end
+      if (allocated(problem%phase%carried)) then
+         fbase = fbase + problem%phase%carried
+         fq = fq - problem%phase%carried
+      end if
    end subroutine load_vectors
 
    !> Internal forces fint at the nodal displacements u from the converged state (timed as

@@ -33,7 +33,10 @@ contains
       character(len=:), allocatable :: text
       logical :: found
       integer :: kind, i, k
-      kind = findloc(CHANGE_NAMES, block%kw%name, dim=1)
+      kind = 0
+      do i = 1, size(CHANGE_NAMES)
+         if (trim(CHANGE_NAMES(i)) == block%kw%name) kind = i
+      end do
       if (kind == CHANGE_ACTIVATE) then
          call block%kw%check_keys(state%lines%get(block%at), [character(len=6) :: 'STRESS'], &
             error)

@@ -123,6 +123,11 @@ contains
          associate (st => model%steps(s))
             changes = any(factor(st%pattern) /= st%target)
             factor(st%pattern) = st%target
+            ! a phase (doc/deck.md, Phases) changes the model; a nil step restores equilibrium
+            if (size(st%pattern) == 0 .or. st%reset_displacements) changes = .true.
+            if (allocated(st%changes)) then
+               if (size(st%changes) > 0) changes = .true.
+            end if
             if (.not. changes) call model%warnings%add("step '"//st%name//"' changes no "// &
                'load factor (every pattern it names is already at its target): it applies '// &
                'nothing', st%file, st%line)
