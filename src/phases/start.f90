@@ -25,7 +25,7 @@ module pecplas_phases_start
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
       CHANGE_LAW, TARGET_ELEMENTS, START_WISHED
    use pecplas_model_phase_plan, only: step_activity, attached_nodes
-   use pecplas_problem_type, only: problem_t
+   use pecplas_problem_type, only: problem_t, set_orphans
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
       PROCEDURE_NAMES
    use pecplas_fe_state, only: set_state_t
@@ -63,7 +63,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:)
       type(mesh_index_t) :: index
-      integer :: c, j, p, n, d
+      integer :: c, j, p
       logical :: indexed
 
       allocate (lines(0))
@@ -143,23 +143,8 @@ contains
                ' (a node of it lost its last active element)')
          end do
          ! nodes no active element or joint holds: out of the system
+         call set_orphans(model, problem, eactive, jactive)
          held = attached_nodes(model, eactive, jactive)
-         n = 0
-         do p = 1, size(held)
-            if (.not. held(p)) n = n + count(problem%system%dofs%eq(:, p) > 0)
-         end do
-         if (allocated(st%orphan_eq)) deallocate (st%orphan_eq)
-         allocate (st%orphan_eq(n))
-         n = 0
-         do p = 1, size(held)
-            if (held(p)) cycle
-            do d = 1, 2
-               if (problem%system%dofs%eq(d, p) > 0) then
-                  n = n + 1
-                  st%orphan_eq(n) = problem%system%dofs%eq(d, p)
-               end if
-            end do
-         end do
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
             problem%system%pattern_disp, error, eactive)

@@ -8,6 +8,7 @@ module pecplas_io_deck_usage
    use pecplas_io_text_fields, only: same_name, upper
    use pecplas_io_deck_state, only: deck_state_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_phases, only: CHANGE_MATERIAL
    implicit none (type, external)
    private
 
@@ -55,8 +56,16 @@ contains
                   used = .true.
             end do
          end if
+         ! or by a phase's *CHANGE_MATERIAL
+         if (allocated(model%steps)) then
+            do k = 1, size(model%steps)
+               if (.not. allocated(model%steps(k)%changes)) cycle
+               if (any(model%steps(k)%changes%new == m .and. &
+                       model%steps(k)%changes%kind == CHANGE_MATERIAL)) used = .true.
+            end do
+         end if
          if (.not. used) call warn_at(state, model, state%material_at(m), "material '"// &
-            model%materials(m)%m%name//"' is used by no *SECTION")
+            model%materials(m)%m%name//"' is used by no *SECTION nor *CHANGE_MATERIAL")
       end do
    end subroutine unused_materials
 
