@@ -575,11 +575,13 @@ contains
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
+      logical, allocatable :: jon(:)
       if (inc%write_fields) then
          call write_fields(file, inc, this%layout, this%strains, this%units, error)
          if (allocated(error)) return
+         jon = this%layout%joints(:)%active
          if (size(this%joints) > 0) call write_joint_fields(file, inc%global_increment, &
-            inc%joint_fields, this%joints, this%units, error, this%layout%joints(:)%active)
+            inc%joint_fields, this%joints, this%units, error, jon)
          if (allocated(error)) return
       end if
       call write_pending_phases(this, file, error)
