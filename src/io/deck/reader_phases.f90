@@ -124,19 +124,21 @@ contains
       do s = 1, size(state%steps)
          associate (raw => state%steps(s), step => model%steps(s))
             step%reset_displacements = raw%reset_displacements
-            if (.not. allocated(raw%changes)) then
+            if (allocated(raw%changes)) then
+               allocate (step%changes(size(raw%changes)))
+            else
                allocate (step%changes(0))
-               cycle
             end if
-            allocate (step%changes(size(raw%changes)))
-            do c = 1, size(raw%changes)
+            do c = 1, size(step%changes)
                call resolve_change(state, model, raw%changes(c), step%changes(c), error)
                if (allocated(error)) return
             end do
-            if (step%reset_displacements .or. size(step%changes) > 0) then
+            if (step%reset_displacements .or. size(step%changes) > 0 .or. &
+                size(step%pattern) == 0) then
                if (has_katona(model)) then
-                  call line_error(state, raw%at, 'phase changes and RESET_DISPLACEMENTS '// &
-                     'are not available with Katona contact joint sets (TYPE=KATONA) yet', error)
+                  call line_error(state, raw%at, 'phase changes, nil steps (a step without '// &
+                     '"pattern, target_factor" lines) and RESET_DISPLACEMENTS are not '// &
+                     'available with Katona contact joint sets (TYPE=KATONA) yet', error)
                   return
                end if
             end if
