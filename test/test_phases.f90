@@ -34,6 +34,7 @@ contains
                new_unittest('column_excavation_paths', test_column_paths), &
                new_unittest('add_then_remove', test_add_remove), &
                new_unittest('nil_step_horizontal_mc', test_nil_horizontal), &
+               new_unittest('nil_step_slope', test_nil_slope), &
                new_unittest('material_change_inside_yield', test_material_inside), &
                new_unittest('material_change_outside_yield', test_material_outside), &
                new_unittest('excavation_mc_equilibrium', test_mc_equilibrium), &
@@ -249,6 +250,41 @@ contains
          atol=1.0e-12_wp*GAMMA*H**2/oedometric())
    end subroutine test_nil_horizontal
 
+   !> A nil step under a sloping surface (rising 3 over 20, the K0 state taken from the
+   !> highest point, so too heavy where the ground is lower): the ground moves and ends in
+   !> equilibrium with the weight of the soil (reactions = weight to the solver tolerance,
+   !> as in excavation_mc_equilibrium), and the run reports it (completed).
+   subroutine test_nil_slope(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), allocatable :: fint(:, :), fext(:, :)
+      real(wp) :: w, ry, tol
+      integer :: code
+      character(len=*), parameter :: deck = OUT//'slope.inp'
+      call make_directories(OUT)
+      call write_pit(deck, 3.0_wp, '*STEP, NAME=nil, INCREMENTS=5')
+      code = run_deck(deck, OUT//'slope.h5', .true., model, problem)
+      call check(error, code == 0, 'nil step under a slope completes (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check(error, maxval(abs(problem%state%u)) > 1.0e-6_wp*18.0_wp*9.0_wp**2/3.0e4_wp, &
+         'the ground moves')
+      if (allocated(error)) return
+      allocate (fint, mold=problem%state%u)
+      call internal_forces(model, problem%system%rules, problem%state%u, problem%state, fint, &
+         error)
+      if (allocated(error)) return
+      call problem%state%rollback()
+      fext = problem%system%initial_force
+      w = -sum(fext(2, :))
+      ry = sum(pack(fint(2, :) - fext(2, :), problem%system%dofs%eq(2, :) == 0))
+      tol = sqrt(real(problem%system%dofs%neq, wp))*1.0e-8_wp*max(w, norm2(fint - fext))
+      call check_close(error, ry, w, 0.0_wp, 'vertical reactions = weight', atol=tol)
+      if (allocated(error)) return
+      ! the weight of the sloping block: 18 (20 x 9 + 20 x 3 / 2)
+      call check_close(error, w, 18.0_wp*(180.0_wp + 30.0_wp), 1.0e-12_wp, 'weight')
+   end subroutine test_nil_slope
+
    !> An elastic K0 phase, then the material changed to Mohr–Coulomb (phi = 30) with the K0
    !> state inside its surface: nothing moves (1e-12 of gamma H^2 / M).
    subroutine test_material_inside(error)
@@ -358,15 +394,23 @@ contains
 
    !> A 2-D Mohr–Coulomb block 20 x 9 (8 x 6 Q4) under K0, sides on rollers, a pit of 3
    !> columns dug in two phases of 4 increments (pit1 the top row, pit2 the one below).
-   subroutine write_pit(deck)
+   subroutine write_pit(deck, slope, steps)
       character(len=*), intent(in) :: deck
+      !> Rise of the top surface from x = 0 to x = 20 (the nodes above the base follow in
+      !> proportion) and the steps, replacing the two excavation phases.
+      real(wp), intent(in), optional :: slope
+      character(len=*), intent(in), optional :: steps
       integer :: u, i, j, nx, ny, el, s
+      real(wp) :: rise
+      rise = 0.0_wp
+      if (present(slope)) rise = slope
       nx = 8; ny = 6
       open (newunit=u, file=deck, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'pit', '*NODES'
       do j = 0, ny
          do i = 0, nx
-            write (u, '(i0,", ",f8.3,", ",f8.3)') j*(nx + 1) + i + 1, 2.5_wp*i, 1.5_wp*j
+            write (u, '(i0,", ",f8.3,", ",f8.3)') j*(nx + 1) + i + 1, 2.5_wp*i, &
+               1.5_wp*j + rise*(real(i, wp)/nx)*(real(j, wp)/ny)
          end do
       end do
       ! the pit: columns 1-3 of the top two rows; pit1 the top row, pit2 the one below
@@ -399,10 +443,16 @@ contains
          '*SECTION, SET=soil, MATERIAL=sand', '*SECTION, SET=pit1, MATERIAL=sand', &
          '*SECTION, SET=pit2, MATERIAL=sand', '*NSET, NAME=base, GENERATE', '1, 9, 1', &
          '*NSET, NAME=left, GENERATE', '1, 55, 9', '*NSET, NAME=right, GENERATE', '9, 63, 9', &
-         '*BOUNDARY', 'base, XY', 'left, X', 'right, X', '*INITIAL_STRESS, TYPE=GEOSTATIC', &
-         'ALL, 9.0, 0.5', '*SOLVER, TOLERANCE=1e-8', &
-         '*STEP, NAME=dig1, INCREMENTS=4', '*DEACTIVATE', 'pit1', &
-         '*STEP, NAME=dig2, INCREMENTS=4', '*DEACTIVATE', 'pit2'
+         '*BOUNDARY', 'base, XY', 'left, X', 'right, X', '*SOLVER, TOLERANCE=1e-8', &
+         '*INITIAL_STRESS, TYPE=GEOSTATIC'
+      if (present(steps)) then
+         write (u, '(a,f8.3,a)') 'ALL, ', 9.0_wp + rise, ', 0.5'
+         write (u, '(a)') steps
+      else
+         write (u, '(a)') 'ALL, 9.0, 0.5', &
+            '*STEP, NAME=dig1, INCREMENTS=4', '*DEACTIVATE', 'pit1', &
+            '*STEP, NAME=dig2, INCREMENTS=4', '*DEACTIVATE', 'pit2'
+      end if
       close (u)
    end subroutine write_pit
 
