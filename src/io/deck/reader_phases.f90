@@ -248,13 +248,19 @@ contains
    !> joint holds are errors.
    subroutine check_phases(state, model, error)
       type(deck_state_t), intent(in) :: state
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: eact(:), jact(:), dropped(:), held(:)
+      integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
       logical :: on
       call initial_activity(model, eact, jact)
+      emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
+      allocate (jlaw(size(jact)))
+      do c = 1, size(jact)
+         jlaw(c) = model%joint_sets(c)%law_index
+      end do
       npat = 0
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (factors(npat), source=0.0_wp)
@@ -278,6 +284,20 @@ contains
                            ch%set_name//"' is not active in step '"//step%name//"'", error)
                         return
                      end if
+                  end if
+               end associate
+               ! (--strict) a change to what the set already has changes nothing
+               associate (ch => step%changes(c))
+                  if (ch%kind == CHANGE_MATERIAL) then
+                     if (emat(ch%set) == ch%new) call model%warnings%add("element set '"// &
+                        ch%set_name//"' already has material '"//ch%new_name//"': the "// &
+                        '*CHANGE_MATERIAL changes nothing', ch%file, ch%line)
+                     emat(ch%set) = ch%new
+                  else if (ch%kind == CHANGE_LAW) then
+                     if (jlaw(ch%set) == ch%new) call model%warnings%add("joint set '"// &
+                        ch%set_name//"' already has law '"//ch%new_name//"': the "// &
+                        '*CHANGE_LAW changes nothing', ch%file, ch%line)
+                     jlaw(ch%set) = ch%new
                   end if
                end associate
                ! each change applies before the next is checked (a set named twice)
