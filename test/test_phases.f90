@@ -39,6 +39,7 @@ contains
                new_unittest('material_change_outside_yield', test_material_outside), &
                new_unittest('excavation_mc_equilibrium', test_mc_equilibrium), &
                new_unittest('restart_in_phase_two', test_restart), &
+               new_unittest('change_law', test_change_law), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_phases
 
@@ -490,6 +491,76 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_restart
+
+   !> *CHANGE_LAW: the S2 pile installed wished in place (input/examples/pile_wished_in_place.inp)
+   !> with its shaft joints changed to another law in the installation phase, then loaded,
+   !> ends as the same deck whose shaft has that law from the start (the law's history restarts
+   !> from the joint stresses, as at activation): equal to 1e-12 of the head settlement.
+   subroutine test_change_law(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: changed, direct
+      character(len=:), allocatable :: head, body
+      character(len=*), parameter :: law = '*INTERFACE_LAW, NAME=rough, TYPE=GOODMAN'// &
+         new_line('a')//'KN = 2e+07, KT = 40000, PHI = 35, C = 0'
+      character(len=*), parameter :: steps = '*STEP, NAME=load, INCREMENTS=10'// &
+         new_line('a')//'head, 1'//new_line('a')//'*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=50, '// &
+         'MAX_CUTS=6'
+      integer :: code, i
+      real(wp) :: umax
+      call make_directories(OUT)
+      call read_text('input/examples/pile_wished_in_place.inp', head)
+      i = index(head, new_line('a')//'*STEP')
+      call check(error, i > 0, 'the example deck has steps')
+      if (allocated(error)) return
+      body = head(1:i)
+      call write_text(OUT//'law_change.inp', body//law//new_line('a')// &
+         '*STEP, NAME=install'//new_line('a')//'*ACTIVATE, STRESS=WISHED_IN_PLACE'// &
+         new_line('a')//'pile'//new_line('a')//'*ACTIVATE'//new_line('a')// &
+         'shaft, tip, below'//new_line('a')//'*CHANGE_LAW'//new_line('a')//'shaft, rough'// &
+         new_line('a')//steps)
+      i = index(body, 'SET=shaft, LAW=iface')
+      call check(error, i > 0, 'the example deck has the shaft joints')
+      if (allocated(error)) return
+      body = body(1:i - 1)//'SET=shaft, LAW=rough'//body(i + len('SET=shaft, LAW=iface'):)
+      call write_text(OUT//'law_direct.inp', body//law//new_line('a')// &
+         '*STEP, NAME=install'//new_line('a')//'*ACTIVATE, STRESS=WISHED_IN_PLACE'// &
+         new_line('a')//'pile'//new_line('a')//'*ACTIVATE'//new_line('a')// &
+         'shaft, tip, below'//new_line('a')//steps)
+      code = run_deck(OUT//'law_change.inp', OUT//'law_change.h5', .true., model, changed)
+      call check(error, code == 0, 'law change runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check(error, changed%state%joints%sets(1)%law == 2, 'the shaft has the new law')
+      if (allocated(error)) return
+      code = run_deck(OUT//'law_direct.inp', OUT//'law_direct.h5', .true., model, direct)
+      call check(error, code == 0, 'the same law from the start runs')
+      if (allocated(error)) return
+      umax = maxval(abs(direct%state%u))
+      call check(error, umax > 0.0_wp, 'the pile moves under its load')
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(changed%state%u - direct%state%u)), 0.0_wp, 0.0_wp, &
+         'law changed at installation = law from the start', atol=1.0e-12_wp*umax)
+   end subroutine test_change_law
+
+   subroutine read_text(path, text)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: text
+      integer :: u, n
+      open (newunit=u, file=path, access='stream', form='unformatted', status='old', &
+         action='read')
+      inquire (unit=u, size=n)
+      allocate (character(len=n) :: text)
+      read (u) text
+      close (u)
+   end subroutine read_text
+
+   subroutine write_text(path, text)
+      character(len=*), intent(in) :: path, text
+      integer :: u
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') text
+      close (u)
+   end subroutine write_text
 
    !> Bad phase decks: exit 2, file:line and keyword in the message, no results file.
    subroutine test_bad_decks(error)
