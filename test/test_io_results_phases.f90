@@ -5,6 +5,7 @@
 !> the changes (a list of strings) and plays the XDMF back.
 module test_io_results_phases
    use pecplas_base_error, only: error_t
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_STOPPED
    use pecplas_testing, only: unittest_t, new_unittest, check
    use pecplas_model_type, only: model_t
    use pecplas_io_results_file, only: results_file_t
@@ -59,7 +60,7 @@ contains
       if (allocated(error)) return
       call rf%write_increment(in_step(4, 3), error)
       if (allocated(error)) return
-      call rf%finish('completed', '', error)
+      call rf%finish(RUN_COMPLETED, '', error)
       if (allocated(error)) return
 
       call rd%open(OUT_DIR//'/io_results_phases.h5', error)
@@ -116,7 +117,7 @@ contains
       call write_phase(rf, 2, 'nil', [character(len=1) ::], [.true., .true.], [logical ::], &
          error)
       if (allocated(error)) return
-      call rf%finish('stopped', 'stopped in phase 2', error)
+      call rf%finish(RUN_STOPPED, 'stopped in phase 2', error)
       if (allocated(error)) return
       call rd%open(OUT_DIR//'/io_results_phase_empty.h5', error)
       if (allocated(error)) return
