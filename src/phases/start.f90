@@ -27,13 +27,12 @@ module pecplas_phases_start
    use pecplas_model_phase_plan, only: step_activity, attached_nodes
    use pecplas_problem_type, only: problem_t, set_orphans
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
-      PROCEDURE_NAMES
+      PROCEDURE_NAMES, HOLD_NONE, HOLD_WEIGHT
    use pecplas_fe_state, only: set_state_t
    use pecplas_fe_assembly, only: internal_forces, set_material
    use pecplas_fe_loads, only: pattern_vectors, add_body_force
    use pecplas_fe_initial, only: initial_set_stress, initial_joint_set_stress, mesh_index_t
    use pecplas_fe_joint_initial, only: set_joint_stress
-   use pecplas_fe_joint_assembly, only: set_law
    use pecplas_massif_kinematics, only: MAX_NODES, massif_gauss_derivs
    use pecplas_massif_point_kernels, only: point_strain
    use pecplas_massif_materials_type, only: NCOMP
@@ -149,11 +148,8 @@ contains
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
             problem%system%pattern_disp, error, eactive)
          if (allocated(error)) return
-         problem%system%initial_force = 0.0_wp
-         do p = 1, size(eactive)
-            if (eactive(p)) problem%system%initial_force = problem%system%initial_force + &
-               problem%phase%hold(:, :, p)
-         end do
+         call held_load(model, problem, eactive, error)
+         if (allocated(error)) return
          ! the out-of-balance of the changes, carried along the step
          allocate (fint, mold=problem%system%initial_force)
          call internal_forces(model, problem%system%rules, st%u, st, fint, error)
@@ -190,14 +186,16 @@ contains
       end do
    end subroutine replay_phases
 
-   !> Before the first step: the load each set holds, and how the initial state came about.
+   !> Before the first step: what each set holds, and how the initial state came about.
    subroutine first_phase(model, problem, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
-      integer :: s, i, kind, nset
+      real(wp), allocatable :: f(:, :)
+      integer :: s, i, kind, nset, nh
       nset = size(model%mesh%esets)
-      allocate (problem%phase%hold(2, model%mesh%nnode(), nset), source=0.0_wp)
+      allocate (problem%phase%hold(nset), source=HOLD_NONE)
+      allocate (problem%phase%homogeneous(2, model%mesh%nnode(), 0))
       problem%phase%procedure = PROCEDURE_NONE
       if (allocated(model%patterns)) then
          do i = 1, size(model%patterns)
@@ -207,6 +205,7 @@ contains
       if (.not. allocated(model%initial_stresses)) return
       if (size(model%initial_stresses) == 0) return
       problem%phase%procedure = PROCEDURE_K0
+      nh = 0
       do s = 1, nset
          ! the last entry that covers the set says how it was made
          kind = 0
@@ -219,16 +218,41 @@ contains
          select case (kind)
          case (1)
             ! geostatic: the set's weight (y up)
-            call add_body_force(model, problem%system%rules, s, [0.0_wp, -1.0_wp], .true., &
-               problem%phase%hold(:, :, s), error)
-            if (allocated(error)) return
+            problem%phase%hold(s) = HOLD_WEIGHT
          case (2)
             ! homogeneous: the nodal forces of its own stress
-            call own_forces(model, problem, s, problem%phase%hold(:, :, s), error)
+            allocate (f(2, model%mesh%nnode()))
+            call own_forces(model, problem, s, f, error)
             if (allocated(error)) return
+            nh = nh + 1
+            problem%phase%homogeneous = reshape([problem%phase%homogeneous, f], &
+               [2, model%mesh%nnode(), nh])
+            problem%phase%hold(s) = nh
+            deallocate (f)
          end select
       end do
    end subroutine first_phase
+
+   !> The held load (problem%system%initial_force): what the active sets hold.
+   subroutine held_load(model, problem, eactive, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: eactive(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: s
+      problem%system%initial_force = 0.0_wp
+      do s = 1, size(eactive)
+         if (.not. eactive(s)) cycle
+         if (problem%phase%hold(s) == HOLD_WEIGHT) then
+            call add_body_force(model, problem%system%rules, s, [0.0_wp, -1.0_wp], .true., &
+               problem%system%initial_force, error)
+            if (allocated(error)) return
+         else if (problem%phase%hold(s) > 0) then
+            problem%system%initial_force = problem%system%initial_force + &
+               problem%phase%homogeneous(:, :, problem%phase%hold(s))
+         end if
+      end do
+   end subroutine held_load
 
    !> Nodal forces of the converged stresses of set s alone.
    subroutine own_forces(model, problem, s, f, error)

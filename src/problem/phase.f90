@@ -6,7 +6,7 @@ module pecplas_problem_phase
    implicit none (type, external)
    private
 
-   public :: phase_state_t, PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, PROCEDURE_NAMES
+   public :: phase_state_t, HOLD_NONE, HOLD_WEIGHT, PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, PROCEDURE_NAMES
 
    !> How the initial stresses of a phased run come about: none (no *INITIAL_STRESS and no
    !> gravity pattern), the K0 procedure (*INITIAL_STRESS: the stresses are the state, the
@@ -16,15 +16,20 @@ module pecplas_problem_phase
    character(len=*), parameter :: PROCEDURE_NAMES(0:2) = [character(len=14) :: 'none', &
       'K0 procedure', 'gravity loading']
 
+   !> phase_state_t%hold values (a positive value indexes phase_state_t%homogeneous).
+   integer, parameter :: HOLD_NONE = 0, HOLD_WEIGHT = -1
+
    type :: phase_state_t
       !> The deck is phased (pecplas_model_phase_plan's is_phased).
       logical :: phased = .false.
       !> Step whose phase changes have been applied (0: none yet).
       integer :: index = 0
       integer :: procedure = PROCEDURE_NONE
-      !> Load held by each element set while it is active (2, nnode, nset): its weight under
-      !> a GEOSTATIC initial stress, the nodal forces of a HOMOGENEOUS one, else zero.
-      real(wp), allocatable :: hold(:, :, :)
+      !> What each element set holds while it is active (nset): HOLD_NONE, HOLD_WEIGHT (its
+      !> weight: a GEOSTATIC initial stress) or k > 0, the nodal forces of its HOMOGENEOUS
+      !> initial stress, kept in homogeneous(:, :, k) (2, nnode, number of such sets).
+      integer, allocatable :: hold(:)
+      real(wp), allocatable :: homogeneous(:, :, :)
       !> The out-of-balance of the phase start (2, nnode), on the free equations: added to
       !> the external load at the start of the step and taken to zero along the step's load
       !> path (pecplas_solve_residual's load_vectors).
