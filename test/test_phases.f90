@@ -40,6 +40,8 @@ contains
                new_unittest('excavation_mc_equilibrium', test_mc_equilibrium), &
                new_unittest('restart_in_phase_two', test_restart), &
                new_unittest('change_law', test_change_law), &
+               new_unittest('increment_methods', test_methods), &
+               new_unittest('arc_length_phase', test_arc_length), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_phases
 
@@ -395,8 +397,10 @@ contains
 
    !> A 2-D Mohr–Coulomb block 20 x 9 (8 x 6 Q4) under K0, sides on rollers, a pit of 3
    !> columns dug in two phases of 4 increments (pit1 the top row, pit2 the one below).
-   subroutine write_pit(deck, slope, steps)
+   subroutine write_pit(deck, slope, steps, method)
       character(len=*), intent(in) :: deck
+      !> *SOLVER METHOD= (default: the deck's default, modified Newton).
+      character(len=*), intent(in), optional :: method
       !> Rise of the top surface from x = 0 to x = 20 (the nodes above the base follow in
       !> proportion) and the steps, replacing the two excavation phases.
       real(wp), intent(in), optional :: slope
@@ -444,8 +448,13 @@ contains
          '*SECTION, SET=soil, MATERIAL=sand', '*SECTION, SET=pit1, MATERIAL=sand', &
          '*SECTION, SET=pit2, MATERIAL=sand', '*NSET, NAME=base, GENERATE', '1, 9, 1', &
          '*NSET, NAME=left, GENERATE', '1, 55, 9', '*NSET, NAME=right, GENERATE', '9, 63, 9', &
-         '*BOUNDARY', 'base, XY', 'left, X', 'right, X', '*SOLVER, TOLERANCE=1e-8', &
-         '*INITIAL_STRESS, TYPE=GEOSTATIC'
+         '*BOUNDARY', 'base, XY', 'left, X', 'right, X'
+      if (present(method)) then
+         write (u, '(a)') '*SOLVER, TOLERANCE=1e-8, METHOD='//method
+      else
+         write (u, '(a)') '*SOLVER, TOLERANCE=1e-8'
+      end if
+      write (u, '(a)') '*INITIAL_STRESS, TYPE=GEOSTATIC'
       if (present(steps)) then
          write (u, '(a,f8.3,a)') 'ALL, ', 9.0_wp + rise, ', 0.5'
          write (u, '(a)') steps
@@ -561,6 +570,65 @@ contains
       write (u, '(a)') text
       close (u)
    end subroutine write_text
+
+   !> The pit dug with each increment method (quasi-Newton, full Newton) ends where modified
+   !> Newton does: the carried out-of-balance is the same load for every method. The
+   !> converged states differ by the residual the tolerance admits (1e-8 of the load): 1e-5 of
+   !> the largest displacement is a safe bound for a plastic path of 8 increments.
+   subroutine test_methods(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: ref, other
+      character(len=*), parameter :: methods(2) = [character(len=12) :: 'QUASI_NEWTON', 'NEWTON']
+      integer :: code, k
+      real(wp) :: umax
+      call make_directories(OUT)
+      call write_pit(OUT//'pit_modified.inp')
+      code = run_deck(OUT//'pit_modified.inp', OUT//'pit_modified.h5', .true., model, ref)
+      call check(error, code == 0, 'pit (modified Newton) runs')
+      if (allocated(error)) return
+      umax = maxval(abs(ref%state%u))
+      do k = 1, size(methods)
+         call write_pit(OUT//'pit_'//trim(methods(k))//'.inp', method=trim(methods(k)))
+         code = run_deck(OUT//'pit_'//trim(methods(k))//'.inp', OUT//'pit_'//trim(methods(k))// &
+            '.h5', .true., model, other)
+         call check(error, code == 0, 'pit ('//trim(methods(k))//') runs')
+         if (allocated(error)) return
+         call check_close(error, maxval(abs(other%state%u - ref%state%u)), 0.0_wp, 0.0_wp, &
+            trim(methods(k))//' = modified Newton', atol=1.0e-5_wp*umax)
+         if (allocated(error)) return
+      end do
+   end subroutine test_methods
+
+   !> An excavation step under arc-length control (with a small force pattern, which such a
+   !> step needs) ends, for the elastic column, where the same step under load control does
+   !> (linear: the end state does not depend on the path), to 1e-9 of the heave.
+   subroutine test_arc_length(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: ref, arc
+      character(len=*), parameter :: load = '*NSET, NAME=mid'//new_line('a')//'41, 42'// &
+         new_line('a')//'*LOAD, NAME=p, TYPE=FORCE'//new_line('a')//'mid, Y, -1'//new_line('a')
+      character(len=*), parameter :: dig = new_line('a')//'p, 1'//new_line('a')//'*DEACTIVATE'// &
+         new_line('a')//'t1, t2, t3, t4'
+      integer :: code
+      call make_directories(OUT)
+      call write_column(OUT//'arc_load.inp', 40, 4, [4], 1, ELASTIC, steps=load// &
+         '*STEP, NAME=dig, INCREMENTS=4'//dig)
+      code = run_deck(OUT//'arc_load.inp', OUT//'arc_load.h5', .true., model, ref)
+      call check(error, code == 0, 'load control runs')
+      if (allocated(error)) return
+      call write_column(OUT//'arc_arc.inp', 40, 4, [4], 1, ELASTIC, steps=load// &
+         '*STEP, NAME=dig, INCREMENTS=4, CONTROL=ARC_LENGTH'//dig)
+      code = run_deck(OUT//'arc_arc.inp', OUT//'arc_arc.h5', .true., model, arc)
+      call check(error, code == 0, 'arc-length control runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check(error, arc%stats%arc_increments > 0, 'the step went under arc-length control')
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(arc%state%u(:, 1:74) - ref%state%u(:, 1:74))), 0.0_wp, &
+         0.0_wp, 'arc-length = load control at the end of the phase', &
+         atol=1.0e-9_wp*maxval(abs(ref%state%u)))
+   end subroutine test_arc_length
 
    !> Bad phase decks: exit 2, file:line and keyword in the message, no results file.
    subroutine test_bad_decks(error)
