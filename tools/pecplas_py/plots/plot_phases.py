@@ -7,6 +7,7 @@ same displacement magnification and colour scale, so that the panels compare.
 
     python3 -m pecplas_py.plots.plot_phases output/excavation_cantilever.h5 [-o out.png]
         [--component yy] [--scale S] [--columns N] [--displacements-from-phase K]
+        [--window X0 X1 Y0 Y1]
 
 Components: xx, yy, zz, xy (tension positive). A run without /phases (one step or several,
 no model change) gives one panel per step. `--displacements-from-phase K` draws the
@@ -79,8 +80,9 @@ def panels(r, component="yy", from_phase=None):
     return out
 
 
-def draw(r, out, component="yy", scale=None, columns=None, from_phase=None):
-    """Writes the figure; returns the number of panels."""
+def draw(r, out, component="yy", scale=None, columns=None, from_phase=None, window=None):
+    """Writes the figure; returns the number of panels. `window` (x0, x1, y0, y1): the part
+    of the model drawn (default: all of it)."""
     data = panels(r, component, from_phase)
     if not data:
         raise SystemExit(f"{r.path}: no phase with a written increment")
@@ -104,8 +106,12 @@ def draw(r, out, component="yy", scale=None, columns=None, from_phase=None):
         if d["joints"]:
             ax.add_collection(LineCollection([xy[j] for j in d["joints"]], colors="tab:red",
                                              linewidths=1.2))
-        ax.set_xlim(x[:, 0].min() - 0.02 * size, x[:, 0].max() + 0.02 * size)
-        ax.set_ylim(x[:, 1].min() - 0.02 * size, x[:, 1].max() + 0.02 * size)
+        if window:
+            ax.set_xlim(window[0], window[1])
+            ax.set_ylim(window[2], window[3])
+        else:
+            ax.set_xlim(x[:, 0].min() - 0.02 * size, x[:, 0].max() + 0.02 * size)
+            ax.set_ylim(x[:, 1].min() - 0.02 * size, x[:, 1].max() + 0.02 * size)
         ax.set_aspect("equal")
         p = d["phase"]
         head = f"phase {p['index']}" + (f" {p['name']}" if p["name"] else "")
@@ -135,12 +141,14 @@ def main(argv=None):
     ap.add_argument("--columns", type=int, help="panels per row (default: up to 3)")
     ap.add_argument("--displacements-from-phase", type=int, dest="from_phase",
                     help="draw the displacements since the end of this phase")
+    ap.add_argument("--window", type=float, nargs=4, metavar=("X0", "X1", "Y0", "Y1"),
+                    help="draw only this part of the model")
     a = ap.parse_args(argv)
     out = Path(a.output) if a.output else Path(a.h5).with_name(Path(a.h5).stem + "_phases.png")
     with Results(a.h5) as r:
         if not r.keys:
             sys.exit(f"{a.h5}: no increment with fields")
-        n = draw(r, out, a.component, a.scale, a.columns, a.from_phase)
+        n = draw(r, out, a.component, a.scale, a.columns, a.from_phase, a.window)
     print(f"plot_phases: {out} ({n} phases)")
 
 

@@ -9,9 +9,11 @@ phase took.
                                                    [--plot PNG]
 
 With --run (or no results file) the deck is run first into output/excavation_cantilever.h5,
-and each phase is timed by the arrival of its progress lines (wall-clock seconds). The CPU
-seconds of each phase come from /history/cpu_time (cumulative CPU time of the run) in
-every case.
+and each phase is timed by the arrival of its output lines (wall-clock seconds from the line
+that lists its changes to the progress line of its last increment: the phase's own work,
+without reading the deck and setting up). The CPU seconds of each phase come from
+/history/cpu_time (cumulative CPU time of the run, so the first phase also counts the set-up)
+in every case.
 
 Bending moment of the strip: at each level of Gauss points of the wall (Q8, 3x3 Gauss), the
 moment of the vertical stress about the strip's mid-line,
@@ -97,24 +99,31 @@ def head_node(r):
 
 
 def run_timed(deck, out, bin_dir=None):
-    """Runs the deck; returns {phase (step): wall seconds} from the progress lines."""
+    """Runs the deck; returns {phase (step): wall seconds} from the arrival of its output
+    lines: a phase starts with its line ` phase k (name):` (the changes it makes), or else
+    when the step before ends (the first one when the run's banner has been printed), and
+    ends with the progress line of its last increment."""
     env = dict(os.environ, GFORTRAN_UNBUFFERED_PRECONNECTED="y")
     cmd = [*exe_cmd("pecplas", bin_dir), str(deck), "-o", str(out)]
     out.parent.mkdir(parents=True, exist_ok=True)
-    t0 = time.monotonic()
-    ends = {}
+    starts, ends, banner = {}, {}, None
     with subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True, env=env) as proc:
         for line in proc.stdout:
+            now = time.monotonic()
             words = line.split()
             if len(words) > 1 and words[0] == "step" and words[1].isdigit():
-                ends[int(words[1])] = time.monotonic()
+                ends[int(words[1])] = now
+            elif len(words) > 1 and words[0] == "phase" and words[1].isdigit():
+                starts[int(words[1])] = now
+            elif words[:1] == ["nodes"] and banner is None:
+                banner = now
         if proc.wait() != 0:
             raise SystemExit(f"pecplas {deck} failed (exit {proc.returncode})")
-    walls = {}
-    start = t0
+    walls, before = {}, banner
     for step in sorted(ends):
-        walls[step] = ends[step] - start
-        start = ends[step]
+        start = starts.get(step, before)
+        walls[step] = ends[step] - start if start is not None else float("nan")
+        before = ends[step]
     return walls
 
 
