@@ -22,6 +22,7 @@ module pecplas_phases_start
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
       CHANGE_LAW, TARGET_ELEMENTS, START_WISHED
    use pecplas_model_phase_plan, only: step_activity, attached_nodes
@@ -199,7 +200,7 @@ contains
       problem%phase%procedure = PROCEDURE_NONE
       if (allocated(model%patterns)) then
          do i = 1, size(model%patterns)
-            if (model%patterns(i)%kind == 'GRAVITY') problem%phase%procedure = PROCEDURE_GRAVITY
+            if (model%patterns(i)%kind == LOAD_GRAVITY) problem%phase%procedure = PROCEDURE_GRAVITY
          end do
       end if
       if (.not. allocated(model%initial_stresses)) return

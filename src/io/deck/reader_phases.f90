@@ -12,6 +12,7 @@ module pecplas_io_deck_reader_phases
       add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_change_t, line_error
    use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
       START_WISHED
@@ -339,14 +340,14 @@ contains
       node = 0
       associate (pat => model%patterns(p))
          select case (pat%kind)
-         case ('FORCE', 'DISPLACEMENT')
+         case (LOAD_FORCE, LOAD_DISPLACEMENT)
             do k = 1, size(pat%node)
                if (pat%value(k) /= 0.0_wp .and. .not. held(pat%node(k))) then
                   node = pat%node(k)
                   exit
                end if
             end do
-         case ('PRESSURE')
+         case (LOAD_PRESSURE)
             do k = 1, size(pat%pressure)
                if (pat%pressure(k) == 0.0_wp) cycle
                if (.not. all(held(pack(pat%edge(:, k), pat%edge(:, k) > 0)))) then
