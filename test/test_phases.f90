@@ -42,6 +42,7 @@ contains
                new_unittest('change_law', test_change_law), &
                new_unittest('increment_methods', test_methods), &
                new_unittest('arc_length_phase', test_arc_length), &
+               new_unittest('katona_off_and_on', test_katona), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_phases
 
@@ -629,6 +630,74 @@ contains
          0.0_wp, 'arc-length = load control at the end of the phase', &
          atol=1.0e-9_wp*maxval(abs(ref%state%u)))
    end subroutine test_arc_length
+
+   !> A Katona contact set between a K0 column (y 0..7.5) and a block on it (7.5..10):
+   !> removing the block and its doublets heaves the column by the oedometric gamma h y / M;
+   !> putting them back (stress-free block, doublets in stick from where they are) loads it
+   !> again: the column returns to its state before, displacements and stresses (elastic,
+   !> 1e-10 of the heave and of gamma H).
+   subroutine test_katona(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: before, removed, back
+      character(len=*), parameter :: deck = OUT//'katona.inp'
+      real(wp) :: heave, worst
+      integer :: u, i, code, n
+      call make_directories(OUT)
+      open (newunit=u, file=deck, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'K0 column with a block on Katona contact', '*NODES'
+      do i = 0, 40
+         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*0.25_wp
+         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*0.25_wp
+      end do
+      write (u, '(a)') '1001, 0.0, 7.5', '1002, 1.0, 7.5', '*ELEMENTS, TYPE=Q4, SET=rest'
+      do i = 1, 30
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=block', '31, 1001, 1002, 64, 63'
+      do i = 32, 40
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
+         '*SECTION, SET=block, MATERIAL=soil', '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', &
+         'PHI = 30', '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
+         '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 82', &
+         '*NSET, NAME=pair', '1001, 1002', '*BOUNDARY', 'base, XY', 'sides, X', 'pair, X', &
+         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5', &
+         '*STEP, NAME=nil', &
+         '*STEP, NAME=remove, INCREMENTS=2', '*DEACTIVATE', 'block, iface', &
+         '*STEP, NAME=back, INCREMENTS=3', '*ACTIVATE', 'block, iface'
+      close (u)
+      code = run_deck(deck, OUT//'katona_1.h5', .true., model, before, stop_after=1)
+      call check(error, code == 4, 'nil step (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'katona_2.h5', .true., model, removed, stop_after=3)
+      call check(error, code == 4, 'removal (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      heave = GAMMA*2.5_wp*7.5_wp/oedometric()
+      worst = 0.0_wp
+      do n = 1, 62
+         worst = max(worst, abs(removed%state%u(2, n) - before%state%u(2, n) - &
+            GAMMA*2.5_wp*model%mesh%x(2, n)/oedometric()))
+      end do
+      call check_close(error, worst, 0.0_wp, 0.0_wp, 'block and doublets removed: heave gamma h '// &
+         'y / M', atol=1.0e-10_wp*heave)
+      if (allocated(error)) return
+      call check(error, all(removed%katona%off), 'the doublets are off')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'katona_3.h5', .true., model, back)
+      call check(error, code == 0, 'block and doublets back (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(back%state%u(:, 1:62) - before%state%u(:, 1:62))), &
+         0.0_wp, 0.0_wp, 'the column back where it was', atol=1.0e-10_wp*heave)
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(back%state%sets(1)%stress - before%state%sets(1)%stress)), &
+         0.0_wp, 0.0_wp, 'the column stresses back to those before', atol=1.0e-10_wp*GAMMA*H)
+      if (allocated(error)) return
+      ! the doublets carry the block's weight: N = gamma 2.5 x 1 in all
+      call check_close(error, sum(back%katona%f(1, :)), GAMMA*2.5_wp, 1.0e-10_wp, &
+         'the doublets carry the block''s weight')
+   end subroutine test_katona
 
    !> Bad phase decks: exit 2, file:line and keyword in the message, no results file.
    subroutine test_bad_decks(error)

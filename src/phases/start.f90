@@ -39,6 +39,8 @@ module pecplas_phases_start
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t, joint_strain
    use pecplas_joints_points, only: joint_set_element, joint_element_points
+   use pecplas_joints_laws_type, only: MODE_STICK, MODE_OPEN
+   use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
    implicit none (type, external)
    private
 
@@ -86,6 +88,7 @@ contains
                      call add_line(lines, 'deactivate element set '//ch%set_name)
                   else
                      st%joints%sets(ch%set)%active = .false.
+                     call katona_off(problem, ch%set)
                      call add_line(lines, 'deactivate joint set '//ch%set_name)
                   end if
                case (CHANGE_ACTIVATE)
@@ -102,10 +105,17 @@ contains
                   else
                      if (.not. indexed) call index%build(model)
                      indexed = .true.
-                     call activate_joints(model, problem, index, ch%set, error)
-                     if (allocated(error)) return
-                     call add_line(lines, 'activate joint set '//ch%set_name// &
-                        ' (from the initial stresses of the soil beside it)')
+                     if (model%joint_sets(ch%set)%is_katona()) then
+                        call katona_on(problem, ch%set)
+                        call add_line(lines, 'activate Katona contact set '//ch%set_name// &
+                           ' (no contact force, in stick, its gaps and slips measured from '// &
+                           'the current displacements)')
+                     else
+                        call activate_joints(model, problem, index, ch%set, error)
+                        if (allocated(error)) return
+                        call add_line(lines, 'activate joint set '//ch%set_name// &
+                           ' (from the initial stresses of the soil beside it)')
+                     end if
                   end if
                case (CHANGE_MATERIAL)
                   call swap_material(model, st%sets(ch%set), ch%new)
@@ -139,6 +149,7 @@ contains
          do j = 1, size(dropped)
             if (.not. dropped(j)) cycle
             st%joints%sets(j)%active = .false.
+            call katona_off(problem, j)
             call add_line(lines, 'deactivate joint set '//model%joint_sets(j)%name// &
                ' (a node of it lost its last active element)')
          end do
@@ -158,6 +169,9 @@ contains
          call st%rollback()
          if (refactorise) problem%linear%tangent_factorised = .false.
          problem%phase%carried = fint - problem%system%initial_force
+         ! the contact forces of Katona doublets act as internal forces
+         if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, &
+            problem%phase%carried)
          do p = 1, size(st%factors)
             problem%phase%carried = problem%phase%carried - &
                st%factors(p)*problem%system%pattern_force(:, :, p)
@@ -367,6 +381,48 @@ contains
          st%hist_trial = st%hist
       end associate
    end subroutine activate_joints
+
+   !> The Katona doublets of joint set js (if any) go open, without force, and stay so.
+   subroutine katona_off(problem, js)
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: js
+      associate (kt => problem%katona)
+         if (.not. kt%active) return
+         where (kt%set_of == js)
+            kt%off = .true.
+            kt%mode = MODE_OPEN
+            kt%sgn = 0
+         end where
+         where (spread(kt%set_of == js, 1, 2)) kt%f = 0.0_wp
+         call kt%begin_increment()
+      end associate
+   end subroutine katona_off
+
+   !> The Katona doublets of joint set js come back: in stick, no force, bond intact, their
+   !> gap and slip measured from the current relative displacements.
+   subroutine katona_on(problem, js)
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: js
+      real(wp), allocatable :: z(:, :)
+      associate (kt => problem%katona)
+         if (.not. kt%active) return
+         allocate (z(2, kt%nd))
+         call relative_displacements(kt, problem%state%u, z)
+         where (kt%set_of == js)
+            kt%off = .false.
+            kt%mode = MODE_STICK
+            kt%sgn = 0
+            kt%broken = .false.
+            kt%gap0 = z(1, :)
+            kt%anchor = z(2, :)
+         end where
+         where (spread(kt%set_of == js, 1, 2))
+            kt%f = 0.0_wp
+            kt%z = z
+         end where
+         call kt%begin_increment()
+      end associate
+   end subroutine katona_on
 
    !> Element set state st takes material m: stresses kept, history restarted (zero, of
    !> the new size), tangents stored when m has no constant tangent (its elastic one).

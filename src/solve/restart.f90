@@ -118,6 +118,8 @@ contains
             call data%add('katona_force', reshape(kt%f, [size(kt%f)]))
             call data%add('katona_z', reshape(kt%z, [size(kt%z)]))
             call data%add('katona_anchor', kt%anchor)
+            ! phases: a reactivated doublet measures its gap from its reactivation
+            if (problem%phase%phased) call data%add('katona_gap0', kt%gap0)
          end if
          ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
          if (p%exact .and. .not. partitioned(model)) then
@@ -299,6 +301,10 @@ contains
             kt%z = reshape(v, shape(kt%z))
             call data%get('katona_anchor', kt%nd, kt%anchor, error)
             if (allocated(error)) return
+            if (problem%phase%phased .and. data%has('katona_gap0')) then
+               call data%get('katona_gap0', kt%nd, kt%gap0, error)
+               if (allocated(error)) return
+            end if
             call kt%begin_increment()
          end if
          ! trial = converged everywhere, as after a commit; the points' tangents are the
@@ -421,8 +427,8 @@ contains
       integer :: s
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
-         'katona_anchor', 'operators', 'operator', 'tangent_operator', 'du_prev', 'arc', &
-         'arc_peak_factors', 'arc_why', 'phase', 'phase_carried']
+         'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
+         'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'phase', 'phase_carried']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s)]

@@ -134,14 +134,11 @@ contains
                call resolve_change(state, model, raw%changes(c), step%changes(c), error)
                if (allocated(error)) return
             end do
-            if (step%reset_displacements .or. size(step%changes) > 0 .or. &
-                size(step%pattern) == 0) then
-               if (has_katona(model)) then
-                  call line_error(state, raw%at, 'phase changes, nil steps (a step without '// &
-                     '"pattern, target_factor" lines) and RESET_DISPLACEMENTS are not '// &
-                     'available with Katona contact joint sets (TYPE=KATONA) yet', error)
-                  return
-               end if
+            if (step%reset_displacements .and. has_katona(model)) then
+               call line_error(state, raw%at, 'RESET_DISPLACEMENTS is not available with '// &
+                  'Katona contact joint sets (TYPE=KATONA) yet (their gaps are measured from '// &
+                  'the displacements)', error)
+               return
             end if
          end associate
       end do
