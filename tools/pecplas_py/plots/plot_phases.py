@@ -27,8 +27,12 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
 
 from pecplas_py.figures import save_figure
-from pecplas_py.plots.plot_results import COMPONENTS, OUTLINE
 from pecplas_py.results import Results, text
+
+COMPONENTS = {"xx": 0, "yy": 1, "zz": 2, "xy": 3}
+# corner nodes in boundary order; quadratic elements walk corner, mid, corner, ...
+OUTLINE = {"T3": [0, 1, 2], "Q4": [0, 1, 2, 3], "T6": [0, 3, 1, 4, 2, 5],
+           "Q8": [0, 4, 1, 5, 2, 6, 3, 7], "Q8R": [0, 4, 1, 5, 2, 6, 3, 7]}
 
 
 def panels(r, component="yy", from_phase=None):
