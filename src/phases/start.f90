@@ -299,7 +299,9 @@ contains
       if (allocated(error)) return
       ! on the free equations: at a support it is the support's reaction to the K0 state
       problem%phase%unbalanced = f - problem%system%initial_force
+      problem%phase%base_reaction = problem%phase%unbalanced
       where (problem%system%dofs%eq == 0) problem%phase%unbalanced = 0.0_wp
+      where (problem%system%dofs%eq > 0) problem%phase%base_reaction = 0.0_wp
       do j = 1, size(jkeep)
          if (.not. jkeep(j)) call katona_off(problem, j)
       end do
