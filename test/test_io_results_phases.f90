@@ -43,8 +43,8 @@ contains
       call rf%create(OUT_DIR//'/io_results_phases.h5', model, '0.1.0-test', sample_gauss(), &
          error)
       if (allocated(error)) return
-      call write_phase(rf, 1, 'geostatic', [character(len=1) ::], [.true., .true.], &
-         [logical ::], error)
+      call write_phase(rf, 1, 'geostatic', ['initial procedure: K0 procedure'], &
+         [.true., .true.], [logical ::], error)
       if (allocated(error)) return
       do k = 1, 2
          call rf%write_increment(in_step(k, 1), error)
@@ -64,6 +64,9 @@ contains
       if (allocated(error)) return
 
       call rd%open(OUT_DIR//'/io_results_phases.h5', error)
+      if (allocated(error)) return
+      call rd%attribute('/', 'initial_procedure', s, error); if (allocated(error)) return
+      call check(error, s == 'K0 procedure', 'root initial_procedure: '//s)
       if (allocated(error)) return
       call rd%attribute('/phases/2', 'name', s, error); if (allocated(error)) return
       call check(error, s == 'excavate', 'phase 2 name: '//s); if (allocated(error)) return

@@ -170,6 +170,8 @@ def test_phases_listed_and_played_by_the_xdmf():
         assert phases[2]["changes"] == ["ACTIVATE LINING, STRESS=ZERO",
                                         "CHANGE_MATERIAL SOIL, clay2"]
         assert [p["first_global_increment"] for p in phases] == [1, 3, 4]
+        assert phases[0]["changes"] == ["initial procedure: K0 procedure"]
+        assert r.attr("initial_procedure") == "K0 procedure"
         assert phases[1]["active_element_sets"] == ["SOIL"]
         assert r.active_sets("000003") == (["SOIL"], [])
         assert r.active_sets("000004") == (["LINING", "SOIL"], [])

@@ -7,6 +7,7 @@
 !>               joint_sets (the names of the sets, in the order of the masks)
 !>   datasets    active_element_sets (nset) and active_joint_sets (njset, only with joint
 !>               sets): 1 where the set is active during the phase, else 0.
+!> A change line "initial procedure: <how>" also sets the root attribute initial_procedure.
 !> A record is written with the phase's first increment (into both copies of the file, as the
 !> increment), so that its first increment is known; a phase the run ended in before any
 !> increment is written by `finish` with first_global_increment = -1.
@@ -75,7 +76,26 @@ contains
       if (.not. allocated(error) .and. size(rec%active_jsets) > 0) call h5_write(g, &
          'active_joint_sets', merge(1, 0, rec%active_jsets), error)
       call h5_close_group(g)
+      if (.not. allocated(error)) call write_procedure(file, rec, error)
    end subroutine write_phase_group
+
+   !> A change line "initial procedure: <how>" (the driver's first line of the first phase)
+   !> also goes into the root attribute `initial_procedure` (<how>: K0 procedure, gravity
+   !> loading, none).
+   subroutine write_procedure(file, rec, error)
+      integer(hid_t), intent(in) :: file
+      type(phase_record_t), intent(in) :: rec
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: KEY = 'initial procedure:'
+      character(len=:), allocatable :: lines(:)
+      integer :: i
+      lines = change_lines(rec)
+      do i = 1, size(lines)
+         if (index(lines(i), KEY) /= 1) cycle
+         call h5_attr(file, 'initial_procedure', trim(adjustl(lines(i)(len(KEY) + 1:))), error)
+         return
+      end do
+   end subroutine write_procedure
 
    !> The changes of `rec` as a list of lines.
    function change_lines(rec) result(lines)
