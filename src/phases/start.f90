@@ -162,6 +162,17 @@ contains
          if (allocated(error)) return
          call held_load(model, problem, eactive, error)
          if (allocated(error)) return
+         ! the K0 state's own out-of-balance: held until the first nil step
+         if (.not. problem%phase%released) then
+            if (size(step%pattern) == 0 .and. size(step%changes) == 0) then
+               problem%phase%released = .true.
+               if (any(problem%phase%unbalanced /= 0.0_wp)) call add_line(lines, &
+                  'release the out-of-balance of the initial (K0) state')
+            else
+               problem%system%initial_force = problem%system%initial_force + &
+                  problem%phase%unbalanced
+            end if
+         end if
          ! the out-of-balance of the changes, carried along the step
          allocate (fint, mold=problem%system%initial_force)
          call internal_forces(model, problem%system%rules, st%u, st, fint, error)
@@ -211,14 +222,21 @@ contains
       nset = size(model%mesh%esets)
       allocate (problem%phase%hold(nset), source=HOLD_NONE)
       allocate (problem%phase%homogeneous(2, model%mesh%nnode(), 0))
+      allocate (problem%phase%unbalanced(2, model%mesh%nnode()), source=0.0_wp)
       problem%phase%procedure = PROCEDURE_NONE
       if (allocated(model%patterns)) then
          do i = 1, size(model%patterns)
             if (model%patterns(i)%kind == LOAD_GRAVITY) problem%phase%procedure = PROCEDURE_GRAVITY
          end do
       end if
-      if (.not. allocated(model%initial_stresses)) return
-      if (size(model%initial_stresses) == 0) return
+      if (.not. allocated(model%initial_stresses)) then
+         call k0_unbalance(model, problem, error)
+         return
+      end if
+      if (size(model%initial_stresses) == 0) then
+         call k0_unbalance(model, problem, error)
+         return
+      end if
       problem%phase%procedure = PROCEDURE_K0
       nh = 0
       do s = 1, nset
@@ -246,7 +264,48 @@ contains
             deallocate (f)
          end select
       end do
+      call k0_unbalance(model, problem, error)
    end subroutine first_phase
+
+   !> The out-of-balance of the K0 state (phase_state_t%unbalanced): the internal and
+   !> contact forces of the initial state with every set and joint active, less what the
+   !> sets hold; then the Katona doublets of the joint sets not active at the start go off.
+   subroutine k0_unbalance(model, problem, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: ekeep(:), jkeep(:), all_on(:)
+      real(wp), allocatable :: f(:, :), u0(:, :)
+      integer :: j
+      ekeep = problem%state%sets%active
+      allocate (jkeep(0))
+      if (allocated(problem%state%joints%sets)) then
+         jkeep = problem%state%joints%sets%active
+         problem%state%joints%sets%active = .true.
+      end if
+      problem%state%sets%active = .true.
+      allocate (f, mold=problem%system%initial_force)
+      ! at the initial state: zero displacements (a restart replays this over its own)
+      allocate (u0, mold=problem%state%u)
+      u0 = 0.0_wp
+      call internal_forces(model, problem%system%rules, u0, problem%state, f, error)
+      problem%state%sets%active = ekeep
+      if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
+      call problem%state%rollback()
+      if (allocated(error)) return
+      if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
+      allocate (all_on(size(ekeep)), source=.true.)
+      call held_load(model, problem, all_on, error)
+      if (allocated(error)) return
+      ! on the free equations: at a support it is the support's reaction to the K0 state
+      problem%phase%unbalanced = f - problem%system%initial_force
+      problem%phase%base_reaction = problem%phase%unbalanced
+      where (problem%system%dofs%eq == 0) problem%phase%unbalanced = 0.0_wp
+      where (problem%system%dofs%eq > 0) problem%phase%base_reaction = 0.0_wp
+      do j = 1, size(jkeep)
+         if (.not. jkeep(j)) call katona_off(problem, j)
+      end do
+   end subroutine k0_unbalance
 
    !> The held load (problem%system%initial_force): what the active sets hold.
    subroutine held_load(model, problem, eactive, error)
@@ -277,6 +336,7 @@ contains
       real(wp), intent(out) :: f(:, :)
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: ekeep(:), jkeep(:)
+      real(wp), allocatable :: u0(:, :)
       ekeep = problem%state%sets%active
       allocate (jkeep(0))
       if (allocated(problem%state%joints%sets)) then
@@ -285,7 +345,9 @@ contains
       end if
       problem%state%sets%active = .false.
       problem%state%sets(s)%active = .true.
-      call internal_forces(model, problem%system%rules, problem%state%u, problem%state, f, error)
+      allocate (u0, mold=problem%state%u)
+      u0 = 0.0_wp
+      call internal_forces(model, problem%system%rules, u0, problem%state, f, error)
       problem%state%sets%active = ekeep
       if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
       call problem%state%rollback()

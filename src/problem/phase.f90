@@ -30,6 +30,16 @@ module pecplas_problem_phase
       !> initial stress, kept in homogeneous(:, :, k) (2, nnode, number of such sets).
       integer, allocatable :: hold(:)
       real(wp), allocatable :: homogeneous(:, :, :)
+      !> The out-of-balance of the K0 state (2, nnode): the nodal forces of the initial
+      !> stresses of the whole model (every set and joint active) less what the sets hold.
+      !> Held with the load, as without phases, until the first nil step (no pattern line,
+      !> no change) releases it (`released`).
+      real(wp), allocatable :: unbalanced(:, :)
+      logical :: released = .false.
+      !> The reactions of the K0 state (2, nnode; zero on the free equations): the reference of
+      !> the convergence test measures the reactions from them, as a deck without phases does
+      !> (pecplas_solve_residual's free_residual), so that the weight does not loosen it.
+      real(wp), allocatable :: base_reaction(:, :)
       !> The out-of-balance of the phase start (2, nnode), on the free equations: added to
       !> the external load at the start of the step and taken to zero along the step's load
       !> path (pecplas_solve_residual's load_vectors).
