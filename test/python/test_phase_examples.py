@@ -1,10 +1,9 @@
 """The staged-construction examples of input/examples/ (doc/validation.md, Staged
 construction) and the tools that show their phases.
 
-- pile_wished_in_place.inp: installing the S2 pile wished in place into the K0 ground should
-  move nothing, and the load-settlement curve that follows should be S2's
-  (input/s2/s2_goodman.inp, the same pile built with the ground): not reached yet, the test
-  is an expected failure (strict: it fails once it passes, so that the mark goes).
+- pile_wished_in_place.inp: installing the S2 pile wished in place into the K0 ground moves
+  nothing, and the load-settlement curve that follows is S2's (input/s2/s2_goodman.inp, the
+  same pile built with the ground); so it is with Gauss joints and a tight tolerance.
 - excavation_cantilever.inp: three stages, each listed in /phases with what it removed; the
   removed layers have no fields after their removal and no XDMF grid (check_results); the
   wall head moves further towards the excavation and the wall's largest moment grows stage
@@ -115,12 +114,6 @@ def head_curve(r, first_step):
     return factors, -u
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "the K0 procedure of a phased deck holds the massif's weight, not the nodal forces of "
-    "the joints' initial stresses, and releases their difference over the first step "
-    "(doc/deck.md, PHASES): installing the pile moves the ground by 5.4e-7 m and the head "
-    "curve differs from S2's by 1.5e-3 m (with Gauss joints it is exact: "
-    "test_pile_wished_in_place_gauss_joints); remove this mark when it passes"))
 def test_pile_wished_in_place(pile_runs):
     s2, wished = pile_runs
     with Results(s2) as r:
