@@ -64,6 +64,7 @@ contains
          ! the arc-length path under way, and the last increment's displacement increment
          ! that directs it (a limit probe's first length, an arc predictor's sign)
          if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
+         call data%add('lead', [real(p%lead, wp)])
          call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
          if (p%path /= PATH_NONE) then
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
@@ -315,8 +316,9 @@ contains
       end associate
    end subroutine unpack_data
 
-   !> The arc-length path under way and the last displacement increment (absent from restart
-   !> data of an older version: no path, no increment).
+   !> The arc-length path under way, the last displacement increment and the method the
+   !> chain starts with (absent from restart data of an older version: no path, no
+   !> increment, the run's method).
    subroutine unpack_path(data, problem, error)
       type(restart_data_t), intent(in) :: data
       type(problem_t), intent(inout) :: problem
@@ -326,6 +328,13 @@ contains
          if (data%has('du_prev')) then
             call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
             if (allocated(error)) return
+         end if
+         ! the method the chain starts with (older restart data: the run's own)
+         p%lead = 0
+         if (data%has('lead')) then
+            call data%get('lead', 1, v, error)
+            if (allocated(error)) return
+            p%lead = nint(v(1))
          end if
          p%path = PATH_NONE
          if (.not. data%has('arc')) return
@@ -428,7 +437,7 @@ contains
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
-         'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'phase', 'phase_carried']
+         'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'phase', 'phase_carried']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s)]
