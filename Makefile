@@ -158,7 +158,7 @@ s6: build
 # default serial builds stay as they are.
 MPI_DIR ?= build/cmake-mpi
 MPI_DECKS ?= input/default.inp test/data/plasticity/footing_t6.inp input/s2/s2_katona.inp \
-  test/data/katona/float_goodman6_axi.inp
+  test/data/katona/float_goodman6_axi.inp input/examples/excavation_cantilever.inp
 build-mpi:
 	@PECPLAS_MPI=1 bash tools/install_deps.sh
 	cmake -S . -B $(MPI_DIR) -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
