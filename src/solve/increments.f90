@@ -6,8 +6,8 @@
 !> Statuses, each a claim about the run:
 !>   completed   every step reached its end;
 !>   limit load  the load-displacement path has a maximum: the arc-length path passed it (the
-!>               load fell in two increments after it, each fall larger than the convergence
-!>               test's load noise, while the loaded points moved on) or
+!>               load fell in two increments after it, each below the peak by more than the
+!>               convergence test's load noise, while the loaded points moved on) or
 !>               became flat (current stiffness parameter ~ 0); under load control a step
 !>               that cannot be converged is probed by arc-length from the last converged
 !>               state, which either passes the failed load (the run goes on) or establishes
