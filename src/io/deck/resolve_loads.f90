@@ -205,6 +205,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: i
       logical :: force
+      character(len=:), allocatable :: msg
       force = .false.
       do i = 1, size(step%pattern)
          if (model%patterns(step%pattern(i))%kind == 'DISPLACEMENT') then
@@ -221,10 +222,10 @@ contains
             raw%name//"'", error)
          return
       end if
-      if (raw%node_id > 0) then
-         step%node = findloc(model%mesh%node_id, raw%node_id, dim=1)
+      if (len(raw%node) > 0) then
+         call model%mesh%node_of(raw%node, step%node, msg)
          if (step%node == 0) then
-            call line_error(state, raw%at, 'NODE='//itoa(raw%node_id)//': no such node', error)
+            call line_error(state, raw%at, 'NODE='//raw%node//': '//msg, error)
             return
          end if
       end if

@@ -75,9 +75,11 @@ module pecplas_io_deck_state
    type :: raw_step_t
       character(len=:), allocatable :: name
       integer :: increments = 1, at = 0, n = 0
-      !> CONTROL=ARC_LENGTH and its options (node by user id, resolved later).
+      !> CONTROL=ARC_LENGTH and its options (NODE= as written: a node id or a node set of
+      !> one node, resolved later; '' none).
       logical :: arc_length = .false.
-      integer :: max_increments = 0, iterations_wanted = 6, node_id = 0, dof = 0
+      integer :: max_increments = 0, iterations_wanted = 6, dof = 0
+      character(len=:), allocatable :: node
       real(wp) :: displacement = 0.0_wp, min_length = 1.0e-4_wp, max_length = 10.0_wp
       type(raw_item_t), allocatable :: items(:)
    end type raw_step_t
