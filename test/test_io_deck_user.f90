@@ -1,0 +1,148 @@
+!> What a new user writes from doc/deck.md alone: every keyword that takes one node takes a
+!> node id or a node set of one node, every dof the words X, Y, R, Z (test/data/user/).
+!> Node indices and dofs are integers: compared exactly.
+module test_io_deck_user
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_model_type, only: model_t
+   use pecplas_model_mesh, only: mesh_t, node_set_t
+   use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec, goal_node_index, &
+      GOAL_NODE
+   use pecplas_testing, only: unittest_t, new_unittest, check
+   use fixtures_bad_decks, only: bad, run_bad_cases
+   implicit none (type, external)
+   private
+   public :: collect_io_deck_user
+
+   character(len=*), parameter :: DIR = 'test/data/user/'
+
+contains
+
+   subroutine collect_io_deck_user(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('step_node_and_dof_forms', test_step_forms), &
+               new_unittest('adapt_goal_node_set', test_adapt_goal), &
+               new_unittest('node_set_used_not_warned', test_no_unused_warning), &
+               new_unittest('node_forms_refused', test_bad_forms), &
+               new_unittest('node_of_doublet', test_node_of)]
+   end subroutine collect_io_deck_user
+
+   subroutine load(name, model, error)
+      character(len=*), intent(in) :: name
+      type(model_t), intent(out) :: model
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      call read_deck(DIR//name, model, e)
+      call check(error, .not. allocated(e), 'good deck '//name//' must read')
+      if (allocated(error)) error%message = error%message//': '//e%text()
+   end subroutine load
+
+   !> Five arc-length steps name node 9 or 8 as an id or a set of one node, and the dof as
+   !> Y, z, R, 1, x: each resolves to that node's internal index and dof 2, 2, 1, 1, 1.
+   subroutine test_step_forms(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      integer :: n9, n8
+      call load('good_node_forms.inp', model, error)
+      if (allocated(error)) return
+      n9 = findloc(model%mesh%node_id, 9, 1)
+      n8 = findloc(model%mesh%node_id, 8, 1)
+      call check(error, size(model%steps) == 5, 'five steps')
+      if (allocated(error)) return
+      call check(error, all(model%steps%node == [n9, n9, n9, n8, n9]), &
+         'NODE=head|9|HEAD|corner|head -> nodes 9 9 9 8 9')
+      if (allocated(error)) return
+      call check(error, all(model%steps%dof == [2, 2, 1, 1, 1]), 'DOF=Y|z|R|1|x -> 2 2 1 1 1')
+      if (allocated(error)) return
+      ! the FORCE on a set of one node with dof Z: one entry, on node 9, along y
+      associate (pat => model%patterns(1))
+         call check(error, size(pat%node) == 1 .and. pat%node(1) == n9 .and. pat%dof(1) == 2, &
+            'FORCE head, Z: one entry on node 9, dof 2')
+      end associate
+   end subroutine test_step_forms
+
+   !> *ADAPT GOAL=node:corner:Z: the set's one node (id 8), dof 2; the same goal from the
+   !> command line (--goal) resolves alike, and node:8:y names the same node.
+   subroutine test_adapt_goal(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(goal_spec_t) :: goal
+      character(len=:), allocatable :: msg
+      integer :: inode, byid
+      call load('good_node_forms.inp', model, error)
+      if (allocated(error)) return
+      call parse_goal_spec(model%adapt%goal, goal, msg)
+      call check(error, .not. allocated(msg) .and. goal%kind == GOAL_NODE .and. goal%dof == 2, &
+         'GOAL=node:corner:Z parses as a node goal on dof 2')
+      if (allocated(error)) return
+      call goal_node_index(goal, model%mesh, inode, msg)
+      call check(error, inode == findloc(model%mesh%node_id, 8, 1), 'node:corner -> node 8')
+      if (allocated(error)) return
+      call parse_goal_spec('node:8:y', goal, msg)
+      call goal_node_index(goal, model%mesh, byid, msg)
+      call check(error, byid == inode, 'node:8:y names the same node')
+      if (allocated(error)) return
+      call parse_goal_spec('node:base:y', goal, msg)
+      call goal_node_index(goal, model%mesh, inode, msg)
+      call check(error, inode == 0 .and. allocated(msg), 'node:base (3 nodes) is refused')
+      if (allocated(error)) return
+      call check(error, index(msg, "node set 'base' has 3 nodes") > 0, 'message: '//msg)
+   end subroutine test_adapt_goal
+
+   !> The sets named only by NODE= and GOAL= are used: the one warning about node sets is
+   !> the one for 'unused_on_purpose'.
+   subroutine test_no_unused_warning(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      character(len=:), allocatable :: text
+      integer :: i
+      call load('good_node_forms.inp', model, error)
+      if (allocated(error)) return
+      text = ''
+      do i = 1, model%warnings%count()
+         text = text//model%warnings%line(i)//'; '
+      end do
+      call check(error, index(text, "'unused_on_purpose'") > 0, &
+         'the unused set is warned: '//text)
+      if (allocated(error)) return
+      call check(error, index(text, "'head'") == 0 .and. index(text, "'corner'") == 0, &
+         'head (NODE=) and corner (GOAL=) are not warned: '//text)
+   end subroutine test_no_unused_warning
+
+   !> A set of several nodes, a missing set, two dofs, a goal on a set of three nodes: input
+   !> errors at the line of the keyword, each saying what is expected.
+   subroutine test_bad_forms(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_bad_cases(DIR, [ &
+         bad('step_big_set', 5, '*STEP', "NODE=base: node set 'base' has 3 nodes", &
+         'a node set of one node'), &
+         bad('step_no_set', 5, '*STEP', "no node set 'nohead'", 'a node id'), &
+         bad('step_dof_word', 5, '*STEP', 'expected DOF=1 or X', "found 'XY'"), &
+         bad('adapt_big_set', 7, '*ADAPT', "node set 'base' has 3 nodes")], error)
+   end subroutine test_bad_forms
+
+   !> A node set that generated joints extended with the node's duplicate (two nodes at one
+   !> point) names its first node; two nodes at two points name none.
+   subroutine test_node_of(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mesh_t) :: mesh
+      character(len=:), allocatable :: msg
+      integer :: inode
+      mesh%x = reshape([0.0_wp, 1.0_wp, 2.0_wp, 3.0_wp, 0.0_wp, 1.0_wp], [2, 3])
+      mesh%node_id = [10, 20, 30]
+      mesh%nsets = [node_set_t('doublet', [1, 3]), node_set_t('pair', [1, 2])]
+      call mesh%node_of('doublet', inode, msg)
+      call check(error, inode == 1 .and. .not. allocated(msg), 'doublet -> its first node')
+      if (allocated(error)) return
+      call mesh%node_of('PAIR', inode, msg)
+      call check(error, inode == 0 .and. allocated(msg), 'two points: refused')
+      if (allocated(error)) return
+      call mesh%node_of(' 20 ', inode, msg)
+      call check(error, inode == 2, 'id 20 -> node 2')
+      if (allocated(error)) return
+      call mesh%node_of('40', inode, msg)
+      call check(error, inode == 0 .and. allocated(msg), 'no node 40')
+   end subroutine test_node_of
+
+end module test_io_deck_user
