@@ -10,6 +10,8 @@ module test_io_deck_user
    use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec, goal_node_index, &
       GOAL_NODE
    use pecplas_testing, only: unittest_t, new_unittest, check
+   use pecplas_fe_loads, only: pattern_vectors
+   use pecplas_massif_kinematics, only: massif_rule_t
    use fixtures_bad_decks, only: bad, run_bad_cases
    implicit none (type, external)
    private
@@ -25,7 +27,9 @@ contains
                new_unittest('adapt_goal_node_set', test_adapt_goal), &
                new_unittest('node_set_used_not_warned', test_no_unused_warning), &
                new_unittest('node_forms_refused', test_bad_forms), &
-               new_unittest('node_of_doublet', test_node_of)]
+               new_unittest('node_of_doublet', test_node_of), &
+               new_unittest('depth_pressure_deck', test_depth_pressure), &
+               new_unittest('depth_pressure_refused', test_bad_pressure)]
    end subroutine collect_io_deck_user
 
    subroutine load(name, model, error)
@@ -144,5 +148,53 @@ contains
       call mesh%node_of('40', inode, msg)
       call check(error, inode == 0 .and. allocated(msg), 'no node 40')
    end subroutine test_node_of
+
+   !> good_linear_pressure.inp: water p = max(0, 10 (1.5 - y)) on the side x = 2 (edges 3-6
+   !> from y = 0 to 1, 6-9 from 1 to 2, inward normal -x). Edge 3-6 is a trapezoid 15 -> 5:
+   !> (2 15 + 5)/6 = 35/6 to node 3, (15 + 2 5)/6 = 25/6 to node 6; edge 6-9 a triangle 5 -> 0
+   !> over its lower half: int (1 - t) 10 (1/2 - t) = 25/24 to node 6, int t 10 (1/2 - t) =
+   !> 5/24 to node 9 (t from 0 to 1/2); in all 10 1.5**2/2 = 11.25. 'shifted' (5 more, no
+   !> floor): 50/6, 60/6, 10/6. 'split' (the uniform 5 and the gradient on two lines) equals
+   !> 'shifted'. Tolerance 1e-13 of the largest force: every integral is exact (Gauss rules of
+   !> the polynomial's degree on each piece), only the rounding of a few dozen operations
+   !> remains.
+   subroutine test_depth_pressure(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: TOL = 1.0e-13_wp
+      type(model_t) :: model
+      type(massif_rule_t) :: none(0)
+      real(wp), allocatable :: force(:, :, :), disp(:, :, :), want(:, :)
+      integer :: n3, n6, n9
+      call load('good_linear_pressure.inp', model, error)
+      if (allocated(error)) return
+      call pattern_vectors(model, none, force, disp, error)
+      if (allocated(error)) return
+      n3 = findloc(model%mesh%node_id, 3, 1)
+      n6 = findloc(model%mesh%node_id, 6, 1)
+      n9 = findloc(model%mesh%node_id, 9, 1)
+      allocate (want(2, model%mesh%nnode()), source=0.0_wp)
+      want(1, [n3, n6, n9]) = -[35.0_wp/6, 25.0_wp/6 + 25.0_wp/24, 5.0_wp/24]
+      call check(error, all(abs(force(:, :, 1) - want) <= TOL*maxval(abs(want))), &
+         'water: -35/6, -125/24, -5/24 along x on nodes 3, 6, 9')
+      if (allocated(error)) return
+      call check(error, abs(sum(force(1, :, 1)) + 11.25_wp) <= TOL*11.25_wp, &
+         'water: resultant 10 1.5**2/2')
+      if (allocated(error)) return
+      want = 0.0_wp
+      want(1, [n3, n6, n9]) = -[50.0_wp, 60.0_wp, 10.0_wp]/6
+      call check(error, all(abs(force(:, :, 2) - want) <= TOL*maxval(abs(want))), &
+         'shifted: -50/6, -60/6, -10/6')
+      if (allocated(error)) return
+      call check(error, all(abs(force(:, :, 3) - force(:, :, 2)) <= TOL*maxval(abs(want))), &
+         'uniform + gradient on two lines = the same on one line')
+   end subroutine test_depth_pressure
+
+   !> Three fields on a pressure line, MIN= on a force pattern: input errors at the line.
+   subroutine test_bad_pressure(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_bad_cases(DIR, [ &
+         bad('pressure_three', 6, '*LOAD', 'p_ref, gradient, y_ref', 'found 3 fields'), &
+         bad('force_min', 3, '*LOAD', 'MIN= is an option of TYPE=PRESSURE')], error)
+   end subroutine test_bad_pressure
 
 end module test_io_deck_user

@@ -84,7 +84,9 @@ contains
             pat%name = raw%name
             pat%kind = raw%kind
             allocate (pat%node(0), pat%dof(0), pat%value(0), pat%edge(3, 0), pat%pressure(0), &
-               pat%eset(0), pat%vector(2, 0))
+               pat%pressure_gradient(0), pat%pressure_y_ref(0), pat%eset(0), pat%vector(2, 0))
+            pat%floored = raw%floored
+            pat%p_min = raw%p_min
             do i = 1, raw%n
                call add_item(state, model%mesh, raw%kind, raw%items(i), pat, error)
                if (allocated(error)) return
@@ -126,6 +128,8 @@ contains
          end associate
          pat%edge = reshape([pat%edge, edges], [3, size(pat%edge, 2) + n])
          pat%pressure = [pat%pressure, spread(item%value(1), 1, n)]
+         pat%pressure_gradient = [pat%pressure_gradient, spread(item%gradient, 1, n)]
+         pat%pressure_y_ref = [pat%pressure_y_ref, spread(item%y_ref, 1, n)]
       case default
          if (upper(item%target) == 'ALL') then
             allocate (sets(size(mesh%esets)))

@@ -61,6 +61,8 @@ module pecplas_io_deck_state
       character(len=:), allocatable :: target
       integer :: dof(2) = 0
       real(wp) :: value(2) = 0.0_wp
+      !> PRESSURE varying with depth: value(1) + gradient (y_ref - y).
+      real(wp) :: gradient = 0.0_wp, y_ref = 0.0_wp
       integer :: at = 0
    end type raw_item_t
 
@@ -68,6 +70,9 @@ module pecplas_io_deck_state
    type :: raw_pattern_t
       character(len=:), allocatable :: name, kind
       integer :: at = 0, n = 0
+      !> PRESSURE, MIN=p_min: the pressure is max(p_min, p).
+      logical :: floored = .false.
+      real(wp) :: p_min = 0.0_wp
       type(raw_item_t), allocatable :: items(:)
    end type raw_pattern_t
 
