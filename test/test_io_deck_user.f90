@@ -29,7 +29,10 @@ contains
                new_unittest('node_forms_refused', test_bad_forms), &
                new_unittest('node_of_doublet', test_node_of), &
                new_unittest('depth_pressure_deck', test_depth_pressure), &
-               new_unittest('depth_pressure_refused', test_bad_pressure)]
+               new_unittest('depth_pressure_refused', test_bad_pressure), &
+               new_unittest('gmsh_group_one_name', test_gmsh_group), &
+               new_unittest('gmsh_q8r', test_gmsh_q8r), &
+               new_unittest('gmsh_forms_refused', test_bad_gmsh)]
    end subroutine collect_io_deck_user
 
    subroutine load(name, model, error)
@@ -196,5 +199,61 @@ contains
          bad('pressure_three', 6, '*LOAD', 'p_ref, gradient, y_ref', 'found 3 fields'), &
          bad('force_min', 3, '*LOAD', 'MIN= is an option of TYPE=PRESSURE')], error)
    end subroutine test_bad_pressure
+
+   !> ../mixed.msh's surface group 'soil' holds Q4 and T3 elements (sets soil_Q4, soil_T3):
+   !> *SECTION, *INITIAL_STRESS and a BODY_FORCE naming 'soil' reach both parts.
+   subroutine test_gmsh_group(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      integer :: q, t
+      call load('good_gmsh_group.inp', model, error)
+      if (allocated(error)) return
+      q = model%mesh%find_eset('soil_Q4')
+      t = model%mesh%find_eset('soil_T3')
+      call check(error, q > 0 .and. t > 0 .and. size(model%mesh%esets) == 2, &
+         'two parts soil_Q4, soil_T3')
+      if (allocated(error)) return
+      call check(error, same_two(model%mesh%find_esets('SOIL'), q, t), 'soil names both parts')
+      if (allocated(error)) return
+      call check(error, model%mesh%esets(q)%material == 'clay' .and. &
+         model%mesh%esets(t)%material == 'clay', '*SECTION, SET=soil gives both parts clay')
+      if (allocated(error)) return
+      call check(error, size(model%initial_stresses) == 2, 'one initial stress line per part')
+      if (allocated(error)) return
+      call check(error, same_two(model%initial_stresses%eset, q, t), 'initial stress on both')
+      if (allocated(error)) return
+      call check(error, same_two(model%patterns(1)%eset, q, t), 'body force on both parts')
+   end subroutine test_gmsh_group
+
+   !> `list` is {a, b} in some order.
+   pure logical function same_two(list, a, b)
+      integer, intent(in) :: list(:), a, b
+      same_two = size(list) == 2 .and. any(list == a) .and. any(list == b) .and. a /= b
+   end function same_two
+
+   !> *SECTION, SET=wall, ELEMENT=Q8R on ../q8.msh's 8-node quadrilaterals: the set is Q8R.
+   subroutine test_gmsh_q8r(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      integer :: k
+      call load('good_gmsh_q8r.inp', model, error)
+      if (allocated(error)) return
+      k = model%mesh%find_eset('wall')
+      call check(error, k > 0, 'set wall')
+      if (allocated(error)) return
+      call check(error, model%mesh%esets(k)%etype == 'Q8R', 'wall is Q8R, got '// &
+         model%mesh%esets(k)%etype)
+   end subroutine test_gmsh_q8r
+
+   !> A second section on a part of a sectioned group, ELEMENT=Q8R without 8-node
+   !> quadrilaterals, an unknown ELEMENT=.
+   subroutine test_bad_gmsh(error)
+      type(error_t), allocatable, intent(out) :: error
+      call run_bad_cases(DIR, [ &
+         bad('gmsh_group_twice', 9, '*SECTION', "element set 'soil_T3' already has a section"), &
+         bad('gmsh_q8r_on_q4', 8, '*SECTION', 'ELEMENT=Q8R is for 8-node quadrilaterals', &
+         "'soil' has none"), &
+         bad('section_element', 3, '*SECTION', 'bad value ELEMENT=T6R', 'Q8R')], error)
+   end subroutine test_bad_gmsh
 
 end module test_io_deck_user

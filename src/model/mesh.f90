@@ -21,6 +21,10 @@ module pecplas_model_mesh
       !> Material name given by *SECTION, and its index in model%materials.
       character(len=:), allocatable :: material
       integer :: material_index = 0
+      !> The Gmsh physical group the set is the part of one element type of (a group mixing
+      !> types is split into <group>_T3, <group>_Q8, ...), so that the group's name names
+      !> them all (mesh_t%find_esets); absent for deck sets.
+      character(len=:), allocatable :: group
    end type element_set_t
 
    !> A named list of nodes.
@@ -49,6 +53,7 @@ module pecplas_model_mesh
       procedure :: nnode => mesh_nnode
       procedure :: nelem => mesh_nelem
       procedure :: find_eset => mesh_find_eset
+      procedure :: find_esets => mesh_find_esets
       procedure :: find_nset => mesh_find_nset
       procedure :: find_edge_set => mesh_find_edge_set
       procedure :: node_of => mesh_node_of
@@ -84,6 +89,26 @@ contains
          if (same_name(this%esets(i)%name, name)) k = i
       end do
    end function mesh_find_eset
+
+   !> The element sets `name` names: the set of that name, or else every part of the Gmsh
+   !> physical group of that name (one set per element type); none when neither exists.
+   function mesh_find_esets(this, name) result(list)
+      class(mesh_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      integer, allocatable :: list(:)
+      integer :: i
+      allocate (list(0))
+      i = this%find_eset(name)
+      if (i > 0) then
+         list = [i]
+         return
+      end if
+      if (.not. allocated(this%esets)) return
+      do i = 1, size(this%esets)
+         if (.not. allocated(this%esets(i)%group)) cycle
+         if (same_name(this%esets(i)%group, name)) list = [list, i]
+      end do
+   end function mesh_find_esets
 
    integer function mesh_find_nset(this, name) result(k)
       class(mesh_t), intent(in) :: this

@@ -89,22 +89,28 @@ contains
       end do
    end subroutine read_initial_stress
 
-   !> Element set names -> indices (ALL -> 0); an unknown name lists the known sets.
+   !> Element set names -> indices (ALL -> 0); a Gmsh group of several element types gives
+   !> one entry per part, in place (so later lines still overwrite earlier ones); an unknown
+   !> name lists the known sets.
    subroutine resolve_initial_stress(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
+      type(initial_stress_t), allocatable :: out(:)
+      integer, allocatable :: parts(:)
       integer :: i, k
       character(len=:), allocatable :: list
       if (.not. allocated(model%initial_stresses)) return
+      allocate (out(0))
       do i = 1, size(model%initial_stresses)
          associate (init => model%initial_stresses(i))
             if (upper(init%set) == 'ALL') then
                init%eset = 0
+               out = [out, init]
                cycle
             end if
-            init%eset = model%mesh%find_eset(init%set)
-            if (init%eset == 0) then
+            parts = model%mesh%find_esets(init%set)
+            if (size(parts) == 0) then
                list = ''
                do k = 1, size(model%mesh%esets)
                   call add_name(list, model%mesh%esets(k)%name)
@@ -113,8 +119,14 @@ contains
                   "undefined element set '"//init%set//"'; known element sets: ALL"//list, error)
                return
             end if
+            do k = 1, size(parts)
+               init%eset = parts(k)
+               init%set = model%mesh%esets(parts(k))%name
+               out = [out, init]
+            end do
          end associate
       end do
+      call move_alloc(out, model%initial_stresses)
    end subroutine resolve_initial_stress
 
    !> Index of the deck line (file, line) in state%lines.

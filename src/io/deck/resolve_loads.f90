@@ -135,14 +135,13 @@ contains
             allocate (sets(size(mesh%esets)))
             sets = [(k, k=1, size(mesh%esets))]
          else
-            k = mesh%find_eset(item%target)
-            if (k == 0) then
+            ! a set, or every part of a Gmsh group of several element types
+            sets = mesh%find_esets(item%target)
+            if (size(sets) == 0) then
                call line_error(state, item%at, "undefined element set '"//item%target// &
                   "'; known element sets:"//eset_names(mesh)//' (or ALL)', error)
                return
             end if
-            allocate (sets(1))
-            sets(1) = k
          end if
          n = size(sets)
          pat%eset = [pat%eset, sets]

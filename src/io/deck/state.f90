@@ -51,7 +51,8 @@ module pecplas_io_deck_state
 
    !> *SECTION: element set and material names as written.
    type :: raw_section_t
-      character(len=:), allocatable :: set, material
+      !> ELEMENT= as written ('' when absent).
+      character(len=:), allocatable :: set, material, element
       integer :: at = 0
    end type raw_section_t
 
