@@ -5,6 +5,7 @@
 module test_io_results
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_FAILED, RUN_LIMIT_LOAD, RUN_NOT_RUN
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
@@ -66,7 +67,7 @@ contains
       end do
       call write_sample(rf, 'io_results_completed.h5', 1, 3, error)
       if (allocated(error)) return
-      call rf%finish('completed', 'normal end', error)
+      call rf%finish(RUN_COMPLETED, 'normal end', error)
       if (allocated(error)) return
       call check(error, .not. rf%is_open(), 'finish closes the file')
       if (allocated(error)) return
@@ -283,7 +284,7 @@ contains
          call check_running(OUT_DIR//'/crash/io_results_copy'//SUFFIX(i)(2:2)//'.h5', 3, error)
       end do
       if (allocated(error)) return
-      call rf%finish('completed', 'normal end', error)
+      call rf%finish(RUN_COMPLETED, 'normal end', error)
       if (allocated(error)) return
       do i = 1, 3
          inquire (file=stem//trim(SUFFIX(i)), exist=exists)
@@ -335,7 +336,7 @@ contains
       inc = sample_increment(2)
       inc%write_fields = .false.
       call rf%write_increment(inc, error); if (allocated(error)) return
-      call rf%finish('limit load', 'no convergence after 5 cuts', error)
+      call rf%finish(RUN_LIMIT_LOAD, 'no convergence after 5 cuts', error)
       if (allocated(error)) return
       call rd%open(OUT_DIR//'/io_results_limit.h5', error); if (allocated(error)) return
       call rd%attribute('/', 'status', s, error); if (allocated(error)) return
@@ -374,10 +375,10 @@ contains
       call rf%write_increment(inc, e)
       call check(error, allocated(e), 'missing reaction must be refused')
       if (allocated(error)) return
-      call rf%finish('done', '', e)
+      call rf%finish(RUN_NOT_RUN, '', e)
       call check(error, allocated(e) .and. rf%is_open(), 'unknown status refused, file open')
       if (allocated(error)) return
-      call rf%finish('failed', 'NaN in the stress of set LINING', error)
+      call rf%finish(RUN_FAILED, 'NaN in the stress of set LINING', error)
       if (allocated(error)) return
       call rd%open(OUT_DIR//'/io_results_failed.h5', error); if (allocated(error)) return
       call rd%history_length(n, error); if (allocated(error)) return
@@ -434,7 +435,7 @@ contains
       inc = sample_increment(2)
       deallocate (inc%pattern_factors)
       call rf%write_increment(inc, error); if (allocated(error)) return
-      call rf%finish('completed', '', error); if (allocated(error)) return
+      call rf%finish(RUN_COMPLETED, '', error); if (allocated(error)) return
       call rd%open(OUT_DIR//'/io_results_nopattern.h5', error); if (allocated(error)) return
       call rd%dataset('/history/pattern_factors', factors, error); if (allocated(error)) return
       call check(error, size(factors, 1) == 0 .and. size(factors, 2) == 2, &

@@ -4,6 +4,7 @@
 !> left under the copy's name and the caller writes it.
 module test_io_results_copies
    use, intrinsic :: iso_fortran_env, only: int8
+   use pecplas_base_run_status, only: RUN_COMPLETED
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check
@@ -143,7 +144,7 @@ contains
       if (allocated(error)) return
       call rf%write_increment(sample_increment(1), error, final=.true.)
       if (allocated(error)) return
-      call rf%finish('completed', 'normal end', error)
+      call rf%finish(RUN_COMPLETED, 'normal end', error)
       if (allocated(error)) return
       call rd%open(TARGET, error)
       if (allocated(error)) return

@@ -3,6 +3,7 @@
 !> readable) until `finish` renames the copy with the final increment onto the target; a
 !> run stopped without finish publishes that copy; no increment may follow a final one.
 module test_io_results_final
+   use pecplas_base_run_status, only: RUN_COMPLETED
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_testing, only: unittest_t, new_unittest, check
@@ -68,7 +69,7 @@ contains
       call check(error, index(refused%text(), 'after the final one') > 0, &
          'the refusal names the final increment: '//refused%text())
       if (allocated(error)) return
-      call rf%finish('completed', 'normal end', error)
+      call rf%finish(RUN_COMPLETED, 'normal end', error)
       if (allocated(error)) return
       call check_rows(target, 'completed', 3, error)
       if (allocated(error)) return

@@ -4,6 +4,7 @@
 !> with generated joints); Q8 and springs refine; point forces on an edge are refused with
 !> their reason.
 module test_refine
+   use pecplas_base_run_status, only: RUN_COMPLETED, status_name
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
@@ -211,7 +212,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(results_file_t) :: results
       type(joint_points_t), allocatable :: jpoints(:)
-      character(len=:), allocatable :: status, message
+      character(len=:), allocatable :: message
+      integer :: status
       integer :: nflipped
       call make_directories(DIR)
       call prepare_run(model, problem, nflipped, jpoints, error)
@@ -222,7 +224,7 @@ contains
       call run_increments(model, problem, results, .true., status, message, error)
       call results%free()
       if (allocated(error)) return
-      if (status /= 'completed') call fatal_error(error, 'run did not complete: '//status)
+      if (status /= RUN_COMPLETED) call fatal_error(error, 'run did not complete: '//status_name(status))
    end subroutine run_model
 
    !> Sum of the element areas (shoelace over the corners).

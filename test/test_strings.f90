@@ -3,6 +3,8 @@ module test_strings
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_base_strings, only: upper, same_name, itoa, decimal_text, g6
+   use pecplas_base_run_status, only: RUN_NOT_RUN, RUN_COMPLETED, RUN_LIMIT_LOAD, RUN_DIVERGED, &
+      RUN_STOPPED, RUN_FAILED, RUN_INTERRUPTED, status_name, is_run_status
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
@@ -14,7 +16,8 @@ contains
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('names', test_names), &
                new_unittest('integers', test_integers), &
-               new_unittest('decimals', test_decimals)]
+               new_unittest('decimals', test_decimals), &
+               new_unittest('run_status_words', test_run_status_words)]
    end subroutine collect_strings
 
    subroutine test_names(error)
@@ -57,5 +60,22 @@ contains
             decimal_text(x, d)//''', expected '''//text//'''')
       end subroutine expect
    end subroutine test_decimals
+
+   !> The words written to results files and read by the tools (pecplas_py.results, the
+   !> docs' status table): one per status, distinct, and no word for a value that is none.
+   subroutine test_run_status_words(error)
+      type(error_t), allocatable, intent(out) :: error
+      call check(error, status_name(RUN_COMPLETED) == 'completed' .and. &
+         status_name(RUN_LIMIT_LOAD) == 'limit load' .and. &
+         status_name(RUN_DIVERGED) == 'diverged' .and. status_name(RUN_STOPPED) == 'stopped' &
+         .and. status_name(RUN_FAILED) == 'failed' .and. &
+         status_name(RUN_INTERRUPTED) == 'interrupted' .and. status_name(RUN_NOT_RUN) == &
+         'not run', 'status words as documented in doc/deck.md and read by the tools')
+      if (allocated(error)) return
+      call check(error, .not. is_run_status(RUN_NOT_RUN) .and. .not. is_run_status(99) .and. &
+         status_name(99) == 'unknown' .and. all(is_run_status([RUN_COMPLETED, RUN_LIMIT_LOAD, &
+         RUN_DIVERGED, RUN_STOPPED, RUN_FAILED, RUN_INTERRUPTED])), &
+         'only the six ends of a run are run statuses')
+   end subroutine test_run_status_words
 
 end module test_strings

@@ -15,6 +15,7 @@
 !> when the DOFs grow geometrically.
 module pecplas_adapt_adapt
    use pecplas_base_kinds, only: wp
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_LIMIT_LOAD, status_name
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_base_version, only: VERSION
    use pecplas_model_type, only: model_t
@@ -222,8 +223,8 @@ contains
       type(results_file_t) :: results
       type(limit_point_t) :: limit
       type(joint_points_t), allocatable :: jpoints(:)
-      character(len=:), allocatable :: status, message
-      integer :: nflipped
+      character(len=:), allocatable :: message
+      integer :: nflipped, status
       wall = wall_time()
       if (.not. present(keep)) model%output%every = huge(1)
       call prepare_run(model, problem, nflipped, jpoints, error)
@@ -245,16 +246,16 @@ contains
       wall = wall_time() - wall
       if (present(peak)) then
          peak = 0.0_wp
-         if (status == 'limit load') then
+         if (status == RUN_LIMIT_LOAD) then
             peak = limit%pattern_factors(model%steps(limit%step)%pattern(1))
          else
-            call fatal_error(error, "the run ended with status '"//status//"' ("//message// &
+            call fatal_error(error, "the run ended with status '"//status_name(status)//"' ("//message// &
                ') and reports no limit load: the limit goal needs a run whose load path '// &
                'has a maximum (a force-controlled step to a load beyond the collapse load; '// &
                'CONTROL=ARC_LENGTH traces the peak)')
          end if
-      else if (status /= 'completed') then
-         call fatal_error(error, 'adaptive level did not complete: '//status//' '//message)
+      else if (status /= RUN_COMPLETED) then
+         call fatal_error(error, 'adaptive level did not complete: '//status_name(status)//' '//message)
       end if
    end subroutine run_level
 

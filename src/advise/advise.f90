@@ -24,6 +24,7 @@
 !>    mesh adaptively with that configuration); the advice is the cheapest by this cost.
 module pecplas_advise_advise
    use pecplas_base_kinds, only: wp
+   use pecplas_base_run_status, only: RUN_NOT_RUN, status_name
    use pecplas_base_error, only: error_t, input_error
    use pecplas_model_type, only: model_t
    use pecplas_model_refine_local, only: refine_marked
@@ -161,11 +162,11 @@ contains
          if (.not. refs(k)%ok) then
             if (k == 1) then
                call input_error(error, 'advise: the reference run (NEWTON x2 on the deck''s '// &
-                  'mesh) did not complete its first loading step ('//refs(k)%status// &
+                  'mesh) did not complete its first loading step ('//status_name(refs(k)%status)// &
                   '): no advice')
                return
             end if
-            adv%stop_reason = 'NEWTON x2 stopped on level '//itoa(k)//' ('//refs(k)%status//')'
+            adv%stop_reason = 'NEWTON x2 stopped on level '//itoa(k)//' ('//status_name(refs(k)%status)//')'
             refs = refs(1:k - 1)
             exit
          end if
@@ -206,7 +207,7 @@ contains
       row%method = ADVISE_METHODS(m)
       row%factor = ADVISE_FACTORS(f)
       row%level = k
-      row%status = 'not run'
+      row%status = RUN_NOT_RUN
    end function config_row
 
    !> Runs `row` on `mesh` and reads the goal.

@@ -4,6 +4,7 @@
 !> afterwards (its writing time is not counted).
 module pecplas_advise_run
    use pecplas_base_kinds, only: wp, ik8
+   use pecplas_base_run_status, only: RUN_NOT_RUN, RUN_COMPLETED, RUN_FAILED
    use pecplas_base_error, only: error_t, input_error
    use pecplas_base_version, only: VERSION
    use pecplas_model_type, only: model_t
@@ -37,7 +38,8 @@ module pecplas_advise_run
       real(wp) :: goal = 0.0_wp, err = huge(1.0_wp)
       !> The run completed its first loading step.
       logical :: ok = .false.
-      character(len=:), allocatable :: status
+      !> How the run ended (pecplas_base_run_status; RUN_NOT_RUN before it ran).
+      integer :: status = RUN_NOT_RUN
    end type advise_row_t
 
 contains
@@ -75,9 +77,9 @@ contains
       type(results_file_t) :: results
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: run_err
-      character(len=:), allocatable :: status, message, scratch
+      character(len=:), allocatable :: message, scratch
       real(wp) :: w0
-      integer :: nflipped, s
+      integer :: nflipped, s, status
       model = base
       do s = 1, size(model%steps)
          model%steps(s)%increments = max(1, nint(row%factor*model%steps(s)%increments))
@@ -98,10 +100,10 @@ contains
       end if
       call run_increments(model, problem, results, .true., status, message, run_err)
       row%wall = wall_time() - w0 - problem%stats%time%output
-      if (allocated(run_err)) status = 'failed'
+      if (allocated(run_err)) status = RUN_FAILED
       call results%discard()
       row%status = status
-      row%ok = status == 'completed'
+      row%ok = status == RUN_COMPLETED
    end subroutine run_configuration
 
    !> The first step that applies something else than gravity (a geostatic step only sets the

@@ -3,6 +3,7 @@
 !> one row per run and the two advice lines (1 % and 5 %). Writes no results file.
 module pecplas_cmd_advise
    use pecplas_base_kinds, only: wp
+   use pecplas_base_run_status, only: status_name
    use pecplas_base_error, only: error_t, EXIT_OK
    use pecplas_advise_advise, only: advice_t, advise_row_t, advise_deck, REF_TARGET
    use pecplas_cmd_command, only: command_error
@@ -53,7 +54,7 @@ contains
       do i = 1, size(adv%rows)
          associate (r => adv%rows(i))
             write (*, FMT) r%level, r%ndof, r%method, decimal_text(r%factor, 2), r%increments, &
-               r%wall, r%cost, merge(r%goal, 0.0_wp, r%ok), err_text(r), r%status
+               r%wall, r%cost, merge(r%goal, 0.0_wp, r%ok), err_text(r), status_name(r%status)
          end associate
       end do
       write (*, '(a)') advice_line('1 %', adv, 1)

@@ -6,6 +6,7 @@ module pecplas_cmd_path
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED
    use pecplas_base_version, only: VERSION
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_STOPPED
    use pecplas_base_files, only: make_directories, path_stem, path_dir
    use pecplas_joints_laws_type, only: MODE_NAMES
    use pecplas_studies_path_deck, only: path_deck_t, read_path_deck, PATH_NAMES
@@ -100,9 +101,9 @@ contains
       call write_path_csv(base//'.csv', res, error)
       if (.not. allocated(error)) then
          if (allocated(run_err)) then
-            call write_path_h5(base//'.h5', d, res, VERSION, error, 'stopped', run_err%text())
+            call write_path_h5(base//'.h5', d, res, VERSION, error, RUN_STOPPED, run_err%text())
          else
-            call write_path_h5(base//'.h5', d, res, VERSION, error, 'completed', '')
+            call write_path_h5(base//'.h5', d, res, VERSION, error, RUN_COMPLETED, '')
          end if
       end if
       if (allocated(error)) then

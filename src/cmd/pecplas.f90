@@ -7,6 +7,7 @@ module pecplas_cmd_pecplas
    use pecplas_base_error, only: error_t, input_error, fatal_error, EXIT_OK, EXIT_INPUT, EXIT_STOPPED, EXIT_INTERNAL, &
       EXIT_INTERRUPTED
    use pecplas_base_version, only: PROGRAM_NAME, VERSION
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_FAILED, RUN_INTERRUPTED, status_name
    use pecplas_base_files, only: make_directories, path_stem, path_dir, same_file, exit_now
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: method_name
@@ -134,7 +135,8 @@ contains
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
       type(thread_setting_t) :: threads
-      character(len=:), allocatable :: status, message, outfile, warning, input, failure
+      character(len=:), allocatable :: message, outfile, warning, input, failure
+      integer :: status
       real(wp) :: t0, t1, w0
       integer :: nflipped
 
@@ -213,12 +215,12 @@ contains
          if (results%is_broken()) call exit_now(code)
          return
       end if
-      ! from here a termination signal ends the run between increments, as 'interrupted'
+      ! from here a termination signal ends the run between increments, as RUN_INTERRUPTED
       if (.not. install_signal_handlers() .and. .not. quiet) write (*, '(a)') &
          ' note: no handler for SIGTERM/SIGINT/SIGHUP; a signal ends the run at once'
       call run_increments(model, problem, results, quiet, status, message, error)
       if (allocated(error)) then
-         status = 'failed'
+         status = RUN_FAILED
          message = error%text()
       end if
       ! a warning keeps the status and exit code; it goes to stderr, the message and the file
@@ -249,10 +251,10 @@ contains
       call cpu_time(t1)
       call summary(problem, threads, status, message, outfile, t1 - t0, wall_time() - w0, quiet)
       code = EXIT_OK
-      if (status /= 'completed') code = EXIT_STOPPED
-      if (status == 'failed') code = EXIT_INTERNAL
+      if (status /= RUN_COMPLETED) code = EXIT_STOPPED
+      if (status == RUN_FAILED) code = EXIT_INTERNAL
       if (len(failure) > 0) code = EXIT_STOPPED
-      if (status == 'interrupted') code = EXIT_INTERRUPTED
+      if (status == RUN_INTERRUPTED) code = EXIT_INTERRUPTED
    end function run_deck
 
    !> What --version prints: version, commit, compiler, linked library versions.
@@ -328,10 +330,12 @@ contains
    subroutine summary(problem, threads, status, message, outfile, cpu, wall, quiet)
       type(problem_t), intent(in) :: problem
       type(thread_setting_t), intent(in) :: threads
-      character(len=*), intent(in) :: status, message, outfile
+      integer, intent(in) :: status
+      character(len=*), intent(in) :: message, outfile
       real(wp), intent(in) :: cpu, wall
       logical, intent(in) :: quiet
-      if (status /= 'completed') write (0, '(a)') 'pecplas: run stopped ('//status//'): '//message
+      if (status /= RUN_COMPLETED) write (0, '(a)') 'pecplas: run stopped ('// &
+         status_name(status)//'): '//message
       flush (0)
       if (quiet) return
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%stats%increments, &
@@ -368,7 +372,7 @@ contains
                ' s, states ', sec(k%time_states)//' s'
          end associate
       end if
-      write (*, '(a)') ' status: '//status//'  results: '//outfile
+      write (*, '(a)') ' status: '//status_name(status)//'  results: '//outfile
    end subroutine summary
 
    !> Seconds with 3 decimals and a leading zero ("0.012").

@@ -6,6 +6,7 @@
 !> of no element), the massif on face 2.
 module pecplas_fe_joint_side
    use pecplas_base_kinds, only: wp
+   use pecplas_base_sort, only: sort_short
    use pecplas_model_type, only: model_t
    use pecplas_model_joints, only: joint_set_t
    use pecplas_model_mesh_sides, only: side_table_t, build_side_table, find_sides, &
@@ -141,22 +142,7 @@ contains
             if (.not. any(sets == index%node_set(k))) sets = [sets, index%node_set(k)]
          end do
       end do
-      call sort(sets)
+      call sort_short(sets)
    end function node_sets
-
-   pure subroutine sort(a)
-      integer, intent(inout) :: a(:)
-      integer :: i, j, v
-      do i = 2, size(a)
-         v = a(i)
-         j = i - 1
-         do while (j >= 1)
-            if (a(j) <= v) exit
-            a(j + 1) = a(j)
-            j = j - 1
-         end do
-         a(j + 1) = v
-      end do
-   end subroutine sort
 
 end module pecplas_fe_joint_side

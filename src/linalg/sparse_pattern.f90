@@ -8,6 +8,7 @@
 module pecplas_linalg_sparse_pattern
    use pecplas_base_kinds, only: wp, ik4
    use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_sort, only: sort_short
    use pecplas_linalg_sparse, only: coo_t, csc_t
    implicit none (type, external)
    private
@@ -135,7 +136,7 @@ contains
                q = q + 1
                buf(q) = int(i, ik4)
             end do
-            if (pass == 2) call sort_rows(buf(1:q))
+            if (pass == 2) call sort_short(buf(1:q))
             do jj = j, j1
                m = q
                if (upper .and. jj < j1) m = count(buf(1:q) <= jj)
@@ -160,22 +161,5 @@ contains
       csc%rowind = csc%rowind - 1_ik4
       allocate (csc%values(csc%colptr(n + 1)), source=0.0_wp)
    end subroutine pattern_from_blocks
-
-   !> Ascending order of a short list of distinct rows (insertion sort: some tens of rows).
-   pure subroutine sort_rows(r)
-      integer(ik4), intent(inout) :: r(:)
-      integer(ik4) :: v
-      integer :: i, k
-      do i = 2, size(r)
-         v = r(i)
-         k = i - 1
-         do while (k >= 1)
-            if (r(k) <= v) exit
-            r(k + 1) = r(k)
-            k = k - 1
-         end do
-         r(k + 1) = v
-      end do
-   end subroutine sort_rows
 
 end module pecplas_linalg_sparse_pattern

@@ -19,6 +19,8 @@
 !>               converged increment and goes on with --restart.
 module pecplas_solve_increments
    use pecplas_base_kinds, only: wp
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_LIMIT_LOAD, RUN_DIVERGED, RUN_STOPPED, &
+      RUN_INTERRUPTED
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t
@@ -41,16 +43,17 @@ module pecplas_solve_increments
 
 contains
 
-   !> Runs every step. `status`: 'completed', 'limit load', 'diverged', 'stopped' or
-   !> 'interrupted' (a termination signal, or the --stop-after-increments test hook);
+   !> Runs every step. `status`: RUN_COMPLETED, RUN_LIMIT_LOAD, RUN_DIVERGED, RUN_STOPPED or
+   !> RUN_INTERRUPTED (a termination signal, or the --stop-after-increments test hook);
    !> `message` says why a run stopped. Converged increments are written as they come.
-   !> `limit`: where the limit is, when the status is 'limit load' (as written to /limit).
+   !> `limit`: where the limit is, when the status is RUN_LIMIT_LOAD (as written to /limit).
    subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(results_file_t), intent(inout) :: results
       logical, intent(in) :: quiet
-      character(len=:), allocatable, intent(out) :: status, message
+      integer, intent(out) :: status
+      character(len=:), allocatable, intent(out) :: message
       type(error_t), allocatable, intent(out) :: error
       type(limit_point_t), intent(out), optional :: limit
       type(run_t) :: run
@@ -60,7 +63,7 @@ contains
       call cpu_time(run%cpu_start)
       run%quiet = quiet
       call run%eta%start(wall_time(), sum(model%steps%increments), 10.0_wp)
-      status = 'completed'
+      status = RUN_COMPLETED
       message = 'all steps completed'
       ! the initial stresses are in equilibrium with their own nodal forces
       run%fint_conv = problem%system%initial_force
@@ -85,11 +88,11 @@ contains
             call load_step(model, problem, results, run, istep, f0, ftarget, status, message, &
                error)
          end if
-         if (allocated(error) .or. status /= 'completed') exit
+         if (allocated(error) .or. status /= RUN_COMPLETED) exit
       end do
       if (allocated(error)) return
-      if (status == 'limit load') call results%write_limit(run%limit, error)
-      if (present(limit) .and. status == 'limit load') limit = run%limit
+      if (status == RUN_LIMIT_LOAD) call results%write_limit(run%limit, error)
+      if (present(limit) .and. status == RUN_LIMIT_LOAD) limit = run%limit
    end subroutine run_increments
 
    !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and
@@ -102,7 +105,8 @@ contains
       type(run_t), intent(inout) :: run
       integer, intent(in) :: istep
       real(wp), intent(in) :: f0(:), ftarget(:)
-      character(len=:), allocatable, intent(inout) :: status, message
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
       type(error_t), allocatable, intent(out) :: error
       type(attempt_t) :: att
       type(outcome_t) :: out
@@ -231,7 +235,8 @@ contains
       type(run_t), intent(inout) :: run
       integer, intent(in) :: istep
       real(wp), intent(in) :: f0(:), ftarget(:)
-      character(len=:), allocatable, intent(inout) :: status, message
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
       type(error_t), allocatable, intent(out) :: error
       type(arc_trace_t) :: path
       integer :: inc
@@ -277,7 +282,7 @@ contains
                   res%reason, status, message)
             end if
          case (END_MAX)
-            status = 'stopped'
+            status = RUN_STOPPED
             message = 'step '//itoa(istep)//' ('//step%name//'): MAX_INCREMENTS='// &
                itoa(step%max_increments)//' arc-length increments used at step fraction '// &
                g6(res%tau)//' before the target (no maximum of the load on the way)'
@@ -347,8 +352,9 @@ contains
       type(step_t), intent(in) :: step
       integer, intent(in) :: istep
       type(arc_end_t), intent(in) :: res
-      character(len=:), allocatable, intent(inout) :: status, message
-      status = 'limit load'
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
+      status = RUN_LIMIT_LOAD
       run%limit%step = istep
       run%limit%stiffness_parameter = res%sp
       message = 'limit load in step '//itoa(istep)//' ('//step%name//'): '
@@ -384,7 +390,7 @@ contains
          'the results file (/limit says where the peak is)'
    end subroutine limit_reached
 
-   !> True (with status 'interrupted') when the run must stop after this increment: a
+   !> True (with status RUN_INTERRUPTED) when the run must stop after this increment: a
    !> termination signal (SIGTERM, SIGINT, SIGHUP: pecplas_base_signals) or the
    !> --stop-after-increments test hook.
    logical function interrupted(model, problem, istep, tau, status, message)
@@ -392,7 +398,8 @@ contains
       type(problem_t), intent(in) :: problem
       integer, intent(in) :: istep
       real(wp), intent(in) :: tau
-      character(len=:), allocatable, intent(inout) :: status, message
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
       interrupted = stop_pending(model, problem, tau >= 1.0_wp - 1.0e-12_wp .and. &
          istep == size(model%steps))
       if (interrupted) call interrupted_status(problem, status, message)
@@ -400,8 +407,9 @@ contains
 
    subroutine interrupted_status(problem, status, message)
       type(problem_t), intent(in) :: problem
-      character(len=:), allocatable, intent(inout) :: status, message
-      status = 'interrupted'
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
+      status = RUN_INTERRUPTED
       if (interrupt_requested()) then
          message = 'stopped by '//interrupt_signal()//' after increment '// &
             itoa(problem%stats%increments)//'; continue with --restart'
@@ -424,7 +432,7 @@ contains
          res%mechanism
    end function mechanism
 
-   !> Status 'diverged': where and why, and the last converged state (its increment and
+   !> Status RUN_DIVERGED: where and why, and the last converged state (its increment and
    !> load factors), kept in the results file.
    subroutine diverged(model, problem, istep, tau_failed, cuts, reason, status, message)
       type(model_t), intent(in) :: model
@@ -432,9 +440,10 @@ contains
       integer, intent(in) :: istep, cuts
       real(wp), intent(in) :: tau_failed
       character(len=*), intent(in) :: reason
-      character(len=:), allocatable, intent(inout) :: status, message
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
       associate (step => model%steps(istep))
-         status = 'diverged'
+         status = RUN_DIVERGED
          message = 'step '//itoa(istep)//' ('//step%name//') did not converge at step '// &
             'fraction '//g6(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
             '); last converged state: '

@@ -11,10 +11,10 @@ reaction at the last increment - is within 0.5 % of CalculiX's on the same mesh 
 increment entered the first iteration through the tangent (doc/theory.md §4) these runs took
 140, 187 and 881 iterations, Q8R with 4 cuts.
 """
-import h5py
 import pytest
 
 from pecplas_py.decks import make_footing_peer_decks as decks
+from pecplas_py.results import Results
 from deck_runs import run
 
 #: CalculiX 2.20's plateau on the same meshes (kPa; pecplas_py.bench.peer_footing)
@@ -28,9 +28,8 @@ def test_vonmises_footing_newton(tmp_path, element):
     assert status == "completed", p.stderr
     n = len(hist["iterations"])
     total = int(hist["iterations"].sum())
-    with h5py.File(tmp_path / f"footing_{element}.h5", "r") as f:
-        last = sorted(f["increments"])[-1]
-        reaction = f["increments"][last]["reaction"][()]
+    with Results(tmp_path / f"footing_{element}.h5") as res:
+        reaction = res.field(res.last_key(), "reaction")
     nodes, _, ids, nx, ny = decks.mesh(element, 1)
     footing = decks.node_sets(nodes, ids, nx, ny)["footing"]
     plateau = -sum(reaction[i - 1, 1] for i in footing) / decks.B

@@ -1,5 +1,5 @@
 """Joint sets in the results file of the real `pecplas` executable: the joint patch test
-read back independently with h5py (uniform contact pressure 100 at every joint point, all
+read back through pecplas_py.results (uniform contact pressure 100 at every joint point, all
 in stick), and pecplas_py.checks.check_results accepting the file and catching damaged joint data.
 
 Uses $PECPLAS_BIN (set by `make test` and CTest), else runs through fpm."""
@@ -11,6 +11,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 import pytest
+
+from pecplas_py.results import Results
 from pecplas_exe import pecplas_cmd
 
 from pecplas_py import script_cmd
@@ -41,22 +43,22 @@ def test_checker_accepts_joint_file(results):
 
 
 def test_joint_fields_read_back(results):
-    with h5py.File(results) as f:
-        js = f["mesh/joint_sets/joint"]
+    with Results(results) as res:
+        js = res.joint_set("joint")
         assert js.attrs["etype"] == "GOODMAN6" and js.attrs["law"] == "contact"
         conn = js["connectivity"][...]                       # (nel, 6), 0-based
-        x = f["mesh/coordinates"][...]
+        x = res.coordinates
         # doublets are coincident: face-1 node 1 with face-2 node 4, 2 with 3, 5 with 6
         for a, b in [(0, 3), (1, 2), (4, 5)]:
             assert np.array_equal(x[conn[:, a]], x[conn[:, b]])
-        inc = f["increments/000002/joints/joint"]
-        stress = inc["stress"][...]                          # (nel, npoint, 2)
+        stress = res.field("000002", "joints/joint/stress")  # (nel, npoint, 2)
         assert stress.shape == (2, 3, 2)
         assert np.allclose(stress[..., 0], 100.0, rtol=1e-10)   # sigma_n = P
         assert np.allclose(stress[..., 1], 0.0, atol=1e-8)      # tau = 0
-        assert np.all(inc["mode"][...] == 1)                    # stick
+        assert np.all(res.field("000002", "joints/joint/mode") == 1)    # stick
         # the law sees closure: eps_n = sigma_n / KN > 0
-        assert np.allclose(inc["relative_displacement"][..., 0], 100.0 / 1e5, rtol=1e-10)
+        assert np.allclose(res.field("000002", "joints/joint/relative_displacement")[..., 0],
+                           100.0 / 1e5, rtol=1e-10)
 
 
 @pytest.fixture

@@ -38,11 +38,11 @@ import math
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 
 from pecplas_exe import pecplas_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -136,18 +136,16 @@ def run(text, tmp_path, name):
     p = subprocess.run(pecplas_cmd() + [str(path), "-o", str(out), "--quiet"],
                        capture_output=True, text=True, cwd=ROOT, timeout=300)
     assert out.exists(), p.stdout + p.stderr
-    with h5py.File(out, "r") as f:
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
-        pushed = f["mesh/node_sets/pushed/nodes"][()]
+    with Results(out) as res:
+        status = res.status
+        pushed = res.node_set("pushed")
         incs = []
-        for key in sorted(f["increments"]):
-            g = f["increments"][key]
-            j = g["joints/joint"]
-            incs.append({"force": g["reaction"][()][pushed, 0].sum(),
-                         "mode": j["mode"][()].ravel(),
-                         "stress": j["stress"][()].reshape(-1, 2),
-                         "eps": j["relative_displacement"][()].reshape(-1, 2)})
+        for key in res.keys:
+            incs.append({"force": res.field(key, "reaction")[pushed, 0].sum(),
+                         "mode": res.field(key, "joints/joint/mode").ravel(),
+                         "stress": res.field(key, "joints/joint/stress").reshape(-1, 2),
+                         "eps": res.field(key, "joints/joint/relative_displacement")
+                         .reshape(-1, 2)})
     return status, incs
 
 

@@ -5,7 +5,6 @@ import importlib.util
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
@@ -13,6 +12,7 @@ from pecplas_exe import pecplas_cmd
 ROOT = Path(__file__).resolve().parents[2]
 
 from pecplas_py import script_cmd
+from pecplas_py.results import Results
 from pecplas_py.bench import peer_opensees as bpo
 from pecplas_py.peers import opensees_block as ob
 
@@ -182,5 +182,5 @@ def test_large_keyword_deck_end_to_end(tmp_path):
     assert ob.dofs(m)[0] > 2.9e5
     tip = u[m["tip"] - 1, 1]
     assert abs(tip - (-0.0351104396)) <= 2 * (0.0351104396 - 0.0351015057), tip
-    with h5py.File(tmp_path / f"b{nx}.h5") as f:
-        assert f.attrs["status"] == "completed"
+    with Results(tmp_path / f"b{nx}.h5") as res:
+        assert res.status == "completed"

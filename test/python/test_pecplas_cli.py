@@ -8,12 +8,12 @@ Uses $PECPLAS_BIN (set by `make test` and CTest), else builds with fpm."""
 import subprocess
 from pathlib import Path
 
-import h5py
 import numpy as np
 import pytest
 from pecplas_exe import pecplas_cmd
 
 from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 CHECKER = script_cmd("checks.check_results")
@@ -39,9 +39,9 @@ def test_strip_footing_runs_and_geostatic_settlement_is_exact(pecplas, tmp_path)
     chk = subprocess.run([*CHECKER, out, "--expect-status", "completed"],
                          capture_output=True, text=True)
     assert chk.returncode == 0, chk.stdout + chk.stderr
-    with h5py.File(out) as f:
-        x = f["mesh/coordinates"][:]                      # (nnode, 2)
-        u = f["increments/000001/displacement"][:]       # after gravity only
+    with Results(out) as res:
+        x = res.coordinates                               # (nnode, 2)
+        u = res.field("000001", "displacement")           # after gravity only
         # laterally confined column of depth H = 2 under its own weight: the surface
         # settles gamma H^2 / (2 M) with M = E (1 - nu) / ((1 + nu)(1 - 2 nu)); the
         # quadratic profile is inside the Q8 space, so the agreement is to round-off.
@@ -50,7 +50,7 @@ def test_strip_footing_runs_and_geostatic_settlement_is_exact(pecplas, tmp_path)
         top = np.isclose(x[:, 1], 0.0)
         assert np.allclose(u[top, 1], -gamma * H**2 / (2 * M), rtol=1e-10)
         # vertical reactions balance the weight gamma * H * width (width 4)
-        reac = f["increments/000001/reaction"][:]
+        reac = res.field("000001", "reaction")
         assert np.isclose(reac[:, 1].sum(), gamma * H * 4.0, rtol=1e-10)
 
 
@@ -79,9 +79,9 @@ def test_stopped_run_exit_3_keeps_increments(pecplas, tmp_path):
     chk = subprocess.run([*CHECKER, out, "--expect-status", "diverged"],
                          capture_output=True, text=True)
     assert chk.returncode == 0, chk.stdout + chk.stderr
-    with h5py.File(out) as f:
-        assert f.attrs["complete"] == 0
-        assert len(f["history/step"]) == 2
+    with Results(out) as res:
+        assert not res.complete
+        assert len(res.history("step")) == 2
 
 
 @pytest.mark.parametrize("args,code", [(["--help"], 0), (["--version"], 0), ([], 2),

@@ -19,7 +19,7 @@
 !> replaced only by a finished file and never damaged by a run that dies. Every increment
 !> is flushed into both copies, and the published one is never written: a run killed at any
 !> moment leaves a `.tmp` file flushed after its last whole increment, whose status is
-!> still 'running' and complete = 0; only finish('completed') sets complete = 1.
+!> still 'running' and complete = 0; only finish(RUN_COMPLETED) sets complete = 1.
 !> The final increment of a run (write_increment with `final`) goes into the copy not
 !> published only, which `finish` then completes and renames onto the target: a kill
 !> between that write and the rename (the time of one increment's write) leaves the `.tmp`
@@ -35,6 +35,7 @@ module pecplas_io_results_file
    use hdf5, only: hid_t
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_run_status, only: RUN_COMPLETED, is_run_status, status_name
    use pecplas_base_strings, only: itoa
    use pecplas_base_files, only: rename_file, remove_file, process_id, path_base, free_bytes
    use pecplas_io_results_copies, only: copies_t
@@ -59,11 +60,7 @@ module pecplas_io_results_file
    implicit none (type, external)
    private
 
-   public :: results_file_t, RESULT_STATUSES, temporary_path
-
-   !> Final statuses accepted by `finish`; a file never finished keeps 'running'.
-   character(len=*), parameter :: RESULT_STATUSES(6) = [character(len=11) :: 'completed', &
-      'limit load', 'diverged', 'stopped', 'failed', 'interrupted']
+   public :: results_file_t, temporary_path
 
    !> The running sidecar is rewritten at most every XMF_PERIOD seconds and when its last
    !> write took at most 1/XMF_SHARE of the time since.
@@ -675,11 +672,13 @@ contains
 
    !> Records how the run ended in the copy not published, closes it and renames it onto the
    !> target (then the final XDMF, naming the target), then removes the published copy.
-   !> status: one of RESULT_STATUSES; complete = 1 only for 'completed'. On error the
+   !> status: a run status of pecplas_base_run_status, written as its word (status_name);
+   !> complete = 1 only for RUN_COMPLETED; a file never finished keeps 'running'. On error the
    !> temporary file stays where `working_path` says.
    subroutine results_finish(this, status, message, error)
       class(results_file_t), intent(inout) :: this
-      character(len=*), intent(in) :: status, message
+      integer, intent(in) :: status
+      character(len=*), intent(in) :: message
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: file
       integer :: complete, err
@@ -688,18 +687,18 @@ contains
          call fatal_error(error, 'results file is not open')
          return
       end if
-      if (.not. any(RESULT_STATUSES == status)) then
-         call fatal_error(error, 'results file: unknown status "'//status// &
-            '"; known: completed, limit load, diverged, stopped, failed, interrupted')
+      if (.not. is_run_status(status)) then
+         call fatal_error(error, 'results file: '//itoa(status)//' is no run status '// &
+            '(pecplas_base_run_status)')
          return
       end if
       if (allocated(this%failure)) call test_hook(this, error)
       if (.not. allocated(error) .and. allocated(this%failure)) call check_space(this, error)
       if (allocated(error)) return
       complete = 0
-      if (status == 'completed') complete = 1
+      if (status == RUN_COMPLETED) complete = 1
       file = this%copies%id('next')
-      call h5_attr(file, 'status', status, error)
+      call h5_attr(file, 'status', status_name(status), error)
       if (.not. allocated(error)) call h5_attr(file, 'status_message', message, error)
       if (.not. allocated(error)) call h5_attr(file, 'finished', timestamp(), error)
       if (.not. allocated(error) .and. complete == 1) &

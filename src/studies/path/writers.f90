@@ -8,6 +8,7 @@ module pecplas_studies_path_writers
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
+   use pecplas_base_run_status, only: RUN_COMPLETED, status_name
    use pecplas_io_results_h5, only: h5_init, h5_write, h5_attr, h5_group, h5_close_group, &
       h5_describe
    use pecplas_joints_laws_type, only: MODE_NAMES
@@ -45,16 +46,17 @@ contains
    end subroutine write_path_csv
 
    !> Writes `res` and the run's description to the HDF5 file `path`.
-   !> Root attributes status ('completed' or 'stopped'), complete (1 or 0) and
-   !> status_message say whether the path reached its last target.
+   !> Root attributes status (RUN_COMPLETED, the default, or RUN_STOPPED, written as their
+   !> words), complete (1 or 0) and status_message say whether the path reached its last target.
    subroutine write_path_h5(path, deck, res, version, error, status, message)
       character(len=*), intent(in) :: path, version
       type(path_deck_t), intent(in) :: deck
       type(path_result_t), intent(in) :: res
       type(error_t), allocatable, intent(out) :: error
-      character(len=*), intent(in), optional :: status, message
+      integer, intent(in), optional :: status
+      character(len=*), intent(in), optional :: message
       integer(hid_t) :: file, law
-      integer :: err, i
+      integer :: err, i, ended
       call h5_init(error)
       if (allocated(error)) return
       call h5fcreate_f(path, H5F_ACC_TRUNC_F, file, err)
@@ -62,16 +64,17 @@ contains
          call fatal_error(error, 'cannot create '//path//' (does its directory exist?)')
          return
       end if
+      ended = RUN_COMPLETED
+      if (present(status)) ended = status
       law = -1
       body: block
          call h5_attr(file, 'program', 'pecplas-path '//version, error)
          if (allocated(error)) exit body
          call h5_attr(file, 'deck_file', deck%file, error)
          if (allocated(error)) exit body
-         call h5_attr(file, 'status', optval_text(status, 'completed'), error)
+         call h5_attr(file, 'status', status_name(ended), error)
          if (allocated(error)) exit body
-         call h5_attr(file, 'complete', merge(1, 0, optval_text(status, 'completed') == &
-            'completed'), error)
+         call h5_attr(file, 'complete', merge(1, 0, ended == RUN_COMPLETED), error)
          if (allocated(error)) exit body
          call h5_attr(file, 'status_message', optval_text(message, ''), error)
          if (allocated(error)) exit body
