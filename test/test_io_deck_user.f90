@@ -12,6 +12,7 @@ module test_io_deck_user
    use pecplas_testing, only: unittest_t, new_unittest, check
    use pecplas_fe_loads, only: pattern_vectors
    use pecplas_massif_kinematics, only: massif_rule_t
+   use pecplas_model_refine_refine, only: refine_model
    use fixtures_bad_decks, only: bad, run_bad_cases
    implicit none (type, external)
    private
@@ -30,6 +31,7 @@ contains
                new_unittest('node_of_doublet', test_node_of), &
                new_unittest('depth_pressure_deck', test_depth_pressure), &
                new_unittest('depth_pressure_refused', test_bad_pressure), &
+               new_unittest('depth_pressure_refined', test_depth_refined), &
                new_unittest('gmsh_group_one_name', test_gmsh_group), &
                new_unittest('gmsh_q8r', test_gmsh_q8r), &
                new_unittest('gmsh_forms_refused', test_bad_gmsh)]
@@ -46,7 +48,8 @@ contains
    end subroutine load
 
    !> Five arc-length steps name node 9 or 8 as an id or a set of one node, and the dof as
-   !> Y, z, R, 1, x: each resolves to that node's internal index and dof 2, 2, 1, 1, 1.
+   !> Y, z, R, 1, x: each resolves to that node's internal index and dof 2, 2, 1, 1, 1; FORCE
+   !> and DISPLACEMENT lines and *BOUNDARY take sets and words (Z, x, r) too.
    subroutine test_step_forms(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
@@ -55,12 +58,22 @@ contains
       if (allocated(error)) return
       n9 = findloc(model%mesh%node_id, 9, 1)
       n8 = findloc(model%mesh%node_id, 8, 1)
-      call check(error, size(model%steps) == 5, 'five steps')
+      call check(error, size(model%steps) == 6, 'six steps')
       if (allocated(error)) return
-      call check(error, all(model%steps%node == [n9, n9, n9, n8, n9]), &
+      call check(error, all(model%steps(1:5)%node == [n9, n9, n9, n8, n9]), &
          'NODE=head|9|HEAD|corner|head -> nodes 9 9 9 8 9')
       if (allocated(error)) return
-      call check(error, all(model%steps%dof == [2, 2, 1, 1, 1]), 'DOF=Y|z|R|1|x -> 2 2 1 1 1')
+      call check(error, all(model%steps(1:5)%dof == [2, 2, 1, 1, 1]), &
+         'DOF=Y|z|R|1|x -> 2 2 1 1 1')
+      if (allocated(error)) return
+      ! the DISPLACEMENT on a set of one node with dof x; *BOUNDARY left, r holds x on 1 4 7
+      associate (pat => model%patterns(2))
+         call check(error, size(pat%node) == 1 .and. pat%node(1) == n8 .and. pat%dof(1) == 1, &
+            'DISPLACEMENT corner, x: one entry on node 8, dof 1')
+      end associate
+      if (allocated(error)) return
+      call check(error, count(model%supports%dof == 1) == 5, &
+         'x held on base (nodes 1 2 3) and on left, r (1 4 7): 5 nodes, 1 counted once')
       if (allocated(error)) return
       ! the FORCE on a set of one node with dof Z: one entry, on node 9, along y
       associate (pat => model%patterns(1))
@@ -192,6 +205,34 @@ contains
          'uniform + gradient on two lines = the same on one line')
    end subroutine test_depth_pressure
 
+   !> Refined once (every side halved), the patterns of good_linear_pressure.inp keep their
+   !> resultants, -11.25 (water, cut at y = 1.5, now a node) and -20 (shifted): the halves
+   !> carry the same linear function, integrated exactly (tolerance as in
+   !> test_depth_pressure), and the side's new mid node gets its share.
+   subroutine test_depth_refined(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: TOL = 1.0e-13_wp
+      type(model_t) :: model, fine
+      type(massif_rule_t) :: none(0)
+      real(wp), allocatable :: force(:, :, :), disp(:, :, :)
+      character(len=:), allocatable :: reason
+      call load('good_linear_pressure.inp', model, error)
+      if (allocated(error)) return
+      call refine_model(model, fine, reason)
+      call check(error, .not. allocated(reason), 'refined')
+      if (allocated(error)) return
+      call check(error, size(fine%patterns(1)%pressure) == 4 .and. &
+         size(fine%patterns(1)%pressure_gradient) == 4, 'four half edges with their gradient')
+      if (allocated(error)) return
+      call pattern_vectors(fine, none, force, disp, error)
+      if (allocated(error)) return
+      call check(error, abs(sum(force(1, :, 1)) + 11.25_wp) <= TOL*11.25_wp .and. &
+         abs(sum(force(2, :, 1))) <= TOL*11.25_wp, 'water: resultant -11.25 along x')
+      if (allocated(error)) return
+      call check(error, abs(sum(force(1, :, 2)) + 20.0_wp) <= TOL*20.0_wp, &
+         'shifted: resultant -20 along x')
+   end subroutine test_depth_refined
+
    !> Three fields on a pressure line, MIN= on a force pattern: input errors at the line.
    subroutine test_bad_pressure(error)
       type(error_t), allocatable, intent(out) :: error
@@ -206,6 +247,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       integer :: q, t
+      integer, allocatable :: sets(:)
       call load('good_gmsh_group.inp', model, error)
       if (allocated(error)) return
       q = model%mesh%find_eset('soil_Q4')
@@ -220,7 +262,8 @@ contains
       if (allocated(error)) return
       call check(error, size(model%initial_stresses) == 2, 'one initial stress line per part')
       if (allocated(error)) return
-      call check(error, same_two(model%initial_stresses%eset, q, t), 'initial stress on both')
+      sets = model%initial_stresses%eset
+      call check(error, same_two(sets, q, t), 'initial stress on both')
       if (allocated(error)) return
       call check(error, same_two(model%patterns(1)%eset, q, t), 'body force on both parts')
    end subroutine test_gmsh_group
