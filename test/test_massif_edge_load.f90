@@ -266,6 +266,16 @@ contains
       call check(error, close(fe3, [-45.0_wp/16, 0.0_wp, 315.0_wp/16, 0.0_wp, 225.0_wp/8, &
          0.0_wp]), '3-node cut: -45/16, 315/16, 225/8')
       if (allocated(error)) return
+      ! the mid node off the middle, (0, 2.6): y(s), and p(s), are quadratic in s, the cut a
+      ! root of a quadratic; on the same straight line the resultant is 45 and the moment
+      ! about the top sum F_i (4 - y_i) = int p (4 - y) dy = 10 int_0^3 (3 - y)(4 - y) = 135
+      call edge_linear_pressure_forces(PLANE_STRAIN, 1.0_wp, reshape([x2, 0.0_wp, 2.6_wp], &
+         [2, 3]), 0.0_wp, 10.0_wp, 3.0_wp, fe3, error, p_min=0.0_wp)
+      if (allocated(error)) return
+      call check(error, abs(fe3(1) + fe3(3) + fe3(5) - 45.0_wp) <= TOL*45.0_wp .and. &
+         abs(4*fe3(3) + (4 - 2.6_wp)*fe3(5) - 135.0_wp) <= TOL*135.0_wp .and. &
+         all(fe3(2:6:2) == 0.0_wp), 'off-centre mid node: resultant 45, moment 135')
+      if (allocated(error)) return
       call edge_linear_pressure_forces(PLANE_STRAIN, 1.0_wp, x2, 0.0_wp, 10.0_wp, 3.0_wp, fe2, &
          error)
       if (allocated(error)) return
