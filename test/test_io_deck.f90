@@ -4,6 +4,8 @@
 !> must come back to the last bit, see `near`; a normalised direction to rounding).
 module test_io_deck
    use pecplas_base_kinds, only: wp
+   use pecplas_model_loads, only: LOAD_GRAVITY, LOAD_PRESSURE, LOAD_FORCE, LOAD_DISPLACEMENT, &
+      LOAD_BODY_FORCE
    use pecplas_base_error, only: error_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_type, only: model_t
@@ -139,19 +141,19 @@ contains
       call check(error, size(model%patterns) == 3, 'three patterns')
       if (allocated(error)) return
       associate (p => model%patterns(1))
-         call check(error, p%name == 'weight' .and. p%kind == 'GRAVITY' .and. &
+         call check(error, p%name == 'weight' .and. p%kind == LOAD_GRAVITY .and. &
             all(p%eset == [1]) .and. all(near(p%vector(:, 1), [0.0_wp, -1.0_wp])), &
             'GRAVITY ALL defaults to direction (0, -1)')
          if (allocated(error)) return
       end associate
       associate (p => model%patterns(2))
-         call check(error, p%kind == 'PRESSURE' .and. size(p%edge, 2) == 2 .and. &
+         call check(error, p%kind == LOAD_PRESSURE .and. size(p%edge, 2) == 2 .and. &
             all(near(p%pressure, 10.0_wp)) .and. all(ids(model, p%edge(1:2, 2)) == [8, 7]) .and. &
             all(p%edge(3, :) == 0), 'PRESSURE on the 2 oriented edges of top, third node 0')
          if (allocated(error)) return
       end associate
       associate (p => model%patterns(3))
-         call check(error, p%kind == 'FORCE' .and. all(ids(model, p%node) == [9]) .and. &
+         call check(error, p%kind == LOAD_FORCE .and. all(ids(model, p%node) == [9]) .and. &
             all(p%dof == [2]) .and. all(near(p%value, [-5.0_wp])), 'FORCE 9, Y, -5')
       end associate
    end subroutine test_block_loads
@@ -251,12 +253,12 @@ contains
          if (allocated(error)) return
       end associate
       associate (p => model%patterns(2))
-         call check(error, p%kind == 'DISPLACEMENT' .and. all(ids(model, p%node) == [6]) .and. &
+         call check(error, p%kind == LOAD_DISPLACEMENT .and. all(ids(model, p%node) == [6]) .and. &
             all(p%dof == 1) .and. all(near(p%value, 1.0e-3_wp)), 'DISPLACEMENT 6, 1, 1e-3')
          if (allocated(error)) return
       end associate
       associate (p => model%patterns(3))
-         call check(error, p%kind == 'BODY_FORCE' .and. all(p%eset == [1]) .and. &
+         call check(error, p%kind == LOAD_BODY_FORCE .and. all(p%eset == [1]) .and. &
             all(near(p%vector(:, 1), [3.0_wp, 0.0_wp])), 'BODY_FORCE ALL, 3, 0')
          if (allocated(error)) return
       end associate
@@ -340,8 +342,8 @@ contains
       call check(error, model%mesh%nnode() == 37 .and. model%mesh%nelem() == 8 .and. &
          model%mesh%esets(1)%etype == 'Q8', '37 nodes, 8 Q8')
       if (allocated(error)) return
-      call check(error, model%patterns(1)%kind == 'GRAVITY' .and. &
-         model%patterns(2)%kind == 'PRESSURE' .and. size(model%steps) == 2, &
+      call check(error, model%patterns(1)%kind == LOAD_GRAVITY .and. &
+         model%patterns(2)%kind == LOAD_PRESSURE .and. size(model%steps) == 2, &
          'gravity step, then pressure step')
       if (allocated(error)) return
       ! the footing edge runs from (1, 0) to (0, 0), mid-node at (0.5, 0)

@@ -7,7 +7,7 @@ module test_io_results_data
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: element_set_t, node_set_t, edge_set_t
-   use pecplas_model_loads, only: load_pattern_t
+   use pecplas_model_loads, only: load_pattern_t, LOAD_GRAVITY, LOAD_FORCE
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t
    implicit none (type, external)
    private
@@ -48,9 +48,9 @@ contains
       model%mesh%edge_sets(1) = edge_set_t(name='TOP', nodes=reshape([6, 5, 5, 4], [2, 2]))
       allocate (model%patterns(2))
       model%patterns(1)%name = 'WEIGHT'
-      model%patterns(1)%kind = 'GRAVITY'
+      model%patterns(1)%kind = LOAD_GRAVITY
       model%patterns(2)%name = 'HEAD_LOAD'
-      model%patterns(2)%kind = 'FORCE'
+      model%patterns(2)%kind = LOAD_FORCE
    end function sample_model
 
    !> Gauss coordinates: 4 points per Q4 (element centre +- 1/sqrt(12)), 1 per T3.

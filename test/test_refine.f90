@@ -5,6 +5,7 @@
 !> their reason.
 module test_refine
    use pecplas_base_run_status, only: RUN_COMPLETED, status_name
+   use pecplas_model_loads, only: LOAD_FORCE, load_pattern_t
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
@@ -160,6 +161,7 @@ contains
       type(model_t) :: model, fine
       character(len=:), allocatable :: reason
       integer :: n
+      type(load_pattern_t), allocatable :: pats(:)
       call read_refine('input/examples/strip_footing.inp', model, fine, reason, error)
       if (allocated(error)) return
       call check(error, .not. allocated(reason), 'strip footing (Q8) refines')
@@ -181,9 +183,13 @@ contains
       call read_deck(DATA//'patch_goodman4_plane.inp', model, error)
       if (allocated(error)) return
       n = size(model%patterns)
-      model%patterns = [model%patterns, model%patterns(n)]
+      ! (not an array constructor: gfortran 12 frees the components of such a copy twice)
+      allocate (pats(n + 1))
+      pats(1:n) = model%patterns
+      pats(n + 1) = model%patterns(n)
+      call move_alloc(pats, model%patterns)
       model%patterns(n + 1)%name = 'f'
-      model%patterns(n + 1)%kind = 'FORCE'
+      model%patterns(n + 1)%kind = LOAD_FORCE
       model%patterns(n + 1)%node = [findloc(model%mesh%node_id, 10, 1), &
          findloc(model%mesh%node_id, 11, 1)]
       model%patterns(n + 1)%dof = [2, 2]

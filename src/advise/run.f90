@@ -4,6 +4,7 @@
 !> afterwards (its writing time is not counted).
 module pecplas_advise_run
    use pecplas_base_kinds, only: wp, ik8
+   use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_base_run_status, only: RUN_NOT_RUN, RUN_COMPLETED, RUN_FAILED
    use pecplas_base_error, only: error_t, input_error
    use pecplas_base_version, only: VERSION
@@ -114,7 +115,7 @@ contains
       do s = 1, size(model%steps)
          associate (st => model%steps(s))
             do j = 1, size(st%pattern)
-               if (model%patterns(st%pattern(j))%kind /= 'GRAVITY') return
+               if (model%patterns(st%pattern(j))%kind /= LOAD_GRAVITY) return
             end do
          end associate
       end do

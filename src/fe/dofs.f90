@@ -2,6 +2,7 @@
 !> constrained and eliminated from the system of equations.
 module pecplas_fe_dofs
    use pecplas_base_error, only: error_t, input_error
+   use pecplas_model_loads, only: LOAD_DISPLACEMENT
    use pecplas_model_type, only: model_t
    implicit none (type, external)
    private
@@ -57,7 +58,7 @@ contains
       end if
       if (allocated(model%patterns)) then
          do i = 1, size(model%patterns)
-            if (model%patterns(i)%kind /= 'DISPLACEMENT') cycle
+            if (model%patterns(i)%kind /= LOAD_DISPLACEMENT) cycle
             do k = 1, size(model%patterns(i)%node)
                fixed(model%patterns(i)%dof(k), model%patterns(i)%node(k)) = .true.
             end do

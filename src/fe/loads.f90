@@ -2,6 +2,7 @@
 !> edge pressures, body forces, gravity) and imposed displacements.
 module pecplas_fe_loads
    use pecplas_base_kinds, only: wp
+   use pecplas_model_loads, only: LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: load_pattern_t
@@ -32,15 +33,15 @@ contains
       do p = 1, npat
          associate (pat => model%patterns(p))
             select case (pat%kind)
-            case ('FORCE')
+            case (LOAD_FORCE)
                do k = 1, size(pat%node)
                   force(pat%dof(k), pat%node(k), p) = force(pat%dof(k), pat%node(k), p) + pat%value(k)
                end do
-            case ('DISPLACEMENT')
+            case (LOAD_DISPLACEMENT)
                do k = 1, size(pat%node)
                   displacement(pat%dof(k), pat%node(k), p) = pat%value(k)
                end do
-            case ('PRESSURE')
+            case (LOAD_PRESSURE)
                do k = 1, size(pat%pressure)
                   nen = merge(3, 2, pat%edge(3, k) > 0)
                   call pressure_forces(model, pat, k, model%mesh%x(:, pat%edge(1:nen, k)), &
@@ -49,10 +50,10 @@ contains
                   force(:, pat%edge(1:nen, k), p) = force(:, pat%edge(1:nen, k), p) + &
                      reshape(fe(1:2*nen), [2, nen])
                end do
-            case ('BODY_FORCE', 'GRAVITY')
+            case (LOAD_BODY_FORCE, LOAD_GRAVITY)
                do k = 1, size(pat%eset)
                   call add_body_force(model, rules, pat%eset(k), pat%vector(:, k), &
-                     pat%kind == 'GRAVITY', force(:, :, p), error)
+                     pat%kind == LOAD_GRAVITY, force(:, :, p), error)
                   if (allocated(error)) return
                end do
             end select

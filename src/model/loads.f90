@@ -8,16 +8,20 @@ module pecplas_model_loads
    private
 
    public :: load_pattern_t, step_t, support_t
-   public :: LOAD_KINDS
+   public :: LOAD_KINDS, load_kind
 
-   !> Kinds of pattern, as written in the deck (*LOAD, TYPE=...).
+   !> Kinds of pattern; LOAD_KINDS(k) is the deck word of kind k (*LOAD, TYPE=...).
+   enum, bind(c)
+      enumerator :: LOAD_FORCE = 1, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
+   end enum
+   public :: LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
    character(len=*), parameter :: LOAD_KINDS(5) = [character(len=12) :: 'FORCE', 'PRESSURE', &
       'BODY_FORCE', 'GRAVITY', 'DISPLACEMENT']
 
    type :: load_pattern_t
       character(len=:), allocatable :: name
-      !> One of LOAD_KINDS.
-      character(len=:), allocatable :: kind
+      !> LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY or LOAD_DISPLACEMENT.
+      integer :: kind = 0
       !> FORCE / DISPLACEMENT: one entry per (node, dof): value = force or displacement
       !> at factor 1. dof 1 = x (r), 2 = y (z).
       integer, allocatable :: node(:), dof(:)
@@ -63,5 +67,17 @@ module pecplas_model_loads
       character(len=:), allocatable :: file
       integer :: line = 0
    end type step_t
+
+contains
+
+   !> The kind whose deck word is `word` (upper case, as in LOAD_KINDS); 0 for none.
+   pure integer function load_kind(word) result(kind)
+      character(len=*), intent(in) :: word
+      integer :: k
+      kind = 0
+      do k = 1, size(LOAD_KINDS)
+         if (trim(LOAD_KINDS(k)) == trim(word)) kind = k
+      end do
+   end function load_kind
 
 end module pecplas_model_loads

@@ -23,7 +23,7 @@ module pecplas_solve_increments
       RUN_INTERRUPTED
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
-   use pecplas_model_loads, only: step_t
+   use pecplas_model_loads, only: step_t, LOAD_DISPLACEMENT
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
@@ -334,7 +334,7 @@ contains
       if (.not. ok) return
       ok = .false.
       do p = 1, size(f0)
-         if (model%patterns(p)%kind == 'DISPLACEMENT') then
+         if (model%patterns(p)%kind == LOAD_DISPLACEMENT) then
             if (ftarget(p) /= f0(p)) then
                ok = .false.
                return

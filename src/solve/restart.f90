@@ -8,6 +8,7 @@
 !> its next iterations solve with (item `operators`: see pack_restart).
 module pecplas_solve_restart
    use pecplas_base_kinds, only: wp
+   use pecplas_model_loads, only: LOAD_DISPLACEMENT
    use pecplas_base_error, only: error_t, input_error, fatal_error
    use pecplas_base_strings, only: itoa
    use pecplas_model_type, only: model_t
@@ -429,7 +430,7 @@ contains
          carried = carried .or. model%steps(i)%arc_length
       end do
       if (allocated(model%patterns)) carried = carried .or. &
-         any([(model%patterns(i)%kind == 'DISPLACEMENT', i=1, size(model%patterns))])
+         any([(model%patterns(i)%kind == LOAD_DISPLACEMENT, i=1, size(model%patterns))])
    end function tangents_carried
 
    subroutine get3(data, name, a, error)

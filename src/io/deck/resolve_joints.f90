@@ -9,6 +9,7 @@
 !> Springs get their tributary measure and tangent from the joint edges around them.
 module pecplas_io_deck_resolve_joints
    use pecplas_base_kinds, only: wp
+   use pecplas_model_loads, only: LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_base_error, only: error_t
    use pecplas_io_text_fields, only: same_name, add_name, itoa
    use pecplas_io_deck_state, only: deck_state_t, line_error, where_text
@@ -273,7 +274,7 @@ contains
       do p = 1, size(model%patterns)
          associate (pat => model%patterns(p))
             select case (pat%kind)
-            case ('DISPLACEMENT')
+            case (LOAD_DISPLACEMENT)
                n = size(pat%node)
                do k = 1, n
                   if (dupof(pat%node(k)) == 0) cycle
@@ -281,7 +282,7 @@ contains
                   pat%dof = [pat%dof, pat%dof(k)]
                   pat%value = [pat%value, pat%value(k)]
                end do
-            case ('PRESSURE')
+            case (LOAD_PRESSURE)
                call remap_side_edges(model%mesh, ks, dupof, pat%edge)
             end select
          end associate

@@ -7,7 +7,7 @@ module pecplas_io_deck_resolve_loads
    use pecplas_io_deck_state, only: deck_state_t, raw_item_t, raw_step_t, line_error
    use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: mesh_t
-   use pecplas_model_loads, only: load_pattern_t, step_t
+   use pecplas_model_loads, only: load_pattern_t, step_t, load_kind, LOAD_DISPLACEMENT
    use pecplas_base_strings, only: itoa
    implicit none (type, external)
    private
@@ -82,7 +82,7 @@ contains
       do p = 1, size(state%patterns)
          associate (raw => state%patterns(p), pat => model%patterns(p))
             pat%name = raw%name
-            pat%kind = raw%kind
+            pat%kind = load_kind(raw%kind)
             allocate (pat%node(0), pat%dof(0), pat%value(0), pat%edge(3, 0), pat%pressure(0), &
                pat%pressure_gradient(0), pat%pressure_y_ref(0), pat%eset(0), pat%vector(2, 0))
             pat%floored = raw%floored
@@ -211,7 +211,7 @@ contains
       character(len=:), allocatable :: msg
       force = .false.
       do i = 1, size(step%pattern)
-         if (model%patterns(step%pattern(i))%kind == 'DISPLACEMENT') then
+         if (model%patterns(step%pattern(i))%kind == LOAD_DISPLACEMENT) then
             call line_error(state, raw%items(i)%at, "CONTROL=ARC_LENGTH scales force "// &
                "patterns only; '"//model%patterns(step%pattern(i))%name//"' is a displacement "// &
                'pattern (load control follows imposed displacements: give it a step of its own)', &

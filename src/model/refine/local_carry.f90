@@ -2,6 +2,7 @@
 !> joints, node sets, edge sets, supports and loads, from the nodes made on split sides.
 module pecplas_model_refine_local_carry
    use pecplas_base_kinds, only: wp
+   use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_type, only: model_t
    use pecplas_model_refine_local_edges, only: local_edges_t, edge_of
    implicit none (type, external)
@@ -229,16 +230,16 @@ contains
       do p = 1, size(model%patterns)
          associate (pat => model%patterns(p), fp => fine%patterns(p))
             select case (pat%kind)
-            case ('FORCE')
+            case (LOAD_FORCE)
                if (both_ends_split(le, pat%node, pat%dof)) then
                   reason = 'nodal loads on a refined set ('//pat%name//')'
                   return
                end if
-            case ('DISPLACEMENT')
+            case (LOAD_DISPLACEMENT)
                call carry_nodal(le, pat%node, pat%dof, pat%value, fp%node, fp%dof, reason, &
                   fp%value)
                if (allocated(reason)) return
-            case ('PRESSURE')
+            case (LOAD_PRESSURE)
                call split_pressure(le, pat%edge, pat%pressure, fp%edge, fp%pressure)
                ! a pressure linear in y is the same function on the halves of a side
                if (allocated(pat%pressure_gradient)) then
