@@ -97,20 +97,18 @@ contains
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
       type(initial_stress_t), allocatable :: out(:)
-      integer, allocatable :: parts(:)
-      integer :: i, k
+      integer, allocatable :: nparts(:), parts(:)
+      integer :: i, k, n
       character(len=:), allocatable :: list
       if (.not. allocated(model%initial_stresses)) return
-      allocate (out(0))
+      ! the parts of each line (one: a set or ALL), then one entry per part, element by
+      ! element (no array constructor of the type: its allocatable components)
+      allocate (nparts(size(model%initial_stresses)), source=1)
       do i = 1, size(model%initial_stresses)
          associate (init => model%initial_stresses(i))
-            if (upper(init%set) == 'ALL') then
-               init%eset = 0
-               out = [out, init]
-               cycle
-            end if
-            parts = model%mesh%find_esets(init%set)
-            if (size(parts) == 0) then
+            if (upper(init%set) == 'ALL') cycle
+            nparts(i) = size(model%mesh%find_esets(init%set))
+            if (nparts(i) == 0) then
                list = ''
                do k = 1, size(model%mesh%esets)
                   call add_name(list, model%mesh%esets(k)%name)
@@ -119,10 +117,24 @@ contains
                   "undefined element set '"//init%set//"'; known element sets: ALL"//list, error)
                return
             end if
+         end associate
+      end do
+      allocate (out(sum(nparts)))
+      n = 0
+      do i = 1, size(model%initial_stresses)
+         associate (init => model%initial_stresses(i))
+            if (upper(init%set) == 'ALL') then
+               n = n + 1
+               out(n) = init
+               out(n)%eset = 0
+               cycle
+            end if
+            parts = model%mesh%find_esets(init%set)
             do k = 1, size(parts)
-               init%eset = parts(k)
-               init%set = model%mesh%esets(parts(k))%name
-               out = [out, init]
+               n = n + 1
+               out(n) = init
+               out(n)%eset = parts(k)
+               out(n)%set = model%mesh%esets(parts(k))%name
             end do
          end associate
       end do
