@@ -15,9 +15,8 @@ module pecplas_model_adapt_request
    integer, parameter :: GOAL_ENERGY = 0, GOAL_NODE = 1, GOAL_REACTION = 2, GOAL_LIMIT = 3
 
    !> The accepted goal forms, for error messages.
-   character(len=*), parameter :: GOAL_FORMS = 'energy, node:N:x, node:N:y (N a node id or '// &
-      'a node set of one node), reaction:SET, reaction:SET:x, reaction:SET:y (r, z, 1, 2 for '// &
-      'x, y) or limit'
+   character(len=*), parameter :: GOAL_FORMS = 'energy, node:N:x, node:N:y, reaction:SET, '// &
+      'reaction:SET:x, reaction:SET:y (r, z, 1, 2 for x, y) or limit'
 
    type :: adapt_request_t
       !> True when the deck has *ADAPT.
@@ -73,7 +72,8 @@ contains
          goal%kind = GOAL_LIMIT
          return
       end if
-      msg = 'expected '//GOAL_FORMS//", got '"//t//"'"
+      msg = 'expected '//GOAL_FORMS//", got '"//t//"' (N: a node id or a node set of one "// &
+         'node)'
       if (index(t, 'node:') == 1) then
          rest = t(6:)
          q = index(rest, ':')
@@ -133,8 +133,8 @@ contains
       else
          write (buf, '(i0)') goal%node_id
          call mesh%node_of(trim(buf), inode, msg)
+         if (allocated(msg)) msg = 'the deck has no node '//trim(buf)
       end if
-      if (allocated(msg)) msg = 'GOAL node: '//msg
    end subroutine goal_node_index
 
    !> The node and energy goals only (node_id 0: energy), for callers that take no other

@@ -238,7 +238,7 @@ contains
       select case (goal%kind)
       case (GOAL_NODE)
          call goal_node_index(goal, model%mesh, inode, msg)
-         if (inode == 0) call line_error(state, model%adapt%at, msg, error)
+         if (inode == 0) call line_error(state, model%adapt%at, 'GOAL: '//msg, error)
       case (GOAL_REACTION)
          if (model%mesh%find_nset(goal%set) == 0) call line_error(state, model%adapt%at, &
             "GOAL: expected reaction:SET with SET a node set of the deck (*NSET), no set '"// &
