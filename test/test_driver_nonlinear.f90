@@ -166,6 +166,7 @@ contains
    subroutine test_arc_root(error)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: dtau
+      real(wp), allocatable :: du_prev(:)
       logical :: ok
       call arc_root([1.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp], 1.0_wp, dtau, ok)
       call check(error, ok, 'real roots')
@@ -183,8 +184,14 @@ contains
       call arc_root([0.0_wp, 0.0_wp], [0.0_wp, 2.0_wp], [1.0_wp, 0.0_wp], 1.0_wp, dtau, ok)
       call check(error, ok .and. abs(dtau) < 1.0e-14_wp, 'no real root: the vertex -b/2a = 0')
       if (allocated(error)) return
-      call check(error, arc_predictor_sign([1.0_wp, -1.0_wp], [-1.0_wp, 0.0_wp]) < 0.0_wp, &
+      du_prev = [1.0_wp, -1.0_wp]
+      call check(error, arc_predictor_sign(du_prev, [-1.0_wp, 0.0_wp]) < 0.0_wp, &
          'predictor follows the previous increment')
+      if (allocated(error)) return
+      ! the first increment of a path: no previous increment, the load rises
+      deallocate (du_prev)
+      call check(error, arc_predictor_sign(du_prev, [-1.0_wp, 0.0_wp]) > 0.0_wp, &
+         'no previous increment: the predictor raises the load')
    end subroutine test_arc_root
 
    subroutine test_adapt(error)

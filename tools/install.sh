@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `make install PREFIX=DIR` (default ~/.local): builds the release profile with fpm and puts
-# pecplas, pecplas-path, pecplas-identify, pecplas-sensitivity and pecplas-sweep (the Python
-# sweep tool, tools/pecplas_py/programs/pecplas_sweep.py, stand-alone) into DIR/bin. fpm install
+# pecplas, pecplas-path, pecplas-identify, pecplas-sensitivity, pecplas-sweep and pecplas-plot
+# (the Python sweep and picture tools, tools/pecplas_py/programs/pecplas_{sweep,plot}.py, each
+# stand-alone) into DIR/bin. fpm install
 # would also install the benchmark programs, so it installs into a staging directory and only
 # the four are copied.
 set -euo pipefail
@@ -18,7 +19,8 @@ for p in "${PROGRAMS[@]}"; do
   install -m 755 "$stage/bin/$p" "$prefix/bin/$p"
 done
 install -m 755 tools/pecplas_py/programs/pecplas_sweep.py "$prefix/bin/pecplas-sweep"
-echo "installed into $prefix/bin: ${PROGRAMS[*]} pecplas-sweep"
+install -m 755 tools/pecplas_py/programs/pecplas_plot.py "$prefix/bin/pecplas-plot"
+echo "installed into $prefix/bin: ${PROGRAMS[*]} pecplas-sweep pecplas-plot"
 case ":$PATH:" in
   *":$prefix/bin:"*) ;;
   *) echo "note: $prefix/bin is not on PATH (add: export PATH=\"$prefix/bin:\$PATH\")" ;;

@@ -3,19 +3,30 @@
 !> (wall seconds), so the logic is testable without waiting:
 !>   call eta%start(wall_time(), total_increments)
 !>   ... after each increment:  if (eta%due(wall_time())) print *, eta%line(done, wall_time())
+!> A run of steps whose end is not a count of increments (cuts, arc-length) estimates per
+!> step from a measure of the way done (the step fraction, a displacement towards its target):
+!>   call eta%begin_step(istep, clock_at_step_start, measure_at_step_start)
+!>   left = eta%step_left(measure_now, measure_target, now)     ! -1: no estimate
 module pecplas_base_progress_eta
    use pecplas_base_kinds, only: wp
    implicit none (type, external)
    private
 
-   public :: progress_eta_t
+   public :: progress_eta_t, duration
 
    type :: progress_eta_t
       !> Clock at start and at the last line printed; seconds between lines.
       real(wp) :: t0 = 0.0_wp, last = 0.0_wp, interval = 5.0_wp
       !> Increments planned (all steps, before cuts).
       integer :: total = 0
+      !> The step under way (0 none), the clock and the measure of the way done at its start.
+      integer :: step = 0
+      real(wp) :: t_step = 0.0_wp, m_start = 0.0_wp
+      !> Clock at the last accepted increment (the start of the next step, if it ends one).
+      real(wp) :: t_last = 0.0_wp
    contains
+      procedure :: begin_step => eta_begin_step
+      procedure :: step_left => eta_step_left
       procedure :: start => eta_start
       procedure :: due => eta_due
       procedure :: remaining => eta_remaining
@@ -32,6 +43,8 @@ contains
       real(wp), intent(in), optional :: interval
       this%t0 = now
       this%last = now
+      this%t_last = now
+      this%step = 0
       this%total = max(total, 0)
       if (present(interval)) this%interval = max(interval, 0.0_wp)
    end subroutine eta_start
@@ -74,6 +87,30 @@ contains
          s = s//trim(b)
       end if
    end function eta_line
+
+   !> Starts step `step` at clock `now` with the measure of the way done `m_start`.
+   pure subroutine eta_begin_step(this, step, now, m_start)
+      class(progress_eta_t), intent(inout) :: this
+      integer, intent(in) :: step
+      real(wp), intent(in) :: now, m_start
+      this%step = step
+      this%t_step = now
+      this%m_start = m_start
+   end subroutine eta_begin_step
+
+   !> Seconds left in the step when its measure is `m` of `target` at `now`, at the mean rate
+   !> since the step began: -1 (not known) when the measure has not moved towards the target
+   !> (or the target is where the step began); 0 at or past the target.
+   pure real(wp) function eta_step_left(this, m, target, now) result(left)
+      class(progress_eta_t), intent(in) :: this
+      real(wp), intent(in) :: m, target, now
+      real(wp) :: done
+      left = -1.0_wp
+      if (target == this%m_start) return
+      done = (m - this%m_start)/(target - this%m_start)
+      if (.not. (done > 0.0_wp)) return
+      left = max(now - this%t_step, 0.0_wp)*max(1.0_wp - done, 0.0_wp)/done
+   end function eta_step_left
 
    !> "34 s", "4.1 min", "2.3 h".
    pure function duration(t) result(s)

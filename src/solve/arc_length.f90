@@ -67,10 +67,15 @@ contains
       ok = dtau == dtau
    end subroutine arc_root
 
-   !> Sign of the predictor: along the previous converged increment.
+   !> Sign of the predictor: along the previous converged increment; +1 (the load rises)
+   !> when there is none, as at the first increment of a path, whose caller holds `du_prev`
+   !> unallocated (an allocatable dummy: an unallocated actual is then defined behaviour; it
+   !> crashed the release build at the first increment of a second arc-length step).
    pure real(wp) function arc_predictor_sign(du_prev, vq) result(s)
-      real(wp), intent(in) :: du_prev(:), vq(:)
+      real(wp), allocatable, intent(in) :: du_prev(:)
+      real(wp), intent(in) :: vq(:)
       s = 1.0_wp
+      if (.not. allocated(du_prev)) return
       if (size(du_prev) == size(vq)) then
          if (dot_product(du_prev, vq) < 0.0_wp) s = -1.0_wp
       end if

@@ -23,6 +23,7 @@ module pecplas_solve_attempts
    use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_base_strings, only: itoa
    use pecplas_base_progress_eta, only: progress_eta_t
+   use pecplas_solve_progress, only: begin_progress, progress_text
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: limit_point_t
    implicit none (type, external)
@@ -42,7 +43,8 @@ module pecplas_solve_attempts
       real(wp) :: k_first = 0.0_wp
       !> Where the load had its maximum, when the run stops at a limit load.
       type(limit_point_t) :: limit
-      !> Time-left estimate, printed every few seconds of a long run (not with --quiet).
+      !> The progress line's clock and estimate (pecplas_solve_progress), printed every few
+      !> seconds of a long run (not with --quiet).
       type(progress_eta_t) :: eta
    end type run_t
 
@@ -135,8 +137,12 @@ contains
       logical, intent(in) :: last
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: final
-      real(wp) :: t_now, t_out
+      real(wp) :: t_now, t_out, clock
       character(len=:), allocatable :: how
+      ! the first increment of a step: its estimate starts from the state before it, when the
+      ! last increment was accepted
+      if (run%eta%step /= istep) call begin_progress(model, istep, att%tau0, problem%state%u, &
+         run%eta%t_last, run%eta)
       problem%stats%increments = problem%stats%increments + 1
       problem%stats%by_method(method) = problem%stats%by_method(method) + 1
       if (control == 1) problem%stats%arc_increments = problem%stats%arc_increments + 1
@@ -151,6 +157,8 @@ contains
          out%residual, t_now - run%cpu_start, reaction, last, &
          [method, out%line_searches, control], error, final)
       problem%stats%time%output = problem%stats%time%output + (wall_time() - t_out)
+      clock = wall_time()
+      run%eta%t_last = clock
       if (allocated(error)) return
       if (run%quiet) return
       how = ''
@@ -158,8 +166,8 @@ contains
       if (out%line_searches > 0) how = how//'  ls '//itoa(out%line_searches)
       if (control == 1) how = how//'  arc'
       call progress_line(model, problem, istep, inc, out%tau, out%iterations, out%residual, how)
-      if (run%eta%due(wall_time())) write (*, '(a)') ' progress: '// &
-         run%eta%line(problem%stats%increments, wall_time())
+      if (run%eta%due(clock)) write (*, '(a)') ' progress: '//progress_text(model, istep, inc, &
+         out%tau, problem%state%factors, problem%state%u, control == 1, run%eta, clock)
    end subroutine accept_increment
 
 end module pecplas_solve_attempts

@@ -1,5 +1,5 @@
 """Installation: `cmake --install` of the CMake build into a temporary prefix puts the four
-programs and pecplas-sweep into PREFIX/bin; the installed pecplas runs the default deck and
+programs, pecplas-sweep and pecplas-plot into PREFIX/bin; the installed pecplas runs the default deck and
 reports its version and libraries (README, doc/build.md). `make test` builds with CMake first
 and sets PECPLAS_BIN to that build's pecplas; without it the test is skipped."""
 import os
@@ -11,7 +11,8 @@ import pytest
 from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
-PROGRAMS = ["pecplas", "pecplas-path", "pecplas-identify", "pecplas-sensitivity", "pecplas-sweep"]
+PROGRAMS = ["pecplas", "pecplas-path", "pecplas-identify", "pecplas-sensitivity", "pecplas-sweep",
+            "pecplas-plot"]
 
 
 @pytest.fixture(scope="module")
@@ -27,7 +28,7 @@ def prefix(tmp_path_factory):
 
 
 def test_installed_programs(prefix):
-    """Exactly the five programs, executable (no benchmark or test program)."""
+    """Exactly the six programs, executable (no benchmark or test program)."""
     assert sorted(q.name for q in (prefix / "bin").iterdir()) == sorted(PROGRAMS)
     assert all(os.access(prefix / "bin" / q, os.X_OK) for q in PROGRAMS)
 
@@ -70,3 +71,10 @@ def test_installed_sweep_help(prefix):
     r = subprocess.run([str(prefix / "bin/pecplas-sweep"), "--help"], capture_output=True,
                        text=True)
     assert r.returncode == 0 and "collect" in r.stdout
+
+
+def test_installed_plot_help(prefix):
+    """pecplas-plot is installed as a script that runs with the system Python."""
+    r = subprocess.run([str(prefix / "bin/pecplas-plot"), "--help"], capture_output=True,
+                       text=True)
+    assert r.returncode == 0 and "--range-set" in r.stdout

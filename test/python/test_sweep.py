@@ -2,6 +2,7 @@
 the collector, the Slurm job-array script and the input errors (doc/sweep.md)."""
 import csv
 import json
+import re
 import subprocess
 from pathlib import Path
 
@@ -131,3 +132,47 @@ def test_examples_are_in_sync(tmp_path):
     for p in sorted(tmp_path.rglob("*.*")):
         rel = p.relative_to(tmp_path)
         assert p.read_text() == (ROOT / "input/sweeps" / rel).read_text(), rel
+
+
+def test_run_reports_each_case(tmp_path):
+    """`run` says when each case starts, how it progresses and how it ends, one line each,
+    before the sweep ends: with --progress 0 every increment of a case is reported, so each
+    of the 2 cases (2 and 3 increments of one force step, one at a time) has its start line,
+    then one progress line per increment (its step, increment and fraction: 1/n ... 1), then
+    its end line with the exit code and the run's status."""
+    exe = pecplas_cmd()
+    if len(exe) != 1:
+        pytest.skip("needs the pecplas executable (PECPLAS_BIN)")
+    src = ROOT / "test/data/progress"
+    template = tmp_path / "deck.inp"
+    template.write_text((src / "load.inp").read_text()
+                        .replace("FILE=block.inc", f"FILE={src / 'block.inc'}")
+                        .replace("*STEP, NAME=first, INCREMENTS=4", "*STEP, NAME=first, "
+                                 "INCREMENTS={{N}}")
+                        .split("*STEP, NAME=second")[0])
+    table = tmp_path / "table.csv"
+    table.write_text("case,N\ntwo,2\nthree,3\n")
+    r = sweep("make", template, table, "-o", tmp_path / "cases")
+    assert r.returncode == 0, r.stderr
+    r = sweep("run", tmp_path / "cases", "--pecplas", exe[0], "--progress", "0")
+    assert r.returncode == 0, r.stdout + r.stderr
+    # (a case that runs past 10 s, on a loaded machine, also passes on the run's own
+    # `progress:` lines, which name the increment otherwise: they are left out here)
+    lines = [ln for ln in r.stdout.splitlines() if ln.startswith("pecplas-sweep: [")
+             and (" started " in ln or " exit " in ln or re.search(r"increment \d+, fraction", ln))]
+    expected = []
+    for i, (name, n) in enumerate((("two", 2), ("three", 3)), start=1):
+        tag = f"pecplas-sweep: [{i}/2] {name}"
+        expected.append((tag + " started", None))
+        expected += [(tag, f"step 1 'first', increment {k}, fraction {k / n:.4f}")
+                     for k in range(1, n + 1)]
+        expected.append((tag + " exit 0 (completed, ", f"[{i} of 2 done]"))
+    assert len(lines) == len(expected), r.stdout
+    for line, (start, part) in zip(lines, expected):
+        assert line.startswith(start), (line, start)
+        if part and "increment" in part:
+            # the fraction as pecplas prints it (f7.4), read back with %g
+            step, frac = part.rsplit(", fraction ", 1)
+            assert step in line and f"fraction {float(frac):g} of the step" in line, line
+        elif part:
+            assert part in line, line

@@ -13,7 +13,7 @@ module pecplas_io_results_fields
    implicit none (type, external)
    private
 
-   public :: check_increment, write_history_row, write_fields, stress_mean
+   public :: check_increment, write_history_row, write_fields, stress_mean, has_plastic_state
 
 contains
 
@@ -220,6 +220,8 @@ contains
                if (allocated(f%state) .and. .not. allocated(error)) then
                   if (size(f%state) > 0) call write_state(gs, f%state, units%sets(s)%state, &
                      error)
+                  if (.not. allocated(error) .and. has_plastic_state(units%sets(s)%state)) &
+                     call write_plastic(gs, f%state, units%sets(s)%state, error)
                end if
                if (allocated(f%error_indicator) .and. .not. allocated(error)) &
                   call h5_write(gs, 'error_indicator', f%error_indicator, error)
@@ -247,6 +249,38 @@ contains
          call h5_describe(gs, 'state', '1', error)
       end if
    end subroutine write_state
+
+   !> Whether a soil history names the equivalent plastic strain and the return kind
+   !> (Mohr-Coulomb, Drucker-Prager): its sets get the plastic indicators.
+   pure logical function has_plastic_state(names) result(yes)
+      character(len=*), intent(in) :: names(:)
+      yes = any(names == 'eps_p_eq') .and. any(names == 'return_kind')
+   end function has_plastic_state
+
+   !> The plastic indicators of each element, cell values for ParaView: eps_p_eq, the mean
+   !> of its Gauss points' equivalent plastic strain, and plastic_fraction, the fraction of
+   !> its Gauss points whose last return was plastic (return kind > 0: yielding at this
+   !> increment).
+   subroutine write_plastic(gs, state, names, error)
+      integer(hid_t), intent(in) :: gs
+      real(wp), intent(in), contiguous :: state(:, :, :)
+      character(len=*), intent(in) :: names(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: eps(:), fraction(:)
+      integer :: ie, ik, e
+      ie = findloc(names == 'eps_p_eq', .true., dim=1)
+      ik = findloc(names == 'return_kind', .true., dim=1)
+      if (ie < 1 .or. ik < 1 .or. max(ie, ik) > size(state, 1)) return
+      allocate (eps(size(state, 3)), fraction(size(state, 3)))
+      do e = 1, size(state, 3)
+         eps(e) = sum(state(ie, :, e))/real(max(size(state, 2), 1), wp)
+         fraction(e) = real(count(state(ik, :, e) > 0.5_wp), wp)/real(max(size(state, 2), 1), wp)
+      end do
+      call h5_write(gs, 'eps_p_eq', eps, error)
+      if (.not. allocated(error)) call h5_describe(gs, 'eps_p_eq', '1', error)
+      if (.not. allocated(error)) call h5_write(gs, 'plastic_fraction', fraction, error)
+      if (.not. allocated(error)) call h5_describe(gs, 'plastic_fraction', '1', error)
+   end subroutine write_plastic
 
    !> Plain average over the Gauss points of each element, mean(4, nel): a cell value for
    !> ParaView, not a volume average.

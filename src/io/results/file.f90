@@ -51,7 +51,8 @@ module pecplas_io_results_file
       restart_next_open, restart_put, restart_link
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, &
       write_xdmf
-   use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields
+   use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields, &
+      has_plastic_state
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
       check_joint_fields, write_joint_fields
    use pecplas_io_results_describe, only: results_units_t, plan_units, describe_mesh, &
@@ -149,6 +150,11 @@ contains
       if (allocated(error)) return
       call plan_units(model, this%units)
       call plan_xdmf_joints(this)
+      ! the plastic indicators are written with the sets' fields (write_fields)
+      do i = 1, size(this%layout%sets)
+         this%layout%sets(i)%plastic = has_plastic_state(this%units%sets(i)%state) .and. &
+            (this%layout%stresses .or. this%strains .or. this%layout%error_estimate)
+      end do
       call h5_init(error)
       if (allocated(error)) return
       this%path = path

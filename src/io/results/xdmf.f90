@@ -4,7 +4,8 @@
 !>
 !> ParaView's XDMF reader takes a "Vector" attribute only with 3 components, so the file
 !> stores displacement3 / reaction3 (z = 0) next to the 2-component arrays and the XDMF
-!> references those. stress_mean (4 components xx, yy, zz, xy) is a "Matrix" attribute.
+!> references those. stress_mean (4 components xx, yy, zz, xy) is a "Matrix" attribute; a
+!> soil with plastic history adds the cell scalars eps_p_eq and plastic_fraction.
 !>
 !> Each joint set is a grid of its own in every increment: its integration points as a
 !> Polyline per joint element (a Polyvertex for springs, one point each) through
@@ -30,6 +31,8 @@ module pecplas_io_results_xdmf
       !> XDMF TopologyType, e.g. 'Quadrilateral'.
       character(len=:), allocatable :: topology
       integer :: nel = 0, npe = 0
+      !> Cell attributes eps_p_eq and plastic_fraction (a soil with plastic history).
+      logical :: plastic = .false.
    end type xdmf_set_t
 
    !> One joint set: group name under /mesh/joint_sets, points per element, elements.
@@ -212,6 +215,10 @@ contains
                   h5//group//'/sets/'//set%name//'/stress_mean', set%nel, 4)
                if (layout%error_estimate) call scalar_attribute(b, 'error_indicator', &
                   h5//group//'/sets/'//set%name//'/error_indicator', set%nel)
+               if (set%plastic) call scalar_attribute(b, 'eps_p_eq', &
+                  h5//group//'/sets/'//set%name//'/eps_p_eq', set%nel)
+               if (set%plastic) call scalar_attribute(b, 'plastic_fraction', &
+                  h5//group//'/sets/'//set%name//'/plastic_fraction', set%nel)
             end if
             call put(b, '    </Grid>')
          end associate

@@ -2,7 +2,8 @@
 """pecplas-sweep: parameter studies with pecplas (doc/sweep.md).
 
     pecplas-sweep make TEMPLATE TABLE -o DIR      one deck per table row: DIR/<case>.inp
-    pecplas-sweep run DIR [-j N]                  run them locally, N at a time
+    pecplas-sweep run DIR [-j N]                  run them locally, N at a time; each case's
+                                                  start, progress and end on one line each
     pecplas-sweep slurm DIR [--partition P ...]   write DIR/sweep.sbatch, a Slurm job array
     pecplas-sweep collect DIR -q NAME=QUANTITY ...    gather quantities -> DIR/collected.{csv,h5}
 
@@ -22,6 +23,7 @@ import shlex
 import shutil
 import subprocess
 import sys
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -171,13 +173,69 @@ def pecplas_cmd_command(given):
     return found
 
 
-def run_case(exe, d, case):
-    deck, res = case["deck"], case["results"]
-    with open(d / f"{case['name']}.log", "w") as log:
-        t0 = time.monotonic()
-        rc = subprocess.call([exe, deck, "-o", res, "--quiet"], cwd=d, stdout=log,
-                             stderr=subprocess.STDOUT)
-    return case["name"], rc, time.monotonic() - t0
+INCREMENT_LINE = re.compile(r"^\s*step\s+(\d+)\s+(.*?)\s+inc\s+(\d+)\s+fraction\s+(\S+)")
+
+
+class Reporter:
+    """The runner's lines, one per event of a case, never interleaved: its start, its
+    progress (pecplas's own `progress:` line, or its latest increment, at most every
+    `interval` seconds; 0: each one; negative: none) and its end."""
+
+    def __init__(self, total, interval):
+        self.total, self.interval = total, interval
+        self.done = 0
+        self.lock = threading.Lock()
+
+    def say(self, text):
+        with self.lock:
+            print(f"pecplas-sweep: {text}", flush=True)
+
+    def end(self, text):
+        with self.lock:
+            self.done += 1
+            print(f"pecplas-sweep: {text} [{self.done} of {self.total} done]", flush=True)
+
+
+def progress_of(line):
+    """What a line of pecplas's output says about its progress (None: nothing)."""
+    text = line.strip()
+    if text.startswith("progress:"):
+        return text[len("progress:"):].strip()
+    m = INCREMENT_LINE.match(line)
+    if m:
+        return f"step {m.group(1)} '{m.group(2)}', increment {m.group(3)}, fraction " \
+               f"{float(m.group(4)):g} of the step"
+    return None
+
+
+def run_case(exe, d, case, number, report):
+    """Runs one case, its output into DIR/<case>.log, its start, progress and end reported."""
+    deck, res, name = case["deck"], case["results"], case["name"]
+    tag = f"[{number}/{report.total}] {name}"
+    report.say(f"{tag} started ({deck} -> {res})")
+    status = None
+    t0 = time.monotonic()
+    last = None
+    with open(d / f"{name}.log", "w") as log:
+        # not --quiet: its increment and progress lines are the case's progress
+        p = subprocess.Popen([exe, deck, "-o", res], cwd=d, stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True, errors="replace")
+        for line in p.stdout:
+            log.write(line)
+            if line.strip().startswith("status:"):
+                status = line.split("status:", 1)[1].split("results:")[0].strip()
+            what = progress_of(line) if report.interval >= 0 else None
+            now = time.monotonic()
+            if what and (last is None and now - t0 >= report.interval
+                         or last is not None and now - last >= report.interval):
+                last = now
+                report.say(f"{tag} {now - t0:.1f} s: {what}")
+        rc = p.wait()
+    t = time.monotonic() - t0
+    ok = rc in RESULT_CODES
+    report.end(f"{tag} exit {rc} ({status or 'no status'}, {t:.1f} s)"
+               + ("" if ok else f", see {d / (name + '.log')}"))
+    return name, rc, t
 
 
 def cmd_run(a):
@@ -187,13 +245,12 @@ def cmd_run(a):
     cases = m["cases"]
     if a.cases:
         cases = [cases[i] for i in a.cases]
+    report = Reporter(len(cases), a.progress)
     bad = 0
     with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
-        for name, rc, t in pool.map(lambda c: run_case(exe, d, c), cases):
-            ok = rc in RESULT_CODES
-            bad += not ok
-            print(f"pecplas-sweep: {name} exit {rc} ({t:.1f} s)"
-                  + ("" if ok else f", see {d / (name + '.log')}"))
+        for name, rc, t in pool.map(lambda ic: run_case(exe, d, ic[1], ic[0] + 1, report),
+                                    enumerate(cases)):
+            bad += rc not in RESULT_CODES
     return 1 if bad else 0
 
 
@@ -416,6 +473,9 @@ def main(argv=None):
     p.add_argument("-j", "--jobs", type=int, default=1, help="runs at a time (default 1)")
     p.add_argument("--pecplas", help="pecplas executable")
     p.add_argument("--cases", type=int, nargs="+", help="only these case indices")
+    p.add_argument("--progress", type=float, default=30.0, metavar="SECONDS",
+                   help="a progress line per running case at most every SECONDS (default 30; "
+                        "0: at every increment; negative: none)")
     p.set_defaults(func=cmd_run)
     p = sub.add_parser("slurm", help="write a Slurm job-array script")
     p.add_argument("dir")
