@@ -7,6 +7,7 @@ program tester
    use test_pecjoin_friction, only: collect_pecjoin_friction
    use test_s1, only: collect_s1
    use test_initial, only: collect_initial
+   use test_phases, only: collect_phases
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
    use test_estimator, only: collect_estimator
@@ -20,6 +21,7 @@ program tester
    use test_io_results_final, only: collect_io_results_final
    use test_io_results_copies, only: collect_io_results_copies
    use test_io_results_checksum, only: collect_io_results_checksum
+   use test_io_results_phases, only: collect_io_results_phases
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
    use test_linalg_solvers, only: collect_linalg_solvers
@@ -84,6 +86,7 @@ program tester
    suites = [suites, new_testsuite('pecjoin_friction', collect_pecjoin_friction)]
    suites = [suites, new_testsuite('s1', collect_s1)]
    suites = [suites, new_testsuite('initial', collect_initial)]
+   suites = [suites, new_testsuite('phases', collect_phases)]
    suites = [suites, new_testsuite('cli', collect_cli)]
    suites = [suites, new_testsuite('model_mesh_tools', collect_model_mesh_tools)]
    suites = [suites, new_testsuite('io_gmsh', collect_io_gmsh)]
@@ -143,6 +146,7 @@ program tester
    suites = [suites, new_testsuite('io_deck_mesh_lines', collect_io_deck_mesh_lines)]
    suites = [suites, new_testsuite('io_results_copies', collect_io_results_copies)]
    suites = [suites, new_testsuite('io_results_checksum', collect_io_results_checksum)]
+   suites = [suites, new_testsuite('io_results_phases', collect_io_results_phases)]
    suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
    suites = [suites, new_testsuite('linalg_omp_serial', collect_linalg_omp_serial)]
    suites = [suites, new_testsuite('cmd_args', collect_cmd_args)]

@@ -1,12 +1,15 @@
 !> The pieces of the nonlinear solution: BFGS two-loop against the dense update formula,
 !> the line search on 1-D slopes with known roots, the arc-length root choice and the
-!> length adaptation.
+!> length adaptation, the chain of methods with a remembered (lead) method.
 module test_driver_nonlinear
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_solve_bfgs, only: bfgs_t
    use pecplas_solve_line_search, only: line_search_t
    use pecplas_solve_arc_length, only: arc_root, adapt_length, arc_predictor_sign
+   use pecplas_solve_attempts, only: method_chain
+   use pecplas_model_type, only: model_t
+   use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -24,7 +27,8 @@ contains
                new_unittest('line_search_nonlinear_slope', test_ls_tanh), &
                new_unittest('line_search_extrapolates', test_ls_extrapolate), &
                new_unittest('arc_root_does_not_turn_back', test_arc_root), &
-               new_unittest('arc_length_adaptation', test_adapt)]
+               new_unittest('arc_length_adaptation', test_adapt), &
+               new_unittest('chain_starts_with_its_lead', test_chain_lead)]
    end subroutine collect_driver_nonlinear
 
    !> K = Q diag(d) Q with Q = I - 2 v v^T / v.v (symmetric orthogonal): K^-1 = Q diag(1/d) Q.
@@ -214,5 +218,47 @@ contains
          m(:, j) = a*b(j)
       end do
    end function outer
+
+   !> The chain of a modified-Newton run starts with a remembered stronger method and that
+   !> method's own chain; a weaker lead (a NEWTON run that fell back to quasi-Newton) and
+   !> FALLBACK=NO change nothing; without quasi-Newton (Katona) modified Newton takes its place.
+   subroutine test_chain_lead(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      model%solver%method = METHOD_MODIFIED
+      model%solver%fallback = .true.
+      call same(method_chain(model, .true.), [METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON], &
+         'modified Newton, no lead')
+      if (allocated(error)) return
+      call same(method_chain(model, .true., 0), [METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON], &
+         'modified Newton, lead 0')
+      if (allocated(error)) return
+      call same(method_chain(model, .true., METHOD_QUASI), [METHOD_QUASI, METHOD_NEWTON], &
+         'modified Newton, lead quasi-Newton')
+      if (allocated(error)) return
+      call same(method_chain(model, .true., METHOD_NEWTON), [METHOD_NEWTON, METHOD_QUASI], &
+         'modified Newton, lead Newton')
+      if (allocated(error)) return
+      call same(method_chain(model, .false., METHOD_NEWTON), [METHOD_NEWTON, METHOD_MODIFIED], &
+         'Katona, lead Newton')
+      if (allocated(error)) return
+      model%solver%method = METHOD_NEWTON
+      call same(method_chain(model, .true., METHOD_QUASI), [METHOD_NEWTON, METHOD_QUASI], &
+         'Newton, lead quasi-Newton (weaker: ignored)')
+      if (allocated(error)) return
+      model%solver%method = METHOD_MODIFIED
+      model%solver%fallback = .false.
+      call same(method_chain(model, .true., METHOD_NEWTON), [METHOD_MODIFIED], &
+         'FALLBACK=NO, lead Newton (ignored)')
+   contains
+      subroutine same(got, want, what)
+         integer, intent(in) :: got(:), want(:)
+         character(len=*), intent(in) :: what
+         logical :: ok
+         ok = size(got) == size(want)
+         if (ok) ok = all(got == want)
+         call check(error, ok, what)
+      end subroutine same
+   end subroutine test_chain_lead
 
 end module test_driver_nonlinear

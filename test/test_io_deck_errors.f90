@@ -110,7 +110,6 @@ contains
    subroutine test_steps(error)
       type(error_t), allocatable, intent(out) :: error
       call run_bad_cases(DECKS, [ &
-         bad('empty_step', 18, '*STEP', "empty step 's1'", 'pattern, target_factor'), &
          bad('increments_zero', 18, '*STEP', 'INCREMENTS must be >= 1', 'found 0'), &
          bad('duplicate_pattern', 18, '*LOAD', "load pattern 'Push' is defined twice", &
          'bad_duplicate_pattern.inp:16')], error)

@@ -1,5 +1,6 @@
 !> Whole-element consistent tangents against central differences: for each massif element
-!> (T3, T6, Q4, Q8, Q8R, plane strain, a distorted shape) and each soil in a plastic state,
+!> (T3, T6, Q4, Q8, Q8R, a distorted shape; plane strain, and axisymmetric at radius 10 to 11
+!> where the hoop strain u_r/r joins the in-plane ones) and each soil in a plastic state,
 !> the element stiffness sum B^T D B dV of the points' consistent tangents D equals the
 !> derivative of the element's internal forces sum B^T sigma(u) dV with respect to its nodal
 !> displacements, every point integrated from the same converged stress with its strain of
@@ -17,7 +18,7 @@
 module test_massif_tangent_fd
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
-   use pecplas_model_options, only: PLANE_STRAIN
+   use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC
    use pecplas_massif_elements_type, only: massif_element_t
    use pecplas_massif_elements_factory, only: new_massif_element
    use pecplas_massif_kinematics, only: massif_rule_t, new_massif_rule
@@ -41,6 +42,8 @@ module test_massif_tangent_fd
    real(wp), parameter :: THETA = 0.3_wp, H = 1.0e-6_wp, TOL = 1.0e-6_wp
    !> Amplitude of the quadratic part of the displacement (relative to the strains).
    real(wp), parameter :: BEND = 0.02_wp
+   !> Axisymmetric cases: radius of the element's origin.
+   real(wp), parameter :: R_AXI = 10.0_wp
 
 contains
 
@@ -48,8 +51,35 @@ contains
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('t3', test_t3), new_unittest('t6', test_t6), &
                new_unittest('q4', test_q4), new_unittest('q8', test_q8), &
-               new_unittest('q8r', test_q8r)]
+               new_unittest('q8r', test_q8r), new_unittest('t3_axi', test_t3_axi), &
+               new_unittest('t6_axi', test_t6_axi), new_unittest('q4_axi', test_q4_axi), &
+               new_unittest('q8_axi', test_q8_axi), new_unittest('q8r_axi', test_q8r_axi)]
    end subroutine collect_massif_tangent_fd
+
+   subroutine test_t3_axi(error)
+      type(error_t), allocatable, intent(out) :: error
+      call every_state('T3', error, AXISYMMETRIC)
+   end subroutine test_t3_axi
+
+   subroutine test_t6_axi(error)
+      type(error_t), allocatable, intent(out) :: error
+      call every_state('T6', error, AXISYMMETRIC)
+   end subroutine test_t6_axi
+
+   subroutine test_q4_axi(error)
+      type(error_t), allocatable, intent(out) :: error
+      call every_state('Q4', error, AXISYMMETRIC)
+   end subroutine test_q4_axi
+
+   subroutine test_q8_axi(error)
+      type(error_t), allocatable, intent(out) :: error
+      call every_state('Q8', error, AXISYMMETRIC)
+   end subroutine test_q8_axi
+
+   subroutine test_q8r_axi(error)
+      type(error_t), allocatable, intent(out) :: error
+      call every_state('Q8R', error, AXISYMMETRIC)
+   end subroutine test_q8r_axi
 
    subroutine test_t3(error)
       type(error_t), allocatable, intent(out) :: error
@@ -76,33 +106,37 @@ contains
       call every_state('Q8R', error)
    end subroutine test_q8r
 
-   !> Mohr–Coulomb in its three states and Drucker–Prager in its two, psi = 10 and 30.
-   subroutine every_state(name, error)
+   !> Mohr–Coulomb in its three states and Drucker–Prager in its two, psi = 10 and 30;
+   !> `analysis` PLANE_STRAIN (default) or AXISYMMETRIC.
+   subroutine every_state(name, error, analysis)
       character(len=*), intent(in) :: name
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: analysis
       real(wp) :: psi
-      integer :: k
+      integer :: k, an
+      an = PLANE_STRAIN
+      if (present(analysis)) an = analysis
       do k = 1, 2
          psi = merge(10.0_wp, 30.0_wp, k == 1)
-         call one_case(name, mc(30.0_wp, psi), 'Mohr-Coulomb', 1, RETURN_SMOOTH, error)
+         call one_case(name, mc(30.0_wp, psi), 'Mohr-Coulomb', 1, RETURN_SMOOTH, an, error)
          if (allocated(error)) return
-         call one_case(name, mc(30.0_wp, psi), 'Mohr-Coulomb', 2, RETURN_EDGE, error)
+         call one_case(name, mc(30.0_wp, psi), 'Mohr-Coulomb', 2, RETURN_EDGE, an, error)
          if (allocated(error)) return
-         call one_case(name, mc(30.0_wp, psi), 'Mohr-Coulomb', 3, RETURN_APEX, error)
+         call one_case(name, mc(30.0_wp, psi), 'Mohr-Coulomb', 3, RETURN_APEX, an, error)
          if (allocated(error)) return
-         call one_case(name, dp(30.0_wp, psi, 3), 'Drucker-Prager', 1, RETURN_SMOOTH, error)
+         call one_case(name, dp(30.0_wp, psi, 3), 'Drucker-Prager', 1, RETURN_SMOOTH, an, error)
          if (allocated(error)) return
-         call one_case(name, dp(30.0_wp, psi, 3), 'Drucker-Prager', 3, RETURN_APEX, error)
+         call one_case(name, dp(30.0_wp, psi, 3), 'Drucker-Prager', 3, RETURN_APEX, an, error)
          if (allocated(error)) return
       end do
    end subroutine every_state
 
    !> Element `name` of material `mat` strained by state `state` of STRAINS: every point
    !> returns with `kind`, and the tangent stiffness matches central differences.
-   subroutine one_case(name, mat, label, state, kind, error)
+   subroutine one_case(name, mat, label, state, kind, analysis, error)
       character(len=*), intent(in) :: name, label
       class(material_t), intent(in) :: mat
-      integer, intent(in) :: state, kind
+      integer, intent(in) :: state, kind, analysis
       type(error_t), allocatable, intent(out) :: error
       class(massif_element_t), allocatable :: elem
       type(massif_rule_t) :: rule
@@ -118,27 +152,30 @@ contains
       xe = shape_of(name)
       nd = 2*rule%nnode
       ue = displacement(xe, STRAINS(:, state))
+      ! axisymmetric: the same element and displacements at radius R_AXI (hoop strains
+      ! u_r/r about 1/R_AXI of the in-plane ones)
+      if (analysis == AXISYMMETRIC) xe(1, :) = xe(1, :) + R_AXI
       allocate (ke(nd, nd), kfd(nd, nd), kel(nd, nd), fp(nd), fm(nd))
       sig_conv = SIG0(state)*[1.0_wp, 1.0_wp, 1.0_wp, 0.0_wp]
-      call forces(mat, sig_conv, rule, xe, ue, fp, d, kinds, error)
+      call forces(mat, sig_conv, rule, analysis, xe, ue, fp, d, kinds, error)
       if (allocated(error)) return
       write (msg, '(a,1x,a,a,f4.0,a,i0,a,*(i2))') name, label, ' psi ', psi_of(mat), &
          ' state ', state, ': return kinds of the points', kinds
       call check(error, all(kinds == kind), trim(msg))
       if (allocated(error)) return
-      call massif_stiffness(rule, PLANE_STRAIN, 1.0_wp, xe, d, ke, error)
+      call massif_stiffness(rule, analysis, 1.0_wp, xe, d, ke, error)
       if (allocated(error)) return
       allocate (de, mold=d)
       call mat%elastic_tangent(de(:, :, 1))
       de = spread(de(:, :, 1), 3, rule%ngauss)
-      call massif_stiffness(rule, PLANE_STRAIN, 1.0_wp, xe, de, kel, error)
+      call massif_stiffness(rule, analysis, 1.0_wp, xe, de, kel, error)
       if (allocated(error)) return
       do j = 1, nd
          ue(j) = ue(j) + H
-         call forces(mat, sig_conv, rule, xe, ue, fp, d, kinds, error)
+         call forces(mat, sig_conv, rule, analysis, xe, ue, fp, d, kinds, error)
          if (allocated(error)) return
          ue(j) = ue(j) - 2.0_wp*H
-         call forces(mat, sig_conv, rule, xe, ue, fm, d, kinds, error)
+         call forces(mat, sig_conv, rule, analysis, xe, ue, fm, d, kinds, error)
          if (allocated(error)) return
          ue(j) = ue(j) + H
          kfd(:, j) = (fp - fm)/(2.0_wp*H)
@@ -152,10 +189,11 @@ contains
 
    !> Internal forces of the element at nodal displacements ue, each point updated from the
    !> converged stress sig_conv with its strain; the points' tangents and return kinds.
-   subroutine forces(mat, sig_conv, rule, xe, ue, fe, d, kinds, error)
+   subroutine forces(mat, sig_conv, rule, analysis, xe, ue, fe, d, kinds, error)
       class(material_t), intent(in) :: mat
       real(wp), intent(in) :: sig_conv(NCOMP)
       type(massif_rule_t), intent(in) :: rule
+      integer, intent(in) :: analysis
       real(wp), intent(in) :: xe(:, :), ue(:)
       real(wp), intent(out) :: fe(:)
       real(wp), allocatable, intent(out) :: d(:, :, :)
@@ -165,7 +203,7 @@ contains
       real(wp), allocatable :: st(:)
       integer :: g
       allocate (d(NCOMP, NCOMP, rule%ngauss), kinds(rule%ngauss))
-      call massif_strains(rule, PLANE_STRAIN, 1.0_wp, xe, ue, eps, error)
+      call massif_strains(rule, analysis, 1.0_wp, xe, ue, eps, error)
       if (allocated(error)) return
       do g = 1, rule%ngauss
          allocate (st(mat%nstate()), source=0.0_wp)
@@ -174,7 +212,7 @@ contains
          kinds(g) = nint(st(6))
          deallocate (st)
       end do
-      call massif_internal_force(rule, PLANE_STRAIN, 1.0_wp, xe, sig, fe, error)
+      call massif_internal_force(rule, analysis, 1.0_wp, xe, sig, fe, error)
    end subroutine forces
 
    !> Nodal displacements of the in-plane strain with principal values e (axes at THETA),

@@ -11,6 +11,7 @@ module pecplas_advise_run
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: method_kind
    use pecplas_io_deck_reader, only: read_deck
+   use pecplas_model_phase_plan, only: is_phased
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_prepare, only: prepare_run
    use pecplas_solve_increments, only: run_increments
@@ -53,6 +54,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call read_deck(deck, model, error)
       if (allocated(error)) return
+      if (is_phased(model)) then
+         call input_error(error, 'advise: not available for a phased deck (doc/deck.md, '// &
+            'Phases): its trial runs would change with the phases; choose the method and '// &
+            'increments phase by phase by hand')
+         return
+      end if
       if (size(model%steps) < 1) then
          call input_error(error, 'advise: the deck has no *STEP')
          return

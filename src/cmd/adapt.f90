@@ -7,6 +7,7 @@ module pecplas_cmd_adapt
    use pecplas_base_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED
    use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
+   use pecplas_model_phase_plan, only: is_phased
    use pecplas_problem_type, only: problem_t
    use pecplas_adapt_adapt, only: adapt_options_t, adapt_level_t, adapt_model
    use pecplas_base_files, only: make_directories, path_stem, path_dir
@@ -47,6 +48,13 @@ contains
       call read_deck(deck, model, error)
       if (allocated(error)) then
          code = command_error('pecplas', error%exit_code(), error%text())
+         return
+      end if
+      if (is_phased(model)) then
+         code = command_error('pecplas', EXIT_INPUT, deck//': adaptive refinement '// &
+            '(--target-error, *ADAPT) is not available for a phased deck (doc/deck.md, Phases): '// &
+            'the sets a phase activates or removes would have to be refined with it; refine '// &
+            'the mesh of the deck by hand')
          return
       end if
       ! the deck's *SOLVER THREADS= or OMP_NUM_THREADS, else one thread, as for one run

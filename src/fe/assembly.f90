@@ -22,7 +22,7 @@ module pecplas_fe_assembly
    implicit none (type, external)
    private
 
-   public :: assemble_stiffness, internal_forces
+   public :: assemble_stiffness, internal_forces, set_material
 
 contains
 
@@ -90,7 +90,36 @@ contains
          return
       end if
       call builder%add_extra(k, error)
+      if (allocated(error)) return
+      if (allocated(state%orphan_eq) .and. part%rank == 0) call add_orphans(k, state%orphan_eq)
    end subroutine assemble_stiffness
+
+   !> A diagonal entry, the largest of the matrix, at each free equation that no active
+   !> element holds (its row and column are otherwise zero: the system stays regular and
+   !> the equation, never loaded, gives a zero displacement increment).
+   subroutine add_orphans(k, orphan_eq)
+      type(csc_t), intent(inout) :: k
+      integer, intent(in) :: orphan_eq(:)
+      real(wp), allocatable :: diag(:)
+      integer :: i, q
+      if (size(orphan_eq) == 0) return
+      allocate (diag(k%n))
+      call k%diagonal(diag)
+      do i = 1, size(orphan_eq)
+         q = k%locate(orphan_eq(i), orphan_eq(i))
+         if (q > 0) k%values(q) = k%values(q) + max(maxval(abs(diag)), 1.0_wp)
+      end do
+   end subroutine add_orphans
+
+   !> Index in model%materials of the material of element set s: the *SECTION's, or the one
+   !> a phase changed it to.
+   pure integer function set_material(model, s, st) result(m)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s
+      type(set_state_t), intent(in) :: st
+      m = model%mesh%esets(s)%material_index
+      if (st%material > 0) m = st%material
+   end function set_material
 
    !> Adds the stiffness of this share's elements of massif set s to k (pattern ready):
    !> element matrices in parallel, CHUNK elements at a time, added serially in order
@@ -114,9 +143,20 @@ contains
       integer :: e, c0, c1, nd, bad, e1, e2
       logical :: stored
       associate (set => model%mesh%esets(s), &
-                 mat => model%materials(model%mesh%esets(s)%material_index)%m)
+                 mat => model%materials(set_material(model, s, st))%m)
          nd = 2*rule%nnode
          call part%range(size(set%conn, 2), e1, e2)
+         if (.not. st%active) then
+            ! zero blocks: the pattern (of every element) and the block order stay the same
+            allocate (ke(nd, nd, 1), source=0.0_wp)
+            allocate (idx(nd))
+            do e = e1, e2
+               call element_equations(dofs, set%conn(:, e), idx)
+               call builder%add_block(k, idx, ke(:, :, 1), error)
+               if (allocated(error)) return
+            end do
+            return
+         end if
          ! the points' own tangents, or the elastic one (asked for, or the material's only)
          stored = tangent .and. allocated(st%tangent)
          ! the stored tangents are passed in place; the elastic one is spread once
@@ -224,6 +264,7 @@ contains
       tlaw = 0.0_wp
       fint = 0.0_wp
       do s = 1, size(rules)
+         if (.not. state%sets(s)%active) cycle
          associate (set => model%mesh%esets(s), st => state%sets(s))
             nn = rules(s)%nnode; nel = size(set%conn, 2)
             allocate (fe(2*nn, min(CHUNK, max(nel, 1))))
@@ -289,7 +330,7 @@ contains
       integer :: g, g0, g1, nn, k
       logical :: clocked
       associate (conn => model%mesh%esets(s)%conn(:, e), &
-                 mat => model%materials(model%mesh%esets(s)%material_index)%m)
+                 mat => model%materials(set_material(model, s, st))%m)
          nn = rule%nnode
          do k = 1, nn
             xe(:, k) = model%mesh%x(:, conn(k))

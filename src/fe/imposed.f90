@@ -16,6 +16,8 @@ module pecplas_fe_imposed
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t, joint_stiffness
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_fe_element_context, only: element_context
+   use pecplas_fe_assembly, only: set_material
+   use pecplas_fe_joint_assembly, only: set_law
    implicit none (type, external)
    private
 
@@ -44,8 +46,9 @@ contains
       moved = any(dup /= 0.0_wp .and. dofs%eq == 0, dim=1)
       if (.not. any(moved)) return
       do s = 1, size(rules)
+         if (.not. state%sets(s)%active) cycle
          associate (set => model%mesh%esets(s), st => state%sets(s), &
-                    mat => model%materials(model%mesh%esets(s)%material_index)%m)
+                    mat => model%materials(set_material(model, s, state%sets(s)))%m)
             nn = rules(s)%nnode
             nd = 2*nn
             call mat%elastic_tangent(delastic)
@@ -92,8 +95,9 @@ contains
       do s = 1, size(model%joint_sets)
          ! Katona sets have no law and no stiffness: their doublets are the contact operator's
          if (model%joint_sets(s)%is_katona()) cycle
+         if (.not. state%joints%sets(s)%active) cycle
          associate (set => model%joint_sets(s), st => state%joints%sets(s), &
-                    law => model%laws(model%joint_sets(s)%law_index)%law)
+                    law => model%laws(set_law(model%joint_sets(s), state%joints%sets(s)))%law)
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nn = elem%nnode()

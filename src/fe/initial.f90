@@ -18,7 +18,9 @@ module pecplas_fe_initial
    implicit none (type, external)
    private
 
-   public :: apply_initial_stresses
+   public :: mesh_index_t
+
+   public :: apply_initial_stresses, initial_set_stress, initial_joint_set_stress
 
 contains
 
@@ -27,45 +29,68 @@ contains
       type(massif_rule_t), intent(in) :: rules(:)
       type(fe_state_t), intent(inout) :: state
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: xg(:, :), xy(:, :, :), t(:, :, :), sigma0(:, :, :)
-      real(wp) :: stress(4)
-      integer, allocatable :: sets(:)
-      integer :: s, e, g, js
-      logical :: hit
+      integer :: s, js
       type(mesh_index_t) :: index
 
       do s = 1, size(model%mesh%esets)
-         associate (set => model%mesh%esets(s), st => state%sets(s))
-            allocate (xg(2, st%ngauss))
-            do e = 1, size(set%conn, 2)
-               call massif_gauss_coordinates(rules(s), model%mesh%x(:, set%conn(:, e)), xg)
-               do g = 1, st%ngauss
-                  call stress_at(model, s, xg(:, g), st%stress(:, g, e), hit)
-               end do
-            end do
-            st%stress_trial = st%stress
-            deallocate (xg)
-         end associate
+         call initial_set_stress(model, rules, s, state%sets(s)%stress)
+         state%sets(s)%stress_trial = state%sets(s)%stress
       end do
       if (.not. allocated(model%joint_sets)) return
       if (size(model%joint_sets) == 0) return
       call index%build(model)
       do js = 1, size(model%joint_sets)
-         call joint_point_geometry(model, js, xy, t, error)
+         call initial_joint_set_stress(model, index, state, js, error)
          if (allocated(error)) return
-         allocate (sigma0(2, size(xy, 2), size(xy, 3)), source=0.0_wp)
-         do e = 1, size(xy, 3)
-            call beside_sets(model, index, model%joint_sets(js), e, sets)
-            do g = 1, size(xy, 2)
-               call mean_stress_at(model, sets, xy(:, g, e), stress, hit)
-               if (hit) sigma0(:, g, e) = joint_stress_from_massif(stress, t(:, g, e))
-            end do
-         end do
-         call set_joint_stress(model, state%joints, js, sigma0, error)
-         if (allocated(error)) return
-         deallocate (sigma0)
       end do
    end subroutine apply_initial_stresses
+
+   !> The *INITIAL_STRESS stress of massif set s at its integration points
+   !> (4, ngauss, nel); points no entry covers keep their value.
+   subroutine initial_set_stress(model, rules, s, stress)
+      type(model_t), intent(in) :: model
+      type(massif_rule_t), intent(in) :: rules(:)
+      integer, intent(in) :: s
+      real(wp), intent(inout) :: stress(:, :, :)
+      real(wp), allocatable :: xg(:, :)
+      integer :: e, g
+      logical :: hit
+      associate (set => model%mesh%esets(s))
+         allocate (xg(2, size(stress, 2)))
+         do e = 1, size(set%conn, 2)
+            call massif_gauss_coordinates(rules(s), model%mesh%x(:, set%conn(:, e)), xg)
+            do g = 1, size(stress, 2)
+               call stress_at(model, s, xg(:, g), stress(:, g, e), hit)
+            end do
+         end do
+      end associate
+   end subroutine initial_set_stress
+
+   !> Joint set js: each point takes the initial stress of the massif beside it, projected
+   !> on the joint frame (module header); `index` built by mesh_index_t%build.
+   subroutine initial_joint_set_stress(model, index, state, js, error)
+      type(model_t), intent(in) :: model
+      type(mesh_index_t), intent(in) :: index
+      type(fe_state_t), intent(inout) :: state
+      integer, intent(in) :: js
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: xy(:, :, :), t(:, :, :), sigma0(:, :, :)
+      real(wp) :: stress(4)
+      integer, allocatable :: sets(:)
+      integer :: e, g
+      logical :: hit
+      call joint_point_geometry(model, js, xy, t, error)
+      if (allocated(error)) return
+      allocate (sigma0(2, size(xy, 2), size(xy, 3)), source=0.0_wp)
+      do e = 1, size(xy, 3)
+         call beside_sets(model, index, model%joint_sets(js), e, sets)
+         do g = 1, size(xy, 2)
+            call mean_stress_at(model, sets, xy(:, g, e), stress, hit)
+            if (hit) sigma0(:, g, e) = joint_stress_from_massif(stress, t(:, g, e))
+         end do
+      end do
+      call set_joint_stress(model, state%joints, js, sigma0, error)
+   end subroutine initial_joint_set_stress
 
    !> Stress of element set `s` at point x from the *INITIAL_STRESS entries (later entries
    !> win); `stress` is left unchanged and hit = .false. when no entry covers the set.

@@ -21,7 +21,7 @@ module pecplas_fe_joint_assembly
    implicit none (type, external)
    private
 
-   public :: setup_joint_state, reset_joint_tangents, add_joint_stiffness, add_joint_forces
+   public :: set_law, setup_joint_state, reset_joint_tangents, add_joint_stiffness, add_joint_forces
 
 contains
 
@@ -90,7 +90,7 @@ contains
             end if
             do e = 1, size(st%tangent, 4)
                do ip = 1, st%npoint
-                  call model%laws(set%law_index)%law%elastic_tangent(st%hist(:, ip, e), &
+                  call model%laws(set_law(set, st))%law%elastic_tangent(st%hist(:, ip, e), &
                      st%tangent(:, :, ip, e))
                end do
             end do
@@ -156,14 +156,17 @@ contains
                   cycle
                end if
                ke = 0.0_wp
-               do ip = 1, size(pts)
-                  if (tangent .or. set%is_katona()) then
-                     c = st%tangent(:, :, ip, e)
-                  else
-                     call model%laws(set%law_index)%law%elastic_tangent(st%hist(:, ip, e), c)
-                  end if
-                  call joint_stiffness(pts(ip), c, ke)
-               end do
+               ! an inactive set (phases) adds zero blocks: the pattern stays the same
+               if (st%active) then
+                  do ip = 1, size(pts)
+                     if (tangent .or. set%is_katona()) then
+                        c = st%tangent(:, :, ip, e)
+                     else
+                        call model%laws(set_law(set, st))%law%elastic_tangent(st%hist(:, ip, e), c)
+                     end if
+                     call joint_stiffness(pts(ip), c, ke)
+                  end do
+               end if
                call equations(dofs, set%conn(:, e), idx)
                call coo%put_block(offset(e), idx, ke)
             end do
@@ -182,6 +185,15 @@ contains
          end associate
       end do
    end subroutine add_joint_stiffness
+
+   !> Index in model%laws of the law of a joint set: the *JOINTS one, or the one a phase
+   !> changed it to.
+   pure integer function set_law(set, st) result(l)
+      type(joint_set_t), intent(in) :: set
+      type(joint_set_state_t), intent(in) :: st
+      l = set%law_index
+      if (st%law > 0) l = st%law
+   end function set_law
 
    !> Equation numbers (u1, v1, u2, v2, ...) of an element's nodes `conn`.
    pure subroutine equations(dofs, conn, idx)
@@ -212,8 +224,9 @@ contains
       do s = 1, size(model%joint_sets)
          ! Katona sets: their multipliers are added by pecplas_solve_katona_increment
          if (model%joint_sets(s)%is_katona()) cycle
+         if (.not. jstate%sets(s)%active) cycle
          associate (set => model%joint_sets(s), st => jstate%sets(s), &
-                    law => model%laws(model%joint_sets(s)%law_index)%law)
+                    law => model%laws(set_law(model%joint_sets(s), jstate%sets(s)))%law)
             call joint_set_element(set, elem, error)
             if (allocated(error)) return
             nd = 2*elem%nnode()

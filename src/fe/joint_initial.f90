@@ -9,7 +9,7 @@ module pecplas_fe_joint_initial
    use pecplas_model_type, only: model_t
    use pecplas_joints_state, only: joint_state_t
    use pecplas_joints_points, only: joint_point_geometry
-   use pecplas_fe_joint_assembly, only: reset_joint_tangents
+   use pecplas_fe_joint_assembly, only: reset_joint_tangents, set_law
    implicit none (type, external)
    private
 
@@ -84,7 +84,7 @@ contains
          if (.not. set%is_katona()) then
             do e = 1, size(sigma0, 3)
                do ip = 1, size(sigma0, 2)
-                  call model%laws(set%law_index)%law%init_state(sigma0(:, ip, e), &
+                  call model%laws(set_law(set, st))%law%init_state(sigma0(:, ip, e), &
                      st%hist(:, ip, e))
                end do
             end do

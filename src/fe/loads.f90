@@ -13,16 +13,18 @@ module pecplas_fe_loads
    implicit none (type, external)
    private
 
-   public :: pattern_vectors
+   public :: pattern_vectors, add_body_force
 
 contains
 
    !> force(2, nnode, npattern) and displacement(2, nnode, npattern) of every pattern.
-   subroutine pattern_vectors(model, rules, force, displacement, error)
+   !> `active` (phases): the body forces and gravity of the active element sets only.
+   subroutine pattern_vectors(model, rules, force, displacement, error, active)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       real(wp), allocatable, intent(out) :: force(:, :, :), displacement(:, :, :)
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: active(:)
       integer :: p, k, nnode, npat, nen
       real(wp) :: fe(6)
 
@@ -52,6 +54,9 @@ contains
                end do
             case (LOAD_BODY_FORCE, LOAD_GRAVITY)
                do k = 1, size(pat%eset)
+                  if (present(active)) then
+                     if (.not. active(pat%eset(k))) cycle
+                  end if
                   call add_body_force(model, rules, pat%eset(k), pat%vector(:, k), &
                      pat%kind == LOAD_GRAVITY, force(:, :, p), error)
                   if (allocated(error)) return

@@ -20,6 +20,11 @@ module pecplas_fe_state
       !> not allocated when the set's material has a constant tangent (linear elastic: its
       !> elastic tangent is used, 16 values per point less to store and stream).
       real(wp), allocatable :: tangent(:, :, :, :)
+      !> Phases (pecplas_phases_start): whether the set is active (an inactive set adds no
+      !> stiffness and no force, and its points are not updated), and the index in
+      !> model%materials of a material given by *CHANGE_MATERIAL (0: the *SECTION's).
+      logical :: active = .true.
+      integer :: material = 0
    end type set_state_t
 
    type :: fe_state_t
@@ -34,6 +39,10 @@ module pecplas_fe_state
       !> state's last update: set by commit, cleared by rollback (the tangents are then those
       !> of the discarded attempt's last iterate).
       logical :: converged_tangents = .true.
+      !> Free equations of nodes that no active element or joint holds (after a phase
+      !> deactivated their sets): the stiffness gets a diagonal entry there so that it stays
+      !> regular; nothing loads them, so they do not move. Empty without phases.
+      integer, allocatable :: orphan_eq(:)
    contains
       procedure :: commit => state_commit
       procedure :: rollback => state_rollback

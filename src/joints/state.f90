@@ -22,6 +22,10 @@ module pecplas_joints_state
       integer, allocatable :: mode_trial(:, :)
       !> Consistent tangent d sigma / d eps of the last trial update (2, 2, np, nel).
       real(wp), allocatable :: tangent(:, :, :, :)
+      !> Phases: whether the set is active, and the index in model%laws of a law given by
+      !> *CHANGE_LAW (0: the *JOINTS one).
+      logical :: active = .true.
+      integer :: law = 0
    end type joint_set_state_t
 
    type :: joint_state_t

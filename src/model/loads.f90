@@ -4,6 +4,7 @@
 !> over its increments. Patterns a step does not name keep their factor.
 module pecplas_model_loads
    use pecplas_base_kinds, only: wp
+   use pecplas_model_phases, only: phase_change_t
    implicit none (type, external)
    private
 
@@ -63,6 +64,12 @@ module pecplas_model_loads
       !> Patterns named in the step and their factor at its end.
       integer, allocatable :: pattern(:)
       real(wp), allocatable :: target(:)
+      !> Phase changes at the start of the step (*DEACTIVATE, *ACTIVATE, *CHANGE_MATERIAL,
+      !> *CHANGE_LAW: pecplas_model_phases), in deck order; none for an ordinary step.
+      type(phase_change_t), allocatable :: changes(:)
+      !> RESET_DISPLACEMENTS=YES: the displacements restart at zero at the step start
+      !> (stresses and histories kept).
+      logical :: reset_displacements = .false.
       !> Deck position of the step (for messages).
       character(len=:), allocatable :: file
       integer :: line = 0

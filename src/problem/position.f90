@@ -26,6 +26,9 @@ module pecplas_problem_position
       !> PATH_NONE, and its state.
       integer :: path = PATH_NONE
       type(arc_trace_t) :: arc
+      !> The method the next increment's chain of methods starts with (pecplas_solve_attempts:
+      !> a later method of the chain that converged the last increment), 0 for the run's own.
+      integer :: lead = 0
       !> Test hook (--stop-after-increments N): stop with status 'interrupted' once the run
       !> has N converged increments in all (0: never).
       integer :: stop_after = 0

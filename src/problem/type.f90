@@ -17,13 +17,15 @@ module pecplas_problem_type
    use pecplas_problem_linear, only: linear_system_t
    use pecplas_problem_stats, only: run_stats_t
    use pecplas_problem_position, only: run_position_t
+   use pecplas_problem_phase, only: phase_state_t
+   use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes
    use pecplas_fe_joint_assembly, only: setup_joint_state
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
    implicit none (type, external)
    private
 
-   public :: problem_t, setup_problem, initialise_stresses
+   public :: problem_t, setup_problem, initialise_stresses, set_orphans
 
    !> A run's problem, in the parts it is made of: the discretised system (built once from
    !> the model), the linear system (matrix, solvers, factorisations), the run state (fields
@@ -39,6 +41,8 @@ module pecplas_problem_type
       !> Position of the step loop after the last converged increment (restart).
       type(run_position_t) :: position
       type(run_stats_t) :: stats
+      !> Phases: the phase in force and its carried out-of-balance (pecplas_phases_start).
+      type(phase_state_t) :: phase
    end type problem_t
 
 contains
@@ -50,6 +54,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: d(NCOMP, NCOMP)
       integer :: s, nel, ng, nst, nnode, npat, e, g
+      logical, allocatable :: eactive(:), jactive(:)
 
       nnode = model%mesh%nnode()
       allocate (problem%system%elems(size(model%mesh%esets)), problem%system%rules(size(model%mesh%esets)))
@@ -85,12 +90,20 @@ contains
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
+      ! phases: the sets first activated by a step are inactive until then
+      problem%phase%phased = is_phased(model)
+      if (problem%phase%phased) then
+         call initial_activity(model, eactive, jactive)
+         problem%state%sets%active = eactive
+         if (allocated(problem%state%joints%sets)) problem%state%joints%sets%active = jactive
+      end if
       npat = 0
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (problem%state%u(2, nnode), source=0.0_wp)
       allocate (problem%state%factors(npat), source=0.0_wp)
       call new_dofs(model, problem%system%dofs, error)
       if (allocated(error)) return
+      if (problem%phase%phased) call set_orphans(model, problem, eactive, jactive)
       allocate (problem%system%initial_force(2, nnode), source=0.0_wp)
       call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
          problem%system%pattern_disp, error)
@@ -117,5 +130,18 @@ contains
       call setup_katona(model, problem%state%joints, problem%katona, problem%system%initial_force, &
          error)
    end subroutine initialise_stresses
+
+   !> The free equations of the nodes that no active element or joint holds
+   !> (problem%state%orphan_eq: pecplas_fe_assembly keeps the stiffness regular there).
+   subroutine set_orphans(model, problem, eactive, jactive)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: eactive(:), jactive(:)
+      logical, allocatable :: held(:)
+      integer, allocatable :: eq(:, :)
+      held = attached_nodes(model, eactive, jactive)
+      eq = problem%system%dofs%eq
+      problem%state%orphan_eq = pack(eq, eq > 0 .and. spread(.not. held, 1, 2))
+   end subroutine set_orphans
 
 end module pecplas_problem_type

@@ -300,8 +300,13 @@ contains
       qn = norm2(free_part(problem, fq))
       if (.not. (qn > 0.0_wp)) return
       call load_vectors(problem, att%f0, att%ftarget, tau, fbase, fq_, up)
-      noise = 2.0_wp*tol*max(norm2(free_part(problem, fbase + tau*fq_ - &
-         problem%system%initial_force)), norm2(reaction))/qn
+      if (allocated(problem%phase%base_reaction)) then
+         noise = 2.0_wp*tol*max(norm2(free_part(problem, fbase + tau*fq_ - &
+            problem%system%initial_force)), norm2(reaction - problem%phase%base_reaction))/qn
+      else
+         noise = 2.0_wp*tol*max(norm2(free_part(problem, fbase + tau*fq_ - &
+            problem%system%initial_force)), norm2(reaction))/qn
+      end if
    end function load_noise
 
    !> Length of an increment that would raise the step fraction by dtau along the response

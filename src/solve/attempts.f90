@@ -6,8 +6,20 @@
 !> converge is tried again from the last converged state by the next methods of
 !>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
 !> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
-!> Modified Newton gives up as soon as its residual's rate shows it would crawl
-!> (pecplas_solve_iterate); the others run to the iteration cap. Every method is one
+!> Modified and quasi-Newton, when a later method follows them, give up as soon as their
+!> residual's rate shows they would crawl (pecplas_solve_iterate); the last method runs to
+!> the iteration cap. When every method failed, those that gave up early are tried once more,
+!> the strongest first, before the increment is cut: quasi-Newton running to the cap,
+!> modified Newton with a budget of MN_RETRY_BUDGET, as the chain did before it remembered
+!> (the early give-up saves time; every attempt that the chain without it makes from the same
+!> first method is still made). The chain remembers: when a later, stronger method converged the last
+!> increment in more than LEAD_ITERATIONS iterations, the next increment starts with it (its
+!> own chain: QUASI_NEWTON -> NEWTON, NEWTON -> QUASI_NEWTON), so that a run whose
+!> plastic zones make the cheaper methods crawl does not spend their failed attempts again
+!> at every increment; an increment that the remembered method converged within
+!> LEAD_ITERATIONS (nearly linear: unloading, an elastic stretch) hands the next one back
+!> to the run's own method. The remembered method is part of the run's position
+!> (problem%position%lead, kept in the restart data). Every method is one
 !> increment solver (pecplas_solve_method) chosen for the model by
 !> pecplas_solve_method_factory; Katona contact iterates its contact states inside modified
 !> or full Newton (it has no quasi-Newton: modified Newton takes its place in the chain).
@@ -18,7 +30,7 @@ module pecplas_solve_attempts
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_output, only: write_increment, progress_line
    use pecplas_base_timers, only: wall_time
-   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
+   use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t, CHAIN_BUDGET
    use pecplas_solve_method_factory, only: new_increment_method
    use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_base_strings, only: itoa
@@ -30,6 +42,13 @@ module pecplas_solve_attempts
    private
 
    public :: run_t, try_chain, accept_increment, method_chain
+
+   !> An increment that a remembered later method converged within this many iterations
+   !> hands the next one back to the run's own method (module header).
+   integer, parameter :: LEAD_ITERATIONS = 1
+   !> Budget of modified Newton's second attempt (its budget in the chain without early
+   !> give-up of quasi-Newton: the retries make every attempt that chain makes).
+   integer, parameter :: MN_RETRY_BUDGET = 60
 
    type :: run_t
       logical :: quiet = .false.
@@ -51,12 +70,21 @@ module pecplas_solve_attempts
 contains
 
    !> Methods tried for an increment, in order; `quasi_newton`: whether the increment
-   !> solver can take quasi-Newton iterations.
-   function method_chain(model, quasi_newton) result(methods)
+   !> solver can take quasi-Newton iterations; `lead`: the method the last increment
+   !> needed (problem%position%lead, 0 for the run's own), whose chain is taken instead when
+   !> it is a stronger method than the run's (METHOD_MODIFIED < METHOD_QUASI < METHOD_NEWTON)
+   !> and the run falls back at all.
+   function method_chain(model, quasi_newton, lead) result(methods)
       type(model_t), intent(in) :: model
       logical, intent(in) :: quasi_newton
+      integer, intent(in), optional :: lead
       integer, allocatable :: methods(:)
-      select case (model%solver%method)
+      integer :: first
+      first = model%solver%method
+      if (present(lead)) then
+         if (model%solver%fallback .and. lead > first) first = lead
+      end if
+      select case (first)
       case (METHOD_NEWTON)
          ! BFGS on the last factorised tangent: where a singular tangent stalls Newton
          ! (a mechanism forming at a limit load)
@@ -87,19 +115,37 @@ contains
       class(increment_method_t), allocatable :: solver
       integer, allocatable :: methods(:)
       character(len=:), allocatable :: reasons
-      integer :: i
+      logical, allocatable :: gave_up(:)
+      integer :: i, k
       call new_increment_method(problem, solver)
-      methods = method_chain(model, solver%has_quasi_newton())
+      methods = method_chain(model, solver%has_quasi_newton(), problem%position%lead)
       reasons = ''
-      do i = 1, size(methods)
+      allocate (gave_up(size(methods)), source=.false.)
+      ! the chain, then the methods that gave up early once more, the strongest first, each
+      ! run to the cap (a stronger method failed where a slow one would have converged: no
+      ! early give-up may cut an increment that the chain without it converges)
+      do k = 1, 2*size(methods)
+         if (k > size(methods)) then
+            i = 2*size(methods) - k + 1
+            if (.not. gave_up(i)) cycle
+         else
+            i = k
+         end if
          method = methods(i)
          att%method = method
          att%line_search = model%solver%line_search .and. method /= METHOD_MODIFIED
-         ! only modified Newton's linear rate predicts its end reliably; the others run to
-         ! the cap (BFGS converges irregularly while joint states still change)
-         att%give_up_early = i < size(methods) .and. method == METHOD_MODIFIED
+         ! the single-factorisation methods give up on a crawl when a later method follows;
+         ! full Newton, and the chain's last method, run to the cap; a second attempt runs to
+         ! the cap too, but modified Newton's, which gives up past MN_RETRY_BUDGET
+         att%give_up_early = k < size(methods) .and. method /= METHOD_NEWTON
+         att%budget = CHAIN_BUDGET
+         if (k > size(methods) .and. method == METHOD_MODIFIED) then
+            att%give_up_early = .true.
+            att%budget = MN_RETRY_BUDGET
+         end if
          call solver%solve_increment(model, problem, att, run%fint_conv, u, fint, reaction, &
             out, error)
+         gave_up(i) = out%gave_up .and. k <= size(methods)
          if (allocated(error)) then
             ! a failed material return or a singular system of trial states fails the attempt
             if (error%kind /= ERR_RUN .and. error%kind /= ERR_SINGULAR) return
@@ -149,6 +195,10 @@ contains
       call problem%state%commit()
       problem%state%u = u
       problem%state%factors = att%factors(out%tau)
+      ! the method the next increment starts with (module header)
+      problem%position%lead = 0
+      if (method /= model%solver%method .and. out%iterations > LEAD_ITERATIONS) &
+         problem%position%lead = method
       run%fint_conv = fint
       if (allocated(out%du)) run%du_prev = out%du
       call cpu_time(t_now)

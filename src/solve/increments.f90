@@ -36,6 +36,9 @@ module pecplas_solve_increments
    use pecplas_base_timers, only: wall_time
    use pecplas_base_signals, only: interrupt_requested, interrupt_signal
    use pecplas_solve_output, only: stop_pending
+   use pecplas_phases_start, only: start_phase, LINE_LEN
+   use pecplas_solve_stiffness, only: factorise_stiffness
+   use pecplas_io_results_phases, only: write_phase
    implicit none (type, external)
    private
 
@@ -73,8 +76,20 @@ contains
          run%fint_conv = problem%position%fint_conv
          istep0 = problem%position%istep
          if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
+         ! a phased run goes on in the phase in force: the new file records it
+         if (problem%phase%phased) then
+            call record_phase(model, problem, results, istep0, [character(len=LINE_LEN) :: &
+               'resumed by a restart (the changes of this phase were made by the run before)'], &
+               error)
+            if (allocated(error)) return
+         end if
       end if
       do istep = istep0, size(model%steps)
+         ! a phased run: the step's changes at its start (a resumed step has them already)
+         if (problem%phase%phased .and. .not. problem%position%resume) then
+            call begin_phase(model, problem, results, run, istep, error)
+            if (allocated(error)) return
+         end if
          f0 = problem%state%factors
          if (problem%position%resume) f0 = problem%position%f0
          ftarget = f0
@@ -94,6 +109,51 @@ contains
       if (status == RUN_LIMIT_LOAD) call results%write_limit(run%limit, error)
       if (present(limit) .and. status == RUN_LIMIT_LOAD) limit = run%limit
    end subroutine run_increments
+
+   !> The start of step istep of a phased run (pecplas_phases_start): its changes applied,
+   !> the stiffness factorised again when they changed it, the phase in the results file.
+   subroutine begin_phase(model, problem, results, run, istep, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(results_file_t), intent(inout) :: results
+      type(run_t), intent(inout) :: run
+      integer, intent(in) :: istep
+      type(error_t), allocatable, intent(out) :: error
+      character(len=LINE_LEN), allocatable :: lines(:)
+      logical :: refactorise
+      call start_phase(model, problem, istep, run%fint_conv, refactorise, lines, error)
+      if (allocated(error)) return
+      if (refactorise) then
+         call factorise_stiffness(model, problem, .false., error)
+         if (allocated(error)) return
+      end if
+      call record_phase(model, problem, results, istep, lines, error)
+      if (allocated(error)) return
+      if (.not. run%quiet .and. size(lines) > 0) then
+         write (*, '(a)') ' phase '//itoa(istep)//' ('//model%steps(istep)%name//'):'
+         block
+            integer :: i
+            do i = 1, size(lines)
+               write (*, '(a)') '   '//trim(lines(i))
+            end do
+         end block
+      end if
+   end subroutine begin_phase
+
+   !> The phase of step istep in the results file (/phases), with the sets active in it.
+   subroutine record_phase(model, problem, results, istep, lines, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(results_file_t), intent(inout) :: results
+      integer, intent(in) :: istep
+      character(len=*), intent(in) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: eactive(:), jactive(:)
+      eactive = problem%state%sets%active
+      allocate (jactive(0))
+      if (allocated(problem%state%joints%sets)) jactive = problem%state%joints%sets%active
+      call write_phase(results, istep, model%steps(istep)%name, lines, eactive, jactive, error)
+   end subroutine record_phase
 
    !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and
    !> grown back after success.

@@ -40,12 +40,13 @@ module pecplas_solve_iterate
       procedure :: solve_increment => newton_solve_increment
    end type newton_method_t
 
-   !> Early give-up of a method that is not the chain's last (see `hopeless`).
    !> Memory of the BFGS pairs (2 n reals each): every pair of the increment while they fit
    !> in BFGS_BYTES, else the newest ones (at least BFGS_MIN_PAIRS; limited memory).
    real(wp), parameter :: BFGS_BYTES = 256.0_wp*2.0_wp**20
    integer, parameter :: BFGS_MIN_PAIRS = 10
-   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, MN_BUDGET = 60, SLOW_SPAN = 20
+   !> Early give-up of a single-factorisation method that is not the chain's last (see
+   !> `hopeless` and attempt_t%budget), judged from MIN_RATE_ITERS iterations on.
+   integer, parameter :: MIN_RATE_ITERS = 8, RATE_SPAN = 4, QN_SPAN = 8, QN_BLOCK = 4
 
 contains
 
@@ -159,9 +160,10 @@ contains
             return
          end if
          if (att%give_up_early .and. it >= MIN_RATE_ITERS) then
-            if (hopeless(hist(0:it), model%solver%tolerance, model%solver%max_iterations, &
-                att%method == METHOD_MODIFIED)) then
+            if (hopeless(hist(0:it), model%solver%tolerance, &
+                min(model%solver%max_iterations, att%budget), att%method == METHOD_MODIFIED)) then
                out%reason = 'stagnating residual (its rate would miss the iteration cap)'
+               out%gave_up = .true.
                return
             end if
          end if
@@ -361,33 +363,41 @@ contains
       end if
    end function cap_reason
 
-   !> Modified Newton (linear convergence): true when the mean contraction of the last
-   !> RATE_SPAN iterations cannot bring the residual below `tol` within min(cap, MN_BUDGET)
-   !> iterations (the next method of the chain is cheaper than a crawl). Other methods
-   !> converge irregularly (BFGS speeds up as pairs accumulate, a tangent changes with the
-   !> slip states): true only when the residual has not fallen over SLOW_SPAN iterations.
-   pure logical function hopeless(hist, tol, cap, linear)
+   !> Whether a single-factorisation method followed by a stronger one in the chain should
+   !> give up: true when the residual's contraction predicts more than `budget`
+   !> iterations to reach `tol` (or no contraction at all). Modified Newton converges
+   !> linearly: its rate is the mean contraction of the last RATE_SPAN iterations. BFGS
+   !> converges irregularly (it speeds up as pairs accumulate, single steps may raise the
+   !> residual): its rate compares the smallest residual of the last QN_BLOCK iterations
+   !> with the smallest of the QN_BLOCK iterations QN_SPAN earlier, so that a single bad step
+   !> does not decide, and it is judged from QN_SPAN + QN_BLOCK iterations on.
+   pure logical function hopeless(hist, tol, budget, linear)
       real(wp), intent(in) :: hist(0:)
       real(wp), intent(in) :: tol
-      integer, intent(in) :: cap
+      integer, intent(in) :: budget
       logical, intent(in) :: linear
-      real(wp) :: rate, need
-      integer :: n
+      real(wp) :: rate, need, now, before
+      integer :: n, span
       n = ubound(hist, 1)
       hopeless = .false.
-      if (.not. linear) then
-         if (n < SLOW_SPAN) return
-         hopeless = minval(hist(n - SLOW_SPAN/2:n)) >= minval(hist(0:n - SLOW_SPAN/2 - 1))
-         return
+      span = RATE_SPAN
+      if (linear) then
+         now = hist(n)
+         before = hist(n - RATE_SPAN)
+      else
+         if (n < QN_SPAN + QN_BLOCK) return
+         span = QN_SPAN
+         now = minval(hist(n - QN_BLOCK + 1:n))
+         before = minval(hist(n - QN_SPAN - QN_BLOCK + 1:n - QN_SPAN))
       end if
-      if (.not. (hist(n - RATE_SPAN) > 0.0_wp) .or. .not. (hist(n) > 0.0_wp)) return
-      rate = (hist(n)/hist(n - RATE_SPAN))**(1.0_wp/RATE_SPAN)
+      if (.not. (before > 0.0_wp) .or. .not. (now > 0.0_wp)) return
+      rate = (now/before)**(1.0_wp/span)
       if (rate >= 1.0_wp) then
          hopeless = .true.
          return
       end if
-      need = log(tol/hist(n))/log(rate)
-      hopeless = n + need > real(min(cap, MN_BUDGET), wp)
+      need = log(tol/now)/log(rate)
+      hopeless = n + need > real(budget, wp)
    end function hopeless
 
    pure real(wp) function ieee_nan() result(x)

@@ -31,6 +31,7 @@ module pecplas_solve_katona_increment
    use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
    use pecplas_solve_residual, only: load_vectors, internal_forces_at, free_residual, &
       free_part, add_free
+   use pecplas_fe_imposed, only: imposed_forces
    implicit none (type, external)
    private
 
@@ -95,7 +96,7 @@ contains
       integer, allocatable :: flips(:)
       real(wp) :: rnorm, ref, t0, tau
       integer :: k, nstates, nit, n2
-      logical :: newton
+      logical :: newton, imposed
 
       out%reason = ''
       newton = att%method == METHOD_NEWTON
@@ -118,9 +119,17 @@ contains
          u = problem%state%u
          where (dofs%eq == 0) u = up
          allocate (fint, mold=fint_conv)
+         ! moved imposed displacements (load control): their linear response is the first
+         ! outer iteration's load, as in pecplas_solve_iterate; the internal forces are then
+         ! those of the converged state until the first update
+         imposed = any(u /= problem%state%u) .and. .not. att%arc
          ! before the first converged increment the driver's fint_conv is the initial-stress
          ! load, which holds the initial contact forces too: the massif's own is needed here
-         if (any(u /= problem%state%u) .or. problem%stats%increments == 0) then
+         if (imposed .and. problem%stats%increments == 0) then
+            call internal_forces_at(model, problem, problem%state%u, fint, error)
+            if (allocated(error)) return
+         else if (.not. imposed .and. (any(u /= problem%state%u) .or. &
+                  problem%stats%increments == 0)) then
             call internal_forces_at(model, problem, u, fint, error)
             if (allocated(error)) return
          else
@@ -139,6 +148,10 @@ contains
             call add_contact_forces(kt, kt%f_trial, fc)
             call free_residual(problem, fext, fint + fc, r, reaction, rnorm, ref)
             rhs = free_part(problem, fext - fint)
+            if (iters == 0 .and. imposed) then
+               call subtract_imposed(error)
+               if (allocated(error)) return
+            end if
             residual = 0.0_wp
             if (ref > 0.0_wp) residual = rnorm/ref
             ! at least one solve: the states must be checked against the new loads. A state of
@@ -227,6 +240,21 @@ contains
       end associate
 
    contains
+
+      !> rhs = rhs - K_fc dup on the free equations (pecplas_fe_imposed), dup the change of
+      !> the imposed displacements, K the matrix the first outer iteration solves with: the
+      !> points' converged tangents under full Newton (its first iteration keeps the last
+      !> factorised tangent), else the elastic stiffness.
+      subroutine subtract_imposed(err)
+         type(error_t), allocatable, intent(out) :: err
+         real(wp), allocatable :: fimp(:, :)
+         allocate (fimp, mold=u)
+         call imposed_forces(model, problem%system%dofs, problem%system%rules, &
+            problem%state, u - problem%state%u, newton .and. problem%state%converged_tangents, &
+            fimp, err)
+         if (allocated(err)) return
+         rhs = rhs - free_part(problem, fimp)
+      end subroutine subtract_imposed
 
       !> One arc-length outer iteration: v = v_r on entry (R^-1 of the residual at the current
       !> load), the displacement step on exit; arc%dtau the load step, arc%ok false when the

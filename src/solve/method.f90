@@ -20,7 +20,10 @@ module pecplas_solve_method
    implicit none (type, external)
    private
 
-   public :: attempt_t, outcome_t, increment_method_t
+   public :: attempt_t, outcome_t, increment_method_t, CHAIN_BUDGET
+
+   !> Default of attempt_t%budget.
+   integer, parameter :: CHAIN_BUDGET = 20
 
    !> What to try: method, line search, control, and the step's load path
    !> factors(tau) = f0 + (ftarget - f0) tau.
@@ -31,6 +34,13 @@ module pecplas_solve_method
       !> Give up as soon as the residual's rate shows the cap will be missed (a later method
       !> of the chain takes over); false for the last method, which runs to the cap.
       logical :: give_up_early = .false.
+      !> The iterations the method may be predicted to need before it gives up early:
+      !> min(cap, budget). The chain's first attempts use CHAIN_BUDGET: a full-Newton
+      !> increment takes 3 to 7 iterations, each costing a residual plus an assembly and
+      !> factorisation of the tangent, about two residuals on the 2 000-equation footing of
+      !> doc/bench/peer_footing.md (a ratio that grows with the mesh), so a
+      !> single-factorisation crawl predicted past 20 saves little or nothing.
+      integer :: budget = CHAIN_BUDGET
       !> Arc-length control (tau unknown, ||Δu|| = dl); else load control to tau1.
       logical :: arc = .false.
       real(wp) :: dl = 0.0_wp
@@ -53,6 +63,8 @@ module pecplas_solve_method
       !> reached has no unique solution (a mechanism under those states).
       character(len=:), allocatable :: reason
       logical :: singular = .false.
+      !> The attempt gave up early (att%give_up_early: its rate would miss the cap).
+      logical :: gave_up = .false.
       !> Free displacement increment of the increment.
       real(wp), allocatable :: du(:)
    end type outcome_t

@@ -13,6 +13,9 @@ module pecplas_solve_residual
    implicit none (type, external)
    private
 
+   !> Loads and reactions below this fraction of the held load of a phased run are roundoff.
+   real(wp), parameter :: HELD_ROUNDOFF = 1.0e-10_wp
+
    public :: path_factor, load_vectors, internal_forces_at, free_residual, free_part, add_free, &
       joint_signature
 
@@ -27,7 +30,9 @@ contains
 
    !> The step's loads at step fraction tau: F_ext = fbase + tau fq, with fbase the initial
    !> stress forces plus the patterns at their step-start factors f0 and fq the change of the
-   !> force patterns over the step; up the imposed displacements at fraction `tau_up`.
+   !> force patterns over the step; up the imposed displacements at fraction `tau_up`. In a
+   !> phased run the held load of the active sets stands for the initial-stress forces and
+   !> the phase's carried out-of-balance c goes from fbase to zero: fbase + c, fq - c.
    subroutine load_vectors(problem, f0, ftarget, tau_up, fbase, fq, up)
       type(problem_t), intent(in) :: problem
       real(wp), intent(in) :: f0(:), ftarget(:), tau_up
@@ -42,6 +47,11 @@ contains
          if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%system%pattern_force(:, :, p)
          up = up + path_factor(f0(p), ftarget(p), tau_up)*problem%system%pattern_disp(:, :, p)
       end do
+      ! a phase's out-of-balance, carried from the step start to zero at its end
+      if (allocated(problem%phase%carried)) then
+         fbase = fbase + problem%phase%carried
+         fq = fq - problem%phase%carried
+      end if
    end subroutine load_vectors
 
    !> Internal forces fint at the nodal displacements u from the converged state (timed as
@@ -83,7 +93,18 @@ contains
          end do
       end do
       rnorm = norm2(r)
-      ref = max(norm2(pack(fext - problem%system%initial_force, problem%system%dofs%eq > 0)), norm2(reaction))
+      if (allocated(problem%phase%base_reaction)) then
+         ! a phased run: the reactions from those of the K0 state (its weight's)
+         ref = max(norm2(pack(fext - problem%system%initial_force, problem%system%dofs%eq > 0)), &
+            norm2(reaction - problem%phase%base_reaction))
+         ! nothing acts beyond the held load but roundoff (a nil step on a balanced state):
+         ! measured against the held load, as the initial-stress forces below
+         if (ref <= HELD_ROUNDOFF*norm2(pack(problem%system%initial_force, &
+             problem%system%dofs%eq > 0))) ref = 0.0_wp
+      else
+         ref = max(norm2(pack(fext - problem%system%initial_force, problem%system%dofs%eq > 0)), &
+            norm2(reaction))
+      end if
       if (ref == 0.0_wp) ref = norm2(pack(problem%system%initial_force, problem%system%dofs%eq > 0))
    end subroutine free_residual
 

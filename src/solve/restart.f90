@@ -16,7 +16,8 @@ module pecplas_solve_restart
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
       ARC_VECTOR_V1
-   use pecplas_solve_stiffness, only: factorise_values, partitioned
+   use pecplas_solve_stiffness, only: factorise_values, partitioned, factorise_stiffness
+   use pecplas_phases_start, only: replay_phases
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_io_results_restart, only: restart_data_t, read_restart_group
    use pecplas_io_results_checksum, only: deck_checksum
@@ -63,6 +64,7 @@ contains
          ! the arc-length path under way, and the last increment's displacement increment
          ! that directs it (a limit probe's first length, an arc predictor's sign)
          if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
+         call data%add('lead', [real(p%lead, wp)])
          call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
          if (p%path /= PATH_NONE) then
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
@@ -74,8 +76,16 @@ contains
             call data%add('u', reshape(st%u, [size(st%u)]))
          end if
          call data%add('factors', st%factors)
+         ! a phased run: the phase in force and its carried out-of-balance (the sets it
+         ! has inactive hold nothing a later phase reads: not stored)
+         if (problem%phase%phased) then
+            call data%add('phase', [real(problem%phase%index, wp)])
+            if (allocated(problem%phase%carried)) call data%add('phase_carried', &
+               reshape(problem%phase%carried, [size(problem%phase%carried)]))
+         end if
          tangents = tangents_carried(model, problem)
          do s = 1, size(st%sets)
+            if (.not. st%sets(s)%active) cycle
             if (tangents .and. allocated(st%sets(s)%tangent)) &
                call data%add('tangent_'//itoa(s), reshape(st%sets(s)%tangent, &
                [size(st%sets(s)%tangent)]))
@@ -91,6 +101,7 @@ contains
          end do
          if (allocated(st%joints%sets)) then
             do s = 1, size(st%joints%sets)
+               if (.not. st%joints%sets(s)%active) cycle
                associate (j => st%joints%sets(s))
                   call data%add('joint_eps_'//itoa(s), flat3(j%eps))
                   call data%add('joint_sigma_'//itoa(s), flat3(j%sigma))
@@ -108,6 +119,8 @@ contains
             call data%add('katona_force', reshape(kt%f, [size(kt%f)]))
             call data%add('katona_z', reshape(kt%z, [size(kt%z)]))
             call data%add('katona_anchor', kt%anchor)
+            ! phases: a reactivated doublet measures its gap from its reactivation
+            if (problem%phase%phased) call data%add('katona_gap0', kt%gap0)
          end if
          ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
          if (p%exact .and. .not. partitioned(model)) then
@@ -162,6 +175,11 @@ contains
          return
       end if
       call unpack_data(data, model, problem, error)
+      ! the stiffness of the phase in force (the set-up's is that of the first)
+      if (.not. allocated(error) .and. problem%phase%phased) then
+         call factorise_stiffness(model, problem, .false., error)
+         problem%state%converged_tangents = tangents_carried(model, problem)
+      end if
       if (.not. allocated(error)) call restore_operators(data, model, problem, error)
       if (allocated(error)) then
          msg = error%text()
@@ -218,7 +236,29 @@ contains
          call data%get('factors', size(st%factors), v, error)
          if (allocated(error)) return
          st%factors = v
+         ! a phased run: its phases up to the one in force applied again (activity,
+         ! materials, laws, the sizes of the histories), then its carried out-of-balance
+         if (problem%phase%phased) then
+            call data%get('phase', 1, v, error)
+            if (allocated(error)) return
+            if (nint(v(1)) < 0 .or. nint(v(1)) > size(model%steps)) then
+               call fatal_error(error, 'restart phase '//itoa(nint(v(1)))//' is not a step of '// &
+                  'the deck')
+               return
+            end if
+            call replay_phases(model, problem, nint(v(1)), error)
+            if (allocated(error)) return
+            if (data%has('phase_carried')) then
+               call data%get('phase_carried', size(st%u), v, error)
+               if (allocated(error)) return
+               problem%phase%carried = reshape(v, shape(st%u))
+            end if
+            call data%get('u', size(st%u), v, error)
+            if (allocated(error)) return
+            st%u = reshape(v, shape(st%u))
+         end if
          do s = 1, size(st%sets)
+            if (.not. st%sets(s)%active) cycle
             if (tangents .and. data%has('tangent_'//itoa(s)) .and. &
                 allocated(st%sets(s)%tangent)) &
                call get4(data, 'tangent_'//itoa(s), st%sets(s)%tangent, error)
@@ -229,6 +269,7 @@ contains
             if (allocated(error)) return
          end do
          do s = 1, nj
+            if (.not. st%joints%sets(s)%active) cycle
             associate (j => st%joints%sets(s))
                call get3(data, 'joint_eps_'//itoa(s), j%eps, error)
                if (.not. allocated(error)) call get3(data, 'joint_sigma_'//itoa(s), j%sigma, error)
@@ -261,6 +302,10 @@ contains
             kt%z = reshape(v, shape(kt%z))
             call data%get('katona_anchor', kt%nd, kt%anchor, error)
             if (allocated(error)) return
+            if (problem%phase%phased .and. data%has('katona_gap0')) then
+               call data%get('katona_gap0', kt%nd, kt%gap0, error)
+               if (allocated(error)) return
+            end if
             call kt%begin_increment()
          end if
          ! trial = converged everywhere, as after a commit; the points' tangents are the
@@ -271,8 +316,9 @@ contains
       end associate
    end subroutine unpack_data
 
-   !> The arc-length path under way and the last displacement increment (absent from restart
-   !> data of an older version: no path, no increment).
+   !> The arc-length path under way, the last displacement increment and the method the
+   !> chain starts with (absent from restart data of an older version: no path, no
+   !> increment, the run's method).
    subroutine unpack_path(data, problem, error)
       type(restart_data_t), intent(in) :: data
       type(problem_t), intent(inout) :: problem
@@ -282,6 +328,13 @@ contains
          if (data%has('du_prev')) then
             call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
             if (allocated(error)) return
+         end if
+         ! the method the chain starts with (older restart data: the run's own)
+         p%lead = 0
+         if (data%has('lead')) then
+            call data%get('lead', 1, v, error)
+            if (allocated(error)) return
+            p%lead = nint(v(1))
          end if
          p%path = PATH_NONE
          if (.not. data%has('arc')) return
@@ -383,8 +436,8 @@ contains
       integer :: s
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
-         'katona_anchor', 'operators', 'operator', 'tangent_operator', 'du_prev', 'arc', &
-         'arc_peak_factors', 'arc_why']
+         'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
+         'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'phase', 'phase_carried']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s)]

@@ -67,6 +67,7 @@ GENERATORS = [
     (["make_s5_deck", "-o", "{tmp}/s5_shear_box.inp"], "input/s5"),
     (["make_s6_decks", "--out", "{tmp}"], "input"),
     (["make_default_deck", "-o", "{tmp}/strip_footing.inp"], "input/examples"),
+    (["make_phase_examples", "--out", "{tmp}"], "input/examples"),
     (["make_hertz_deck", "--out", "{tmp}/hertz.inp"], "test/data/katona"),
     (["make_katona_decks", "--out", "{tmp}"], "test/data/katona"),
     (["make_patch_decks", "--out", "{tmp}"], "test/data/joints"),

@@ -14,11 +14,14 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import xml.etree.ElementTree as ET
+
 import h5py
 import numpy as np
 import pytest
 
 from pecplas_py import script_cmd
+from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "output" / "test"
@@ -33,6 +36,7 @@ EXPECTED = {
     "io_results_failed.h5": "failed",
     "io_results_final.h5": "running",
     "io_results_nopattern.h5": "completed",
+    "io_results_phases.h5": "completed",
 }
 
 
@@ -48,9 +52,10 @@ def fortran_output():
                            "`fpm test` fail?): " + ", ".join(stale))
         return
     if not os.environ.get("PECPLAS_NO_FPM") and shutil.which("fpm"):
-        run = subprocess.run(["fpm", "test", "--", "io_results"], cwd=ROOT,
-                             capture_output=True, text=True)
-        assert run.returncode == 0, "fpm test -- io_results failed:\n" + run.stdout + run.stderr
+        for suite in ("io_results", "io_results_phases"):
+            run = subprocess.run(["fpm", "test", "--", suite], cwd=ROOT,
+                                 capture_output=True, text=True)
+            assert run.returncode == 0, f"fpm test -- {suite} failed:\n" + run.stdout + run.stderr
     missing = [name for name in EXPECTED if not (OUT / name).exists()]
     if missing:
         pytest.skip("run `fpm test -- io_results` first; missing " + ", ".join(missing))
@@ -142,3 +147,44 @@ def test_checker_catches_false_completion(broken):
         f.attrs["status"] = "diverged"
     run = run_checker(broken)
     assert run.returncode == 1 and "contradicts" in run.stdout
+
+
+def xdmf_grids(xmf):
+    """{increment grid name: set of the names of its grids} of a sidecar, in time order."""
+    root = ET.parse(xmf).getroot()
+    out = {}
+    for grid in root.iter("Grid"):
+        if grid.get("CollectionType") == "Spatial":
+            out[grid.get("Name")] = {g.get("Name") for g in grid.findall("Grid")}
+    return out
+
+
+def test_phases_listed_and_played_by_the_xdmf():
+    """A staged run (io_results_phases: LINING removed in phase 2, installed again in phase
+    3): the reader lists the phases and their changes, the removed set has no fields and no
+    grid in the increments of phase 2, and the sidecar shows it again afterwards."""
+    with Results(OUT / "io_results_phases.h5") as r:
+        phases = r.phases()
+        assert [p["name"] for p in phases] == ["geostatic", "excavate", "install"]
+        assert phases[1]["changes"] == ["DEACTIVATE LINING (1 element)"]
+        assert phases[2]["changes"] == ["ACTIVATE LINING, STRESS=ZERO",
+                                        "CHANGE_MATERIAL SOIL, clay2"]
+        assert [p["first_global_increment"] for p in phases] == [1, 3, 4]
+        assert phases[0]["changes"] == ["initial procedure: K0 procedure"]
+        assert r.attr("initial_procedure") == "K0 procedure"
+        assert phases[1]["active_element_sets"] == ["SOIL"]
+        assert r.active_sets("000003") == (["SOIL"], [])
+        assert r.active_sets("000004") == (["LINING", "SOIL"], [])
+    grids = xdmf_grids(OUT / "io_results_phases.xmf")
+    assert grids == {"000001": {"SOIL", "LINING"}, "000002": {"SOIL", "LINING"},
+                     "000003": {"SOIL"}, "000004": {"SOIL", "LINING"}}
+
+
+def test_checker_catches_fields_of_a_removed_set(tmp_path):
+    for ext in (".h5", ".xmf"):
+        shutil.copy(OUT / ("io_results_phases" + ext), tmp_path / ("io_results_phases" + ext))
+    broken = tmp_path / "io_results_phases.h5"
+    with h5py.File(broken, "r+") as f:
+        f.copy("increments/000002/sets/LINING", "increments/000003/sets/LINING")
+    run = run_checker(broken, "--no-xdmf")
+    assert run.returncode == 1 and "fields of a set not active" in run.stdout

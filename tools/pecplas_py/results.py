@@ -8,6 +8,8 @@
             s = r.field(key, "joints/shaft/stress")  # (nel, npoint, 2)
         r.history("iterations"), r.pattern_factors(), r.field_rows()
         r.limit()                                    # None, or {"factors", "global_increment"}
+        r.phases()          # staged runs: [{"index", "name", "changes", "active_element_sets", ...}]
+        r.phase_of(key)     # the phase (step) of a written increment
 
 Text attributes come back as `str` (h5py gives bytes for some of them); arrays as NumPy
 arrays. `r.file` is the open h5py.File for what this module does not cover. Scripts that check
@@ -140,6 +142,81 @@ class Results:
     def fields(self, name):
         """Dataset `name` of every written increment, stacked (nkeys, ...)."""
         return np.array([self.field(k, name) for k in self.keys])
+
+    # ---- phases of a staged run (the step is the phase)
+    def phases(self):
+        """The phases listed in /phases, in order: dicts with index, name, changes (list of
+        str), first_global_increment (-1: none written), first_history_row (1-based),
+        element_sets / joint_sets (names), active_element_sets / active_joint_sets (lists of
+        the names active in the phase). A run without phases: one entry per step of the
+        history, every set active and no change listed."""
+        esets = list(self.file["mesh/sets"].keys()) if "mesh/sets" in self.file else []
+        jsets = list(self.file["mesh/joint_sets"].keys()) if "mesh/joint_sets" in self.file \
+            else []
+        if "phases" not in self.file:
+            steps = self.history("step") if "history/step" in self.file else []
+            glob = self.history("global_increment") if len(steps) else []
+            out = []
+            for index in sorted(set(int(s) for s in steps)):
+                row = int(np.nonzero(steps == index)[0][0])
+                out.append({"index": index, "name": "", "changes": [],
+                            "first_global_increment": int(glob[row]),
+                            "first_history_row": row + 1, "element_sets": esets,
+                            "joint_sets": jsets, "active_element_sets": list(esets),
+                            "active_joint_sets": list(jsets)})
+            return out
+        out = []
+        for key in sorted(self.file["phases"].keys(), key=int):
+            g = self.file["phases"][key]
+            names_e = text(g.attrs.get("element_sets", np.array([], dtype=object)))
+            names_j = text(g.attrs.get("joint_sets", np.array([], dtype=object)))
+            mask_e = g["active_element_sets"][()] if "active_element_sets" in g else []
+            mask_j = g["active_joint_sets"][()] if "active_joint_sets" in g else []
+            out.append({"index": int(g.attrs["index"]), "name": text(g.attrs["name"]),
+                        "changes": list(text(g.attrs.get("changes",
+                                                         np.array([], dtype=object)))),
+                        "first_global_increment": int(g.attrs["first_global_increment"]),
+                        "first_history_row": int(g.attrs["first_history_row"]),
+                        "element_sets": list(names_e), "joint_sets": list(names_j),
+                        "active_element_sets": [n for n, m in zip(names_e, mask_e) if m],
+                        "active_joint_sets": [n for n, m in zip(names_j, mask_j) if m]})
+        return out
+
+    def phase(self, index):
+        """The phase (dict of phases()) of step `index`."""
+        for p in self.phases():
+            if p["index"] == index:
+                return p
+        raise KeyError(f"no phase {index} in {self.path}")
+
+    def phase_of(self, key):
+        """The phase index of written increment `key`: the phase of /phases whose first
+        increment is the latest not after it (its step, as the driver writes them), else
+        the increment's step."""
+        if "phases" in self.file:
+            g = int(self.increment(key).attrs["global_increment"])
+            best = None
+            for p in self.file["phases"].values():
+                first = int(p.attrs["first_global_increment"])
+                if 1 <= first <= g and (best is None or first > best[0]):
+                    best = (first, int(p.attrs["index"]))
+            if best is not None:
+                return best[1]
+        return self.step_of(key)
+
+    def active_sets(self, key):
+        """(element sets, joint sets) that hold fields in increment `key`: those active in
+        its phase."""
+        g = self.increment(key)
+        return (sorted(g["sets"].keys()) if "sets" in g else [],
+                sorted(g["joints"].keys()) if "joints" in g else [])
+
+    def phase_ends(self):
+        """{phase index: key of the last written increment of that phase}."""
+        ends = {}
+        for k in self.keys:
+            ends[self.phase_of(k)] = k
+        return ends
 
     # ---- limit load
     def limit(self):

@@ -26,16 +26,18 @@ module pecplas_io_deck_reader
    use pecplas_model_options, only: METHOD_MODIFIED
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
+   use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
    implicit none (type, external)
    private
 
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(21) = [character(len=15) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(25) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
-      '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT']
+      '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
+      '*CHANGE_MATERIAL', '*CHANGE_LAW']
 
 contains
 
@@ -113,6 +115,9 @@ contains
       ! last: splitting nodes for generated joints extends supports and patterns
       call resolve_joints(state, model, error)
       if (allocated(error)) return
+      ! phase changes name joint sets too
+      call resolve_phases(state, model, error)
+      if (allocated(error)) return
       call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return
       call record_places(state, model)
@@ -159,7 +164,10 @@ contains
          call read_load(state, block, error)
       case ('*STEP')
          call read_step(state, block, error)
+      case ('*DEACTIVATE', '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW')
+         call read_change(state, block, error)
       case ('*END STEP')
+         state%open_step = 0
          call no_data(state, block, error)
          if (.not. allocated(error)) call block%kw%check_keys(state%lines%get(block%at), &
             [character(len=1) ::], error)

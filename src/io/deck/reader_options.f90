@@ -262,7 +262,7 @@ contains
       integer :: i, n
       call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'NAME', &
          'INCREMENTS', 'CONTROL', 'MAX_INCREMENTS', 'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', &
-         'NODE', 'DOF', 'DISPLACEMENT'], error)
+         'NODE', 'DOF', 'DISPLACEMENT', 'RESET_DISPLACEMENTS'], error)
       if (allocated(error)) return
       if (.not. allocated(state%steps)) allocate (state%steps(0))
       n = size(state%steps)
@@ -280,12 +280,11 @@ contains
       if (allocated(error)) return
       call read_step_control(state, block, step, error)
       if (allocated(error)) return
+      call param_yes_no(state, block, 'RESET_DISPLACEMENTS', step%reset_displacements, error)
+      if (allocated(error)) return
       step%at = block%at
-      if (block%last < block%first) then
-         call line_error(state, block%at, "empty step '"//step%name//"': expected lines "// &
-            '"pattern, target_factor" after *STEP', error)
-         return
-      end if
+      ! a step without "pattern, target_factor" lines is a nil step (doc/deck.md, Phases)
+      allocate (step%changes(0))
       do i = block%first, block%last
          call split_fields(state%lines%text(i), f)
          call check_count(state%lines%get(i), f, 2, 2, 'pattern, target_factor', error)
@@ -305,6 +304,7 @@ contains
       tmp(1:n) = state%steps
       tmp(n + 1) = step
       call move_alloc(tmp, state%steps)
+      state%open_step = n + 1
    end subroutine read_step
 
    !> CONTROL= and the arc-length options of *STEP.

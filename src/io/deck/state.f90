@@ -16,7 +16,7 @@ module pecplas_io_deck_state
    private
 
    public :: deck_state_t, deck_block_t, raw_eset_t, raw_nset_t, raw_edge_set_t
-   public :: raw_section_t, raw_item_t, raw_pattern_t, raw_step_t
+   public :: raw_section_t, raw_item_t, raw_pattern_t, raw_step_t, raw_change_t
    public :: line_error, where_text, grow_int, grow_int2, grow_real2, push_item
 
    !> A keyword line (index `at`) and its data lines first..last (none if last < first).
@@ -77,6 +77,14 @@ module pecplas_io_deck_state
       type(raw_item_t), allocatable :: items(:)
    end type raw_pattern_t
 
+   !> One phase change of a step (*DEACTIVATE, *ACTIVATE, *CHANGE_MATERIAL, *CHANGE_LAW):
+   !> kind (pecplas_model_phases), the set and new material/law names as written, how an
+   !> activated set starts, and its data line.
+   type :: raw_change_t
+      integer :: kind = 0, start = 0, at = 0
+      character(len=:), allocatable :: set, new
+   end type raw_change_t
+
    !> One *STEP block: items hold (pattern name, target factor).
    type :: raw_step_t
       character(len=:), allocatable :: name
@@ -88,6 +96,9 @@ module pecplas_io_deck_state
       character(len=:), allocatable :: node
       real(wp) :: displacement = 0.0_wp, min_length = 1.0e-4_wp, max_length = 10.0_wp
       type(raw_item_t), allocatable :: items(:)
+      !> RESET_DISPLACEMENTS=YES, and the phase changes of the step in deck order.
+      logical :: reset_displacements = .false.
+      type(raw_change_t), allocatable :: changes(:)
    end type raw_step_t
 
    !> Everything collected while reading, before references are resolved.
@@ -105,6 +116,9 @@ module pecplas_io_deck_state
       type(raw_item_t), allocatable :: boundary(:)
       type(raw_pattern_t), allocatable :: patterns(:)
       type(raw_step_t), allocatable :: steps(:)
+      !> The step that phase-change keywords attach to: the last *STEP, until its
+      !> *END STEP (0: none open).
+      integer :: open_step = 0
       !> Line of each *MATERIAL, parallel to model%materials.
       integer, allocatable :: material_at(:)
       !> Meshes read by *MESH and the line of each.

@@ -9,6 +9,7 @@ module pecplas_io_deck_usage
    use pecplas_io_deck_state, only: deck_state_t
    use pecplas_model_type, only: model_t
    use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec
+   use pecplas_model_phases, only: CHANGE_MATERIAL
    implicit none (type, external)
    private
 
@@ -56,8 +57,16 @@ contains
                   used = .true.
             end do
          end if
+         ! or by a phase's *CHANGE_MATERIAL
+         if (allocated(model%steps)) then
+            do k = 1, size(model%steps)
+               if (.not. allocated(model%steps(k)%changes)) cycle
+               if (any(model%steps(k)%changes%new == m .and. &
+                       model%steps(k)%changes%kind == CHANGE_MATERIAL)) used = .true.
+            end do
+         end if
          if (.not. used) call warn_at(state, model, state%material_at(m), "material '"// &
-            model%materials(m)%m%name//"' is used by no *SECTION")
+            model%materials(m)%m%name//"' is used by no *SECTION nor *CHANGE_MATERIAL")
       end do
    end subroutine unused_materials
 
@@ -151,6 +160,11 @@ contains
          associate (st => model%steps(s))
             changes = any(factor(st%pattern) /= st%target)
             factor(st%pattern) = st%target
+            ! a phase (doc/deck.md, Phases) changes the model; a nil step restores equilibrium
+            if (size(st%pattern) == 0 .or. st%reset_displacements) changes = .true.
+            if (allocated(st%changes)) then
+               if (size(st%changes) > 0) changes = .true.
+            end if
             if (.not. changes) call model%warnings%add("step '"//st%name//"' changes no "// &
                'load factor (every pattern it names is already at its target): it applies '// &
                'nothing', st%file, st%line)

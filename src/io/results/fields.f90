@@ -200,6 +200,8 @@ contains
          call h5_group(g, 'sets', gsets, error)
       if (.not. allocated(error) .and. gsets > 0) then
          do s = 1, size(layout%sets)
+            ! a set not active in the phase under way (removed, not yet installed): no fields
+            if (.not. layout%sets(s)%active) cycle
             call h5_group(gsets, layout%sets(s)%name, gs, error)
             if (allocated(error)) exit
             associate (f => inc%set_fields(s))

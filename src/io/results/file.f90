@@ -11,7 +11,9 @@
 !>   /increments/<NNNNNN>  fields of global increment NNNNNN: displacement (2, nnode),
 !>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
 !>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
-!>                joints/<set>/... (see pecplas_io_results_joints)
+!>                joints/<set>/... (see pecplas_io_results_joints); the sets not active
+!>                in the increment's phase have no group there
+!>   /phases/<k>  the phases of a staged run (see pecplas_io_results_phase_log, add_phase)
 !> While the run goes on, the file is written as two copies in the target's directory, one
 !> of them always published as `.NAME.h5.<pid>.tmp` (see `temporary_path` and
 !> pecplas_io_results_copies), with its XDMF sidecar (`.NAME.xmf.<pid>.tmp`); `finish`
@@ -58,6 +60,7 @@ module pecplas_io_results_file
    use pecplas_io_results_describe, only: results_units_t, plan_units, describe_mesh, &
       describe_history
    use pecplas_io_results_checksum, only: deck_checksum
+   use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
    implicit none (type, external)
    private
 
@@ -103,11 +106,16 @@ module pecplas_io_results_file
       !> Global numbers and times of the increments with fields (for the XDMF).
       integer, allocatable :: written(:)
       real(wp), allocatable :: written_time(:)
+      !> Phases recorded by add_phase, and the one each written increment belongs to
+      !> (0: none recorded yet, every set active).
+      type(phase_record_t), allocatable :: phases(:)
+      integer, allocatable :: written_phase(:)
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
       procedure :: write_limit => results_write_limit
+      procedure :: add_phase => results_add_phase
       procedure :: warnings => results_warnings
       procedure :: is_open => results_is_open
       procedure :: working_path => results_working_path
@@ -301,6 +309,9 @@ contains
       this%nrows = 0
       this%written = [integer ::]
       this%written_time = [real(wp) ::]
+      this%written_phase = [integer ::]
+      if (allocated(this%phases)) deallocate (this%phases)
+      allocate (this%phases(0))
       if (allocated(this%ngauss)) deallocate (this%ngauss)
       if (allocated(this%layout%sets)) deallocate (this%layout%sets)
       allocate (this%ngauss(nset))
@@ -499,6 +510,7 @@ contains
          call this%note_failure(error%text())
          return
       end if
+      call mark_phase_start(this, inc)
       call write_checked(this, inc, last, error, restart)
       if (allocated(error)) then
          this%broken = .true.
@@ -545,7 +557,9 @@ contains
       if (inc%write_fields) then
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
+         this%written_phase = [this%written_phase, size(this%phases)]
       end if
+      this%phases(:)%pending = .false.
       this%nrows = this%nrows + 1
       this%ended = final
       if (.not. final) call commit(this, .false., error)
@@ -564,13 +578,17 @@ contains
       type(increment_result_t), intent(in) :: inc
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
+      logical, allocatable :: jon(:)
       if (inc%write_fields) then
          call write_fields(file, inc, this%layout, this%strains, this%units, error)
          if (allocated(error)) return
+         jon = this%layout%joints(:)%active
          if (size(this%joints) > 0) call write_joint_fields(file, inc%global_increment, &
-            inc%joint_fields, this%joints, this%units, error)
+            inc%joint_fields, this%joints, this%units, error, jon)
          if (allocated(error)) return
       end if
+      call write_pending_phases(this, file, error)
+      if (allocated(error)) return
       if (present(restart)) then
          ! after the fields: the items given by reference are links to them
          call write_restart(this, file, inc, restart, error)
@@ -704,7 +722,9 @@ contains
       complete = 0
       if (status == RUN_COMPLETED) complete = 1
       file = this%copies%id('next')
-      call h5_attr(file, 'status', status_name(status), error)
+      ! a phase the run ended in before any increment of it
+      call write_pending_phases(this, file, error)
+      if (.not. allocated(error)) call h5_attr(file, 'status', status_name(status), error)
       if (.not. allocated(error)) call h5_attr(file, 'status_message', message, error)
       if (.not. allocated(error)) call h5_attr(file, 'finished', timestamp(), error)
       if (.not. allocated(error) .and. complete == 1) &
@@ -721,8 +741,7 @@ contains
          return
       end if
       ! the final sidecar is staged first: the two renames then follow each other closely
-      call write_xdmf(this%staging, '', xdmf_text(this%layout, path_base(this%path), &
-         this%written, this%written_time), error)
+      call write_xdmf(this%staging, '', sidecar_text(this, path_base(this%path)), error)
       if (allocated(error)) return
       if (.not. rename_file(this%copies%name('next'), this%path)) then
          call fatal_error(error, 'cannot rename '//this%copies%name('next')//' onto '// &
@@ -767,6 +786,124 @@ contains
          this%units%patterns)
       call h5_close_group(g)
    end subroutine results_write_limit
+
+   !> Records the start of a phase (a step of a staged run; pecplas_io_results_phases):
+   !> from now on, the element and joint sets not active in `rec` have no fields in the
+   !> increments written, nor a grid in the XDMF. The group /phases/<index> is written with
+   !> the phase's next increment (which it names as its first), or by `finish`.
+   subroutine results_add_phase(this, rec, error)
+      class(results_file_t), intent(inout) :: this
+      type(phase_record_t), intent(in) :: rec
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      if (this%detached) return
+      if (.not. this%is_open()) then
+         call fatal_error(error, 'results file is not open')
+         return
+      end if
+      if (this%ended) then
+         call fatal_error(error, 'results file: phase '//itoa(rec%index)// &
+            ' recorded after the final increment')
+         return
+      end if
+      if (.not. allocated(rec%name) .or. .not. allocated(rec%changes) .or. &
+         .not. allocated(rec%active_esets) .or. .not. allocated(rec%active_jsets)) then
+         call fatal_error(error, 'results file: phase '//itoa(rec%index)//' is incomplete')
+         return
+      end if
+      if (size(rec%active_esets) /= size(this%layout%sets) .or. &
+         size(rec%active_jsets) /= size(this%layout%joints)) then
+         call fatal_error(error, 'results file: phase '//itoa(rec%index)//' has masks of '// &
+            itoa(size(rec%active_esets))//' element sets and '//itoa(size(rec%active_jsets))// &
+            ' joint sets; the model has '//itoa(size(this%layout%sets))//' and '// &
+            itoa(size(this%layout%joints)))
+         return
+      end if
+      if (rec%index < 1) then
+         call fatal_error(error, 'results file: phase index '//itoa(rec%index)//' < 1')
+         return
+      end if
+      ! a phase recorded again before any increment replaces the one pending
+      if (size(this%phases) > 0) then
+         if (this%phases(size(this%phases))%pending) this%phases = &
+            this%phases(1:size(this%phases) - 1)
+      end if
+      this%phases = [this%phases, rec]
+      this%phases(size(this%phases))%pending = .true.
+      this%phases(size(this%phases))%first_global_increment = -1
+      this%phases(size(this%phases))%first_history_row = -1
+      do i = 1, size(this%layout%sets)
+         this%layout%sets(i)%active = rec%active_esets(i)
+      end do
+      do i = 1, size(this%layout%joints)
+         this%layout%joints(i)%active = rec%active_jsets(i)
+      end do
+   end subroutine results_add_phase
+
+   !> The phases still pending start with increment `inc`.
+   subroutine mark_phase_start(this, inc)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      integer :: i
+      do i = 1, size(this%phases)
+         if (.not. this%phases(i)%pending) cycle
+         this%phases(i)%first_global_increment = inc%global_increment
+         this%phases(i)%first_history_row = this%nrows + 1
+      end do
+   end subroutine mark_phase_start
+
+   !> The pending phases into the copy `file`.
+   subroutine write_pending_phases(this, file, error)
+      class(results_file_t), intent(in) :: this
+      integer(hid_t), intent(in) :: file
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: enames(:), jnames(:)
+      integer :: i, w
+      if (.not. allocated(this%phases)) return
+      if (.not. any(this%phases(:)%pending)) return
+      w = 1
+      do i = 1, size(this%layout%sets)
+         w = max(w, len(this%layout%sets(i)%name))
+      end do
+      allocate (character(len=w) :: enames(size(this%layout%sets)))
+      do i = 1, size(this%layout%sets)
+         enames(i) = this%layout%sets(i)%name
+      end do
+      w = 1
+      do i = 1, size(this%layout%joints)
+         w = max(w, len(this%layout%joints(i)%name))
+      end do
+      allocate (character(len=w) :: jnames(size(this%layout%joints)))
+      do i = 1, size(this%layout%joints)
+         jnames(i) = this%layout%joints(i)%name
+      end do
+      do i = 1, size(this%phases)
+         if (.not. this%phases(i)%pending) cycle
+         call write_phase_group(file, this%phases(i), enames, jnames, error)
+         if (allocated(error)) return
+      end do
+   end subroutine write_pending_phases
+
+   !> The XDMF text of the increments written so far, each with the sets active in its
+   !> phase.
+   function sidecar_text(this, h5_name) result(text)
+      class(results_file_t), intent(in) :: this
+      character(len=*), intent(in) :: h5_name
+      character(len=:), allocatable :: text
+      logical, allocatable :: esets(:, :), jsets(:, :)
+      integer :: k, p
+      allocate (esets(size(this%layout%sets), size(this%written)), &
+         jsets(size(this%layout%joints), size(this%written)))
+      esets = .true.
+      jsets = .true.
+      do k = 1, size(this%written)
+         p = this%written_phase(k)
+         if (p < 1) cycle
+         esets(:, k) = this%phases(p)%active_esets
+         jsets(:, k) = this%phases(p)%active_jsets
+      end do
+      text = xdmf_text(this%layout, h5_name, this%written, this%written_time, esets, jsets)
+   end function sidecar_text
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)
@@ -855,8 +992,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: t0
       t0 = clock()
-      call write_xdmf(this%work_xmf, this%staging, xdmf_text(this%layout, &
-         path_base(this%work), this%written, this%written_time), error)
+      call write_xdmf(this%work_xmf, this%staging, sidecar_text(this, path_base(this%work)), &
+         error)
       if (allocated(error)) return
       this%xmf_count = size(this%written)
       this%xmf_at = clock()

@@ -180,19 +180,24 @@ contains
 
    !> /increments/<NNNNNN>/joints/<set> (the increment group exists already), each dataset
    !> with its `units` (and `components` for the two-component ones).
-   subroutine write_joint_fields(file, global_increment, fields, layout, units, error)
+   subroutine write_joint_fields(file, global_increment, fields, layout, units, error, active)
       integer(hid_t), intent(in) :: file
       integer, intent(in) :: global_increment
       type(joint_fields_t), intent(in) :: fields(:)
       type(joint_layout_t), intent(in) :: layout(:)
       type(results_units_t), intent(in) :: units
       type(error_t), allocatable, intent(out) :: error
+      !> The sets active in the phase under way (a staged run); the others get no group.
+      logical, intent(in), optional :: active(:)
       integer(hid_t) :: gall, g
       integer :: s
       if (size(layout) == 0) return
       call h5_group(file, increment_group(global_increment)//'/joints', gall, error)
       if (allocated(error)) return
       do s = 1, size(layout)
+         if (present(active)) then
+            if (.not. active(s)) cycle
+         end if
          call h5_group(gall, layout(s)%name, g, error)
          if (allocated(error)) exit
          associate (f => fields(s))

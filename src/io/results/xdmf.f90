@@ -31,6 +31,8 @@ module pecplas_io_results_xdmf
       !> XDMF TopologyType, e.g. 'Quadrilateral'.
       character(len=:), allocatable :: topology
       integer :: nel = 0, npe = 0
+      !> Active in the phase under way (a staged run): the fields are written.
+      logical :: active = .true.
       !> Cell attributes eps_p_eq and plastic_fraction (a soil with plastic history).
       logical :: plastic = .false.
    end type xdmf_set_t
@@ -39,6 +41,8 @@ module pecplas_io_results_xdmf
    type :: xdmf_joint_t
       character(len=:), allocatable :: name
       integer :: npoint = 0, nel = 0
+      !> Active in the phase under way (a staged run): the fields are written.
+      logical :: active = .true.
    end type xdmf_joint_t
 
    !> What the results file holds: enough to write the XDMF without reading the HDF5 file.
@@ -106,23 +110,35 @@ contains
    !> at pseudo-times `times`, heavy data in `h5_name` (a file of the same directory). With
    !> no increment yet, one grid of the bare mesh at time 0 lets ParaView show the mesh of a
    !> run that has just started. Built in memory: the file is then written in one call.
-   function xdmf_text(layout, h5_name, increments, times) result(text)
+   !> esets(nset, k) / jsets(njset, k), when given: the element / joint sets active in
+   !> increment k (a staged run); an inactive set has no grid in that increment, so that
+   !> ParaView shows only what the phase holds (it plays an excavation).
+   function xdmf_text(layout, h5_name, increments, times, esets, jsets) result(text)
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: increments(:)
       real(wp), intent(in) :: times(:)
+      logical, intent(in), optional :: esets(:, :), jsets(:, :)
       character(len=:), allocatable :: text
       type(text_buffer_t) :: b
-      integer :: k
+      logical, allocatable :: eon(:), jon(:)
+      integer :: k, nj
       call put(b, '<?xml version="1.0" ?>')
       call put(b, '<Xdmf Version="3.0">')
       call put(b, ' <Domain>')
       call put(b, '  <Grid Name="PECPLAS" GridType="Collection" CollectionType="Temporal">')
+      nj = 0
+      if (allocated(layout%joints)) nj = size(layout%joints)
+      allocate (eon(size(layout%sets)), jon(nj))
+      eon = .true.
+      jon = .true.
       if (size(increments) == 0) then
-         call put_increment(b, layout, h5_name, 0, 0.0_wp)
+         call put_increment(b, layout, h5_name, 0, 0.0_wp, eon, jon)
       else
          do k = 1, size(increments)
-            call put_increment(b, layout, h5_name, increments(k), times(k))
+            if (present(esets)) eon = esets(:, k)
+            if (present(jsets)) jon = jsets(:, k)
+            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon)
          end do
       end if
       call put(b, '  </Grid>')
@@ -180,13 +196,15 @@ contains
       b%n = need
    end subroutine put
 
-   !> One spatial collection; inc = 0 writes the mesh without attributes.
-   subroutine put_increment(b, layout, h5_name, inc, time)
+   !> One spatial collection; inc = 0 writes the mesh without attributes. Only the sets
+   !> with eon / jon true get a grid.
+   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon)
       type(text_buffer_t), intent(inout) :: b
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: inc
       real(wp), intent(in) :: time
+      logical, intent(in) :: eon(:), jon(:)
       character(len=:), allocatable :: h5, group
       integer :: s
       h5 = xml_escape(h5_name)//':'
@@ -196,6 +214,7 @@ contains
          'CollectionType="Spatial">')
       call put(b, '    <Time Value="'//real_text(time)//'"/>')
       do s = 1, size(layout%sets)
+         if (.not. eon(s)) cycle
          associate (set => layout%sets(s))
             call put(b, '    <Grid Name="'//set%name//'" GridType="Uniform">')
             call put(b, '     <Topology TopologyType="'//set%topology//'" NumberOfElements="'// &
@@ -225,6 +244,7 @@ contains
       end do
       if (allocated(layout%joints)) then
          do s = 1, size(layout%joints)
+            if (.not. jon(s)) cycle
             call put_joint_grid(b, layout%joints(s), h5, group, inc)
          end do
       end if

@@ -240,6 +240,10 @@ contains
       changed = 0
       held = 0
       do k = 1, kt%nd
+         ! a deactivated doublet stays open
+         if (allocated(kt%off)) then
+            if (kt%off(k)) cycle
+         end if
          nf = kt%f_trial(1, k)
          tf = kt%f_trial(2, k)
          tlim = kt%tension(k)

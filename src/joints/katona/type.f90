@@ -32,6 +32,9 @@ module pecplas_joints_katona_type
       integer, allocatable :: mode(:), sgn(:)
       logical, allocatable :: broken(:)
       real(wp), allocatable :: f(:, :), z(:, :), anchor(:)
+      !> Doublets of a joint set a phase has deactivated: open, no force, whatever their
+      !> relative displacement (pecplas_phases_start).
+      logical, allocatable :: off(:)
       !> Trial values of the current increment.
       integer, allocatable :: mode_trial(:), sgn_trial(:)
       real(wp), allocatable :: f_trial(:, :), z_trial(:, :), anchor_trial(:)
@@ -71,6 +74,7 @@ contains
       allocate (this%broken(n), source=.false.)
       allocate (this%f(2, n), this%z(2, n), source=0.0_wp)
       allocate (this%anchor(n), source=0.0_wp)
+      allocate (this%off(n), source=.false.)
       this%mode_trial = this%mode
       this%sgn_trial = this%sgn
       this%f_trial = this%f

@@ -17,7 +17,9 @@ last), a `components` attribute of that length, with displacements, reactions an
 in the root length_unit, force_unit and stress_unit, that every dataset's `checksum` and the
 root `deck_text_checksum` match (doc/results.md, Checksums), and that the .xmf parses as XML, each
 "file.h5:/path" DataItem names an existing dataset of the declared dimensions, HyperSlab
-items select inside their dataset, and every joint set has its grid in each increment.
+items select inside their dataset, and every joint set has its grid in each increment. In a
+staged run (/phases), an increment holds the fields of the sets active in its phase and of no
+other, and its XDMF grids are those of the active sets.
 Exit status 0 when everything holds, 1 otherwise (each problem is printed).
 
 --left RESULTS.h5: what runs killed before their end (kill -9, out-of-memory) left beside
@@ -145,6 +147,30 @@ def check_joint_fields(f, increment, shapes, problems):
                             f"({nel}, {npoint}, nstate)")
 
 
+def phase_sets(f, increment):
+    """(element sets, joint sets) active in the phase of field increment `increment` (the
+    phase of /phases with the largest first_global_increment not after it), or (None, None)
+    when the file lists no phase: every set."""
+    if "phases" not in f:
+        return None, None
+    g = int(increment)
+    best = None
+    for group in f["phases"].values():
+        first = int(group.attrs.get("first_global_increment", -1))
+        if 1 <= first <= g and (best is None or first > best[0]):
+            best = (first, group)
+    if best is None:
+        return None, None
+    group = best[1]
+    out = []
+    for names, mask in (("element_sets", "active_element_sets"),
+                        ("joint_sets", "active_joint_sets")):
+        listed = [as_text(n) for n in group.attrs.get(names, [])]
+        flags = group[mask][()] if mask in group else []
+        out.append({n for n, m in zip(listed, flags) if m})
+    return out[0], out[1]
+
+
 def check_history(f, problems):
     """Equal lengths; returns the global increments whose row says fields were written."""
     if "history" not in f:
@@ -194,7 +220,23 @@ def check_increments(f, with_fields, problems):
         for ds in ["displacement", "displacement3"]:
             if ds not in group:
                 problems.append(f"missing /increments/{name}/{ds}")
-        check_joint_fields(f, name, shapes, problems)
+        esets, jsets = phase_sets(f, name)
+        if esets is not None and "sets" in group:
+            held = set(group["sets"].keys())
+            for s in sorted(held - esets):
+                problems.append(f"/increments/{name}/sets/{s}: fields of a set not active in "
+                                f"the increment's phase")
+            for s in sorted(esets - held):
+                problems.append(f"/increments/{name}/sets: no fields of the active set {s}")
+        if jsets is not None:
+            held = set(group["joints"].keys()) if "joints" in group else set()
+            for s in sorted(held - jsets):
+                problems.append(f"/increments/{name}/joints/{s}: fields of a joint set not "
+                                f"active in the increment's phase")
+            check_joint_fields(f, name, {k: v for k, v in shapes.items() if k in jsets},
+                               problems)
+        else:
+            check_joint_fields(f, name, shapes, problems)
 
 
 def check_finite(f, problems):
@@ -376,16 +418,31 @@ def check_hyperslabs(root, problems):
 
 
 def check_joint_grids(root, f, problems):
-    """Each spatial collection holds a grid 'joints_<set>' per joint set of the file."""
-    if "mesh/joint_sets" not in f:
-        return
-    wanted = {f"joints_{name}" for name in f["mesh/joint_sets"]}
+    """Each spatial collection holds a grid 'joints_<set>' per joint set of the file; in a
+    staged run, a grid per element set and joint set active in the increment's phase and
+    none of the others."""
+    jall = list(f["mesh/joint_sets"]) if "mesh/joint_sets" in f else []
+    eall = list(f["mesh/sets"]) if "mesh/sets" in f else []
     for grid in root.iter("Grid"):
         if grid.get("CollectionType") != "Spatial":
             continue
         names = {g.get("Name") for g in grid.findall("Grid")}
+        esets, jsets = (None, None)
+        if (grid.get("Name") or "").isdigit():
+            esets, jsets = phase_sets(f, grid.get("Name"))
+        wanted = {f"joints_{n}" for n in (jall if jsets is None else jsets)}
         for name in sorted(wanted - names):
             problems.append(f"XDMF increment {grid.get('Name')}: no grid {name}")
+        if jsets is not None:
+            for name in sorted({f"joints_{n}" for n in jall} - wanted & names):
+                problems.append(f"XDMF increment {grid.get('Name')}: grid {name} of a joint "
+                                f"set not active in its phase")
+        if esets is not None:
+            for name in sorted((set(eall) - esets) & names):
+                problems.append(f"XDMF increment {grid.get('Name')}: grid {name} of an element "
+                                f"set not active in its phase")
+            for name in sorted(esets - names):
+                problems.append(f"XDMF increment {grid.get('Name')}: no grid {name}")
 
 
 def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):

@@ -1,0 +1,365 @@
+!> Phase changes of the deck (doc/deck.md, Phases): *DEACTIVATE, *ACTIVATE [, STRESS=ZERO |
+!> WISHED_IN_PLACE], *CHANGE_MATERIAL and *CHANGE_LAW after a *STEP line (before its
+!> *END STEP) change the model at the start of that step. Read into the open step, then
+!> resolved to set, material and law indices and checked phase by phase once the whole deck
+!> is read: a set activated while active or deactivated while inactive, a load or imposed
+!> displacement on a node that no active element or joint holds in a phase, an unknown set,
+!> material or law are errors at the deck line.
+module pecplas_io_deck_reader_phases
+   use pecplas_base_error, only: error_t
+   use pecplas_base_kinds, only: wp
+   use pecplas_io_text_fields, only: field_t, split_fields, check_count, same_name, upper, &
+      add_name, itoa
+   use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_change_t, line_error
+   use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
+   use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
+      CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
+      START_WISHED
+   use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes
+   implicit none (type, external)
+   private
+
+   public :: read_change, resolve_phases
+
+contains
+
+   !> One change keyword block, appended to the open step's changes.
+   subroutine read_change(state, block, error)
+      type(deck_state_t), intent(inout) :: state
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      type(raw_change_t) :: ch
+      type(field_t), allocatable :: f(:)
+      character(len=:), allocatable :: text
+      logical :: found
+      integer :: kind, i, k
+      kind = 0
+      do i = 1, size(CHANGE_NAMES)
+         if (trim(CHANGE_NAMES(i)) == block%kw%name) kind = i
+      end do
+      if (kind == CHANGE_ACTIVATE) then
+         call block%kw%check_keys(state%lines%get(block%at), [character(len=6) :: 'STRESS'], &
+            error)
+      else
+         call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
+      end if
+      if (allocated(error)) return
+      if (state%open_step == 0) then
+         call line_error(state, block%at, block%kw%name//' changes the model at the start '// &
+            'of a step: put it after a *STEP line (and before that step''s *END STEP)', error)
+         return
+      end if
+      ch%kind = kind
+      ch%start = START_ZERO
+      if (kind == CHANGE_ACTIVATE) then
+         call block%kw%get('STRESS', text, found)
+         if (found) then
+            select case (upper(text))
+            case ('ZERO')
+               ch%start = START_ZERO
+            case ('WISHED_IN_PLACE')
+               ch%start = START_WISHED
+            case default
+               call line_error(state, block%at, "STRESS="//text//": expected ZERO or "// &
+                  "WISHED_IN_PLACE", error)
+               return
+            end select
+         end if
+      end if
+      if (block%last < block%first) then
+         if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
+            text = merge('element_set, material', 'joint_set, law       ', kind == CHANGE_MATERIAL)
+            call line_error(state, block%at, block%kw%name//' needs data lines "'//trim(text)// &
+               '"', error)
+         else
+            call line_error(state, block%at, block%kw%name//' needs data lines: the names '// &
+               'of element sets or joint sets', error)
+         end if
+         return
+      end if
+      do i = block%first, block%last
+         call split_fields(state%lines%text(i), f)
+         ch%at = i
+         if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
+            call check_count(state%lines%get(i), f, 2, 2, merge('element_set, material', &
+               'joint_set, law       ', kind == CHANGE_MATERIAL), error)
+            if (allocated(error)) return
+            ch%set = f(1)%s
+            ch%new = f(2)%s
+            call push(state%steps(state%open_step)%changes, ch)
+         else
+            do k = 1, size(f)
+               if (f(k)%s == '=') then
+                  call line_error(state, i, "expected set names, found '='", error)
+                  return
+               end if
+               ch%set = f(k)%s
+               ch%new = ''
+               call push(state%steps(state%open_step)%changes, ch)
+            end do
+         end if
+      end do
+   end subroutine read_change
+
+   subroutine push(list, ch)
+      type(raw_change_t), allocatable, intent(inout) :: list(:)
+      type(raw_change_t), intent(in) :: ch
+      type(raw_change_t), allocatable :: tmp(:)
+      integer :: n
+      if (.not. allocated(list)) allocate (list(0))
+      n = size(list)
+      allocate (tmp(n + 1))
+      tmp(1:n) = list
+      tmp(n + 1) = ch
+      call move_alloc(tmp, list)
+   end subroutine push
+
+   !> model%steps(:)%changes from the raw changes (names to indices), then the phases
+   !> checked in order.
+   subroutine resolve_phases(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer :: s, c
+      do s = 1, size(state%steps)
+         associate (raw => state%steps(s), step => model%steps(s))
+            step%reset_displacements = raw%reset_displacements
+            if (allocated(raw%changes)) then
+               allocate (step%changes(size(raw%changes)))
+            else
+               allocate (step%changes(0))
+            end if
+            do c = 1, size(step%changes)
+               call resolve_change(state, model, raw%changes(c), step%changes(c), error)
+               if (allocated(error)) return
+            end do
+            if (step%reset_displacements .and. has_katona(model)) then
+               call line_error(state, raw%at, 'RESET_DISPLACEMENTS is not available with '// &
+                  'Katona contact joint sets (TYPE=KATONA) yet (their gaps are measured from '// &
+                  'the displacements)', error)
+               return
+            end if
+         end associate
+      end do
+      call check_phases(state, model, error)
+   end subroutine resolve_phases
+
+   logical function has_katona(model)
+      type(model_t), intent(in) :: model
+      integer :: j
+      has_katona = .false.
+      if (.not. allocated(model%joint_sets)) return
+      do j = 1, size(model%joint_sets)
+         if (model%joint_sets(j)%is_katona()) has_katona = .true.
+      end do
+   end function has_katona
+
+   subroutine resolve_change(state, model, raw, ch, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_change_t), intent(in) :: raw
+      type(phase_change_t), intent(out) :: ch
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j, k
+      character(len=:), allocatable :: list
+      ch%kind = raw%kind
+      ch%start = raw%start
+      ch%set_name = raw%set
+      ch%file = state%lines%file(raw%at)
+      ch%line = state%lines%line(raw%at)
+      ch%set = model%mesh%find_eset(raw%set)
+      ch%target = TARGET_ELEMENTS
+      if (ch%set == 0 .and. allocated(model%joint_sets)) then
+         do j = 1, size(model%joint_sets)
+            if (same_name(model%joint_sets(j)%name, raw%set)) ch%set = j
+         end do
+         if (ch%set > 0) ch%target = TARGET_JOINTS
+      end if
+      if (ch%set == 0) then
+         list = ''
+         do k = 1, size(model%mesh%esets)
+            call add_name(list, model%mesh%esets(k)%name)
+         end do
+         if (allocated(model%joint_sets)) then
+            do k = 1, size(model%joint_sets)
+               call add_name(list, model%joint_sets(k)%name)
+            end do
+         end if
+         call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
+            "'; known sets:"//list, error)
+         return
+      end if
+      select case (ch%kind)
+      case (CHANGE_ACTIVATE)
+         if (ch%target == TARGET_JOINTS .and. ch%start == START_WISHED) then
+            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets; "// &
+               "joint set '"//raw%set//"' starts from the stresses of the soil beside it", error)
+            return
+         end if
+      case (CHANGE_MATERIAL)
+         if (ch%target /= TARGET_ELEMENTS) then
+            call line_error(state, raw%at, "'"//raw%set//"' is a joint set: *CHANGE_LAW "// &
+               'changes the law of a joint set', error)
+            return
+         end if
+         ch%new_name = raw%new
+         list = ''
+         do k = 1, size(model%materials)
+            if (same_name(model%materials(k)%m%name, raw%new)) ch%new = k
+            call add_name(list, model%materials(k)%m%name)
+         end do
+         if (ch%new == 0) then
+            call line_error(state, raw%at, "no material '"//raw%new//"'; known materials:"// &
+               list, error)
+            return
+         end if
+      case (CHANGE_LAW)
+         if (ch%target /= TARGET_JOINTS) then
+            call line_error(state, raw%at, "'"//raw%set//"' is an element set: "// &
+               '*CHANGE_MATERIAL changes the material of an element set', error)
+            return
+         end if
+         ch%new_name = raw%new
+         list = ''
+         if (allocated(model%laws)) then
+            do k = 1, size(model%laws)
+               if (same_name(model%laws(k)%law%name, raw%new)) ch%new = k
+               call add_name(list, model%laws(k)%law%name)
+            end do
+         end if
+         if (ch%new == 0) then
+            call line_error(state, raw%at, "no interface law '"//raw%new//"' (Katona contact "// &
+               "is no law a set can change to); known laws:"//list, error)
+            return
+         end if
+         if (model%joint_sets(ch%set)%is_katona()) then
+            call line_error(state, raw%at, "joint set '"//raw%set//"' is a Katona contact set: "// &
+               'its law cannot change', error)
+            return
+         end if
+      end select
+   end subroutine resolve_change
+
+   !> Walks the phases: activation of an active set, deactivation of an inactive one, and a
+   !> load or imposed displacement acting in a phase on a node that no active element or
+   !> joint holds are errors.
+   subroutine check_phases(state, model, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:)
+      integer, allocatable :: emat(:), jlaw(:)
+      real(wp), allocatable :: factors(:)
+      integer :: s, c, p, k, npat
+      logical :: on
+      call initial_activity(model, eact, jact)
+      emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
+      allocate (jlaw(size(jact)))
+      do c = 1, size(jact)
+         jlaw(c) = model%joint_sets(c)%law_index
+      end do
+      npat = 0
+      if (allocated(model%patterns)) npat = size(model%patterns)
+      allocate (factors(npat), source=0.0_wp)
+      do s = 1, size(model%steps)
+         associate (step => model%steps(s))
+            do c = 1, size(step%changes)
+               associate (ch => step%changes(c))
+                  if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
+                     if (ch%target == TARGET_ELEMENTS) then
+                        on = eact(ch%set)
+                     else
+                        on = jact(ch%set)
+                     end if
+                     if (ch%kind == CHANGE_ACTIVATE .and. on) then
+                        call line_error(state, state%steps(s)%changes(c)%at, "set '"// &
+                           ch%set_name//"' is already active in step '"//step%name//"'", error)
+                        return
+                     end if
+                     if (ch%kind == CHANGE_DEACTIVATE .and. .not. on) then
+                        call line_error(state, state%steps(s)%changes(c)%at, "set '"// &
+                           ch%set_name//"' is not active in step '"//step%name//"'", error)
+                        return
+                     end if
+                  end if
+               end associate
+               ! (--strict) a change to what the set already has changes nothing
+               associate (ch => step%changes(c))
+                  if (ch%kind == CHANGE_MATERIAL) then
+                     if (emat(ch%set) == ch%new) call model%warnings%add("element set '"// &
+                        ch%set_name//"' already has material '"//ch%new_name//"': the "// &
+                        '*CHANGE_MATERIAL changes nothing', ch%file, ch%line)
+                     emat(ch%set) = ch%new
+                  else if (ch%kind == CHANGE_LAW) then
+                     if (jlaw(ch%set) == ch%new) call model%warnings%add("joint set '"// &
+                        ch%set_name//"' already has law '"//ch%new_name//"': the "// &
+                        '*CHANGE_LAW changes nothing', ch%file, ch%line)
+                     jlaw(ch%set) = ch%new
+                  end if
+               end associate
+               ! each change applies before the next is checked (a set named twice)
+               call step_activity_one(step%changes(c), eact, jact)
+            end do
+            call step_activity(model, s, eact, jact, dropped)
+            held = attached_nodes(model, eact, jact)
+            do k = 1, size(step%pattern)
+               factors(step%pattern(k)) = step%target(k)
+            end do
+            do p = 1, npat
+               if (factors(p) == 0.0_wp .and. .not. any(step%pattern == p)) cycle
+               call check_pattern(state, model, s, p, held, error)
+               if (allocated(error)) return
+            end do
+         end associate
+      end do
+   end subroutine check_phases
+
+   pure subroutine step_activity_one(ch, eact, jact)
+      type(phase_change_t), intent(in) :: ch
+      logical, intent(inout) :: eact(:), jact(:)
+      if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) return
+      if (ch%target == TARGET_ELEMENTS) then
+         eact(ch%set) = ch%kind == CHANGE_ACTIVATE
+      else
+         jact(ch%set) = ch%kind == CHANGE_ACTIVATE
+      end if
+   end subroutine step_activity_one
+
+   !> A pattern acting in step s must act on held nodes only.
+   subroutine check_pattern(state, model, s, p, held, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s, p
+      logical, intent(in) :: held(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, node
+      node = 0
+      associate (pat => model%patterns(p))
+         select case (pat%kind)
+         case (LOAD_FORCE, LOAD_DISPLACEMENT)
+            do k = 1, size(pat%node)
+               if (pat%value(k) /= 0.0_wp .and. .not. held(pat%node(k))) then
+                  node = pat%node(k)
+                  exit
+               end if
+            end do
+         case (LOAD_PRESSURE)
+            do k = 1, size(pat%pressure)
+               if (pat%pressure(k) == 0.0_wp) cycle
+               if (.not. all(held(pack(pat%edge(:, k), pat%edge(:, k) > 0)))) then
+                  node = pat%edge(1, k)
+                  exit
+               end if
+            end do
+         end select
+         if (node == 0) return
+         call line_error(state, state%steps(s)%at, "load pattern '"//pat%name//"' acts in "// &
+            "step '"//model%steps(s)%name//"' on node "//itoa(model%mesh%node_id(node))// &
+            ', which no active element or joint holds in that step (its sets are not '// &
+            'active): deactivate the pattern (target factor 0) before, or keep an element '// &
+            'at that node', error)
+      end associate
+   end subroutine check_pattern
+
+end module pecplas_io_deck_reader_phases

@@ -1,0 +1,539 @@
+!> The start of a phase (doc/theory.md, Phases): the changes of a step are applied to the
+!> run's state from the converged state of the step before, and the out-of-balance they
+!> create becomes a carried load that the step takes to zero along its load path.
+!>
+!>   *DEACTIVATE     an element set or joint set stops adding stiffness and forces; a joint
+!>                   set one of whose nodes loses its last active element goes with it;
+!>   *ACTIVATE       an element set starts stress-free (or with its *INITIAL_STRESS stress:
+!>                   STRESS=WISHED_IN_PLACE), strains measured from the current displacement,
+!>                   no history; a joint set starts from the initial stresses of the soil
+!>                   beside it, relative displacements measured from the current ones;
+!>   *CHANGE_MATERIAL the set's points keep their stresses; the history restarts (zero, the
+!>                   new material's size); *CHANGE_LAW: the joint points keep their stresses,
+!>                   the history restarts from them (the law's init_state);
+!>   RESET_DISPLACEMENTS the displacements (and the strains and joint relative displacements
+!>                   measured from them) restart at zero; stresses and histories are kept.
+!>
+!> Then: the free equations of nodes that no active element or joint holds (taken out of the
+!> system by a diagonal entry, pecplas_fe_assembly), the pattern vectors over the active sets,
+!> the held load (the weight of the active sets under the K0 procedure), and the carried
+!> out-of-balance c = F_int - F_ext at the step start on the free equations.
+module pecplas_phases_start
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: LOAD_GRAVITY
+   use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
+      CHANGE_LAW, TARGET_ELEMENTS, START_WISHED
+   use pecplas_model_phase_plan, only: step_activity, attached_nodes
+   use pecplas_problem_type, only: problem_t, set_orphans
+   use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
+      PROCEDURE_NAMES, HOLD_NONE, HOLD_WEIGHT
+   use pecplas_fe_state, only: set_state_t
+   use pecplas_fe_assembly, only: internal_forces, set_material
+   use pecplas_fe_loads, only: pattern_vectors, add_body_force
+   use pecplas_fe_initial, only: initial_set_stress, initial_joint_set_stress, mesh_index_t
+   use pecplas_fe_joint_initial, only: set_joint_stress
+   use pecplas_massif_kinematics, only: MAX_NODES, massif_gauss_derivs
+   use pecplas_massif_point_kernels, only: point_strain
+   use pecplas_massif_materials_type, only: NCOMP
+   use pecplas_joints_elements_type, only: joint_element_t, joint_point_t, joint_strain
+   use pecplas_joints_points, only: joint_set_element, joint_element_points
+   use pecplas_joints_laws_type, only: MODE_STICK, MODE_OPEN
+   use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
+   implicit none (type, external)
+   private
+
+   public :: start_phase, replay_phases, LINE_LEN
+
+   !> Length of a line of the change list (results file).
+   integer, parameter :: LINE_LEN = 160
+
+contains
+
+   !> Applies the phase of step `istep` (module header) to a phased run. On exit `fint`
+   !> holds the internal forces of the state after the changes (the converged forces the
+   !> step starts from), `refactorise` says whether the stiffness changed, `lines` says what
+   !> changed, one line per change.
+   subroutine start_phase(model, problem, istep, fint, refactorise, lines, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: istep
+      real(wp), allocatable, intent(out) :: fint(:, :)
+      logical, intent(out) :: refactorise
+      character(len=LINE_LEN), allocatable, intent(out) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:)
+      type(mesh_index_t) :: index
+      integer :: c, j, p
+      logical :: indexed
+
+      allocate (lines(0))
+      refactorise = .false.
+      if (problem%phase%index == 0) then
+         call first_phase(model, problem, error)
+         if (allocated(error)) return
+         lines = [character(len=LINE_LEN) :: 'initial procedure: '// &
+            trim(PROCEDURE_NAMES(problem%phase%procedure))]
+      end if
+      indexed = .false.
+      associate (step => model%steps(istep), st => problem%state)
+         do c = 1, size(step%changes)
+            associate (ch => step%changes(c))
+               refactorise = .true.
+               select case (ch%kind)
+               case (CHANGE_DEACTIVATE)
+                  if (ch%target == TARGET_ELEMENTS) then
+                     st%sets(ch%set)%active = .false.
+                     call add_line(lines, 'deactivate element set '//ch%set_name)
+                  else
+                     st%joints%sets(ch%set)%active = .false.
+                     call katona_off(problem, ch%set)
+                     call add_line(lines, 'deactivate joint set '//ch%set_name)
+                  end if
+               case (CHANGE_ACTIVATE)
+                  if (ch%target == TARGET_ELEMENTS) then
+                     call activate_set(model, problem, ch%set, ch%start == START_WISHED, error)
+                     if (allocated(error)) return
+                     if (ch%start == START_WISHED) then
+                        call add_line(lines, 'activate element set '//ch%set_name// &
+                           ' (wished in place: its initial stress)')
+                     else
+                        call add_line(lines, 'activate element set '//ch%set_name// &
+                           ' (stress-free)')
+                     end if
+                  else
+                     if (.not. indexed) call index%build(model)
+                     indexed = .true.
+                     if (model%joint_sets(ch%set)%is_katona()) then
+                        call katona_on(problem, ch%set)
+                        call add_line(lines, 'activate Katona contact set '//ch%set_name// &
+                           ' (no contact force, in stick, its gaps and slips measured from '// &
+                           'the current displacements)')
+                     else
+                        call activate_joints(model, problem, index, ch%set, error)
+                        if (allocated(error)) return
+                        call add_line(lines, 'activate joint set '//ch%set_name// &
+                           ' (from the initial stresses of the soil beside it)')
+                     end if
+                  end if
+               case (CHANGE_MATERIAL)
+                  call swap_material(model, st%sets(ch%set), ch%new)
+                  call add_line(lines, 'change the material of element set '//ch%set_name// &
+                     ' to '//ch%new_name)
+               case (CHANGE_LAW)
+                  st%joints%sets(ch%set)%law = ch%new
+                  associate (js => st%joints%sets(ch%set))
+                     deallocate (js%hist, js%hist_trial)
+                     js%nstate = model%laws(ch%new)%law%nstate()
+                     allocate (js%hist(js%nstate, js%npoint, size(js%sigma, 3)), source=0.0_wp)
+                     allocate (js%hist_trial, source=js%hist)
+                  end associate
+                  call set_joint_stress(model, st%joints, ch%set, st%joints%sets(ch%set)%sigma, &
+                     error)
+                  if (allocated(error)) return
+                  call add_line(lines, 'change the law of joint set '//ch%set_name//' to '// &
+                     ch%new_name)
+               end select
+            end associate
+         end do
+         if (step%reset_displacements) then
+            call reset_displacements(problem)
+            call add_line(lines, 'reset displacements')
+         end if
+         ! joint sets left hanging by a deactivation go with it
+         eactive = st%sets%active
+         allocate (jactive(0))
+         if (allocated(st%joints%sets)) jactive = st%joints%sets%active
+         call step_activity(model, istep, eactive, jactive, dropped)
+         do j = 1, size(dropped)
+            if (.not. dropped(j)) cycle
+            st%joints%sets(j)%active = .false.
+            call katona_off(problem, j)
+            call add_line(lines, 'deactivate joint set '//model%joint_sets(j)%name// &
+               ' (a node of it lost its last active element)')
+         end do
+         ! nodes no active element or joint holds: out of the system
+         call set_orphans(model, problem, eactive, jactive)
+         held = attached_nodes(model, eactive, jactive)
+         ! the loads of the active sets
+         call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
+            problem%system%pattern_disp, error, eactive)
+         if (allocated(error)) return
+         call held_load(model, problem, eactive, error)
+         if (allocated(error)) return
+         ! the K0 state's own out-of-balance: held until the first nil step
+         if (.not. problem%phase%released) then
+            if (size(step%pattern) == 0 .and. size(step%changes) == 0) then
+               problem%phase%released = .true.
+               if (any(problem%phase%unbalanced /= 0.0_wp)) call add_line(lines, &
+                  'release the out-of-balance of the initial (K0) state')
+            else
+               problem%system%initial_force = problem%system%initial_force + &
+                  problem%phase%unbalanced
+            end if
+         end if
+         ! the out-of-balance of the changes, carried along the step
+         allocate (fint, mold=problem%system%initial_force)
+         call internal_forces(model, problem%system%rules, st%u, st, fint, error)
+         if (allocated(error)) return
+         call st%rollback()
+         if (refactorise) problem%linear%tangent_factorised = .false.
+         problem%phase%carried = fint - problem%system%initial_force
+         ! the contact forces of Katona doublets act as internal forces
+         if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, &
+            problem%phase%carried)
+         do p = 1, size(st%factors)
+            problem%phase%carried = problem%phase%carried - &
+               st%factors(p)*problem%system%pattern_force(:, :, p)
+         end do
+         where (problem%system%dofs%eq == 0) problem%phase%carried = 0.0_wp
+         do p = 1, size(held)
+            if (.not. held(p)) problem%phase%carried(:, p) = 0.0_wp
+         end do
+      end associate
+      problem%phase%index = istep
+   end subroutine start_phase
+
+   !> The phases of steps 1 to k applied again to a problem just set up (a restart: its
+   !> state is then read over the one they leave).
+   subroutine replay_phases(model, problem, k, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: k
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: fint(:, :)
+      character(len=LINE_LEN), allocatable :: lines(:)
+      logical :: refactorise
+      integer :: i
+      do i = 1, k
+         call start_phase(model, problem, i, fint, refactorise, lines, error)
+         if (allocated(error)) return
+      end do
+   end subroutine replay_phases
+
+   !> Before the first step: what each set holds, and how the initial state came about.
+   subroutine first_phase(model, problem, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: f(:, :)
+      integer :: s, i, kind, nset, nh
+      nset = size(model%mesh%esets)
+      allocate (problem%phase%hold(nset), source=HOLD_NONE)
+      allocate (problem%phase%homogeneous(2, model%mesh%nnode(), 0))
+      allocate (problem%phase%unbalanced(2, model%mesh%nnode()), source=0.0_wp)
+      problem%phase%procedure = PROCEDURE_NONE
+      if (allocated(model%patterns)) then
+         do i = 1, size(model%patterns)
+            if (model%patterns(i)%kind == LOAD_GRAVITY) problem%phase%procedure = PROCEDURE_GRAVITY
+         end do
+      end if
+      if (.not. allocated(model%initial_stresses)) then
+         call k0_unbalance(model, problem, error)
+         return
+      end if
+      if (size(model%initial_stresses) == 0) then
+         call k0_unbalance(model, problem, error)
+         return
+      end if
+      problem%phase%procedure = PROCEDURE_K0
+      nh = 0
+      do s = 1, nset
+         ! the last entry that covers the set says how it was made
+         kind = 0
+         do i = 1, size(model%initial_stresses)
+            associate (init => model%initial_stresses(i))
+               if (init%eset /= 0 .and. init%eset /= s) cycle
+               kind = merge(1, 2, init%kind == 'GEOSTATIC')
+            end associate
+         end do
+         select case (kind)
+         case (1)
+            ! geostatic: the set's weight (y up)
+            problem%phase%hold(s) = HOLD_WEIGHT
+         case (2)
+            ! homogeneous: the nodal forces of its own stress
+            allocate (f(2, model%mesh%nnode()))
+            call own_forces(model, problem, s, f, error)
+            if (allocated(error)) return
+            nh = nh + 1
+            problem%phase%homogeneous = reshape([problem%phase%homogeneous, f], &
+               [2, model%mesh%nnode(), nh])
+            problem%phase%hold(s) = nh
+            deallocate (f)
+         end select
+      end do
+      call k0_unbalance(model, problem, error)
+   end subroutine first_phase
+
+   !> The out-of-balance of the K0 state (phase_state_t%unbalanced): the internal and
+   !> contact forces of the initial state with every set and joint active, less what the
+   !> sets hold; then the Katona doublets of the joint sets not active at the start go off.
+   subroutine k0_unbalance(model, problem, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: ekeep(:), jkeep(:), all_on(:)
+      real(wp), allocatable :: f(:, :), u0(:, :)
+      integer :: j
+      ekeep = problem%state%sets%active
+      allocate (jkeep(0))
+      if (allocated(problem%state%joints%sets)) then
+         jkeep = problem%state%joints%sets%active
+         problem%state%joints%sets%active = .true.
+      end if
+      problem%state%sets%active = .true.
+      allocate (f, mold=problem%system%initial_force)
+      ! at the initial state: zero displacements (a restart replays this over its own)
+      allocate (u0, mold=problem%state%u)
+      u0 = 0.0_wp
+      call internal_forces(model, problem%system%rules, u0, problem%state, f, error)
+      problem%state%sets%active = ekeep
+      if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
+      call problem%state%rollback()
+      if (allocated(error)) return
+      if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
+      allocate (all_on(size(ekeep)), source=.true.)
+      call held_load(model, problem, all_on, error)
+      if (allocated(error)) return
+      ! on the free equations: at a support it is the support's reaction to the K0 state
+      problem%phase%unbalanced = f - problem%system%initial_force
+      problem%phase%base_reaction = problem%phase%unbalanced
+      where (problem%system%dofs%eq == 0) problem%phase%unbalanced = 0.0_wp
+      where (problem%system%dofs%eq > 0) problem%phase%base_reaction = 0.0_wp
+      do j = 1, size(jkeep)
+         if (.not. jkeep(j)) call katona_off(problem, j)
+      end do
+   end subroutine k0_unbalance
+
+   !> The held load (problem%system%initial_force): what the active sets hold.
+   subroutine held_load(model, problem, eactive, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: eactive(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: s
+      problem%system%initial_force = 0.0_wp
+      do s = 1, size(eactive)
+         if (.not. eactive(s)) cycle
+         if (problem%phase%hold(s) == HOLD_WEIGHT) then
+            call add_body_force(model, problem%system%rules, s, [0.0_wp, -1.0_wp], .true., &
+               problem%system%initial_force, error)
+            if (allocated(error)) return
+         else if (problem%phase%hold(s) > 0) then
+            problem%system%initial_force = problem%system%initial_force + &
+               problem%phase%homogeneous(:, :, problem%phase%hold(s))
+         end if
+      end do
+   end subroutine held_load
+
+   !> Nodal forces of the converged stresses of set s alone.
+   subroutine own_forces(model, problem, s, f, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: s
+      real(wp), intent(out) :: f(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: ekeep(:), jkeep(:)
+      real(wp), allocatable :: u0(:, :)
+      ekeep = problem%state%sets%active
+      allocate (jkeep(0))
+      if (allocated(problem%state%joints%sets)) then
+         jkeep = problem%state%joints%sets%active
+         problem%state%joints%sets%active = .false.
+      end if
+      problem%state%sets%active = .false.
+      problem%state%sets(s)%active = .true.
+      allocate (u0, mold=problem%state%u)
+      u0 = 0.0_wp
+      call internal_forces(model, problem%system%rules, u0, problem%state, f, error)
+      problem%state%sets%active = ekeep
+      if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
+      call problem%state%rollback()
+   end subroutine own_forces
+
+   !> Element set s becomes active: stress-free or with its initial stress, no history, its
+   !> strains those of the current displacements.
+   subroutine activate_set(model, problem, s, wished, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: s
+      logical, intent(in) :: wished
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: d(NCOMP, NCOMP)
+      integer :: e, g
+      associate (st => problem%state%sets(s))
+         st%active = .true.
+         st%stress = 0.0_wp
+         if (wished) call initial_set_stress(model, problem%system%rules, s, st%stress)
+         st%hist = 0.0_wp
+         call set_strains(model, problem, s, st%strain, error)
+         if (allocated(error)) return
+         st%stress_trial = st%stress
+         st%strain_trial = st%strain
+         st%hist_trial = st%hist
+         if (allocated(st%tangent)) then
+            call model%materials(set_material(model, s, st))%m%elastic_tangent(d)
+            do e = 1, size(st%tangent, 4)
+               do g = 1, size(st%tangent, 3)
+                  st%tangent(:, :, g, e) = d
+               end do
+            end do
+         end if
+      end associate
+   end subroutine activate_set
+
+   !> Strains (4, ngauss, nel) of massif set s at the converged displacements.
+   subroutine set_strains(model, problem, s, strain, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: s
+      real(wp), intent(out) :: strain(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: xe(2, MAX_NODES), ue(2*MAX_NODES), dndx(2, MAX_NODES), hr(MAX_NODES), dvol
+      integer :: e, g, k, nn
+      associate (set => model%mesh%esets(s), rule => problem%system%rules(s))
+         nn = rule%nnode
+         do e = 1, size(set%conn, 2)
+            do k = 1, nn
+               xe(:, k) = model%mesh%x(:, set%conn(k, e))
+               ue(2*k - 1:2*k) = problem%state%u(:, set%conn(k, e))
+            end do
+            do g = 1, size(strain, 2)
+               call massif_gauss_derivs(rule, g, model%analysis%kind, model%analysis%thickness, &
+                  xe(:, 1:nn), dndx(:, 1:nn), hr(1:nn), dvol, error)
+               if (allocated(error)) return
+               call point_strain(nn, dndx(:, 1:nn), hr(1:nn), ue(1:2*nn), strain(:, g, e))
+            end do
+         end do
+      end associate
+   end subroutine set_strains
+
+   !> Joint set js becomes active: stresses from the soil beside it, relative displacements
+   !> from the current displacements.
+   subroutine activate_joints(model, problem, index, js, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(mesh_index_t), intent(in) :: index
+      integer, intent(in) :: js
+      type(error_t), allocatable, intent(out) :: error
+      class(joint_element_t), allocatable :: elem
+      type(joint_point_t), allocatable :: pts(:)
+      real(wp), allocatable :: ue(:)
+      integer :: e, ip
+      associate (set => model%joint_sets(js), st => problem%state%joints%sets(js))
+         st%active = .true.
+         st%sigma = 0.0_wp
+         call initial_joint_set_stress(model, index, problem%state, js, error)
+         if (allocated(error)) return
+         call joint_set_element(set, elem, error)
+         if (allocated(error)) return
+         allocate (pts(elem%npoint()), ue(2*size(set%conn, 1)))
+         do e = 1, size(set%conn, 2)
+            call joint_element_points(model, set, elem, e, pts, error)
+            if (allocated(error)) return
+            ue = reshape(problem%state%u(:, set%conn(:, e)), [size(ue)])
+            do ip = 1, size(pts)
+               st%eps(:, ip, e) = joint_strain(pts(ip), ue)
+            end do
+         end do
+         st%eps_trial = st%eps
+         st%sigma_trial = st%sigma
+         st%hist_trial = st%hist
+      end associate
+   end subroutine activate_joints
+
+   !> The Katona doublets of joint set js (if any) go open, without force, and stay so.
+   subroutine katona_off(problem, js)
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: js
+      associate (kt => problem%katona)
+         if (.not. kt%active) return
+         where (kt%set_of == js)
+            kt%off = .true.
+            kt%mode = MODE_OPEN
+            kt%sgn = 0
+         end where
+         where (spread(kt%set_of == js, 1, 2)) kt%f = 0.0_wp
+         call kt%begin_increment()
+      end associate
+   end subroutine katona_off
+
+   !> The Katona doublets of joint set js come back: in stick, no force, bond intact, their
+   !> gap and slip measured from the current relative displacements.
+   subroutine katona_on(problem, js)
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: js
+      real(wp), allocatable :: z(:, :)
+      associate (kt => problem%katona)
+         if (.not. kt%active) return
+         allocate (z(2, kt%nd))
+         call relative_displacements(kt, problem%state%u, z)
+         where (kt%set_of == js)
+            kt%off = .false.
+            kt%mode = MODE_STICK
+            kt%sgn = 0
+            kt%broken = .false.
+            kt%gap0 = z(1, :)
+            kt%anchor = z(2, :)
+         end where
+         where (spread(kt%set_of == js, 1, 2))
+            kt%f = 0.0_wp
+            kt%z = z
+         end where
+         call kt%begin_increment()
+      end associate
+   end subroutine katona_on
+
+   !> Element set state st takes material m: stresses kept, history restarted (zero, of
+   !> the new size), tangents stored when m has no constant tangent (its elastic one).
+   subroutine swap_material(model, st, m)
+      type(model_t), intent(in) :: model
+      type(set_state_t), intent(inout) :: st
+      integer, intent(in) :: m
+      real(wp) :: d(NCOMP, NCOMP)
+      integer :: nel, e, g
+      associate (mat => model%materials(m)%m)
+         st%material = m
+         nel = size(st%stress, 3)
+         deallocate (st%hist, st%hist_trial)
+         allocate (st%hist(mat%nstate(), st%ngauss, nel), source=0.0_wp)
+         allocate (st%hist_trial, source=st%hist)
+         if (allocated(st%tangent)) deallocate (st%tangent)
+         if (.not. mat%constant_tangent()) then
+            call mat%elastic_tangent(d)
+            allocate (st%tangent(NCOMP, NCOMP, st%ngauss, nel))
+            do e = 1, nel
+               do g = 1, st%ngauss
+                  st%tangent(:, :, g, e) = d
+               end do
+            end do
+         end if
+      end associate
+   end subroutine swap_material
+
+   !> Displacements back to zero; the strains and joint relative displacements measured
+   !> from them too. Stresses and histories stay.
+   subroutine reset_displacements(problem)
+      type(problem_t), intent(inout) :: problem
+      integer :: s
+      problem%state%u = 0.0_wp
+      do s = 1, size(problem%state%sets)
+         problem%state%sets(s)%strain = 0.0_wp
+         problem%state%sets(s)%strain_trial = 0.0_wp
+      end do
+      if (.not. allocated(problem%state%joints%sets)) return
+      do s = 1, size(problem%state%joints%sets)
+         problem%state%joints%sets(s)%eps = 0.0_wp
+         problem%state%joints%sets(s)%eps_trial = 0.0_wp
+      end do
+   end subroutine reset_displacements
+
+   subroutine add_line(lines, text)
+      character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)
+      character(len=*), intent(in) :: text
+      lines = [character(len=LINE_LEN) :: lines, text]
+   end subroutine add_line
+
+end module pecplas_phases_start

@@ -1,0 +1,49 @@
+!> Where a phased run stands (doc/theory.md, Phases): the phase whose changes are in force,
+!> the load each element set holds while it is active, and the out-of-balance carried from
+!> the start of the current phase. Not used (empty) by a deck that is not phased.
+module pecplas_problem_phase
+   use pecplas_base_kinds, only: wp
+   implicit none (type, external)
+   private
+
+   public :: phase_state_t, HOLD_NONE, HOLD_WEIGHT, PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, PROCEDURE_NAMES
+
+   !> How the initial stresses of a phased run come about: none (no *INITIAL_STRESS and no
+   !> gravity pattern), the K0 procedure (*INITIAL_STRESS: the stresses are the state, the
+   !> weight of the active sets the load), gravity loading (a GRAVITY pattern applied by
+   !> the steps, no *INITIAL_STRESS).
+   integer, parameter :: PROCEDURE_NONE = 0, PROCEDURE_K0 = 1, PROCEDURE_GRAVITY = 2
+   character(len=*), parameter :: PROCEDURE_NAMES(0:2) = [character(len=14) :: 'none', &
+      'K0 procedure', 'gravity loading']
+
+   !> phase_state_t%hold values (a positive value indexes phase_state_t%homogeneous).
+   integer, parameter :: HOLD_NONE = 0, HOLD_WEIGHT = -1
+
+   type :: phase_state_t
+      !> The deck is phased (pecplas_model_phase_plan's is_phased).
+      logical :: phased = .false.
+      !> Step whose phase changes have been applied (0: none yet).
+      integer :: index = 0
+      integer :: procedure = PROCEDURE_NONE
+      !> What each element set holds while it is active (nset): HOLD_NONE, HOLD_WEIGHT (its
+      !> weight: a GEOSTATIC initial stress) or k > 0, the nodal forces of its HOMOGENEOUS
+      !> initial stress, kept in homogeneous(:, :, k) (2, nnode, number of such sets).
+      integer, allocatable :: hold(:)
+      real(wp), allocatable :: homogeneous(:, :, :)
+      !> The out-of-balance of the K0 state (2, nnode): the nodal forces of the initial
+      !> stresses of the whole model (every set and joint active) less what the sets hold.
+      !> Held with the load, as without phases, until the first nil step (no pattern line,
+      !> no change) releases it (`released`).
+      real(wp), allocatable :: unbalanced(:, :)
+      logical :: released = .false.
+      !> The reactions of the K0 state (2, nnode; zero on the free equations): the reference of
+      !> the convergence test measures the reactions from them, as a deck without phases does
+      !> (pecplas_solve_residual's free_residual), so that the weight does not loosen it.
+      real(wp), allocatable :: base_reaction(:, :)
+      !> The out-of-balance of the phase start (2, nnode), on the free equations: added to
+      !> the external load at the start of the step and taken to zero along the step's load
+      !> path (pecplas_solve_residual's load_vectors).
+      real(wp), allocatable :: carried(:, :)
+   end type phase_state_t
+
+end module pecplas_problem_phase
