@@ -33,6 +33,7 @@ contains
                new_unittest('depth_pressure_refused', test_bad_pressure), &
                new_unittest('depth_pressure_refined', test_depth_refined), &
                new_unittest('gmsh_group_one_name', test_gmsh_group), &
+               new_unittest('gmsh_group_phase', test_gmsh_group_phase), &
                new_unittest('gmsh_q8r', test_gmsh_q8r), &
                new_unittest('gmsh_forms_refused', test_bad_gmsh)]
    end subroutine collect_io_deck_user
@@ -273,6 +274,22 @@ contains
       integer, intent(in) :: list(:), a, b
       same_two = size(list) == 2 .and. any(list == a) .and. any(list == b) .and. a /= b
    end function same_two
+
+   !> *CHANGE_MATERIAL naming the group 'soil' changes both parts (one change per part).
+   subroutine test_gmsh_group_phase(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      integer, allocatable :: sets(:)
+      call load('good_gmsh_group_phase.inp', model, error)
+      if (allocated(error)) return
+      call check(error, size(model%steps) == 2, 'two steps')
+      if (allocated(error)) return
+      call check(error, size(model%steps(2)%changes) == 2, 'two changes in step 2')
+      if (allocated(error)) return
+      sets = model%steps(2)%changes%set
+      call check(error, same_two(sets, model%mesh%find_eset('soil_Q4'), &
+         model%mesh%find_eset('soil_T3')), 'the change reaches soil_Q4 and soil_T3')
+   end subroutine test_gmsh_group_phase
 
    !> *SECTION, SET=wall, ELEMENT=Q8R on ../q8.msh's 8-node quadrilaterals: the set is Q8R.
    subroutine test_gmsh_q8r(error)
