@@ -40,7 +40,7 @@ help:
 	@echo "                array through pecplas-sweep (doc/sweep.md; needs root or Slurm)"
 	@echo "  make build-mpi  the MPI build with the MUMPS solver in $(MPI_DIR) (installs OpenMPI"
 	@echo "                and MUMPS as root; doc/mpi.md): mpirun -np N $(MPI_DIR)/pecplas DECK"
-	@echo "  make test-mpi MUMPS on 1 and 2 ranks against the serial solvers (4 decks, 1e-8)"
+	@echo "  make test-mpi MUMPS on 1 and 2 ranks against the serial solvers (5 decks, 1e-8)"
 	@echo "                and the MUMPS unit tests under mpirun -np 1 and 2"
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
 	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
@@ -158,7 +158,7 @@ s6: build
 # default serial builds stay as they are.
 MPI_DIR ?= build/cmake-mpi
 MPI_DECKS ?= input/default.inp test/data/plasticity/footing_t6.inp input/s2/s2_katona.inp \
-  test/data/katona/float_goodman6_axi.inp
+  test/data/katona/float_goodman6_axi.inp input/examples/excavation_cantilever.inp
 build-mpi:
 	@PECPLAS_MPI=1 bash tools/install_deps.sh
 	cmake -S . -B $(MPI_DIR) -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null

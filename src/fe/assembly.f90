@@ -91,12 +91,17 @@ contains
       end if
       call builder%add_extra(k, error)
       if (allocated(error)) return
-      if (allocated(state%orphan_eq) .and. part%rank == 0) call add_orphans(k, state%orphan_eq)
+      ! every rank: an orphan's diagonal is in the pattern of the ranks whose (inactive)
+      ! elements hold its node, not necessarily rank 0's
+      if (allocated(state%orphan_eq)) call add_orphans(k, state%orphan_eq)
    end subroutine assemble_stiffness
 
    !> A diagonal entry, the largest of the matrix, at each free equation that no active
    !> element holds (its row and column are otherwise zero: the system stays regular and
-   !> the equation, never loaded, gives a zero displacement increment).
+   !> the equation, never loaded, gives a zero displacement increment). In an MPI run each
+   !> rank adds it where its part of the pattern holds the entry; the ranks' parts are
+   !> summed, so the entry may be a multiple of it: the equation is decoupled from the
+   !> others, and its value changes no displacement.
    subroutine add_orphans(k, orphan_eq)
       type(csc_t), intent(inout) :: k
       integer, intent(in) :: orphan_eq(:)
