@@ -29,6 +29,7 @@ program tester
    use test_io_deck, only: collect_io_deck
    use test_io_deck_errors, only: collect_io_deck_errors
    use test_io_deck_trust, only: collect_io_deck_trust
+   use test_io_deck_user, only: collect_io_deck_user
    use test_solve_progress, only: collect_solve_progress
    use test_massif_materials_factory, only: collect_massif_materials_factory
    use test_pecjoin_elements, only: collect_pecjoin_elements
@@ -133,6 +134,7 @@ program tester
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
+   suites = [suites, new_testsuite('io_deck_user', collect_io_deck_user)]
    suites = [suites, new_testsuite('solve_progress', collect_solve_progress)]
    suites = [suites, new_testsuite('driver_estimator', collect_estimator)]
    suites = [suites, new_testsuite('model_units', collect_model_units)]

@@ -51,7 +51,7 @@ contains
       type(goal_spec_t) :: g
       character(len=:), allocatable :: msg
       character(len=20), parameter :: bad(8) = [character(len=20) :: 'node:0:y', 'node:3', &
-         'node:3:w', 'node:x3:y', 'reaction:', 'reaction:a:w', 'limits', 'reaction:a b']
+         'node:3:w', 'node:a b:y', 'reaction:', 'reaction:a:w', 'limits', 'reaction:a b']
       integer :: i
       call parse_goal_spec('', g, msg)
       call check(error, .not. allocated(msg) .and. g%kind == GOAL_ENERGY, "'' is energy")
@@ -59,6 +59,11 @@ contains
       call parse_goal_spec('node:12:z', g, msg)
       call check(error, .not. allocated(msg) .and. g%kind == GOAL_NODE .and. g%node_id == 12 &
          .and. g%dof == 2, 'node:12:z')
+      if (allocated(error)) return
+      ! a name where the node id goes: a node set of one node, resolved with the mesh
+      call parse_goal_spec('node:x3:y', g, msg)
+      call check(error, .not. allocated(msg) .and. g%kind == GOAL_NODE .and. g%node_id == 0 &
+         .and. g%set == 'x3' .and. g%dof == 2, 'node:x3:y (node set x3)')
       if (allocated(error)) return
       call parse_goal_spec('reaction:base', g, msg)
       call check(error, .not. allocated(msg) .and. g%kind == GOAL_REACTION .and. &

@@ -5,6 +5,9 @@
 #   tools/install_deps.sh --check    check only (exit 1 when something is missing)
 #   PECPLAS_MPI=1 tools/install_deps.sh   also OpenMPI and MUMPS, for the MPI build
 #                                         (make build-mpi, doc/mpi.md); never otherwise
+# Optional Python packages (OPTIONAL_PIP_PACKAGES: gmsh, which meshes the examples of
+# doc/gmsh.md and their test) are installed as root when missing, on a best-effort basis;
+# their absence is never an error (the tests that need them are skipped, saying why).
 # Quiet and fast when all is present: cheap file and PATH tests, one python start-up.
 # Runs unattended (CI=true, no stdin): apt-get -y with DEBIAN_FRONTEND=noninteractive.
 set -euo pipefail
@@ -13,6 +16,7 @@ APT_PACKAGES=(gfortran libhdf5-dev libsuitesparse-dev libopenblas-dev liblapack-
 MPI_APT_PACKAGES=(libmumps-dev libopenmpi-dev openmpi-bin)
 if [[ ${PECPLAS_MPI:-0} == 1 ]]; then APT_PACKAGES+=("${MPI_APT_PACKAGES[@]}"); fi
 PIP_PACKAGES=(fpm numpy h5py matplotlib pytest)
+OPTIONAL_PIP_PACKAGES=(gmsh)
 PYTHON=${PYTHON:-python3}
 export DEBIAN_FRONTEND=noninteractive
 
@@ -34,6 +38,7 @@ marker = os.path.join(sysconfig.get_path("stdlib"), "EXTERNALLY-MANAGED")
 print("managed" if os.path.exists(marker) else "free")
 print(" ".join(m for m in ("numpy", "h5py", "matplotlib", "pytest")
                if importlib.util.find_spec(m) is None))
+print(" ".join(m for m in ("gmsh",) if importlib.util.find_spec(m) is None))
 EOF
 }
 
@@ -58,6 +63,7 @@ have_header() {  # have_header FILE: in a system include dir or its suitesparse/
 
 missing_apt=()
 missing_pip=()
+missing_optional=()
 pip_flags=()
 
 check() {
@@ -115,6 +121,23 @@ check() {
     read -r -a mods <<<"${facts[3]}"
     missing_pip+=("${mods[@]}")
   fi
+  missing_optional=()
+  if [[ -n ${facts[4]:-} ]]; then
+    read -r -a mods <<<"${facts[4]}"
+    missing_optional+=("${mods[@]}")
+  fi
+}
+
+optional() {  # the optional packages: installed as root (one try), else a note
+  ((${#missing_optional[@]})) || return 0
+  if [[ $mode == install && $(id -u) -eq 0 ]]; then
+    echo "install_deps: + optional: $PYTHON -m pip install ${missing_optional[*]}"
+    "$PYTHON" -m pip install --disable-pip-version-check "${pip_flags[@]}" \
+      --root-user-action=ignore -q "${missing_optional[@]}" </dev/null \
+      || echo "install_deps: optional ${missing_optional[*]} not installed (tests that need it are skipped)" >&2
+  else
+    echo "install_deps: optional, not installed: ${missing_optional[*]} (pip install ${missing_optional[*]}: doc/gmsh.md)" >&2
+  fi
 }
 
 retry() {  # retry CMD...: three tries, for a registry that hiccups
@@ -130,6 +153,7 @@ retry() {  # retry CMD...: three tries, for a registry that hiccups
 check
 if ((${#missing_apt[@]} == 0 && ${#missing_pip[@]} == 0)); then
   echo "install_deps: all build and test dependencies present"
+  optional
   exit 0
 fi
 
@@ -173,4 +197,5 @@ if ((${#missing_apt[@]} || ${#missing_pip[@]})); then
   echo "install_deps: still missing after install: ${missing_apt[*]} ${missing_pip[*]}" >&2
   exit 1
 fi
+optional
 echo "install_deps: done, all build and test dependencies present"

@@ -29,7 +29,8 @@ module pecplas_advise_advise
    use pecplas_model_type, only: model_t
    use pecplas_model_refine_local, only: refine_marked
    use pecplas_model_refine_mark, only: bulk_marking
-   use pecplas_model_adapt_request, only: parse_goal
+   use pecplas_model_adapt_request, only: parse_goal_spec, goal_spec_t, NODE_GOAL => GOAL_NODE, &
+      find_goal_node => goal_node_index
    use pecplas_problem_type, only: problem_t
    use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
    use pecplas_adapt_adapt, only: adapt_options_t, goal_extrapolation
@@ -233,20 +234,26 @@ contains
       integer, intent(out) :: inode, dof
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: msg
+      type(goal_spec_t) :: spec
       integer :: id
       id = node_id
       dof = 0
       inode = 0
       if (len_trim(goal) > 0) then
-         call parse_goal(goal, id, dof, msg)
+         call parse_goal_spec(goal, spec, msg)
          ! --target-error takes other goals too; the advice only node goals, so a malformed
          ! or other goal gets the one message that names what the advice accepts
-         if (allocated(msg) .or. id == 0) msg = 'expected node:N:x or node:N:y (the advice '// &
-            'takes node goals), got '''//trim(goal)//''''
+         if (allocated(msg) .or. spec%kind /= NODE_GOAL) msg = 'expected node:N:x or '// &
+            'node:N:y, N a node id or a node set of one node (the advice takes node goals), '// &
+            'got '''//trim(goal)//''''
          if (allocated(msg)) then
             call input_error(error, 'advise: --goal: '//msg)
             return
          end if
+         dof = spec%dof
+         call find_goal_node(spec, model%mesh, inode, msg)
+         if (allocated(msg)) call input_error(error, 'advise: --goal: '//msg)
+         return
       end if
       if (id == 0) return
       inode = findloc(model%mesh%node_id, id, 1)

@@ -14,7 +14,7 @@ module pecplas_cmd_adapt
    use pecplas_cmd_command, only: command_error
    use pecplas_base_strings, only: itoa
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
-   use pecplas_model_adapt_request, only: parse_target, parse_goal, parse_goal_spec, &
+   use pecplas_model_adapt_request, only: parse_target, parse_goal, parse_goal_spec, goal_node_index, &
       goal_spec_t, GOAL_NODE, GOAL_REACTION, GOAL_LIMIT
    implicit none (type, external)
    private
@@ -67,13 +67,13 @@ contains
       msg = 'the energy norm'
       select case (spec%kind)
       case (GOAL_NODE)
-         opts%goal_node = findloc(model%mesh%node_id, spec%node_id, 1)
+         call goal_node_index(spec, model%mesh, opts%goal_node, msg)
          if (opts%goal_node == 0) then
-            code = command_error('pecplas', EXIT_INPUT, 'option --goal: the deck has no node '// &
-               itoa(spec%node_id))
+            code = command_error('pecplas', EXIT_INPUT, 'option --goal: '//msg)
             return
          end if
-         msg = 'node '//itoa(spec%node_id)//' '//merge('x', 'y', opts%goal_dof == 1)
+         msg = 'node '//itoa(model%mesh%node_id(opts%goal_node))//' '// &
+            merge('x', 'y', opts%goal_dof == 1)
       case (GOAL_REACTION)
          if (model%mesh%find_nset(spec%set) == 0) then
             code = command_error('pecplas', EXIT_INPUT, 'option --goal: expected reaction:SET '// &

@@ -5,10 +5,11 @@ module pecplas_fe_loads
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_loads, only: load_pattern_t
    use pecplas_fe_element_context, only: element_context
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_massif_element_matrices, only: massif_body_force
-   use pecplas_massif_edge_load, only: edge_pressure_forces
+   use pecplas_massif_edge_load, only: edge_pressure_forces, edge_linear_pressure_forces
    implicit none (type, external)
    private
 
@@ -45,8 +46,8 @@ contains
             case (LOAD_PRESSURE)
                do k = 1, size(pat%pressure)
                   nen = merge(3, 2, pat%edge(3, k) > 0)
-                  call edge_pressure_forces(model%analysis%kind, model%analysis%thickness, &
-                     model%mesh%x(:, pat%edge(1:nen, k)), pat%pressure(k), fe(1:2*nen), error)
+                  call pressure_forces(model, pat, k, model%mesh%x(:, pat%edge(1:nen, k)), &
+                     fe(1:2*nen), error)
                   if (allocated(error)) return
                   force(:, pat%edge(1:nen, k), p) = force(:, pat%edge(1:nen, k), p) + &
                      reshape(fe(1:2*nen), [2, nen])
@@ -64,6 +65,36 @@ contains
          end associate
       end do
    end subroutine pattern_vectors
+
+   !> Consistent nodal forces of the pressure of edge k of pattern `pat`: uniform, or linear in
+   !> y (pecplas_massif_edge_load), floored at pat%p_min when the pattern says so.
+   subroutine pressure_forces(model, pat, k, xedge, fe, error)
+      type(model_t), intent(in) :: model
+      type(load_pattern_t), intent(in) :: pat
+      integer, intent(in) :: k
+      real(wp), intent(in) :: xedge(:, :)
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: gradient
+      gradient = 0.0_wp
+      if (allocated(pat%pressure_gradient)) gradient = pat%pressure_gradient(k)
+      if (gradient == 0.0_wp) then
+         ! uniform: the historical rule, bit for bit
+         if (pat%floored) then
+            call edge_pressure_forces(model%analysis%kind, model%analysis%thickness, xedge, &
+               max(pat%p_min, pat%pressure(k)), fe, error)
+         else
+            call edge_pressure_forces(model%analysis%kind, model%analysis%thickness, xedge, &
+               pat%pressure(k), fe, error)
+         end if
+      else if (pat%floored) then
+         call edge_linear_pressure_forces(model%analysis%kind, model%analysis%thickness, &
+            xedge, pat%pressure(k), gradient, pat%pressure_y_ref(k), fe, error, pat%p_min)
+      else
+         call edge_linear_pressure_forces(model%analysis%kind, model%analysis%thickness, &
+            xedge, pat%pressure(k), gradient, pat%pressure_y_ref(k), fe, error)
+      end if
+   end subroutine pressure_forces
 
    !> Consistent nodal forces of a body force per unit volume `vec` (or, for gravity, of
    !> the material unit weight times the direction `vec`) over element set `s`.

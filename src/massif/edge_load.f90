@@ -14,7 +14,7 @@ module pecplas_massif_edge_load
    implicit none (type, external)
    private
 
-   public :: edge_pressure_forces, edge_traction_forces
+   public :: edge_pressure_forces, edge_traction_forces, edge_linear_pressure_forces
 
    !> fe(2*nen) of a pressure: uniform p, or nodal values p(nen).
    interface edge_pressure_forces
@@ -37,7 +37,7 @@ contains
       real(wp), intent(out) :: fe(:)
       type(error_t), allocatable, intent(out) :: error
       call edge_forces(analysis_kind, thickness, xedge, spread(p, 1, size(xedge, 2)), &
-         spread([0.0_wp, 0.0_wp], 2, size(xedge, 2)), 0, fe, error)
+         spread([0.0_wp, 0.0_wp], 2, size(xedge, 2)), 0, -1.0_wp, 1.0_wp, fe, error)
    end subroutine pressure_uniform
 
    subroutine pressure_nodal(analysis_kind, thickness, xedge, p, fe, error)
@@ -50,8 +50,88 @@ contains
          return
       end if
       call edge_forces(analysis_kind, thickness, xedge, p, &
-         spread([0.0_wp, 0.0_wp], 2, size(xedge, 2)), size(xedge, 2) - 1, fe, error)
+         spread([0.0_wp, 0.0_wp], 2, size(xedge, 2)), size(xedge, 2) - 1, -1.0_wp, 1.0_wp, fe, &
+         error)
    end subroutine pressure_nodal
+
+   !> fe(2*nen) of a pressure varying linearly with the depth, p(y) = p_ref + gradient
+   !> (y_ref - y), floored at p_min when given: max(p_min, p(y)) (e.g. p_min = 0: no suction
+   !> above a water table). Exact: y is interpolated along the edge by its own shape functions,
+   !> so p(y(s)) is too (nodal values, degree nen - 1 in s), and the floor cuts the edge at
+   !> the roots of p(y(s)) = p_min, each piece integrated by the Gauss rule exact for it.
+   subroutine edge_linear_pressure_forces(analysis_kind, thickness, xedge, p_ref, gradient, &
+      y_ref, fe, error, p_min)
+      integer, intent(in) :: analysis_kind
+      real(wp), intent(in) :: thickness, xedge(:, :), p_ref, gradient, y_ref
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: p_min
+      real(wp), allocatable :: q(:), cuts(:), part(:)
+      integer :: nen, i
+      nen = size(xedge, 2)
+      q = p_ref + gradient*(y_ref - xedge(2, :))
+      if (.not. present(p_min)) then
+         call edge_pressure_forces(analysis_kind, thickness, xedge, q, fe, error)
+         return
+      end if
+      ! max(p_min, p) = p_min + max(0, p - p_min): the uniform floor and the part above it
+      call edge_pressure_forces(analysis_kind, thickness, xedge, p_min, fe, error)
+      if (allocated(error)) return
+      q = q - p_min
+      cuts = [-1.0_wp, roots_in(q), 1.0_wp]
+      allocate (part(size(fe)))
+      do i = 1, size(cuts) - 1
+         if (.not. (cuts(i + 1) > cuts(i))) cycle
+         if (.not. (along(q, 0.5_wp*(cuts(i) + cuts(i + 1))) > 0.0_wp)) cycle
+         call edge_forces(analysis_kind, thickness, xedge, q, &
+            spread([0.0_wp, 0.0_wp], 2, nen), nen - 1, cuts(i), cuts(i + 1), part, error)
+         if (allocated(error)) return
+         fe = fe + part
+      end do
+   end subroutine edge_linear_pressure_forces
+
+   !> q(s) = sum N_k(s) q_k on the edge (2 or 3 nodal values).
+   pure real(wp) function along(q, s) result(v)
+      real(wp), intent(in) :: q(:), s
+      real(wp) :: n(3), dn(3)
+      call edge_shape(size(q), s, n, dn)
+      v = dot_product(n(1:size(q)), q)
+   end function along
+
+   !> The roots of q(s) = sum N_k(s) q_k in (-1, 1), ascending: q is linear in s on a 2-node
+   !> edge, q3 + s (q2 - q1)/2 + s**2 ((q1 + q2)/2 - q3) on a 3-node edge.
+   pure function roots_in(q) result(r)
+      real(wp), intent(in) :: q(:)
+      real(wp), allocatable :: r(:)
+      real(wp) :: a, b, c, disc, t, r1, r2
+      allocate (r(0))
+      if (size(q) == 2) then
+         a = 0.0_wp
+         b = 0.5_wp*(q(2) - q(1))
+         c = 0.5_wp*(q(1) + q(2))
+      else
+         a = 0.5_wp*(q(1) + q(2)) - q(3)
+         b = 0.5_wp*(q(2) - q(1))
+         c = q(3)
+      end if
+      if (abs(a) <= epsilon(1.0_wp)*(abs(b) + abs(c))) then
+         ! linear (a straight edge with its mid-side node at the middle, or a 2-node edge)
+         if (b /= 0.0_wp) r = [-c/b]
+      else
+         disc = b*b - 4.0_wp*a*c
+         if (disc < 0.0_wp) return
+         ! the stable pair of roots: t and c / (a r1)
+         t = -0.5_wp*(b + sign(sqrt(disc), b))
+         r1 = t/a
+         if (t /= 0.0_wp) then
+            r2 = c/t
+            r = [min(r1, r2), max(r1, r2)]
+         else
+            r = [r1]
+         end if
+      end if
+      r = pack(r, r > -1.0_wp .and. r < 1.0_wp)
+   end function roots_in
 
    subroutine traction_uniform(analysis_kind, thickness, xedge, t, fe, error)
       integer, intent(in) :: analysis_kind
@@ -59,7 +139,7 @@ contains
       real(wp), intent(out) :: fe(:)
       type(error_t), allocatable, intent(out) :: error
       call edge_forces(analysis_kind, thickness, xedge, spread(0.0_wp, 1, size(xedge, 2)), &
-         spread(t, 2, size(xedge, 2)), 0, fe, error)
+         spread(t, 2, size(xedge, 2)), 0, -1.0_wp, 1.0_wp, fe, error)
    end subroutine traction_uniform
 
    subroutine traction_nodal(analysis_kind, thickness, xedge, t, fe, error)
@@ -72,14 +152,14 @@ contains
          return
       end if
       call edge_forces(analysis_kind, thickness, xedge, spread(0.0_wp, 1, size(xedge, 2)), &
-         t, size(xedge, 2) - 1, fe, error)
+         t, size(xedge, 2) - 1, -1.0_wp, 1.0_wp, fe, error)
    end subroutine traction_nodal
 
    !> Integrates N (t |dx/ds| - p n_out |dx/ds|) weight ds with nodal p(nen), t(2, nen)
-   !> of polynomial degree load_degree along the edge.
-   subroutine edge_forces(analysis_kind, thickness, xedge, p, t, load_degree, fe, error)
+   !> of polynomial degree load_degree along the part a <= s <= b of the edge.
+   subroutine edge_forces(analysis_kind, thickness, xedge, p, t, load_degree, a, b, fe, error)
       integer, intent(in) :: analysis_kind, load_degree
-      real(wp), intent(in) :: thickness, xedge(:, :), p(:), t(:, :)
+      real(wp), intent(in) :: thickness, xedge(:, :), p(:), t(:, :), a, b
       real(wp), intent(out) :: fe(:)
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: s(:), w(:)
@@ -100,6 +180,9 @@ contains
       degree = g + (g - 1) + load_degree
       if (analysis_kind == AXISYMMETRIC) degree = degree + g
       call gauss_line(degree/2 + 1, s, w)
+      ! the rule on [-1, 1] mapped onto [a, b]
+      s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*s
+      w = 0.5_wp*(b - a)*w
       fe = 0.0_wp
       do ig = 1, size(s)
          call edge_shape(nen, s(ig), n, dn)

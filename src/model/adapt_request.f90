@@ -2,10 +2,12 @@
 !> of the adaptive loop (pecplas_adapt_adapt), and the parsing of its values, shared by both.
 module pecplas_model_adapt_request
    use pecplas_base_kinds, only: wp
+   use pecplas_model_mesh, only: mesh_t
    implicit none (type, external)
    private
 
-   public :: adapt_request_t, goal_spec_t, parse_target, parse_goal, parse_goal_spec
+   public :: adapt_request_t, goal_spec_t, parse_target, parse_goal, parse_goal_spec, &
+      goal_node_index
    public :: GOAL_ENERGY, GOAL_NODE, GOAL_REACTION, GOAL_LIMIT, GOAL_FORMS
 
    !> Goal kinds: the energy norm, a node's displacement component, the resultant of the
@@ -26,8 +28,9 @@ module pecplas_model_adapt_request
       integer :: at = 0
    end type adapt_request_t
 
-   !> A parsed goal: its kind, the node's deck id (node goal), the node set's name (reaction
-   !> goal) and the component (1 x/r, 2 y/z; 0 for a reaction: the loaded direction).
+   !> A parsed goal: its kind, the node's deck id (node goal; 0 when the node is named by a
+   !> node set of one node), the node set's name (reaction goal, or node goal by set) and
+   !> the component (1 x/r, 2 y/z; 0 for a reaction: the loaded direction).
    type :: goal_spec_t
       integer :: kind = GOAL_ENERGY
       integer :: node_id = 0, dof = 0
@@ -54,7 +57,8 @@ contains
          "expected a relative error such as 1% or 0.01, got '"//trim(text)//"'"
    end subroutine parse_target
 
-   !> "" or "energy", "node:N:d", "reaction:SET" or "reaction:SET:d" (d one of x y r z 1 2),
+   !> "" or "energy", "node:N:d" (N a node id or a set name), "reaction:SET" or
+   !> "reaction:SET:d" (d one of x y r z 1 2),
    !> "limit". `msg` names the accepted forms when `text` is none of them.
    subroutine parse_goal_spec(text, goal, msg)
       character(len=*), intent(in) :: text
@@ -68,14 +72,20 @@ contains
          goal%kind = GOAL_LIMIT
          return
       end if
-      msg = 'expected '//GOAL_FORMS//", got '"//t//"'"
+      msg = 'expected '//GOAL_FORMS//", got '"//t//"' (N: a node id or a node set of one "// &
+         'node)'
       if (index(t, 'node:') == 1) then
          rest = t(6:)
          q = index(rest, ':')
          if (q < 2) return
-         read (rest(1:q - 1), *, iostat=ios) goal%node_id
-         if (ios /= 0 .or. goal%node_id <= 0 .or. verify(rest(1:q - 1), '0123456789') /= 0) &
-            return
+         if (verify(rest(1:q - 1), '0123456789') == 0) then
+            read (rest(1:q - 1), *, iostat=ios) goal%node_id
+            if (ios /= 0 .or. goal%node_id <= 0) return
+         else
+            ! a node set of one node, resolved with the mesh (goal_node_index)
+            goal%set = rest(1:q - 1)
+            if (scan(goal%set, ' ,=') > 0) return
+         end if
          goal%dof = component(rest(q + 1:))
          if (goal%dof == 0) return
          goal%kind = GOAL_NODE
@@ -109,6 +119,23 @@ contains
          dof = 0
       end select
    end function component
+
+   !> The internal node of a node goal: its node id, or the node of its node set of one
+   !> node (mesh_t%node_of). inode = 0 and `msg` (naming the goal) when the mesh has none.
+   subroutine goal_node_index(goal, mesh, inode, msg)
+      type(goal_spec_t), intent(in) :: goal
+      type(mesh_t), intent(in) :: mesh
+      integer, intent(out) :: inode
+      character(len=:), allocatable, intent(out) :: msg
+      character(len=12) :: buf
+      if (allocated(goal%set)) then
+         call mesh%node_of(goal%set, inode, msg)
+      else
+         write (buf, '(i0)') goal%node_id
+         call mesh%node_of(trim(buf), inode, msg)
+         if (allocated(msg)) msg = 'the deck has no node '//trim(buf)
+      end if
+   end subroutine goal_node_index
 
    !> The node and energy goals only (node_id 0: energy), for callers that take no other
    !> goal; `msg` is set for every other text.

@@ -28,9 +28,14 @@ module pecplas_model_loads
       integer, allocatable :: node(:), dof(:)
       real(wp), allocatable :: value(:)
       !> PRESSURE: edges (3, n) as in edge_set_t (third node 0 for 2-node edges) and the
-      !> pressure of each edge (positive = pushing into the body).
+      !> pressure of each edge (positive = pushing into the body): p_ref + gradient (y_ref - y)
+      !> with p_ref = pressure(k), gradient = pressure_gradient(k), y_ref = pressure_y_ref(k)
+      !> (gradient 0: uniform; the gradient arrays may be absent: all uniform), and when
+      !> `floored`, max(p_min, p).
       integer, allocatable :: edge(:, :)
-      real(wp), allocatable :: pressure(:)
+      real(wp), allocatable :: pressure(:), pressure_gradient(:), pressure_y_ref(:)
+      logical :: floored = .false.
+      real(wp) :: p_min = 0.0_wp
       !> BODY_FORCE: element sets and force per unit volume (2, n);
       !> GRAVITY: element sets and unit direction (2, n), magnitude = material unit weight.
       integer, allocatable :: eset(:)

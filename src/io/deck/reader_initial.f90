@@ -89,22 +89,26 @@ contains
       end do
    end subroutine read_initial_stress
 
-   !> Element set names -> indices (ALL -> 0); an unknown name lists the known sets.
+   !> Element set names -> indices (ALL -> 0); a Gmsh group of several element types gives
+   !> one entry per part, in place (so later lines still overwrite earlier ones); an unknown
+   !> name lists the known sets.
    subroutine resolve_initial_stress(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, k
+      type(initial_stress_t), allocatable :: out(:)
+      integer, allocatable :: nparts(:), parts(:)
+      integer :: i, k, n
       character(len=:), allocatable :: list
       if (.not. allocated(model%initial_stresses)) return
+      ! the parts of each line (one: a set or ALL), then one entry per part, element by
+      ! element (no array constructor of the type: its allocatable components)
+      allocate (nparts(size(model%initial_stresses)), source=1)
       do i = 1, size(model%initial_stresses)
          associate (init => model%initial_stresses(i))
-            if (upper(init%set) == 'ALL') then
-               init%eset = 0
-               cycle
-            end if
-            init%eset = model%mesh%find_eset(init%set)
-            if (init%eset == 0) then
+            if (upper(init%set) == 'ALL') cycle
+            nparts(i) = size(model%mesh%find_esets(init%set))
+            if (nparts(i) == 0) then
                list = ''
                do k = 1, size(model%mesh%esets)
                   call add_name(list, model%mesh%esets(k)%name)
@@ -115,6 +119,26 @@ contains
             end if
          end associate
       end do
+      allocate (out(sum(nparts)))
+      n = 0
+      do i = 1, size(model%initial_stresses)
+         associate (init => model%initial_stresses(i))
+            if (upper(init%set) == 'ALL') then
+               n = n + 1
+               out(n) = init
+               out(n)%eset = 0
+               cycle
+            end if
+            parts = model%mesh%find_esets(init%set)
+            do k = 1, size(parts)
+               n = n + 1
+               out(n) = init
+               out(n)%eset = parts(k)
+               out(n)%set = model%mesh%esets(parts(k))%name
+            end do
+         end associate
+      end do
+      call move_alloc(out, model%initial_stresses)
    end subroutine resolve_initial_stress
 
    !> Index of the deck line (file, line) in state%lines.

@@ -5,7 +5,7 @@ module pecplas_io_deck_reader_loads
    use pecplas_io_deck_caps, only: MAX_LOAD_MAGNITUDE
    use pecplas_base_error, only: error_t
    use pecplas_io_text_fields, only: deck_line_t, field_t, split_fields, field_real, check_count, &
-      parse_int, same_name, upper, add_name
+      parse_int, parse_real, same_name, upper, add_name
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_pattern_t, &
       line_error, where_text, push_item
    use pecplas_io_deck_reader_mesh, only: check_name, no_data_error
@@ -93,7 +93,7 @@ contains
       character(len=:), allocatable :: kind, list, form
       integer :: i, n
       kwline = state%lines%get(block%at)
-      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
+      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE', 'MIN'], error)
       if (allocated(error)) return
       call block%kw%require(kwline, 'NAME', pat%name, error)
       if (allocated(error)) return
@@ -121,11 +121,13 @@ contains
          end if
       end do
       pat%at = block%at
+      call read_pressure_min(state, block, pat, error)
+      if (allocated(error)) return
       select case (pat%kind)
       case ('FORCE', 'DISPLACEMENT')
          form = 'target, dof, value'
       case ('PRESSURE')
-         form = 'edge_set, value'
+         form = 'edge_set, p | edge_set, p_ref, gradient, y_ref'
       case ('BODY_FORCE')
          form = 'element_set|ALL, bx, by'
       case default
@@ -154,7 +156,7 @@ contains
       real(wp) :: norm
       allocate (f(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
       call split_fields(state%lines%text(at), f)
-      call check_count(state%lines%get(at), f, 1, 3, form, error)
+      call check_count(state%lines%get(at), f, 1, 4, form, error)
       if (allocated(error)) return
       item%at = at
       item%target = f(1)%s
@@ -171,9 +173,27 @@ contains
          end if
          call field_real(state%lines%get(at), f, 3, 'value', item%value(1), error)
       case ('PRESSURE')
-         call check_count(state%lines%get(at), f, 2, 2, form, error)
+         call check_count(state%lines%get(at), f, 2, 4, form, error)
          if (allocated(error)) return
+         if (size(f) == 3) then
+            call line_error(state, at, 'expected "'//form//'" (uniform, or p_ref + '// &
+               'gradient (y_ref - y)), found 3 fields', error)
+            return
+         end if
          call field_real(state%lines%get(at), f, 2, 'pressure', item%value(1), error)
+         if (allocated(error)) return
+         if (size(f) == 4) then
+            call field_real(state%lines%get(at), f, 3, 'gradient', item%gradient, error)
+            if (allocated(error)) return
+            call field_real(state%lines%get(at), f, 4, 'y_ref', item%y_ref, error)
+            if (allocated(error)) return
+            if (abs(item%gradient) > MAX_LOAD_MAGNITUDE .or. &
+                abs(item%y_ref) > MAX_LOAD_MAGNITUDE) then
+               call line_error(state, at, 'load value above 1e100 in magnitude (see '// &
+                  'doc/deck.md, Limits)', error)
+               return
+            end if
+         end if
       case ('BODY_FORCE')
          call check_count(state%lines%get(at), f, 3, 3, form, error)
          if (allocated(error)) return
@@ -206,5 +226,27 @@ contains
       end if
       call push_item(pat%items, pat%n, item)
    end subroutine read_load_line
+
+   !> *LOAD, TYPE=PRESSURE, MIN=p_min: the pressure of the pattern is max(p_min, p).
+   subroutine read_pressure_min(state, block, pat, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      type(raw_pattern_t), intent(inout) :: pat
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      logical :: ok
+      call block%kw%get('MIN', text, pat%floored)
+      if (.not. pat%floored) return
+      if (pat%kind /= 'PRESSURE') then
+         call line_error(state, block%at, 'MIN= is an option of TYPE=PRESSURE (the least '// &
+            'pressure, e.g. MIN=0: no suction above a water table)', error)
+         return
+      end if
+      call parse_real(text, pat%p_min, ok)
+      if (.not. ok .or. .not. abs(pat%p_min) <= MAX_LOAD_MAGNITUDE) then
+         call line_error(state, block%at, "expected MIN=<number>, found '"//text//"'", error)
+         return
+      end if
+   end subroutine read_pressure_min
 
 end module pecplas_io_deck_reader_loads

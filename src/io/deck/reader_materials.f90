@@ -144,7 +144,8 @@ contains
          state%lines%line(at))
    end subroutine check_angle
 
-   !> *SECTION, SET=eset, MATERIAL=name -- no data lines; resolved at the end.
+   !> *SECTION, SET=eset, MATERIAL=name [, ELEMENT=Q8R|Q8] -- no data lines; resolved at the
+   !> end.
    subroutine read_section(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
@@ -153,13 +154,22 @@ contains
       type(raw_section_t) :: sec
       type(raw_section_t), allocatable :: tmp(:)
       integer :: n
+      logical :: found
       kwline = state%lines%get(block%at)
-      call block%kw%check_keys(kwline, [character(len=8) :: 'SET', 'MATERIAL'], error)
+      call block%kw%check_keys(kwline, [character(len=8) :: 'SET', 'MATERIAL', 'ELEMENT'], error)
       if (allocated(error)) return
       call block%kw%require(kwline, 'SET', sec%set, error)
       if (allocated(error)) return
       call block%kw%require(kwline, 'MATERIAL', sec%material, error)
       if (allocated(error)) return
+      call block%kw%get('ELEMENT', sec%element, found)
+      if (.not. found) sec%element = ''
+      sec%element = upper(sec%element)
+      if (found .and. sec%element /= 'Q8' .and. sec%element /= 'Q8R') then
+         call line_error(state, block%at, "bad value ELEMENT="//sec%element//'; expected '// &
+            'Q8R (8-node quadrilaterals with 2 x 2 Gauss points) or Q8 (3 x 3)', error)
+         return
+      end if
       sec%at = block%at
       if (.not. allocated(state%sections)) allocate (state%sections(0))
       n = size(state%sections)
@@ -169,22 +179,24 @@ contains
       call move_alloc(tmp, state%sections)
    end subroutine read_section
 
-   !> Gives every element set its material; each set needs exactly one section.
+   !> Gives every element set its material (and ELEMENT= its 8-node quadrilateral kind); each
+   !> set needs exactly one section. SET= a Gmsh group of several element types gives all its
+   !> parts the section.
    subroutine resolve_sections(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: given_at(:)
+      integer, allocatable :: given_at(:), parts(:)
       character(len=:), allocatable :: list
-      integer :: i, k, m
+      integer :: i, j, k, m, quads
       allocate (given_at(size(model%mesh%esets)))
       given_at = 0
       if (.not. allocated(model%materials)) allocate (model%materials(0))
       if (allocated(state%sections)) then
          do i = 1, size(state%sections)
             associate (sec => state%sections(i))
-               k = model%mesh%find_eset(sec%set)
-               if (k == 0) then
+               parts = model%mesh%find_esets(sec%set)
+               if (size(parts) == 0) then
                   list = ''
                   do m = 1, size(model%mesh%esets)
                      call add_name(list, model%mesh%esets(m)%name)
@@ -207,15 +219,31 @@ contains
                      "'; known materials:"//list, error)
                   return
                end if
-               k = model%mesh%find_eset(sec%set)
-               if (given_at(k) > 0) then
-                  call line_error(state, sec%at, "element set '"//sec%set// &
-                     "' already has a section (at "//where_text(state, given_at(k))//')', error)
+               do j = 1, size(parts)
+                  k = parts(j)
+                  if (given_at(k) > 0) then
+                     call line_error(state, sec%at, "element set '"// &
+                        model%mesh%esets(k)%name//"' already has a section (at "// &
+                        where_text(state, given_at(k))//')', error)
+                     return
+                  end if
+                  given_at(k) = sec%at
+                  model%mesh%esets(k)%material = model%materials(m)%m%name
+                  model%mesh%esets(k)%material_index = m
+                  ! ELEMENT=: the integration of the 8-node quadrilaterals among the parts
+                  if (len(sec%element) > 0 .and. (model%mesh%esets(k)%etype == 'Q8' .or. &
+                      model%mesh%esets(k)%etype == 'Q8R')) model%mesh%esets(k)%etype = sec%element
+               end do
+               quads = 0
+               do j = 1, size(parts)
+                  if (model%mesh%esets(parts(j))%etype == sec%element) quads = quads + 1
+               end do
+               if (len(sec%element) > 0 .and. quads == 0) then
+                  call line_error(state, sec%at, 'ELEMENT='//sec%element//' is for 8-node '// &
+                     "quadrilaterals; element set '"//sec%set//"' has none (type "// &
+                     model%mesh%esets(parts(1))%etype//')', error)
                   return
                end if
-               given_at(k) = sec%at
-               model%mesh%esets(k)%material = model%materials(m)%m%name
-               model%mesh%esets(k)%material_index = m
             end associate
          end do
       end if

@@ -13,7 +13,7 @@ module pecplas_io_deck_reader_options
    use pecplas_base_units, only: parse_units
    use pecplas_base_parallel, only: parallel_built
    use pecplas_model_adapt_request, only: parse_target, parse_goal_spec, goal_spec_t, &
-      GOAL_NODE, GOAL_REACTION
+      GOAL_NODE, GOAL_REACTION, goal_node_index
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, LINEAR_SOLVERS, &
       NONLINEAR_METHODS, EXACT_NO, EXACT_ON_STOP, EXACT_ALWAYS, method_name, method_kind
    implicit none (type, external)
@@ -232,12 +232,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(goal_spec_t) :: goal
       character(len=:), allocatable :: msg
+      integer :: inode
       if (.not. model%adapt%given) return
       call parse_goal_spec(model%adapt%goal, goal, msg)
       select case (goal%kind)
       case (GOAL_NODE)
-         if (findloc(model%mesh%node_id, goal%node_id, 1) == 0) call line_error(state, &
-            model%adapt%at, 'GOAL: the deck has no node '//itoa(goal%node_id), error)
+         call goal_node_index(goal, model%mesh, inode, msg)
+         if (inode == 0) call line_error(state, model%adapt%at, 'GOAL: '//msg, error)
       case (GOAL_REACTION)
          if (model%mesh%find_nset(goal%set) == 0) call line_error(state, model%adapt%at, &
             "GOAL: expected reaction:SET with SET a node set of the deck (*NSET), no set '"// &
@@ -247,8 +248,8 @@ contains
 
    !> *STEP [, NAME=name] [, INCREMENTS=n] [, CONTROL=LOAD|ARC_LENGTH] -- data: pattern,
    !> target_factor. Arc-length options: MAX_INCREMENTS=m, ITERATIONS=i (wanted per
-   !> increment), MIN_LENGTH=, MAX_LENGTH= (multiples of the first length), NODE=id, DOF=1|2,
-   !> DISPLACEMENT=v (stop when the node gets there).
+   !> increment), MIN_LENGTH=, MAX_LENGTH= (multiples of the first length), NODE=id|node_set
+   !> (of one node), DOF=1|2|X|Y|R|Z, DISPLACEMENT=v (stop when the node gets there).
    subroutine read_step(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
@@ -317,6 +318,7 @@ contains
       integer :: i
       character(len=14), parameter :: ARC_KEYS(7) = [character(len=14) :: 'MAX_INCREMENTS', &
          'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', 'NODE', 'DOF', 'DISPLACEMENT']
+      step%node = ''
       control = 'LOAD'
       call param_choice(state, block, 'CONTROL', [character(len=10) :: 'LOAD', 'ARC_LENGTH'], &
          control, error)
@@ -348,23 +350,40 @@ contains
             '(multiples of the first increment length)', error)
          return
       end if
-      call param_int(state, block, 'NODE', 1, step%node_id, error)
-      if (allocated(error)) return
-      has_node = step%node_id > 0
-      call param_int(state, block, 'DOF', 1, step%dof, error)
-      if (allocated(error)) return
+      ! NODE= a node id or a node set of one node (resolved with the mesh), DOF= 1, 2, X, Y,
+      ! R or Z
+      call block%kw%get('NODE', step%node, has_node)
+      if (.not. has_node) step%node = ''
+      call block%kw%get('DOF', control, found)
+      if (found) then
+         step%dof = dof_word(control)
+         if (step%dof == 0) then
+            call line_error(state, block%at, "expected DOF=1 or X (x or r), DOF=2 or Y (y "// &
+               "or z), or R, Z, found '"//control//"'", error)
+            return
+         end if
+      end if
       call param_real(state, block, 'DISPLACEMENT', step%displacement, has_disp, error)
       if (allocated(error)) return
       if (has_node .neqv. (has_disp .and. step%dof > 0)) then
-         call line_error(state, block%at, 'a displacement target needs NODE=id, DOF=1|2 and '// &
-            'DISPLACEMENT=value together', error)
-         return
-      end if
-      if (step%dof > 2) then
-         call line_error(state, block%at, 'expected DOF=1 (x or r) or DOF=2 (y or z)', error)
+         call line_error(state, block%at, 'a displacement target needs NODE=id|node_set, '// &
+            'DOF=1|2|X|Y|R|Z and DISPLACEMENT=value together', error)
          return
       end if
    end subroutine read_step_control
+
+   !> 1 for 1, X, R; 2 for 2, Y, Z (any letter case); 0 otherwise.
+   pure integer function dof_word(text) result(dof)
+      character(len=*), intent(in) :: text
+      select case (upper(trim(adjustl(text))))
+      case ('1', 'X', 'R')
+         dof = 1
+      case ('2', 'Y', 'Z')
+         dof = 2
+      case default
+         dof = 0
+      end select
+   end function dof_word
 
    subroutine param_real(state, block, key, value, found, error)
       type(deck_state_t), intent(in) :: state

@@ -121,18 +121,36 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      integer :: s, c
+      integer, allocatable :: parts(:)
+      integer :: s, c, i, n, nraw
       do s = 1, size(state%steps)
          associate (raw => state%steps(s), step => model%steps(s))
             step%reset_displacements = raw%reset_displacements
+            ! a Gmsh group of several element types (mesh_t%find_esets) changes each part
+            n = 0
             if (allocated(raw%changes)) then
-               allocate (step%changes(size(raw%changes)))
-            else
-               allocate (step%changes(0))
+               do c = 1, size(raw%changes)
+                  n = n + max(1, size(model%mesh%find_esets(raw%changes(c)%set)))
+               end do
             end if
-            do c = 1, size(step%changes)
-               call resolve_change(state, model, raw%changes(c), step%changes(c), error)
-               if (allocated(error)) return
+            allocate (step%changes(n))
+            n = 0
+            nraw = 0
+            if (allocated(raw%changes)) nraw = size(raw%changes)
+            do c = 1, nraw
+               parts = model%mesh%find_esets(raw%changes(c)%set)
+               if (size(parts) <= 1) then
+                  n = n + 1
+                  call resolve_change(state, model, raw%changes(c), step%changes(n), error)
+                  if (allocated(error)) return
+                  cycle
+               end if
+               do i = 1, size(parts)
+                  n = n + 1
+                  call resolve_change(state, model, raw%changes(c), step%changes(n), error, &
+                     parts(i))
+                  if (allocated(error)) return
+               end do
             end do
             if (step%reset_displacements .and. has_katona(model)) then
                call line_error(state, raw%at, 'RESET_DISPLACEMENTS is not available with '// &
@@ -155,12 +173,15 @@ contains
       end do
    end function has_katona
 
-   subroutine resolve_change(state, model, raw, ch, error)
+   !> One change; `part`: the element set of a Gmsh group's part that `raw` names with the
+   !> group's name.
+   subroutine resolve_change(state, model, raw, ch, error, part)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(in) :: model
       type(raw_change_t), intent(in) :: raw
       type(phase_change_t), intent(out) :: ch
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: part
       integer :: j, k
       character(len=:), allocatable :: list
       ch%kind = raw%kind
@@ -169,6 +190,10 @@ contains
       ch%file = state%lines%file(raw%at)
       ch%line = state%lines%line(raw%at)
       ch%set = model%mesh%find_eset(raw%set)
+      if (present(part)) then
+         ch%set = part
+         ch%set_name = model%mesh%esets(part)%name
+      end if
       ch%target = TARGET_ELEMENTS
       if (ch%set == 0 .and. allocated(model%joint_sets)) then
          do j = 1, size(model%joint_sets)

@@ -211,6 +211,13 @@ contains
          return
       end if
       ks = model%mesh%find_eset(raw%side)
+      if (ks == 0 .and. size(model%mesh%find_esets(raw%side)) > 1) then
+         call line_error(state, raw%at, "SIDE="//raw%side//" is a Gmsh group of several "// &
+            'element types; SIDE= takes one element set: mesh the body on that side with '// &
+            'one element type, or name its part (known element sets:'// &
+            set_names(model, .false.)//')', error)
+         return
+      end if
       if (ks == 0) then
          call line_error(state, raw%at, "undefined element set '"//raw%side// &
             "' in SIDE=; known element sets:"//set_names(model, .false.), error)

@@ -84,7 +84,9 @@ contains
             pat%name = raw%name
             pat%kind = load_kind(raw%kind)
             allocate (pat%node(0), pat%dof(0), pat%value(0), pat%edge(3, 0), pat%pressure(0), &
-               pat%eset(0), pat%vector(2, 0))
+               pat%pressure_gradient(0), pat%pressure_y_ref(0), pat%eset(0), pat%vector(2, 0))
+            pat%floored = raw%floored
+            pat%p_min = raw%p_min
             do i = 1, raw%n
                call add_item(state, model%mesh, raw%kind, raw%items(i), pat, error)
                if (allocated(error)) return
@@ -126,19 +128,20 @@ contains
          end associate
          pat%edge = reshape([pat%edge, edges], [3, size(pat%edge, 2) + n])
          pat%pressure = [pat%pressure, spread(item%value(1), 1, n)]
+         pat%pressure_gradient = [pat%pressure_gradient, spread(item%gradient, 1, n)]
+         pat%pressure_y_ref = [pat%pressure_y_ref, spread(item%y_ref, 1, n)]
       case default
          if (upper(item%target) == 'ALL') then
             allocate (sets(size(mesh%esets)))
             sets = [(k, k=1, size(mesh%esets))]
          else
-            k = mesh%find_eset(item%target)
-            if (k == 0) then
+            ! a set, or every part of a Gmsh group of several element types
+            sets = mesh%find_esets(item%target)
+            if (size(sets) == 0) then
                call line_error(state, item%at, "undefined element set '"//item%target// &
                   "'; known element sets:"//eset_names(mesh)//' (or ALL)', error)
                return
             end if
-            allocate (sets(1))
-            sets(1) = k
          end if
          n = size(sets)
          pat%eset = [pat%eset, sets]
@@ -205,6 +208,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: i
       logical :: force
+      character(len=:), allocatable :: msg
       force = .false.
       do i = 1, size(step%pattern)
          if (model%patterns(step%pattern(i))%kind == LOAD_DISPLACEMENT) then
@@ -221,10 +225,10 @@ contains
             raw%name//"'", error)
          return
       end if
-      if (raw%node_id > 0) then
-         step%node = findloc(model%mesh%node_id, raw%node_id, dim=1)
+      if (len(raw%node) > 0) then
+         call model%mesh%node_of(raw%node, step%node, msg)
          if (step%node == 0) then
-            call line_error(state, raw%at, 'NODE='//itoa(raw%node_id)//': no such node', error)
+            call line_error(state, raw%at, 'NODE='//raw%node//': '//msg, error)
             return
          end if
       end if

@@ -51,7 +51,8 @@ module pecplas_io_deck_state
 
    !> *SECTION: element set and material names as written.
    type :: raw_section_t
-      character(len=:), allocatable :: set, material
+      !> ELEMENT= as written ('' when absent).
+      character(len=:), allocatable :: set, material, element
       integer :: at = 0
    end type raw_section_t
 
@@ -61,6 +62,8 @@ module pecplas_io_deck_state
       character(len=:), allocatable :: target
       integer :: dof(2) = 0
       real(wp) :: value(2) = 0.0_wp
+      !> PRESSURE varying with depth: value(1) + gradient (y_ref - y).
+      real(wp) :: gradient = 0.0_wp, y_ref = 0.0_wp
       integer :: at = 0
    end type raw_item_t
 
@@ -68,6 +71,9 @@ module pecplas_io_deck_state
    type :: raw_pattern_t
       character(len=:), allocatable :: name, kind
       integer :: at = 0, n = 0
+      !> PRESSURE, MIN=p_min: the pressure is max(p_min, p).
+      logical :: floored = .false.
+      real(wp) :: p_min = 0.0_wp
       type(raw_item_t), allocatable :: items(:)
    end type raw_pattern_t
 
@@ -83,9 +89,11 @@ module pecplas_io_deck_state
    type :: raw_step_t
       character(len=:), allocatable :: name
       integer :: increments = 1, at = 0, n = 0
-      !> CONTROL=ARC_LENGTH and its options (node by user id, resolved later).
+      !> CONTROL=ARC_LENGTH and its options (NODE= as written: a node id or a node set of
+      !> one node, resolved later; '' none).
       logical :: arc_length = .false.
-      integer :: max_increments = 0, iterations_wanted = 6, node_id = 0, dof = 0
+      integer :: max_increments = 0, iterations_wanted = 6, dof = 0
+      character(len=:), allocatable :: node
       real(wp) :: displacement = 0.0_wp, min_length = 1.0e-4_wp, max_length = 10.0_wp
       type(raw_item_t), allocatable :: items(:)
       !> RESET_DISPLACEMENTS=YES, and the phase changes of the step in deck order.

@@ -8,6 +8,7 @@ module pecplas_io_deck_usage
    use pecplas_io_text_fields, only: same_name, upper
    use pecplas_io_deck_state, only: deck_state_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec
    use pecplas_model_phases, only: CHANGE_MATERIAL
    implicit none (type, external)
    private
@@ -69,16 +70,19 @@ contains
       end do
    end subroutine unused_materials
 
-   !> Node sets are used by *BOUNDARY and *LOAD lines; edge sets by *LOAD and *JOINTS.
+   !> Node sets are used by *BOUNDARY and *LOAD lines, by *STEP's NODE= and by *ADAPT's GOAL;
+   !> edge sets by *LOAD and *JOINTS.
    subroutine unused_sets(state, model)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       integer :: k
       if (allocated(state%nsets)) then
          do k = 1, size(state%nsets)
-            if (.not. named(state, state%nsets(k)%name, .false.)) call warn_at(state, model, &
-               state%nsets(k)%at, "node set '"//state%nsets(k)%name// &
-               "' is used by no *BOUNDARY or *LOAD line")
+            if (.not. named(state, state%nsets(k)%name, .false.) .and. &
+                .not. named_by_option(state, model, state%nsets(k)%name)) &
+               call warn_at(state, model, state%nsets(k)%at, "node set '"// &
+               state%nsets(k)%name//"' is used by no *BOUNDARY, *LOAD, *STEP (NODE=) or "// &
+               '*ADAPT (GOAL=) line')
          end do
       end if
       if (allocated(state%edge_sets)) then
@@ -117,6 +121,30 @@ contains
          end do
       end if
    end function named
+
+   !> True when a *STEP's NODE= or *ADAPT's GOAL= (node:SET:d, reaction:SET) names `name`.
+   logical function named_by_option(state, model, name) result(used)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      type(goal_spec_t) :: goal
+      character(len=:), allocatable :: msg
+      integer :: s
+      used = .false.
+      if (allocated(state%steps)) then
+         do s = 1, size(state%steps)
+            if (allocated(state%steps(s)%node)) then
+               if (same_name(state%steps(s)%node, name)) used = .true.
+            end if
+         end do
+      end if
+      if (model%adapt%given) then
+         call parse_goal_spec(model%adapt%goal, goal, msg)
+         if (allocated(goal%set)) then
+            if (same_name(goal%set, name)) used = .true.
+         end if
+      end if
+   end function named_by_option
 
    !> Factors start at 0; a step sets those it names. A step that names only patterns at
    !> the factor they already have applies nothing.

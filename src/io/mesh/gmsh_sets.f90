@@ -145,6 +145,7 @@ contains
       do t = 1, 4
          if (n(t) == 0) cycle
          es%name = name
+         es%group = name
          if (p == 0 .or. count(n > 0) > 1) es%name = name//'_'//surface_names(t)
          es%etype = surface_names(t)
          call gather(g, 2, p, surface_types(t), es%ids, es%conn)

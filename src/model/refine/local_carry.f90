@@ -241,6 +241,13 @@ contains
                if (allocated(reason)) return
             case (LOAD_PRESSURE)
                call split_pressure(le, pat%edge, pat%pressure, fp%edge, fp%pressure)
+               ! a pressure linear in y is the same function on the halves of a side
+               if (allocated(pat%pressure_gradient)) then
+                  call split_pressure(le, pat%edge, pat%pressure_gradient, fp%edge, &
+                     fp%pressure_gradient)
+                  call split_pressure(le, pat%edge, pat%pressure_y_ref, fp%edge, &
+                     fp%pressure_y_ref)
+               end if
             end select
          end associate
       end do

@@ -102,6 +102,8 @@ def parse_deck(path):
             m["initial"] += [(r[0], float(r[1]), float(r[2]), float(r[3]) if len(r) > 3 else 0.0)
                              for r in rows]
         elif key == "LOAD":
+            if "MIN" in p:
+                raise ValueError("a pressure with MIN= is not exported")
             m["loads"][p["NAME"]] = (p["TYPE"].upper(), rows)
         elif key == "STEP":
             m["steps"].append((p.get("NAME", f"step{len(m['steps']) + 1}"),
@@ -308,6 +310,9 @@ def _loads(m, factors):
         if typ == "PRESSURE":
             L.append("*DLOAD")
             for r in rows:
+                if len(r) != 2:
+                    raise ValueError(f"pressure '{name}' varies with depth: only uniform "
+                                     "pressures are exported")
                 for a, b in m["edges"][r[0]]:
                     eid, k = edge_face(m, a, b)
                     L.append(f"{eid}, P{k}, {float(r[1]) * f:.12g}")

@@ -322,10 +322,12 @@ def parse_quantity(text):
         q["pattern"] = args
     else:
         parts = args.split(":")
-        if len(parts) != 2 or parts[1] not in ("x", "y"):
+        # the deck's dof words: x, r, 1 (first dof), y, z, 2 (second), any letter case
+        dof = {"x": 0, "r": 0, "1": 0, "y": 1, "z": 1, "2": 1}.get(parts[-1].strip().lower())
+        if len(parts) != 2 or dof is None:
             raise InputError(f"--quantity {text}: expected {kind}:{'X,Y' if kind == 'disp' else 'NSET'}"
-                             ":x or :y")
-        q["where"], q["dir"] = parts[0], "xy".index(parts[1])
+                             ":x or :y (r, z, 1, 2 too)")
+        q["where"], q["dir"] = parts[0], dof
         if kind == "disp":
             try:
                 q["where"] = [float(v) for v in parts[0].split(",")]
