@@ -37,7 +37,7 @@ contains
    end function itoa
 
    !> x with at most `digits` decimals and no trailing zeros: 0.5, 1, 2.25, -0.125.
-   function decimal_text(x, digits) result(s)
+   pure function decimal_text(x, digits) result(s)
       real(wp), intent(in) :: x
       integer, intent(in) :: digits
       character(len=:), allocatable :: s

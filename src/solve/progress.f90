@@ -11,7 +11,7 @@ module pecplas_solve_progress
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_PRESSURE, LOAD_DISPLACEMENT
    use pecplas_base_progress_eta, only: progress_eta_t, duration
-   use pecplas_base_strings, only: itoa
+   use pecplas_base_strings, only: itoa, decimal_text
    implicit none (type, external)
    private
 
@@ -225,39 +225,14 @@ contains
       real(wp), intent(in) :: x
       character(len=:), allocatable :: s
       character(len=40) :: buf
-      integer :: e, k
       if (x == 0.0_wp) then
          s = '0'
-         return
-      end if
-      if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
-         e = floor(log10(abs(x)))
-         write (buf, '(f0.'//itoa_pure(max(0, 3 - e))//')') x
-         s = trim(adjustl(buf))
-         if (index(s, '.') > 0) then
-            k = len(s)
-            do while (s(k:k) == '0')
-               k = k - 1
-            end do
-            if (s(k:k) == '.') k = k - 1
-            s = s(1:k)
-         end if
-         if (s(1:1) == '.') s = '0'//s
-         if (len(s) > 1) then
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-         end if
+      else if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
+         s = decimal_text(x, max(0, 3 - floor(log10(abs(x)))))
       else
          write (buf, '(es10.3e2)') x
          s = trim(adjustl(buf))
       end if
    end function num
-
-   pure function itoa_pure(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=12) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa_pure
 
 end module pecplas_solve_progress
