@@ -274,27 +274,16 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: ekeep(:), jkeep(:), all_on(:)
-      real(wp), allocatable :: f(:, :), u0(:, :)
+      logical, allocatable :: jkeep(:), all_on(:)
+      real(wp), allocatable :: f(:, :)
       integer :: j
-      ekeep = problem%state%sets%active
       allocate (jkeep(0))
-      if (allocated(problem%state%joints%sets)) then
-         jkeep = problem%state%joints%sets%active
-         problem%state%joints%sets%active = .true.
-      end if
-      problem%state%sets%active = .true.
+      if (allocated(problem%state%joints%sets)) jkeep = problem%state%joints%sets%active
+      allocate (all_on(size(problem%state%sets)), source=.true.)
       allocate (f, mold=problem%system%initial_force)
-      ! at the initial state: zero displacements (a restart replays this over its own)
-      allocate (u0, mold=problem%state%u)
-      u0 = 0.0_wp
-      call internal_forces(model, problem%system%rules, u0, problem%state, f, error)
-      problem%state%sets%active = ekeep
-      if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
-      call problem%state%rollback()
+      call forces_at_start(model, problem, all_on, .true., f, error)
       if (allocated(error)) return
       if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
-      allocate (all_on(size(ekeep)), source=.true.)
       call held_load(model, problem, all_on, error)
       if (allocated(error)) return
       ! on the free equations: at a support it is the support's reaction to the K0 state
@@ -335,23 +324,37 @@ contains
       integer, intent(in) :: s
       real(wp), intent(out) :: f(:, :)
       type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: eon(:)
+      allocate (eon(size(problem%state%sets)), source=.false.)
+      eon(s) = .true.
+      call forces_at_start(model, problem, eon, .false., f, error)
+   end subroutine own_forces
+
+   !> Internal forces of the stresses held in the state at zero displacement, with the element
+   !> sets `eon` and every joint set (`joints_on`) or none active; the activity and the
+   !> trial state are put back as they were.
+   subroutine forces_at_start(model, problem, eon, joints_on, f, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: eon(:), joints_on
+      real(wp), intent(out) :: f(:, :)
+      type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: ekeep(:), jkeep(:)
       real(wp), allocatable :: u0(:, :)
       ekeep = problem%state%sets%active
       allocate (jkeep(0))
       if (allocated(problem%state%joints%sets)) then
          jkeep = problem%state%joints%sets%active
-         problem%state%joints%sets%active = .false.
+         problem%state%joints%sets%active = joints_on
       end if
-      problem%state%sets%active = .false.
-      problem%state%sets(s)%active = .true.
+      problem%state%sets%active = eon
       allocate (u0, mold=problem%state%u)
       u0 = 0.0_wp
       call internal_forces(model, problem%system%rules, u0, problem%state, f, error)
       problem%state%sets%active = ekeep
       if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
       call problem%state%rollback()
-   end subroutine own_forces
+   end subroutine forces_at_start
 
    !> Element set s becomes active: stress-free or with its initial stress, no history, its
    !> strains those of the current displacements.
