@@ -27,17 +27,18 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
+   use pecplas_io_deck_reader_safety, only: read_reduce, resolve_safety
    implicit none (type, external)
    private
 
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(25) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(26) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
-      '*CHANGE_MATERIAL', '*CHANGE_LAW']
+      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*REDUCE']
 
 contains
 
@@ -118,6 +119,8 @@ contains
       ! phase changes name joint sets too
       call resolve_phases(state, model, error)
       if (allocated(error)) return
+      call resolve_safety(state, model, error)
+      if (allocated(error)) return
       call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return
       call record_places(state, model)
@@ -166,6 +169,8 @@ contains
          call read_step(state, block, error)
       case ('*DEACTIVATE', '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW')
          call read_change(state, block, error)
+      case ('*REDUCE')
+         call read_reduce(state, block, error)
       case ('*END STEP')
          state%open_step = 0
          call no_data(state, block, error)
