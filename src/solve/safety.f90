@@ -7,8 +7,10 @@
 !> (the chain of methods) on a copy of the model whose strengths are reduced to the trial Msf,
 !> its first residual the internal forces of the converged state returned onto the reduced
 !> strengths. The size follows the failure: after a converged increment dM is scaled by the
-!> ratio of the displacement rates |du| / dM of the increment before and this one (clamped to
-!> [1/4, 3/2], at most MSF_STEP), so that it shrinks as the mechanism forms; a failed
+!> ratio of the displacement rates |du| / dM of the increment before and this one, times 3/2
+!> when the increment converged in at most EASY_ITERATIONS iterations (the displacement of
+!> an increment may grow while the curve is gentle), clamped to [1/4, 3/2] and to MSF_STEP:
+!> as the mechanism forms the rate grows without bound and dM shrinks with it; a failed
 !> increment is halved, down to RESOLUTION. When an increment of RESOLUTION fails too, no
 !> equilibrium was found beyond the Msf reached: that Msf is the factor, dM its resolution.
 !> MAX_INCREMENTS used before makes the Msf reached a lower bound (status stopped).
@@ -37,6 +39,9 @@ module pecplas_solve_safety
 
    !> Bounds of the scaling of dM by the ratio of displacement rates (module header).
    real(wp), parameter :: SHRINK_MOST = 0.25_wp, GROW_MOST = 1.5_wp
+   !> An increment converged in at most this many iterations lets the displacement of the
+   !> next grow by GROW_MOST (the Msf - displacement curve is still gentle there).
+   integer, parameter :: EASY_ITERATIONS = 4
    !> The mechanism: the displacements of the last MECHANISM_INCREMENTS increments.
    integer, parameter :: MECHANISM_INCREMENTS = 3
 
@@ -58,7 +63,7 @@ contains
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), u0(:, :), fred(:, :), &
          ulast(:, :, :)
-      real(wp) :: msf, dm, trial, rate, rate_prev, t0
+      real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow
       integer :: inc, method, k
       logical :: ok
 
@@ -140,10 +145,12 @@ contains
             if (.not. run%quiet) write (*, '(a)') '   Msf = '//g6(msf)//'  '// &
                res%displacement_of//' = '//g6(res%displacement(size(res%displacement)))
             ! the next size from the displacement rates (module header)
+            grow = GROW_MOST
+            if (out%iterations > EASY_ITERATIONS) grow = 1.0_wp
             if (rate_prev > 0.0_wp .and. rate > 0.0_wp) then
-               dm = dm*min(GROW_MOST, max(SHRINK_MOST, rate_prev/rate))
+               dm = dm*min(GROW_MOST, max(SHRINK_MOST, grow*rate_prev/rate))
             else
-               dm = dm*GROW_MOST
+               dm = dm*grow
             end if
             dm = min(plan%msf_step, max(dm, plan%resolution))
             if (rate > 0.0_wp) rate_prev = rate
