@@ -40,7 +40,122 @@ def infinite_slope(path, beta, phi, psi, c, gamma=20.0, height=5.0, nel=10, nu=0
         f.write('\n'.join(lines) + '\n')
 
 
+def footing(path, q, safety=True):
+    """The Prandtl footing of ../plasticity/footing_t6.inp (196 T6, Tresca c = 10, weightless)
+    loaded by a uniform pressure q on the half-width b = 1 (a flexible smooth footing), then
+    reduced (safety) or pushed to collapse by arc-length (safety=False)."""
+    src = open('../plasticity/footing_t6.inp').read().splitlines()
+    keep = []
+    for line in src:
+        if line.startswith('*BOUNDARY'):
+            break
+        if line.startswith('**') or line.startswith('*TITLE'):
+            continue
+        keep.append(line)
+    # drop the old title line (the line after *TITLE)
+    title = ('Prandtl footing, Tresca c = 10, pressure q = %g: Msf = (2 + pi) c / q' % q
+             if safety else 'Prandtl footing, Tresca c = 10, pressure to collapse')
+    keep = [l for l in keep if not l.startswith('smooth strip footing')]
+    lines = ['** ' + title + ' (written by make_decks.py from ../plasticity/footing_t6.inp)',
+             '*TITLE', title] + keep
+    lines += ['*BOUNDARY', 'axis, X', 'far, X', 'base, XY',
+              '*EDGES, NAME=footing_edge',
+              '407, 409, 408', '409, 411, 410', '411, 413, 412', '413, 415, 414',
+              '*LOAD, NAME=q, TYPE=PRESSURE', 'footing_edge, %g' % q,
+              '*SOLVER, METHOD=NEWTON, TOLERANCE=0.0001, MAX_ITERATIONS=15, MAX_CUTS=8',
+              '*OUTPUT, STRESSES=NO, STRAINS=NO',
+              '*STEP, NAME=load, INCREMENTS=2', 'q, 1']
+    if safety:
+        lines += ['*STEP, NAME=safety, CONTROL=SAFETY, RESOLUTION=0.002, NODE=407, DOF=Y']
+    else:
+        lines += ['*STEP, NAME=collapse, INCREMENTS=20, CONTROL=ARC_LENGTH, '
+                  'MAX_INCREMENTS=300, NODE=407, DOF=Y, DISPLACEMENT=-0.2', 'q, 4']
+    with open(path, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
+def slope_mesh(height, beta, crest, nx, ny, foundation=0.0, nf=0, right=0.0, nr=0):
+    """Q8R mesh of a slope of angle beta (degrees) and height `height`: crest from x = 0 to
+    `crest`, toe at (crest + height / tan(beta), 0); a foundation layer of depth `foundation`
+    (nf element rows) below y = 0 and `right` metres of ground beyond the toe (nr element
+    columns), both optional. Returns (nodes {id: (x, y)}, elements [8 ids], node ids on x = 0,
+    on the far right, on the base, and the nodes of the surface)."""
+    run = height / math.tan(math.radians(beta))
+    ids = {}
+    nodes = {}
+
+    def node(x, y):
+        key = (round(x, 9), round(y, 9))
+        if key not in ids:
+            ids[key] = len(ids) + 1
+            nodes[ids[key]] = (x, y)
+        return ids[key]
+
+    elements = []
+
+    def block(corner):
+        # corner(i, j) on a (2 ncol + 1) x (2 nrow + 1) grid of points
+        pass
+
+    def quad_grid(xy, ncol, nrow):
+        for j in range(nrow):
+            for i in range(ncol):
+                c = [(2 * i, 2 * j), (2 * i + 2, 2 * j), (2 * i + 2, 2 * j + 2), (2 * i, 2 * j + 2)]
+                m = [(2 * i + 1, 2 * j), (2 * i + 2, 2 * j + 1), (2 * i + 1, 2 * j + 2), (2 * i, 2 * j + 1)]
+                elements.append([node(*xy(a, b)) for a, b in c + m])
+
+    # the slope body: x from 0 to the slope line, y from 0 to height
+    def body(a, b):
+        eta = b / (2 * ny)
+        xr = crest + run * (1 - eta)
+        return (a / (2 * nx) * xr, eta * height)
+    quad_grid(body, nx, ny)
+    if foundation > 0:
+        width = crest + run + right
+        quad_grid(lambda a, b: (a / (2 * (nx + nr)) * width if nr else a / (2 * nx) * (crest + run),
+                                -foundation + b / (2 * nf) * foundation), nx + nr, nf)
+    if right > 0 and nr:
+        x0 = crest + run
+        quad_grid(lambda a, b: (x0 + a / (2 * nr) * right, 0.0 * b), nr, 0)
+    left = [k for k, (x, y) in nodes.items() if abs(x) < 1e-9]
+    ymin = min(y for x, y in nodes.values())
+    base = [k for k, (x, y) in nodes.items() if abs(y - ymin) < 1e-9]
+    xmax = max(x for x, y in nodes.values())
+    far = [k for k, (x, y) in nodes.items() if abs(x - xmax) < 1e-9 and k not in base]
+    return nodes, elements, left, far, base
+
+
+def taylor_slope(path, c=50.0, gamma=20.0, height=10.0, beta=60.0, steps=None):
+    """An undrained (phi = 0) slope of angle beta on a firm base at the toe (Taylor's depth
+    factor D = 1): Taylor's chart gives c / (gamma H F) = 0.191 for beta = 60 degrees (a
+    toe circle)."""
+    nodes, elements, left, far, base = slope_mesh(height, beta, 2 * height, 16, 8)
+    title = f'undrained slope beta {beta:g}, H {height:g}, c {c:g}, gamma {gamma:g}, D = 1'
+    lines = ['** ' + title + ' (written by make_decks.py)', '*TITLE', title, '*NODES']
+    lines += [f'{k}, {x:.12g}, {y:.12g}' for k, (x, y) in sorted(nodes.items())]
+    lines.append('*ELEMENTS, TYPE=Q8, SET=soil')
+    lines += [f'{e + 1}, ' + ', '.join(str(n) for n in conn) for e, conn in enumerate(elements)]
+    lines += ['*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB',
+              f'E = 1e5, NU = 0.3, GAMMA = {gamma:g}', f'C = {c:g}, PHI = 0, PSI = 0',
+              '*SECTION, SET=soil, MATERIAL=clay, ELEMENT=Q8R',
+              '*NSET, NAME=left'] + [', '.join(map(str, left[i:i + 10])) for i in range(0, len(left), 10)]
+    lines += ['*NSET, NAME=base'] + [', '.join(map(str, base[i:i + 10])) for i in range(0, len(base), 10)]
+    crest = [k for k, (x, y) in nodes.items() if abs(y - height) < 1e-9 and abs(x - 2 * height) < 1e-9]
+    lines += ['*BOUNDARY', 'left, X', 'base, XY',
+              '*LOAD, NAME=weight, TYPE=GRAVITY', 'soil',
+              '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-5',
+              '*OUTPUT, STRESSES=NO, STRAINS=NO',
+              '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1']
+    lines += steps or [f'*STEP, NAME=safety, CONTROL=SAFETY, RESOLUTION=0.005, '
+                       f'NODE={crest[0]}, DOF=X']
+    with open(path, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
 def main():
+    taylor_slope('taylor_slope.inp')
+    footing('footing_safety.inp', 25.0)
+    footing('footing_collapse.inp', 25.0, safety=False)
     infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
                    title='infinite slope beta 20, phi 35 (associated), c 0: F = tan phi / tan beta')
     infinite_slope('infinite_slope_c.inp', 25, 30, 30, 10,
