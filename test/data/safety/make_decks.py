@@ -46,10 +46,14 @@ def footing(path, q, safety=True):
     reduced (safety) or pushed to collapse by arc-length (safety=False)."""
     src = open('../plasticity/footing_t6.inp').read().splitlines()
     keep = []
+    skip = False
     for line in src:
         if line.startswith('*BOUNDARY'):
             break
-        if line.startswith('**') or line.startswith('*TITLE'):
+        if line.startswith('*'):
+            # the rigid footing's node set is not used here
+            skip = line.startswith('*NSET, NAME=footing')
+        if skip or line.startswith('**') or line.startswith('*TITLE'):
             continue
         keep.append(line)
     # drop the old title line (the line after *TITLE)
@@ -152,10 +156,35 @@ def taylor_slope(path, c=50.0, gamma=20.0, height=10.0, beta=60.0, steps=None):
         f.write('\n'.join(lines) + '\n')
 
 
+def block_variants():
+    """Variants of block.inp (written by hand): a budget too small (lower bound), a push
+    above the resistance (unstable before reduction), and two bad decks."""
+    text = open('block.inp').read()
+    safety = '*STEP, NAME=safety, CONTROL=SAFETY, MSF_STEP=0.2, RESOLUTION=0.002, NODE=11, DOF=X'
+    variants = {
+        'block_budget.inp': ('budget of 3 increments: the factor is a lower bound',
+                             [(safety, safety + ', MAX_INCREMENTS=3')]),
+        'block_unstable.inp': ('pushed by 90 > R = 70: unstable before reduction',
+                               [('pad_top, X, 10', 'pad_top, X, 30')]),
+        'bad_safety_first.inp': ('bad: the safety step is the first step',
+                                 [('*STEP, NAME=press, INCREMENTS=1\np, 1\n'
+                                   '*STEP, NAME=push, INCREMENTS=2\npush, 1\n', '')]),
+        'bad_reduce_elastic.inp': ('bad: *REDUCE names an elastic material',
+                                   [(safety, safety + '\n*REDUCE\nfriction, soil')]),
+    }
+    for name, (title, subs) in variants.items():
+        t = text
+        for old, new in subs:
+            assert old in t, (name, old)
+            t = t.replace(old, new)
+        with open(name, 'w') as f:
+            f.write('** ' + title + ' (written by make_decks.py from block.inp)\n' + t)
+
+
 def main():
+    block_variants()
     taylor_slope('taylor_slope.inp')
     footing('footing_safety.inp', 25.0)
-    footing('footing_collapse.inp', 25.0, safety=False)
     infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
                    title='infinite slope beta 20, phi 35 (associated), c 0: F = tan phi / tan beta')
     infinite_slope('infinite_slope_c.inp', 25, 30, 30, 10,

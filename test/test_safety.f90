@@ -1,0 +1,213 @@
+!> The safety step (strength reduction, doc/theory.md §12) against closed forms and charts, on
+!> the decks of test/data/safety (make_decks.py):
+!> - a block on a Mohr-Coulomb joint (c and tan(phi) reduced) pushed by T below its sliding
+!>   resistance R = c L + N tan(phi): factor R / T within 1 %;
+!> - an infinite slope (a periodic column, gravity inclined by beta), associated flow:
+!>   cohesionless tan(phi) / tan(beta) within 2 %, with cohesion the closed form at the base
+!>   (c + gamma H cos^2(beta) tan(phi)) / (gamma H sin(beta) cos(beta)) within 3 %;
+!> - Prandtl's footing on weightless Tresca soil under a pressure q: Msf = (2 + pi) c / q
+!>   within 2 % (the collapse pressure is proportional to c);
+!> - an undrained slope of 60 degrees on a firm base at the toe: Taylor's stability number
+!>   c / (gamma H F) = 0.191 within 5 %;
+!> - honesty: a budget too small gives a lower bound (exit 3), a model that fails before the
+!>   reduction reports "unstable before reduction" and no factor (exit 3);
+!> - bad decks (a safety step first, *REDUCE of a material without strength): exit 2 with
+!>   file:line.
+module test_safety
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_problem_safety, only: SAFETY_FACTOR, SAFETY_LOWER_BOUND, SAFETY_UNSTABLE
+   use pecplas_base_strings, only: itoa, g6
+   use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   implicit none (type, external)
+   private
+   public :: collect_safety
+
+   character(len=*), parameter :: DATA = 'test/data/safety/', OUT = 'build/test_out/safety/'
+   real(wp), parameter :: PI = acos(-1.0_wp), DEG = PI/180.0_wp
+
+contains
+
+   subroutine collect_safety(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('block_on_joint', test_block), &
+               new_unittest('infinite_slope_dry', test_infinite_dry), &
+               new_unittest('infinite_slope_cohesion', test_infinite_c), &
+               new_unittest('prandtl_footing', test_footing), &
+               new_unittest('taylor_undrained_slope', test_taylor), &
+               new_unittest('lower_bound', test_lower_bound), &
+               new_unittest('unstable_before_reduction', test_unstable), &
+               new_unittest('bad_decks', test_bad_decks)]
+   end subroutine collect_safety
+
+   !> Runs deck `name`; the factor found (kind SAFETY_FACTOR, exit 0) in `f`.
+   subroutine run_factor(name, f, error)
+      character(len=*), intent(in) :: name
+      real(wp), intent(out) :: f
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: code
+      call make_directories(OUT)
+      code = run_deck(DATA//name//'.inp', OUT//name//'.h5', .true., model, problem)
+      f = problem%safety%factor
+      call check(error, code == 0 .and. problem%safety%kind == SAFETY_FACTOR, name// &
+         ': a factor is found (exit '//itoa(code)//', kind '//itoa(problem%safety%kind)//')')
+      if (allocated(error)) return
+      ! the resolution is the last Msf step, RESOLUTION of the decks
+      call check(error, problem%safety%resolution <= 0.005_wp*(1.0_wp + 1.0e-9_wp), name// &
+         ': resolution '//g6(problem%safety%resolution))
+   end subroutine run_factor
+
+   !> R = c L + N tan(phi) = 5 x 2 + 200 x 0.3 = 70, T = 30: the joint alone fails, at
+   !> 7/3. 1 %: the resolution (0.002) and the penalty joint's exact return leave less.
+   subroutine test_block(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f
+      call run_factor('block', f, error)
+      if (allocated(error)) return
+      call check_close(error, f, 70.0_wp/30.0_wp, 0.01_wp, 'block on a joint: R / T')
+   end subroutine test_block
+
+   !> beta = 20, phi = psi = 35, c = 0: associated flow in the simple shear of the infinite
+   !> slope gives the strength c + sigma_n tan(phi) on planes parallel to it (Davis 1968), so
+   !> F = tan(phi) / tan(beta) = 1.9238. 2 %: the resolution and the tolerance of equilibrium.
+   subroutine test_infinite_dry(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f
+      call run_factor('infinite_slope_dry', f, error)
+      if (allocated(error)) return
+      call check_close(error, f, tan(35.0_wp*DEG)/tan(20.0_wp*DEG), 0.02_wp, &
+         'infinite slope, dry, cohesionless: tan(phi) / tan(beta)')
+   end subroutine test_infinite_dry
+
+   !> beta = 25, phi = psi = 30, c = 10, gamma = 20, H = 5: the closed form is lowest at the
+   !> base, F = (c + gamma H cos^2 tan(phi)) / (gamma H sin cos) = 1.4992. 3 %: the lowest
+   !> Gauss points are 0.1 m above the base (F = 1.511 there) and the resolution.
+   subroutine test_infinite_c(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f, b, p, fc
+      call run_factor('infinite_slope_c', f, error)
+      if (allocated(error)) return
+      b = 25.0_wp*DEG
+      p = 30.0_wp*DEG
+      fc = (10.0_wp + 100.0_wp*cos(b)**2*tan(p))/(100.0_wp*sin(b)*cos(b))
+      call check_close(error, f, fc, 0.03_wp, 'infinite slope with cohesion: closed form')
+   end subroutine test_infinite_c
+
+   !> Weightless Tresca soil, c = 10, flexible strip of half-width 1 under q = 25: the
+   !> collapse pressure is proportional to c, so Msf = (2 + pi) c / q = 2.0566 exactly in
+   !> theory. 2 %: the mesh's own collapse pressure (196 T6: +1.8 % for the rigid footing,
+   !> test_massif_plasticity_fe) and the resolution.
+   subroutine test_footing(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f
+      call run_factor('footing_safety', f, error)
+      if (allocated(error)) return
+      call check_close(error, f, (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, &
+         'Prandtl footing: Msf = q_ult / q')
+   end subroutine test_footing
+
+   !> phi = 0, beta = 60, H = 10, gamma = 20, c = 50, firm base at the toe: Taylor (1948)
+   !> stability number 0.191 (toe circle), F = c / (0.191 gamma H) = 1.309. 5 %: the chart
+   !> is a circular-surface limit equilibrium (an upper bound of the mechanism) read to three
+   !> digits; the finite elements' is a continuum mechanism on a Q8R mesh.
+   subroutine test_taylor(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f
+      call run_factor('taylor_slope', f, error)
+      if (allocated(error)) return
+      call check_close(error, f, 50.0_wp/(0.191_wp*20.0_wp*10.0_wp), 0.05_wp, &
+         'undrained slope against Taylor''s chart')
+   end subroutine test_taylor
+
+   !> MAX_INCREMENTS=3: the run stops (exit 3, status stopped) with a lower bound below R / T.
+   subroutine test_lower_bound(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: code
+      call make_directories(OUT)
+      code = run_deck(DATA//'block_budget.inp', OUT//'block_budget.h5', .true., model, problem)
+      call check(error, code == 3 .and. problem%safety%kind == SAFETY_LOWER_BOUND, &
+         'a budget too small: lower bound, exit 3 (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check(error, problem%safety%factor > 1.0_wp .and. &
+         problem%safety%factor < 70.0_wp/30.0_wp, 'the lower bound '// &
+         g6(problem%safety%factor)//' lies between 1 and R / T')
+   end subroutine test_lower_bound
+
+   !> Pushed by 90 > R = 70: the push step fails, the safety step never starts: exit 3,
+   !> "unstable before reduction", no factor.
+   subroutine test_unstable(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: code
+      call make_directories(OUT)
+      code = run_deck(DATA//'block_unstable.inp', OUT//'block_unstable.h5', .true., model, &
+         problem)
+      call check(error, code == 3 .and. problem%safety%kind == SAFETY_UNSTABLE .and. &
+         problem%safety%factor == 0.0_wp, 'unstable before reduction, no factor, exit 3 '// &
+         '(exit '//itoa(code)//', kind '//itoa(problem%safety%kind)//')')
+   end subroutine test_unstable
+
+   !> A safety step first, *REDUCE of an elastic material: refused with file:line, exit 2,
+   !> no results file.
+   subroutine test_bad_decks(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(error_t), allocatable :: e
+      character(len=*), parameter :: names(2) = [character(len=18) :: 'bad_safety_first', &
+         'bad_reduce_elastic']
+      character(len=*), parameter :: expect(2) = [character(len=40) :: 'is the first step', &
+         "material 'soil' has no strength"]
+      character(len=*), parameter :: marker(2) = [character(len=40) :: &
+         '*STEP, NAME=safety, CONTROL=SAFETY', 'friction, soil']
+      character(len=:), allocatable :: deck
+      integer :: k, code
+      logical :: exists
+      call make_directories(OUT)
+      do k = 1, size(names)
+         deck = DATA//trim(names(k))//'.inp'
+         call read_deck(deck, model, e)
+         call check(error, allocated(e), trim(names(k))//' is refused')
+         if (allocated(error)) return
+         call check(error, index(e%text(), deck//':'//itoa(line_of(deck, trim(marker(k))))) &
+            > 0 .and. index(e%text(), trim(expect(k))) > 0, trim(names(k))//': '//e%text())
+         if (allocated(error)) return
+         deallocate (e)
+         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
+         inquire (file=OUT//'bad.h5', exist=exists)
+         call check(error, code == 2 .and. .not. exists, trim(names(k))//': exit '//itoa(code))
+         if (allocated(error)) return
+      end do
+   end subroutine test_bad_decks
+
+   !> Number of the first line of `path` that starts with `text`.
+   integer function line_of(path, text) result(n)
+      character(len=*), intent(in) :: path, text
+      character(len=256) :: buf
+      integer :: u, i, ios
+      n = 0
+      open (newunit=u, file=path, status='old', action='read')
+      i = 0
+      do
+         read (u, '(a)', iostat=ios) buf
+         if (ios /= 0) exit
+         i = i + 1
+         if (index(buf, text) == 1) then
+            n = i
+            exit
+         end if
+      end do
+      close (u)
+   end function line_of
+
+end module test_safety
