@@ -38,6 +38,7 @@ contains
       tests = [new_unittest('block_on_joint', test_block), &
                new_unittest('infinite_slope_dry', test_infinite_dry), &
                new_unittest('infinite_slope_cohesion', test_infinite_c), &
+               new_unittest('infinite_slope_non_associated', test_infinite_psi0), &
                new_unittest('prandtl_footing', test_footing), &
                new_unittest('taylor_undrained_slope', test_taylor), &
                new_unittest('lower_bound', test_lower_bound), &
@@ -85,6 +86,19 @@ contains
       call check_close(error, f, tan(35.0_wp*DEG)/tan(20.0_wp*DEG), 0.02_wp, &
          'infinite slope, dry, cohesionless: tan(phi) / tan(beta)')
    end subroutine test_infinite_dry
+
+   !> The same slope with psi = 0: the strength on planes parallel to it in simple shear is
+   !> sigma_n sin(phi) cos(psi) / (1 - sin(phi) sin(psi)) (Davis 1968), sigma_n sin(phi_r) here,
+   !> so the factor is tan(phi) / tan(asin(tan(beta))) = 1.7919, not tan(phi) / tan(beta).
+   !> 2 %: as above.
+   subroutine test_infinite_psi0(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f
+      call run_factor('infinite_slope_psi0', f, error)
+      if (allocated(error)) return
+      call check_close(error, f, tan(35.0_wp*DEG)/tan(asin(tan(20.0_wp*DEG))), 0.02_wp, &
+         'infinite slope, psi = 0: Davis''s strength in simple shear')
+   end subroutine test_infinite_psi0
 
    !> beta = 25, phi = psi = 30, c = 10, gamma = 20, H = 5: the closed form is lowest at the
    !> base, F = (c + gamma H cos^2 tan(phi)) / (gamma H sin cos) = 1.4992. 3 %: the lowest

@@ -187,6 +187,8 @@ def main():
     footing('footing_safety.inp', 25.0)
     infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
                    title='infinite slope beta 20, phi 35 (associated), c 0: F = tan phi / tan beta')
+    infinite_slope('infinite_slope_psi0.inp', 20, 35, 0, 0,
+                   title='infinite slope beta 20, phi 35, psi 0, c 0: sin(phi_r) = tan(beta)')
     infinite_slope('infinite_slope_c.inp', 25, 30, 30, 10,
                    title='infinite slope beta 25, phi 30 (associated), c 10, H 5')
 
