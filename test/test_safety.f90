@@ -1,4 +1,4 @@
-!> The safety step (strength reduction, doc/theory.md §12) against closed forms and charts, on
+!> The safety step (strength reduction, doc/theory.md, Factor of safety) against closed forms and charts, on
 !> the decks of test/data/safety (make_decks.py):
 !> - a block on a Mohr-Coulomb joint (c and tan(phi) reduced) pushed by T below its sliding
 !>   resistance R = c L + N tan(phi): factor R / T within 1 %;

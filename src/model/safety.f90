@@ -1,4 +1,4 @@
-!> The plan of a safety step (*STEP, CONTROL=SAFETY; doc/deck.md, Safety; doc/theory.md §12):
+!> The plan of a safety step (*STEP, CONTROL=SAFETY; doc/deck.md, Safety; doc/theory.md, Factor of safety):
 !> the strengths of the soils and Coulomb interface laws named by *REDUCE (all that have a
 !> c, tan(phi) strength when none is named) are divided by Msf, raised from 1 by Msf steps
 !> that follow the failure, until no equilibrium exists. Resolved to indices by the reader.

@@ -1,4 +1,4 @@
-!> The safety step (*STEP, CONTROL=SAFETY; doc/theory.md §12): strength reduction from the
+!> The safety step (*STEP, CONTROL=SAFETY; doc/theory.md, Factor of safety): strength reduction from the
 !> state the step before converged to. The loads keep their factors; the strengths c and
 !> tan(phi) of the materials and interface laws of the plan (pecplas_model_safety) are those
 !> of the deck divided by Msf, with psi_r = min(psi, phi_r) (reduced_strength of each type).

@@ -98,7 +98,7 @@ contains
       end subroutine bad
    end subroutine read_soil_params
 
-   !> Strength reduction by msf (doc/theory.md §12): c / msf, tan(phi) / msf, and the
+   !> Strength reduction by msf (doc/theory.md, Factor of safety): c / msf, tan(phi) / msf, and the
    !> dilatancy angle kept unless the reduced friction angle falls below it, where it follows
    !> it (psi_r = min(psi, phi_r), as PLAXIS does).
    pure function reduce_soil(soil, msf) result(r)

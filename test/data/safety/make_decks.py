@@ -129,6 +129,43 @@ def slope_mesh(height, beta, crest, nx, ny, foundation=0.0, nf=0, right=0.0, nr=
     return nodes, elements, left, far, base
 
 
+def example_slope(path):
+    """input/examples/slope_safety.inp: Griffiths & Lane's (1999) homogeneous 2:1 slope on a
+    firm base at the toe: H = 10, gamma = 20, c' = 10 (c' / gamma H = 0.05), phi' = 20,
+    psi = 0, drained (no water table); Bishop and Morgenstern's charts give F = 1.38."""
+    beta = math.degrees(math.atan(0.5))
+    nodes, elements, left, far, base = slope_mesh(10.0, beta, 12.0, 20, 8)
+    crest = [k for k, (x, y) in nodes.items() if abs(y - 10.0) < 1e-9 and abs(x - 12.0) < 1e-9]
+    lines = ['** Example: factor of safety of a simple drained slope by strength reduction',
+             '** (doc/deck.md, Safety; doc/validation.md, Safety factor). Griffiths & Lane (1999),',
+             "** Geotechnique 49(3), fig. 4: a 2:1 slope, H = 10 m, on a firm base at the toe (D = 1),",
+             "** c' = 10 kPa, phi' = 20 deg, psi = 0, gamma = 20 kN/m3 (c'/(gamma H) = 0.05): Bishop",
+             "** and Morgenstern's charts F = 1.38. Written by test/data/safety/make_decks.py.",
+             '** Run: make run DECK=input/examples/slope_safety.inp; picture:',
+             '**   cd tools && python3 -m pecplas_py.plots.plot_safety ../output/slope_safety.h5',
+             '*TITLE', 'drained 2:1 slope, H 10, c 10, phi 20: factor of safety',
+             '*UNITS', 'kN, m, kPa', '*ANALYSIS, TYPE=PLANE_STRAIN', '*NODES']
+    lines += [f'{k}, {x:.10g}, {y:.10g}' for k, (x, y) in sorted(nodes.items())]
+    lines.append('*ELEMENTS, TYPE=Q8, SET=soil')
+    lines += [f'{e + 1}, ' + ', '.join(str(n) for n in conn) for e, conn in enumerate(elements)]
+    lines += ['*MATERIAL, NAME=soil, TYPE=MOHR_COULOMB',
+              'E = 1e5, NU = 0.3, GAMMA = 20', 'C = 10, PHI = 20, PSI = 0',
+              '*SECTION, SET=soil, MATERIAL=soil, ELEMENT=Q8R',
+              '*NSET, NAME=left'] + [', '.join(map(str, left[i:i + 10])) for i in range(0, len(left), 10)]
+    lines += ['*NSET, NAME=base'] + [', '.join(map(str, base[i:i + 10])) for i in range(0, len(base), 10)]
+    lines += ['*BOUNDARY', 'left, X', 'base, XY',
+              '*LOAD, NAME=weight, TYPE=GRAVITY', 'soil',
+              '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-5',
+              '*OUTPUT, STRESSES=NO, STRAINS=NO',
+              '** gravity loading: the slope under its weight',
+              '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1',
+              '** strength reduction from that state: c and tan(phi) divided by Msf until no',
+              '** equilibrium exists; the curve follows the crest edge',
+              f'*STEP, NAME=safety, CONTROL=SAFETY, MSF_STEP=0.1, RESOLUTION=0.005, NODE={crest[0]}, DOF=X']
+    with open(path, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
 def taylor_slope(path, c=50.0, gamma=20.0, height=10.0, beta=60.0, steps=None):
     """An undrained (phi = 0) slope of angle beta on a firm base at the toe (Taylor's depth
     factor D = 1): Taylor's chart gives c / (gamma H F) = 0.191 for beta = 60 degrees (a
@@ -184,6 +221,7 @@ def block_variants():
 def main():
     block_variants()
     taylor_slope('taylor_slope.inp')
+    example_slope('../../../input/examples/slope_safety.inp')
     footing('footing_safety.inp', 25.0)
     infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
                    title='infinite slope beta 20, phi 35 (associated), c 0: F = tan phi / tan beta')
