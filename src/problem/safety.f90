@@ -27,6 +27,8 @@ module pecplas_problem_safety
       real(wp), allocatable :: msf(:), displacement(:)
       !> What the displacement of the curve is (node and dof, or the largest magnitude).
       character(len=:), allocatable :: displacement_of
+      !> The materials and laws reduced and those kept ('name, name', '' for none).
+      character(len=:), allocatable :: reduced, kept
       !> The incremental displacements of the last increments (2, nnode): the mechanism.
       real(wp), allocatable :: mechanism(:, :)
       !> Increments converged and wall time of the step [s].

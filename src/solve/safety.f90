@@ -92,8 +92,10 @@ contains
          dm = plan%msf_step
          rate_prev = -1.0_wp
          inc = 0
+         call plan_names(model, plan, res%reduced, res%kept)
          if (.not. run%quiet) write (*, '(a)') ' safety step '//itoa(istep)//' ('// &
-            model%steps(istep)%name//'): strength reduction from Msf = 1'
+            model%steps(istep)%name//'): strength reduction from Msf = 1 of '//res%reduced// &
+            '; kept: '//res%kept
          do
             if (inc >= plan%max_increments) then
                res%kind = SAFETY_LOWER_BOUND
@@ -191,6 +193,8 @@ contains
       problem%safety%msf = [real(wp) ::]
       problem%safety%displacement = [real(wp) ::]
       problem%safety%displacement_of = curve_name(model, model%steps(istep)%safety)
+      call plan_names(model, model%steps(istep)%safety, problem%safety%reduced, &
+         problem%safety%kept)
       message = 'unstable before reduction: '//message//'; the safety step '//itoa(istep)// &
          ' ('//model%steps(istep)%name//') was not started (no factor of safety)'
       call write_safety(results, problem%safety, error)
@@ -210,6 +214,8 @@ contains
       rec%displacement_of = res%displacement_of
       if (allocated(res%mechanism)) rec%mechanism = res%mechanism
       rec%increments = res%increments
+      if (allocated(res%reduced)) rec%reduced = res%reduced
+      if (allocated(res%kept)) rec%kept = res%kept
       rec%wall = res%wall
       call results%write_safety(rec, error)
    end subroutine write_safety
@@ -234,6 +240,36 @@ contains
          call move_alloc(l, work%laws(k)%law)
       end do
    end subroutine reduce_model
+
+   !> 'name, name' of the materials and laws the plan reduces, and of the others ('none').
+   subroutine plan_names(model, plan, reduced, kept)
+      type(model_t), intent(in) :: model
+      type(safety_plan_t), intent(in) :: plan
+      character(len=:), allocatable, intent(out) :: reduced, kept
+      integer :: k
+      reduced = ''
+      kept = ''
+      do k = 1, size(plan%materials)
+         call add(plan%materials(k), 'material '//model%materials(k)%m%name)
+      end do
+      do k = 1, size(plan%laws)
+         call add(plan%laws(k), 'law '//model%laws(k)%law%name)
+      end do
+      if (len(reduced) == 0) reduced = 'none'
+      if (len(kept) == 0) kept = 'none'
+   contains
+      subroutine add(yes, name)
+         logical, intent(in) :: yes
+         character(len=*), intent(in) :: name
+         if (yes) then
+            if (len(reduced) > 0) reduced = reduced//', '
+            reduced = reduced//name
+         else
+            if (len(kept) > 0) kept = kept//', '
+            kept = kept//name
+         end if
+      end subroutine add
+   end subroutine plan_names
 
    !> Largest nodal displacement magnitude between two fields.
    pure real(wp) function max_move(a, b) result(d)

@@ -1,6 +1,7 @@
 !> /safety of the results file (doc/results.md, Safety factor): what a safety step (strength
 !> reduction) found. Attributes kind ('factor', 'lower bound', 'unstable before reduction'),
-!> factor, resolution, increments, wall_time, displacement_of, note; datasets msf and
+!> factor, resolution, increments, wall_time, displacement_of, note, reduced and kept (the
+!> materials and laws whose strength was divided by Msf, and the others); datasets msf and
 !> displacement (the curve, one value per converged increment, Msf = 1 first), mechanism
 !> (2, nnode) and mechanism3 (3, nnode, z = 0, for ParaView): the incremental displacements
 !> of the last increments.
@@ -24,6 +25,8 @@ module pecplas_io_results_safety
       real(wp) :: factor = 0.0_wp, resolution = 0.0_wp, wall = 0.0_wp
       integer :: increments = 0
       real(wp), allocatable :: msf(:), displacement(:), mechanism(:, :)
+      !> Names of the materials and laws whose strength was reduced, and of those kept.
+      character(len=:), allocatable :: reduced, kept
    end type safety_record_t
 
 contains
@@ -43,6 +46,9 @@ contains
       if (.not. allocated(error)) call h5_attr(g, 'wall_time', rec%wall, error)
       if (.not. allocated(error)) call h5_attr(g, 'displacement_of', rec%displacement_of, error)
       if (.not. allocated(error)) call h5_attr(g, 'note', SAFETY_NOTE, error)
+      if (allocated(rec%reduced) .and. .not. allocated(error)) &
+         call h5_attr(g, 'reduced', rec%reduced, error)
+      if (allocated(rec%kept) .and. .not. allocated(error)) call h5_attr(g, 'kept', rec%kept, error)
       if (.not. allocated(error)) call h5_write(g, 'msf', rec%msf, error)
       if (.not. allocated(error)) call h5_write(g, 'displacement', rec%displacement, error)
       if (allocated(rec%mechanism) .and. .not. allocated(error)) then
