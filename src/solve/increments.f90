@@ -15,7 +15,8 @@
 !>               probe's start included), never a load the path fell to;
 !>   diverged    no equilibrium was found, with the reason of each method and the last
 !>               converged state (increment, load factors);
-!>   stopped     an arc-length step used its MAX_INCREMENTS before its target;
+!>   stopped     an arc-length step used its MAX_INCREMENTS before its target, a safety step
+!>               (pecplas_solve_safety) its MAX_INCREMENTS before failure (a lower bound);
 !>   interrupted a termination signal or --stop-after-increments: the run stopped after a
 !>               converged increment and goes on with --restart.
 module pecplas_solve_increments
