@@ -24,6 +24,7 @@ module test_safety
    use pecplas_problem_safety, only: SAFETY_FACTOR, SAFETY_LOWER_BOUND, SAFETY_UNSTABLE
    use pecplas_base_strings, only: itoa, g6
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use pecplas_io_results_reader, only: results_reader_t
    implicit none (type, external)
    private
    public :: collect_safety
@@ -41,6 +42,7 @@ contains
                new_unittest('infinite_slope_non_associated', test_infinite_psi0), &
                new_unittest('prandtl_footing', test_footing), &
                new_unittest('taylor_undrained_slope', test_taylor), &
+               new_unittest('results_file', test_results_file), &
                new_unittest('lower_bound', test_lower_bound), &
                new_unittest('unstable_before_reduction', test_unstable), &
                new_unittest('bad_decks', test_bad_decks)]
@@ -139,6 +141,51 @@ contains
       call check_close(error, f, 50.0_wp/(0.191_wp*20.0_wp*10.0_wp), 0.05_wp, &
          'undrained slope against Taylor''s chart')
    end subroutine test_taylor
+
+   !> The block's results file: /safety with kind, factor and resolution as found, the note
+   !> that the displacements are not physical, a curve from (1, 0) rising in Msf to the
+   !> factor, the mechanism (the pad slides along x: its top node moves, the base does not),
+   !> and the XDMF sidecar showing it.
+   subroutine test_results_file(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(results_reader_t) :: r
+      character(len=:), allocatable :: kind, note, line
+      real(wp), allocatable :: msf(:), disp(:), mech(:, :)
+      real(wp) :: f
+      integer :: u, ios, hits
+      character(len=512) :: buf
+      call run_factor('block', f, error)
+      if (allocated(error)) return
+      call r%open(OUT//'block.h5', error)
+      if (allocated(error)) return
+      call r%attribute('/safety', 'kind', kind, error)
+      if (.not. allocated(error)) call r%attribute('/safety', 'note', note, error)
+      if (.not. allocated(error)) call r%dataset('/safety/msf', msf, error)
+      if (.not. allocated(error)) call r%dataset('/safety/displacement', disp, error)
+      if (.not. allocated(error)) call r%dataset('/safety/mechanism', mech, error)
+      if (allocated(error)) return
+      call check(error, kind == 'factor' .and. index(note, 'not physical') > 0, &
+         '/safety kind '//kind//', note '//note)
+      if (allocated(error)) return
+      call check(error, msf(1) == 1.0_wp .and. disp(1) == 0.0_wp .and. &
+         all(msf(2:) > msf(:size(msf) - 1)) .and. msf(size(msf)) == f, 'the curve rises '// &
+         'from (1, 0) to the factor '//g6(f))
+      if (allocated(error)) return
+      ! nodes 1-3 are the fixed base (rows 1-3), the pad's top node 11 moves along +x
+      call check(error, all(mech(:, 1:3) == 0.0_wp) .and. maxval(mech(1, :)) > 0.0_wp, &
+         'the mechanism: the pad slides, the base is fixed')
+      if (allocated(error)) return
+      hits = 0
+      open (newunit=u, file=OUT//'block.xmf', status='old', action='read')
+      do
+         read (u, '(a)', iostat=ios) buf
+         if (ios /= 0) exit
+         line = trim(buf)
+         if (index(line, '/safety/mechanism3') > 0) hits = hits + 1
+      end do
+      close (u)
+      call check(error, hits >= 1, 'the XDMF sidecar shows the mechanism')
+   end subroutine test_results_file
 
    !> MAX_INCREMENTS=3: the run stops (exit 3, status stopped) with a lower bound below R / T.
    subroutine test_lower_bound(error)
