@@ -25,6 +25,7 @@ module test_safety
    use pecplas_base_strings, only: itoa, g6
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use pecplas_io_results_reader, only: results_reader_t
+   use doc_report, only: report
    implicit none (type, external)
    private
    public :: collect_safety
@@ -74,6 +75,7 @@ contains
       real(wp) :: f
       call run_factor('block', f, error)
       if (allocated(error)) return
+      call report('safety/block', [f, 70.0_wp/30.0_wp])
       call check_close(error, f, 70.0_wp/30.0_wp, 0.01_wp, 'block on a joint: R / T')
    end subroutine test_block
 
@@ -85,6 +87,7 @@ contains
       real(wp) :: f
       call run_factor('infinite_slope_dry', f, error)
       if (allocated(error)) return
+      call report('safety/infinite_slope_dry', [f, tan(35.0_wp*DEG)/tan(20.0_wp*DEG)])
       call check_close(error, f, tan(35.0_wp*DEG)/tan(20.0_wp*DEG), 0.02_wp, &
          'infinite slope, dry, cohesionless: tan(phi) / tan(beta)')
    end subroutine test_infinite_dry
@@ -98,6 +101,8 @@ contains
       real(wp) :: f
       call run_factor('infinite_slope_psi0', f, error)
       if (allocated(error)) return
+      call report('safety/infinite_slope_psi0', [f, &
+         tan(35.0_wp*DEG)/tan(asin(tan(20.0_wp*DEG)))])
       call check_close(error, f, tan(35.0_wp*DEG)/tan(asin(tan(20.0_wp*DEG))), 0.02_wp, &
          'infinite slope, psi = 0: Davis''s strength in simple shear')
    end subroutine test_infinite_psi0
@@ -113,6 +118,7 @@ contains
       b = 25.0_wp*DEG
       p = 30.0_wp*DEG
       fc = (10.0_wp + 100.0_wp*cos(b)**2*tan(p))/(100.0_wp*sin(b)*cos(b))
+      call report('safety/infinite_slope_c', [f, fc])
       call check_close(error, f, fc, 0.03_wp, 'infinite slope with cohesion: closed form')
    end subroutine test_infinite_c
 
@@ -125,6 +131,7 @@ contains
       real(wp) :: f
       call run_factor('footing_safety', f, error)
       if (allocated(error)) return
+      call report('safety/footing', [f, (2.0_wp + PI)*10.0_wp/25.0_wp])
       call check_close(error, f, (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, &
          'Prandtl footing: Msf = q_ult / q')
    end subroutine test_footing
@@ -138,6 +145,7 @@ contains
       real(wp) :: f
       call run_factor('taylor_slope', f, error)
       if (allocated(error)) return
+      call report('safety/taylor', [f, 50.0_wp/(0.191_wp*20.0_wp*10.0_wp)])
       call check_close(error, f, 50.0_wp/(0.191_wp*20.0_wp*10.0_wp), 0.05_wp, &
          'undrained slope against Taylor''s chart')
    end subroutine test_taylor
