@@ -26,6 +26,13 @@ module test_safety
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use pecplas_io_results_reader, only: results_reader_t
    use doc_report, only: report
+   use pecplas_massif_materials_type, only: material_t
+   use pecplas_massif_materials_mohr_coulomb, only: mohr_coulomb_t
+   use pecplas_massif_materials_drucker_prager, only: drucker_prager_t, drucker_prager_constants
+   use pecplas_massif_materials_elastic, only: elastic_t
+   use pecplas_joints_laws_type, only: interface_law_t
+   use pecplas_joints_laws_mohr_coulomb, only: mohr_coulomb_law_t
+   use pecplas_joints_laws_modjoin, only: modjoin_law_t
    implicit none (type, external)
    private
    public :: collect_safety
@@ -37,17 +44,93 @@ contains
 
    subroutine collect_safety(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
-      tests = [new_unittest('block_on_joint', test_block), &
+      tests = [new_unittest('reduced_strengths', test_reduced), &
+               new_unittest('block_on_joint', test_block), &
                new_unittest('infinite_slope_dry', test_infinite_dry), &
                new_unittest('infinite_slope_cohesion', test_infinite_c), &
                new_unittest('infinite_slope_non_associated', test_infinite_psi0), &
                new_unittest('prandtl_footing', test_footing), &
+               new_unittest('prandtl_footing_drucker_prager', test_footing_dp), &
                new_unittest('taylor_undrained_slope', test_taylor), &
                new_unittest('results_file', test_results_file), &
                new_unittest('lower_bound', test_lower_bound), &
                new_unittest('unstable_before_reduction', test_unstable), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_safety
+
+   !> The reduction of each type: Mohr-Coulomb soil c / M, tan(phi) / M, psi kept while below
+   !> phi_r and equal to it after; Drucker-Prager the same on its Mohr-Coulomb parameters and
+   !> its cone fitted again; the Coulomb joint law the same on c, mu_f, mu_g; an elastic
+   !> material and MODJOIN have none. Tolerance 1e-14: a few roundings of tan and atan.
+   subroutine test_reduced(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(mohr_coulomb_t) :: mc
+      type(drucker_prager_t) :: dp
+      type(elastic_t) :: el
+      type(mohr_coulomb_law_t) :: law
+      type(modjoin_law_t) :: mj
+      class(material_t), allocatable :: r
+      class(interface_law_t), allocatable :: rl
+      real(wp) :: eta, xi, etabar
+      mc%soil%cohesion = 10.0_wp
+      mc%soil%phi = 30.0_wp*DEG
+      mc%soil%psi = 10.0_wp*DEG
+      call mc%reduced_strength(1.5_wp, r)
+      select type (r)
+      type is (mohr_coulomb_t)
+         call check(error, abs(r%soil%cohesion - 10.0_wp/1.5_wp) <= 1.0e-14_wp*10.0_wp .and. &
+            abs(tan(r%soil%phi) - tan(30.0_wp*DEG)/1.5_wp) <= 1.0e-14_wp .and. &
+            r%soil%psi == mc%soil%psi, 'Mohr-Coulomb, M = 1.5: c, tan(phi) divided, psi kept')
+      class default
+         call check(error, .false., 'Mohr-Coulomb reduces to a Mohr-Coulomb soil')
+      end select
+      if (allocated(error)) return
+      call mc%reduced_strength(4.0_wp, r)
+      select type (r)
+      type is (mohr_coulomb_t)
+         call check(error, r%soil%psi == r%soil%phi .and. r%soil%phi < mc%soil%psi, &
+            'Mohr-Coulomb, M = 4: phi_r < psi, so psi_r = phi_r')
+      end select
+      if (allocated(error)) return
+      dp%soil = mc%soil
+      dp%match = 3
+      call dp%reduced_strength(2.0_wp, r)
+      select type (r)
+      type is (drucker_prager_t)
+         call drucker_prager_constants(3, atan(tan(30.0_wp*DEG)/2.0_wp), 10.0_wp*DEG, eta, xi, &
+            etabar)
+         call check(error, abs(r%soil%cohesion - 5.0_wp) <= 1.0e-14_wp*5.0_wp .and. &
+            abs(r%eta - eta) <= 1.0e-14_wp .and. abs(r%xi - xi) <= 1.0e-14_wp .and. &
+            abs(r%etabar - etabar) <= 1.0e-14_wp, 'Drucker-Prager: the cone of the reduced '// &
+            'Mohr-Coulomb parameters')
+      class default
+         call check(error, .false., 'Drucker-Prager reduces to a Drucker-Prager soil')
+      end select
+      if (allocated(error)) return
+      call el%reduced_strength(2.0_wp, r)
+      call check(error, .not. allocated(r), 'an elastic material has no strength to reduce')
+      if (allocated(error)) return
+      law%c = 6.0_wp
+      law%mu_f = 0.6_wp
+      law%mu_g = 0.2_wp
+      call law%reduced_strength(2.0_wp, rl)
+      select type (rl)
+      type is (mohr_coulomb_law_t)
+         call check(error, rl%c == 3.0_wp .and. rl%mu_f == 0.3_wp .and. rl%mu_g == 0.2_wp, &
+            'Mohr-Coulomb joint law, M = 2: c and mu_f halved, mu_g kept (below mu_f / 2)')
+      class default
+         call check(error, .false., 'the joint law reduces to its own type')
+      end select
+      if (allocated(error)) return
+      call law%reduced_strength(4.0_wp, rl)
+      select type (rl)
+      class is (mohr_coulomb_law_t)
+         call check(error, rl%mu_g == rl%mu_f, 'joint law, M = 4: mu_g follows mu_f / 4')
+      end select
+      if (allocated(error)) return
+      call mj%reduced_strength(2.0_wp, rl)
+      call check(error, .not. allocated(rl), 'MODJOIN is not reduced')
+   end subroutine test_reduced
 
    !> Runs deck `name`; the factor found (kind SAFETY_FACTOR, exit 0) in `f`.
    subroutine run_factor(name, f, error)
@@ -135,6 +218,19 @@ contains
       call check_close(error, f, (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, &
          'Prandtl footing: Msf = q_ult / q')
    end subroutine test_footing
+
+   !> The same footing with Drucker-Prager soil fitted to the plane-strain Mohr-Coulomb limit
+   !> (MATCH = 3): for phi = 0 its plane-strain limit state is Tresca's, so the factor is the
+   !> same (2 %, as above).
+   subroutine test_footing_dp(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f
+      call run_factor('footing_safety_dp', f, error)
+      if (allocated(error)) return
+      call report('safety/footing_dp', [f, (2.0_wp + PI)*10.0_wp/25.0_wp])
+      call check_close(error, f, (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, &
+         'Prandtl footing, Drucker-Prager: Msf = q_ult / q')
+   end subroutine test_footing_dp
 
    !> phi = 0, beta = 60, H = 10, gamma = 20, c = 50, firm base at the toe: Taylor (1948)
    !> stability number 0.191 (toe circle), F = c / (0.191 gamma H) = 1.309. 5 %: the chart

@@ -40,7 +40,7 @@ def infinite_slope(path, beta, phi, psi, c, gamma=20.0, height=5.0, nel=10, nu=0
         f.write('\n'.join(lines) + '\n')
 
 
-def footing(path, q, safety=True):
+def footing(path, q, safety=True, dp=False):
     """The Prandtl footing of ../plasticity/footing_t6.inp (196 T6, Tresca c = 10, weightless)
     loaded by a uniform pressure q on the half-width b = 1 (a flexible smooth footing), then
     reduced (safety) or pushed to collapse by arc-length (safety=False)."""
@@ -60,6 +60,10 @@ def footing(path, q, safety=True):
     title = ('Prandtl footing, Tresca c = 10, pressure q = %g: Msf = (2 + pi) c / q' % q
              if safety else 'Prandtl footing, Tresca c = 10, pressure to collapse')
     keep = [l for l in keep if not l.startswith('smooth strip footing')]
+    if dp:
+        title += ', Drucker-Prager MATCH = 3'
+        keep = [l.replace('TYPE=MOHR_COULOMB', 'TYPE=DRUCKER_PRAGER') for l in keep]
+        keep = [l + ', MATCH = 3' if l.startswith('E = 1e4') else l for l in keep]
     lines = ['** ' + title + ' (written by make_decks.py from ../plasticity/footing_t6.inp)',
              '*TITLE', title] + keep
     lines += ['*BOUNDARY', 'axis, X', 'far, X', 'base, XY',
@@ -223,6 +227,7 @@ def main():
     taylor_slope('taylor_slope.inp')
     example_slope('../../../input/examples/slope_safety.inp')
     footing('footing_safety.inp', 25.0)
+    footing('footing_safety_dp.inp', 25.0, dp=True)
     infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
                    title='infinite slope beta 20, phi 35 (associated), c 0: F = tan phi / tan beta')
     infinite_slope('infinite_slope_psi0.inp', 20, 35, 0, 0,

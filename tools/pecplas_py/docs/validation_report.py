@@ -160,6 +160,7 @@ SAFETY_ROWS = [
     ("infinite_slope_c", "infinite slope β = 25°, φ = ψ = 30°, c = 10, H = 5",
      "(c + γH cos²β tan φ) / (γH sin β cos β)", "3 %"),
     ("footing", "Prandtl footing, Tresca c = 10, q = 25 (196 T6)", "(2 + π) c / q", "2 %"),
+    ("footing_dp", "the same, Drucker–Prager `MATCH = 3`", "(2 + π) c / q", "2 %"),
     ("taylor", "undrained slope β = 60°, H = 10, c = 50, γ = 20, D = 1 (128 Q8R)",
      "Taylor: c / (0.191 γ H)", "5 %"),
 ]
