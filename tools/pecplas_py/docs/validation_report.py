@@ -171,7 +171,7 @@ def safety_block(v):
             "|---|---|---|---|---|---|"]
     for key, case, ref, tol in SAFETY_ROWS:
         f, r = v[f"safety/{key}"]
-        rows.append(f"| {case} | {ref} | {r:.3f} | {f:.3f} | {100 * (f / r - 1):+.1f} % | {tol} |")
+        rows.append(f"| {case} | {ref} | {r:.3f} | {f:.3f} | {100 * (f / r - 1):+.2f} % | {tol} |")
     return "\n".join(rows)
 
 
