@@ -1,5 +1,5 @@
 !> The safety step (strength reduction, doc/theory.md, Factor of safety) against closed forms and charts, on
-!> the decks of test/data/safety (make_decks.py):
+!> the decks of test/data/safety (tools/pecplas_py/decks/make_safety_decks.py):
 !> - a block on a Mohr-Coulomb joint (c and tan(phi) reduced) pushed by T below its sliding
 !>   resistance R = c L + N tan(phi): factor R / T within 1 %;
 !> - an infinite slope (a periodic column, gravity inclined by beta), associated flow:

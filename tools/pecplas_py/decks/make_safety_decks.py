@@ -1,13 +1,81 @@
 #!/usr/bin/env python3
-"""Writes the safety-factor decks of test/data/safety (doc/validation.md, Safety factor).
+"""Writes the safety-factor decks of test/data/safety (doc/validation.md, Safety factor by
+strength reduction) and the example input/examples/slope_safety.inp:
+
+    python3 -m pecplas_py.decks.make_safety_decks [--out DIR] [--example FILE]
+
+(defaults: test/data/safety and input/examples/slope_safety.inp).
+
+block.inp: a pad on a Mohr-Coulomb joint pushed sideways below its sliding resistance, and its
+variants (a budget too small, a push above the resistance, two bad decks).
+footing_safety*.inp: Prandtl's footing of test/data/plasticity/footing_t6.inp under a pressure.
+taylor_slope.inp: an undrained 60-degree slope on a firm base at the toe (Taylor's chart).
 
 infinite_slope_*.inp: an infinite slope as a column one element wide, the slope turned
 horizontal and gravity inclined by beta (direction (sin beta, -cos beta)); the nodes of the
 two sides at each height are tied by Katona doublets (stick: C and TENSION huge), so that the
 column is periodic along the slope: u = u(y), the infinite slope exactly.
 """
+import argparse
 import math
+import os
 import sys
+from pathlib import Path
+
+from pecplas_py import ROOT
+
+BLOCK = """** Block on a Mohr-Coulomb joint (doc/validation.md, Safety factor): a pad pressed by
+** P = 100 on a width 2 (N = 200) onto a fixed block through Mohr-Coulomb joints with
+** c = 5, tan(PHI) = 0.3, pushed sideways by T = 3 x 10 = 30 on its top nodes. The sliding
+** resistance is R = c L + N tan(phi) = 10 + 60 = 70: the safety step must find R / T = 7/3.
+*TITLE
+block on a Mohr-Coulomb joint, strength reduction
+*NODES
+1, 0, 0
+2, 1, 0
+3, 2, 0
+4, 0, 1
+5, 1, 1
+6, 2, 1
+10, 0, 2
+11, 1, 2
+12, 2, 2
+*ELEMENTS, TYPE=Q4, SET=ground
+1, 1, 2, 5, 4
+2, 2, 3, 6, 5
+*ELEMENTS, TYPE=Q4, SET=pad
+3, 4, 5, 11, 10
+4, 5, 6, 12, 11
+*MATERIAL, NAME=soil
+E = 1e4, NU = 0.3
+*SECTION, SET=ground, MATERIAL=soil
+*SECTION, SET=pad, MATERIAL=soil
+*INTERFACE_LAW, NAME=friction, TYPE=MOHR_COULOMB
+KN = 1e5, KT = 1e5, PHI = 16.69924423399362, C = 5
+*EDGES, NAME=interface
+4, 5
+5, 6
+*JOINTS, TYPE=GOODMAN4, SET=contact, LAW=friction, EDGES=interface, SIDE=pad
+*NSET, NAME=base
+1, 2, 3
+*NSET, NAME=pad_top
+10, 11, 12
+*BOUNDARY
+base, XY
+*EDGES, NAME=top
+10, 11
+11, 12
+*LOAD, NAME=p, TYPE=PRESSURE
+top, 100
+*LOAD, NAME=push, TYPE=FORCE
+pad_top, X, 10
+*SOLVER, METHOD=NEWTON, TOLERANCE=1e-8, MAX_ITERATIONS=50, MAX_CUTS=4
+*STEP, NAME=press, INCREMENTS=1
+p, 1
+*STEP, NAME=push, INCREMENTS=2
+push, 1
+*STEP, NAME=safety, CONTROL=SAFETY, MSF_STEP=0.2, RESOLUTION=0.002, NODE=11, DOF=X
+"""
 
 
 def infinite_slope(path, beta, phi, psi, c, gamma=20.0, height=5.0, nel=10, nu=0.4,
@@ -44,7 +112,7 @@ def footing(path, q, safety=True, dp=False):
     """The Prandtl footing of ../plasticity/footing_t6.inp (196 T6, Tresca c = 10, weightless)
     loaded by a uniform pressure q on the half-width b = 1 (a flexible smooth footing), then
     reduced (safety) or pushed to collapse by arc-length (safety=False)."""
-    src = open('../plasticity/footing_t6.inp').read().splitlines()
+    src = (ROOT / 'test/data/plasticity/footing_t6.inp').read_text().splitlines()
     keep = []
     skip = False
     for line in src:
@@ -64,7 +132,7 @@ def footing(path, q, safety=True, dp=False):
         title += ', Drucker-Prager MATCH = 3'
         keep = [l.replace('TYPE=MOHR_COULOMB', 'TYPE=DRUCKER_PRAGER') for l in keep]
         keep = [l + ', MATCH = 3' if l.startswith('E = 1e4') else l for l in keep]
-    lines = ['** ' + title + ' (written by make_decks.py from ../plasticity/footing_t6.inp)',
+    lines = ['** ' + title + ' (written by make_safety_decks.py from ../plasticity/footing_t6.inp)',
              '*TITLE', title] + keep
     lines += ['*BOUNDARY', 'axis, X', 'far, X', 'base, XY',
               '*EDGES, NAME=footing_edge',
@@ -144,7 +212,7 @@ def example_slope(path):
              '** (doc/deck.md, Safety; doc/validation.md, Safety factor). Griffiths & Lane (1999),',
              "** Geotechnique 49(3), fig. 4: a 2:1 slope, H = 10 m, on a firm base at the toe (D = 1),",
              "** c' = 10 kPa, phi' = 20 deg, psi = 0, gamma = 20 kN/m3 (c'/(gamma H) = 0.05): Bishop",
-             "** and Morgenstern's charts F = 1.38. Written by test/data/safety/make_decks.py.",
+             "** and Morgenstern's charts F = 1.38. Written by pecplas_py.decks.make_safety_decks.",
              '** Run: make run DECK=input/examples/slope_safety.inp; picture:',
              '**   cd tools && python3 -m pecplas_py.plots.plot_safety ../output/slope_safety.h5',
              '*TITLE', 'drained 2:1 slope, H 10, c 10, phi 20: factor of safety',
@@ -176,7 +244,7 @@ def taylor_slope(path, c=50.0, gamma=20.0, height=10.0, beta=60.0, steps=None):
     toe circle)."""
     nodes, elements, left, far, base = slope_mesh(height, beta, 2 * height, 16, 8)
     title = f'undrained slope beta {beta:g}, H {height:g}, c {c:g}, gamma {gamma:g}, D = 1'
-    lines = ['** ' + title + ' (written by make_decks.py)', '*TITLE', title, '*NODES']
+    lines = ['** ' + title + ' (written by make_safety_decks.py)', '*TITLE', title, '*NODES']
     lines += [f'{k}, {x:.12g}, {y:.12g}' for k, (x, y) in sorted(nodes.items())]
     lines.append('*ELEMENTS, TYPE=Q8, SET=soil')
     lines += [f'{e + 1}, ' + ', '.join(str(n) for n in conn) for e, conn in enumerate(elements)]
@@ -200,7 +268,7 @@ def taylor_slope(path, c=50.0, gamma=20.0, height=10.0, beta=60.0, steps=None):
 def block_variants():
     """Variants of block.inp (written by hand): a budget too small (lower bound), a push
     above the resistance (unstable before reduction), and two bad decks."""
-    text = open('block.inp').read()
+    text = BLOCK
     safety = '*STEP, NAME=safety, CONTROL=SAFETY, MSF_STEP=0.2, RESOLUTION=0.002, NODE=11, DOF=X'
     variants = {
         'block_budget.inp': ('budget of 3 increments: the factor is a lower bound',
@@ -219,21 +287,39 @@ def block_variants():
             assert old in t, (name, old)
             t = t.replace(old, new)
         with open(name, 'w') as f:
-            f.write('** ' + title + ' (written by make_decks.py from block.inp)\n' + t)
+            f.write('** ' + title + ' (written by make_safety_decks.py from block.inp)\n' + t)
 
 
-def main():
-    block_variants()
-    taylor_slope('taylor_slope.inp')
-    example_slope('../../../input/examples/slope_safety.inp')
-    footing('footing_safety.inp', 25.0)
-    footing('footing_safety_dp.inp', 25.0, dp=True)
-    infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
-                   title='infinite slope beta 20, phi 35 (associated), c 0: F = tan phi / tan beta')
-    infinite_slope('infinite_slope_psi0.inp', 20, 35, 0, 0,
-                   title='infinite slope beta 20, phi 35, psi 0, c 0: sin(phi_r) = tan(beta)')
-    infinite_slope('infinite_slope_c.inp', 25, 30, 30, 10,
-                   title='infinite slope beta 25, phi 30 (associated), c 10, H 5')
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--out", help="directory of the test decks (default test/data/safety)")
+    p.add_argument("--example", help="the example deck (default "
+                   "input/examples/slope_safety.inp)")
+    a = p.parse_args(argv)
+    if a.out is None and a.example is None:
+        a.out = str(ROOT / "test/data/safety")
+        a.example = str(ROOT / "input/examples/slope_safety.inp")
+    here = os.getcwd()
+    if a.example:
+        example_slope(str(Path(a.example).resolve()))
+    if a.out:
+        Path(a.out).mkdir(parents=True, exist_ok=True)
+        os.chdir(a.out)
+        with open('block.inp', 'w') as f:
+            f.write(BLOCK)
+        block_variants()
+        infinite_slope('infinite_slope_dry.inp', 20, 35, 35, 0,
+                       title='infinite slope beta 20, phi 35 (associated), c 0: '
+                       'F = tan phi / tan beta')
+        infinite_slope('infinite_slope_psi0.inp', 20, 35, 0, 0,
+                       title='infinite slope beta 20, phi 35, psi 0, c 0: sin(phi_r) = tan(beta)')
+        infinite_slope('infinite_slope_c.inp', 25, 30, 30, 10,
+                       title='infinite slope beta 25, phi 30 (associated), c 10, H 5')
+        footing('footing_safety.inp', 25.0)
+        footing('footing_safety_dp.inp', 25.0, dp=True)
+        taylor_slope('taylor_slope.inp')
+        os.chdir(here)
+    return 0
 
 
 if __name__ == '__main__':
