@@ -1,7 +1,7 @@
 """Decks of slopes for the limit-equilibrium tool's tests (test_slope.py): a structured Q4
 mesh under a ground surface given as a polyline (x increasing), from a flat base; columns of
 elements between the x of the surface points (each segment cut into `per` columns), `rows`
-rows of elements from the base to the surface. `layers` (level, material) splits the soil:
+rows of elements from the base to the surface (T3 where a layer thins out). `layers` (level, material) splits the soil:
 an element whose centre lies below a level takes that layer's material (levels from the
 bottom up; the last layer reaches the surface); without layers, one material `soil`."""
 import numpy as np
@@ -23,12 +23,15 @@ def slope_deck(surface, base, per=4, rows=8, materials=None, layers=None, steps=
         if layers:
             col = [base]
             for lo, hi in zip(levels, levels[1:] + [ys_top[i]]):
-                hi = max(hi, lo)
+                lo, hi = min(lo, ys_top[i]), min(hi, ys_top[i])
                 col += list(np.linspace(lo, hi, rows + 1)[1:])
             col = np.array(col)
         else:
             col = np.linspace(base, ys_top[i], rows + 1)
         for j, y in enumerate(col):
+            if j and abs(y - col[j - 1]) < 1e-12:
+                ids[(i, j)] = ids[(i, j - 1)]      # a layer thinned out: one node
+                continue
             nodes.append((len(nodes) + 1, x, y))
             ids[(i, j)] = len(nodes)
     nrow = (rows * len(layers)) if layers else rows
@@ -43,18 +46,22 @@ def slope_deck(surface, base, per=4, rows=8, materials=None, layers=None, steps=
             if area <= 1e-12:
                 continue        # a layer that thins out to nothing
             name = "soil" if not layers else layers[j // rows][1]
-            sets.setdefault(name, []).append(q)
+            corners = list(dict.fromkeys(q))
+            if len(corners) == 3:
+                sets.setdefault((f"{name}_t3", "T3", name), []).append(corners)
+            else:
+                sets.setdefault((name, "Q4", name), []).append(q)
     d = Deck(fmt=".12g")
     d.title("slope").units("kN, m, kPa").analysis("PLANE_STRAIN")
     d.nodes([n for n in nodes])
     k = 0
-    for name, els in sets.items():
-        d.elements("Q4", name, [(k + e + 1, *q) for e, q in enumerate(els)])
+    for (name, etype, _), els in sets.items():
+        d.elements(etype, name, [(k + e + 1, *q) for e, q in enumerate(els)])
         k += len(els)
     for name, props in materials.items():
-        d.material(name, f"E = 1e5, NU = 0.3, {props}", type="MOHR_COULOMB")
-    for name in sets:
-        d.section(name, name)
+        d.material(name, f"E = 1e5, NU = 0.3, PSI = 0, {props}", type="MOHR_COULOMB")
+    for name, _, mat in sets:
+        d.section(name, mat)
     left = [ids[(0, j)] for j in range(nrow + 1)]
     right = [ids[(len(xs) - 1, j)] for j in range(nrow + 1)]
     bottom = [ids[(i, 0)] for i in range(len(xs))]

@@ -453,11 +453,17 @@ def join_strips(strips, tol):
 
 # ------------------------------------------------------------------ water
 class NoWater:
-    """Dry soil: no pore pressure."""
+    """Dry soil: no pore pressure. A water input has `pressure(x, y_base, sigma_v)` (the
+    pore pressure at the base points, given the vertical total stress of their columns)
+    and `breaks(circle)` (x where the pressure along the arc has a kink: the slices are cut
+    there)."""
     text = "none"
 
     def pressure(self, x, y_base, sigma_v):
         return np.zeros_like(x)
+
+    def breaks(self, circle):
+        return np.zeros(0)
 
 
 class Phreatic:
@@ -483,6 +489,21 @@ class Phreatic:
     def pressure(self, x, y_base, sigma_v):
         return self.gamma_w * np.maximum(0.0, self.level(x) - y_base)
 
+    def breaks(self, circle):
+        """The line's vertices and its crossings with the circle's lower arc."""
+        xc, yc, r = circle
+        out = list(self.points[:, 0])
+        for (x0, y0), (x1, y1) in zip(self.points[:-1], self.points[1:]):
+            m = (y1 - y0) / (x1 - x0)
+            e = y0 + m * (xc - x0) - yc
+            disc = r * r * (1 + m * m) - e * e
+            if disc > 0:
+                for d in ((-e * m - math.sqrt(disc)) / (1 + m * m),
+                          (-e * m + math.sqrt(disc)) / (1 + m * m)):
+                    if x0 < xc + d < x1 and e + m * d <= 0:
+                        out.append(xc + d)
+        return np.array(out)
+
 
 class PoreRatio:
     """Pore pressure ratio r_u: u = r_u times the vertical total stress of the column."""
@@ -495,6 +516,9 @@ class PoreRatio:
 
     def pressure(self, x, y_base, sigma_v):
         return self.ru * sigma_v
+
+    def breaks(self, circle):
+        return np.zeros(0)
 
 
 # ------------------------------------------------------------------ one circle
@@ -558,7 +582,9 @@ def slices(prof, circle, n, water):
         return ext
     lo, hi = ext
     edges = np.linspace(lo, hi, n + 1)
-    inner = prof.kinks[(prof.kinks > lo + prof.tol) & (prof.kinks < hi - prof.tol)]
+    # the slices are also cut where the ground, a layer or the pore pressure has a kink
+    cuts = np.concatenate([prof.kinks, water.breaks(circle)])
+    inner = cuts[(cuts > lo + prof.tol) & (cuts < hi - prof.tol)]
     if len(inner):
         edges = np.unique(np.concatenate([edges, inner]))
         edges = edges[np.concatenate([[True], np.diff(edges) > prof.tol])]
