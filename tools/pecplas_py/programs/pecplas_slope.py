@@ -817,10 +817,17 @@ def search(prof, n, water, grid=(12, 12, 12), refine=4, box=None):
 
 # ------------------------------------------------------------------ the picture
 def mechanism(results, k):
-    """Magnitude of the incremental displacement over the last k written increments, per
-    node, and the increments used; None when fewer than 2 increments are written."""
+    """Magnitude of the finite-element mechanism per node and what it is: the incremental
+    displacements of a safety step's last increments (/safety/mechanism) when the file has
+    one, else the displacement over the last k written increments."""
     import h5py
     with h5py.File(results, "r") as f:
+        x = f["mesh/coordinates"][()]
+        g = f.get("safety")
+        if g is not None and "mechanism" in g:
+            m = np.asarray(g["mechanism"][()], float)
+            m = m.T if m.shape[0] == 2 and m.shape[1] != 2 else m
+            return x, np.hypot(m[:, 0], m[:, 1]), "safety step's mechanism"
         keys = sorted(f["increments"].keys()) if "increments" in f else []
         if not keys:
             raise InputError(f"{results}: no increment with fields")
@@ -830,8 +837,19 @@ def mechanism(results, k):
             first = keys[-1 - k]
         else:
             prev, first = np.zeros_like(last), "start"
-        x = f["mesh/coordinates"][()]
-    return x, np.hypot(*(last - prev).T), (first, keys[-1])
+    return x, np.hypot(*(last - prev).T), f"increments {first} to {keys[-1]}"
+
+
+def fe_factor(results):
+    """The strength-reduction factor a safety step wrote (/safety: factor, kind,
+    resolution), or None."""
+    import h5py
+    with h5py.File(results, "r") as f:
+        g = f.get("safety")
+        if g is None or "factor" not in g.attrs:
+            return None
+        return {"factor": float(g.attrs["factor"]), "kind": text(g.attrs.get("kind", "")),
+                "resolution": float(g.attrs.get("resolution", float("nan")))}
 
 
 def draw(soil, prof, circle, s, out, title, results=None, k=1):
@@ -843,7 +861,7 @@ def draw(soil, prof, circle, s, out, title, results=None, k=1):
     fig, ax = plt.subplots(figsize=(10, 6))
     polys, values = [], []
     if results:
-        x, du, (first, last) = mechanism(results, k)
+        x, du, what = mechanism(results, k)
         import h5py
         with h5py.File(results, "r") as f:
             for name, g in f["mesh/sets"].items():
@@ -856,8 +874,7 @@ def draw(soil, prof, circle, s, out, title, results=None, k=1):
         pc = PolyCollection(polys, array=np.asarray(values), cmap="viridis",
                             edgecolors="0.4", linewidths=0.2)
         ax.add_collection(pc)
-        fig.colorbar(pc, ax=ax, label=f"|incremental displacement|, increments {first} to "
-                     f"{last} (finite elements)")
+        fig.colorbar(pc, ax=ax, label=f"|incremental displacement| (finite elements, {what})")
     else:
         names = list(dict.fromkeys(m.name for *_, m in soil.sets))
         cmap = plt.get_cmap("tab10")
@@ -1008,6 +1025,11 @@ def main(argv=None):
     sp = f"{r['spencer']:.4f}" if r["spencer"] is not None else "no solution"
     th = f" (interslice inclination {r['theta_deg']:.2f} deg)" if r["spencer"] else ""
     print(f"  factor of safety:  Bishop simplified {r['bishop']:.4f}   Spencer {sp}{th}")
+    fe = fe_factor(results) if results else None
+    if fe:
+        r["finite_elements"] = fe
+        print(f"  finite elements (strength reduction): {fe['factor']:.4f} ({fe['kind']}, "
+              f"resolution {fe['resolution']:.2g})")
     if not a.no_plot:
         out = Path(a.output) if a.output else Path(a.input).with_suffix(".slope.png")
         title = (f"{Path(a.input).name}: Bishop F = {r['bishop']:.3f}, Spencer F = {sp}; "
