@@ -1,9 +1,10 @@
 """Decks of slopes for the limit-equilibrium tool's tests (test_slope.py): a structured Q4
 mesh under a ground surface given as a polyline (x increasing), from a flat base; columns of
 elements between the x of the surface points (each segment cut into `per` columns), `rows`
-rows of elements from the base to the surface (T3 where a layer thins out). `layers` (level, material) splits the soil:
-an element whose centre lies below a level takes that layer's material (levels from the
-bottom up; the last layer reaches the surface); without layers, one material `soil`."""
+rows of elements from the base to the surface. `layers` [(level, material), ..., (None,
+material)] splits the soil at the levels (from the bottom up; the last layer reaches the
+surface), `rows` rows per layer, T3 elements where a layer thins out against the ground;
+without layers, one material `soil`."""
 import numpy as np
 
 from pecplas_py.deck import Deck

@@ -239,8 +239,8 @@ def test_layers_and_results_file(installed, tmp_path):
     """A results file of pecplas as INPUT: the same soil and factor as its deck (the mesh
     read from /mesh, the materials from the deck text: same numbers to 1e-12), and the
     picture of the mechanism (the incremental displacement of the last increment) with the
-    circle. Two layers: a weak foundation (below the toe, y < 25) under a strong slope; the critical circle goes down
-    into the weak layer."""
+    circle. Two layers: a weak foundation (below the toe, y < 25) under a strong slope; the
+    critical circle goes down into the weak layer."""
     layers = [(25.0, "weak"), (None, "crust")]
     text = slope_deck(ACADS, 20.0, materials={"weak": "C = 2, PHI = 15, GAMMA = 19",
                                               "crust": "C = 15, PHI = 30, GAMMA = 20"},
