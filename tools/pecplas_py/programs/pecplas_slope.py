@@ -15,10 +15,11 @@ soil acts (no surface loads, joints, or structures).
 
 Circular slip surfaces, slices in vertical columns: Bishop's simplified method (moment
 equilibrium, horizontal interslice forces) is minimised over a grid of centres and radii
-(--grid, radii given by the level of the circle's lowest point), then refined --refine times
-around the best circle (each time a grid of 5 x 5 x 5 with half the spacing); Spencer's
-method (force and moment equilibrium, interslice forces of one inclination) is then solved
-on the same circle. --circle analyses one circle and searches nothing.
+(--grid; the radii given by the level of the circle's lowest point, the levels of the
+ground's corners added), then by a pattern search from the three best circles of the grid
+(the step halved --refine times); Spencer's method (force and moment equilibrium, interslice
+forces of one inclination) is then solved on the same circle. --circle analyses one circle
+and searches nothing.
 
 Pore pressure at the base of a slice: below a phreatic line (--phreatic, the points of a
 polyline, hydrostatic below it: u = gamma_w (y_w - y)), or r_u = u / (weight of the column
@@ -527,8 +528,8 @@ def arc(x, xc, yc, r):
 
 
 def mass_extent(prof, xc, yc, r):
-    """(x_entry, x_exit) where the circle's lower arc is below the ground, or a reason why
-    the circle is not admissible (str)."""
+    """[(x_entry, x_exit)] of the stretches where the circle's lower arc is below the
+    ground, or a reason why the circle is not admissible (str)."""
     X, s0, s1 = prof.X, prof.s0, prof.s1
     a = np.maximum(X[:-1], xc - r)
     b = np.minimum(X[1:], xc + r)
@@ -562,25 +563,22 @@ def mass_extent(prof, xc, yc, r):
             spans[-1][1] = hi
         else:
             spans.append([lo, hi])
-    if len(spans) != 1:
-        return "cuts the ground in several places" if spans else "above the ground"
-    lo, hi = spans[0]
-    if lo <= prof.x_min + prof.tol or hi >= prof.x_max - prof.tol:
-        return "leaves the model through its side"
-    if lo <= xc - r + prof.tol or hi >= xc + r - prof.tol:
-        return "centre below the ground"
-    return lo, hi
+    if not spans:
+        return "above the ground"
+    for lo, hi in spans:
+        if lo <= prof.x_min + prof.tol or hi >= prof.x_max - prof.tol:
+            return "leaves the model through its side"
+        if lo <= xc - r + prof.tol or hi >= xc + r - prof.tol:
+            return "centre below the ground"
+    return [tuple(sp) for sp in spans]
 
 
-def slices(prof, circle, n, water):
-    """The slices of a circle: dict of arrays (width b, weight W, base angle alpha with the
-    sign of the sliding direction, c, tan phi, pore pressure u at the base), or a str saying
-    why the circle is not admissible."""
+def slices(prof, circle, n, water, span):
+    """The slices of the mass above a circle between x = span[0] and span[1]: dict of arrays
+    (width b, weight W, base angle alpha with the sign of the sliding direction, c, tan phi,
+    pore pressure u at the base), or a str saying why the circle is not admissible."""
     xc, yc, r = circle
-    ext = mass_extent(prof, xc, yc, r)
-    if isinstance(ext, str):
-        return ext
-    lo, hi = ext
+    lo, hi = span
     edges = np.linspace(lo, hi, n + 1)
     # the slices are also cut where the ground, a layer or the pore pressure has a kink
     cuts = np.concatenate([prof.kinks, water.breaks(circle)])
@@ -754,11 +752,26 @@ def spencer(s, f0):
 
 
 def bishop_circle(prof, circle, n, water):
-    s = slices(prof, circle, n, water)
-    if isinstance(s, str):
-        return None, s
-    f = bishop(s)
-    return (f, s) if f is not None else (None, "no Bishop factor (m_alpha <= 0)")
+    """(Bishop's factor, the slices) of a circle, or (None, why not). A circle below the
+    ground on several stretches cuts several bodies, each rotating on its own: the factor
+    is the least of theirs (e.g. a toe circle whose arc dips below the ground in front of
+    the toe moves the body above the toe)."""
+    spans = mass_extent(prof, *circle)
+    if isinstance(spans, str):
+        return None, spans
+    best = (None, "no driving moment")
+    for span in spans:
+        s = slices(prof, circle, n, water, span)
+        if isinstance(s, str):
+            if s != "no driving moment":
+                return None, s
+            continue
+        f = bishop(s)
+        if f is None:
+            return None, "no Bishop factor (m_alpha <= 0)"
+        if best[0] is None or f < best[0]:
+            best = (f, s)
+    return best
 
 
 # ------------------------------------------------------------------ the search
@@ -767,10 +780,14 @@ def default_box(prof):
     return (prof.x_min, prof.x_max, prof.top, prof.top + 2.0 * h)
 
 
-def search(prof, n, water, grid=(12, 12, 12), refine=4, box=None):
-    """The circle of least Bishop factor: a grid of centres (x, y) in the box and of the
-    levels of the circle's lowest point between the model's bottom and top, then `refine`
-    grids of 5 x 5 x 5 around the best one, the spacing halved each time."""
+def search(prof, n, water, grid=(12, 12, 12), refine=6, box=None, starts=3):
+    """The circle of least Bishop factor. A coarse grid: centres (x, y) on NX x NY points of
+    the box, and for each NR levels of the circle's lowest point between the model's bottom
+    and top, plus the levels of the ground's corners (a toe circle's lowest point is often
+    at the toe). Then from each of the `starts` best coarse circles that are more than one
+    grid step apart, a pattern search: the 3 x 3 x 3 circles around the best one (centre x,
+    y and lowest level) at the current step, moving to the best, the step halved when the
+    best stays in the middle, `refine` halvings in all."""
     x0, x1, y0, y1 = box or default_box(prof)
     if not (x1 > x0 and y1 > y0):
         raise InputError(f"--centres {x0:g} {x1:g} {y0:g} {y1:g}: X0 < X1 and Y0 < Y1 "
@@ -779,38 +796,58 @@ def search(prof, n, water, grid=(12, 12, 12), refine=4, box=None):
     xs = np.linspace(x0, x1, nx)
     ys = np.linspace(y0, y1, ny)
     zs = np.linspace(prof.bottom, prof.top, nr + 2)[1:-1]   # lowest point of the circle
-    best = (np.inf, None)
+    corners = np.concatenate([prof.s0, prof.s1])
+    corners = corners[(corners > prof.bottom + prof.tol) & (corners < prof.top - prof.tol)]
+    zs = np.unique(np.concatenate([zs, corners]))
     tried = valid = 0
     reasons = {}
+    seen = {}
 
-    def run(cands):
-        nonlocal best, tried, valid
-        for xc, yc, z in cands:
-            r = yc - z
-            if r <= 0:
-                continue
+    def factor(xc, yc, z):
+        nonlocal tried, valid
+        key = (round(xc / prof.tol), round(yc / prof.tol), round(z / prof.tol))
+        if key in seen:
+            return seen[key]
+        r = yc - z
+        f = None
+        if r > 0:
             tried += 1
-            f, s = bishop_circle(prof, (xc, yc, r), n, water)
+            f, why = bishop_circle(prof, (xc, yc, r), n, water)
             if f is None:
-                reasons[s] = reasons.get(s, 0) + 1
-                continue
-            valid += 1
-            if f < best[0]:
-                best = (f, (xc, yc, z))
+                reasons[why] = reasons.get(why, 0) + 1
+            else:
+                valid += 1
+        seen[key] = np.inf if f is None else f
+        return seen[key]
 
-    run((x, y, z) for x in xs for y in ys for z in zs)
-    if best[1] is None:
+    coarse = sorted((factor(x, y, z), (x, y, z)) for x in xs for y in ys for z in zs)
+    coarse = [c for c in coarse if np.isfinite(c[0])]
+    if not coarse:
         raise NoCircle("no admissible circle in the search box (centres x " +
                        f"{x0:g} .. {x1:g}, y {y0:g} .. {y1:g}): " +
                        ", ".join(f"{k}: {v}" for k, v in sorted(reasons.items())))
-    dx = (x1 - x0) / max(nx - 1, 1)
-    dy = (y1 - y0) / max(ny - 1, 1)
-    dz = zs[1] - zs[0] if len(zs) > 1 else (prof.top - prof.bottom) / 4
-    for _ in range(refine):
-        xb, yb, zb = best[1]
-        run((xb + i * dx / 2, yb + j * dy / 2, zb + k * dz / 2)
-            for i in (-2, -1, 0, 1, 2) for j in (-2, -1, 0, 1, 2) for k in (-2, -1, 0, 1, 2))
-        dx, dy, dz = dx / 2, dy / 2, dz / 2
+    step0 = np.array([(x1 - x0) / max(nx - 1, 1), (y1 - y0) / max(ny - 1, 1),
+                      (prof.top - prof.bottom) / (nr + 1)])
+    picked = []
+    for f, p in coarse:
+        if all(np.any(np.abs(np.subtract(p, q)) > step0 * 1.01) for _, q in picked):
+            picked.append((f, p))
+        if len(picked) == starts:
+            break
+    best = picked[0]
+    offsets = [np.array((i, j, k)) for i in (-1, 0, 1) for j in (-1, 0, 1) for k in (-1, 0, 1)]
+    for f, p in picked:
+        p, h, halvings = np.array(p, float), step0 / 2, 0
+        for _ in range(40 * (refine + 1)):
+            if halvings >= refine:
+                break
+            cand = min((factor(*(p + o * h)), tuple(o)) for o in offsets)
+            if cand[0] < f and any(cand[1]):
+                f, p = cand[0], p + np.array(cand[1]) * h
+            else:
+                h, halvings = h / 2, halvings + 1
+        if f < best[0]:
+            best = (f, tuple(p))
     xb, yb, zb = best[1]
     return best[0], (xb, yb, yb - zb), tried, valid, (x0, x1, y0, y1)
 
@@ -942,7 +979,7 @@ def water_of(a, blocks):
     return NoWater()
 
 
-def analyse(soil, blocks, water, n=50, grid=(12, 12, 12), refine=4, box=None, circle=None):
+def analyse(soil, blocks, water, n=50, grid=(12, 12, 12), refine=6, box=None, circle=None):
     """Bishop (searched or on the given circle) and Spencer on the critical circle."""
     if n < 1:
         raise InputError(f"--slices {n}: at least 1 expected")
@@ -957,7 +994,7 @@ def analyse(soil, blocks, water, n=50, grid=(12, 12, 12), refine=4, box=None, ci
         box = None
     else:
         f, circle, tried, valid, box = search(prof, n, water, grid, refine, box)
-        s = slices(prof, circle, n, water)
+        s = bishop_circle(prof, circle, n, water)[1]
     sp = spencer(s, f)
     return {"bishop": f, "spencer": sp[0] if sp else None,
             "theta_deg": math.degrees(sp[1]) if sp else None,
@@ -978,8 +1015,8 @@ def main(argv=None):
     ap.add_argument("--grid", type=int, nargs=3, default=[12, 12, 12],
                     metavar=("NX", "NY", "NR"), help="search grid: centres NX x NY, NR "
                     "levels of the circle's lowest point (default 12 12 12)")
-    ap.add_argument("--refine", type=int, default=4, help="refinements of the grid "
-                    "around the best circle (default 4)")
+    ap.add_argument("--refine", type=int, default=6, help="halvings of the step of the "
+                    "pattern search from the best coarse circles (default 6)")
     ap.add_argument("--centres", type=float, nargs=4, metavar=("X0", "X1", "Y0", "Y1"),
                     help="search box of the centres (default: the model's width, from "
                     "its top to two heights above)")
@@ -1022,7 +1059,9 @@ def main(argv=None):
               f"{r['circles_tried']} tried")
     print(f"  critical circle: centre ({xc:.4g}, {yc:.4g}), radius {rad:.4g}, ground "
           f"from x = {r['entry']:.4g} to {r['exit']:.4g}, {r['slices']} slices")
-    sp = f"{r['spencer']:.4f}" if r["spencer"] is not None else "no solution"
+    sp = f"{r['spencer']:.4f}" if r["spencer"] is not None else \
+        "no solution (no interslice inclination from -45 to 60 deg balances both forces " \
+        "and moments on this circle)"
     th = f" (interslice inclination {r['theta_deg']:.2f} deg)" if r["spencer"] else ""
     print(f"  factor of safety:  Bishop simplified {r['bishop']:.4f}   Spencer {sp}{th}")
     fe = fe_factor(results) if results else None
@@ -1032,7 +1071,8 @@ def main(argv=None):
               f"resolution {fe['resolution']:.2g})")
     if not a.no_plot:
         out = Path(a.output) if a.output else Path(a.input).with_suffix(".slope.png")
-        title = (f"{Path(a.input).name}: Bishop F = {r['bishop']:.3f}, Spencer F = {sp}; "
+        spt = sp if r["spencer"] is not None else "no solution"
+        title = (f"{Path(a.input).name}: Bishop F = {r['bishop']:.3f}, Spencer F = {spt}; "
                  f"circle ({xc:.3g}, {yc:.3g}), R = {rad:.3g}")
         try:
             draw(soil, r["_prof"], r["circle"], r["_s"], out, title, results, a.increments)
