@@ -263,7 +263,9 @@ def test_layers_and_results_file(installed, tmp_path):
     read from /mesh, the materials from the deck text: same numbers to 1e-12), and the
     picture of the mechanism (the incremental displacement of the last increment) with the
     circle. Two layers: a weak foundation (below the toe, y < 25) under a strong slope; the
-    critical circle goes down into the weak layer."""
+    critical circle goes down into the weak layer. A results file with a safety step's
+    record (/safety, added here as the program writes it) has its factor printed beside
+    Bishop's and Spencer's."""
     layers = [(25.0, "weak"), (None, "crust")]
     text = slope_deck(ACADS, 20.0, materials={"weak": "C = 2, PHI = 15, GAMMA = 19",
                                               "crust": "C = 15, PHI = 30, GAMMA = 20"},
@@ -284,6 +286,22 @@ def test_layers_and_results_file(installed, tmp_path):
     xc, yc, r = res[0]["circle"]
     assert yc - r < 25.0                              # into the weak layer
     assert (tmp_path / "layers.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # a safety step's record (/safety: attributes kind, factor, resolution; the mechanism
+    # (2, nnode) written from Fortran, read as (nnode, 2)): its factor is printed beside
+    import h5py
+    safety = tmp_path / "safety.h5"
+    shutil.copy(h5, safety)
+    with h5py.File(safety, "a") as f:
+        n = f["mesh/coordinates"].shape[0]
+        g = f.create_group("safety")
+        g.attrs["kind"], g.attrs["factor"], g.attrs["resolution"] = "factor", 1.2345, 0.01
+        g["mechanism"] = np.tile([1.0, 0.0], (n, 1))
+    data = tmp_path / "safety.json"
+    q = run(installed, tmp_path, safety, "--data", data, "-o", tmp_path / "safety.png",
+            "--circle", *res[0]["circle"])
+    assert q.returncode == 0, q.stderr
+    assert "finite elements (strength reduction): 1.2345 (factor, resolution 0.01)" in q.stdout
+    assert json.loads(data.read_text())["finite_elements"]["factor"] == 1.2345
 
 
 # ------------------------------------------------------------------ bad input
