@@ -127,9 +127,13 @@ def number(text, block, where):
 
 
 class Material:
-    def __init__(self, name, kind, c, phi, gamma, where):
+    """Strength and unit weights of a *MATERIAL: GAMMA (or GAMMA_UNSAT) above the phreatic
+    level, GAMMA_SAT below it (default: the same)."""
+
+    def __init__(self, name, kind, c, phi, gamma, where, gamma_sat=None):
         self.name, self.kind, self.c, self.phi, self.gamma, self.where = \
             name, kind, c, phi, gamma, where
+        self.gamma_sat = gamma if gamma_sat is None else gamma_sat
 
     @property
     def strength(self):
@@ -156,7 +160,8 @@ def materials_of(blocks):
                 if eq:
                     props[k.upper()] = (number(v, b, where), where)
         first = b.data[0][1] if b.data else b.where
-        gamma = props.get("GAMMA", (0.0, first))[0]
+        gamma = props.get("GAMMA", props.get("GAMMA_UNSAT", (0.0, first)))[0]
+        gamma_sat = props.get("GAMMA_SAT", (gamma, first))[0]
         c = props.get("C", (0.0, first))[0]
         phi = props.get("PHI", (0.0, first))[0]
         if gamma < 0:
@@ -167,7 +172,9 @@ def materials_of(blocks):
                             first)
             if c == 0 and phi == 0:
                 raise b.err("material without strength (C = 0 and PHI = 0)", first)
-        out[name.upper()] = Material(name, kind, c, phi, gamma, b.where)
+        if gamma_sat < gamma:
+            raise b.err(f"GAMMA_SAT = {gamma_sat:g} below GAMMA = {gamma:g}", first)
+        out[name.upper()] = Material(name, kind, c, phi, gamma, b.where, gamma_sat)
     return out
 
 
@@ -186,11 +193,13 @@ def gamma_w_of(blocks):
 class Soil:
     """The polygons (element corners) of the active massif sets and their materials."""
 
-    def __init__(self, polygons, mats, sets, source):
+    def __init__(self, polygons, mats, sets, source, wet=None):
         self.polygons = polygons          # list of (ncorner, 2) arrays
         self.mats = mats                  # material per polygon
         self.sets = sets                  # [(set name, etype, connectivity rows, coords)]
         self.source = source
+        # per polygon: False in a *DRY set (no pore pressure, no saturated weight)
+        self.wet = [True] * len(polygons) if wet is None else wet
 
 
 def active_sets(blocks, names):
@@ -253,8 +262,23 @@ def soil_from_deck(path):
     return build_soil(blocks, path, nodes, sets, section, None)
 
 
+def dry_sets(blocks):
+    """Names (upper case) of the element sets of *DRY: no water acts in them."""
+    return {f.upper() for b in blocks if b.keyword == "*DRY" for fields, _ in b.data
+            for f in fields}
+
+
+def is_dry(name, dry):
+    """A set named in *DRY, or a part <name>_<TYPE> of a Gmsh group named there."""
+    key = name.upper()
+    head, _, tail = key.rpartition("_")
+    return key in dry or (tail in NODES_PER and head in dry)
+
+
 def build_soil(blocks, source, nodes, sets, section, active_names):
     mats = materials_of(blocks)
+    dry = dry_sets(blocks)
+    wet = []
     active, change = active_sets(blocks, list(sets))
     if active_names is not None:
         active = {n: n in active_names for n in sets}
@@ -279,10 +303,11 @@ def build_soil(blocks, source, nodes, sets, section, active_names):
             conn.append(xy)
             polygons.append(xy[:CORNERS[etype]])
             pmats.append(m)
+            wet.append(not is_dry(name, dry))
         drawn.append((name, etype, conn, m))
     if not polygons:
         raise InputError(f"{source}: no active massif element set")
-    return Soil(polygons, pmats, drawn, str(source)), blocks
+    return Soil(polygons, pmats, drawn, str(source), wet), blocks
 
 
 def text(v):
@@ -320,7 +345,8 @@ def soil_from_results(path):
 
 def build_soil_from_coords(blocks, source, sets, section, names):
     mats = materials_of(blocks)
-    polygons, pmats, drawn = [], [], []
+    dry = dry_sets(blocks)
+    polygons, pmats, drawn, wet = [], [], [], []
     for key, (name, etype, rows) in sets.items():
         if names is not None and key not in names:
             continue
@@ -331,10 +357,11 @@ def build_soil_from_coords(blocks, source, sets, section, names):
         conn = [xy for xy, _, _ in rows]
         polygons += [xy[:CORNERS[etype]] for xy in conn]
         pmats += [m] * len(conn)
+        wet += [not is_dry(name, dry)] * len(conn)
         drawn.append((name, etype, conn, m))
     if not polygons:
         raise InputError(f"{source}: no active massif element set")
-    return Soil(polygons, pmats, drawn, str(source)), blocks
+    return Soil(polygons, pmats, drawn, str(source), wet), blocks
 
 
 # ------------------------------------------------------------------ the soil in columns
@@ -345,8 +372,9 @@ class Profile:
 
     def __init__(self, soil):
         polys = soil.polygons
-        self.materials = list(dict.fromkeys(soil.mats))
-        mat_index = np.array([self.materials.index(m) for m in soil.mats])
+        kinds = list(zip(soil.mats, soil.wet))
+        self.materials = list(dict.fromkeys(kinds))      # (material, wet) pairs
+        mat_index = np.array([self.materials.index(k) for k in kinds])
         xs = np.unique(np.concatenate([p[:, 0] for p in polys]))
         size = np.ptp(np.concatenate(polys), axis=0).max()
         self.tol = 1e-9 * size
@@ -381,10 +409,15 @@ class Profile:
         for k, (_, _, pieces) in enumerate(strips):
             for j, p in enumerate(pieces):
                 self.b0[k, j], self.b1[k, j], self.t0[k, j], self.t1[k, j], self.mat[k, j] = p
-        self.gamma = np.array([m.gamma for m in self.materials] + [0.0])
-        self.c = np.array([m.c for m in self.materials] + [0.0])
-        self.tanphi = np.array([math.tan(math.radians(m.phi)) for m in self.materials] + [0.0])
-        self.strong = np.array([m.strength for m in self.materials] + [False])
+        mats = [m for m, _ in self.materials]
+        self.gamma = np.array([m.gamma for m in mats] + [0.0])
+        # the extra weight below the phreatic level (saturated against moist), wet sets only
+        self.gamma_extra = np.array([(m.gamma_sat - m.gamma) * w for m, w in self.materials]
+                                    + [0.0])
+        self.wet = np.array([w for _, w in self.materials] + [False])
+        self.c = np.array([m.c for m in mats] + [0.0])
+        self.tanphi = np.array([math.tan(math.radians(m.phi)) for m in mats] + [0.0])
+        self.strong = np.array([m.strength for m in mats] + [False])
         top = np.where(self.mat >= 0, self.t0, -np.inf).max(axis=1)
         top1 = np.where(self.mat >= 0, self.t1, -np.inf).max(axis=1)
         self.s0, self.s1 = top, top1       # ground surface at the strip ends
@@ -468,13 +501,15 @@ class NoWater:
 
 
 class Phreatic:
-    """A phreatic line (polyline, x increasing), hydrostatic pressure below it:
-    u = gamma_w (y_w(x) - y), zero above it; constant beyond its end points."""
+    """A phreatic line (polyline, x increasing; one point: horizontal), hydrostatic pressure
+    below it: u = gamma_w (y_w(x) - y), zero above it; constant beyond its end points."""
 
-    def __init__(self, points, gamma_w):
+    def __init__(self, points, gamma_w, name=None):
         pts = np.asarray(points, float)
-        if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 2:
-            raise InputError("--phreatic: at least two points X,Y expected")
+        if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 1:
+            raise InputError("--phreatic: points X,Y expected")
+        if len(pts) == 1:                                  # a horizontal level
+            pts = np.array([[pts[0, 0] - 1.0, pts[0, 1]], [pts[0, 0] + 1.0, pts[0, 1]]])
         if np.any(np.diff(pts[:, 0]) <= 0):
             raise InputError("--phreatic: the x of the points must increase")
         if gamma_w is None or gamma_w <= 0:
@@ -482,7 +517,7 @@ class Phreatic:
                              "--gamma-w (or *UNITS in the deck)")
         self.points, self.gamma_w = pts, float(gamma_w)
         self.text = (f"phreatic line {' '.join(f'({x:g}, {y:g})' for x, y in pts)}, "
-                     f"gamma_w = {gamma_w:g}")
+                     f"gamma_w = {gamma_w:g}" + (f" (*WATER {name} of the deck)" if name else ""))
 
     def level(self, x):
         return np.interp(x, self.points[:, 0], self.points[:, 1])
@@ -494,7 +529,11 @@ class Phreatic:
         """The line's vertices and its crossings with the circle's lower arc."""
         xc, yc, r = circle
         out = list(self.points[:, 0])
-        for (x0, y0), (x1, y1) in zip(self.points[:-1], self.points[1:]):
+        p = self.points              # the level is constant beyond its end points
+        far = np.array([[min(p[0, 0], xc - r) - 1.0, p[0, 1]],
+                        [max(p[-1, 0], xc + r) + 1.0, p[-1, 1]]])
+        p = np.vstack([far[:1], p, far[1:]])
+        for (x0, y0), (x1, y1) in zip(p[:-1], p[1:]):
             m = (y1 - y0) / (x1 - x0)
             e = y0 + m * (xc - x0) - yc
             disc = r * r * (1 + m * m) - e * e
@@ -594,8 +633,7 @@ def slices(prof, circle, n, water, span):
     yq = arc(xq, xc, yc, r)
     if np.any(yq < np.where(mat >= 0, bot, np.inf).min(axis=1) - prof.tol):
         return "goes below the model"
-    h = np.clip(top - np.maximum(bot, yq[:, None]), 0.0, None)
-    col = (h * prof.gamma[mat]).sum(axis=1)
+    col = column_weight(prof, water, xq, yq, bot, top, mat)
     weight = (col.reshape(-1, len(gx)) * gw).sum(axis=1) * 0.5 * bw
     _, bot, top, mat = prof.lines(mid)
     ym = arc(mid, xc, yc, r)
@@ -605,15 +643,29 @@ def slices(prof, circle, n, water, span):
     base = mat[np.arange(len(mid)), at.argmax(axis=1)]
     if not prof.strong[base].all():
         return "cuts a material without strength"
-    sigma = (np.clip(top - np.maximum(bot, ym[:, None]), 0.0, None) * prof.gamma[mat]).sum(1)
+    sigma = column_weight(prof, water, mid, ym, bot, top, mat)
     alpha = np.arcsin(np.clip((mid - xc) / r, -1.0, 1.0))
     drive = (weight * np.sin(alpha)).sum()
     if drive == 0:
         return "no driving moment"
     alpha = alpha * np.sign(drive)
     return {"x": mid, "b": bw, "W": weight, "alpha": alpha, "c": prof.c[base],
-            "tanphi": prof.tanphi[base], "u": water.pressure(mid, ym, sigma),
+            "tanphi": prof.tanphi[base],
+            "u": water.pressure(mid, ym, sigma) * prof.wet[base],
             "entry": lo, "exit": hi, "edges": edges}
+
+
+def column_weight(prof, water, x, y, bot, top, mat):
+    """Weight per unit width of the columns above y at x: GAMMA, and GAMMA_SAT below the
+    phreatic level in wet sets."""
+    h = np.clip(top - np.maximum(bot, y[:, None]), 0.0, None)
+    w = (h * prof.gamma[mat]).sum(axis=1)
+    level = getattr(water, "level", None)
+    if level is not None:
+        yw = level(x)[:, None]
+        below = np.clip(np.minimum(top, yw) - np.maximum(bot, y[:, None]), 0.0, None)
+        w = w + (below * prof.gamma_extra[mat]).sum(axis=1)
+    return w
 
 
 def bishop(s, tol=1e-12):
@@ -968,14 +1020,50 @@ def load(path):
     return soil_from_deck(p)
 
 
+def deck_water(blocks):
+    """The phreatic level of the deck in force after its last step (*WATER, NAME=,
+    GAMMA_W=, LEVEL=y or data lines x, y: the first one from the start; *CHANGE_WATER,
+    LEVEL=name|NONE in a step), or None."""
+    levels = {}
+    current = None
+    for b in blocks:
+        if b.keyword == "*WATER":
+            name = b.options.get("NAME", "")
+            gw = number(b.options.get("GAMMA_W", "nan"), b, b.where)
+            if not gw > 0:
+                raise b.err("GAMMA_W= expected (a positive number)")
+            if "LEVEL" in b.options:
+                pts = [(0.0, number(b.options["LEVEL"], b, b.where))]
+            else:
+                pts = [(number(f[0], b, w), number(f[1], b, w)) for f, w in b.data
+                       if len(f) >= 2]
+            try:
+                levels[name.upper()] = Phreatic(pts, gw, name)
+            except InputError as e:
+                raise b.err(str(e).replace("--phreatic: ", "")) from None
+            if current is None:
+                current = name.upper()
+        elif b.keyword == "*CHANGE_WATER" and "LEVEL" in b.options:
+            current = b.options["LEVEL"].upper()
+    if current in (None, "NONE"):
+        return None
+    if current not in levels:
+        raise InputError(f"*CHANGE_WATER, LEVEL={current}: no *WATER of that name")
+    return levels[current]
+
+
 def water_of(a, blocks):
-    """The water input: --phreatic or --ru, else dry. (A water table of the deck itself
-    plugs in here once the deck has one.)"""
+    """The water input: --phreatic or --ru, else the deck's phreatic level in force after
+    its last step (--no-water: none), else dry."""
     gw = a.gamma_w if a.gamma_w is not None else gamma_w_of(blocks)
     if a.phreatic:
         return Phreatic([point(p) for p in a.phreatic], gw)
     if a.ru is not None:
         return PoreRatio(a.ru)
+    if not a.no_water:
+        w = deck_water(blocks)
+        if w is not None:
+            return w
     return NoWater()
 
 
@@ -1025,6 +1113,7 @@ def main(argv=None):
     g = ap.add_mutually_exclusive_group()
     g.add_argument("--phreatic", nargs="+", metavar="X,Y", help="phreatic line points")
     g.add_argument("--ru", type=float, help="pore pressure ratio r_u")
+    g.add_argument("--no-water", action="store_true", help="ignore the deck's *WATER")
     ap.add_argument("--gamma-w", type=float, help="unit weight of water (default from "
                     "*UNITS: 9.81 kN/m3)")
     ap.add_argument("--increments", type=int, default=1, help="the mechanism is the "
