@@ -172,9 +172,10 @@ def test_water_of_the_deck(tmp_path):
     not named by *DRY. On the hand-check circle against the integral with that weight
     (gamma 18 above, 21 below the level; same tolerance and reason as the test above,
     measured 8.5e-8 at 1000 slices, F = 0.97187). The same level given on the command line
-    (--phreatic, GAMMA_SAT from the deck) gives the same factor to 1e-12; *CHANGE_WATER, LEVEL=NONE in the
-    last step leaves the soil dry (the dry factor to 1e-12), and so does *DRY on the set (to
-    1e-6 at 1000 slices: the slices are still cut where the level crosses the circle)."""
+    (--phreatic, GAMMA_SAT from the deck) gives the same factor to 1e-12; *CHANGE_WATER,
+    LEVEL=NONE in the last step leaves the soil dry (the dry factor to 1e-12), and so does
+    *DRY on the set (to 1e-6 at 1000 slices: the slices are still cut where the level
+    crosses the circle)."""
     soil_props = "C = 3, PHI = 19.6, GAMMA = 18, GAMMA_SAT = 21"
     line = "\n".join(f"{x:g}, {y:g}" for x, y in WATER_LINE)
     base = slope_deck(ACADS, 20.0, materials={"soil": soil_props})
