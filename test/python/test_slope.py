@@ -378,6 +378,10 @@ def test_bad_inputs(installed, tmp_path):
     deck = write(tmp_path, "mesh.inp", "*MESH, FILE=x.msh\n" + good)
     p = run(installed, tmp_path, deck, "--no-plot")
     assert p.returncode == 2 and "mesh.inp:1: [*MESH]" in p.stderr
+    deck = write(tmp_path, "axi.inp", good.replace("TYPE=PLANE_STRAIN", "TYPE=AXISYMMETRIC"))
+    line_axi = next(k for k, ln in enumerate(good.splitlines(), 1) if "*ANALYSIS" in ln)
+    p = run(installed, tmp_path, deck, "--no-plot")
+    assert p.returncode == 2 and f"axi.inp:{line_axi}: [*ANALYSIS] an axisymmetric" in p.stderr
     p = run(installed, tmp_path, tmp_path / "none.inp")
     assert p.returncode == 2 and "none.inp: no such file" in p.stderr
     deck = write(tmp_path, "good.inp", good)

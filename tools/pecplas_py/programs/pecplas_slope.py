@@ -275,7 +275,14 @@ def is_dry(name, dry):
     return key in dry or (tail in NODES_PER and head in dry)
 
 
+def plane_strain(blocks):
+    for b in blocks:
+        if b.keyword == "*ANALYSIS" and b.options.get("TYPE", "").upper() == "AXISYMMETRIC":
+            raise b.err("an axisymmetric model: the slices need plane strain")
+
+
 def build_soil(blocks, source, nodes, sets, section, active_names):
+    plane_strain(blocks)
     mats = materials_of(blocks)
     dry = dry_sets(blocks)
     wet = []
@@ -344,6 +351,7 @@ def soil_from_results(path):
 
 
 def build_soil_from_coords(blocks, source, sets, section, names):
+    plane_strain(blocks)
     mats = materials_of(blocks)
     dry = dry_sets(blocks)
     polygons, pmats, drawn, wet = [], [], [], []
