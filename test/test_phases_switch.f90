@@ -15,6 +15,8 @@ module test_phases_switch
    use pecplas_problem_type, only: problem_t
    use pecplas_base_strings, only: itoa
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use pecplas_cmd_adapt, only: adapt_main
+   use pecplas_advise_advise, only: advice_t, advise_deck
    use test_phases, only: write_column, oedometric, last_line, H, GAMMA, ELASTIC
    implicit none (type, external)
    private
@@ -34,7 +36,8 @@ contains
                new_unittest('support_release_increments', test_release_increments), &
                new_unittest('support_release_restart', test_release_restart), &
                new_unittest('katona_wished_in_place', test_katona_wished), &
-               new_unittest('bad_switch_decks', test_bad_decks)]
+               new_unittest('bad_switch_decks', test_bad_decks), &
+               new_unittest('adapt_and_advise_refused', test_refused)]
    end subroutine collect_phases_switch
 
    !> The column deck with a top load q (pattern 'q', FORCE q/2 on each top node) and a prop
@@ -308,5 +311,42 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks
+
+   !> Adaptive refinement (--target-error, *ADAPT) and --advise refuse a phased deck: exit 2
+   !> (input error), the reason in the message, no results file.
+   subroutine test_refused(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(advice_t) :: adv
+      type(error_t), allocatable :: e
+      character(len=*), parameter :: deck = OUT//'refused.inp', with_adapt = OUT//'refused_adapt.inp'
+      character(len=:), allocatable :: text
+      integer :: code, u
+      logical :: exists
+      call make_directories(OUT)
+      call write_switched(deck, 1)
+      code = adapt_main(deck, '10%', '', 0, OUT//'refused.h5')
+      inquire (file=OUT//'refused.h5', exist=exists)
+      call check(error, code == 2 .and. .not. exists, '--target-error refuses a phased deck '// &
+         '(exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call advise_deck(deck, '', 0, 0, adv, e)
+      call check(error, allocated(e), '--advise refuses a phased deck')
+      if (allocated(error)) return
+      text = e%text()
+      call check(error, index(text, 'not available for a phased deck') > 0 .and. &
+         e%exit_code() == 2, '--advise says why, exit 2: '//text)
+      if (allocated(error)) return
+      ! *ADAPT in the deck goes the way of --target-error
+      call write_switched(with_adapt, 1)
+      open (newunit=u, file=with_adapt, status='old', position='append', action='write')
+      write (u, '(a)') '*ADAPT, TARGET=10%'
+      close (u)
+      code = run_deck(with_adapt, OUT//'refused_adapt.h5', .true., model, problem)
+      inquire (file=OUT//'refused_adapt.h5', exist=exists)
+      call check(error, code == 2 .and. .not. exists, '*ADAPT refuses a phased deck (exit '// &
+         itoa(code)//')')
+   end subroutine test_refused
 
 end module test_phases_switch
