@@ -17,6 +17,8 @@ module test_phases_switch
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use pecplas_cmd_adapt, only: adapt_main
    use pecplas_advise_advise, only: advice_t, advise_deck
+   use pecplas_linalg_solver, only: mumps_available
+   use pecplas_problem_phase, only: PROCEDURE_GRAVITY
    use test_phases, only: write_column, oedometric, last_line, H, GAMMA, ELASTIC
    implicit none (type, external)
    private
@@ -37,16 +39,24 @@ contains
                new_unittest('support_release_restart', test_release_restart), &
                new_unittest('katona_wished_in_place', test_katona_wished), &
                new_unittest('bad_switch_decks', test_bad_decks), &
-               new_unittest('adapt_and_advise_refused', test_refused)]
+               new_unittest('adapt_and_advise_refused', test_refused), &
+               new_unittest('switched_other_solvers', test_solvers), &
+               new_unittest('reset_displacements', test_reset), &
+               new_unittest('gravity_loading_then_dig', test_gravity), &
+               new_unittest('strict_phase_warning', test_strict)]
    end subroutine collect_phases_switch
 
    !> The column deck with a top load q (pattern 'q', FORCE q/2 on each top node) and a prop
    !> 'cap' on the top nodes (*BOUNDARY, NAME=cap, Y): load; prop installed (a nil step);
    !> load deactivated; prop released in `nrel` increments; load activated again.
-   subroutine write_switched(path, nrel)
+   subroutine write_switched(path, nrel, solver)
       character(len=*), intent(in) :: path
       integer, intent(in) :: nrel
-      call write_column(path, NEL, 0, [integer ::], 1, ELASTIC, steps= &
+      character(len=*), intent(in), optional :: solver
+      character(len=:), allocatable :: extra
+      extra = ''
+      if (present(solver)) extra = '*SOLVER, LINEAR='//solver//NL
+      call write_column(path, NEL, 0, [integer ::], 1, ELASTIC, steps=extra// &
          '*NSET, NAME=topn'//NL//itoa(NNODE - 1)//', '//itoa(NNODE)//NL// &
          '*LOAD, NAME=q, TYPE=FORCE'//NL//'topn, Y, -50'//NL// &
          '*BOUNDARY, NAME=cap'//NL//'topn, Y'//NL// &
@@ -348,5 +358,148 @@ contains
       call check(error, code == 2 .and. .not. exists, '*ADAPT refuses a phased deck (exit '// &
          itoa(code)//')')
    end subroutine test_refused
+
+   !> The stages of test_switched (prop installed and released: the equations numbered
+   !> again, the solver's analysis done afresh) with UMFPACK, and with MUMPS where the build
+   !> has it (the MPI build): the end state is the closed form q y / M (1e-10 of q H / M).
+   subroutine test_solvers(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: p
+      character(len=8), allocatable :: names(:)
+      integer :: k, code
+      call make_directories(OUT)
+      names = [character(len=8) :: 'UMFPACK']
+      if (mumps_available()) names = [character(len=8) :: names, 'MUMPS']
+      do k = 1, size(names)
+         call write_switched(OUT//'solver_'//trim(names(k))//'.inp', 3, trim(names(k)))
+         code = run_deck(OUT//'solver_'//trim(names(k))//'.inp', OUT//'solver_'// &
+            trim(names(k))//'.h5', .true., model, p)
+         call check(error, code == 0, trim(names(k))//' runs (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         call check_close(error, misfit(model, p, 1.0_wp), 0.0_wp, 0.0_wp, trim(names(k))// &
+            ': ends at q y / M', atol=1.0e-10_wp*Q*H/oedometric())
+         if (allocated(error)) return
+      end do
+   end subroutine test_solvers
+
+   !> RESET_DISPLACEMENTS: the column loaded by q, its displacements reset (a nil step:
+   !> nothing moves, u = 0 but for round-off, the stresses kept), then unloaded: it heaves q y / M from
+   !> the reset and its stresses are the geostatic ones again (1e-10 of q H / M and gamma H).
+   subroutine test_reset(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: loaded, reset, unloaded
+      character(len=*), parameter :: deck = OUT//'reset.inp'
+      integer :: code
+      call make_directories(OUT)
+      call write_column(deck, NEL, 0, [integer ::], 1, ELASTIC, steps= &
+         '*NSET, NAME=topn'//NL//itoa(NNODE - 1)//', '//itoa(NNODE)//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'topn, Y, -50'//NL// &
+         '*STEP, NAME=load'//NL//'q, 1'//NL// &
+         '*STEP, NAME=reset, RESET_DISPLACEMENTS=YES'//NL// &
+         '*STEP, NAME=unload'//NL//'q, 0')
+      code = run_deck(deck, OUT//'reset_1.h5', .true., model, loaded, stop_after=1)
+      call check(error, code == 4, 'loaded')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'reset_2.h5', .true., model, reset, stop_after=2)
+      call check(error, code == 4, 'reset')
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(reset%state%u)), 0.0_wp, 0.0_wp, &
+         'after the reset: u = 0', atol=1.0e-10_wp*Q*H/oedometric())
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(reset%state%sets(1)%stress - loaded%state%sets(1)%stress)), &
+         0.0_wp, 0.0_wp, 'the reset keeps the stresses', atol=1.0e-10_wp*GAMMA*H)
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'reset_3.h5', .true., model, unloaded)
+      call check(error, code == 0, 'unloaded (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check_close(error, misfit(model, unloaded, -1.0_wp), 0.0_wp, 0.0_wp, &
+         'unloaded after the reset: u = (0, +q y / M)', atol=1.0e-10_wp*Q*H/oedometric())
+      if (allocated(error)) return
+      call check_close(error, maxval(abs(unloaded%state%sets(1)%stress(2, :, :) - &
+         loaded%state%sets(1)%stress(2, :, :))), Q, 1.0e-10_wp, &
+         'unloaded: the vertical stress is q less than loaded (geostatic)')
+   end subroutine test_reset
+
+   !> Gravity loading as the initial procedure: the column (no *INITIAL_STRESS) takes its
+   !> weight in a first phase, one GRAVITY pattern per layer, and settles
+   !> gamma (H y - y^2 / 2) / M (1-D: the nodal values of linear elements are exact); its top
+   !> layer (h = 2.5) is then removed and the rest heaves gamma h y / M from there (1e-10 of
+   !> gamma H^2 / M).
+   subroutine test_gravity(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: weighed, dug
+      character(len=*), parameter :: deck = OUT//'gravity.inp'
+      real(wp) :: scale, y, worst, m
+      integer :: code, n, u, i
+      call make_directories(OUT)
+      open (newunit=u, file=deck, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'column under gravity loading, then dug', '*NODES'
+      do i = 0, NEL
+         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*H/NEL
+         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*H/NEL
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=rest'
+      do i = 1, NEL
+         if (i == NEL - 4) write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=top'
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
+         '*SECTION, SET=top, MATERIAL=soil', '*NSET, NAME=base', '1, 2', &
+         '*NSET, NAME=sides, GENERATE', '1, '//itoa(NNODE), '*BOUNDARY', 'base, XY', 'sides, X', &
+         '*LOAD, NAME=w_rest, TYPE=GRAVITY', 'rest', '*LOAD, NAME=w_top, TYPE=GRAVITY', 'top', &
+         '*STEP, NAME=weigh', 'w_rest, 1', 'w_top, 1', '*STEP, NAME=dig', '*DEACTIVATE', 'top'
+      close (u)
+      m = oedometric()
+      scale = GAMMA*H*H/m
+      code = run_deck(deck, OUT//'gravity_1.h5', .true., model, weighed, stop_after=1)
+      call check(error, code == 4, 'weight applied')
+      if (allocated(error)) return
+      call check(error, weighed%phase%procedure == PROCEDURE_GRAVITY, 'gravity loading procedure')
+      if (allocated(error)) return
+      worst = 0.0_wp
+      do n = 1, NNODE
+         y = model%mesh%x(2, n)
+         worst = max(worst, abs(weighed%state%u(1, n)), &
+            abs(weighed%state%u(2, n) + GAMMA*(H*y - 0.5_wp*y*y)/m))
+      end do
+      call check_close(error, worst, 0.0_wp, 0.0_wp, 'settlement gamma (H y - y^2/2) / M', &
+         atol=1.0e-10_wp*scale)
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'gravity_2.h5', .true., model, dug)
+      call check(error, code == 0, 'dug (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      worst = 0.0_wp
+      do n = 1, 2*(NEL - 5) + 2
+         worst = max(worst, maxval(abs(dug%state%u(:, n) - weighed%state%u(:, n) - &
+            [0.0_wp, GAMMA*2.5_wp*model%mesh%x(2, n)/m])))
+      end do
+      call check_close(error, worst, 0.0_wp, 0.0_wp, 'top layer removed: heave gamma h y / M', &
+         atol=1.0e-10_wp*scale)
+   end subroutine test_gravity
+
+   !> --strict: a phase change that changes nothing (a material changed to the one the set
+   !> has) is a warning, an input error under --strict (exit 2, no results file).
+   subroutine test_strict(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      character(len=*), parameter :: deck = OUT//'strict.inp'
+      integer :: code
+      logical :: exists
+      call make_directories(OUT)
+      call write_column(deck, NEL, 0, [integer ::], 1, ELASTIC, steps='*STEP, NAME=same'//NL// &
+         '*CHANGE_MATERIAL'//NL//'rest, soil')
+      code = run_deck(deck, OUT//'strict_lax.h5', .true., model, problem)
+      call check(error, code == 0 .and. model%warnings%count() > 0, 'without --strict: a '// &
+         'warning, the run goes on (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'strict.h5', .true., model, problem, strict=.true.)
+      inquire (file=OUT//'strict.h5', exist=exists)
+      call check(error, code == 2 .and. .not. exists, '--strict: exit 2, no results file '// &
+         '(exit '//itoa(code)//')')
+   end subroutine test_strict
 
 end module test_phases_switch
