@@ -43,7 +43,8 @@ contains
                new_unittest('switched_other_solvers', test_solvers), &
                new_unittest('reset_displacements', test_reset), &
                new_unittest('gravity_loading_then_dig', test_gravity), &
-               new_unittest('strict_phase_warning', test_strict)]
+               new_unittest('strict_phase_warning', test_strict), &
+               new_unittest('joints_follow_their_elements', test_joints_follow)]
    end subroutine collect_phases_switch
 
    !> The column deck with a top load q (pattern 'q', FORCE q/2 on each top node) and a prop
@@ -112,8 +113,8 @@ contains
          end if
          if (allocated(error)) return
          call check_close(error, misfit(model, p(k), expect(k)), 0.0_wp, 0.0_wp, &
-            trim(stage(k))//': u = (0, -'//trim(merge('q y / M', '0      ', expect(k) > 0.0_wp))// &
-            ')', atol=1.0e-10_wp*settle)
+            trim(stage(k))//': u = '//trim(merge('(0, -q y / M)', '0            ', &
+            expect(k) > 0.0_wp)), atol=1.0e-10_wp*settle)
          if (allocated(error)) return
       end do
       ! the stresses: q carried by the prop after unloading, the K0 state after the release
@@ -241,8 +242,11 @@ contains
 
    !> The column of test_phases' katona_off_and_on with the block and the contact set off
    !> until the first step activates them (`how`: the *ACTIVATE options of the contact set).
-   subroutine write_block(path, how)
+   !> `law`, `steps`: another law for the joint set 'iface', other steps (all sets active at
+   !> the start).
+   subroutine write_block(path, how, law, steps)
       character(len=*), intent(in) :: path, how
+      character(len=*), intent(in), optional :: law, steps
       integer :: u, i
       open (newunit=u, file=path, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'K0 column, block installed on Katona contact', '*NODES'
@@ -259,13 +263,22 @@ contains
          write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
       end do
       write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
-         '*SECTION, SET=block, MATERIAL=soil', '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', &
-         'PHI = 30', '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
+         '*SECTION, SET=block, MATERIAL=soil'
+      if (present(law)) then
+         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, '//law
+      else
+         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', 'PHI = 30'
+      end if
+      write (u, '(a)') '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
          '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 82', &
          '*NSET, NAME=pair', '1001, 1002', '*BOUNDARY', 'base, XY', 'sides, X', 'pair, X', &
-         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5', &
-         '*STEP, NAME=install, INCREMENTS=2', '*ACTIVATE, STRESS=WISHED_IN_PLACE', 'block', &
-         '*ACTIVATE'//how, 'iface'
+         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5'
+      if (present(steps)) then
+         write (u, '(a)') steps
+      else
+         write (u, '(a)') '*STEP, NAME=install, INCREMENTS=2', &
+            '*ACTIVATE, STRESS=WISHED_IN_PLACE', 'block', '*ACTIVATE'//how, 'iface'
+      end if
       close (u)
    end subroutine write_block
 
@@ -501,5 +514,34 @@ contains
       call check(error, code == 2 .and. .not. exists, '--strict: exit 2, no results file '// &
          '(exit '//itoa(code)//')')
    end subroutine test_strict
+
+   !> A Goodman joint set between the K0 column and the block on it: deactivating the block
+   !> alone takes the joint set with it (its block-side nodes lose their last element; the
+   !> phase list says so) and the column heaves gamma h y / M, h = 2.5, as when both are
+   !> deactivated (1e-10 of the heave: the joint's uniform traction is integrated exactly).
+   subroutine test_joints_follow(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: p
+      character(len=*), parameter :: deck = OUT//'follow.inp'
+      real(wp) :: heave, worst
+      integer :: code, n
+      call make_directories(OUT)
+      call write_block(deck, '', law='TYPE=GOODMAN'//NL//'KN = 2e+07, KT = 40000, PHI = 35, C = 0', &
+         steps='*STEP, NAME=remove, INCREMENTS=2'//NL//'*DEACTIVATE'//NL//'block')
+      code = run_deck(deck, OUT//'follow.h5', .true., model, p)
+      call check(error, code == 0, 'block removed (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check(error, .not. p%state%joints%sets(1)%active, 'the joint set went with the block')
+      if (allocated(error)) return
+      heave = GAMMA*2.5_wp*7.5_wp/oedometric()
+      worst = 0.0_wp
+      do n = 1, 62
+         worst = max(worst, abs(p%state%u(1, n)), &
+            abs(p%state%u(2, n) - GAMMA*2.5_wp*model%mesh%x(2, n)/oedometric()))
+      end do
+      call check_close(error, worst, 0.0_wp, 0.0_wp, 'the column heaves gamma h y / M', &
+         atol=1.0e-10_wp*heave)
+   end subroutine test_joints_follow
 
 end module test_phases_switch
