@@ -494,14 +494,16 @@ contains
    end subroutine test_gravity
 
    !> --strict: a phase change that changes nothing (a material changed to the one the set
-   !> has) is a warning, an input error under --strict (exit 2, no results file).
+   !> has; a load pattern activated at factor 0 that its step does not drive) is a warning,
+   !> an input error under --strict (exit 2, no results file).
    subroutine test_strict(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       type(problem_t) :: problem
       character(len=*), parameter :: deck = OUT//'strict.inp'
-      integer :: code
-      logical :: exists
+      type(error_t), allocatable :: e
+      integer :: code, i
+      logical :: exists, found
       call make_directories(OUT)
       call write_column(deck, NEL, 0, [integer ::], 1, ELASTIC, steps='*STEP, NAME=same'//NL// &
          '*CHANGE_MATERIAL'//NL//'rest, soil')
@@ -513,6 +515,25 @@ contains
       inquire (file=OUT//'strict.h5', exist=exists)
       call check(error, code == 2 .and. .not. exists, '--strict: exit 2, no results file '// &
          '(exit '//itoa(code)//')')
+      if (allocated(error)) return
+      ! a pattern activated at factor 0 that its step does not drive loads nothing
+      call write_column(deck, NEL, 0, [integer ::], 1, ELASTIC, steps= &
+         '*NSET, NAME=topn'//NL//itoa(NNODE - 1)//', '//itoa(NNODE)//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'topn, Y, -50'//NL// &
+         '*STEP, NAME=idle'//NL//'*ACTIVATE'//NL//'q')
+      call read_deck(deck, model, e)
+      call check(error, .not. allocated(e), 'the deck reads')
+      if (allocated(error)) return
+      found = .false.
+      do i = 1, model%warnings%count()
+         if (index(model%warnings%line(i), "'q' is activated at factor 0") > 0) found = .true.
+      end do
+      call check(error, found, 'a pattern activated at factor 0 and not driven: a warning')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'strict.h5', .true., model, problem, strict=.true.)
+      inquire (file=OUT//'strict.h5', exist=exists)
+      call check(error, code == 2 .and. .not. exists, '--strict: a pattern activated at '// &
+         'factor 0 and not driven (exit '//itoa(code)//')')
    end subroutine test_strict
 
    !> A Goodman joint set between the K0 column and the block on it: deactivating the block

@@ -391,6 +391,13 @@ contains
                         return
                      end if
                      if (ch%target == TARGET_PATTERNS) pact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                     ! (--strict) a pattern activated at factor 0 that the step does not drive
+                     if (ch%target == TARGET_PATTERNS .and. ch%kind == CHANGE_ACTIVATE) then
+                        if (factors(ch%set) == 0.0_wp .and. .not. any(step%pattern == ch%set)) &
+                           call model%warnings%add("load pattern '"//ch%set_name//"' is "// &
+                           "activated at factor 0 and step '"//step%name//"' does not drive "// &
+                           'it: it loads nothing', ch%file, ch%line)
+                     end if
                      if (ch%target == TARGET_SUPPORTS) sact(ch%set) = ch%kind == CHANGE_ACTIVATE
                   end if
                end associate
