@@ -4,7 +4,8 @@
 !>   resistance R = c L + N tan(phi): factor R / T within 1 %;
 !> - an infinite slope (a periodic column, gravity inclined by beta), associated flow:
 !>   cohesionless tan(phi) / tan(beta) within 2 %, with cohesion the closed form at the base
-!>   (c + gamma H cos^2(beta) tan(phi)) / (gamma H sin(beta) cos(beta)) within 3 %;
+!>   (c + gamma z cos^2(beta) tan(phi)) / (gamma z sin(beta) cos(beta)), z = H / cos(beta) the
+!>   vertical depth of the base under a layer H thick, within 3 %;
 !> - Prandtl's footing on weightless Tresca soil under a pressure q: Msf = (2 + pi) c / q
 !>   within 2 % (the collapse pressure is proportional to c);
 !> - an undrained slope of 60 degrees on a firm base at the toe: Taylor's stability number
@@ -191,8 +192,10 @@ contains
    end subroutine test_infinite_psi0
 
    !> beta = 25, phi = psi = 30, c = 10, gamma = 20, H = 5: the closed form is lowest at the
-   !> base, F = (c + gamma H cos^2 tan(phi)) / (gamma H sin cos) = 1.4992. 3 %: the lowest
-   !> Gauss points are 0.1 m above the base (F = 1.511 there) and the resolution.
+   !> base, F = (c + gamma z cos^2 tan(phi)) / (gamma z sin cos) with z = H / cos(beta) the
+   !> vertical depth of the base (the layer is H thick normal to the slope): 1.4748. 3 %: the
+   !> lowest Gauss points are 0.106 normal to the slope above the base (F = 1.4796 there) and
+   !> the resolution.
    subroutine test_infinite_c(error)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: f, b, p, fc
@@ -200,7 +203,8 @@ contains
       if (allocated(error)) return
       b = 25.0_wp*DEG
       p = 30.0_wp*DEG
-      fc = (10.0_wp + 100.0_wp*cos(b)**2*tan(p))/(100.0_wp*sin(b)*cos(b))
+      ! gamma z = 20 x 5 / cos(beta)
+      fc = (10.0_wp + 100.0_wp/cos(b)*cos(b)**2*tan(p))/(100.0_wp/cos(b)*sin(b)*cos(b))
       call report('safety/infinite_slope_c', [f, fc])
       call check_close(error, f, fc, 0.03_wp, 'infinite slope with cohesion: closed form')
    end subroutine test_infinite_c
