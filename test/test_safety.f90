@@ -1,15 +1,18 @@
-!> The safety step (strength reduction, doc/theory.md, Factor of safety) against closed forms and charts, on
-!> the decks of test/data/safety (tools/pecplas_py/decks/make_safety_decks.py):
+!> The safety step (strength reduction, doc/theory.md, Factor of safety) against closed forms
+!> and charts, on the decks of test/data/safety (tools/pecplas_py/decks/make_safety_decks.py):
 !> - a block on a Mohr-Coulomb joint (c and tan(phi) reduced) pushed by T below its sliding
 !>   resistance R = c L + N tan(phi): factor R / T within 1 %;
 !> - an infinite slope (a periodic column, gravity inclined by beta), associated flow:
-!>   cohesionless tan(phi) / tan(beta) within 2 %, with cohesion the closed form at the base
+!>   cohesionless tan(phi) / tan(beta) within 2 %; with cohesion the closed form at the base
 !>   (c + gamma z cos^2(beta) tan(phi)) / (gamma z sin(beta) cos(beta)), z = H / cos(beta) the
-!>   vertical depth of the base under a layer H thick, within 3 %;
-!> - Prandtl's footing on weightless Tresca soil under a pressure q: Msf = (2 + pi) c / q
-!>   within 2 % (the collapse pressure is proportional to c);
+!>   vertical depth of the base under a layer H thick, within 3 %; with psi = 0 Davis's
+!>   strength in simple shear, tan(phi) / tan(asin(tan(beta))), within 2 %;
+!> - Prandtl's footing on weightless Tresca soil under a pressure q (Mohr-Coulomb and
+!>   Drucker-Prager): Msf = (2 + pi) c / q within 2 % (the collapse pressure is proportional
+!>   to c);
 !> - an undrained slope of 60 degrees on a firm base at the toe: Taylor's stability number
 !>   c / (gamma H F) = 0.191 within 5 %;
+!> - the reduction of each material and law type; the results file (/safety, the XDMF);
 !> - honesty: a budget too small gives a lower bound (exit 3), a model that fails before the
 !>   reduction reports "unstable before reduction" and no factor (exit 3);
 !> - bad decks (a safety step first, *REDUCE of a material without strength): exit 2 with

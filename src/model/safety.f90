@@ -1,7 +1,7 @@
-!> The plan of a safety step (*STEP, CONTROL=SAFETY; doc/deck.md, Safety; doc/theory.md, Factor of safety):
-!> the strengths of the soils and Coulomb interface laws named by *REDUCE (all that have a
-!> c, tan(phi) strength when none is named) are divided by Msf, raised from 1 by Msf steps
-!> that follow the failure, until no equilibrium exists. Resolved to indices by the reader.
+!> The plan of a safety step (*STEP, CONTROL=SAFETY; doc/deck.md, Safety; doc/theory.md, Factor of
+!> safety): the strengths of the soils and Coulomb interface laws named by *REDUCE (all that have
+!> a c, tan(phi) strength when none is named) are divided by Msf, raised from 1 by Msf steps that
+!> follow the failure, until no equilibrium exists. Resolved to indices by the reader.
 module pecplas_model_safety
    use pecplas_base_kinds, only: wp
    implicit none (type, external)

@@ -1,6 +1,6 @@
-!> What a safety step (strength reduction, doc/theory.md, Factor of safety) found: the factor and how it was
-!> found, the curve Msf - displacement, and the mechanism. Filled by pecplas_solve_safety,
-!> written to /safety of the results file.
+!> What a safety step (strength reduction, doc/theory.md, Factor of safety) found: the factor and
+!> how it was found, the curve Msf - displacement, and the mechanism. Filled by
+!> pecplas_solve_safety, written to /safety of the results file.
 module pecplas_problem_safety
    use pecplas_base_kinds, only: wp
    implicit none (type, external)

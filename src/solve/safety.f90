@@ -1,7 +1,7 @@
-!> The safety step (*STEP, CONTROL=SAFETY; doc/theory.md, Factor of safety): strength reduction from the
-!> state the step before converged to. The loads keep their factors; the strengths c and
-!> tan(phi) of the materials and interface laws of the plan (pecplas_model_safety) are those
-!> of the deck divided by Msf, with psi_r = min(psi, phi_r) (reduced_strength of each type).
+!> The safety step (*STEP, CONTROL=SAFETY; doc/theory.md, Factor of safety): strength reduction
+!> from the state the step before converged to. The loads keep their factors; the strengths c and
+!> tan(phi) of the materials and interface laws of the plan (pecplas_model_safety) are those of
+!> the deck divided by Msf, with psi_r = min(psi, phi_r) (reduced_strength of each type).
 !>
 !> Control: Msf rises from 1 by increments dM; each is an increment of the ordinary solver
 !> (the chain of methods) on a copy of the model whose strengths are reduced to the trial Msf,

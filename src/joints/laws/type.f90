@@ -45,8 +45,9 @@ module pecplas_joints_laws_type
       procedure :: state_names => law_state_names
       !> One line describing the law as built (e.g. unit conversions); '' by default.
       procedure :: describe => law_describe
-      !> The law with its strength divided by `msf` (strength reduction, doc/theory.md, Factor of safety);
-      !> unallocated for a law whose strength is not a c, tan(phi) pair (the default).
+      !> The law with its strength divided by `msf` (strength reduction, doc/theory.md,
+      !> Factor of safety); unallocated for a law whose strength is not a c, tan(phi) pair
+      !> (the default).
       procedure :: reduced_strength => law_reduced_strength
    end type interface_law_t
 
