@@ -15,6 +15,7 @@ module pecplas_fe_assembly
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_fe_joint_assembly, only: add_joint_stiffness, add_joint_forces
+   use pecplas_fe_anchor_assembly, only: add_anchor_stiffness, add_anchor_forces
    use pecplas_base_timers, only: wall_time
    use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    use pecplas_fe_element_context, only: element_context
@@ -77,6 +78,7 @@ contains
       call builder%start(dofs%neq, 16, upper)
       call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, joint_error, part)
       if (allocated(joint_error)) builder%coo%nnz = 0
+      call add_anchor_stiffness(model, dofs, state%anchors, tangent, builder%coo, part)
       call builder%pattern(eptr, elist, k, error)
       if (allocated(joint_error)) call builder%forget()
       if (allocated(error)) return
@@ -308,6 +310,7 @@ contains
       end do
       if (timed) t0 = wall_time()
       call add_joint_forces(model, u, state%joints, fint, error)
+      if (.not. allocated(error)) call add_anchor_forces(model, u, state%anchors, fint)
       if (timed) law_time = law_time + tlaw + (wall_time() - t0)
    end subroutine internal_forces
 

@@ -51,6 +51,17 @@ contains
             end do
          end do
       end if
+      ! anchor nodes too (a node that only a bar holds)
+      if (allocated(model%anchors)) then
+         do i = 1, size(model%anchors)
+            do k = 1, size(model%anchors(i)%conn, 2)
+               do d = 1, 2
+                  if (model%anchors(i)%conn(d, k) > 0) fixed(:, model%anchors(i)%conn(d, k)) = &
+                     .false.
+               end do
+            end do
+         end do
+      end if
       if (allocated(model%supports%node)) then
          do k = 1, size(model%supports%node)
             fixed(model%supports%dof(k), model%supports%node(k)) = .true.

@@ -4,6 +4,7 @@
 module pecplas_fe_state
    use pecplas_base_kinds, only: wp
    use pecplas_joints_state, only: joint_state_t
+   use pecplas_structures_anchor_state, only: anchor_state_t
    implicit none (type, external)
    private
 
@@ -35,6 +36,8 @@ module pecplas_fe_state
       type(set_state_t), allocatable :: sets(:)
       !> Joint sets (PECJOIN), committed and rolled back with the massif.
       type(joint_state_t) :: joints
+      !> Anchors and struts, committed and rolled back with the massif.
+      type(anchor_state_t) :: anchors
       !> True while the points' tangents (massif and joints) are those of the converged
       !> state's last update: set by commit, cleared by rollback (the tangents are then those
       !> of the discarded attempt's last iterate).
@@ -62,6 +65,7 @@ contains
          end associate
       end do
       call this%joints%commit()
+      call this%anchors%commit()
       this%converged_tangents = .true.
    end subroutine state_commit
 
@@ -77,6 +81,7 @@ contains
          end associate
       end do
       call this%joints%rollback()
+      call this%anchors%rollback()
       this%converged_tangents = .false.
    end subroutine state_rollback
 

@@ -5,11 +5,12 @@
 module pecplas_model_phase_plan
    use pecplas_model_type, only: model_t
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, TARGET_ELEMENTS, &
-      TARGET_JOINTS
+      TARGET_JOINTS, TARGET_ANCHORS
    implicit none (type, external)
    private
 
    public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes
+   public :: initial_anchor_activity
 
 contains
 
@@ -53,6 +54,7 @@ contains
          do c = 1, size(model%steps(i)%changes)
             associate (ch => model%steps(i)%changes(c))
                if (ch%set < 1) cycle
+               if (ch%target == TARGET_ANCHORS) cycle
                if (ch%target == TARGET_ELEMENTS) then
                   if (.not. eseen(ch%set)) eactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
                   eseen(ch%set) = .true.
@@ -80,6 +82,7 @@ contains
       do c = 1, size(model%steps(istep)%changes)
          associate (ch => model%steps(istep)%changes(c))
             if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+            if (ch%target == TARGET_ANCHORS) cycle
             if (ch%target == TARGET_ELEMENTS) then
                eactive(ch%set) = ch%kind == CHANGE_ACTIVATE
             else
@@ -99,6 +102,31 @@ contains
          end if
       end do
    end subroutine step_activity
+
+   !> Activity of the anchor sets before the first step: a set whose first activation or
+   !> deactivation in the steps is an *ACTIVATE is inactive until then.
+   pure function initial_anchor_activity(model) result(active)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: active(:)
+      logical, allocatable :: seen(:)
+      integer :: i, c, n
+      n = 0
+      if (allocated(model%anchors)) n = size(model%anchors)
+      allocate (active(n), source=.true.)
+      allocate (seen(n), source=.false.)
+      if (.not. allocated(model%steps)) return
+      do i = 1, size(model%steps)
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= TARGET_ANCHORS .or. ch%set < 1) cycle
+               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+               if (.not. seen(ch%set)) active(ch%set) = ch%kind /= CHANGE_ACTIVATE
+               seen(ch%set) = .true.
+            end associate
+         end do
+      end do
+   end function initial_anchor_activity
 
    !> Nodes of an active element of an active element set or of an active joint set.
    pure function attached_nodes(model, eactive, jactive) result(held)

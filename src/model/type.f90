@@ -13,6 +13,7 @@ module pecplas_model_type
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_units, only: units_t
    use pecplas_model_adapt_request, only: adapt_request_t
+   use pecplas_model_anchors, only: anchor_set_t
    implicit none (type, external)
    private
 
@@ -35,6 +36,8 @@ module pecplas_model_type
       type(interface_law_box_t), allocatable :: laws(:)
       type(katona_contact_t), allocatable :: contacts(:)
       type(joint_set_t), allocatable :: joint_sets(:)
+      !> Anchors and struts (*ANCHOR): bars on the translations of their nodes.
+      type(anchor_set_t), allocatable :: anchors(:)
       type(support_t) :: supports
       !> Initial stresses (*INITIAL_STRESS), applied in order (later entries overwrite).
       type(initial_stress_t), allocatable :: initial_stresses(:)

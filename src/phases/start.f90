@@ -24,7 +24,7 @@ module pecplas_phases_start
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
-      CHANGE_LAW, TARGET_ELEMENTS, START_WISHED
+      CHANGE_LAW, TARGET_ELEMENTS, START_WISHED, TARGET_ANCHORS
    use pecplas_model_phase_plan, only: step_activity, attached_nodes
    use pecplas_problem_type, only: problem_t, set_orphans
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
@@ -41,6 +41,7 @@ module pecplas_phases_start
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_joints_laws_type, only: MODE_STICK, MODE_OPEN
    use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
+   use pecplas_phases_anchors, only: start_anchors
    implicit none (type, external)
    private
 
@@ -66,7 +67,7 @@ contains
       logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:)
       type(mesh_index_t) :: index
       integer :: c, j, p
-      logical :: indexed
+      logical :: indexed, anchors_changed
 
       allocate (lines(0))
       refactorise = .false.
@@ -77,8 +78,12 @@ contains
             trim(PROCEDURE_NAMES(problem%phase%procedure))]
       end if
       indexed = .false.
+      ! anchors: the prestress of the phase before ends, the step's anchor changes apply
+      call start_anchors(model, problem%state, istep, anchors_changed, lines)
+      if (anchors_changed) refactorise = .true.
       associate (step => model%steps(istep), st => problem%state)
          do c = 1, size(step%changes)
+            if (step%changes(c)%target == TARGET_ANCHORS) cycle
             associate (ch => step%changes(c))
                refactorise = .true.
                select case (ch%kind)

@@ -20,6 +20,7 @@ module pecplas_problem_type
    use pecplas_problem_phase, only: phase_state_t
    use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes
    use pecplas_fe_joint_assembly, only: setup_joint_state
+   use pecplas_fe_anchor_assembly, only: setup_anchor_state
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
    implicit none (type, external)
@@ -90,6 +91,7 @@ contains
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
+      call setup_anchor_state(model, problem%state%anchors)
       ! phases: the sets first activated by a step are inactive until then
       problem%phase%phased = is_phased(model)
       if (problem%phase%phased) then

@@ -112,6 +112,16 @@ contains
                end associate
             end do
          end if
+         ! anchors: activity, prestress, force, plastic and reference elongations
+         if (allocated(st%anchors%sets)) then
+            do s = 1, size(st%anchors%sets)
+               associate (a => st%anchors%sets(s))
+                  call data%add('anchor_'//itoa(s), [merge(1.0_wp, 0.0_wp, a%active), &
+                     merge(1.0_wp, 0.0_wp, a%prestressing), a%prestress, a%force, a%plastic, &
+                     a%e0])
+               end associate
+            end do
+         end if
          if (kt%active) then
             call data%add('katona_mode', real(kt%mode, wp))
             call data%add('katona_sign', real(kt%sgn, wp))
@@ -284,6 +294,20 @@ contains
                if (allocated(error)) return
             end associate
          end do
+         if (allocated(st%anchors%sets)) then
+            do s = 1, size(st%anchors%sets)
+               associate (a => st%anchors%sets(s))
+                  call data%get('anchor_'//itoa(s), 3 + 3*size(a%force), v, error)
+                  if (allocated(error)) return
+                  a%active = v(1) /= 0.0_wp
+                  a%prestressing = v(2) /= 0.0_wp
+                  a%prestress = v(3)
+                  a%force = v(4:3 + size(a%force))
+                  a%plastic = v(4 + size(a%force):3 + 2*size(a%force))
+                  a%e0 = v(4 + 2*size(a%force):)
+               end associate
+            end do
+         end if
          if (kt%active) then
             call data%get('katona_mode', kt%nd, v, error)
             if (allocated(error)) return

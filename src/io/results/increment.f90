@@ -6,7 +6,7 @@ module pecplas_io_results_increment
    private
 
    public :: increment_result_t, set_fields_t, gauss_coordinates_t, joint_fields_t, &
-      joint_points_t, limit_point_t
+      joint_points_t, limit_point_t, anchor_fields_t
 
    !> Gauss-point fields of one element set, components (xx, yy, zz, xy) as in the
    !> massif materials (xy strain is engineering shear).
@@ -38,6 +38,14 @@ module pecplas_io_results_increment
       real(wp), allocatable :: error_indicator(:)
    end type joint_fields_t
 
+   !> Forces of one anchor set: N of one anchor (nbar, tension positive) and N / L_s;
+   !> `active`: the set acts in the increment's phase (only those are written).
+   type :: anchor_fields_t
+      character(len=:), allocatable :: name
+      logical :: active = .true.
+      real(wp), allocatable :: force(:), force_per_width(:)
+   end type anchor_fields_t
+
    !> Coordinates and unit tangents (2, np, nel) of the points of one joint set.
    type :: joint_points_t
       real(wp), allocatable :: xy(:, :, :), tangent(:, :, :)
@@ -67,6 +75,8 @@ module pecplas_io_results_increment
       type(set_fields_t), allocatable :: set_fields(:)
       !> One entry per joint set, in model%joint_sets order (absent: no joints).
       type(joint_fields_t), allocatable :: joint_fields(:)
+      !> One entry per anchor set, in model%anchors order (absent: no anchors).
+      type(anchor_fields_t), allocatable :: anchor_fields(:)
       !> Global error estimate and energy norm of the solution (when estimated).
       logical :: estimated = .false.
       real(wp) :: error_estimate = 0.0_wp, energy_norm = 0.0_wp
