@@ -128,10 +128,12 @@ contains
       end do
    end function initial_anchor_activity
 
-   !> Nodes of an active element of an active element set or of an active joint set.
-   pure function attached_nodes(model, eactive, jactive) result(held)
+   !> Nodes of an active element of an active element set or of an active joint set (and
+   !> of an active anchor when `aactive` is given).
+   pure function attached_nodes(model, eactive, jactive, aactive) result(held)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
+      logical, intent(in), optional :: aactive(:)
       logical, allocatable :: held(:)
       integer :: s
       allocate (held(model%mesh%nnode()), source=.false.)
@@ -140,6 +142,10 @@ contains
       end do
       do s = 1, size(jactive)
          if (jactive(s)) held(nodes_of(model%joint_sets(s)%conn)) = .true.
+      end do
+      if (.not. present(aactive)) return
+      do s = 1, size(aactive)
+         if (aactive(s)) held(nodes_of(model%anchors(s)%conn)) = .true.
       end do
    end function attached_nodes
 

@@ -64,7 +64,7 @@ contains
       logical, intent(out) :: refactorise
       character(len=LINE_LEN), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:)
+      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), aactive(:)
       type(mesh_index_t) :: index
       integer :: c, j, p
       logical :: indexed, anchors_changed
@@ -160,7 +160,8 @@ contains
          end do
          ! nodes no active element or joint holds: out of the system
          call set_orphans(model, problem, eactive, jactive)
-         held = attached_nodes(model, eactive, jactive)
+         aactive = st%anchors%sets%active
+         held = attached_nodes(model, eactive, jactive, aactive)
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
             problem%system%pattern_disp, error, eactive)

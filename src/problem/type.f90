@@ -141,7 +141,10 @@ contains
       logical, intent(in) :: eactive(:), jactive(:)
       logical, allocatable :: held(:)
       integer, allocatable :: eq(:, :)
-      held = attached_nodes(model, eactive, jactive)
+      logical, allocatable :: aactive(:)
+      allocate (aactive(0))
+      if (allocated(problem%state%anchors%sets)) aactive = problem%state%anchors%sets%active
+      held = attached_nodes(model, eactive, jactive, aactive)
       eq = problem%system%dofs%eq
       problem%state%orphan_eq = pack(eq, eq > 0 .and. spread(.not. held, 1, 2))
    end subroutine set_orphans

@@ -158,11 +158,13 @@ contains
       character(len=:), allocatable :: names(:), msg
       real(wp) :: deck_sum
       logical :: guarded
-      integer :: nj
+      integer :: nj, na
 
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
-      names = restart_names(size(problem%state%sets), nj)
+      na = 0
+      if (allocated(problem%state%anchors%sets)) na = size(problem%state%anchors%sets)
+      names = restart_names(size(problem%state%sets), nj, na)
       ! a damaged file may crash the HDF5 library itself: an input error, not a crash
       guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
          ': the HDF5 library crashed reading it (the file is damaged)')
@@ -452,9 +454,10 @@ contains
       end if
    end subroutine get_operator
 
-   !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
-   pure function restart_names(nsets, njoint) result(names)
-      integer, intent(in) :: nsets, njoint
+   !> Names of the datasets a problem with `nsets` element sets, `njoint` joint sets and
+   !> `nanchor` anchor sets reads.
+   pure function restart_names(nsets, njoint, nanchor) result(names)
+      integer, intent(in) :: nsets, njoint, nanchor
       character(len=:), allocatable :: names(:)
       character(len=32), allocatable :: list(:)
       integer :: s
@@ -469,6 +472,9 @@ contains
       do s = 1, njoint
          list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &
             'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s), 'joint_tangent_'//itoa(s)]
+      end do
+      do s = 1, nanchor
+         list = [character(len=32) :: list, 'anchor_'//itoa(s)]
       end do
       names = list
    end function restart_names

@@ -125,6 +125,7 @@ contains
             'strain only (*ANALYSIS, TYPE=PLANE_STRAIN)', error)
          return
       end if
+      deallocate (model%anchors)
       allocate (model%anchors(size(state%anchors)))
       do r = 1, size(state%anchors)
          call one_anchor(state, model, state%anchors(r), model%anchors(r), error)
@@ -178,6 +179,7 @@ contains
          end if
       end do
       set%conn = conn
+      if (allocated(set%length)) deallocate (set%length)
       allocate (set%length(size(conn, 2)), set%direction(2, size(conn, 2)))
       do i = 1, size(conn, 2)
          if (set%kind == ANCHOR_FIXED_END) then

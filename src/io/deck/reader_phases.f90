@@ -245,8 +245,8 @@ contains
             call line_error(state, raw%at, "no anchor '"//raw%set//"'; known sets and "// &
                'anchors:'//list, error)
          else
-            call line_error(state, raw%at, "no element set, joint set or anchor '"//raw%set// &
-               "'; known sets and anchors:"//list, error)
+            call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
+               "' (nor anchor); known sets and anchors:"//list, error)
          end if
          return
       end if
@@ -406,7 +406,7 @@ contains
                call step_activity_one(step%changes(c), eact, jact)
             end do
             call step_activity(model, s, eact, jact, dropped)
-            held = attached_nodes(model, eact, jact)
+            held = attached_nodes(model, eact, jact, aact)
             do k = 1, size(step%pattern)
                factors(step%pattern(k)) = step%target(k)
             end do
