@@ -8,7 +8,7 @@ module pecplas_model_phases
 
    public :: phase_change_t
    public :: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES
-   public :: TARGET_ELEMENTS, TARGET_JOINTS
+   public :: TARGET_ELEMENTS, TARGET_JOINTS, TARGET_PLATES
    public :: START_ZERO, START_WISHED
 
    !> Kinds of change, and their deck keywords CHANGE_NAMES(kind).
@@ -16,9 +16,9 @@ module pecplas_model_phases
       CHANGE_LAW = 4
    character(len=*), parameter :: CHANGE_NAMES(4) = [character(len=16) :: '*DEACTIVATE', &
       '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW']
-   !> What a change acts on: an element set (model%mesh%esets) or a joint set
-   !> (model%joint_sets).
-   integer, parameter :: TARGET_ELEMENTS = 1, TARGET_JOINTS = 2
+   !> What a change acts on: an element set (model%mesh%esets), a joint set
+   !> (model%joint_sets) or a plate set (model%plates: activated and deactivated only).
+   integer, parameter :: TARGET_ELEMENTS = 1, TARGET_JOINTS = 2, TARGET_PLATES = 3
    !> How an activated element set starts: stress-free, or with the initial (*INITIAL_STRESS)
    !> stress of the ground it replaces ("wished in place").
    integer, parameter :: START_ZERO = 0, START_WISHED = 1

@@ -15,8 +15,10 @@ module pecplas_io_deck_reader_phases
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
+      TARGET_PLATES, &
       START_WISHED
-   use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes
+   use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes, &
+      plate_activity
    implicit none (type, external)
    private
 
@@ -201,6 +203,12 @@ contains
          end do
          if (ch%set > 0) ch%target = TARGET_JOINTS
       end if
+      if (ch%set == 0 .and. allocated(model%plates)) then
+         do j = 1, size(model%plates)
+            if (same_name(model%plates(j)%name, raw%set)) ch%set = j
+         end do
+         if (ch%set > 0) ch%target = TARGET_PLATES
+      end if
       if (ch%set == 0) then
          list = ''
          do k = 1, size(model%mesh%esets)
@@ -211,8 +219,24 @@ contains
                call add_name(list, model%joint_sets(k)%name)
             end do
          end if
-         call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
+         if (allocated(model%plates)) then
+            do k = 1, size(model%plates)
+               call add_name(list, model%plates(k)%name)
+            end do
+         end if
+         call line_error(state, raw%at, "no element set, joint set or plate set '"//raw%set// &
             "'; known sets:"//list, error)
+         return
+      end if
+      if (ch%target == TARGET_PLATES .and. ch%kind /= CHANGE_ACTIVATE .and. &
+          ch%kind /= CHANGE_DEACTIVATE) then
+         call line_error(state, raw%at, "'"//raw%set//"' is a plate set: a phase activates "// &
+            'or deactivates it (its section does not change)', error)
+         return
+      end if
+      if (ch%target == TARGET_PLATES .and. ch%start == START_WISHED) then
+         call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets; plate "// &
+            "set '"//raw%set//"' starts free of forces", error)
          return
       end if
       select case (ch%kind)
@@ -273,12 +297,13 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eact(:), jact(:), dropped(:), held(:)
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), pact(:)
       integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
       logical :: on
       call initial_activity(model, eact, jact)
+      pact = plate_activity(model, 0)
       emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
       allocate (jlaw(size(jact)))
       do c = 1, size(jact)
@@ -294,6 +319,8 @@ contains
                   if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
                      if (ch%target == TARGET_ELEMENTS) then
                         on = eact(ch%set)
+                     else if (ch%target == TARGET_PLATES) then
+                        on = pact(ch%set)
                      else
                         on = jact(ch%set)
                      end if
@@ -324,10 +351,10 @@ contains
                   end if
                end associate
                ! each change applies before the next is checked (a set named twice)
-               call step_activity_one(step%changes(c), eact, jact)
+               call step_activity_one(step%changes(c), eact, jact, pact)
             end do
             call step_activity(model, s, eact, jact, dropped)
-            held = attached_nodes(model, eact, jact)
+            held = attached_nodes(model, eact, jact, pact)
             do k = 1, size(step%pattern)
                factors(step%pattern(k)) = step%target(k)
             end do
@@ -340,11 +367,13 @@ contains
       end do
    end subroutine check_phases
 
-   pure subroutine step_activity_one(ch, eact, jact)
+   pure subroutine step_activity_one(ch, eact, jact, pact)
       type(phase_change_t), intent(in) :: ch
-      logical, intent(inout) :: eact(:), jact(:)
+      logical, intent(inout) :: eact(:), jact(:), pact(:)
       if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) return
-      if (ch%target == TARGET_ELEMENTS) then
+      if (ch%target == TARGET_PLATES) then
+         pact(ch%set) = ch%kind == CHANGE_ACTIVATE
+      else if (ch%target == TARGET_ELEMENTS) then
          eact(ch%set) = ch%kind == CHANGE_ACTIVATE
       else
          jact(ch%set) = ch%kind == CHANGE_ACTIVATE
