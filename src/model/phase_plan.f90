@@ -5,12 +5,13 @@
 module pecplas_model_phase_plan
    use pecplas_model_type, only: model_t
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, TARGET_ELEMENTS, &
-      TARGET_JOINTS, TARGET_ANCHORS
+      TARGET_JOINTS, TARGET_ANCHORS, TARGET_PLATES
    implicit none (type, external)
    private
 
    public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes
    public :: initial_anchor_activity
+   public :: plate_activity
 
 contains
 
@@ -53,7 +54,7 @@ contains
          if (.not. allocated(model%steps(i)%changes)) cycle
          do c = 1, size(model%steps(i)%changes)
             associate (ch => model%steps(i)%changes(c))
-               if (ch%set < 1) cycle
+               if (ch%set < 1 .or. ch%target == TARGET_PLATES) cycle
                if (ch%target == TARGET_ANCHORS) cycle
                if (ch%target == TARGET_ELEMENTS) then
                   if (.not. eseen(ch%set)) eactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
@@ -82,7 +83,7 @@ contains
       do c = 1, size(model%steps(istep)%changes)
          associate (ch => model%steps(istep)%changes(c))
             if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
-            if (ch%target == TARGET_ANCHORS) cycle
+            if (ch%target == TARGET_ANCHORS .or. ch%target == TARGET_PLATES) cycle
             if (ch%target == TARGET_ELEMENTS) then
                eactive(ch%set) = ch%kind == CHANGE_ACTIVATE
             else
@@ -128,12 +129,13 @@ contains
       end do
    end function initial_anchor_activity
 
-   !> Nodes of an active element of an active element set or of an active joint set (and
-   !> of an active anchor when `aactive` is given).
-   pure function attached_nodes(model, eactive, jactive, aactive) result(held)
+   !> Nodes of an active element of an active element set, of an active joint set or of an
+   !> active plate set (`pactive`; absent: every plate), and of an active anchor set when
+   !> `aactive` is given.
+   pure function attached_nodes(model, eactive, jactive, pactive, aactive) result(held)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
-      logical, intent(in), optional :: aactive(:)
+      logical, intent(in), optional :: pactive(:), aactive(:)
       logical, allocatable :: held(:)
       integer :: s
       allocate (held(model%mesh%nnode()), source=.false.)
@@ -143,11 +145,56 @@ contains
       do s = 1, size(jactive)
          if (jactive(s)) held(nodes_of(model%joint_sets(s)%conn)) = .true.
       end do
-      if (.not. present(aactive)) return
-      do s = 1, size(aactive)
-         if (aactive(s)) held(nodes_of(model%anchors(s)%conn)) = .true.
+      if (present(aactive)) then
+         do s = 1, size(aactive)
+            if (aactive(s)) held(nodes_of(model%anchors(s)%conn)) = .true.
+         end do
+      end if
+      if (.not. allocated(model%plates)) return
+      do s = 1, size(model%plates)
+         if (present(pactive)) then
+            if (.not. pactive(s)) cycle
+         end if
+         held(nodes_of(model%plates(s)%conn)) = .true.
       end do
    end function attached_nodes
+
+   !> Activity of the plate sets during step `istep` (after its changes; istep = 0: before
+   !> the first step): a plate whose first mention in the steps is an *ACTIVATE is not part
+   !> of the model until then.
+   pure function plate_activity(model, istep) result(pactive)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep
+      logical, allocatable :: pactive(:)
+      logical, allocatable :: seen(:)
+      integer :: i, c, n
+      n = 0
+      if (allocated(model%plates)) n = size(model%plates)
+      allocate (pactive(n), source=.true.)
+      allocate (seen(n), source=.false.)
+      if (.not. allocated(model%steps)) return
+      ! before the first step
+      do i = 1, size(model%steps)
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= TARGET_PLATES .or. ch%set < 1) cycle
+               if (.not. seen(ch%set)) pactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
+               seen(ch%set) = .true.
+            end associate
+         end do
+      end do
+      do i = 1, min(istep, size(model%steps))
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= TARGET_PLATES .or. ch%set < 1) cycle
+               if (ch%kind == CHANGE_ACTIVATE) pactive(ch%set) = .true.
+               if (ch%kind == CHANGE_DEACTIVATE) pactive(ch%set) = .false.
+            end associate
+         end do
+      end do
+   end function plate_activity
 
    !> Nodes of any massif element (active or not).
    pure function massif_nodes(model) result(held)

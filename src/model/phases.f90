@@ -10,7 +10,7 @@ module pecplas_model_phases
 
    public :: phase_change_t
    public :: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES
-   public :: TARGET_ELEMENTS, TARGET_JOINTS
+   public :: TARGET_ELEMENTS, TARGET_JOINTS, TARGET_PLATES
    public :: CHANGE_PRESTRESS, TARGET_ANCHORS
    public :: START_ZERO, START_WISHED
 
@@ -20,8 +20,10 @@ module pecplas_model_phases
    character(len=*), parameter :: CHANGE_NAMES(5) = [character(len=16) :: '*DEACTIVATE', &
       '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PRESTRESS']
    !> What a change acts on: an element set (model%mesh%esets), a joint set
-   !> (model%joint_sets) or an anchor set (model%anchors).
-   integer, parameter :: TARGET_ELEMENTS = 1, TARGET_JOINTS = 2, TARGET_ANCHORS = 3
+   !> (model%joint_sets), a plate set (model%plates: activated and deactivated only) or an
+   !> anchor set (model%anchors).
+   integer, parameter :: TARGET_ELEMENTS = 1, TARGET_JOINTS = 2, TARGET_PLATES = 3, &
+      TARGET_ANCHORS = 4
    !> How an activated element set starts: stress-free, or with the initial (*INITIAL_STRESS)
    !> stress of the ground it replaces ("wished in place").
    integer, parameter :: START_ZERO = 0, START_WISHED = 1

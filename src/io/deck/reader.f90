@@ -28,17 +28,18 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
    use pecplas_io_deck_reader_anchors, only: read_anchor, resolve_anchors
+   use pecplas_io_deck_reader_plates, only: read_plate, resolve_plates, extend_rotations
    implicit none (type, external)
    private
 
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(27) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(28) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
-      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*ANCHOR', '*PRESTRESS']
+      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PLATE', '*ANCHOR', '*PRESTRESS']
 
 contains
 
@@ -98,6 +99,9 @@ contains
 
       call build_mesh(state, model, error)
       if (allocated(error)) return
+      ! plates before supports: a rotation support needs the nodes that carry a rotation
+      call resolve_plates(state, model, error)
+      if (allocated(error)) return
       if (.not. allocated(state%steps)) then
          call deck_error(error, path, 0, '*STEP', 'no *STEP: the deck must define at least '// &
             'one step ("*STEP, NAME=..., INCREMENTS=n" with "pattern, target_factor" lines)')
@@ -119,6 +123,7 @@ contains
       ! last: splitting nodes for generated joints extends supports and patterns
       call resolve_joints(state, model, error)
       if (allocated(error)) return
+      call extend_rotations(model)
       ! phase changes name joint sets too
       call resolve_phases(state, model, error)
       if (allocated(error)) return
@@ -192,6 +197,8 @@ contains
          call read_joints(state, block, error)
       case ('*ANCHOR')
          call read_anchor(state, block, error)
+      case ('*PLATE')
+         call read_plate(state, block, error)
       case default
          list = ''
          do i = 1, size(KNOWN_KEYWORDS)

@@ -15,9 +15,9 @@ module pecplas_io_deck_reader_phases
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
-      START_WISHED, CHANGE_PRESTRESS, TARGET_ANCHORS
+      START_WISHED, CHANGE_PRESTRESS, TARGET_ANCHORS, TARGET_PLATES
    use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes, &
-      initial_anchor_activity
+      initial_anchor_activity, plate_activity
    implicit none (type, external)
    private
 
@@ -226,6 +226,12 @@ contains
          end do
          if (ch%set > 0) ch%target = TARGET_ANCHORS
       end if
+      if (ch%set == 0 .and. allocated(model%plates)) then
+         do j = 1, size(model%plates)
+            if (same_name(model%plates(j)%name, raw%set)) ch%set = j
+         end do
+         if (ch%set > 0) ch%target = TARGET_PLATES
+      end if
       if (ch%set == 0) then
          list = ''
          do k = 1, size(model%mesh%esets)
@@ -241,17 +247,33 @@ contains
                call add_name(list, model%anchors(k)%name)
             end do
          end if
+         if (allocated(model%plates)) then
+            do k = 1, size(model%plates)
+               call add_name(list, model%plates(k)%name)
+            end do
+         end if
          if (ch%kind == CHANGE_PRESTRESS) then
-            call line_error(state, raw%at, "no anchor '"//raw%set//"'; known sets and "// &
-               'anchors:'//list, error)
+            call line_error(state, raw%at, "no anchor '"//raw%set//"'; known sets, plates "// &
+               'and anchors:'//list, error)
          else
             call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
-               "' (nor anchor); known sets and anchors:"//list, error)
+               "' (nor plate set or anchor); known sets, plates and anchors:"//list, error)
          end if
          return
       end if
       if (ch%target == TARGET_ANCHORS .or. ch%kind == CHANGE_PRESTRESS) then
          call resolve_anchor_change(state, model, raw, ch, error)
+         return
+      end if
+      if (ch%target == TARGET_PLATES .and. ch%kind /= CHANGE_ACTIVATE .and. &
+          ch%kind /= CHANGE_DEACTIVATE) then
+         call line_error(state, raw%at, "'"//raw%set//"' is a plate set: a phase activates "// &
+            'or deactivates it (its section does not change)', error)
+         return
+      end if
+      if (ch%target == TARGET_PLATES .and. ch%start == START_WISHED) then
+         call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets; plate "// &
+            "set '"//raw%set//"' starts free of forces", error)
          return
       end if
       select case (ch%kind)
@@ -345,13 +367,14 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), aact(:)
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), aact(:), pact(:)
       integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
       logical :: on
       call initial_activity(model, eact, jact)
       aact = initial_anchor_activity(model)
+      pact = plate_activity(model, 0)
       emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
       allocate (jlaw(size(jact)))
       do c = 1, size(jact)
@@ -373,6 +396,8 @@ contains
                   if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
                      if (ch%target == TARGET_ELEMENTS) then
                         on = eact(ch%set)
+                     else if (ch%target == TARGET_PLATES) then
+                        on = pact(ch%set)
                      else
                         on = jact(ch%set)
                      end if
@@ -403,10 +428,10 @@ contains
                   end if
                end associate
                ! each change applies before the next is checked (a set named twice)
-               call step_activity_one(step%changes(c), eact, jact)
+               call step_activity_one(step%changes(c), eact, jact, pact)
             end do
             call step_activity(model, s, eact, jact, dropped)
-            held = attached_nodes(model, eact, jact, aact)
+            held = attached_nodes(model, eact, jact, pact, aact)
             do k = 1, size(step%pattern)
                factors(step%pattern(k)) = step%target(k)
             end do
@@ -444,11 +469,13 @@ contains
       end select
    end subroutine check_anchor_change
 
-   pure subroutine step_activity_one(ch, eact, jact)
+   pure subroutine step_activity_one(ch, eact, jact, pact)
       type(phase_change_t), intent(in) :: ch
-      logical, intent(inout) :: eact(:), jact(:)
+      logical, intent(inout) :: eact(:), jact(:), pact(:)
       if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) return
-      if (ch%target == TARGET_ELEMENTS) then
+      if (ch%target == TARGET_PLATES) then
+         pact(ch%set) = ch%kind == CHANGE_ACTIVATE
+      else if (ch%target == TARGET_ELEMENTS) then
          eact(ch%set) = ch%kind == CHANGE_ACTIVATE
       else
          jact(ch%set) = ch%kind == CHANGE_ACTIVATE

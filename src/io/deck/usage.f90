@@ -115,6 +115,17 @@ contains
             end do
          end do
       end if
+      ! a *PLATE's NODES= or EDGES=
+      if (allocated(state%plate_sets)) then
+         do i = 1, size(state%plate_sets)
+            if (edges .and. allocated(state%plate_sets(i)%edges)) then
+               if (same_name(state%plate_sets(i)%edges, name)) used = .true.
+            end if
+            if (.not. edges .and. allocated(state%plate_sets(i)%nodes)) then
+               if (same_name(state%plate_sets(i)%nodes, name)) used = .true.
+            end if
+         end do
+      end if
       if (edges .and. allocated(state%joint_sets)) then
          do i = 1, size(state%joint_sets)
             if (allocated(state%joint_sets(i)%edges)) then
