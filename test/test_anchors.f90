@@ -39,6 +39,7 @@ contains
                new_unittest('tension_limit', test_limit), &
                new_unittest('wall_in_soil_equilibrium', test_wall), &
                new_unittest('restart_after_prestress', test_restart), &
+               new_unittest('propped_cantilever', test_propped), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_anchors
 
@@ -314,6 +315,46 @@ contains
       call check_close(error, other%state%u(1, 2), ref%state%u(1, 2), 1.0e-10_wp, &
          'displacement after restart')
    end subroutine test_restart
+
+   !> A plate cantilever (L = 10, EI = 1e5, EA = 1e7: GA_s = 5/12 EA, ten 2-node elements)
+   !> clamped at x = 0 under q = 10 downwards, propped at its tip by a fixed-end anchor
+   !> (EA_a = 2e6, LENGTH = 5, spacing 2: k = EA_a / (5 * 2) per unit width). Compatibility
+   !> of the tip: R (c + 1/k) = delta_q with the Timoshenko cantilever's tip deflection
+   !> delta_q = q L^4 / (8 EI) + q L^2 / (2 GA_s) and compliance c = L^3 / (3 EI) + L / GA_s
+   !> (R -> 3/8 q L for a rigid prop and no shear deformation). The plate element's nodal
+   !> values are exact under a uniform load and the problem is linear: 1e-10.
+   subroutine test_propped(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: L = 10.0_wp, Q = 10.0_wp, EI = 1.0e5_wp, GAS = 5.0_wp/12.0_wp*1.0e7_wp
+      real(wp) :: k, dq, c, r
+      integer :: code, u, i
+      call make_directories(OUT)
+      open (newunit=u, file=OUT//'propped.inp', status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'propped cantilever', '*NODES'
+      do i = 0, 10
+         write (u, '(i0,a,i0,a)') i + 1, ', ', i, ', 0'
+      end do
+      write (u, '(a)') '*NSET, NAME=beam, GENERATE', '1, 11, 1', &
+         '*PLATE, SET=beam, NODES=beam, EA=1.0e7, EI=1.0e5', &
+         '*ANCHOR, NAME=prop, TYPE=FIXED_END, EA=2e6, LENGTH=5, ANGLE=-90, SPACING=2', '11', &
+         '*BOUNDARY', '1, ALL', '*LOAD, NAME=q, TYPE=PLATE_LOAD', 'beam, 0, -10', &
+         '*SOLVER, TOLERANCE=1e-10', '*STEP, NAME=load, INCREMENTS=1', 'q, 1.0', '*END STEP'
+      close (u)
+      code = run_deck(OUT//'propped.inp', OUT//'propped.h5', .true., model, problem)
+      call check(error, code == 0, 'propped cantilever runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      k = 2.0e6_wp/(5.0_wp*LS)
+      dq = Q*L**4/(8.0_wp*EI) + Q*L**2/(2.0_wp*GAS)
+      c = L**3/(3.0_wp*EI) + L/GAS
+      r = dq/(c + 1.0_wp/k)
+      ! the prop is in compression: N = -R L_s (force of one prop)
+      call check_close(error, problem%state%anchors%sets(1)%force(1), -r*LS, 1.0e-10_wp, &
+         'prop force (redundant of the propped cantilever)')
+      if (allocated(error)) return
+      call check(error, abs(r/(0.375_wp*Q*L) - 1.0_wp) < 0.01_wp, 'close to 3/8 q L')
+   end subroutine test_propped
 
    !> Bad anchor decks: exit 2, the file:line of the culprit and the message.
    subroutine test_bad_decks(error)
