@@ -8,7 +8,8 @@
 !>
 !> The line's edges are ordered into chains and oriented along them; a joint is made on
 !> each face of every line edge (face 1 the original nodes, face 2 the copies of the body
-!> on that face, oriented with that body on the left of 1 -> 2, (B.8) order). With
+!> on that face, oriented with that body on the left of 1 -> 2, (B.8) order); the edge set
+!> then names the line's edges on its left body (the body on the left of the chains). With
 !> `extend` > 0 the cut goes on from each end of a chain along the element sides that
 !> continue it (within 30 degrees), over that length or up to the boundary: along those
 !> extension edges one joint joins the right body (face 1) to the left body (face 2)
@@ -96,6 +97,13 @@ contains
       call split_nodes(mesh, cut, inc_ptr, inc, origin, res, error)
       if (allocated(error)) return
       call make_joints(mesh, cut, nline, owner, res)
+      ! the edge set: the line's edges on its left body (its original nodes are on no
+      ! element side any more), in the order of the chains
+      if (nen == 3) then
+         mesh%edge_sets(ke)%nodes = res%conn([4, 3, 6], 1:nline)
+      else
+         mesh%edge_sets(ke)%nodes = res%conn([4, 3], 1:nline)
+      end if
    end subroutine split_both_faces
 
    !> Mask over the nodes 1..nn: the nodes of `edges` (a 0 is no node).
@@ -399,13 +407,15 @@ contains
       integer, intent(in) :: e(2), v
       integer, intent(out) :: pairs(2, 2), n
       integer :: nc, i
+      logical :: mid
       n = 0
       pairs = 0
       associate (conn => mesh%esets(e(1))%conn(:, e(2)))
          nc = corner_count(mesh%esets(e(1))%etype)
          do i = 1, nc
-            if (conn(i) == v .or. conn(mod(i, nc) + 1) == v .or. &
-                (size(conn) == 2*nc .and. conn(nc + i) == v)) then
+            mid = .false.
+            if (size(conn) == 2*nc) mid = conn(nc + i) == v
+            if (conn(i) == v .or. conn(mod(i, nc) + 1) == v .or. mid) then
                if (n == 2) exit
                n = n + 1
                pairs(:, n) = [conn(i), conn(mod(i, nc) + 1)]
