@@ -228,6 +228,8 @@ contains
          worst = max(worst, norm2(fall(:, v)))
          ref = max(ref, norm2(fnp(:, v)))
       end do
+      write (*, '(a,es10.3,a,es10.3)') '  plate nodes: largest joint force ', ref, &
+         ', largest |f_plate + f_joints| ', worst
       call check(error, ref > 0.0_wp, 'the joints load the plate')
       if (allocated(error)) return
       call check_close(error, worst, 0.0_wp, 0.0_wp, 'plate + joint forces at the plate nodes', &

@@ -32,8 +32,9 @@ module pecplas_model_mesh_split_faces
    integer, parameter :: FACE_LEFT = 1, FACE_RIGHT = 2, FACE_EXTENSION = 3
 
    type :: faces_result_t
-      !> Joint connectivity (2 nen, njoint) in (B.8) order, and the face of each joint.
-      integer, allocatable :: conn(:, :), face(:)
+      !> Joint connectivity (2 nen, njoint) in (B.8) order, the face of each joint and the
+      !> element set of the body on its face 2.
+      integer, allocatable :: conn(:, :), face(:), body_set(:)
       !> Nodes created (original, copy).
       integer, allocatable :: created(:, :)
       !> copies(:, node): the (up to 2) copies of each original node, 0 where none.
@@ -444,7 +445,7 @@ contains
       integer :: f, nen, nj, face
       nen = size(cut, 1)
       nj = 2*nline + (size(cut, 2) - nline)
-      allocate (res%conn(2*nen, nj), res%face(nj))
+      allocate (res%conn(2*nen, nj), res%face(nj), res%body_set(nj))
       nj = 0
       do face = FACE_LEFT, FACE_EXTENSION
          do f = 1, size(cut, 2)
@@ -453,6 +454,7 @@ contains
             r = body_nodes(mesh, cut(:, f), owner(1, 2, f), owner(2, 2, f))
             nj = nj + 1
             res%face(nj) = face
+            res%body_set(nj) = owner(1, merge(2, 1, face == FACE_RIGHT), f)
             select case (face)
             case (FACE_LEFT)
                res%conn(1:4, nj) = [cut(1, f), cut(2, f), l(2), l(1)]
