@@ -8,6 +8,7 @@ program tester
    use test_s1, only: collect_s1
    use test_initial, only: collect_initial
    use test_phases, only: collect_phases
+   use test_plates, only: collect_plates
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
    use test_estimator, only: collect_estimator
@@ -150,6 +151,7 @@ program tester
    suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
    suites = [suites, new_testsuite('linalg_omp_serial', collect_linalg_omp_serial)]
    suites = [suites, new_testsuite('cmd_args', collect_cmd_args)]
+   suites = [suites, new_testsuite('plates', collect_plates)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

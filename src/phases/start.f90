@@ -65,7 +65,7 @@ contains
       logical, intent(out) :: refactorise
       character(len=LINE_LEN), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:)
+      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), pactive(:)
       type(mesh_index_t) :: index
       integer :: c, j, p
       logical :: indexed
@@ -165,10 +165,12 @@ contains
          end do
          ! nodes no active element or joint holds: out of the system
          call set_orphans(model, problem, eactive, jactive)
-         held = attached_nodes(model, eactive, jactive, st%plates%sets%active)
+         allocate (pactive(0))
+         if (allocated(st%plates%sets)) pactive = st%plates%sets%active
+         held = attached_nodes(model, eactive, jactive, pactive)
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
-            problem%system%pattern_disp, error, eactive, st%plates%sets%active)
+            problem%system%pattern_disp, error, eactive, pactive)
          if (allocated(error)) return
          call held_load(model, problem, eactive, error)
          if (allocated(error)) return

@@ -143,11 +143,13 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:), jactive(:)
-      logical, allocatable :: held(:)
+      logical, allocatable :: held(:), pactive(:)
       integer, allocatable :: eq(:, :)
       integer :: s, e, k, node
+      allocate (pactive(0))
+      if (allocated(problem%state%plates%sets)) pactive = problem%state%plates%sets%active
       allocate (held(nodal_columns(model)), source=.false.)
-      held(1:model%mesh%nnode()) = attached_nodes(model, eactive, jactive)
+      held(1:model%mesh%nnode()) = attached_nodes(model, eactive, jactive, pactive)
       ! an active plate holds its nodes and their rotations
       if (allocated(problem%state%plates%sets)) then
          do s = 1, size(problem%state%plates%sets)
