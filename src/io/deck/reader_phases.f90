@@ -224,8 +224,8 @@ contains
                call add_name(list, model%plates(k)%name)
             end do
          end if
-         call line_error(state, raw%at, "no element set, joint set or plate set '"//raw%set// &
-            "'; known sets:"//list, error)
+         call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
+            "' (nor plate set); known sets:"//list, error)
          return
       end if
       if (ch%target == TARGET_PLATES .and. ch%kind /= CHANGE_ACTIVATE .and. &
