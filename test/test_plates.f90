@@ -38,6 +38,7 @@ contains
                new_unittest('cantilever_uniform_3node', test_uniform3), &
                new_unittest('thin_beam_no_locking', test_thin), &
                new_unittest('axisymmetric_cylinder', test_cylinder), &
+               new_unittest('hetenyi_winkler_beam', test_hetenyi), &
                new_unittest('plastic_hinge_fixed_fixed', test_hinge), &
                new_unittest('dof_map', test_dof_map), &
                new_unittest('restart_plate_activation', test_restart), &
@@ -258,6 +259,56 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_cylinder
+
+   !> Hetényi: an infinite beam on a Winkler foundation k under a point load P: deflection
+   !> P beta / 2k and moment P / 4 beta under the load, beta = (k / 4 EI)^(1/4). A beam of
+   !> length 40 (beta L / 2 = 8: the ends' influence e^-8 ~ 3e-4), 320 elements (beta h = 0.05:
+   !> the springs lumped at the nodes err by ~(beta h)^2), EA = 1e8 (shear flexibility
+   !> EI beta^2 / GAs = 4e-4 of the deflection), spring joints (elastic law, KN = k) to held
+   !> nodes under the plate: within 1 %.
+   subroutine test_hetenyi(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: K = 1.0e4_wp, P = 100.0_wp, LB = 40.0_wp
+      integer, parameter :: N = 320
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(plate_fields_t) :: f
+      character(len=:), allocatable :: deck
+      real(wp) :: beta, w0, m0
+      integer :: u, i, mid
+      deck = OUT//'hetenyi.inp'
+      call make_directories(OUT)
+      mid = N/2 + 1
+      open (newunit=u, file=deck, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'beam on Winkler springs', '*NODES'
+      do i = 0, N
+         write (u, '(i0,a,es24.16,a)') i + 1, ', ', LB*i/N - LB/2, ', 0.0'
+         write (u, '(i0,a,es24.16,a)') N + 2 + i, ', ', LB*i/N - LB/2, ', 0.0'
+      end do
+      write (u, '(a)') '*NSET, NAME=beam, GENERATE', '1, '//itoa(N + 1)//', 1', &
+         '*NSET, NAME=ground, GENERATE', itoa(N + 2)//', '//itoa(2*N + 2)//', 1', &
+         '*PLATE, SET=beam, NODES=beam, EA=1.0e8, EI=1.0e5', &
+         '*INTERFACE_LAW, NAME=winkler, TYPE=ELASTIC', 'KN = 1.0e4, KT = 1.0', &
+         '*JOINTS, TYPE=SPRING, SET=springs, LAW=winkler, ANGLE=180'
+      do i = 0, N
+         write (u, '(i0,a,i0,a,i0)') 1000 + i, ', ', i + 1, ', ', N + 2 + i
+      end do
+      write (u, '(a)') '*BOUNDARY', 'ground, XY', itoa(mid)//', X', &
+         '*LOAD, NAME=p, TYPE=FORCE', itoa(mid)//', Y, -100.0', '*STEP, NAME=load', 'p, 1.0'
+      close (u)
+      call run_plate(deck, model, problem, f, error)
+      if (allocated(error)) return
+      beta = (K/(4.0_wp*1.0e5_wp))**0.25_wp
+      ! internal numbers follow the *NODES lines (beam and ground nodes alternate)
+      i = findloc(model%mesh%node_id, mid, 1)
+      w0 = -problem%state%u(2, i)
+      m0 = f%node_forces(3, findloc(f%node_index, i, 1))
+      write (*, '(a,4es23.15)') '        Hetenyi: w0, closed form, M0, closed form ', w0, &
+         P*beta/(2.0_wp*K), m0, P/(4.0_wp*beta)
+      call check_close(error, w0, P*beta/(2.0_wp*K), 1.0e-2_wp, 'deflection under the load')
+      if (.not. allocated(error)) call check_close(error, m0, P/(4.0_wp*beta), 1.0e-2_wp, &
+         'moment under the load')
+   end subroutine test_hetenyi
 
    !> Fixed-fixed beam with Mp = 100 under a uniform load, arc-length past the collapse load
    !> q_c = 16 Mp / L^2 = 16: the run stops with 'limit load' (the existing limit detection)
