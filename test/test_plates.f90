@@ -1,8 +1,8 @@
 !> Plates (beams with rotations, doc/theory.md §11): Timoshenko cantilevers against the closed
 !> form (the linked 2-node element and the reduced-integration 3-node element are exact at the
 !> nodes for a tip load; the 2-node element also for a uniform load), a thin beam free of shear
-!> locking, an axisymmetric cylinder under internal pressure, the plastic hinge of a fixed-fixed
-!> beam, the dof map (rotations only on plate nodes, a deck without plates unchanged), restart
+!> locking, an axisymmetric cylinder under internal pressure, a beam on Winkler springs
+!> (Hetényi), the plastic hinges of a fixed-fixed beam, the dof map (rotations only on plate nodes, a deck without plates unchanged), restart
 !> across a phase that activates a plate, and bad plate decks (exit 2 with file:line).
 module test_plates
    use pecplas_base_kinds, only: wp
@@ -312,40 +312,34 @@ contains
 
    !> Fixed-fixed beam with Mp = 100 under a uniform load, arc-length past the collapse load
    !> q_c = 16 Mp / L^2 = 16: the run stops with 'limit load' (the existing limit detection)
-   !> at a load above q_c. A displacement element spreads each hinge over the element beside
-   !> the node, so the load converges to q_c at first order in h: on 40 and 80 elements
-   !> (measured 16.84, 16.41) the excess halves with h (ratio 2 within 10 %) and is below
-   !> 2.5 h/L q_c.
+   !> within 1 % of q_c on 20 elements. The hinges form at the element ends (nodes 1, 11, 21:
+   !> the exact mechanism), the consistent loads' end moments cancel at interior nodes and are
+   !> held at the clamps, so the only departure is the arc-length limit detection's own
+   !> (measured 16.0003).
    subroutine test_hinge(error)
       type(error_t), allocatable, intent(out) :: error
       real(wp), parameter :: QC = 16.0_wp
       type(model_t) :: model
       type(problem_t) :: problem
-      real(wp) :: q(2)
-      integer :: k, n, code
+      real(wp) :: q
+      integer :: n, code
       character(len=:), allocatable :: deck
-      do k = 1, 2
-         n = 40*k
-         deck = OUT//'hinge'//itoa(n)//'.inp'
-         call write_beam(deck, n, 2, L, 'EA=1.0e7, EI=1.0e5, MP=100.0', '*BOUNDARY'// &
-            new_line('a')//'1, ALL'//new_line('a')//itoa(n + 1)//', ALL'//new_line('a')// &
-            '*LOAD, NAME=q, TYPE=PLATE_LOAD'//new_line('a')//'beam, 0.0, -1.0'//new_line('a')// &
-            '*STEP, NAME=collapse, INCREMENTS=20, CONTROL=ARC_LENGTH, MAX_INCREMENTS=200'// &
-            new_line('a')//'q, 20.0')
-         code = run_deck(deck, OUT//'hinge'//itoa(n)//'.h5', .true., model, problem)
-         if (code /= 3) then
-            call fatal_error(error, 'fixed-fixed beam: exit code '//itoa(code)// &
-               ' (3: stopped at the limit load)')
-            return
-         end if
-         q(k) = problem%position%arc%res%peak_factors(1)
-         write (*, '(a,i0,a,es23.15)') '        plastic hinge, ', n, ' elements: limit q ', q(k)
-         call check(error, q(k) >= QC*(1.0_wp - 1.0e-6_wp) .and. &
-            q(k) <= QC*(1.0_wp + 2.5_wp*10.0_wp/n), 'limit load '//itoa(n)//' elements')
-         if (allocated(error)) return
-      end do
-      call check_close(error, (q(1) - QC)/(q(2) - QC), 2.0_wp, 0.1_wp, &
-         'first-order convergence of the hinge to 16 Mp / L^2')
+      n = 20
+      deck = OUT//'hinge'//itoa(n)//'.inp'
+      call write_beam(deck, n, 2, L, 'EA=1.0e7, EI=1.0e5, MP=100.0', '*BOUNDARY'// &
+         new_line('a')//'1, ALL'//new_line('a')//itoa(n + 1)//', ALL'//new_line('a')// &
+         '*LOAD, NAME=q, TYPE=PLATE_LOAD'//new_line('a')//'beam, 0.0, -1.0'//new_line('a')// &
+         '*STEP, NAME=collapse, INCREMENTS=20, CONTROL=ARC_LENGTH, MAX_INCREMENTS=200'// &
+         new_line('a')//'q, 20.0')
+      code = run_deck(deck, OUT//'hinge'//itoa(n)//'.h5', .true., model, problem)
+      if (code /= 3) then
+         call fatal_error(error, 'fixed-fixed beam: exit code '//itoa(code)// &
+            ' (3: stopped at the limit load)')
+         return
+      end if
+      q = problem%position%arc%res%peak_factors(1)
+      write (*, '(a,i0,a,es23.15)') '        plastic hinge, ', n, ' elements: limit q ', q
+      call check_close(error, q, QC, 1.0e-2_wp, 'collapse load 16 Mp / L^2')
    end subroutine test_hinge
 
    !> A plate on the top edge of a Q4 block: rotation equations only at its nodes, each right
