@@ -1,4 +1,4 @@
-!> Plates (beams with rotations, doc/theory.md §11): Timoshenko cantilevers against the closed
+!> Plates (beams with rotations, doc/theory.md §12): Timoshenko cantilevers against the closed
 !> form (the linked 2-node element and the reduced-integration 3-node element are exact at the
 !> nodes for a tip load; the 2-node element also for a uniform load), a thin beam free of shear
 !> locking, an axisymmetric cylinder under internal pressure, a beam on Winkler springs
