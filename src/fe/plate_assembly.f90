@@ -15,14 +15,15 @@ module pecplas_fe_plate_assembly
    use pecplas_structures_beam, only: NGEN, MAX_BEAM_DOFS, beam_point_t, beam_npoint, &
       beam_points, beam_line_load
    use pecplas_structures_section, only: NHIST, section_elastic, section_update
-   use pecplas_structures_state, only: plate_state_t
+   use pecplas_structures_state, only: plate_state_t, plate_set_state_t
+   use pecplas_structures_hinge, only: hinge_gamma, hinge_stiffness, hinge_update
    use pecplas_fe_share, only: share_t
    implicit none (type, external)
    private
 
    public :: setup_plate_state, add_plate_stiffness, add_plate_forces, add_plate_load
    public :: plate_element_x, plate_element_u, plate_element_equations, plate_points
-   public :: scatter_plate_vector, activate_plate
+   public :: scatter_plate_vector, activate_plate, hinged
 
 contains
 
@@ -51,6 +52,8 @@ contains
                do p = 1, np
                   st%tangent(:, :, p, e) = c
                end do
+               if (hinged(model, pl)) st%tangent(1:3, 1:3, 1, e) = hinge_stiffness(pl%section, &
+                  norm2(model%mesh%x(:, pl%conn(2, e)) - model%mesh%x(:, pl%conn(1, e))))
             end do
          end associate
       end do
@@ -82,12 +85,90 @@ contains
                st%e(:, p, e) = matmul(pts(p)%b(:, 1:nd), ue(1:nd))
                st%tangent(:, :, p, e) = c
             end do
+            if (hinged(model, pl)) then
+               ! the basic deformations at activation, from which the element counts its own
+               st%e(:, :, e) = 0.0_wp
+               st%e(1:3, 2, e) = matmul(hinge_gamma(plate_element_x(model, pl, e)), ue(1:6))
+               st%tangent(1:3, 1:3, 1, e) = hinge_stiffness(pl%section, &
+                  norm2(model%mesh%x(:, pl%conn(2, e)) - model%mesh%x(:, pl%conn(1, e))))
+            end if
          end do
          st%e_trial = st%e
          st%s_trial = st%s
          st%hist_trial = st%hist
       end associate
    end subroutine activate_plate
+
+   !> True for a plate whose plasticity is carried by hinges at its elements' ends
+   !> (pecplas_structures_hinge): 2-node elements with NP or MP, plane strain. Its point
+   !> state holds the element's basic quantities: e(1:3, 1) the basic deformations counted
+   !> from activation, e(1:3, 2) those at activation; s(:, p) = (N, Q, M at the point, 0, 0);
+   !> hist(1:2, 1) = (plastic elongation, hinge rotation at end 1), hist(2, 3) the hinge
+   !> rotation at end 2, hist(3, 1 | 3) the accumulated multipliers; tangent(1:3, 1:3, 1)
+   !> the basic tangent dq/dv.
+   pure logical function hinged(model, pl)
+      type(model_t), intent(in) :: model
+      type(plate_set_t), intent(in) :: pl
+      hinged = pl%section%plastic() .and. pl%nen == 2 .and. model%analysis%kind /= 2
+   end function hinged
+
+   !> Element stiffness Gamma^T Kb Gamma of a hinged element (elastic Kb, or the tangent).
+   subroutine hinge_block(model, pl, st, e, tangent, ke)
+      type(model_t), intent(in) :: model
+      type(plate_set_t), intent(in) :: pl
+      type(plate_set_state_t), intent(in) :: st
+      integer, intent(in) :: e
+      logical, intent(in) :: tangent
+      real(wp), intent(out) :: ke(:, :)
+      real(wp) :: g(3, 6), kb(3, 3), x(2, 2)
+      x = plate_element_x(model, pl, e)
+      g = hinge_gamma(x)
+      if (tangent) then
+         kb = st%tangent(1:3, 1:3, 1, e)
+      else
+         kb = hinge_stiffness(pl%section, norm2(x(:, 2) - x(:, 1)))
+      end if
+      ke = matmul(transpose(g), matmul(kb, g))
+   end subroutine hinge_block
+
+   !> Forces Gamma^T q of a hinged element at the element dofs ue, its trial state updated.
+   subroutine hinge_forces(model, pl, st, e, ue, fe, error)
+      type(model_t), intent(in) :: model
+      type(plate_set_t), intent(in) :: pl
+      type(plate_set_state_t), intent(inout) :: st
+      integer, intent(in) :: e
+      real(wp), intent(in) :: ue(6)
+      real(wp), intent(out) :: fe(6)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), parameter :: AT(3) = [0.0_wp, 0.5_wp, 1.0_wp]
+      real(wp) :: g(3, 6), x(2, 2), h, v(3), vp0(3), q(3), vp(3), dl(2), kalg(3, 3)
+      integer :: p
+      x = plate_element_x(model, pl, e)
+      h = norm2(x(:, 2) - x(:, 1))
+      g = hinge_gamma(x)
+      v = matmul(g, ue) - st%e(1:3, 2, e)
+      vp0 = [st%hist(1, 1, e), st%hist(2, 1, e), st%hist(2, 3, e)]
+      call hinge_update(pl%section, hinge_stiffness(pl%section, h), v, vp0, q, vp, dl, kalg, &
+         error)
+      if (allocated(error)) then
+         error%message = error%message//" (element "//itoa(e)//" of plate set '"//pl%name//"')"
+         return
+      end if
+      st%e_trial(:, :, e) = st%e(:, :, e)
+      st%e_trial(1:3, 1, e) = v
+      do p = 1, 3
+         st%s_trial(:, p, e) = [q(1), (q(2) - q(3))/h, (1.0_wp - AT(p))*q(2) + AT(p)*q(3), &
+            0.0_wp, 0.0_wp]
+      end do
+      st%hist_trial(:, :, e) = st%hist(:, :, e)
+      st%hist_trial(1, 1, e) = vp(1)
+      st%hist_trial(2, 1, e) = vp(2)
+      st%hist_trial(2, 3, e) = vp(3)
+      st%hist_trial(3, 1, e) = st%hist(3, 1, e) + dl(1)
+      st%hist_trial(3, 3, e) = st%hist(3, 3, e) + dl(2)
+      st%tangent(1:3, 1:3, 1, e) = kalg
+      fe = matmul(q, g)
+   end subroutine hinge_forces
 
    !> Node coordinates x(2, nen) of element e of plate set `pl`.
    pure function plate_element_x(model, pl, e) result(x)
@@ -184,7 +265,9 @@ contains
             call section_elastic(pl%section, model%analysis%kind == 2, c)
             do e = 1, size(pl%conn, 2)
                ke = 0.0_wp
-               if (st%active) then
+               if (st%active .and. hinged(model, pl)) then
+                  call hinge_block(model, pl, st, e, tangent, ke(1:6, 1:6))
+               else if (st%active) then
                   call plate_points(model, pl, e, pts(1:np), error)
                   if (allocated(error)) return
                   do p = 1, np
@@ -218,9 +301,15 @@ contains
             nd = 3*pl%nen
             np = beam_npoint(pl%nen)
             do e = 1, size(pl%conn, 2)
+               ue(1:nd) = plate_element_u(model, pl, e, u)
+               if (hinged(model, pl)) then
+                  call hinge_forces(model, pl, st, e, ue(1:6), fe(1:6), error)
+                  if (allocated(error)) return
+                  call scatter_plate_vector(model, pl, e, fe(1:nd), fint)
+                  cycle
+               end if
                call plate_points(model, pl, e, pts(1:np), error)
                if (allocated(error)) return
-               ue(1:nd) = plate_element_u(model, pl, e, u)
                fe(1:nd) = 0.0_wp
                do p = 1, np
                   eps = matmul(pts(p)%b(:, 1:nd), ue(1:nd))

@@ -70,7 +70,8 @@ contains
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
             call data%add('arc_why', text_codes(p%arc%req%why))
          end if
-         if (fields) then
+         ! (with plates the rotations are no part of the displacement field)
+         if (fields .and. size(st%u, 2) == model%mesh%nnode()) then
             call data%add_field('u', 'displacement', 0)
          else
             call data%add('u', reshape(st%u, [size(st%u)]))
@@ -109,6 +110,18 @@ contains
                   call data%add('joint_mode_'//itoa(s), real(reshape(j%mode, [size(j%mode)]), wp))
                   if (tangents .and. allocated(j%tangent)) call data%add('joint_tangent_'// &
                      itoa(s), reshape(j%tangent, [size(j%tangent)]))
+               end associate
+            end do
+         end if
+         if (allocated(st%plates%sets)) then
+            do s = 1, size(st%plates%sets)
+               if (.not. st%plates%sets(s)%active) cycle
+               associate (pl => st%plates%sets(s))
+                  call data%add('plate_e_'//itoa(s), flat3(pl%e))
+                  call data%add('plate_s_'//itoa(s), flat3(pl%s))
+                  call data%add('plate_hist_'//itoa(s), flat3(pl%hist))
+                  if (tangents) call data%add('plate_tangent_'//itoa(s), &
+                     reshape(pl%tangent, [size(pl%tangent)]))
                end associate
             end do
          end if
@@ -158,13 +171,25 @@ contains
       character(len=:), allocatable :: names(:), msg
       real(wp) :: deck_sum
       logical :: guarded
-      integer :: nj, na
+      integer :: nj, np
+      character(len=64), allocatable :: anames(:)
 
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
-      na = 0
-      if (allocated(problem%state%anchors%sets)) na = size(problem%state%anchors%sets)
-      names = restart_names(size(problem%state%sets), nj, na)
+      np = 0
+      if (allocated(problem%state%plates%sets)) np = size(problem%state%plates%sets)
+      names = restart_names(size(problem%state%sets), nj, np)
+      ! anchors (each set's activity, prestress, forces, elongations)
+      if (allocated(problem%state%anchors%sets)) then
+         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         anames(1:size(names)) = names
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         deallocate (names)
+         allocate (character(len=64) :: names(size(anames)))
+         names = anames
+      end if
       ! a damaged file may crash the HDF5 library itself: an input error, not a crash
       guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
          ': the HDF5 library crashed reading it (the file is damaged)')
@@ -260,6 +285,9 @@ contains
             end if
             call replay_phases(model, problem, nint(v(1)), error)
             if (allocated(error)) return
+            if (allocated(p%du_prev)) then
+               if (size(p%du_prev) /= problem%system%dofs%neq) deallocate (p%du_prev)
+            end if
             if (data%has('phase_carried')) then
                call data%get('phase_carried', size(st%u), v, error)
                if (allocated(error)) return
@@ -296,6 +324,21 @@ contains
                if (allocated(error)) return
             end associate
          end do
+         if (allocated(st%plates%sets)) then
+            do s = 1, size(st%plates%sets)
+               if (.not. st%plates%sets(s)%active) cycle
+               associate (pl => st%plates%sets(s))
+                  call get3(data, 'plate_e_'//itoa(s), pl%e, error)
+                  if (.not. allocated(error)) call get3(data, 'plate_s_'//itoa(s), pl%s, error)
+                  if (.not. allocated(error)) call get3(data, 'plate_hist_'//itoa(s), pl%hist, &
+                     error)
+                  if (allocated(error)) return
+                  if (tangents .and. data%has('plate_tangent_'//itoa(s))) &
+                     call get4(data, 'plate_tangent_'//itoa(s), pl%tangent, error)
+                  if (allocated(error)) return
+               end associate
+            end do
+         end if
          if (allocated(st%anchors%sets)) then
             do s = 1, size(st%anchors%sets)
                associate (a => st%anchors%sets(s))
@@ -352,7 +395,13 @@ contains
       real(wp), allocatable :: v(:), peak(:), why(:)
       associate (p => problem%position)
          if (data%has('du_prev')) then
-            call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
+            ! (a phased run numbers its equations for the phase in force: checked after
+            ! its phases are replayed)
+            if (problem%phase%phased) then
+               call data%get('du_prev', data%length('du_prev'), p%du_prev, error)
+            else
+               call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
+            end if
             if (allocated(error)) return
          end if
          ! the method the chain starts with (older restart data: the run's own)
@@ -454,10 +503,9 @@ contains
       end if
    end subroutine get_operator
 
-   !> Names of the datasets a problem with `nsets` element sets, `njoint` joint sets and
-   !> `nanchor` anchor sets reads.
-   pure function restart_names(nsets, njoint, nanchor) result(names)
-      integer, intent(in) :: nsets, njoint, nanchor
+   !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
+   pure function restart_names(nsets, njoint, nplate) result(names)
+      integer, intent(in) :: nsets, njoint, nplate
       character(len=:), allocatable :: names(:)
       character(len=32), allocatable :: list(:)
       integer :: s
@@ -473,8 +521,9 @@ contains
          list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &
             'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s), 'joint_tangent_'//itoa(s)]
       end do
-      do s = 1, nanchor
-         list = [character(len=32) :: list, 'anchor_'//itoa(s)]
+      do s = 1, nplate
+         list = [character(len=32) :: list, 'plate_e_'//itoa(s), 'plate_s_'//itoa(s), &
+            'plate_hist_'//itoa(s), 'plate_tangent_'//itoa(s)]
       end do
       names = list
    end function restart_names
