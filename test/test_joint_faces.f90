@@ -33,6 +33,7 @@ contains
                new_unittest('topology_extended', test_extended), &
                new_unittest('springs_per_face', test_springs), &
                new_unittest('plate_wall_equilibrium', test_wall), &
+               new_unittest('thin_layer_and_goodman6', test_other_types), &
                new_unittest('bad_decks', test_bad)]
    end subroutine collect_joint_faces
 
@@ -238,9 +239,16 @@ contains
 
    !> The wall deck: soil cells 13, 14 (left of the line, top row) in set 'dig', removed by
    !> the second phase; gravity in the first.
-   subroutine write_wall(path)
+   subroutine write_wall(path, thin)
       character(len=*), intent(in) :: path
+      logical, intent(in), optional :: thin
       integer :: u, i, j, n
+      character(len=:), allocatable :: joints
+      joints = '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=BOTH, EXTEND=1'
+      if (present(thin)) then
+         if (thin) joints = '*JOINTS, TYPE=THIN_LAYER, SET=wj, LAW=smooth, EDGES=wall, '// &
+            'FACES=BOTH, EXTEND=1, THICKNESS=0.01'
+      end if
       open (newunit=u, file=path, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'plate wall with joints on both faces', '*NODES'
       do j = 0, 4
@@ -267,13 +275,76 @@ contains
          '*NSET, NAME=sides', '1, 6, 11, 16, 21, 5, 10, 15, 20, 25', '*NSET, NAME=line', &
          '23, 18, 13', '*BOUNDARY', 'base, XY', 'sides, X', &
          '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e3', &
-         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=BOTH, EXTEND=1', &
-         '*PLATE, SET=plate, NODES=line, EA=1e7, EI=1e4', &
+         joints, '*PLATE, SET=plate, NODES=line, EA=1e7, EI=1e4', &
          '*LOAD, NAME=weight, TYPE=GRAVITY', 'ALL', '*SOLVER, TOLERANCE=1e-9', &
          '*STEP, NAME=gravity', 'weight, 1', '*END STEP', '*STEP, NAME=dig, INCREMENTS=2', &
          '*DEACTIVATE', 'dig', '*END STEP'
       close (u)
    end subroutine write_wall
+
+   !> The plate wall deck with THIN_LAYER joints (THICKNESS = 0.01) runs the excavation and
+   !> keeps the plate in equilibrium with them as the Goodman one; a Q8 block with a 3-node
+   !> line gets GOODMAN6 joints on both faces and runs: 77 nodes, 65 + two copies of each of
+   !> the six nodes split (the line's five, the toe included with EXTEND=1, and the mid node
+   !> of the extension edge; its end stays whole).
+   subroutine test_other_types(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      integer :: code, u, i, j, k, n, e
+      integer :: ids(0:8, 0:8)
+      call make_directories(OUT)
+      call write_wall(OUT//'thin.inp', thin=.true.)
+      code = run_deck(OUT//'thin.inp', OUT//'thin.h5', .true., model, problem)
+      call check(error, code == 0, 'THIN_LAYER on both faces runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call check(error, model%joint_sets(1)%is_thin_layer() .and. size(model%joint_sets) == 2, &
+         'two THIN_LAYER sets (soil, dig)')
+      if (allocated(error)) return
+      open (newunit=u, file=OUT//'q8.inp', status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'q8 block', '*NODES'
+      k = 0
+      ids = 0
+      do j = 0, 8
+         do i = 0, 8
+            if (mod(i, 2) == 1 .and. mod(j, 2) == 1) cycle
+            k = k + 1
+            ids(i, j) = k
+            write (u, '(i0,a,f4.1,a,f4.1)') k, ', ', 0.5*i, ', ', 0.5*j
+         end do
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q8, SET=soil'
+      e = 0
+      do j = 0, 6, 2
+         do i = 0, 6, 2
+            e = e + 1
+            write (u, '(i0,8(", ",i0))') e, ids(i, j), ids(i + 2, j), ids(i + 2, j + 2), &
+               ids(i, j + 2), ids(i + 1, j), ids(i + 2, j + 1), ids(i + 1, j + 2), ids(i, j + 1)
+         end do
+      end do
+      write (u, '(a)') '*MATERIAL, NAME=m', 'E = 1e4, NU = 0.3, GAMMA = 20', &
+         '*SECTION, SET=soil, MATERIAL=m', '*EDGES, NAME=wall'
+      write (u, '(i0,2(", ",i0))') ids(4, 8), ids(4, 6), ids(4, 7)
+      write (u, '(i0,2(", ",i0))') ids(4, 6), ids(4, 4), ids(4, 5)
+      write (u, '(a)') '*NSET, NAME=base'
+      write (u, '(i0,8(", ",i0))') (ids(i, 0), i=0, 8)
+      write (u, '(a)') '*NSET, NAME=sides'
+      write (u, '(i0,15(", ",i0))') (ids(0, j), j=1, 8), (ids(8, j), j=1, 8)
+      write (u, '(a)') '*BOUNDARY', 'base, XY', 'sides, X', &
+         '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e3', &
+         '*JOINTS, TYPE=GOODMAN6, SET=wj, LAW=smooth, EDGES=wall, FACES=BOTH, EXTEND=1', &
+         '*PLATE, SET=plate, EDGES=wall, EA=1e7, EI=1e4', '*LOAD, NAME=weight, TYPE=GRAVITY', &
+         'ALL', '*SOLVER, TOLERANCE=1e-9', '*STEP, NAME=gravity', 'weight, 1', '*END STEP'
+      close (u)
+      code = run_deck(OUT//'q8.inp', OUT//'q8.h5', .true., model, problem)
+      call check(error, code == 0, 'GOODMAN6 on both faces runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      n = model%mesh%nnode()
+      call check(error, n == 77, 'Q8 nodes 65 + 12 copies, got '//itoa(n))
+      if (allocated(error)) return
+      call check(error, size(model%joint_sets(1)%conn, 1) == 6 .and. &
+         size(model%joint_sets(1)%conn, 2) == 5, '5 GOODMAN6 joints (2 x 2 faces + extension)')
+   end subroutine test_other_types
 
    !> FACES= other than BOTH, FACES=BOTH with SIDE=, EXTEND without FACES=BOTH, a line on
    !> the boundary: exit 2 with the line.
@@ -281,18 +352,26 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       type(error_t), allocatable :: e
-      character(len=*), parameter :: cases(4) = [character(len=120) :: &
+      character(len=*), parameter :: cases(5) = [character(len=120) :: &
          '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=ONE', &
          '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=BOTH, SIDE=soil', &
          '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, SIDE=soil, EXTEND=1', &
-         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=top, FACES=BOTH']
-      character(len=*), parameter :: expect(4) = [character(len=40) :: 'expected FACES=BOTH', &
-         'no SIDE=', 'EXTEND= goes with FACES=BOTH', 'is a side of 1 element']
-      integer :: k
+         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=top, FACES=BOTH', &
+         '*INTERFACE_LAW, NAME=k, TYPE=KATONA|MU = 0.3|'// &
+         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=k, EDGES=wall, FACES=BOTH']
+      character(len=*), parameter :: expect(5) = [character(len=40) :: 'expected FACES=BOTH', &
+         'no SIDE=', 'EXTEND= goes with FACES=BOTH', 'is a side of 1 element', &
+         'with Katona contact']
+      character(len=:), allocatable :: text
+      integer :: k, i
       call make_directories(OUT)
       do k = 1, size(cases)
+         text = trim(cases(k))
+         do i = 1, len(text)
+            if (text(i:i) == '|') text(i:i) = NL
+         end do
          call write_block(OUT//'bad'//itoa(k)//'.inp', '*EDGES, NAME=top'//NL//'21, 22'//NL// &
-            trim(cases(k))//NL//'*STEP, NAME=s'//NL//'*END STEP')
+            text//NL//'*STEP, NAME=s'//NL//'*END STEP')
          call read_deck(OUT//'bad'//itoa(k)//'.inp', model, e)
          call check(error, allocated(e), 'bad deck '//itoa(k)//' refused')
          if (allocated(error)) return

@@ -303,7 +303,7 @@ contains
       type(faces_result_t), intent(inout) :: res
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: on_cut(:)
-      integer, allocatable :: group(:), newx(:)
+      integer, allocatable :: group(:), newx(:), extra(:)
       real(wp), allocatable :: x(:, :)
       integer :: nn, v, a, b, na, ng, k, i, nnew, kk
       logical :: changed
@@ -369,13 +369,13 @@ contains
       origin = [origin, origin(newx)]
       ! node sets gain the copies
       do i = 1, size(mesh%nsets)
-         associate (nodes => mesh%nsets(i)%nodes)
-            do k = 1, size(nodes)
-               if (nodes(k) > nn) cycle
-               if (res%copies(1, nodes(k)) > 0) mesh%nsets(i)%nodes = [mesh%nsets(i)%nodes, &
-                  pack(res%copies(:, nodes(k)), res%copies(:, nodes(k)) > 0)]
-            end do
-         end associate
+         extra = [integer ::]
+         do k = 1, size(mesh%nsets(i)%nodes)
+            v = mesh%nsets(i)%nodes(k)
+            if (v > nn) cycle
+            if (res%copies(1, v) > 0) extra = [extra, pack(res%copies(:, v), res%copies(:, v) > 0)]
+         end do
+         if (size(extra) > 0) mesh%nsets(i)%nodes = [mesh%nsets(i)%nodes, extra]
       end do
    end subroutine split_nodes
 

@@ -138,6 +138,13 @@ contains
          end if
       end if
       if (raw%both_faces) then
+         if (set%is_katona()) then
+            call line_error(state, raw%at, "FACES=BOTH with Katona contact (law '"//raw%law// &
+               "') is not available: the plate's nodes would face two partners (one per "// &
+               'face); use a penalty law (e.g. MOHR_COULOMB with a stiff KN) or one-sided '// &
+               'joints (SIDE=)', error)
+            return
+         end if
          call generated_both(state, model, raw, origin, next_id, set, group, error)
          return
       else if (len(raw%edges) > 0) then
