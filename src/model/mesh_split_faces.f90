@@ -246,6 +246,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: found(:)
       real(wp) :: c(2), t(2)
+      allocate (found(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
       found = find_sides(table, en)
       if (size(found) /= 2) then
          call input_error(error, 'is a side of '//itoa(size(found))//' element(s): '// &
@@ -281,7 +282,7 @@ contains
       do v = 1, mesh%nnode()
          inc_ptr(v + 1) = inc_ptr(v + 1) + inc_ptr(v)
       end do
-      allocate (inc(2, inc_ptr(mesh%nnode() + 1) - 1))
+      allocate (inc(2, inc_ptr(mesh%nnode() + 1) - 1), fill(mesh%nnode()))
       fill = inc_ptr(1:mesh%nnode())
       do s = 1, size(mesh%esets)
          do j = 1, size(mesh%esets(s)%conn, 2)
@@ -450,8 +451,8 @@ contains
       do face = FACE_LEFT, FACE_EXTENSION
          do f = 1, size(cut, 2)
             if ((face == FACE_EXTENSION) .neqv. (f > nline)) cycle
-            l = body_nodes(mesh, cut(:, f), owner(1, 1, f), owner(2, 1, f))
-            r = body_nodes(mesh, cut(:, f), owner(1, 2, f), owner(2, 2, f))
+            l = body_nodes(mesh, res%copies, cut(:, f), owner(1, 1, f), owner(2, 1, f))
+            r = body_nodes(mesh, res%copies, cut(:, f), owner(1, 2, f), owner(2, 2, f))
             nj = nj + 1
             res%face(nj) = face
             res%body_set(nj) = owner(1, merge(2, 1, face == FACE_RIGHT), f)
@@ -471,19 +472,19 @@ contains
    end subroutine make_joints
 
    !> The nodes of element (s, j) (renumbered) at the original nodes of edge en: its copy
-   !> of each, or the node itself where it was not split.
-   function body_nodes(mesh, en, s, j) result(nodes)
+   !> of each (copies(:, node)), or the node itself where it was not split.
+   function body_nodes(mesh, copies, en, s, j) result(nodes)
       type(mesh_t), intent(in) :: mesh
-      integer, intent(in) :: en(:), s, j
+      integer, intent(in) :: copies(:, :), en(:), s, j
       integer, allocatable :: nodes(:)
-      integer :: k, i
+      integer :: k
       nodes = en
       do k = 1, size(en)
-         do i = 1, size(mesh%esets(s)%conn, 1)
-            if (mesh%x(1, mesh%esets(s)%conn(i, j)) == mesh%x(1, en(k)) .and. &
-                mesh%x(2, mesh%esets(s)%conn(i, j)) == mesh%x(2, en(k))) &
-               nodes(k) = mesh%esets(s)%conn(i, j)
-         end do
+         if (en(k) < 1) cycle
+         if (any(mesh%esets(s)%conn(:, j) == copies(1, en(k))) .and. copies(1, en(k)) > 0) &
+            nodes(k) = copies(1, en(k))
+         if (any(mesh%esets(s)%conn(:, j) == copies(2, en(k))) .and. copies(2, en(k)) > 0) &
+            nodes(k) = copies(2, en(k))
       end do
    end function body_nodes
 
