@@ -27,6 +27,9 @@ module test_plates
    !> The exact elements: nodal values to the roundoff of a 30-60 equation solve with a
    !> condition number ~ (EA/EI) (L/h)^2 ~ 1e4: 1e-10 relative leaves a margin of 1e2.
    real(wp), parameter :: EXACT = 1.0e-10_wp
+   !> The 3-node element is exact at the nodes for a tip load too, but its system (mid-side
+   !> nodes, 60 equations) is worse conditioned: roundoff measured 5e-11; 1e-9 bounds it.
+   real(wp), parameter :: EXACT3 = 1.0e-9_wp
 
 contains
 
@@ -127,8 +130,9 @@ contains
       type(problem_t) :: problem
       type(plate_fields_t) :: f
       character(len=:), allocatable :: deck
-      real(wp) :: w, theta, q0, m0
+      real(wp) :: w, theta, q0, m0, tol
       integer :: tip
+      tol = merge(EXACT, EXACT3, nen == 2)
       deck = OUT//'tip'//itoa(nen)//'.inp'
       tip = 10*(nen - 1) + 1
       call write_beam(deck, 10, nen, L, 'EA=1.0e7, EI=1.0e5', '*BOUNDARY'//new_line('a')// &
@@ -139,11 +143,11 @@ contains
       call tip_values(model, problem, f, tip, w, theta, q0, m0)
       write (*, '(a,i0,a,4es23.15)') '        tip load, ', nen, '-node: w, theta, Q(0), M(0) ', &
          w, theta, q0, m0
-      call check_close(error, w, P*L**3/(3.0_wp*EI) + P*L/GAS, EXACT, 'tip deflection')
-      if (.not. allocated(error)) call check_close(error, theta, P*L**2/(2.0_wp*EI), EXACT, &
+      call check_close(error, w, P*L**3/(3.0_wp*EI) + P*L/GAS, tol, 'tip deflection')
+      if (.not. allocated(error)) call check_close(error, theta, P*L**2/(2.0_wp*EI), tol, &
          'tip rotation')
-      if (.not. allocated(error)) call check_close(error, q0, P, EXACT, 'Q at the support')
-      if (.not. allocated(error)) call check_close(error, m0, P*L, EXACT, 'M at the support')
+      if (.not. allocated(error)) call check_close(error, q0, P, tol, 'Q at the support')
+      if (.not. allocated(error)) call check_close(error, m0, P*L, tol, 'M at the support')
    end subroutine tip_case
 
    !> Uniform load q (PLATE_LOAD, -y): w = q L^4 / 8EI + q L^2 / 2GAs, theta = q L^3 / 6EI,
