@@ -33,8 +33,9 @@ module pecplas_massif_materials_type
       procedure :: constant_tangent => material_constant_tangent
       !> Names of the history variables (results file `state_names`); none by default.
       procedure :: state_names => material_state_names
-      !> The material with its strength divided by `msf` (strength reduction, doc/theory.md
-      !> §12); unallocated for a material without a c, tan(phi) strength (the default).
+      !> The material with its strength divided by `msf` (strength reduction, doc/theory.md,
+      !> Factor of safety); unallocated for a material without a c, tan(phi) strength (the
+      !> default).
       procedure :: reduced_strength => material_reduced_strength
    end type material_t
 
