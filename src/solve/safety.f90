@@ -64,7 +64,7 @@ contains
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), u0(:, :), fred(:, :), &
          ulast(:, :, :)
       real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow
-      integer :: inc, method, k
+      integer :: inc, method, k, nnode
       logical :: ok
 
       t0 = wall_time()
@@ -81,6 +81,8 @@ contains
          att%tau0 = 1.0_wp
          att%tau1 = 1.0_wp
          u0 = problem%state%u
+         ! the nodes' columns of the nodal arrays (plate rotations follow them)
+         nnode = model%mesh%nnode()
          allocate (ulast(2, size(u0, 2), 0:MECHANISM_INCREMENTS))
          do k = 0, MECHANISM_INCREMENTS
             ulast(:, :, k) = u0
@@ -138,12 +140,13 @@ contains
                reaction, istep, inc, real(istep - 1, wp) + (1.0_wp - 1.0_wp/trial), .true., &
                0, error)
             if (allocated(error)) return
-            rate = max_move(u, ulast(:, :, MECHANISM_INCREMENTS))/dm
+            rate = max_move(u(:, 1:nnode), ulast(:, 1:nnode, MECHANISM_INCREMENTS))/dm
             ulast = cshift(ulast, 1, dim=3)
             ulast(:, :, MECHANISM_INCREMENTS) = u
             msf = trial
             res%msf = [res%msf, msf]
-            res%displacement = [res%displacement, curve_value(plan, u, u0)]
+            res%displacement = [res%displacement, curve_value(plan, u(:, 1:nnode), &
+               u0(:, 1:nnode))]
             if (.not. run%quiet) write (*, '(a)') '   Msf = '//g6(msf)//'  '// &
                res%displacement_of//' = '//g6(res%displacement(size(res%displacement)))
             ! the next size from the displacement rates (module header)
@@ -158,7 +161,7 @@ contains
             if (rate > 0.0_wp) rate_prev = rate
          end do
          res%increments = inc
-         res%mechanism = ulast(:, :, MECHANISM_INCREMENTS) - ulast(:, :, 0)
+         res%mechanism = ulast(:, 1:nnode, MECHANISM_INCREMENTS) - ulast(:, 1:nnode, 0)
          res%wall = wall_time() - t0
          select case (res%kind)
          case (SAFETY_FACTOR)
