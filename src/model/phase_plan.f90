@@ -5,11 +5,12 @@
 module pecplas_model_phase_plan
    use pecplas_model_type, only: model_t
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, TARGET_ELEMENTS, &
-      TARGET_JOINTS, TARGET_PLATES
+      TARGET_JOINTS, TARGET_ANCHORS, TARGET_PLATES
    implicit none (type, external)
    private
 
    public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes
+   public :: initial_anchor_activity
    public :: plate_activity
 
 contains
@@ -54,6 +55,7 @@ contains
          do c = 1, size(model%steps(i)%changes)
             associate (ch => model%steps(i)%changes(c))
                if (ch%set < 1 .or. ch%target == TARGET_PLATES) cycle
+               if (ch%target == TARGET_ANCHORS) cycle
                if (ch%target == TARGET_ELEMENTS) then
                   if (.not. eseen(ch%set)) eactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
                   eseen(ch%set) = .true.
@@ -81,7 +83,7 @@ contains
       do c = 1, size(model%steps(istep)%changes)
          associate (ch => model%steps(istep)%changes(c))
             if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
-            if (ch%target == TARGET_PLATES) cycle
+            if (ch%target == TARGET_ANCHORS .or. ch%target == TARGET_PLATES) cycle
             if (ch%target == TARGET_ELEMENTS) then
                eactive(ch%set) = ch%kind == CHANGE_ACTIVATE
             else
@@ -102,12 +104,38 @@ contains
       end do
    end subroutine step_activity
 
+   !> Activity of the anchor sets before the first step: a set whose first activation or
+   !> deactivation in the steps is an *ACTIVATE is inactive until then.
+   pure function initial_anchor_activity(model) result(active)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: active(:)
+      logical, allocatable :: seen(:)
+      integer :: i, c, n
+      n = 0
+      if (allocated(model%anchors)) n = size(model%anchors)
+      allocate (active(n), source=.true.)
+      allocate (seen(n), source=.false.)
+      if (.not. allocated(model%steps)) return
+      do i = 1, size(model%steps)
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= TARGET_ANCHORS .or. ch%set < 1) cycle
+               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+               if (.not. seen(ch%set)) active(ch%set) = ch%kind /= CHANGE_ACTIVATE
+               seen(ch%set) = .true.
+            end associate
+         end do
+      end do
+   end function initial_anchor_activity
+
    !> Nodes of an active element of an active element set, of an active joint set or of an
-   !> active plate set (`pactive`; absent: every plate).
-   pure function attached_nodes(model, eactive, jactive, pactive) result(held)
+   !> active plate set (`pactive`; absent: every plate), and of an active anchor set when
+   !> `aactive` is given.
+   pure function attached_nodes(model, eactive, jactive, pactive, aactive) result(held)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
-      logical, intent(in), optional :: pactive(:)
+      logical, intent(in), optional :: pactive(:), aactive(:)
       logical, allocatable :: held(:)
       integer :: s
       allocate (held(model%mesh%nnode()), source=.false.)
@@ -117,6 +145,11 @@ contains
       do s = 1, size(jactive)
          if (jactive(s)) held(nodes_of(model%joint_sets(s)%conn)) = .true.
       end do
+      if (present(aactive)) then
+         do s = 1, size(aactive)
+            if (aactive(s)) held(nodes_of(model%anchors(s)%conn)) = .true.
+         end do
+      end if
       if (.not. allocated(model%plates)) return
       do s = 1, size(model%plates)
          if (present(pactive)) then

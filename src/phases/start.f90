@@ -25,7 +25,7 @@ module pecplas_phases_start
    use pecplas_model_columns, only: nodal_columns
    use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
-      CHANGE_LAW, TARGET_ELEMENTS, START_WISHED, TARGET_PLATES
+      CHANGE_LAW, TARGET_ELEMENTS, START_WISHED, TARGET_PLATES, TARGET_ANCHORS
    use pecplas_model_phase_plan, only: step_activity, attached_nodes
    use pecplas_fe_plate_assembly, only: activate_plate
    use pecplas_problem_type, only: problem_t, set_orphans
@@ -43,6 +43,7 @@ module pecplas_phases_start
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_joints_laws_type, only: MODE_STICK, MODE_OPEN
    use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
+   use pecplas_phases_anchors, only: start_anchors
    implicit none (type, external)
    private
 
@@ -65,10 +66,11 @@ contains
       logical, intent(out) :: refactorise
       character(len=LINE_LEN), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), pactive(:)
+      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), pactive(:), &
+         aactive(:)
       type(mesh_index_t) :: index
       integer :: c, j, p
-      logical :: indexed
+      logical :: indexed, anchors_changed
 
       allocate (lines(0))
       refactorise = .false.
@@ -79,8 +81,12 @@ contains
             trim(PROCEDURE_NAMES(problem%phase%procedure))]
       end if
       indexed = .false.
+      ! anchors: the prestress of the phase before ends, the step's anchor changes apply
+      call start_anchors(model, problem%state, istep, anchors_changed, lines)
+      if (anchors_changed) refactorise = .true.
       associate (step => model%steps(istep), st => problem%state)
          do c = 1, size(step%changes)
+            if (step%changes(c)%target == TARGET_ANCHORS) cycle
             associate (ch => step%changes(c))
                refactorise = .true.
                select case (ch%kind)
@@ -165,9 +171,10 @@ contains
          end do
          ! nodes no active element or joint holds: out of the system
          call set_orphans(model, problem, eactive, jactive)
-         allocate (pactive(0))
+         allocate (pactive(0), aactive(0))
          if (allocated(st%plates%sets)) pactive = st%plates%sets%active
-         held = attached_nodes(model, eactive, jactive, pactive)
+         if (allocated(st%anchors%sets)) aactive = st%anchors%sets%active
+         held = attached_nodes(model, eactive, jactive, pactive, aactive)
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
             problem%system%pattern_disp, error, eactive, pactive)

@@ -1,5 +1,5 @@
 !> Phase changes of the deck (doc/deck.md, Phases): *DEACTIVATE, *ACTIVATE [, STRESS=ZERO |
-!> WISHED_IN_PLACE], *CHANGE_MATERIAL and *CHANGE_LAW after a *STEP line (before its
+!> WISHED_IN_PLACE], *CHANGE_MATERIAL, *CHANGE_LAW and *PRESTRESS (anchors) after a *STEP line (before its
 !> *END STEP) change the model at the start of that step. Read into the open step, then
 !> resolved to set, material and law indices and checked phase by phase once the whole deck
 !> is read: a set activated while active or deactivated while inactive, a load or imposed
@@ -9,16 +9,15 @@ module pecplas_io_deck_reader_phases
    use pecplas_base_error, only: error_t
    use pecplas_base_kinds, only: wp
    use pecplas_io_text_fields, only: field_t, split_fields, check_count, same_name, upper, &
-      add_name, itoa
+      add_name, itoa, parse_real
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_change_t, line_error
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
-      TARGET_PLATES, &
-      START_WISHED
+      START_WISHED, CHANGE_PRESTRESS, TARGET_ANCHORS, TARGET_PLATES
    use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes, &
-      plate_activity
+      initial_anchor_activity, plate_activity
    implicit none (type, external)
    private
 
@@ -34,8 +33,9 @@ contains
       type(raw_change_t) :: ch
       type(field_t), allocatable :: f(:)
       character(len=:), allocatable :: text
-      logical :: found
+      logical :: found, ok
       integer :: kind, i, k
+      real(wp) :: force
       kind = 0
       do i = 1, size(CHANGE_NAMES)
          if (trim(CHANGE_NAMES(i)) == block%kw%name) kind = i
@@ -69,6 +69,11 @@ contains
             end select
          end if
       end if
+      if (block%last < block%first .and. kind == CHANGE_PRESTRESS) then
+         call line_error(state, block%at, '*PRESTRESS needs data lines "anchor, force" (the '// &
+            'prestress force of one anchor)', error)
+         return
+      end if
       if (block%last < block%first) then
          if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
             text = merge('element_set, material', 'joint_set, law       ', kind == CHANGE_MATERIAL)
@@ -83,7 +88,19 @@ contains
       do i = block%first, block%last
          call split_fields(state%lines%text(i), f)
          ch%at = i
-         if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
+         if (kind == CHANGE_PRESTRESS) then
+            call check_count(state%lines%get(i), f, 2, 2, 'anchor, force', error)
+            if (allocated(error)) return
+            call parse_real(f(2)%s, force, ok)
+            if (.not. ok) then
+               call line_error(state, i, "prestress force must be a number, found '"// &
+                  f(2)%s//"'", error)
+               return
+            end if
+            ch%set = f(1)%s
+            ch%new = f(2)%s
+            call push(state%steps(state%open_step)%changes, ch)
+         else if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
             call check_count(state%lines%get(i), f, 2, 2, merge('element_set, material', &
                'joint_set, law       ', kind == CHANGE_MATERIAL), error)
             if (allocated(error)) return
@@ -203,6 +220,12 @@ contains
          end do
          if (ch%set > 0) ch%target = TARGET_JOINTS
       end if
+      if (ch%set == 0 .and. allocated(model%anchors)) then
+         do j = 1, size(model%anchors)
+            if (same_name(model%anchors(j)%name, raw%set)) ch%set = j
+         end do
+         if (ch%set > 0) ch%target = TARGET_ANCHORS
+      end if
       if (ch%set == 0 .and. allocated(model%plates)) then
          do j = 1, size(model%plates)
             if (same_name(model%plates(j)%name, raw%set)) ch%set = j
@@ -219,13 +242,27 @@ contains
                call add_name(list, model%joint_sets(k)%name)
             end do
          end if
+         if (allocated(model%anchors)) then
+            do k = 1, size(model%anchors)
+               call add_name(list, model%anchors(k)%name)
+            end do
+         end if
          if (allocated(model%plates)) then
             do k = 1, size(model%plates)
                call add_name(list, model%plates(k)%name)
             end do
          end if
-         call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
-            "' (nor plate set); known sets:"//list, error)
+         if (ch%kind == CHANGE_PRESTRESS) then
+            call line_error(state, raw%at, "no anchor '"//raw%set//"'; known sets, plates "// &
+               'and anchors:'//list, error)
+         else
+            call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
+               "' (nor plate set or anchor); known sets, plates and anchors:"//list, error)
+         end if
+         return
+      end if
+      if (ch%target == TARGET_ANCHORS .or. ch%kind == CHANGE_PRESTRESS) then
+         call resolve_anchor_change(state, model, raw, ch, error)
          return
       end if
       if (ch%target == TARGET_PLATES .and. ch%kind /= CHANGE_ACTIVATE .and. &
@@ -290,6 +327,39 @@ contains
       end select
    end subroutine resolve_change
 
+   !> A change naming an anchor set: *ACTIVATE (STRESS= does not apply), *DEACTIVATE, or
+   !> *PRESTRESS with a force within the anchor's limits.
+   subroutine resolve_anchor_change(state, model, raw, ch, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_change_t), intent(in) :: raw
+      type(phase_change_t), intent(inout) :: ch
+      type(error_t), allocatable, intent(out) :: error
+      logical :: ok
+      if (ch%target /= TARGET_ANCHORS) then
+         call line_error(state, raw%at, "'"//raw%set//"' is not an anchor: *PRESTRESS "// &
+            'prestresses anchors (*ANCHOR)', error)
+         return
+      end if
+      select case (ch%kind)
+      case (CHANGE_ACTIVATE)
+         if (ch%start == START_WISHED) call line_error(state, raw%at, 'STRESS= is for '// &
+            "element sets; anchor '"//raw%set//"' starts without force (or with its "// &
+            '*PRESTRESS)', error)
+      case (CHANGE_MATERIAL, CHANGE_LAW)
+         call line_error(state, raw%at, "'"//raw%set//"' is an anchor: it has no material "// &
+            'or law to change (define another *ANCHOR and swap them with *DEACTIVATE and '// &
+            '*ACTIVATE)', error)
+      case (CHANGE_PRESTRESS)
+         call parse_real(raw%new, ch%value, ok)
+         associate (a => model%anchors(ch%set))
+            if (ch%value > a%tension_limit .or. ch%value < -a%compression_limit) &
+               call line_error(state, raw%at, "prestress "//raw%new//" of anchor '"// &
+               raw%set//"' is beyond its TENSION_LIMIT or COMPRESSION_LIMIT", error)
+         end associate
+      end select
+   end subroutine resolve_anchor_change
+
    !> Walks the phases: activation of an active set, deactivation of an inactive one, and a
    !> load or imposed displacement acting in a phase on a node that no active element or
    !> joint holds are errors.
@@ -297,12 +367,13 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), pact(:)
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), aact(:), pact(:)
       integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
       logical :: on
       call initial_activity(model, eact, jact)
+      aact = initial_anchor_activity(model)
       pact = plate_activity(model, 0)
       emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
       allocate (jlaw(size(jact)))
@@ -315,6 +386,12 @@ contains
       do s = 1, size(model%steps)
          associate (step => model%steps(s))
             do c = 1, size(step%changes)
+               if (step%changes(c)%target == TARGET_ANCHORS) then
+                  call check_anchor_change(state, state%steps(s)%changes(c)%at, step%name, &
+                     step%changes(c), aact, error)
+                  if (allocated(error)) return
+                  cycle
+               end if
                associate (ch => step%changes(c))
                   if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
                      if (ch%target == TARGET_ELEMENTS) then
@@ -354,7 +431,7 @@ contains
                call step_activity_one(step%changes(c), eact, jact, pact)
             end do
             call step_activity(model, s, eact, jact, dropped)
-            held = attached_nodes(model, eact, jact, pact)
+            held = attached_nodes(model, eact, jact, pact, aact)
             do k = 1, size(step%pattern)
                factors(step%pattern(k)) = step%target(k)
             end do
@@ -366,6 +443,31 @@ contains
          end associate
       end do
    end subroutine check_phases
+
+   !> An anchor change in step `name`: activation of an active anchor, deactivation or
+   !> prestress of an inactive one are errors; the activity follows the change.
+   subroutine check_anchor_change(state, at, name, ch, aact, error)
+      type(deck_state_t), intent(in) :: state
+      integer, intent(in) :: at
+      character(len=*), intent(in) :: name
+      type(phase_change_t), intent(in) :: ch
+      logical, intent(inout) :: aact(:)
+      type(error_t), allocatable, intent(out) :: error
+      select case (ch%kind)
+      case (CHANGE_ACTIVATE)
+         if (aact(ch%set)) call line_error(state, at, "anchor '"//ch%set_name// &
+            "' is already active in step '"//name//"'", error)
+         aact(ch%set) = .true.
+      case (CHANGE_DEACTIVATE)
+         if (.not. aact(ch%set)) call line_error(state, at, "anchor '"//ch%set_name// &
+            "' is not active in step '"//name//"'", error)
+         aact(ch%set) = .false.
+      case (CHANGE_PRESTRESS)
+         if (.not. aact(ch%set)) call line_error(state, at, "anchor '"//ch%set_name// &
+            "' is not active in step '"//name//"': *ACTIVATE it in this step or before "// &
+            '*PRESTRESS', error)
+      end select
+   end subroutine check_anchor_change
 
    pure subroutine step_activity_one(ch, eact, jact, pact)
       type(phase_change_t), intent(in) :: ch

@@ -19,6 +19,8 @@ module pecplas_io_deck_resolve_joints
    use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6, &
       JOINT_KATONA
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
+   use pecplas_model_mesh_split_faces, only: faces_result_t, split_both_faces, &
+      remap_to_copies, FACE_LEFT, FACE_EXTENSION
    use pecplas_joints_elements_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
    implicit none (type, external)
@@ -126,7 +128,10 @@ contains
             return
          end if
       end if
-      if (len(raw%edges) > 0) then
+      if (raw%both_faces) then
+         call generated_both(state, model, raw, origin, next_id, set, error)
+         return
+      else if (len(raw%edges) > 0) then
          call generated(state, model, raw, origin, next_id, set, edges, error)
       else
          ! Katona doublets may start apart (node-to-node contact with an initial gap)
@@ -253,6 +258,109 @@ contains
       set%ids = [(next_id + i, i=1, size(set%conn, 2))]
       next_id = next_id + size(set%conn, 2)
    end subroutine generated
+
+   !> FACES=BOTH: the line EDGES split on both faces (pecplas_model_mesh_split_faces); the
+   !> supports and imposed displacements of a split node hold its copies too, the pressure
+   !> edges and edge sets on one body move to its copies. Springs: one doublet per node and
+   !> face, their tributaries and tangents from the joint edges of that face.
+   subroutine generated_both(state, model, raw, origin, next_id, set, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, allocatable, intent(inout) :: origin(:)
+      integer, intent(inout) :: next_id
+      type(joint_set_t), intent(inout) :: set
+      type(error_t), allocatable, intent(out) :: error
+      type(faces_result_t) :: res
+      type(error_t), allocatable :: e
+      integer, allocatable :: dupof(:), doublets(:, :), edges(:, :), sel(:)
+      real(wp), allocatable :: trib(:), tang(:, :)
+      character(len=:), allocatable :: msg
+      integer :: ke, nen, i, k, face, bad
+      ke = model%mesh%find_edge_set(raw%edges)
+      if (ke == 0) then
+         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
+            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
+         return
+      end if
+      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
+      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
+          nen /= 3)) then
+         call line_error(state, raw%at, set%type_name()//" joints need "// &
+            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
+            //raw%edges//"' has "//itoa(nen)//'-node edges', error)
+         return
+      end if
+      call split_both_faces(model%mesh, ke, raw%extend, origin, res, e)
+      if (allocated(e)) then
+         call line_error(state, raw%at, e%message, error)
+         return
+      end if
+      ! supports and imposed displacements: every copy (a copy per body)
+      do k = 1, 2
+         allocate (dupof(size(res%copies, 2)))
+         dupof = res%copies(k, :)
+         call extend_to_duplicates(model, 0, dupof)
+         deallocate (dupof)
+      end do
+      ! edges on one body (pressures, other edge sets) to its copies
+      if (allocated(model%patterns)) then
+         do i = 1, size(model%patterns)
+            if (model%patterns(i)%kind == LOAD_PRESSURE) &
+               call remap_to_copies(model%mesh, res, model%patterns(i)%edge)
+         end do
+      end if
+      do i = 1, size(model%mesh%edge_sets)
+         if (i /= ke) call remap_to_copies(model%mesh, res, model%mesh%edge_sets(i)%nodes)
+      end do
+      if (.not. set%is_spring()) then
+         set%conn = res%conn
+      else
+         ! one doublet per node of each face: (face-1 node, face-2 node)
+         allocate (doublets(2, 0), trib(0), tang(2, 0))
+         do face = FACE_LEFT, FACE_EXTENSION
+            sel = pack([(i, i=1, size(res%face))], res%face == face)
+            if (size(sel) == 0) cycle
+            edges = res%conn([1, 2], sel)
+            if (nen == 3) edges = res%conn([1, 2, 5], sel)
+            k = size(doublets, 2)
+            do i = 1, size(sel)
+               call add_doublet(doublets, k, res%conn(1, sel(i)), res%conn(4, sel(i)))
+               call add_doublet(doublets, k, res%conn(2, sel(i)), res%conn(3, sel(i)))
+               if (nen == 3) call add_doublet(doublets, k, res%conn(5, sel(i)), res%conn(6, sel(i)))
+            end do
+            k = size(doublets, 2) - size(trib)
+            trib = [trib, [(0.0_wp, i=1, k)]]
+            tang = reshape([tang, [(0.0_wp, i=1, 2*k)]], [2, size(trib)])
+            call spring_tributaries(model%mesh%x, model%analysis%kind, &
+               model%analysis%thickness, doublets(1, size(trib) - k + 1:), edges, &
+               trib(size(trib) - k + 1:), tang(:, size(trib) - k + 1:), bad, error)
+            if (allocated(error)) then
+               msg = "joint set '"//set%name//"': "//error%message
+               call line_error(state, raw%at, msg, error)
+               return
+            end if
+         end do
+         set%conn = doublets
+         set%tributary = trib
+         set%tangent = tang
+         if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
+            sin(raw%angle*PI/180.0_wp)], 2, size(set%conn, 2))
+      end if
+      set%ids = [(next_id + i, i=1, size(set%conn, 2))]
+      next_id = next_id + size(set%conn, 2)
+   end subroutine generated_both
+
+   !> Appends the doublet (a, b) unless the doublets from column k0 + 1 on hold it.
+   pure subroutine add_doublet(doublets, k0, a, b)
+      integer, allocatable, intent(inout) :: doublets(:, :)
+      integer, intent(in) :: k0, a, b
+      integer :: i
+      do i = k0 + 1, size(doublets, 2)
+         if (doublets(1, i) == a .and. doublets(2, i) == b) return
+      end do
+      doublets = reshape([doublets, a, b], [2, size(doublets, 2) + 1])
+   end subroutine add_doublet
 
    !> Supports and imposed displacements on split nodes also hold the duplicates; pressure
    !> edges on SIDE-only sides move to them (point forces stay where they were given).
