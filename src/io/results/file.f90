@@ -63,6 +63,7 @@ module pecplas_io_results_file
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
    use pecplas_io_results_anchors, only: write_anchor_mesh, write_anchor_fields
+   use pecplas_io_results_structure_geometry, only: write_structure_geometry, xdmf_structures
    implicit none (type, external)
    private
 
@@ -112,6 +113,8 @@ module pecplas_io_results_file
       !> (0: none recorded yet, every set active).
       type(phase_record_t), allocatable :: phases(:)
       integer, allocatable :: written_phase(:)
+      !> The plate and anchor sets active in each written increment (nplate / nanchor, nwritten).
+      logical, allocatable :: written_plates(:, :), written_anchors(:, :)
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
@@ -160,6 +163,11 @@ contains
       if (allocated(error)) return
       call plan_units(model, this%units)
       call plan_xdmf_joints(this)
+      call xdmf_structures(model, this%layout%plates, this%layout%anchors)
+      if (allocated(this%written_plates)) deallocate (this%written_plates)
+      if (allocated(this%written_anchors)) deallocate (this%written_anchors)
+      allocate (this%written_plates(size(this%layout%plates), 0), &
+         this%written_anchors(size(this%layout%anchors), 0))
       ! the plastic indicators are written with the sets' fields (write_fields)
       do i = 1, size(this%layout%sets)
          this%layout%sets(i)%plastic = has_plastic_state(this%units%sets(i)%state) .and. &
@@ -224,6 +232,7 @@ contains
       if (.not. allocated(error)) call write_anchor_mesh(file, model, this%units%length, &
          this%units%force, error)
       if (.not. allocated(error)) call write_plate_mesh(file, model, error)
+      if (.not. allocated(error)) call write_structure_geometry(file, model, error)
       if (.not. allocated(error)) call create_history(file, model, error)
       if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
       if (.not. allocated(error)) call describe_history(file, this%units, error)
@@ -563,6 +572,7 @@ contains
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
          this%written_phase = [this%written_phase, size(this%phases)]
+         call record_structures(this, inc)
       end if
       this%phases(:)%pending = .false.
       this%nrows = this%nrows + 1
@@ -912,8 +922,36 @@ contains
          esets(:, k) = this%phases(p)%active_esets
          jsets(:, k) = this%phases(p)%active_jsets
       end do
-      text = xdmf_text(this%layout, h5_name, this%written, this%written_time, esets, jsets)
+      text = xdmf_text(this%layout, h5_name, this%written, this%written_time, esets, jsets, &
+         this%written_plates, this%written_anchors)
    end function sidecar_text
+
+   !> Appends the plate and anchor sets active in `inc` (written with fields) to
+   !> written_plates / written_anchors (a set with no fields entry counts as active).
+   subroutine record_structures(this, inc)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      logical, allocatable :: grown(:, :), on(:)
+      integer :: n
+      n = size(this%written_plates, 2)
+      allocate (on(size(this%layout%plates)), source=.true.)
+      if (allocated(inc%plate_fields)) then
+         if (size(inc%plate_fields) == size(on)) on = inc%plate_fields(:)%active
+      end if
+      allocate (grown(size(on), n + 1))
+      grown(:, 1:n) = this%written_plates
+      grown(:, n + 1) = on
+      call move_alloc(grown, this%written_plates)
+      deallocate (on)
+      allocate (on(size(this%layout%anchors)), source=.true.)
+      if (allocated(inc%anchor_fields)) then
+         if (size(inc%anchor_fields) == size(on)) on = inc%anchor_fields(:)%active
+      end if
+      allocate (grown(size(on), n + 1))
+      grown(:, 1:n) = this%written_anchors
+      grown(:, n + 1) = on
+      call move_alloc(grown, this%written_anchors)
+   end subroutine record_structures
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)
