@@ -10,6 +10,7 @@ program tester
    use test_phases, only: collect_phases
    use test_plates, only: collect_plates
    use test_anchors, only: collect_anchors
+   use test_io_results_structures, only: collect_io_results_structures
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
    use test_estimator, only: collect_estimator
@@ -90,6 +91,7 @@ program tester
    suites = [suites, new_testsuite('initial', collect_initial)]
    suites = [suites, new_testsuite('phases', collect_phases)]
    suites = [suites, new_testsuite('anchors', collect_anchors)]
+   suites = [suites, new_testsuite('io_results_structures', collect_io_results_structures)]
    suites = [suites, new_testsuite('cli', collect_cli)]
    suites = [suites, new_testsuite('model_mesh_tools', collect_model_mesh_tools)]
    suites = [suites, new_testsuite('io_gmsh', collect_io_gmsh)]
