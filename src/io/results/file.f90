@@ -232,7 +232,8 @@ contains
       if (.not. allocated(error)) call write_anchor_mesh(file, model, this%units%length, &
          this%units%force, error)
       if (.not. allocated(error)) call write_plate_mesh(file, model, error)
-      if (.not. allocated(error)) call write_structure_geometry(file, model, error)
+      if (.not. allocated(error)) call write_structure_geometry(file, model, &
+         this%units%length, error)
       if (.not. allocated(error)) call create_history(file, model, error)
       if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
       if (.not. allocated(error)) call describe_history(file, this%units, error)

@@ -13,7 +13,8 @@ module pecplas_io_results_structure_geometry
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
-   use pecplas_io_results_h5, only: h5_write, safe_name
+   use pecplas_io_results_h5, only: h5_write, safe_name, h5_describe
+   use pecplas_io_results_describe, only: XY
    use pecplas_io_results_xdmf, only: xdmf_plate_t, xdmf_anchor_t
    implicit none (type, external)
    private
@@ -22,19 +23,25 @@ module pecplas_io_results_structure_geometry
 
 contains
 
-   !> The datasets above, into groups write_plate_mesh and write_anchor_mesh created.
-   subroutine write_structure_geometry(file, model, error)
+   !> The datasets above, into groups write_plate_mesh and write_anchor_mesh created;
+   !> coordinates in `length_unit`.
+   subroutine write_structure_geometry(file, model, length_unit, error)
       integer(hid_t), intent(in) :: file
       type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: length_unit
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: nodes(:), local(:, :), pconn(:, :)
+      real(wp), allocatable :: points(:, :)
       character(len=:), allocatable :: g
       integer :: s, b
       if (allocated(model%plates)) then
          do s = 1, size(model%plates)
             g = '/mesh/plates/'//safe_name(model%plates(s)%name)
             call plate_node_order(model%plates(s)%conn, nodes, local)
-            call h5_write(file, g//'/node_coordinates', model%mesh%x(:, nodes), error)
+            points = model%mesh%x(:, nodes)
+            call h5_write(file, g//'/node_coordinates', points, error)
+            if (.not. allocated(error)) call h5_describe(file, g//'/node_coordinates', &
+               length_unit, error, XY)
             if (.not. allocated(error)) call h5_write(file, g//'/local_connectivity', &
                local - 1, error)
             if (allocated(error)) return
@@ -47,7 +54,10 @@ contains
             do b = 1, size(pconn, 2)
                pconn(:, b) = [2*b - 2, 2*b - 1]
             end do
-            call h5_write(file, g//'/point_coordinates', anchor_points(model, s), error)
+            points = anchor_points(model, s)
+            call h5_write(file, g//'/point_coordinates', points, error)
+            if (.not. allocated(error)) call h5_describe(file, g//'/point_coordinates', &
+               length_unit, error, XY)
             if (.not. allocated(error)) call h5_write(file, g//'/point_connectivity', pconn, &
                error)
             deallocate (pconn)
