@@ -26,6 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from pecplas_py import structures  # noqa: E402
+from pecplas_py.structures import NQM  # noqa: E402
 from pecplas_py.figures import save_figure  # noqa: E402
 from pecplas_py.results import Results  # noqa: E402
 
@@ -97,7 +98,14 @@ def draw(r, out, envelope=True):
                     ax.plot(pos, p["end"][k], color=c, lw=1.4, label=labels[phase])
                     if envelope:
                         ax.fill_between(pos, p[k][0], p[k][1], color=c, alpha=0.18, lw=0)
+        # a force that is zero to round-off (N of a plate under transverse load only) is
+        # drawn on the scale of the plate's largest force, not magnified to its noise
+        big = {k: max((float(np.abs(p["end"][k]).max()) for e in env.values()
+                       for p in [e["plates"].get(name)] if p), default=0.0) for k in NQM}
         for ax, k in zip(axes[row], PANELS):
+            if k in NQM and big[k] <= 1e-9 * max(big.values()):
+                lim = 0.05 * max(big.values()) or 1.0
+                (ax.set_xlim if line["vertical"] else ax.set_ylim)(-lim, lim)
             u = f" [{unit[k]}]" if unit[k] else ""
             what = f"{k}{u}" if k != "deflection" else f"deflection (normal to chord){u}"
             if line["vertical"]:
