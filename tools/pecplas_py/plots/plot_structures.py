@@ -161,6 +161,7 @@ def draw(r, out, envelope=True):
                                                       "max"], loc="upper left")
             tt.auto_set_font_size(False)
             tt.set_fontsize(7)
+            tt.auto_set_column_width(list(range(6)))
         for ax in axes[-1][2:]:
             ax.set_visible(False)
     data["phases"] = {str(p): labels[p] for p in env}
