@@ -34,7 +34,8 @@ help:
 	@echo "  make test     fpm test (debug) + CMake build and ctest (release) + pytest test/python"
 	@echo "  make build    fpm build --profile release"
 	@echo "  make install  build (release) and install pecplas, pecplas-path, pecplas-identify,"
-	@echo "                pecplas-sensitivity, pecplas-sweep and pecplas-plot into PREFIX/bin"
+	@echo "                pecplas-sensitivity, pecplas-sweep, pecplas-plot and pecplas-slope"
+	@echo "                into PREFIX/bin"
 	@echo "                (PREFIX=$(PREFIX))"
 	@echo "  make test-slurm  start a one-node Slurm here and run the S2 mesh series as a job"
 	@echo "                array through pecplas-sweep (doc/sweep.md; needs root or Slurm)"
@@ -169,7 +170,7 @@ test-mpi: build-mpi
 	$(PYTHON) -m pecplas_py.checks.mpi_check $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
 	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
 	  --signal test/data/plasticity/footing_t6.inp --write-failure test/data/plasticity/footing_t6.inp \
-	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps
+	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps phases phases_switch
 
 bench: deps
 	@bash tools/bench.sh

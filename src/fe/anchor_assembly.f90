@@ -29,6 +29,7 @@ contains
       if (.not. allocated(model%anchors)) return
       deallocate (astate%sets)
       allocate (astate%sets(size(model%anchors)))
+      allocate (active(size(model%anchors)))
       active = initial_anchor_activity(model)
       do s = 1, size(model%anchors)
          n = model%anchors(s)%nbar()

@@ -103,7 +103,8 @@ contains
                else
                   ! tangent of the quadratic side at xi = -1 / +1
                   dxd = merge(-1.5_wp, 0.5_wp, end == 1)*x(:, 1) + &
-                     merge(-0.5_wp, 1.5_wp, end == 1)*x(:, 2) + merge(2.0_wp, -2.0_wp, end == 1)*x(:, 3)
+                     merge(-0.5_wp, 1.5_wp, end == 1)*x(:, 2) + &
+                     merge(2.0_wp, -2.0_wp, end == 1)*x(:, 3)
                   t = dxd/norm2(dxd)
                end if
                n = [-t(2), t(1)]
@@ -122,7 +123,8 @@ contains
             end do
             if (pl%nen == 3) then
                k = at(pl%conn(3, e))
-               f%node_forces(:, k) = f%node_forces(:, k) + 0.5_wp*(st%s(1:3, 1, e) + st%s(1:3, 2, e))
+               f%node_forces(:, k) = f%node_forces(:, k) + &
+                  0.5_wp*(st%s(1:3, 1, e) + st%s(1:3, 2, e))
                count(k) = count(k) + 1
             end if
          end do

@@ -8,7 +8,8 @@
 !>
 !> The line's edges are ordered into chains and oriented along them; a joint is made on
 !> each face of every line edge (face 1 the original nodes, face 2 the copies of the body
-!> on that face, oriented with that body on the left of 1 -> 2, (B.8) order). With
+!> on that face, oriented with that body on the left of 1 -> 2, (B.8) order); the edge set
+!> then names the line's edges on its left body (the body on the left of the chains). With
 !> `extend` > 0 the cut goes on from each end of a chain along the element sides that
 !> continue it (within 30 degrees), over that length or up to the boundary: along those
 !> extension edges one joint joins the right body (face 1) to the left body (face 2)
@@ -31,8 +32,9 @@ module pecplas_model_mesh_split_faces
    integer, parameter :: FACE_LEFT = 1, FACE_RIGHT = 2, FACE_EXTENSION = 3
 
    type :: faces_result_t
-      !> Joint connectivity (2 nen, njoint) in (B.8) order, and the face of each joint.
-      integer, allocatable :: conn(:, :), face(:)
+      !> Joint connectivity (2 nen, njoint) in (B.8) order, the face of each joint and the
+      !> element set of the body on its face 2.
+      integer, allocatable :: conn(:, :), face(:), body_set(:)
       !> Nodes created (original, copy).
       integer, allocatable :: created(:, :)
       !> copies(:, node): the (up to 2) copies of each original node, 0 where none.
@@ -96,6 +98,13 @@ contains
       call split_nodes(mesh, cut, inc_ptr, inc, origin, res, error)
       if (allocated(error)) return
       call make_joints(mesh, cut, nline, owner, res)
+      ! the edge set: the line's edges on its left body (its original nodes are on no
+      ! element side any more), in the order of the chains
+      if (nen == 3) then
+         mesh%edge_sets(ke)%nodes = res%conn([4, 3, 6], 1:nline)
+      else
+         mesh%edge_sets(ke)%nodes = res%conn([4, 3], 1:nline)
+      end if
    end subroutine split_both_faces
 
    !> Mask over the nodes 1..nn: the nodes of `edges` (a 0 is no node).
@@ -237,6 +246,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: found(:)
       real(wp) :: c(2), t(2)
+      allocate (found(0)) ! gives the descriptor bounds (silences a gfortran 12 false warning)
       found = find_sides(table, en)
       if (size(found) /= 2) then
          call input_error(error, 'is a side of '//itoa(size(found))//' element(s): '// &
@@ -272,7 +282,7 @@ contains
       do v = 1, mesh%nnode()
          inc_ptr(v + 1) = inc_ptr(v + 1) + inc_ptr(v)
       end do
-      allocate (inc(2, inc_ptr(mesh%nnode() + 1) - 1))
+      allocate (inc(2, inc_ptr(mesh%nnode() + 1) - 1), fill(mesh%nnode()))
       fill = inc_ptr(1:mesh%nnode())
       do s = 1, size(mesh%esets)
          do j = 1, size(mesh%esets(s)%conn, 2)
@@ -294,7 +304,7 @@ contains
       type(faces_result_t), intent(inout) :: res
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: on_cut(:)
-      integer, allocatable :: group(:), newx(:)
+      integer, allocatable :: group(:), newx(:), extra(:)
       real(wp), allocatable :: x(:, :)
       integer :: nn, v, a, b, na, ng, k, i, nnew, kk
       logical :: changed
@@ -360,13 +370,13 @@ contains
       origin = [origin, origin(newx)]
       ! node sets gain the copies
       do i = 1, size(mesh%nsets)
-         associate (nodes => mesh%nsets(i)%nodes)
-            do k = 1, size(nodes)
-               if (nodes(k) > nn) cycle
-               if (res%copies(1, nodes(k)) > 0) mesh%nsets(i)%nodes = [mesh%nsets(i)%nodes, &
-                  pack(res%copies(:, nodes(k)), res%copies(:, nodes(k)) > 0)]
-            end do
-         end associate
+         extra = [integer ::]
+         do k = 1, size(mesh%nsets(i)%nodes)
+            v = mesh%nsets(i)%nodes(k)
+            if (v > nn) cycle
+            if (res%copies(1, v) > 0) extra = [extra, pack(res%copies(:, v), res%copies(:, v) > 0)]
+         end do
+         if (size(extra) > 0) mesh%nsets(i)%nodes = [mesh%nsets(i)%nodes, extra]
       end do
    end subroutine split_nodes
 
@@ -399,13 +409,15 @@ contains
       integer, intent(in) :: e(2), v
       integer, intent(out) :: pairs(2, 2), n
       integer :: nc, i
+      logical :: mid
       n = 0
       pairs = 0
       associate (conn => mesh%esets(e(1))%conn(:, e(2)))
          nc = corner_count(mesh%esets(e(1))%etype)
          do i = 1, nc
-            if (conn(i) == v .or. conn(mod(i, nc) + 1) == v .or. &
-                (size(conn) == 2*nc .and. conn(nc + i) == v)) then
+            mid = .false.
+            if (size(conn) == 2*nc) mid = conn(nc + i) == v
+            if (conn(i) == v .or. conn(mod(i, nc) + 1) == v .or. mid) then
                if (n == 2) exit
                n = n + 1
                pairs(:, n) = [conn(i), conn(mod(i, nc) + 1)]
@@ -434,15 +446,16 @@ contains
       integer :: f, nen, nj, face
       nen = size(cut, 1)
       nj = 2*nline + (size(cut, 2) - nline)
-      allocate (res%conn(2*nen, nj), res%face(nj))
+      allocate (res%conn(2*nen, nj), res%face(nj), res%body_set(nj))
       nj = 0
       do face = FACE_LEFT, FACE_EXTENSION
          do f = 1, size(cut, 2)
             if ((face == FACE_EXTENSION) .neqv. (f > nline)) cycle
-            l = body_nodes(mesh, cut(:, f), owner(1, 1, f), owner(2, 1, f))
-            r = body_nodes(mesh, cut(:, f), owner(1, 2, f), owner(2, 2, f))
+            l = body_nodes(mesh, res%copies, cut(:, f), owner(1, 1, f), owner(2, 1, f))
+            r = body_nodes(mesh, res%copies, cut(:, f), owner(1, 2, f), owner(2, 2, f))
             nj = nj + 1
             res%face(nj) = face
+            res%body_set(nj) = owner(1, merge(2, 1, face == FACE_RIGHT), f)
             select case (face)
             case (FACE_LEFT)
                res%conn(1:4, nj) = [cut(1, f), cut(2, f), l(2), l(1)]
@@ -459,19 +472,19 @@ contains
    end subroutine make_joints
 
    !> The nodes of element (s, j) (renumbered) at the original nodes of edge en: its copy
-   !> of each, or the node itself where it was not split.
-   function body_nodes(mesh, en, s, j) result(nodes)
+   !> of each (copies(:, node)), or the node itself where it was not split.
+   function body_nodes(mesh, copies, en, s, j) result(nodes)
       type(mesh_t), intent(in) :: mesh
-      integer, intent(in) :: en(:), s, j
+      integer, intent(in) :: copies(:, :), en(:), s, j
       integer, allocatable :: nodes(:)
-      integer :: k, i
+      integer :: k
       nodes = en
       do k = 1, size(en)
-         do i = 1, size(mesh%esets(s)%conn, 1)
-            if (mesh%x(1, mesh%esets(s)%conn(i, j)) == mesh%x(1, en(k)) .and. &
-                mesh%x(2, mesh%esets(s)%conn(i, j)) == mesh%x(2, en(k))) &
-               nodes(k) = mesh%esets(s)%conn(i, j)
-         end do
+         if (en(k) < 1) cycle
+         if (any(mesh%esets(s)%conn(:, j) == copies(1, en(k))) .and. copies(1, en(k)) > 0) &
+            nodes(k) = copies(1, en(k))
+         if (any(mesh%esets(s)%conn(:, j) == copies(2, en(k))) .and. copies(2, en(k)) > 0) &
+            nodes(k) = copies(2, en(k))
       end do
    end function body_nodes
 

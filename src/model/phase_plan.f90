@@ -5,13 +5,12 @@
 module pecplas_model_phase_plan
    use pecplas_model_type, only: model_t
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, TARGET_ELEMENTS, &
-      TARGET_JOINTS, TARGET_ANCHORS, TARGET_PLATES
+      TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_PLATES, TARGET_ANCHORS
    implicit none (type, external)
    private
 
-   public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes
-   public :: initial_anchor_activity
-   public :: plate_activity
+   public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes, &
+      target_activity, target_count, plate_activity, initial_anchor_activity
 
 contains
 
@@ -54,12 +53,11 @@ contains
          if (.not. allocated(model%steps(i)%changes)) cycle
          do c = 1, size(model%steps(i)%changes)
             associate (ch => model%steps(i)%changes(c))
-               if (ch%set < 1 .or. ch%target == TARGET_PLATES) cycle
-               if (ch%target == TARGET_ANCHORS) cycle
+               if (ch%set < 1) cycle
                if (ch%target == TARGET_ELEMENTS) then
                   if (.not. eseen(ch%set)) eactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
                   eseen(ch%set) = .true.
-               else
+               else if (ch%target == TARGET_JOINTS) then
                   if (.not. jseen(ch%set)) jactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
                   jseen(ch%set) = .true.
                end if
@@ -67,6 +65,63 @@ contains
          end do
       end do
    end subroutine initial_activity
+
+   !> How many things of kind `target` the model has (element sets, joint sets, load
+   !> patterns, named supports).
+   pure integer function target_count(model, target) result(n)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: target
+      n = 0
+      select case (target)
+      case (TARGET_ELEMENTS)
+         n = size(model%mesh%esets)
+      case (TARGET_JOINTS)
+         if (allocated(model%joint_sets)) n = size(model%joint_sets)
+      case (TARGET_PATTERNS)
+         if (allocated(model%patterns)) n = size(model%patterns)
+      case (TARGET_SUPPORTS)
+         if (allocated(model%supports%names)) n = size(model%supports%names)
+      case (TARGET_PLATES)
+         if (allocated(model%plates)) n = size(model%plates)
+      case (TARGET_ANCHORS)
+         if (allocated(model%anchors)) n = size(model%anchors)
+      end select
+   end function target_count
+
+   !> Whether each thing of kind `target` is active in step `istep` once its changes are
+   !> applied (istep = 0: before the first step). A thing whose first mention in the steps
+   !> is an *ACTIVATE is inactive until then; every other one is active. (Joint sets that a
+   !> deactivation leaves hanging are not followed here: step_activity.)
+   pure function target_activity(model, target, istep) result(on)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: target, istep
+      logical, allocatable :: on(:), seen(:)
+      integer :: i, c
+      allocate (on(target_count(model, target)), source=.true.)
+      allocate (seen(size(on)), source=.false.)
+      if (.not. allocated(model%steps)) return
+      do i = 1, size(model%steps)
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= target .or. ch%set < 1) cycle
+               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+               if (.not. seen(ch%set)) on(ch%set) = ch%kind /= CHANGE_ACTIVATE
+               seen(ch%set) = .true.
+            end associate
+         end do
+      end do
+      do i = 1, min(istep, size(model%steps))
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= target .or. ch%set < 1) cycle
+               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+               on(ch%set) = ch%kind == CHANGE_ACTIVATE
+            end associate
+         end do
+      end do
+   end function target_activity
 
    !> Applies the activations and deactivations of step `istep` to the masks. A joint set
    !> one of whose nodes loses its last active massif element (a node that had one) is
@@ -83,10 +138,9 @@ contains
       do c = 1, size(model%steps(istep)%changes)
          associate (ch => model%steps(istep)%changes(c))
             if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
-            if (ch%target == TARGET_ANCHORS .or. ch%target == TARGET_PLATES) cycle
             if (ch%target == TARGET_ELEMENTS) then
                eactive(ch%set) = ch%kind == CHANGE_ACTIVATE
-            else
+            else if (ch%target == TARGET_JOINTS) then
                jactive(ch%set) = ch%kind == CHANGE_ACTIVATE
             end if
          end associate
@@ -103,31 +157,6 @@ contains
          end if
       end do
    end subroutine step_activity
-
-   !> Activity of the anchor sets before the first step: a set whose first activation or
-   !> deactivation in the steps is an *ACTIVATE is inactive until then.
-   pure function initial_anchor_activity(model) result(active)
-      type(model_t), intent(in) :: model
-      logical, allocatable :: active(:)
-      logical, allocatable :: seen(:)
-      integer :: i, c, n
-      n = 0
-      if (allocated(model%anchors)) n = size(model%anchors)
-      allocate (active(n), source=.true.)
-      allocate (seen(n), source=.false.)
-      if (.not. allocated(model%steps)) return
-      do i = 1, size(model%steps)
-         if (.not. allocated(model%steps(i)%changes)) cycle
-         do c = 1, size(model%steps(i)%changes)
-            associate (ch => model%steps(i)%changes(c))
-               if (ch%target /= TARGET_ANCHORS .or. ch%set < 1) cycle
-               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
-               if (.not. seen(ch%set)) active(ch%set) = ch%kind /= CHANGE_ACTIVATE
-               seen(ch%set) = .true.
-            end associate
-         end do
-      end do
-   end function initial_anchor_activity
 
    !> Nodes of an active element of an active element set, of an active joint set or of an
    !> active plate set (`pactive`; absent: every plate), and of an active anchor set when
@@ -159,42 +188,20 @@ contains
       end do
    end function attached_nodes
 
-   !> Activity of the plate sets during step `istep` (after its changes; istep = 0: before
-   !> the first step): a plate whose first mention in the steps is an *ACTIVATE is not part
-   !> of the model until then.
+   !> Activity of the plate sets in step `istep` (target_activity of TARGET_PLATES).
    pure function plate_activity(model, istep) result(pactive)
       type(model_t), intent(in) :: model
       integer, intent(in) :: istep
       logical, allocatable :: pactive(:)
-      logical, allocatable :: seen(:)
-      integer :: i, c, n
-      n = 0
-      if (allocated(model%plates)) n = size(model%plates)
-      allocate (pactive(n), source=.true.)
-      allocate (seen(n), source=.false.)
-      if (.not. allocated(model%steps)) return
-      ! before the first step
-      do i = 1, size(model%steps)
-         if (.not. allocated(model%steps(i)%changes)) cycle
-         do c = 1, size(model%steps(i)%changes)
-            associate (ch => model%steps(i)%changes(c))
-               if (ch%target /= TARGET_PLATES .or. ch%set < 1) cycle
-               if (.not. seen(ch%set)) pactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
-               seen(ch%set) = .true.
-            end associate
-         end do
-      end do
-      do i = 1, min(istep, size(model%steps))
-         if (.not. allocated(model%steps(i)%changes)) cycle
-         do c = 1, size(model%steps(i)%changes)
-            associate (ch => model%steps(i)%changes(c))
-               if (ch%target /= TARGET_PLATES .or. ch%set < 1) cycle
-               if (ch%kind == CHANGE_ACTIVATE) pactive(ch%set) = .true.
-               if (ch%kind == CHANGE_DEACTIVATE) pactive(ch%set) = .false.
-            end associate
-         end do
-      end do
+      pactive = target_activity(model, TARGET_PLATES, istep)
    end function plate_activity
+
+   !> Activity of the anchor sets before the first step (target_activity of TARGET_ANCHORS).
+   pure function initial_anchor_activity(model) result(aactive)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: aactive(:)
+      aactive = target_activity(model, TARGET_ANCHORS, 0)
+   end function initial_anchor_activity
 
    !> Nodes of any massif element (active or not).
    pure function massif_nodes(model) result(held)

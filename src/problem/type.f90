@@ -19,10 +19,11 @@ module pecplas_problem_type
    use pecplas_problem_position, only: run_position_t
    use pecplas_problem_phase, only: phase_state_t
    use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes, &
-      plate_activity
+      target_activity, plate_activity
+   use pecplas_model_phases, only: TARGET_SUPPORTS, TARGET_PATTERNS
    use pecplas_fe_joint_assembly, only: setup_joint_state
-   use pecplas_fe_anchor_assembly, only: setup_anchor_state
    use pecplas_fe_plate_assembly, only: setup_plate_state
+   use pecplas_fe_anchor_assembly, only: setup_anchor_state
    use pecplas_model_columns, only: nodal_columns, rotation_column
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
@@ -95,8 +96,8 @@ contains
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
-      call setup_anchor_state(model, problem%state%anchors)
       call setup_plate_state(model, problem%state%plates)
+      call setup_anchor_state(model, problem%state%anchors)
       ! phases: the sets first activated by a step are inactive until then
       problem%phase%phased = is_phased(model)
       if (problem%phase%phased) then
@@ -109,7 +110,15 @@ contains
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (problem%state%u(2, nnode), source=0.0_wp)
       allocate (problem%state%factors(npat), source=0.0_wp)
-      call new_dofs(model, problem%system%dofs, error)
+      if (problem%phase%phased) then
+         ! the named supports and patterns a step first activates are off until then
+         problem%phase%supports_on = target_activity(model, TARGET_SUPPORTS, 0)
+         problem%phase%patterns_on = target_activity(model, TARGET_PATTERNS, 0)
+         allocate (problem%phase%held_u(2, nnode), source=0.0_wp)
+         call new_dofs(model, problem%system%dofs, error, problem%phase%supports_on)
+      else
+         call new_dofs(model, problem%system%dofs, error)
+      end if
       if (allocated(error)) return
       if (problem%phase%phased) call set_orphans(model, problem, eactive, jactive)
       allocate (problem%system%initial_force(2, nnode), source=0.0_wp)
@@ -145,9 +154,8 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:), jactive(:)
-      logical, allocatable :: held(:), pactive(:)
+      logical, allocatable :: held(:), pactive(:), aactive(:)
       integer, allocatable :: eq(:, :)
-      logical, allocatable :: aactive(:)
       integer :: s, e, k, node
       allocate (pactive(0), aactive(0))
       if (allocated(problem%state%plates%sets)) pactive = problem%state%plates%sets%active

@@ -171,15 +171,25 @@ contains
       character(len=:), allocatable :: names(:), msg
       real(wp) :: deck_sum
       logical :: guarded
-      integer :: nj, np, na
+      integer :: nj, np
+      character(len=64), allocatable :: anames(:)
 
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
       np = 0
       if (allocated(problem%state%plates%sets)) np = size(problem%state%plates%sets)
-      na = 0
-      if (allocated(problem%state%anchors%sets)) na = size(problem%state%anchors%sets)
-      names = restart_names(size(problem%state%sets), nj, np, na)
+      names = restart_names(size(problem%state%sets), nj, np)
+      ! anchors (each set's activity, prestress, forces, elongations)
+      if (allocated(problem%state%anchors%sets)) then
+         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         anames(1:size(names)) = names
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         deallocate (names)
+         allocate (character(len=64) :: names(size(anames)))
+         names = anames
+      end if
       ! a damaged file may crash the HDF5 library itself: an input error, not a crash
       guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
          ': the HDF5 library crashed reading it (the file is damaged)')
@@ -275,6 +285,9 @@ contains
             end if
             call replay_phases(model, problem, nint(v(1)), error)
             if (allocated(error)) return
+            if (allocated(p%du_prev)) then
+               if (size(p%du_prev) /= problem%system%dofs%neq) deallocate (p%du_prev)
+            end if
             if (data%has('phase_carried')) then
                call data%get('phase_carried', size(st%u), v, error)
                if (allocated(error)) return
@@ -382,7 +395,13 @@ contains
       real(wp), allocatable :: v(:), peak(:), why(:)
       associate (p => problem%position)
          if (data%has('du_prev')) then
-            call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
+            ! (a phased run numbers its equations for the phase in force: checked after
+            ! its phases are replayed)
+            if (problem%phase%phased) then
+               call data%get('du_prev', data%length('du_prev'), p%du_prev, error)
+            else
+               call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
+            end if
             if (allocated(error)) return
          end if
          ! the method the chain starts with (older restart data: the run's own)
@@ -484,10 +503,9 @@ contains
       end if
    end subroutine get_operator
 
-   !> Names of the datasets a problem with `nsets` element sets, `njoint` joint sets,
-   !> `nplate` plate sets and `nanchor` anchor sets reads.
-   pure function restart_names(nsets, njoint, nplate, nanchor) result(names)
-      integer, intent(in) :: nsets, njoint, nplate, nanchor
+   !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
+   pure function restart_names(nsets, njoint, nplate) result(names)
+      integer, intent(in) :: nsets, njoint, nplate
       character(len=:), allocatable :: names(:)
       character(len=32), allocatable :: list(:)
       integer :: s
@@ -506,9 +524,6 @@ contains
       do s = 1, nplate
          list = [character(len=32) :: list, 'plate_e_'//itoa(s), 'plate_s_'//itoa(s), &
             'plate_hist_'//itoa(s), 'plate_tangent_'//itoa(s)]
-      end do
-      do s = 1, nanchor
-         list = [character(len=32) :: list, 'anchor_'//itoa(s)]
       end do
       names = list
    end function restart_names

@@ -6,7 +6,7 @@
 !> f_i = (N/Np)^2 + (M_i/Mp)^2 - 1 <= 0 with associated flow (vp += dl_i df_i/dq); the return
 !> is the closest point in the metric of Kb^-1 with the active ends found by trial, and the
 !> consistent tangent follows from the linearised return. A hinge forms exactly at a node,
-!> so a collapse mechanism of hinges at nodes has its exact load (theory.md §11).
+!> so a collapse mechanism of hinges at nodes has its exact load (theory.md §12).
 module pecplas_structures_hinge
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error

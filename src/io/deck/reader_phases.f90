@@ -1,10 +1,11 @@
 !> Phase changes of the deck (doc/deck.md, Phases): *DEACTIVATE, *ACTIVATE [, STRESS=ZERO |
-!> WISHED_IN_PLACE], *CHANGE_MATERIAL, *CHANGE_LAW and *PRESTRESS (anchors) after a *STEP line (before its
+!> WISHED_IN_PLACE], *CHANGE_MATERIAL and *CHANGE_LAW after a *STEP line (before its
 !> *END STEP) change the model at the start of that step. Read into the open step, then
-!> resolved to set, material and law indices and checked phase by phase once the whole deck
-!> is read: a set activated while active or deactivated while inactive, a load or imposed
-!> displacement on a node that no active element or joint holds in a phase, an unknown set,
-!> material or law are errors at the deck line.
+!> resolved to the index of an element set, joint set, load pattern or named support (and
+!> of a material or law) and checked phase by phase once the whole deck is read: a thing
+!> activated while active or deactivated while inactive, a step that drives an inactive
+!> pattern, a load or imposed displacement on a node that no active element or joint holds
+!> in a phase, an unknown name, material or law are errors at the deck line.
 module pecplas_io_deck_reader_phases
    use pecplas_base_error, only: error_t
    use pecplas_base_kinds, only: wp
@@ -15,9 +16,10 @@ module pecplas_io_deck_reader_phases
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
-      START_WISHED, CHANGE_PRESTRESS, TARGET_ANCHORS, TARGET_PLATES
+      START_WISHED, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_NAMES, TARGET_PLATES, &
+      TARGET_ANCHORS, CHANGE_PRESTRESS
    use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes, &
-      initial_anchor_activity, plate_activity
+      target_activity
    implicit none (type, external)
    private
 
@@ -214,23 +216,18 @@ contains
          ch%set_name = model%mesh%esets(part)%name
       end if
       ch%target = TARGET_ELEMENTS
-      if (ch%set == 0 .and. allocated(model%joint_sets)) then
-         do j = 1, size(model%joint_sets)
-            if (same_name(model%joint_sets(j)%name, raw%set)) ch%set = j
-         end do
-         if (ch%set > 0) ch%target = TARGET_JOINTS
-      end if
-      if (ch%set == 0 .and. allocated(model%anchors)) then
-         do j = 1, size(model%anchors)
-            if (same_name(model%anchors(j)%name, raw%set)) ch%set = j
-         end do
-         if (ch%set > 0) ch%target = TARGET_ANCHORS
-      end if
-      if (ch%set == 0 .and. allocated(model%plates)) then
-         do j = 1, size(model%plates)
-            if (same_name(model%plates(j)%name, raw%set)) ch%set = j
-         end do
-         if (ch%set > 0) ch%target = TARGET_PLATES
+      ! the kinds of thing a phase switches, looked up in this order (doc/deck.md, Phases)
+      if (ch%set == 0) call find_target(model, raw%set, ch%target, ch%set)
+      if (ch%set == 0 .and. ch%kind == CHANGE_PRESTRESS) then
+         list = ''
+         if (allocated(model%anchors)) then
+            do k = 1, size(model%anchors)
+               call add_name(list, model%anchors(k)%name)
+            end do
+         end if
+         call line_error(state, raw%at, "no anchor '"//raw%set//"'; known anchors:"//list, &
+            error)
+         return
       end if
       if (ch%set == 0) then
          list = ''
@@ -242,22 +239,32 @@ contains
                call add_name(list, model%joint_sets(k)%name)
             end do
          end if
-         if (allocated(model%anchors)) then
-            do k = 1, size(model%anchors)
-               call add_name(list, model%anchors(k)%name)
-            end do
-         end if
-         if (allocated(model%plates)) then
-            do k = 1, size(model%plates)
-               call add_name(list, model%plates(k)%name)
-            end do
-         end if
-         if (ch%kind == CHANGE_PRESTRESS) then
-            call line_error(state, raw%at, "no anchor '"//raw%set//"'; known sets, plates "// &
-               'and anchors:'//list, error)
+         if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
+            if (allocated(model%plates)) then
+               do k = 1, size(model%plates)
+                  call add_name(list, model%plates(k)%name)
+               end do
+            end if
+            if (allocated(model%patterns)) then
+               do k = 1, size(model%patterns)
+                  call add_name(list, model%patterns(k)%name)
+               end do
+            end if
+            if (allocated(model%supports%names)) then
+               do k = 1, size(model%supports%names)
+                  call add_name(list, trim(model%supports%names(k)))
+               end do
+            end if
+            if (allocated(model%anchors)) then
+               do k = 1, size(model%anchors)
+                  call add_name(list, model%anchors(k)%name)
+               end do
+            end if
+            call line_error(state, raw%at, "no plate set, anchor, element set, joint set, "// &
+               "load pattern or named support '"//raw%set//"'; known:"//list, error)
          else
             call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
-               "' (nor plate set or anchor); known sets, plates and anchors:"//list, error)
+               "'; known sets:"//list, error)
          end if
          return
       end if
@@ -265,23 +272,50 @@ contains
          call resolve_anchor_change(state, model, raw, ch, error)
          return
       end if
-      if (ch%target == TARGET_PLATES .and. ch%kind /= CHANGE_ACTIVATE .and. &
-          ch%kind /= CHANGE_DEACTIVATE) then
-         call line_error(state, raw%at, "'"//raw%set//"' is a plate set: a phase activates "// &
-            'or deactivates it (its section does not change)', error)
+      if (ch%target == TARGET_PLATES) then
+         if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) then
+            call line_error(state, raw%at, "'"//raw%set//"' is a plate set: a phase "// &
+               'activates or deactivates it (its section does not change)', error)
+         else if (ch%start == START_WISHED) then
+            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets "// &
+               "and Katona contact sets; plate set '"//raw%set//"' starts free of forces", &
+               error)
+         end if
          return
       end if
-      if (ch%target == TARGET_PLATES .and. ch%start == START_WISHED) then
-         call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets; plate "// &
-            "set '"//raw%set//"' starts free of forces", error)
+      if (ch%target == TARGET_PATTERNS .or. ch%target == TARGET_SUPPORTS) then
+         select case (ch%kind)
+         case (CHANGE_MATERIAL, CHANGE_LAW)
+            call line_error(state, raw%at, "'"//raw%set//"' is a "// &
+               trim(TARGET_NAMES(ch%target))//': '//trim(CHANGE_NAMES(ch%kind))// &
+               ' changes element sets or joint sets', error)
+            return
+         end select
+         if (ch%kind == CHANGE_ACTIVATE .and. ch%start == START_WISHED) then
+            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets "// &
+               "and Katona contact sets; '"//raw%set//"' is a "// &
+               trim(TARGET_NAMES(ch%target)), error)
+            return
+         end if
+         if (ch%target == TARGET_PATTERNS) then
+            if (model%patterns(ch%set)%kind == LOAD_DISPLACEMENT) then
+               call line_error(state, raw%at, "load pattern '"//raw%set//"' imposes "// &
+                  'displacements: a phase cannot switch it (its factor drives it; a '// &
+                  'support that a phase installs or removes is a *BOUNDARY, NAME=)', error)
+               return
+            end if
+         end if
          return
       end if
       select case (ch%kind)
       case (CHANGE_ACTIVATE)
          if (ch%target == TARGET_JOINTS .and. ch%start == START_WISHED) then
-            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets; "// &
-               "joint set '"//raw%set//"' starts from the stresses of the soil beside it", error)
-            return
+            if (.not. model%joint_sets(ch%set)%is_katona()) then
+               call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets "// &
+                  "and Katona contact sets; joint set '"//raw%set//"' starts from the "// &
+                  'stresses of the soil beside it anyway', error)
+               return
+            end if
          end if
       case (CHANGE_MATERIAL)
          if (ch%target /= TARGET_ELEMENTS) then
@@ -327,6 +361,54 @@ contains
       end select
    end subroutine resolve_change
 
+   !> The thing a phase-change line names, looked up among the joint sets, the load patterns
+   !> and the named supports, in this order (element sets come first, by the caller);
+   !> set = 0 when none has that name.
+   subroutine find_target(model, name, target, set)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: target, set
+      integer :: k
+      set = 0
+      target = TARGET_ELEMENTS
+      if (allocated(model%joint_sets)) then
+         do k = size(model%joint_sets), 1, -1
+            if (same_name(model%joint_sets(k)%name, name)) set = k
+         end do
+         target = TARGET_JOINTS
+         if (set > 0) return
+      end if
+      if (allocated(model%plates)) then
+         do k = size(model%plates), 1, -1
+            if (same_name(model%plates(k)%name, name)) set = k
+         end do
+         target = TARGET_PLATES
+         if (set > 0) return
+      end if
+      if (allocated(model%patterns)) then
+         do k = size(model%patterns), 1, -1
+            if (same_name(model%patterns(k)%name, name)) set = k
+         end do
+         target = TARGET_PATTERNS
+         if (set > 0) return
+      end if
+      if (allocated(model%supports%names)) then
+         do k = size(model%supports%names), 1, -1
+            if (same_name(trim(model%supports%names(k)), name)) set = k
+         end do
+         target = TARGET_SUPPORTS
+         if (set > 0) return
+      end if
+      if (allocated(model%anchors)) then
+         do k = size(model%anchors), 1, -1
+            if (same_name(model%anchors(k)%name, name)) set = k
+         end do
+         target = TARGET_ANCHORS
+         if (set > 0) return
+      end if
+      target = TARGET_ELEMENTS
+   end subroutine find_target
+
    !> A change naming an anchor set: *ACTIVATE (STRESS= does not apply), *DEACTIVATE, or
    !> *PRESTRESS with a force within the anchor's limits.
    subroutine resolve_anchor_change(state, model, raw, ch, error)
@@ -367,14 +449,17 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), aact(:), pact(:)
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), pact(:), sact(:), plact(:), &
+         aact(:)
       integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
       logical :: on
       call initial_activity(model, eact, jact)
-      aact = initial_anchor_activity(model)
-      pact = plate_activity(model, 0)
+      pact = target_activity(model, TARGET_PATTERNS, 0)
+      sact = target_activity(model, TARGET_SUPPORTS, 0)
+      plact = target_activity(model, TARGET_PLATES, 0)
+      aact = target_activity(model, TARGET_ANCHORS, 0)
       emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
       allocate (jlaw(size(jact)))
       do c = 1, size(jact)
@@ -386,29 +471,50 @@ contains
       do s = 1, size(model%steps)
          associate (step => model%steps(s))
             do c = 1, size(step%changes)
-               if (step%changes(c)%target == TARGET_ANCHORS) then
-                  call check_anchor_change(state, state%steps(s)%changes(c)%at, step%name, &
-                     step%changes(c), aact, error)
-                  if (allocated(error)) return
-                  cycle
-               end if
                associate (ch => step%changes(c))
                   if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
-                     if (ch%target == TARGET_ELEMENTS) then
+                     select case (ch%target)
+                     case (TARGET_ELEMENTS)
                         on = eact(ch%set)
-                     else if (ch%target == TARGET_PLATES) then
-                        on = pact(ch%set)
-                     else
+                     case (TARGET_JOINTS)
                         on = jact(ch%set)
-                     end if
+                     case (TARGET_PATTERNS)
+                        on = pact(ch%set)
+                     case (TARGET_PLATES)
+                        on = plact(ch%set)
+                     case (TARGET_ANCHORS)
+                        on = aact(ch%set)
+                     case default
+                        on = sact(ch%set)
+                     end select
                      if (ch%kind == CHANGE_ACTIVATE .and. on) then
-                        call line_error(state, state%steps(s)%changes(c)%at, "set '"// &
-                           ch%set_name//"' is already active in step '"//step%name//"'", error)
+                        call line_error(state, state%steps(s)%changes(c)%at, &
+                           trim(what(ch%target))//" '"//ch%set_name// &
+                           "' is already active in step '"//step%name//"'", error)
                         return
                      end if
                      if (ch%kind == CHANGE_DEACTIVATE .and. .not. on) then
-                        call line_error(state, state%steps(s)%changes(c)%at, "set '"// &
-                           ch%set_name//"' is not active in step '"//step%name//"'", error)
+                        call line_error(state, state%steps(s)%changes(c)%at, &
+                           trim(what(ch%target))//" '"//ch%set_name// &
+                           "' is not active in step '"//step%name//"'", error)
+                        return
+                     end if
+                     if (ch%target == TARGET_PATTERNS) pact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                     ! (--strict) a pattern activated at factor 0 that the step does not drive
+                     if (ch%target == TARGET_PATTERNS .and. ch%kind == CHANGE_ACTIVATE) then
+                        if (factors(ch%set) == 0.0_wp .and. .not. any(step%pattern == ch%set)) &
+                           call model%warnings%add("load pattern '"//ch%set_name//"' is "// &
+                           "activated at factor 0 and step '"//step%name//"' does not drive "// &
+                           'it: it loads nothing', ch%file, ch%line)
+                     end if
+                     if (ch%target == TARGET_SUPPORTS) sact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                     if (ch%target == TARGET_ANCHORS) aact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                  end if
+                  if (ch%kind == CHANGE_PRESTRESS) then
+                     if (.not. aact(ch%set)) then
+                        call line_error(state, state%steps(s)%changes(c)%at, "anchor '"// &
+                           ch%set_name//"' is not active in step '"//step%name//"': "// &
+                           '*ACTIVATE it in this step or before *PRESTRESS', error)
                         return
                      end if
                   end if
@@ -428,14 +534,21 @@ contains
                   end if
                end associate
                ! each change applies before the next is checked (a set named twice)
-               call step_activity_one(step%changes(c), eact, jact, pact)
+               call step_activity_one(step%changes(c), eact, jact, plact)
             end do
             call step_activity(model, s, eact, jact, dropped)
-            held = attached_nodes(model, eact, jact, pact, aact)
+            held = attached_nodes(model, eact, jact, plact, aact)
             do k = 1, size(step%pattern)
+               if (.not. pact(step%pattern(k))) then
+                  call line_error(state, state%steps(s)%at, "step '"//step%name// &
+                     "' drives load pattern '"//model%patterns(step%pattern(k))%name// &
+                     "', which is not active in it: *ACTIVATE it first", error)
+                  return
+               end if
                factors(step%pattern(k)) = step%target(k)
             end do
             do p = 1, npat
+               if (.not. pact(p)) cycle
                if (factors(p) == 0.0_wp .and. .not. any(step%pattern == p)) cycle
                call check_pattern(state, model, s, p, held, error)
                if (allocated(error)) return
@@ -444,40 +557,24 @@ contains
       end do
    end subroutine check_phases
 
-   !> An anchor change in step `name`: activation of an active anchor, deactivation or
-   !> prestress of an inactive one are errors; the activity follows the change.
-   subroutine check_anchor_change(state, at, name, ch, aact, error)
-      type(deck_state_t), intent(in) :: state
-      integer, intent(in) :: at
-      character(len=*), intent(in) :: name
-      type(phase_change_t), intent(in) :: ch
-      logical, intent(inout) :: aact(:)
-      type(error_t), allocatable, intent(out) :: error
-      select case (ch%kind)
-      case (CHANGE_ACTIVATE)
-         if (aact(ch%set)) call line_error(state, at, "anchor '"//ch%set_name// &
-            "' is already active in step '"//name//"'", error)
-         aact(ch%set) = .true.
-      case (CHANGE_DEACTIVATE)
-         if (.not. aact(ch%set)) call line_error(state, at, "anchor '"//ch%set_name// &
-            "' is not active in step '"//name//"'", error)
-         aact(ch%set) = .false.
-      case (CHANGE_PRESTRESS)
-         if (.not. aact(ch%set)) call line_error(state, at, "anchor '"//ch%set_name// &
-            "' is not active in step '"//name//"': *ACTIVATE it in this step or before "// &
-            '*PRESTRESS', error)
-      end select
-   end subroutine check_anchor_change
+   !> 'set' for element and joint sets (as the messages have always said), else the kind.
+   pure function what(target) result(text)
+      integer, intent(in) :: target
+      character(len=:), allocatable :: text
+      text = 'set'
+      if (target == TARGET_PATTERNS .or. target == TARGET_SUPPORTS .or. &
+          target == TARGET_ANCHORS) text = TARGET_NAMES(target)
+   end function what
 
-   pure subroutine step_activity_one(ch, eact, jact, pact)
+   pure subroutine step_activity_one(ch, eact, jact, plact)
       type(phase_change_t), intent(in) :: ch
-      logical, intent(inout) :: eact(:), jact(:), pact(:)
+      logical, intent(inout) :: eact(:), jact(:), plact(:)
       if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) return
       if (ch%target == TARGET_PLATES) then
-         pact(ch%set) = ch%kind == CHANGE_ACTIVATE
+         plact(ch%set) = ch%kind == CHANGE_ACTIVATE
       else if (ch%target == TARGET_ELEMENTS) then
          eact(ch%set) = ch%kind == CHANGE_ACTIVATE
-      else
+      else if (ch%target == TARGET_JOINTS) then
          jact(ch%set) = ch%kind == CHANGE_ACTIVATE
       end if
    end subroutine step_activity_one

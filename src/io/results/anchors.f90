@@ -72,7 +72,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: gall, g
       integer :: s
-      if (size(fields) == 0) return
+      if (.not. any(fields%active)) return
       call h5_group(file, increment_group(global_increment)//'/anchors', gall, error)
       if (allocated(error)) return
       do s = 1, size(fields)
