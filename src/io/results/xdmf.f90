@@ -29,7 +29,8 @@ module pecplas_io_results_xdmf
    implicit none (type, external)
    private
 
-   public :: xdmf_set_t, xdmf_joint_t, xdmf_plate_t, xdmf_anchor_t, xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, write_xdmf
+   public :: xdmf_set_t, xdmf_joint_t, xdmf_plate_t, xdmf_anchor_t, xdmf_layout_t, &
+      xdmf_topology, xdmf_path, xdmf_text, write_xdmf
 
    !> One element set as the XDMF sees it.
    type :: xdmf_set_t
