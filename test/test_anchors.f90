@@ -362,7 +362,7 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       type(error_t), allocatable :: e
-      character(len=*), parameter :: cases(7) = [character(len=200) :: &
+      character(len=*), parameter :: cases(8) = [character(len=200) :: &
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 2', &
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 99', &
          '*ANCHOR, NAME=a, TYPE=FIXED_END, EA=1e4, LENGTH=1, ANGLE=0|nosuchset', &
@@ -370,14 +370,16 @@ contains
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 5|*STEP, NAME=s|*PRESTRESS|b, 10', &
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 5|*STEP, NAME=s|*DEACTIVATE|a|'// &
          '*STEP, NAME=t|*PRESTRESS|a, 10', &
-         '*ANCHOR, NAME=a, TYPE=FIXED_END, EA=1e4, ANGLE=0|2']
-      character(len=*), parameter :: expect(7) = [character(len=40) :: &
+         '*ANCHOR, NAME=a, TYPE=FIXED_END, EA=1e4, ANGLE=0|2', &
+         '*ANALYSIS, TYPE=AXISYMMETRIC|*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 5']
+      character(len=*), parameter :: expect(8) = [character(len=40) :: &
          'zero length', 'no node 99', "undefined node set 'nosuchset'", &
          'EA must be positive', "no anchor 'b'", "anchor 'a' is not active", &
-         'missing required parameter LENGTH']
-      character(len=*), parameter :: marker(7) = [character(len=48) :: '2, 2', '2, 99', &
+         'missing required parameter LENGTH', 'plane strain only']
+      character(len=*), parameter :: marker(8) = [character(len=48) :: '2, 2', '2, 99', &
          'nosuchset', '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=-5', 'b, 10', 'a, 10', &
-         '*ANCHOR, NAME=a, TYPE=FIXED_END, EA=1e4, ANGLE=0']
+         '*ANCHOR, NAME=a, TYPE=FIXED_END, EA=1e4, ANGLE=0', &
+         '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4']
       character(len=:), allocatable :: deck, extra
       integer :: k, code, i
       logical :: exists

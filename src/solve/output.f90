@@ -14,6 +14,7 @@ module pecplas_solve_output
    use pecplas_base_parallel, only: parallel_any
    use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
    use pecplas_fe_plate_output, only: plate_results
+   use pecplas_model_columns, only: rotation_column
    implicit none (type, external)
    private
 
@@ -62,7 +63,7 @@ contains
          r%reaction = reaction(:, 1:model%mesh%nnode())
          call joint_fields(model, problem, r)
          call anchor_fields(model, problem, r)
-         call plate_fields(model, problem, r, error)
+         call plate_fields(model, problem, reaction, r, error)
          if (allocated(error)) return
          call lend(model, problem, r)
          if (model%output%error_estimate) call add_estimate(est, r)
@@ -81,13 +82,15 @@ contains
       if (r%write_fields) call give_back(problem, r)
    end subroutine write_increment
 
-   !> Converged plate fields of every plate set (pecplas_fe_plate_output).
-   subroutine plate_fields(model, problem, r, error)
+   !> Converged plate fields of every plate set (pecplas_fe_plate_output), with the moment
+   !> reactions at their held rotations.
+   subroutine plate_fields(model, problem, reaction, r, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: reaction(:, :)
       type(increment_result_t), intent(inout) :: r
       type(error_t), allocatable, intent(out) :: error
-      integer :: s
+      integer :: s, k
       if (.not. allocated(model%plates)) return
       if (size(model%plates) == 0) return
       allocate (r%plate_fields(size(model%plates)))
@@ -95,6 +98,12 @@ contains
          call plate_results(model, problem%state%u, problem%state%plates, &
             problem%state%factors, s, r%plate_fields(s), error)
          if (allocated(error)) return
+         associate (f => r%plate_fields(s))
+            allocate (f%moment_reaction(size(f%node_index)))
+            do k = 1, size(f%node_index)
+               f%moment_reaction(k) = reaction(1, rotation_column(model, f%node_index(k)))
+            end do
+         end associate
       end do
    end subroutine plate_fields
 

@@ -36,6 +36,8 @@ def cantilever():
 def test_curves_of_the_phases_with_the_plate(cantilever):
     with Results(cantilever) as r:
         curves, _ = plot_plates.plate_curves(r, "beam")
+        # the clamp's reaction moment (F_int - F_ext at the held rotation): -P L
+        reaction = r.field(r.last_key(), "plates/beam/moment_reaction")
     # phase 1 has the plate deactivated: no curve
     assert [c[0].split()[0] for c in curves] == ["2", "3"]
     label, s, n, q, m, w = curves[-1]
@@ -45,6 +47,8 @@ def test_curves_of_the_phases_with_the_plate(cantilever):
     assert m[0] == pytest.approx(1000.0, rel=1e-10)
     assert q == pytest.approx([100.0] * len(q), rel=1e-10)
     assert w[-1] == pytest.approx(100 * 10**3 / 3e5 + 100 * 10 / (5e7 / 12), rel=1e-10)
+    assert reaction[0] == pytest.approx(-1000.0, rel=1e-10)
+    assert list(reaction[1:]) == [0.0] * (len(reaction) - 1)
 
 
 def test_cli_writes_the_png(cantilever, tmp_path):

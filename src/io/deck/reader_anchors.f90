@@ -143,11 +143,28 @@ contains
       integer, allocatable :: nodes(:), conn(:, :), lines(:)
       real(wp) :: dx(2), len0
       integer :: i, k, a, b
+      logical :: taken
       set = raw%set
-      if (same_name(set%name, 'ALL') .or. model%mesh%find_eset(set%name) > 0 .or. &
-          model%mesh%find_nset(set%name) > 0) then
-         call line_error(state, raw%at, "anchor name '"//set%name//"' is the name of a set "// &
-            'already: phases name anchors and sets alike, give it another name', error)
+      taken = same_name(set%name, 'ALL') .or. model%mesh%find_eset(set%name) > 0 .or. &
+         model%mesh%find_nset(set%name) > 0
+      if (allocated(state%joint_sets)) then
+         do i = 1, size(state%joint_sets)
+            if (same_name(state%joint_sets(i)%name, set%name)) taken = .true.
+         end do
+      end if
+      if (allocated(model%plates)) then
+         do i = 1, size(model%plates)
+            if (same_name(model%plates(i)%name, set%name)) taken = .true.
+         end do
+      end if
+      if (allocated(model%patterns)) then
+         do i = 1, size(model%patterns)
+            if (same_name(model%patterns(i)%name, set%name)) taken = .true.
+         end do
+      end if
+      if (taken) then
+         call line_error(state, raw%at, "anchor name '"//set%name//"' is the name of a set, "// &
+            'plate or load pattern already: phases name them alike, give it another name', error)
          return
       end if
       set%file = state%lines%file(raw%at)

@@ -57,6 +57,8 @@ module pecplas_io_results_increment
       integer, allocatable :: node_index(:)
       real(wp), allocatable :: end_forces(:, :, :), node_forces(:, :), displacement(:, :), &
          rotation(:), resultants(:, :, :), plastic(:, :, :)
+      !> The moment reaction at each plate node whose rotation is held (0 elsewhere).
+      real(wp), allocatable :: moment_reaction(:)
    end type plate_fields_t
 
    !> Coordinates and unit tangents (2, np, nel) of the points of one joint set.

@@ -5,7 +5,8 @@
 !>   /increments/<NNNNNN>/plates/<set>
 !>        end_forces (3, 2, nel)     N, Q, M at end 1 and end 2 of each element
 !>        node_forces (3, nnode_plate)  N, Q, M at the plate's nodes (mean of the ends there)
-!>        displacement (2, nnode_plate), rotation (nnode_plate)
+!>        displacement (2, nnode_plate), rotation (nnode_plate), moment_reaction (nnode_plate)
+!>        (the moment at a held rotation: F_int - F_ext there, 0 elsewhere)
 !>        resultants (5, np, nel)    N_s, Q, M_s, N_theta, M_theta at the elements' points
 !>        plastic (3, np, nel)       plastic axial strain, plastic curvature, multiplier
 !> Forces per unit width (plane strain) or per unit length of circumference (axisymmetry).
@@ -101,6 +102,8 @@ contains
             if (.not. allocated(error)) call h5_write(g, 'rotation', f%rotation, error)
             if (.not. allocated(error)) call h5_write(g, 'resultants', f%resultants, error)
             if (.not. allocated(error)) call h5_write(g, 'plastic', f%plastic, error)
+            if (.not. allocated(error) .and. allocated(f%moment_reaction)) &
+               call h5_write(g, 'moment_reaction', f%moment_reaction, error)
          end associate
          ! N, Q per unit width; M force x length per unit width
          if (.not. allocated(error)) call h5_describe(g, 'end_forces', 'N, Q: '//fw// &
@@ -109,6 +112,8 @@ contains
             '; M: '//mw//'*'//units%length//'/'//units%length, error, NQM)
          if (.not. allocated(error)) call h5_describe(g, 'displacement', units%length, error, XY)
          if (.not. allocated(error)) call h5_describe(g, 'rotation', 'rad', error)
+         if (.not. allocated(error) .and. allocated(fields(s)%moment_reaction)) &
+            call h5_describe(g, 'moment_reaction', mw//'*'//units%length, error)
          if (.not. allocated(error)) call h5_describe(g, 'resultants', 'N: '//fw//'; M: '// &
             mw//'*'//units%length//'/'//units%length, error, RESULTANTS)
          if (.not. allocated(error)) call h5_describe(g, 'plastic', 'mixed: 1, 1/'// &

@@ -9,7 +9,7 @@ Structures):
   wall; the sand in front is excavated to 2, 4 and 6 m in three stages; after the first a
   strut at 1 m depth (a FIXED_END anchor to the symmetry line, EA = 2e6 kN per strut, one
   strut every 5 m) props the wall.
-- excavation_strutted_strip.inp: the same wall as a continuum strip (two Q4 across its
+- excavation_strutted_strip.inp: the same wall as a continuum strip (four Q4 across its
   thickness, E = 3e7 kPa), joints on its back face and on its front face stage by stage
   (SIDE=wall), for the comparison of the plate with the continuum (doc/validation.md).
 - anchored_wall.inp: a sheet pile (plate, EA = 2e6 kN/m, EI = 4e4 kN m2/m), 8 m deep, retaining
@@ -21,7 +21,8 @@ Structures):
 
     python3 -m pecplas_py.decks.make_structure_examples [--out DIR]
 
-Meshes are structured Q4 with 1 m cells (the strip variant adds the wall's two columns).
+Meshes are structured Q4: 1 m columns and 0.5 m rows for the excavation (the strip variant
+adds the wall's four 0.2 m columns), 1 m cells for the anchored wall.
 """
 import argparse
 from pathlib import Path
@@ -91,9 +92,10 @@ def chunk(ids, n=12):
 
 
 def excavation(strip):
-    ys = [-DEPTH + j for j in range(int(DEPTH) + 1)]
+    ys = [-DEPTH + 0.5*j for j in range(2*int(DEPTH) + 1)]
     if strip:
-        xs = [float(i) for i in range(int(FRONT) + 1)] + [FRONT + 0.4, FRONT + 0.8] + \
+        xs = [float(i) for i in range(int(FRONT) + 1)] + \
+             [FRONT + 0.2*k for k in range(1, 5)] + \
              [FRONT + 0.8 + k for k in range(1, int(WIDTH - FRONT) + 1)]
     else:
         xs = [float(i) for i in range(int(WIDTH) + 1)]

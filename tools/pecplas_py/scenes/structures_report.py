@@ -7,9 +7,9 @@ profiles (PNG) and the run times; for the anchored wall the anchor force per pha
 
     python3 -m pecplas_py.scenes.structures_report PLATE.h5 STRIP.h5 [ANCHORED.h5] [--png FILE]
 
-The strip's moment at a level is the first moment of sigma_yy about the wall's axis over its
-two elements across, integrated by their Gauss points (2 x 2 per Q4: the moment of the Gauss
-rule, exact for a linear stress across each element).
+The strip's moment at a level is the first moment of sigma_yy about the wall's axis over the
+elements across it, integrated by their Gauss points (2 x 2 per Q4: exact for a linear
+stress across each element).
 """
 import argparse
 
@@ -53,12 +53,14 @@ def strip_stage(f, g):
     ux = grp["displacement"][()][centre, 0]
     gx = f["mesh/sets/wall/gauss_coordinates"][()]
     s = grp["sets/wall/stress"][()][:, :, 1]
-    # per level (element row): sum over the row's Gauss points of sigma_yy (x - xc) w dx,
-    # averaged over the two Gauss rows; each Q4 is 0.4 wide, weight 1/2 of its width per point
+    # per level (element row): the integral of sigma_yy (x - xc) across the wall, by each
+    # element's 2 x 2 Gauss points (weight w/2 across, averaged over its two Gauss rows; its
+    # width w = sqrt(3) times the spread of its Gauss points across)
     levels = {}
     for e in range(gx.shape[0]):
         yc = round(float(np.mean(gx[e, :, 1])), 6)
-        mom = np.sum(s[e] * (gx[e, :, 0] - (WALL_X + 0.4))) * 0.4 / 2.0 / 2.0
+        w = np.sqrt(3.0) * (np.max(gx[e, :, 0]) - np.min(gx[e, :, 0]))
+        mom = np.sum(s[e] * (gx[e, :, 0] - (WALL_X + 0.4))) * w / 4.0
         levels[yc] = levels.get(yc, 0.0) + mom
     mmax = max(abs(v) for v in levels.values())
     strut = grp["anchors/strut/force"][()][0] if "anchors/strut" in grp else 0.0
