@@ -67,6 +67,13 @@ contains
             return
          end if
       end if
+      if (allocated(model%anchors)) then
+         if (size(model%anchors) > 0) then
+            call input_error(error, 'advise: not available for a deck with anchors (*ANCHOR): '// &
+               'its mesh refinements do not carry anchors along')
+            return
+         end if
+      end if
       if (size(model%steps) < 1) then
          call input_error(error, 'advise: the deck has no *STEP')
          return

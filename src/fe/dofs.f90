@@ -59,6 +59,17 @@ contains
             end do
          end do
       end if
+      ! anchor nodes too (a node that only a bar holds)
+      if (allocated(model%anchors)) then
+         do i = 1, size(model%anchors)
+            do k = 1, size(model%anchors(i)%conn, 2)
+               do d = 1, 2
+                  if (model%anchors(i)%conn(d, k) > 0) fixed(:, model%anchors(i)%conn(d, k)) = &
+                     .false.
+               end do
+            end do
+         end do
+      end if
       ! plate nodes and their rotations too (a plate may stand on nodes of no element)
       if (allocated(model%plates)) then
          do i = 1, size(model%plates)

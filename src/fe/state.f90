@@ -4,6 +4,7 @@
 module pecplas_fe_state
    use pecplas_base_kinds, only: wp
    use pecplas_joints_state, only: joint_state_t
+   use pecplas_structures_anchor_state, only: anchor_state_t
    use pecplas_structures_state, only: plate_state_t
    implicit none (type, external)
    private
@@ -37,6 +38,8 @@ module pecplas_fe_state
       type(set_state_t), allocatable :: sets(:)
       !> Joint sets (PECJOIN), committed and rolled back with the massif.
       type(joint_state_t) :: joints
+      !> Anchors and struts, committed and rolled back with the massif.
+      type(anchor_state_t) :: anchors
       !> Plate sets, committed and rolled back with the massif.
       type(plate_state_t) :: plates
       !> True while the points' tangents (massif and joints) are those of the converged
@@ -66,6 +69,7 @@ contains
          end associate
       end do
       call this%joints%commit()
+      call this%anchors%commit()
       call this%plates%commit()
       this%converged_tangents = .true.
    end subroutine state_commit
@@ -82,6 +86,7 @@ contains
          end associate
       end do
       call this%joints%rollback()
+      call this%anchors%rollback()
       call this%plates%rollback()
       this%converged_tangents = .false.
    end subroutine state_rollback

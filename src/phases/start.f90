@@ -26,11 +26,12 @@ module pecplas_phases_start
    use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
       CHANGE_LAW, TARGET_ELEMENTS, TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS, &
-      TARGET_NAMES, START_WISHED, TARGET_PLATES
+      TARGET_NAMES, START_WISHED, TARGET_PLATES, TARGET_ANCHORS
    use pecplas_model_phase_plan, only: step_activity, attached_nodes, target_activity
    use pecplas_fe_dofs, only: dofs_t, new_dofs
    use pecplas_fe_plate_assembly, only: activate_plate
    use pecplas_problem_type, only: problem_t, set_orphans
+   use pecplas_phases_anchors, only: start_anchors
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
       PROCEDURE_NAMES, HOLD_NONE, HOLD_WEIGHT
    use pecplas_fe_state, only: set_state_t
@@ -67,10 +68,11 @@ contains
       logical, intent(out) :: refactorise
       character(len=LINE_LEN), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), pactive(:)
+      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), pactive(:), &
+         aactive(:)
       type(mesh_index_t) :: index
       integer :: c, j, p
-      logical :: indexed
+      logical :: indexed, anchors_changed
 
       allocate (lines(0))
       refactorise = .false.
@@ -82,8 +84,12 @@ contains
       end if
       indexed = .false.
       problem%phase%renumbered = .false.
+      ! anchors: the prestress of the phase before ends, the step's anchor changes apply
+      call start_anchors(model, problem%state, istep, anchors_changed, lines)
+      if (anchors_changed) refactorise = .true.
       associate (step => model%steps(istep), st => problem%state)
          do c = 1, size(step%changes)
+            if (step%changes(c)%target == TARGET_ANCHORS) cycle
             associate (ch => step%changes(c))
                ! load patterns and supports: their activity (below) says what they do
                if (ch%target == TARGET_PATTERNS .or. ch%target == TARGET_SUPPORTS) then
@@ -194,7 +200,8 @@ contains
          call set_orphans(model, problem, eactive, jactive)
          allocate (pactive(0))
          if (allocated(st%plates%sets)) pactive = st%plates%sets%active
-         held = attached_nodes(model, eactive, jactive, pactive)
+         aactive = st%anchors%sets%active
+         held = attached_nodes(model, eactive, jactive, pactive, aactive)
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
             problem%system%pattern_disp, error, eactive, pactive)

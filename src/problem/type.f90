@@ -23,6 +23,7 @@ module pecplas_problem_type
    use pecplas_model_phases, only: TARGET_SUPPORTS, TARGET_PATTERNS
    use pecplas_fe_joint_assembly, only: setup_joint_state
    use pecplas_fe_plate_assembly, only: setup_plate_state
+   use pecplas_fe_anchor_assembly, only: setup_anchor_state
    use pecplas_model_columns, only: nodal_columns, rotation_column
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
@@ -96,6 +97,7 @@ contains
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
       call setup_plate_state(model, problem%state%plates)
+      call setup_anchor_state(model, problem%state%anchors)
       ! phases: the sets first activated by a step are inactive until then
       problem%phase%phased = is_phased(model)
       if (problem%phase%phased) then
@@ -152,13 +154,14 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:), jactive(:)
-      logical, allocatable :: held(:), pactive(:)
+      logical, allocatable :: held(:), pactive(:), aactive(:)
       integer, allocatable :: eq(:, :)
       integer :: s, e, k, node
-      allocate (pactive(0))
+      allocate (pactive(0), aactive(0))
       if (allocated(problem%state%plates%sets)) pactive = problem%state%plates%sets%active
+      if (allocated(problem%state%anchors%sets)) aactive = problem%state%anchors%sets%active
       allocate (held(nodal_columns(model)), source=.false.)
-      held(1:model%mesh%nnode()) = attached_nodes(model, eactive, jactive, pactive)
+      held(1:model%mesh%nnode()) = attached_nodes(model, eactive, jactive, pactive, aactive)
       ! an active plate holds its nodes and their rotations
       if (allocated(problem%state%plates%sets)) then
          do s = 1, size(problem%state%plates%sets)

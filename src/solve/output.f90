@@ -62,6 +62,7 @@ contains
          ! the nodes' columns (the plates' rotations go with the plate fields)
          r%reaction = reaction(:, 1:model%mesh%nnode())
          call joint_fields(model, problem, r)
+         call anchor_fields(model, problem, r)
          call plate_fields(model, problem, reaction, r, error)
          if (allocated(error)) return
          call lend(model, problem, r)
@@ -196,6 +197,24 @@ contains
          r%joint_fields(s)%error_indicator = est%joints(s)%eta
       end do
    end subroutine add_estimate
+
+   !> Converged forces of every anchor set (N of one anchor and N / L_s).
+   subroutine anchor_fields(model, problem, r)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s
+      if (.not. allocated(model%anchors)) return
+      allocate (r%anchor_fields(size(model%anchors)))
+      do s = 1, size(model%anchors)
+         associate (f => r%anchor_fields(s), st => problem%state%anchors%sets(s))
+            f%name = model%anchors(s)%name
+            f%active = st%active
+            f%force = st%force
+            f%force_per_width = st%force/model%anchors(s)%spacing
+         end associate
+      end do
+   end subroutine anchor_fields
 
    !> Converged joint fields of every joint set; the plastic slip is the law's own
    !> (pecplas_joints_laws_coulomb: plastic_slip, 0 for a law without one and for a Katona

@@ -125,6 +125,16 @@ contains
                end associate
             end do
          end if
+         ! anchors: activity, prestress, force, plastic and reference elongations
+         if (allocated(st%anchors%sets)) then
+            do s = 1, size(st%anchors%sets)
+               associate (a => st%anchors%sets(s))
+                  call data%add('anchor_'//itoa(s), [merge(1.0_wp, 0.0_wp, a%active), &
+                     merge(1.0_wp, 0.0_wp, a%prestressing), a%prestress, a%force, a%plastic, &
+                     a%e0])
+               end associate
+            end do
+         end if
          if (kt%active) then
             call data%add('katona_mode', real(kt%mode, wp))
             call data%add('katona_sign', real(kt%sgn, wp))
@@ -162,12 +172,24 @@ contains
       real(wp) :: deck_sum
       logical :: guarded
       integer :: nj, np
+      character(len=64), allocatable :: anames(:)
 
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
       np = 0
       if (allocated(problem%state%plates%sets)) np = size(problem%state%plates%sets)
       names = restart_names(size(problem%state%sets), nj, np)
+      ! anchors (each set's activity, prestress, forces, elongations)
+      if (allocated(problem%state%anchors%sets)) then
+         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         anames(1:size(names)) = names
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         deallocate (names)
+         allocate (character(len=64) :: names(size(anames)))
+         names = anames
+      end if
       ! a damaged file may crash the HDF5 library itself: an input error, not a crash
       guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
          ': the HDF5 library crashed reading it (the file is damaged)')
@@ -314,6 +336,20 @@ contains
                   if (tangents .and. data%has('plate_tangent_'//itoa(s))) &
                      call get4(data, 'plate_tangent_'//itoa(s), pl%tangent, error)
                   if (allocated(error)) return
+               end associate
+            end do
+         end if
+         if (allocated(st%anchors%sets)) then
+            do s = 1, size(st%anchors%sets)
+               associate (a => st%anchors%sets(s))
+                  call data%get('anchor_'//itoa(s), 3 + 3*size(a%force), v, error)
+                  if (allocated(error)) return
+                  a%active = v(1) /= 0.0_wp
+                  a%prestressing = v(2) /= 0.0_wp
+                  a%prestress = v(3)
+                  a%force = v(4:3 + size(a%force))
+                  a%plastic = v(4 + size(a%force):3 + 2*size(a%force))
+                  a%e0 = v(4 + 2*size(a%force):)
                end associate
             end do
          end if

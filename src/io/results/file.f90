@@ -62,6 +62,7 @@ module pecplas_io_results_file
       describe_history
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
+   use pecplas_io_results_anchors, only: write_anchor_mesh, write_anchor_fields
    implicit none (type, external)
    private
 
@@ -223,6 +224,8 @@ contains
       call write_root(file, model, version, error)
       if (.not. allocated(error)) call write_mesh(file, model%mesh, gauss_xy, error)
       if (.not. allocated(error)) call write_joint_mesh(file, model, points, error)
+      if (.not. allocated(error)) call write_anchor_mesh(file, model, this%units%length, &
+         this%units%force, error)
       if (.not. allocated(error)) call write_plate_mesh(file, model, error)
       if (.not. allocated(error)) call create_history(file, model, error)
       if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
@@ -611,6 +614,8 @@ contains
          if (size(this%joints) > 0) call write_joint_fields(file, inc%global_increment, &
             inc%joint_fields, this%joints, this%units, error, jon)
          if (allocated(error)) return
+         if (allocated(inc%anchor_fields)) call write_anchor_fields(file, &
+            inc%global_increment, inc%anchor_fields, this%units%length, this%units%force, error)
          if (allocated(inc%plate_fields)) call write_plate_fields(file, inc%global_increment, &
             inc%plate_fields, this%units, error)
          if (allocated(error)) return

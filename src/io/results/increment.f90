@@ -6,7 +6,7 @@ module pecplas_io_results_increment
    private
 
    public :: increment_result_t, set_fields_t, gauss_coordinates_t, joint_fields_t, &
-      joint_points_t, limit_point_t, plate_fields_t
+      joint_points_t, limit_point_t, anchor_fields_t, plate_fields_t
 
    !> Gauss-point fields of one element set, components (xx, yy, zz, xy) as in the
    !> massif materials (xy strain is engineering shear).
@@ -38,6 +38,13 @@ module pecplas_io_results_increment
       real(wp), allocatable :: error_indicator(:)
    end type joint_fields_t
 
+   !> Forces of one anchor set: N of one anchor (nbar, tension positive) and N / L_s;
+   !> `active`: the set acts in the increment's phase (only those are written).
+   type :: anchor_fields_t
+      character(len=:), allocatable :: name
+      logical :: active = .true.
+      real(wp), allocatable :: force(:), force_per_width(:)
+   end type anchor_fields_t
    !> Fields of one plate set: N, Q, M at both ends of each element end_forces(3, 2, nel);
    !> at the plate's nodes (node_index: internal numbers, in the order of the plate) the
    !> mean of the element ends there node_forces(3, nnode_plate), the displacement (2, .)
@@ -83,6 +90,8 @@ module pecplas_io_results_increment
       type(set_fields_t), allocatable :: set_fields(:)
       !> One entry per joint set, in model%joint_sets order (absent: no joints).
       type(joint_fields_t), allocatable :: joint_fields(:)
+      !> One entry per anchor set, in model%anchors order (absent: no anchors).
+      type(anchor_fields_t), allocatable :: anchor_fields(:)
       !> One entry per plate set, in model%plates order (absent: no plates).
       type(plate_fields_t), allocatable :: plate_fields(:)
       !> Global error estimate and energy norm of the solution (when estimated).
