@@ -1,8 +1,7 @@
-!> Plates and anchors in the XDMF sidecar (pecplas_io_results_xdmf,
-!> pecplas_io_results_structure_geometry): the grids of the structures appear only in the
-!> increments where their set is active, with the right topology, counts and column
-!> HyperSlabs; a plate's own node order and local connectivity; the end points of
-!> node-to-node and fixed-end anchors. The run of a deck with both, read back through the
+!> Anchors beside plates in the XDMF sidecar (pecplas_io_results_xdmf,
+!> pecplas_io_results_anchor_geometry): the grids of the structures appear only in the
+!> increments where their set is active, with the right topology and counts; the end points
+!> of node-to-node and fixed-end anchors. The run of a deck with both, read back through the
 !> sidecar, is test/python/test_structure_output.py.
 module test_io_results_structures
    use pecplas_base_kinds, only: wp
@@ -11,8 +10,7 @@ module test_io_results_structures
    use pecplas_model_type, only: model_t
    use pecplas_model_anchors, only: ANCHOR_NODE_TO_NODE, ANCHOR_FIXED_END
    use pecplas_io_results_xdmf, only: xdmf_layout_t, xdmf_text
-   use pecplas_io_results_structure_geometry, only: plate_node_order, anchor_points, &
-      xdmf_structures
+   use pecplas_io_results_anchor_geometry, only: anchor_points, xdmf_anchors
    implicit none (type, external)
    private
    public :: collect_io_results_structures
@@ -22,13 +20,11 @@ contains
    subroutine collect_io_results_structures(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('xdmf_grids_of_active_structures', test_xdmf), &
-               new_unittest('plate_node_order', test_node_order), &
                new_unittest('anchor_end_points', test_anchor_points)]
    end subroutine collect_io_results_structures
 
-   !> One 3-node plate set (2 elements, 5 nodes) and two anchor sets (2 bars, 1 bar);
-   !> increment 1: the plate alone; increment 2: the plate and 'struts'. Counting is exact
-   !> (text).
+   !> One 3-node plate set (2 elements) and two anchor sets (2 bars, 1 bar); increment 1:
+   !> the plate alone; increment 2: the plate and 'struts'. Counting is exact (text).
    subroutine test_xdmf(error)
       type(error_t), allocatable, intent(out) :: error
       type(xdmf_layout_t) :: layout
@@ -38,11 +34,14 @@ contains
       call sample(model)
       layout%nnode = size(model%mesh%x, 2)
       allocate (layout%sets(0), layout%joints(0))
-      call xdmf_structures(model, layout%plates, layout%anchors)
-      call check(error, layout%plates(1)%nen == 3 .and. layout%plates(1)%nel == 2 .and. &
-         layout%plates(1)%nnode == 5 .and. layout%anchors(1)%nbar == 2 .and. &
-         layout%anchors(2)%nbar == 1, &
-         'layout of the structures: 3-node plate, 2 elements, 5 nodes; 2 bars and 1')
+      allocate (layout%plates(1))
+      layout%plates(1)%name = 'wall'
+      layout%plates(1)%nel = 2
+      layout%plates(1)%npe = 3
+      layout%anchors = xdmf_anchors(model)
+      call check(error, size(layout%anchors) == 2 .and. layout%anchors(1)%name == 'struts' &
+         .and. layout%anchors(1)%nbar == 2 .and. layout%anchors(2)%nbar == 1, &
+         'layout of the anchors: 2 bars and 1')
       if (allocated(error)) return
       psets(1, :) = [.true., .true.]
       asets(:, 1) = [.false., .false.]
@@ -60,10 +59,9 @@ contains
          'NodesPerElement="2"') == 1 .and. count_of(s, 'anchors_prop') == 0, &
          'one polyline per bar, none of the inactive set')
       if (allocated(error)) return
-      ! M: column 2 of node_forces (5, 3)
-      call check(error, count_of(s, '<DataItem Dimensions="3 2" Format="XML">0 2 1 1 5 1'// &
-         '</DataItem>') == 2 .and. count_of(s, 'r.h5:/increments/000002/plates/wall/'// &
-         'node_forces') == 3, 'N, Q, M as columns of node_forces')
+      call check(error, count_of(s, 'r.h5:/mesh/anchors/struts/point_coordinates') == 1 &
+         .and. count_of(s, 'Dimensions="4 2" NumberType="Float"') == 1, &
+         'the bars on their own points (2 per bar)')
       if (allocated(error)) return
       call check(error, count_of(s, 'r.h5:/increments/000002/anchors/struts/force<') == 1 &
          .and. count_of(s, '/increments/000001/anchors') == 0, 'anchor force in increment 2 only')
@@ -75,15 +73,6 @@ contains
          count_of(s, '<Grid Name="anchors_prop"') == 1 .and. count_of(s, 'Attribute') == 0, &
          'the mesh grid shows the structures without attributes')
    end subroutine test_xdmf
-
-   !> conn of two 3-node elements (end, end, mid): nodes in order of first appearance.
-   subroutine test_node_order(error)
-      type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: nodes(:), local(:, :)
-      call plate_node_order(reshape([1, 3, 2, 3, 5, 4], [3, 2]), nodes, local)
-      call check(error, all(nodes == [1, 3, 2, 5, 4]) .and. &
-         all(local == reshape([1, 2, 3, 2, 4, 5], [3, 2])), 'plate node order')
-   end subroutine test_node_order
 
    !> A node-to-node bar ends at its nodes; a fixed-end bar at its node + LENGTH along its
    !> direction. The numbers are binary fractions and the direction a unit axis: the sum is

@@ -63,7 +63,7 @@ module pecplas_io_results_file
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
    use pecplas_io_results_anchors, only: write_anchor_mesh, write_anchor_fields
-   use pecplas_io_results_structure_geometry, only: write_structure_geometry, xdmf_structures
+   use pecplas_io_results_anchor_geometry, only: write_anchor_geometry, xdmf_anchors
    implicit none (type, external)
    private
 
@@ -113,8 +113,11 @@ module pecplas_io_results_file
       !> (0: none recorded yet, every set active).
       type(phase_record_t), allocatable :: phases(:)
       integer, allocatable :: written_phase(:)
-      !> The plate and anchor sets active in each written increment (nplate / nanchor, nwritten).
-      logical, allocatable :: written_plates(:, :), written_anchors(:, :)
+      !> The plate sets active in each written increment (nplate, nwritten): their grids in
+      !> the XDMF.
+      logical, allocatable :: written_plates(:, :)
+      !> The anchor sets active in each written increment (nanchor, nwritten).
+      logical, allocatable :: written_anchors(:, :)
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
@@ -163,11 +166,9 @@ contains
       if (allocated(error)) return
       call plan_units(model, this%units)
       call plan_xdmf_joints(this)
-      call xdmf_structures(model, this%layout%plates, this%layout%anchors)
-      if (allocated(this%written_plates)) deallocate (this%written_plates)
+      this%layout%anchors = xdmf_anchors(model)
       if (allocated(this%written_anchors)) deallocate (this%written_anchors)
-      allocate (this%written_plates(size(this%layout%plates), 0), &
-         this%written_anchors(size(this%layout%anchors), 0))
+      allocate (this%written_anchors(size(this%layout%anchors), 0))
       ! the plastic indicators are written with the sets' fields (write_fields)
       do i = 1, size(this%layout%sets)
          this%layout%sets(i)%plastic = has_plastic_state(this%units%sets(i)%state) .and. &
@@ -232,8 +233,8 @@ contains
       if (.not. allocated(error)) call write_anchor_mesh(file, model, this%units%length, &
          this%units%force, error)
       if (.not. allocated(error)) call write_plate_mesh(file, model, error)
-      if (.not. allocated(error)) call write_structure_geometry(file, model, &
-         this%units%length, error)
+      if (.not. allocated(error)) call write_anchor_geometry(file, model, this%units%length, &
+         error)
       if (.not. allocated(error)) call create_history(file, model, error)
       if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
       if (.not. allocated(error)) call describe_history(file, this%units, error)
@@ -281,6 +282,24 @@ contains
       if (allocated(this%staging)) call remove_file(this%staging)
    end subroutine abandon
 
+   !> The plate sets as the XDMF sees them (none without plates).
+   subroutine plan_xdmf_plates(this, model)
+      class(results_file_t), intent(inout) :: this
+      type(model_t), intent(in) :: model
+      integer :: s, n
+      n = 0
+      if (allocated(model%plates)) n = size(model%plates)
+      if (allocated(this%layout%plates)) deallocate (this%layout%plates)
+      allocate (this%layout%plates(n))
+      do s = 1, n
+         this%layout%plates(s)%name = safe_name(model%plates(s)%name)
+         this%layout%plates(s)%nel = size(model%plates(s)%conn, 2)
+         this%layout%plates(s)%npe = model%plates(s)%nen
+      end do
+      if (allocated(this%written_plates)) deallocate (this%written_plates)
+      allocate (this%written_plates(n, 0))
+   end subroutine plan_xdmf_plates
+
    !> The joint sets as the XDMF sees them.
    subroutine plan_xdmf_joints(this)
       class(results_file_t), intent(inout) :: this
@@ -325,6 +344,7 @@ contains
       this%written = [integer ::]
       this%written_time = [real(wp) ::]
       this%written_phase = [integer ::]
+      call plan_xdmf_plates(this, model)
       if (allocated(this%phases)) deallocate (this%phases)
       allocate (this%phases(0))
       if (allocated(this%ngauss)) deallocate (this%ngauss)
@@ -570,10 +590,11 @@ contains
       end do
       if (allocated(error)) return
       if (inc%write_fields) then
+         call note_plates(this, inc)
+         call note_anchors(this, inc)
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
          this%written_phase = [this%written_phase, size(this%phases)]
-         call record_structures(this, inc)
       end if
       this%phases(:)%pending = .false.
       this%nrows = this%nrows + 1
@@ -905,6 +926,34 @@ contains
       end do
    end subroutine write_pending_phases
 
+   !> Records which plate sets the increment written now holds (its XDMF grids).
+   subroutine note_plates(this, inc)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      logical :: on(size(this%written_plates, 1))
+      integer :: n
+      on = .true.
+      if (allocated(inc%plate_fields)) then
+         if (size(inc%plate_fields) == size(on)) on = inc%plate_fields(:)%active
+      end if
+      n = size(this%written_plates, 2)
+      this%written_plates = reshape([this%written_plates, on], [size(on), n + 1])
+   end subroutine note_plates
+
+   !> Records which anchor sets the increment written now holds (its XDMF grids).
+   subroutine note_anchors(this, inc)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      logical :: on(size(this%written_anchors, 1))
+      integer :: n
+      on = .true.
+      if (allocated(inc%anchor_fields)) then
+         if (size(inc%anchor_fields) == size(on)) on = inc%anchor_fields(:)%active
+      end if
+      n = size(this%written_anchors, 2)
+      this%written_anchors = reshape([this%written_anchors, on], [size(on), n + 1])
+   end subroutine note_anchors
+
    !> The XDMF text of the increments written so far, each with the sets active in its
    !> phase.
    function sidecar_text(this, h5_name) result(text)
@@ -926,33 +975,6 @@ contains
       text = xdmf_text(this%layout, h5_name, this%written, this%written_time, esets, jsets, &
          this%written_plates, this%written_anchors)
    end function sidecar_text
-
-   !> Appends the plate and anchor sets active in `inc` (written with fields) to
-   !> written_plates / written_anchors (a set with no fields entry counts as active).
-   subroutine record_structures(this, inc)
-      class(results_file_t), intent(inout) :: this
-      type(increment_result_t), intent(in) :: inc
-      logical, allocatable :: grown(:, :), on(:)
-      integer :: n
-      n = size(this%written_plates, 2)
-      allocate (on(size(this%layout%plates)), source=.true.)
-      if (allocated(inc%plate_fields)) then
-         if (size(inc%plate_fields) == size(on)) on = inc%plate_fields(:)%active
-      end if
-      allocate (grown(size(on), n + 1))
-      grown(:, 1:n) = this%written_plates
-      grown(:, n + 1) = on
-      call move_alloc(grown, this%written_plates)
-      deallocate (on)
-      allocate (on(size(this%layout%anchors)), source=.true.)
-      if (allocated(inc%anchor_fields)) then
-         if (size(inc%anchor_fields) == size(on)) on = inc%anchor_fields(:)%active
-      end if
-      allocate (grown(size(on), n + 1))
-      grown(:, 1:n) = this%written_anchors
-      grown(:, n + 1) = on
-      call move_alloc(grown, this%written_anchors)
-   end subroutine record_structures
 
    !> True between a successful `create` and `finish` / `free`.
    pure logical function results_is_open(this)
