@@ -46,6 +46,8 @@ class WallPair:
     away: tuple = (0.4, 0.6, 0.9, 1.3, 1.8, 2.5, 3.5)     # columns from each face [m]
     below: tuple = (0.5, 1.0, 1.5, 2.0, 3.0)               # rows under the toe [m]
     increments: int = 1
+    clamp_toe: bool = False        # the wall's toe held (see deck)
+    tip_k: float = 0.0             # > 0: the strip's base on an elastic joint KN = KT = tip_k
 
 
 def _cumulative(x0, steps, sign=1.0):
@@ -179,6 +181,13 @@ def deck(p, plate):
         d.edges("front_deep", fronts["front_deep"])
         for k in range(len(p.stages)):
             d.edges(f"front_{k + 1}", fronts[f"front_{k + 1}"])
+        if p.tip_k > 0:
+            d.interface_law("tip", "ELASTIC", KN=p.tip_k, KT=p.tip_k)
+            wx = [x for x in xs if x0 - 1e-9 <= x <= x1 + 1e-9]
+            d.edges("tip_face", [m.edge((wx[i], -p.wall_l), (wx[i + 1], -p.wall_l))
+                                 for i in range(len(wx) - 1)])
+            d.keyword("JOINTS", TYPE=jtype, SET="j_tip", LAW="tip", EDGES="tip_face",
+                      SIDE="wall")
         d.keyword("JOINTS", TYPE=jtype, SET="j_back", LAW="wall_face", EDGES="back_face",
                   SIDE="wall", **integ)
         for name in ["front_deep", *[f"front_{k + 1}" for k in range(len(p.stages))]]:
@@ -188,7 +197,14 @@ def deck(p, plate):
     d.nset("sides", m.nodes_where(lambda x, y: abs(x - xmin) < 1e-9 or abs(x - xmax) < 1e-9),
            per_line=16)
     d.nset("bottom", m.nodes_where(lambda x, y: abs(y - ymin) < 1e-9), per_line=16)
-    d.boundary("sides, X", "bottom, XY")
+    rows = ["sides, X", "bottom, XY"]
+    if p.clamp_toe:
+        # the wall's toe held: the plate's toe node in x, y and rotation, the strip's base
+        # (its nodes across the thickness) in x and y
+        d.nset("toe", m.nodes_where(lambda x, y: x0 - 1e-9 <= x <= x1 + 1e-9 and
+                                    abs(y + p.wall_l) < 1e-9))
+        rows.append("toe, ALL" if plate else "toe, XY")
+    d.boundary(*rows)
     d.initial_stress("GEOSTATIC", f"ALL, 0.0, {p.k0:g}")
     for k in range(len(p.stages)):
         joint = f"wif_exc_{k + 1}" if plate else f"j_front_{k + 1}"

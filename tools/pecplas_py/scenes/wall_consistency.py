@@ -136,6 +136,18 @@ VARIANTS = {
     "q8_2_smooth": WallPair(kt=1.0),
     "q8_2_thick": WallPair(t=0.8),
     "q8_2_thick_smooth": WallPair(t=0.8, kt=1.0),
+    "q8_2_thin_smooth": WallPair(t=0.2, kt=1.0),
+    "q8_2_thin": WallPair(t=0.2),
+    "q8_2_smooth_k1": WallPair(kt=1.0, k0=1.0),
+    "q8_2_smooth_k1_tip": WallPair(kt=1.0, k0=1.0, tip_k=1.0),
+    "q8_2_k1_tip": WallPair(k0=1.0, tip_k=1.0),
+    "q8_2_thin_k1_tip": WallPair(t=0.2, k0=1.0, tip_k=1.0),
+    "clamped": WallPair(clamp_toe=True),
+    "clamped_k1": WallPair(clamp_toe=True, k0=1.0),
+    "clamped_smooth": WallPair(clamp_toe=True, kt=1.0),
+    "clamped_q4_4_050": WallPair(clamp_toe=True, element="Q4", ncross=4, row=0.5),
+    "clamped_smooth_thin": WallPair(clamp_toe=True, kt=1.0, t=0.2),
+    "clamped_smooth_q8_1": WallPair(clamp_toe=True, kt=1.0, ncross=1, row=0.5),
     "q8_2_mc": WallPair(soil=MC, soil_type="MOHR_COULOMB", law="MOHR_COULOMB", increments=5),
 }
 
