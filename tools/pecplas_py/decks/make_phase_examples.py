@@ -9,6 +9,10 @@ doc/validation.md, Staged construction):
   tip; Mohr-Coulomb sand (phi = 30 deg, c = 0, psi = 0) in the K0 state (K0 = 1 - sin phi);
   the soil in front of the wall is excavated in three stages of 1 m (final retained height
   3 m, embedment 5 m). Each stage removes one layer and the joints beside it.
+- excavation_cantilever_plate.inp: the same wall as a plate on its axis (EA = E t,
+  EI = E t^3/12, the strip's nu), the same joint law on both faces (FACES=BOTH), the same
+  soil meshes without the wall's columns and the same stages (doc/validation.md: the plate's
+  head displacement and moment beside the strip's).
 - pile_wished_in_place.inp: the S2 pile (input/s2/s2_goodman.inp, the same mesh and data)
   installed into the K0 ground: the pile and its joints are inactive in the initial state
   and activated "wished in place" by a nil step (the pile with the initial stress of the
