@@ -5,6 +5,7 @@ for the variants of the study of doc/validation.md (Structures: why a coarse str
 plate differ).
 
     python3 -m pecplas_py.scenes.wall_consistency [DIR] [--bin DIR] [--only NAME ...]
+                                                  [--write | --check]
 
 Measures (`measure`):
 - head displacement: u_x of the wall's axis at the top (the plate's top node; for the strip
@@ -125,31 +126,51 @@ def run_pair(p, name, out_dir, bin_dir=None):
 
 
 MC = dict(E=3.0e4, NU=0.3, GAMMA=18.0, C=1.0, PHI=30.0, PSI=0.0)
-VARIANTS = {
-    "test": WallPair(),
-    "q4_2_050": WallPair(element="Q4", ncross=2, row=0.5),
-    "q4_4_050": WallPair(element="Q4", ncross=4, row=0.5),
-    "q4_4_025": WallPair(element="Q4", ncross=4, row=0.25),
-    "q8_1_050": WallPair(ncross=1, row=0.5),
-    "q8_2_050": WallPair(ncross=2, row=0.5),
-    "q8_2_0125": WallPair(ncross=2, row=0.125),
-    "q8_2_smooth": WallPair(kt=1.0),
-    "q8_2_thick": WallPair(t=0.8),
-    "q8_2_thick_smooth": WallPair(t=0.8, kt=1.0),
-    "q8_2_thin_smooth": WallPair(t=0.2, kt=1.0),
-    "q8_2_thin": WallPair(t=0.2),
-    "q8_2_smooth_k1": WallPair(kt=1.0, k0=1.0),
-    "q8_2_smooth_k1_tip": WallPair(kt=1.0, k0=1.0, tip_k=1.0),
-    "q8_2_k1_tip": WallPair(k0=1.0, tip_k=1.0),
-    "q8_2_thin_k1_tip": WallPair(t=0.2, k0=1.0, tip_k=1.0),
-    "clamped": WallPair(clamp_toe=True),
-    "clamped_k1": WallPair(clamp_toe=True, k0=1.0),
-    "clamped_smooth": WallPair(clamp_toe=True, kt=1.0),
-    "clamped_q4_4_050": WallPair(clamp_toe=True, element="Q4", ncross=4, row=0.5),
-    "clamped_smooth_thin": WallPair(clamp_toe=True, kt=1.0, t=0.2),
-    "clamped_smooth_q8_1": WallPair(clamp_toe=True, kt=1.0, ncross=1, row=0.5),
-    "q8_2_mc": WallPair(soil=MC, soil_type="MOHR_COULOMB", law="MOHR_COULOMB", increments=5),
-}
+# (name, description, pair); the test's pair is TEST (test/python/test_wall_consistency.py)
+TEST = WallPair(clamp_toe=True, kt=1.0, t=0.1, e_w=2.1e8, row=0.125)
+VARIANTS = [
+    ("free_rough", "toe free, rough faces (K_t = 3e4), t = 0.4 m, Q8 2 across, 0.25 m rows",
+     WallPair()),
+    ("free_rough_fine", "the same, 0.125 m rows", WallPair(row=0.125)),
+    ("free_rough_q8_1", "the same, one Q8 across, 0.5 m rows", WallPair(ncross=1, row=0.5)),
+    ("free_rough_q4", "the same, four Q4 across, 0.5 m rows",
+     WallPair(element="Q4", ncross=4, row=0.5)),
+    ("free_smooth", "toe free, smooth faces (K_t = 1)", WallPair(kt=1.0)),
+    ("free_smooth_k0_1", "toe free, smooth faces, K0 = 1", WallPair(kt=1.0, k0=1.0)),
+    ("held_rough", "toe held, rough faces", WallPair(clamp_toe=True)),
+    ("held_rough_q4", "toe held, rough faces, four Q4 across, 0.5 m rows",
+     WallPair(clamp_toe=True, element="Q4", ncross=4, row=0.5)),
+    ("held_smooth", "toe held, smooth faces", WallPair(clamp_toe=True, kt=1.0)),
+    ("held_smooth_t0.8", "toe held, smooth faces, t = 0.8 m (EI kept)",
+     WallPair(clamp_toe=True, kt=1.0, t=0.8, e_w=3.0e7 / 8)),
+    ("held_smooth_t0.2", "toe held, smooth faces, t = 0.2 m (EI kept)",
+     WallPair(clamp_toe=True, kt=1.0, t=0.2, e_w=3.0e7 * 8)),
+    ("held_smooth_t0.1", "toe held, smooth faces, t = 0.1 m (EI kept)",
+     WallPair(clamp_toe=True, kt=1.0, t=0.1, e_w=3.0e7 * 64)),
+    ("test", "the test: toe held, smooth faces, steel t = 0.1 m (E = 2.1e8 kPa), "
+     "0.125 m rows", TEST),
+    ("free_mc", "toe free, Mohr-Coulomb soil (phi = 30 deg, c = 1 kPa) and joints "
+     "(delta = 20 deg)", WallPair(soil=MC, soil_type="MOHR_COULOMB", law="MOHR_COULOMB",
+                                  increments=5)),
+]
+SCRIPT = "scenes/wall_consistency.py"
+
+
+def markdown(results):
+    """The table of doc/validation.md from {name: measure() rows}."""
+    lines = ["| variant | max \\|M\\|, plate / strip [kN m/m] | difference | profile "
+             "difference / max \\|M\\| | head u_x, plate / strip [mm] | difference |",
+             "|---|---|---|---|---|---|"]
+    for name, text, _ in VARIANTS:
+        if name not in results:
+            continue
+        r = results[name][-1]
+        lines.append(f"| {text} | {r['m_plate']:.2f} / {r['m_strip']:.2f} "
+                     f"| {100 * (r['m_plate'] / r['m_strip'] - 1):+.1f} % "
+                     f"| {100 * r['profile_diff'] / r['m_strip']:.1f} % "
+                     f"| {1e3 * r['head_plate']:.3f} / {1e3 * r['head_strip']:.3f} "
+                     f"| {100 * (r['head_plate'] / r['head_strip'] - 1):+.1f} % |")
+    return "\n".join(lines)
 
 
 def main(argv=None):
@@ -157,21 +178,26 @@ def main(argv=None):
     ap.add_argument("dir", nargs="?", default=str(ROOT / "output" / "wall_consistency"))
     ap.add_argument("--bin", help="directory of the pecplas executable")
     ap.add_argument("--only", nargs="*", help="variants to run (default: all)")
+    ap.add_argument("--write", action="store_true",
+                    help="write the table into doc/validation.md (all variants)")
+    ap.add_argument("--check", action="store_true",
+                    help="compare the table with doc/validation.md (all variants)")
     a = ap.parse_args(argv)
-    print("| variant | phase | head u_x plate [mm] | strip | diff | max M plate [kN m/m] "
-          "(depth) | strip (depth) | diff | profile diff / max M |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for name, p in VARIANTS.items():
+    results = {}
+    for name, _, p in VARIANTS:
         if a.only and name not in a.only:
             continue
-        for r in run_pair(p, name, a.dir, a.bin):
-            dh = r["head_plate"] / r["head_strip"] - 1
-            dm = r["m_plate"] / r["m_strip"] - 1
-            print(f"| {name} | {r['phase']} | {1e3 * r['head_plate']:.3f} | "
-                  f"{1e3 * r['head_strip']:.3f} | {100 * dh:+.2f} % | {r['m_plate']:.2f} "
-                  f"({r['depth_plate']:.2f}) | {r['m_strip']:.2f} ({r['depth_strip']:.2f}) | "
-                  f"{100 * dm:+.2f} % | {100 * r['profile_diff'] / r['m_strip']:.2f} % |",
-                  flush=True)
+        results[name] = run_pair(p, name, a.dir, a.bin)
+    text = markdown(results)
+    print(text)
+    if a.write or a.check:
+        from pecplas_py.doc_blocks import check_close, update
+        doc = ROOT / "doc" / "validation.md"
+        if a.check:
+            bad = check_close(doc, SCRIPT, {"wall-consistency": text})
+            print(bad or "wall_consistency: doc/validation.md is up to date")
+            return 1 if bad else 0
+        update(doc, SCRIPT, {"wall-consistency": text}, False)
     return 0
 
 
