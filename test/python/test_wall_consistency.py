@@ -57,3 +57,23 @@ def test_head_displacement(pair):
     the excavation in both."""
     assert pair["head_plate"] == pytest.approx(pair["head_strip"], rel=0.02)
     assert pair["head_plate"] < 0 and pair["head_strip"] < 0
+
+
+def test_plate_line_ending_on_the_held_bottom(tmp_path):
+    """A plate line whose end lies on the held bottom of the mesh (joints on both faces: the
+    end node is split per body, every copy on the support): the deck runs and each copy of the
+    end node stays put (the supports hold them exactly)."""
+    from pecplas_py.decks.wall_pair import WallPair
+    from pecplas_py.results import Results
+    import numpy as np
+    p = WallPair(below=(), element="Q4", row=1.0, away=(1.0, 2.0, 3.0))
+    out = _run(deck(p, plate=True), tmp_path / "bottom.inp")
+    with Results(out) as r:
+        assert r.status == "completed"
+        x = r.coordinates
+        toe = np.nonzero((np.abs(x[:, 0]) < 1e-9) & (np.abs(x[:, 1] + p.wall_l) < 1e-9))[0]
+        # the original (the plate's) and a copy per body: on the boundary the two bodies
+        # meet only across the line
+        assert len(toe) == 3
+        u = r.field(r.last_key(), "displacement")
+        assert np.all(u[toe] == 0.0)
