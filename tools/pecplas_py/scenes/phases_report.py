@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The numbers of doc/validation.md, "Staged construction": runs the three examples of
+"""The numbers of doc/validation.md, "Staged construction": runs the examples of
 input/examples/ (excavation_cantilever and its plate variant excavation_cantilever_plate,
-pile_wished_in_place with S2 beside it, embankment_stages) into DIR and writes the generated blocks (or, with --check, says whether
-the committed ones differ from these runs, beyond the last digit; the times of the cantilever's
-phases are measured, not checked).
+pile_wished_in_place with S2 beside it, embankment_stages) into DIR and writes the generated
+blocks (or, with --check, says whether the committed ones differ from these runs, beyond the
+last digit; the times of the cantilever's phases are measured, not checked).
 
     python3 -m pecplas_py.scenes.phases_report [DIR] [--bin DIR] [--check] [--no-run]
                                                [--figures]
