@@ -27,17 +27,19 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
+   use pecplas_io_deck_reader_water, only: read_water, read_dry, read_change_water, &
+      resolve_water
    implicit none (type, external)
    private
 
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(25) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(28) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
-      '*CHANGE_MATERIAL', '*CHANGE_LAW']
+      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*WATER', '*DRY', '*CHANGE_WATER']
 
 contains
 
@@ -118,6 +120,8 @@ contains
       ! phase changes name joint sets too
       call resolve_phases(state, model, error)
       if (allocated(error)) return
+      call resolve_water(state, model, error)
+      if (allocated(error)) return
       call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return
       call record_places(state, model)
@@ -186,6 +190,12 @@ contains
          call read_interface_law(state, model, block, error)
       case ('*JOINTS')
          call read_joints(state, block, error)
+      case ('*WATER')
+         call read_water(state, model, block, error)
+      case ('*DRY')
+         call read_dry(state, block, error)
+      case ('*CHANGE_WATER')
+         call read_change_water(state, block, error)
       case default
          list = ''
          do i = 1, size(KNOWN_KEYWORDS)
