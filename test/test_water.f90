@@ -24,7 +24,10 @@ contains
 
    subroutine collect_water(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
-      tests = [new_unittest('hydrostatic_column', test_hydrostatic)]
+      tests = [new_unittest('hydrostatic_column', test_hydrostatic), &
+               new_unittest('undrained_oedometer', test_oedometer), &
+               new_unittest('undrained_mc_compression', test_compression), &
+               new_unittest('undrained_then_drained', test_short_long)]
    end subroutine collect_water
 
    !> A column of nel Q4 elements (width 1, height h, base y = 0, sides on rollers): the
@@ -132,5 +135,158 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_hydrostatic
+
+   !> An oedometric column (10 Q4 elements, weightless, no phreatic level) of UNDRAINED_A
+   !> elastic soil under a surcharge q = 100: the strain is uniform, eps_v = -q / (M' + K_w/n)
+   !> (M' = K' + 4 G / 3), so the excess pore pressure is q B_oed with
+   !> B_oed = K_w/n / (M' + K_w/n) and sigma'_v = -q M' / (M' + K_w/n) at every point. Once
+   !> with the default K_w/n (the nu_u = 0.495 rule: K_w/n = 45 K' for nu' = 0.3) and once
+   !> with KW_N = 2e5 given. The elements represent the uniform strain exactly: 1e-8 of q
+   !> is far above the round-off.
+   subroutine test_oedometer(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: E = 1.0e4_wp, NU = 0.3_wp, Q = 100.0_wp
+      real(wp) :: bulk, shear, m, kwn, b, worst_p, worst_s
+      integer :: code, v, s
+      character(len=:), allocatable :: body
+      call make_directories(OUT)
+      bulk = E/(3.0_wp*(1.0_wp - 2.0_wp*NU))
+      shear = E/(2.0_wp*(1.0_wp + NU))
+      m = bulk + 4.0_wp*shear/3.0_wp
+      do v = 1, 2
+         if (v == 1) then
+            kwn = 3.0_wp*(0.495_wp - NU)/((1.0_wp - 2.0_wp*0.495_wp)*(1.0_wp + NU))*bulk
+            body = '*MATERIAL, NAME=clay, DRAINAGE=UNDRAINED_A'//NL//'E = 1e4, NU = 0.3'
+         else
+            kwn = 2.0e5_wp
+            body = '*MATERIAL, NAME=clay, DRAINAGE=UNDRAINED_A'//NL// &
+               'E = 1e4, NU = 0.3, KW_N = 2e5'
+         end if
+         b = kwn/(m + kwn)
+         body = body//NL//'*SECTION, SET=low, MATERIAL=clay'//NL// &
+            '*SECTION, SET=high, MATERIAL=clay'//NL//'*LOAD, NAME=q, TYPE=FORCE'//NL// &
+            'top, Y, -50'//NL//'*STEP, NAME=load, INCREMENTS=1'//NL//'q, 1.0'
+         call write_column(OUT//'oedo'//itoa(v)//'.inp', 10, 10.0_wp, 5.0_wp, body)
+         code = run_deck(OUT//'oedo'//itoa(v)//'.inp', OUT//'oedo'//itoa(v)//'.h5', .true., &
+            model, problem)
+         call check(error, code == 0, 'undrained oedometer runs (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         worst_p = 0.0_wp
+         worst_s = 0.0_wp
+         do s = 1, 2
+            associate (st => problem%state%sets(s))
+               worst_p = max(worst_p, maxval(abs(st%pore%excess - Q*b)))
+               worst_s = max(worst_s, maxval(abs(st%stress(2, :, :) + Q*m/(m + kwn))))
+            end associate
+         end do
+         call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'excess pore pressure = q B_oed', &
+            atol=1.0e-8_wp*Q)
+         if (allocated(error)) return
+         call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma'_v = -q (1 - B_oed)", &
+            atol=1.0e-8_wp*Q)
+         if (allocated(error)) return
+      end do
+   end subroutine test_oedometer
+
+   !> Undrained plane-strain compression of one Q4 element of Mohr-Coulomb soil (c' = 10,
+   !> phi' = 30, psi = 0) from an isotropic effective stress s'_0 = 100, the top pushed down
+   !> 2 % in 40 increments against a constant lateral total stress: with no dilatancy the
+   !> mean effective stress stays s'_0 (up to the pore water's compressibility: with
+   !> KW_N = 1000 K' the drift is below K'/K_w/n of the deviator, 0.1 %), so the strength is
+   !> t = (sigma'_1 - sigma'_3) / 2 = c' cos phi' + s'_0 sin phi', checked within 0.5 %.
+   !> With psi = 10 the strength keeps rising (dilatancy lowers the pore pressure): the
+   !> last increment's t is above the psi = 0 strength and still growing.
+   subroutine test_compression(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: C = 10.0_wp, PHI = 30.0_wp, S0 = 100.0_wp
+      real(wp) :: deg, t, expect, sig(4)
+      integer :: code
+      deg = acos(-1.0_wp)/180.0_wp
+      expect = C*cos(PHI*deg) + S0*sin(PHI*deg)
+      call make_directories(OUT)
+      call write_block(OUT//'triax0.inp', 0.0_wp)
+      code = run_deck(OUT//'triax0.inp', OUT//'triax0.h5', .true., model, problem)
+      call check(error, code == 0, 'undrained compression runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      sig = problem%state%sets(1)%stress(:, 1, 1)
+      t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
+      call check_close(error, t, expect, 5.0e-3_wp, "undrained strength c' cos phi' + "// &
+         "s'_0 sin phi'")
+      if (allocated(error)) return
+      call write_block(OUT//'triax10.inp', 10.0_wp)
+      code = run_deck(OUT//'triax10.inp', OUT//'triax10.h5', .true., model, problem)
+      call check(error, code == 0, 'undrained compression, psi = 10, runs (exit '// &
+         itoa(code)//')')
+      if (allocated(error)) return
+      sig = problem%state%sets(1)%stress(:, 1, 1)
+      t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
+      call check(error, t > 1.05_wp*expect, 'psi = 10: the strength rises above the psi = 0 '// &
+         'one (dilatancy lowers the pore pressure)')
+   contains
+      subroutine write_block(path, psi)
+         character(len=*), intent(in) :: path
+         real(wp), intent(in) :: psi
+         integer :: u
+         open (newunit=u, file=path, status='replace', action='write')
+         write (u, '(a)') '*TITLE', 'undrained plane-strain compression', '*NODES', &
+            '1, 0, 0', '2, 1, 0', '3, 1, 1', '4, 0, 1', '*ELEMENTS, TYPE=Q4, SET=soil', &
+            '1, 1, 2, 3, 4', '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_A'
+         write (u, '(a,f4.1,a)') 'E = 1e4, NU = 0.3, C = 10, PHI = 30, PSI = ', psi, &
+            ', KW_N = 8.333333e6'
+         write (u, '(a)') '*SECTION, SET=soil, MATERIAL=clay', '*NSET, NAME=top', '3, 4', &
+            '*BOUNDARY', '1, XY', '2, Y', '4, X', '*INITIAL_STRESS, TYPE=HOMOGENEOUS', &
+            'ALL, -100, -100, -100, 0', '*LOAD, NAME=push, TYPE=DISPLACEMENT', &
+            'top, Y, -0.02', '*STEP, NAME=push, INCREMENTS=40', 'push, 1.0'
+         close (u)
+      end subroutine write_block
+   end subroutine test_compression
+
+   !> Elastic soil loaded undrained (q = 100 on the oedometric column), then a phase that
+   !> makes it drained and sets the excess pore pressures to zero: the end state equals a
+   !> drained run of the same loading (elastic: the state depends on the end strain only),
+   !> displacements to 1e-10 of the drained settlement, effective stresses to 1e-10 of q.
+   subroutine test_short_long(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: two, one
+      real(wp) :: du, ds, umax
+      integer :: code, s
+      character(len=*), parameter :: MATS = '*MATERIAL, NAME=short, DRAINAGE=UNDRAINED_A'// &
+         NL//'E = 1e4, NU = 0.3, GAMMA = 0'//NL//'*MATERIAL, NAME=long'//NL// &
+         'E = 1e4, NU = 0.3, GAMMA = 0'//NL
+      call make_directories(OUT)
+      call write_column(OUT//'short_long.inp', 10, 10.0_wp, 5.0_wp, MATS// &
+         '*SECTION, SET=low, MATERIAL=short'//NL//'*SECTION, SET=high, MATERIAL=short'//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
+         '*STEP, NAME=undrained, INCREMENTS=2'//NL//'q, 1.0'//NL// &
+         '*STEP, NAME=drained, INCREMENTS=2'//NL//'*CHANGE_MATERIAL'//NL//'low, long'//NL// &
+         'high, long'//NL//'*CHANGE_WATER, RESET_EXCESS=YES'//NL//'*END STEP')
+      code = run_deck(OUT//'short_long.inp', OUT//'short_long.h5', .true., model, two)
+      call check(error, code == 0, 'undrained then drained runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call write_column(OUT//'drained.inp', 10, 10.0_wp, 5.0_wp, MATS// &
+         '*SECTION, SET=low, MATERIAL=long'//NL//'*SECTION, SET=high, MATERIAL=long'//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
+         '*STEP, NAME=drained, INCREMENTS=2'//NL//'q, 1.0')
+      code = run_deck(OUT//'drained.inp', OUT//'drained.h5', .true., model, one)
+      call check(error, code == 0, 'drained run (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      umax = maxval(abs(one%state%u))
+      du = maxval(abs(two%state%u - one%state%u))
+      ds = 0.0_wp
+      do s = 1, 2
+         ds = max(ds, maxval(abs(two%state%sets(s)%stress - one%state%sets(s)%stress)))
+         ds = max(ds, maxval(abs(two%state%sets(s)%pore%excess)))
+      end do
+      call check_close(error, du, 0.0_wp, 0.0_wp, 'displacements = drained run', &
+         atol=1.0e-10_wp*umax)
+      if (allocated(error)) return
+      call check_close(error, ds, 0.0_wp, 0.0_wp, 'effective stresses = drained run', &
+         atol=1.0e-10_wp*100.0_wp)
+   end subroutine test_short_long
 
 end module test_water
