@@ -12,6 +12,7 @@ module test_water
    use pecplas_problem_type, only: problem_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_base_strings, only: itoa
+   use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -27,7 +28,8 @@ contains
       tests = [new_unittest('hydrostatic_column', test_hydrostatic), &
                new_unittest('undrained_oedometer', test_oedometer), &
                new_unittest('undrained_mc_compression', test_compression), &
-               new_unittest('undrained_then_drained', test_short_long)]
+               new_unittest('undrained_then_drained', test_short_long), &
+               new_unittest('footing_undrained_b', test_footing_b)]
    end subroutine collect_water
 
    !> A column of nel Q4 elements (width 1, height h, base y = 0, sides on rollers): the
@@ -288,5 +290,43 @@ contains
       call check_close(error, ds, 0.0_wp, 0.0_wp, 'effective stresses = drained run', &
          atol=1.0e-10_wp*100.0_wp)
    end subroutine test_short_long
+
+   !> Smooth rigid strip footing on weightless UNDRAINED_B clay (c_u = 10, effective E, nu,
+   !> K_w/n of nu_u = 0.495), 200 Q8R elements (test/data/water/footing_undrained_b.inp):
+   !> the footing pressure reaches Prandtl's (2 + pi) c_u within 2 % (measured 51.859,
+   !> +0.86 %; T6 on the same mesh density +0.75 %, full Q8 +1.6 % and still rising) and
+   !> has levelled off (last 10 increments within 0.2 %).
+   subroutine test_footing_b(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(results_reader_t) :: rd
+      real(wp), allocatable :: reac(:, :)
+      real(wp) :: q(2), qu
+      character(len=40) :: path
+      integer :: code, n, k, i
+      call make_directories(OUT)
+      code = run_deck('test/data/water/footing_undrained_b.inp', OUT//'footing_b.h5', .true., &
+         model, problem)
+      call check(error, code == 0, 'UNDRAINED_B footing runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      k = model%mesh%find_nset('footing')
+      call rd%open(OUT//'footing_b.h5', error)
+      if (allocated(error)) return
+      call rd%history_length(n, error)
+      if (allocated(error)) return
+      do i = 1, 2
+         write (path, '(a,i6.6,a)') '/increments/', merge(n, n - 10, i == 1), '/reaction'
+         call rd%dataset(trim(path), reac, error)
+         if (allocated(error)) return
+         q(i) = -sum(reac(2, model%mesh%nsets(k)%nodes)) ! half-width 1: q b = q
+      end do
+      call rd%close()
+      qu = (2.0_wp + acos(-1.0_wp))*10.0_wp
+      call check_close(error, q(1), qu, 0.02_wp, 'footing pressure vs (2 + pi) c_u')
+      if (allocated(error)) return
+      call check(error, abs(q(1) - q(2)) <= 2.0e-3_wp*q(1), 'the footing pressure has '// &
+         'levelled off')
+   end subroutine test_footing_b
 
 end module test_water

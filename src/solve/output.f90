@@ -121,6 +121,10 @@ contains
             call move_alloc(st%sets(s)%stress, r%set_fields(s)%stress)
             call move_alloc(st%sets(s)%strain, r%set_fields(s)%strain)
             call move_alloc(st%sets(s)%hist, r%set_fields(s)%state)
+            if (st%sets(s)%pore%on()) then
+               r%set_fields(s)%pore_steady = st%sets(s)%pore%steady
+               r%set_fields(s)%pore_excess = st%sets(s)%pore%excess
+            end if
          end do
       end associate
    end subroutine lend
