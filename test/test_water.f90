@@ -29,7 +29,8 @@ contains
                new_unittest('undrained_oedometer', test_oedometer), &
                new_unittest('undrained_mc_compression', test_compression), &
                new_unittest('undrained_then_drained', test_short_long), &
-               new_unittest('footing_undrained_b', test_footing_b)]
+               new_unittest('footing_undrained_b', test_footing_b), &
+               new_unittest('joint_effective_stress', test_joint)]
    end subroutine collect_water
 
    !> A column of nel Q4 elements (width 1, height h, base y = 0, sides on rollers): the
@@ -328,5 +329,77 @@ contains
       call check(error, abs(q(1) - q(2)) <= 2.0e-3_wp*q(1), 'the footing pressure has '// &
          'levelled off')
    end subroutine test_footing_b
+
+   !> A pad (2 x 0.25, low so that the push's moment keeps every joint point closed;
+   !> weightless elastic) pressed by 100 onto a fixed block through
+   !> Mohr-Coulomb Goodman joints (phi = 30, c = 5) at y = 1, under a phreatic level at
+   !> y = 5 (gamma_w = 10); a nil step after the pressure releases the out-of-balance of the
+   !> pore pressures (no water weighs here). The joint takes the pore pressure u = 40 of its
+   !> position; the pad's vertical equilibrium makes the mean total normal stress 100, so
+   !> the law's mean effective normal stress is sigma_n - u = 60 (1e-8 of 100), and the
+   !> sliding resistance over the width 2 is 2 ((sigma_n - u) tan phi + c) = 79.28. Pushed sideways by 0.99 of it the
+   !> run converges, the mean shear stress T / 2 (1e-8); by 1.01 of it the pad slides
+   !> away (the run stops, exit 3), where without the water (resistance 2 (100 tan phi + c)
+   !> = 125.5) it would hold.
+   subroutine test_joint(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp) :: resist, tanphi, worst_n, worst_t
+      integer :: code
+      tanphi = tan(30.0_wp*acos(-1.0_wp)/180.0_wp)
+      resist = 2.0_wp*((100.0_wp - 40.0_wp)*tanphi + 5.0_wp)
+      call make_directories(OUT)
+      call write_pad(OUT//'pad_hold.inp', 0.99_wp*resist)
+      code = run_deck(OUT//'pad_hold.inp', OUT//'pad_hold.h5', .true., model, problem)
+      call check(error, code == 0, 'pad below the effective resistance holds (exit '// &
+         itoa(code)//')')
+      if (allocated(error)) return
+      associate (js => problem%state%joints%sets(1))
+         ! equal weights: 2 Gauss points on each of 2 elements of length 1
+         worst_n = abs(sum(js%sigma(1, :, :))/4.0_wp - 60.0_wp)
+         worst_t = abs(abs(sum(js%sigma(2, :, :)))/4.0_wp - 0.99_wp*resist/2.0_wp)
+         call check(error, all(abs(js%pore - 40.0_wp) <= 1.0e-12_wp*40.0_wp), &
+            'joint pore pressure = gamma_w (5 - 1)')
+      end associate
+      if (allocated(error)) return
+      call check_close(error, worst_n, 0.0_wp, 0.0_wp, 'effective normal stress sigma_n - u', &
+         atol=1.0e-8_wp*100.0_wp)
+      if (allocated(error)) return
+      call check_close(error, worst_t, 0.0_wp, 0.0_wp, 'shear stress T / width', &
+         atol=1.0e-8_wp*100.0_wp)
+      if (allocated(error)) return
+      call write_pad(OUT//'pad_slide.inp', 1.01_wp*resist)
+      code = run_deck(OUT//'pad_slide.inp', OUT//'pad_slide.h5', .true., model, problem)
+      call check(error, code == 3, 'pad above the effective resistance slides (exit 3, got '// &
+         itoa(code)//')')
+   contains
+      subroutine write_pad(path, push)
+         character(len=*), intent(in) :: path
+         real(wp), intent(in) :: push
+         integer :: u
+         character(len=32) :: buf
+         write (buf, '(es23.16)') push/3.0_wp
+         open (newunit=u, file=path, status='replace', action='write')
+         write (u, '(a)') '*TITLE', 'pad under water', '*NODES', '1, 0, 0', '2, 1, 0', &
+            '3, 2, 0', '4, 0, 1', '5, 1, 1', '6, 2, 1', '10, 0, 1.25', '11, 1, 1.25', &
+            '12, 2, 1.25', &
+            '*ELEMENTS, TYPE=Q4, SET=ground', '1, 1, 2, 5, 4', '2, 2, 3, 6, 5', &
+            '*ELEMENTS, TYPE=Q4, SET=pad', '3, 4, 5, 11, 10', '4, 5, 6, 12, 11', &
+            '*MATERIAL, NAME=soil', 'E = 1e4, NU = 0.3', '*SECTION, SET=ground, MATERIAL=soil', &
+            '*SECTION, SET=pad, MATERIAL=soil', &
+            '*INTERFACE_LAW, NAME=friction, TYPE=MOHR_COULOMB', &
+            'KN = 1e5, KT = 1e5, PHI = 30, C = 5', '*EDGES, NAME=interface', '4, 5', '5, 6', &
+            '*JOINTS, TYPE=GOODMAN4, SET=contact, LAW=friction, EDGES=interface, SIDE=pad', &
+            '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=5', &
+            '*NSET, NAME=base', '1, 2, 3', '*NSET, NAME=pad_top', '10, 11, 12', '*BOUNDARY', &
+            'base, XY', '*EDGES, NAME=top', '10, 11', '11, 12', '*LOAD, NAME=p, TYPE=PRESSURE', &
+            'top, 100', '*LOAD, NAME=push, TYPE=FORCE', 'pad_top, X, '//trim(adjustl(buf)), &
+            '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-10, MAX_ITERATIONS=50, MAX_CUTS=4', &
+            '*STEP, NAME=press, INCREMENTS=1', 'p, 1', &
+            '*STEP, NAME=water, INCREMENTS=1', '*END STEP', '*STEP, NAME=push, INCREMENTS=4', 'push, 1'
+         close (u)
+      end subroutine write_pad
+   end subroutine test_joint
 
 end module test_water

@@ -7,6 +7,9 @@ module pecplas_fe_pore
    use pecplas_fe_state, only: fe_state_t, set_state_t
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
+   use pecplas_base_error, only: error_t
+   use pecplas_joints_points, only: joint_point_geometry
+   use pecplas_fe_joint_side, only: mesh_index_t
    implicit none (type, external)
    private
 
@@ -14,18 +17,27 @@ module pecplas_fe_pore
 
 contains
 
-   !> Pore pressure arrays for every element set (a model with water), steady under the
-   !> level in force before the first step.
-   subroutine setup_pore(model, rules, state)
+   !> Pore pressure arrays for every element set and joint set (a model with water, joint
+   !> states set up), steady under the level in force before the first step.
+   subroutine setup_pore(model, rules, state, error)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       type(fe_state_t), intent(inout) :: state
+      type(error_t), allocatable, intent(out) :: error
       integer :: s
       if (.not. model%water%used()) return
       do s = 1, size(state%sets)
          call state%sets(s)%pore%init(state%sets(s)%ngauss, size(model%mesh%esets(s)%conn, 2))
       end do
-      call set_steady_pressures(model, rules, state, model%water%level_at(1))
+      if (allocated(state%joints%sets)) then
+         do s = 1, size(state%joints%sets)
+            if (model%joint_sets(s)%is_katona()) cycle
+            associate (js => state%joints%sets(s))
+               allocate (js%pore(js%npoint, size(model%joint_sets(s)%conn, 2)), source=0.0_wp)
+            end associate
+         end do
+      end if
+      call set_steady_pressures(model, rules, state, model%water%level_at(1), error)
    end subroutine setup_pore
 
    !> Index in model%materials of the material that set s has now.
@@ -37,13 +49,16 @@ contains
       if (st%material > 0) m = st%material
    end function pore_material
 
-   !> Steady pore pressures of every point under level k (0: none).
-   subroutine set_steady_pressures(model, rules, state, k)
+   !> Steady pore pressures of every point under level k (0: none): massif points by their
+   !> set and material, joint points by the rule of joint_wet.
+   subroutine set_steady_pressures(model, rules, state, k, error)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       type(fe_state_t), intent(inout) :: state
       integer, intent(in) :: k
-      real(wp), allocatable :: xg(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: xg(:, :), xy(:, :, :), t(:, :, :)
+      type(mesh_index_t) :: index
       integer :: s, e, g, m
       do s = 1, size(state%sets)
          associate (st => state%sets(s), set => model%mesh%esets(s))
@@ -59,7 +74,49 @@ contains
             deallocate (xg)
          end associate
       end do
+      if (.not. allocated(state%joints%sets)) return
+      if (.not. any([(allocated(state%joints%sets(s)%pore), s = 1, size(state%joints%sets))])) &
+         return
+      call index%build(model)
+      do s = 1, size(state%joints%sets)
+         associate (js => state%joints%sets(s))
+            if (.not. allocated(js%pore)) cycle
+            js%pore = 0.0_wp
+            if (k <= 0) cycle
+            call joint_point_geometry(model, s, xy, t, error)
+            if (allocated(error)) return
+            do e = 1, size(js%pore, 2)
+               if (.not. joint_wet(model, state, index, model%joint_sets(s)%conn(:, e))) cycle
+               do g = 1, size(js%pore, 1)
+                  js%pore(g, e) = model%water%levels(k)%pressure(xy(:, g, e))
+               end do
+            end do
+         end associate
+      end do
    end subroutine set_steady_pressures
+
+   !> The rule for a joint element with nodes `conn`: it takes the steady pore pressure of
+   !> its position when the massif on either side is wet (a porous material, not *DRY):
+   !> where both sides are wet they agree (the steady pore pressure depends on the position
+   !> only); a joint between a dry structure and soil takes the soil's; between two dry
+   !> sides, none.
+   logical function joint_wet(model, state, index, conn) result(wet)
+      type(model_t), intent(in) :: model
+      type(fe_state_t), intent(in) :: state
+      type(mesh_index_t), intent(in) :: index
+      integer, intent(in) :: conn(:)
+      integer :: i, j, s
+      wet = .false.
+      do i = 1, size(conn)
+         do j = index%head(conn(i)), index%head(conn(i) + 1) - 1
+            s = index%node_set(j)
+            if (model%water%wet(s, pore_material(model, s, state%sets(s)))) then
+               wet = .true.
+               return
+            end if
+         end do
+      end do
+   end function joint_wet
 
    !> Excess pore pressures back to zero (converged and trial).
    subroutine reset_excess(state)

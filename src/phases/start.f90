@@ -80,7 +80,8 @@ contains
       end if
       indexed = .false.
       associate (step => model%steps(istep), st => problem%state)
-         call water_changes(model, problem, istep, lines)
+         call water_changes(model, problem, istep, lines, error)
+         if (allocated(error)) return
          do c = 1, size(step%changes)
             associate (ch => step%changes(c))
                refactorise = .true.
@@ -540,15 +541,17 @@ contains
 
    !> Groundwater at the start of step istep: the steady pore pressures under the level in
    !> force, and the excess pore pressures set to zero when the step says so (*CHANGE_WATER).
-   subroutine water_changes(model, problem, istep, lines)
+   subroutine water_changes(model, problem, istep, lines, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       integer, intent(in) :: istep
       character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
       integer :: k
       if (.not. model%water%used()) return
       k = model%water%level_at(istep)
-      call set_steady_pressures(model, problem%system%rules, problem%state, k)
+      call set_steady_pressures(model, problem%system%rules, problem%state, k, error)
+      if (allocated(error)) return
       if (k /= model%water%level_at(istep - 1) .or. istep == 1) then
          if (k > 0) then
             call add_line(lines, 'phreatic level '//model%water%levels(k)%name// &

@@ -88,9 +88,10 @@ contains
             end associate
          end associate
       end do
-      call setup_pore(model, problem%system%rules, problem%state)
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
+      if (allocated(error)) return
+      call setup_pore(model, problem%system%rules, problem%state, error)
       if (allocated(error)) return
       ! phases: the sets first activated by a step are inactive until then
       problem%phase%phased = is_phased(model)
