@@ -30,7 +30,8 @@ contains
                new_unittest('undrained_mc_compression', test_compression), &
                new_unittest('undrained_then_drained', test_short_long), &
                new_unittest('footing_undrained_b', test_footing_b), &
-               new_unittest('joint_effective_stress', test_joint)]
+               new_unittest('joint_effective_stress', test_joint), &
+               new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_water
 
    !> A column of nel Q4 elements (width 1, height h, base y = 0, sides on rollers): the
@@ -401,5 +402,86 @@ contains
          close (u)
       end subroutine write_pad
    end subroutine test_joint
+
+   !> Bad groundwater decks stop while reading, with file:line and the reason, exit 2 and no
+   !> results file: a phreatic polyline that does not span the model, GAMMA_SAT below
+   !> GAMMA_UNSAT, an undrained interface law, an unknown level in *CHANGE_WATER, CU
+   !> without UNDRAINED_B, UNDRAINED_B on an elastic material.
+   subroutine test_bad_decks(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(error_t), allocatable :: e
+      character(len=*), parameter :: MAT = '*MATERIAL, NAME=clay'//NL//'E = 1e4, NU = 0.3'//NL
+      character(len=*), parameter :: SECS = '*SECTION, SET=low, MATERIAL=clay'//NL// &
+         '*SECTION, SET=high, MATERIAL=clay'//NL
+      character(len=*), parameter :: STEP = '*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'
+      character(len=160) :: bodies(6), marker(6), expect(6)
+      character(len=:), allocatable :: deck, body
+      integer :: k, i, code
+      logical :: exists
+      bodies(1) = '*WATER, NAME=w, GAMMA_W=10|0.2, 5|0.8, 6|'
+      marker(1) = '*WATER, NAME=w, GAMMA_W=10'
+      expect(1) = 'does not cross the model'
+      bodies(2) = '*MATERIAL, NAME=clay|E = 1e4, NU = 0.3, GAMMA = 18, GAMMA_SAT = 16|'
+      marker(2) = 'E = 1e4, NU = 0.3, GAMMA = 18, GAMMA_SAT = 16'
+      expect(2) = 'GAMMA_SAT = 16 is below'
+      bodies(3) = '*INTERFACE_LAW, NAME=j, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_A|'// &
+         'KN = 1e5, KT = 1e5, PHI = 30, C = 0|'
+      marker(3) = '*INTERFACE_LAW, NAME=j, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_A'
+      expect(3) = 'joints are drained'
+      bodies(4) = '*WATER, NAME=w, GAMMA_W=10, LEVEL=5|*STEP, NAME=two, INCREMENTS=1|'// &
+         '*CHANGE_WATER, LEVEL=low|*END STEP|'
+      marker(4) = '*CHANGE_WATER, LEVEL=low'
+      expect(4) = "undefined phreatic level 'low'"
+      bodies(5) = '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB|E = 1e4, NU = 0.3, C = 5, '// &
+         'PHI = 20, PSI = 0, CU = 10|'
+      marker(5) = 'E = 1e4, NU = 0.3, C = 5, PHI = 20, PSI = 0, CU = 10'
+      expect(5) = 'is for DRAINAGE=UNDRAINED_B'
+      bodies(6) = '*MATERIAL, NAME=clay, DRAINAGE=UNDRAINED_B|E = 1e4, NU = 0.3, CU = 10|'
+      marker(6) = 'E = 1e4, NU = 0.3, CU = 10'
+      expect(6) = 'needs a plastic model'
+      call make_directories(OUT)
+      do k = 1, size(bodies)
+         body = trim(bodies(k))
+         do i = 1, len(body)
+            if (body(i:i) == '|') body(i:i) = NL
+         end do
+         if (k /= 2 .and. k /= 5 .and. k /= 6) body = MAT//body
+         deck = OUT//'bad'//itoa(k)//'.inp'
+         call write_column(deck, 4, 4.0_wp, 2.0_wp, body//SECS//STEP)
+         call read_deck(deck, model, e)
+         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
+         if (allocated(error)) return
+         call check(error, index(e%text(), deck//':'//itoa(line_of(deck, trim(marker(k))))) > 0 &
+            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
+         if (allocated(error)) return
+         deallocate (e)
+         open (newunit=i, file=OUT//'bad.h5', status='replace')
+         close (i, status='delete')
+         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
+         inquire (file=OUT//'bad.h5', exist=exists)
+         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
+            itoa(code)//', results file written: '//merge('yes', 'no ', exists))
+         if (allocated(error)) return
+      end do
+   contains
+      !> Number of the line of file `path` that reads `text`.
+      integer function line_of(path, text) result(n)
+         character(len=*), intent(in) :: path, text
+         character(len=256) :: buf
+         integer :: u, j, ios
+         n = 0
+         open (newunit=u, file=path, status='old', action='read')
+         j = 0
+         do
+            read (u, '(a)', iostat=ios) buf
+            if (ios /= 0) exit
+            j = j + 1
+            if (trim(buf) == text) n = j
+         end do
+         close (u)
+      end function line_of
+   end subroutine test_bad_decks
 
 end module test_water

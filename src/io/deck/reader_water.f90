@@ -247,8 +247,9 @@ contains
          if (allocated(error)) return
          if (.not. (wmat%gamma_sat >= wmat%gamma_unsat)) then
             call line_error(state, at, 'GAMMA_SAT = '//decimal_text(wmat%gamma_sat, 6)// &
-               ' is below the unit weight above the level GAMMA_UNSAT = '// &
-               decimal_text(wmat%gamma_unsat, 6)//': a saturated soil is not lighter', error)
+               ' is below the unit weight above the level, '// &
+               decimal_text(wmat%gamma_unsat, 6)//' (GAMMA or GAMMA_UNSAT): a saturated '// &
+               'soil is not lighter', error)
             return
          end if
          if (wmat%drainage == NON_POROUS) then
