@@ -31,6 +31,7 @@ contains
                new_unittest('undrained_then_drained', test_short_long), &
                new_unittest('footing_undrained_b', test_footing_b), &
                new_unittest('joint_effective_stress', test_joint), &
+               new_unittest('restart_keeps_excess', test_restart), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_water
 
@@ -483,5 +484,44 @@ contains
          close (u)
       end function line_of
    end subroutine test_bad_decks
+
+   !> The undrained oedometer loaded in 4 increments, stopped after 2 and restarted from its
+   !> results file, ends with the excess pore pressures and displacements of the
+   !> uninterrupted run (1e-12 of q and of the settlement: the same operations).
+   subroutine test_restart(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: whole, resumed
+      character(len=*), parameter :: deck = OUT//'oedo_restart.inp'
+      real(wp) :: dp, du
+      integer :: code, s
+      call make_directories(OUT)
+      call write_column(deck, 10, 10.0_wp, 5.0_wp, '*MATERIAL, NAME=clay, '// &
+         'DRAINAGE=UNDRAINED_A'//NL//'E = 1e4, NU = 0.3'//NL// &
+         '*SECTION, SET=low, MATERIAL=clay'//NL//'*SECTION, SET=high, MATERIAL=clay'//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
+         '*STEP, NAME=load, INCREMENTS=4'//NL//'q, 1.0')
+      code = run_deck(deck, OUT//'oedo_whole.h5', .true., model, whole)
+      call check(error, code == 0, 'undrained oedometer runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'oedo_part.h5', .true., model, resumed, stop_after=2)
+      call check(error, code == 4, 'stopped after increment 2 (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'oedo_resumed.h5', .true., model, resumed, &
+         restart=OUT//'oedo_part.h5')
+      call check(error, code == 0, 'restarted (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      du = maxval(abs(resumed%state%u - whole%state%u))
+      dp = 0.0_wp
+      do s = 1, 2
+         dp = max(dp, maxval(abs(resumed%state%sets(s)%pore%excess - &
+            whole%state%sets(s)%pore%excess)))
+      end do
+      call check_close(error, dp, 0.0_wp, 0.0_wp, 'restarted = uninterrupted: excess pore '// &
+         'pressures', atol=1.0e-12_wp*100.0_wp)
+      if (allocated(error)) return
+      call check_close(error, du, 0.0_wp, 0.0_wp, 'restarted = uninterrupted: displacements', &
+         atol=1.0e-12_wp*maxval(abs(whole%state%u)))
+   end subroutine test_restart
 
 end module test_water
