@@ -297,8 +297,8 @@ contains
    !> Smooth rigid strip footing on weightless UNDRAINED_B clay (c_u = 10, effective E, nu,
    !> K_w/n of nu_u = 0.495), 200 Q8R elements (test/data/water/footing_undrained_b.inp):
    !> the footing pressure reaches Prandtl's (2 + pi) c_u within 2 % (measured 51.859,
-   !> +0.86 %; T6 on the same mesh density +0.75 %, full Q8 +1.6 % and still rising) and
-   !> has levelled off (last 10 increments within 0.2 %).
+   !> +0.86 %; T6 on the same mesh density +0.75 %, full Q8 +1.6 %, the stiffening of
+   !> full integration) and has levelled off (last 10 increments within 0.2 %).
    subroutine test_footing_b(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
