@@ -32,6 +32,7 @@ contains
                new_unittest('footing_undrained_b', test_footing_b), &
                new_unittest('joint_effective_stress', test_joint), &
                new_unittest('restart_keeps_excess', test_restart), &
+               new_unittest('flooded_pit', test_flooded_pit), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_water
 
@@ -529,5 +530,53 @@ contains
       call check_close(error, du, 0.0_wp, 0.0_wp, 'restarted = uninterrupted: displacements', &
          atol=1.0e-12_wp*maxval(abs(whole%state%u)))
    end subroutine test_restart
+
+   !> A saturated K0 column (gamma_sat = 20, level at the surface y = 10, K0 = 0.5, elastic
+   !> E = 3e4, nu = 0.25) dug to y = 7 with the pit kept flooded to y = 10: the water on the
+   !> pit floor (gamma_w 3 = 30) replaces the 60 of the soil removed, so the effective
+   !> stresses below fall uniformly by 30 (oedometric unloading, which Q4 elements represent
+   !> exactly): sigma'_v = 10 (7 - y), sigma'_h = 5 (10 - y) - nu/(1 - nu) 30, and the floor
+   !> heaves 30 y / M. To 1e-10 of the stress scale (round-off of the solves).
+   subroutine test_flooded_pit(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: E = 3.0e4_wp, NU = 0.25_wp
+      real(wp) :: xg(2, 4), worst_s, worst_u, m, sv, sh
+      integer :: code, el, g, n
+      call make_directories(OUT)
+      call write_column(OUT//'pit.inp', 20, 10.0_wp, 7.0_wp, '*MATERIAL, NAME=soil'//NL// &
+         'E = 3e4, NU = 0.25, GAMMA = 20, GAMMA_SAT = 20'//NL// &
+         '*SECTION, SET=low, MATERIAL=soil'//NL//'*SECTION, SET=high, MATERIAL=soil'//NL// &
+         '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=10'//NL//'*INITIAL_STRESS, TYPE=GEOSTATIC'// &
+         NL//'ALL, 10.0, 0.5'//NL//'*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'//NL// &
+         '*STEP, NAME=dig, INCREMENTS=1'//NL//'*DEACTIVATE'//NL//'high'//NL//'*END STEP')
+      code = run_deck(OUT//'pit.inp', OUT//'pit.h5', .true., model, problem)
+      call check(error, code == 0, 'flooded pit runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      m = E*(1.0_wp - NU)/((1.0_wp + NU)*(1.0_wp - 2.0_wp*NU))
+      worst_s = 0.0_wp
+      associate (set => model%mesh%esets(1), st => problem%state%sets(1))
+         do el = 1, size(set%conn, 2)
+            call massif_gauss_coordinates(problem%system%rules(1), &
+               model%mesh%x(:, set%conn(:, el)), xg)
+            do g = 1, 4
+               sv = 10.0_wp*(7.0_wp - xg(2, g))
+               sh = 5.0_wp*(10.0_wp - xg(2, g)) - NU/(1.0_wp - NU)*30.0_wp
+               worst_s = max(worst_s, abs(st%stress(2, g, el) + sv), &
+                  abs(st%stress(1, g, el) + sh))
+            end do
+         end do
+      end associate
+      worst_u = 0.0_wp
+      do n = 1, 30
+         worst_u = max(worst_u, abs(problem%state%u(2, n) - 30.0_wp*model%mesh%x(2, n)/m))
+      end do
+      call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma' below the flooded pit", &
+         atol=1.0e-10_wp*200.0_wp)
+      if (allocated(error)) return
+      call check_close(error, worst_u, 0.0_wp, 0.0_wp, 'heave 30 y / M', &
+         atol=1.0e-10_wp*30.0_wp*7.0_wp/m)
+   end subroutine test_flooded_pit
 
 end module test_water
