@@ -30,6 +30,7 @@ contains
                new_unittest('undrained_mc_compression', test_compression), &
                new_unittest('undrained_then_drained', test_short_long), &
                new_unittest('footing_undrained_b', test_footing_b), &
+               new_unittest('undrained_b_cu_depth', test_cu_depth), &
                new_unittest('joint_effective_stress', test_joint), &
                new_unittest('restart_keeps_excess', test_restart), &
                new_unittest('flooded_pit', test_flooded_pit), &
@@ -578,5 +579,42 @@ contains
       call check_close(error, worst_u, 0.0_wp, 0.0_wp, 'heave 30 y / M', &
          atol=1.0e-10_wp*30.0_wp*7.0_wp/m)
    end subroutine test_flooded_pit
+
+   !> UNDRAINED_B with c_u rising with depth, c_u(y) = 10 + 4 (1 - y) below y = 1: one Q4
+   !> element (0 <= y <= 1) from an isotropic effective stress of 100 compressed 2 % in plane
+   !> strain (far beyond the yield strain c_u / G ~ 0.3 %): every Gauss point ends on its own
+   !> Tresca surface, t = (sigma'_1 - sigma'_3) / 2 = c_u(y_g), to 1e-8 of c_u (the return
+   !> map lands on the surface to round-off).
+   subroutine test_cu_depth(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp) :: xg(2, 4), sig(4), t, worst
+      integer :: code, u, g
+      call make_directories(OUT)
+      open (newunit=u, file=OUT//'cu_depth.inp', status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'c_u rising with depth', '*NODES', '1, 0, 0', '2, 1, 0', &
+         '3, 1, 1', '4, 0, 1', '*ELEMENTS, TYPE=Q4, SET=soil', '1, 1, 2, 3, 4', &
+         '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_B', &
+         'E = 1e4, NU = 0.3, CU = 10, CU_INC = 4, CU_YREF = 1', &
+         '*SECTION, SET=soil, MATERIAL=clay', '*NSET, NAME=top', '3, 4', '*BOUNDARY', &
+         '1, XY', '2, Y', '4, X', '*INITIAL_STRESS, TYPE=HOMOGENEOUS', &
+         'ALL, -100, -100, -100, 0', '*LOAD, NAME=push, TYPE=DISPLACEMENT', &
+         'top, Y, -0.02', '*STEP, NAME=push, INCREMENTS=20', 'push, 1.0'
+      close (u)
+      code = run_deck(OUT//'cu_depth.inp', OUT//'cu_depth.h5', .true., model, problem)
+      call check(error, code == 0, 'UNDRAINED_B with CU_INC runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call massif_gauss_coordinates(problem%system%rules(1), &
+         model%mesh%x(:, model%mesh%esets(1)%conn(:, 1)), xg)
+      worst = 0.0_wp
+      do g = 1, 4
+         sig = problem%state%sets(1)%stress(:, g, 1)
+         t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
+         worst = max(worst, abs(t - (10.0_wp + 4.0_wp*(1.0_wp - xg(2, g)))))
+      end do
+      call check_close(error, worst, 0.0_wp, 0.0_wp, 't = c_u(y) at every Gauss point', &
+         atol=1.0e-8_wp*10.0_wp)
+   end subroutine test_cu_depth
 
 end module test_water

@@ -11,7 +11,7 @@ module pecplas_fe_assembly
    use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_gauss_derivs
    use pecplas_massif_point_kernels, only: point_strain, point_force_add
    use pecplas_massif_element_matrices, only: massif_stiffness
-   use pecplas_massif_materials_type, only: NCOMP
+   use pecplas_massif_materials_type, only: NCOMP, material_t
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_fe_joint_assembly, only: add_joint_stiffness, add_joint_forces
@@ -345,8 +345,9 @@ contains
       real(wp) :: xe(2, MAX_NODES), ue(2*MAX_NODES), eps(NCOMP, GROUP), deps(NCOMP), t0
       real(wp) :: dpoint(NCOMP, NCOMP), dndx(2, MAX_NODES, GROUP), hr(MAX_NODES, GROUP)
       real(wp) :: dvol(GROUP), total(NCOMP), kwn
-      integer :: g, g0, g1, nn, k
-      logical :: clocked
+      class(material_t), allocatable :: pmat
+      integer :: g, g0, g1, nn, k, m
+      logical :: clocked, varies
       associate (conn => model%mesh%esets(s)%conn(:, e), &
                  mat => model%materials(set_material(model, s, st))%m)
          nn = rule%nnode
@@ -360,7 +361,12 @@ contains
          ! would cost more than the update itself
          clocked = timed .and. allocated(st%tangent)
          kwn = 0.0_wp
-         if (st%pore%on()) kwn = model%water%kwn(s, set_material(model, s, st))
+         varies = .false.
+         m = set_material(model, s, st)
+         if (st%pore%on()) then
+            kwn = model%water%kwn(s, m)
+            varies = model%water%mats(m)%cu_varies()
+         end if
          do g0 = 1, st%ngauss, GROUP
             g1 = min(g0 + GROUP - 1, st%ngauss)
             do g = g0, g1
@@ -375,7 +381,19 @@ contains
             do g = g0, g1
                deps = eps(:, g - g0 + 1) - st%strain(:, g, e)
                st%hist_trial(:, g, e) = st%hist(:, g, e)
-               if (allocated(st%tangent)) then
+               if (varies) then
+                  ! UNDRAINED_B with c_u rising with depth: the point's own strength
+                  call mat%with_cohesion(model%water%mats(m)%cu_at(dot_product( &
+                     xe(2, 1:nn), rule%n(1:nn, g))), pmat, error)
+                  if (allocated(error)) exit
+                  if (allocated(st%tangent)) then
+                     call pmat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                        st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
+                  else
+                     call pmat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                        st%stress_trial(:, g, e), dpoint, error)
+                  end if
+               else if (allocated(st%tangent)) then
                   call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
                      st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
                else

@@ -33,6 +33,8 @@ module pecplas_water_drainage
    contains
       procedure :: porous => water_material_porous
       procedure :: undrained => water_material_undrained
+      procedure :: cu_at => water_material_cu_at
+      procedure :: cu_varies => water_material_cu_varies
    end type water_material_t
 
 contains
@@ -59,5 +61,18 @@ contains
       kwn = max(3.0_wp*(NU_UNDRAINED - nu)/((1.0_wp - 2.0_wp*NU_UNDRAINED)*(1.0_wp + nu))*bulk, &
          0.0_wp)
    end function default_water_stiffness
+
+   !> UNDRAINED_B: the undrained shear strength at height y.
+   elemental real(wp) function water_material_cu_at(this, y) result(cu)
+      class(water_material_t), intent(in) :: this
+      real(wp), intent(in) :: y
+      cu = this%cu + this%cu_inc*max(this%cu_yref - y, 0.0_wp)
+   end function water_material_cu_at
+
+   !> True for UNDRAINED_B with c_u rising with depth.
+   elemental logical function water_material_cu_varies(this)
+      class(water_material_t), intent(in) :: this
+      water_material_cu_varies = this%drainage == UNDRAINED_B .and. this%cu_inc > 0.0_wp
+   end function water_material_cu_varies
 
 end module pecplas_water_drainage

@@ -27,8 +27,8 @@ module pecplas_io_deck_reader_water
    public :: resolve_water, WATER_PARAMS
 
    !> *MATERIAL parameters that belong to the water, not to the soil model.
-   character(len=*), parameter :: WATER_PARAMS(5) = [character(len=11) :: 'GAMMA_UNSAT', &
-      'GAMMA_SAT', 'KW_N', 'CU', 'CU_INC']
+   character(len=*), parameter :: WATER_PARAMS(6) = [character(len=11) :: 'GAMMA_UNSAT', &
+      'GAMMA_SAT', 'KW_N', 'CU', 'CU_INC', 'CU_YREF']
 
 contains
 
@@ -271,10 +271,25 @@ contains
             return
          end if
       end if
-      if (params%has('CU_INC')) then
-         call line_error(state, at, 'CU_INC (c_u rising with depth) is not available yet: '// &
-            'give one c_u per layer', error)
-         return
+      if (params%has('CU_INC') .or. params%has('CU_YREF')) then
+         if (wmat%drainage /= UNDRAINED_B) then
+            call line_error(state, at, 'CU_INC and CU_YREF (c_u rising with depth) are for '// &
+               'DRAINAGE=UNDRAINED_B', error)
+            return
+         end if
+         if (.not. (params%has('CU_INC') .and. params%has('CU_YREF'))) then
+            call line_error(state, at, 'c_u rising with depth needs both CU_INC (its rise '// &
+               'per unit depth) and CU_YREF (the level where c_u = CU)', error)
+            return
+         end if
+         call params%get('CU_INC', wmat%cu_inc, error)
+         if (allocated(error)) return
+         call params%get('CU_YREF', wmat%cu_yref, error)
+         if (allocated(error)) return
+         if (.not. (wmat%cu_inc >= 0.0_wp)) then
+            call line_error(state, at, 'CU_INC must not be negative', error)
+            return
+         end if
       end if
       if (wmat%drainage == UNDRAINED_B) then
          if (upper(mtype) == 'ELASTIC') then
