@@ -13,6 +13,8 @@ module test_water
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_base_strings, only: itoa
    use pecplas_io_results_reader, only: results_reader_t
+   use pecplas_io_results_increment, only: plate_fields_t
+   use pecplas_fe_plate_output, only: plate_results
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -34,6 +36,7 @@ contains
                new_unittest('joint_effective_stress', test_joint), &
                new_unittest('restart_keeps_excess', test_restart), &
                new_unittest('flooded_pit', test_flooded_pit), &
+               new_unittest('water_on_a_wall', test_wall), &
                new_unittest('bad_decks', test_bad_decks)]
    end subroutine collect_water
 
@@ -616,5 +619,43 @@ contains
       call check_close(error, worst, 0.0_wp, 0.0_wp, 't = c_u(y) at every Gauss point', &
          atol=1.0e-8_wp*10.0_wp)
    end subroutine test_cu_depth
+
+   !> A plate wall (x = 0, 0 <= y <= 10, ten 2-node elements, clamped at its base) with water
+   !> on its left to the level y = 6 (*PLATE_WATER), released by a nil step: the shear at
+   !> the base is the water's resultant gamma_w h^2 / 2 = 180 and the moment gamma_w h^3 / 6
+   !> = 360 per unit length (1e-8: the consistent loads of the linear pressure are exact, the
+   !> level on a node, and the cantilever is statically determinate).
+   subroutine test_wall(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(plate_fields_t) :: f
+      integer :: code, u, i
+      call make_directories(OUT)
+      open (newunit=u, file=OUT//'wall.inp', status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'water on a wall', '*UNITS', 'kN, m, kPa', '*NODES'
+      do i = 0, 10
+         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
+      end do
+      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
+         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
+         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
+         '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
+      close (u)
+      code = run_deck(OUT//'wall.inp', OUT//'wall.h5', .true., model, problem)
+      call check(error, code == 0, 'wall in water runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call plate_results(model, problem%state%u, problem%state%plates, problem%state%factors, &
+         1, f, error, level=1)
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(2, 1)), 180.0_wp, 1.0e-8_wp, &
+         'base shear = gamma_w h^2 / 2')
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(3, 1)), 360.0_wp, 1.0e-8_wp, &
+         'base moment = gamma_w h^3 / 6')
+      if (allocated(error)) return
+      call check(error, problem%state%u(1, 11) > 0.0_wp, 'the water on the left pushes the '// &
+         'wall to the right (+x)')
+   end subroutine test_wall
 
 end module test_water

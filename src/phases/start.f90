@@ -47,7 +47,7 @@ module pecplas_phases_start
    use pecplas_joints_laws_type, only: MODE_STICK, MODE_OPEN
    use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
    use pecplas_fe_pore, only: set_steady_pressures, reset_excess
-   use pecplas_fe_water_faces, only: add_water_faces
+   use pecplas_fe_water_faces, only: add_water_faces, add_plate_water
    use pecplas_base_strings, only: decimal_text
    implicit none (type, external)
    private
@@ -366,7 +366,7 @@ contains
       logical, intent(in) :: eactive(:)
       integer, intent(in) :: level
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: jon(:)
+      logical, allocatable :: jon(:), pon(:)
       integer :: s
       problem%system%initial_force = 0.0_wp
       do s = 1, size(eactive)
@@ -380,11 +380,14 @@ contains
                problem%phase%homogeneous(:, :, problem%phase%hold(s))
          end if
       end do
-      ! the water standing on the free faces (a model with a phreatic level)
+      ! the water standing on the free faces and on the plates *PLATE_WATER names
       if (model%water%used() .and. level > 0) then
-         allocate (jon(0))
+         allocate (jon(0), pon(0))
          if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
          call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error)
+         if (allocated(error)) return
+         if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
+         call add_plate_water(model, pon, level, problem%system%initial_force)
       end if
    end subroutine held_load
 

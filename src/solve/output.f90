@@ -95,8 +95,15 @@ contains
       if (size(model%plates) == 0) return
       allocate (r%plate_fields(size(model%plates)))
       do s = 1, size(model%plates)
-         call plate_results(model, problem%state%u, problem%state%plates, &
-            problem%state%factors, s, r%plate_fields(s), error)
+         if (model%water%used()) then
+            ! the water's pressure on the plate is one of its own loads (groundwater)
+            call plate_results(model, problem%state%u, problem%state%plates, &
+               problem%state%factors, s, r%plate_fields(s), error, &
+               model%water%level_at(max(problem%phase%index, 1)))
+         else
+            call plate_results(model, problem%state%u, problem%state%plates, &
+               problem%state%factors, s, r%plate_fields(s), error)
+         end if
          if (allocated(error)) return
          associate (f => r%plate_fields(s))
             allocate (f%moment_reaction(size(f%node_index)))

@@ -24,6 +24,9 @@ module pecplas_water_type
       !> its start sets the excess pore pressures to zero (*CHANGE_WATER).
       integer, allocatable :: step_level(:)
       logical, allocatable :: step_reset(:)
+      !> Per plate set (model%plates): the side the water stands on (*PLATE_WATER):
+      !> +1 left, -1 right of the plate walked from its first node to its last, 0 none.
+      integer, allocatable :: plate_side(:)
    contains
       procedure :: used => water_used
       procedure :: level_at => water_level_at

@@ -25,6 +25,8 @@ module pecplas_io_deck_raw_water
       integer, allocatable :: level_at(:)
       type(raw_name_t), allocatable :: dry(:)
       type(raw_water_change_t), allocatable :: changes(:)
+      !> *PLATE_WATER: plate set names and the side ('LEFT' or 'RIGHT', upper case).
+      type(raw_name_t), allocatable :: plate(:), plate_side(:)
    end type raw_water_t
 
 end module pecplas_io_deck_raw_water

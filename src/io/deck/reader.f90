@@ -28,7 +28,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
    use pecplas_io_deck_reader_water, only: read_water, read_dry, read_change_water, &
-      resolve_water
+      resolve_water, read_plate_water
    use pecplas_io_deck_reader_anchors, only: read_anchor, resolve_anchors
    use pecplas_io_deck_reader_plates, only: read_plate, resolve_plates, extend_rotations
    implicit none (type, external)
@@ -37,12 +37,12 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(31) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(32) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
       '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PLATE', '*ANCHOR', '*PRESTRESS', '*WATER', '*DRY', &
-      '*CHANGE_WATER']
+      '*CHANGE_WATER', '*PLATE_WATER']
 
 contains
 
@@ -206,6 +206,8 @@ contains
          call read_dry(state, block, error)
       case ('*CHANGE_WATER')
          call read_change_water(state, block, error)
+      case ('*PLATE_WATER')
+         call read_plate_water(state, block, error)
       case ('*ANCHOR')
          call read_anchor(state, block, error)
       case ('*PLATE')

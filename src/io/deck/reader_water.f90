@@ -24,6 +24,7 @@ module pecplas_io_deck_reader_water
    private
 
    public :: read_water, read_dry, read_change_water, material_water, finish_material_water
+   public :: read_plate_water
    public :: resolve_water, WATER_PARAMS
 
    !> *MATERIAL parameters that belong to the water, not to the soil model.
@@ -148,6 +149,42 @@ contains
          end do
       end do
    end subroutine read_dry
+
+   !> *PLATE_WATER: data lines `plate_set, LEFT|RIGHT`: the water stands on that side of the
+   !> plate (walked from its first node to its last) and presses on it below the level.
+   subroutine read_plate_water(state, block, error)
+      type(deck_state_t), intent(inout) :: state
+      type(deck_block_t), intent(in) :: block
+      type(error_t), allocatable, intent(out) :: error
+      type(field_t), allocatable :: f(:)
+      type(raw_name_t) :: item, side
+      integer :: i
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
+      if (allocated(error)) return
+      if (block%last < block%first) then
+         call line_error(state, block%at, '*PLATE_WATER needs data lines "plate_set, '// &
+            'LEFT|RIGHT"', error)
+         return
+      end if
+      if (.not. allocated(state%water%plate)) allocate (state%water%plate(0), &
+         state%water%plate_side(0))
+      do i = block%first, block%last
+         call split_fields(state%lines%text(i), f)
+         call check_count(state%lines%get(i), f, 2, 2, 'plate_set, LEFT|RIGHT', error)
+         if (allocated(error)) return
+         if (upper(f(2)%s) /= 'LEFT' .and. upper(f(2)%s) /= 'RIGHT') then
+            call line_error(state, i, "side '"//f(2)%s//"': expected LEFT or RIGHT (of the "// &
+               'plate walked from its first node to its last)', error)
+            return
+         end if
+         item%name = f(1)%s
+         item%at = i
+         side%name = upper(f(2)%s)
+         side%at = i
+         state%water%plate = [state%water%plate, item]
+         state%water%plate_side = [state%water%plate_side, side]
+      end do
+   end subroutine read_plate_water
 
    !> *CHANGE_WATER [, LEVEL=name|NONE] [, RESET_EXCESS=YES|NO] inside a step.
    subroutine read_change_water(state, block, error)
@@ -375,6 +412,26 @@ contains
                return
             end if
             model%water%dry(parts) = .true.
+         end do
+      end if
+      k = 0
+      if (allocated(model%plates)) k = size(model%plates)
+      allocate (model%water%plate_side(k), source=0)
+      if (allocated(state%water%plate)) then
+         do i = 1, size(state%water%plate)
+            k = 0
+            list = ''
+            do i2 = 1, size(model%water%plate_side)
+               if (same_name(model%plates(i2)%name, state%water%plate(i)%name)) k = i2
+               call add_name(list, model%plates(i2)%name)
+            end do
+            if (k == 0) then
+               if (len(list) == 0) list = ' (none)'
+               call line_error(state, state%water%plate(i)%at, "undefined plate set '"// &
+                  state%water%plate(i)%name//"'; known plate sets (*PLATE):"//list, error)
+               return
+            end if
+            model%water%plate_side(k) = merge(1, -1, state%water%plate_side(i)%name == 'LEFT')
          end do
       end if
       if (allocated(state%water%changes)) then
