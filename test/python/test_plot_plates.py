@@ -57,3 +57,15 @@ def test_cli_writes_the_png(cantilever, tmp_path):
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stdout + run.stderr
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_xdmf_shows_the_plate_where_it_is_active(cantilever):
+    """The sidecar: a plates_beam grid (polylines, cell N, Q, M) in the 3 increments of the
+    phases with the plate (2 and 3: installed, then 2 load increments), none in phase 1."""
+    import xml.etree.ElementTree as ET
+    root = ET.parse(cantilever.with_suffix(".xmf")).getroot()
+    steps = [g for g in root.iter("Grid") if g.get("CollectionType") == "Spatial"]
+    names = [[c.get("Name") for c in step.findall("Grid")] for step in steps]
+    assert [("plates_beam" in n) for n in names] == [False, True, True, True]
+    grid = next(c for c in steps[-1].findall("Grid") if c.get("Name") == "plates_beam")
+    assert {a.get("Name") for a in grid.findall("Attribute")} == {"displacement", "N", "Q", "M"}
