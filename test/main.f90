@@ -8,6 +8,7 @@ program tester
    use test_s1, only: collect_s1
    use test_initial, only: collect_initial
    use test_phases, only: collect_phases
+   use test_water, only: collect_water
    use test_anchors, only: collect_anchors
    use test_joint_faces, only: collect_joint_faces
    use test_phases_switch, only: collect_phases_switch
@@ -92,6 +93,7 @@ program tester
    suites = [suites, new_testsuite('s1', collect_s1)]
    suites = [suites, new_testsuite('initial', collect_initial)]
    suites = [suites, new_testsuite('phases', collect_phases)]
+   suites = [suites, new_testsuite('water', collect_water)]
    suites = [suites, new_testsuite('anchors', collect_anchors)]
    suites = [suites, new_testsuite('joint_faces', collect_joint_faces)]
    suites = [suites, new_testsuite('phases_switch', collect_phases_switch)]
