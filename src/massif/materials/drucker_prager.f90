@@ -28,6 +28,7 @@ module pecplas_massif_materials_drucker_prager
       procedure :: state_names => drucker_prager_state_names
       procedure :: elastic_tangent => drucker_prager_elastic_tangent
       procedure :: update => drucker_prager_update
+      procedure :: with_cohesion => drucker_prager_with_cohesion
       procedure :: symmetric_tangent => drucker_prager_symmetric_tangent
       !> Yield function at a stress vector (<= 0 admissible; stress units).
       procedure :: yield => drucker_prager_yield
@@ -192,5 +193,18 @@ contains
          call drucker_prager_constants(r%match, r%soil%phi, r%soil%psi, r%eta, r%xi, r%etabar)
       end select
    end subroutine drucker_prager_reduced_strength
+
+   !> A copy with the cohesion c (the soil's other parameters kept).
+   subroutine drucker_prager_with_cohesion(this, cohesion, copy, error)
+      class(drucker_prager_t), intent(in) :: this
+      real(wp), intent(in) :: cohesion
+      class(material_t), allocatable, intent(out) :: copy
+      type(error_t), allocatable, intent(out) :: error
+      allocate (copy, source=this)
+      select type (copy)
+      class is (drucker_prager_t)
+         copy%soil%cohesion = cohesion
+      end select
+   end subroutine drucker_prager_with_cohesion
 
 end module pecplas_massif_materials_drucker_prager
