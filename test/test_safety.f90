@@ -6,7 +6,9 @@
 !>   cohesionless tan(phi) / tan(beta) within 2 %; with cohesion the closed form at the base
 !>   (c + gamma z cos^2(beta) tan(phi)) / (gamma z sin(beta) cos(beta)), z = H / cos(beta) the
 !>   vertical depth of the base under a layer H thick, within 3 %; with psi = 0 Davis's
-!>   strength in simple shear, tan(phi) / tan(asin(tan(beta))), within 2 %;
+!>   strength in simple shear, tan(phi) / tan(asin(tan(beta))), within 2 %; under a water
+!>   table parallel to it (seepage parallel to the slope) the closed form with
+!>   (gamma - m gamma_w) within 3 %;
 !> - Prandtl's footing on weightless Tresca soil under a pressure q (Mohr-Coulomb and
 !>   Drucker-Prager): Msf = (2 + pi) c / q within 2 % (the collapse pressure is proportional
 !>   to c);
@@ -53,6 +55,7 @@ contains
                new_unittest('infinite_slope_dry', test_infinite_dry), &
                new_unittest('infinite_slope_cohesion', test_infinite_c), &
                new_unittest('infinite_slope_non_associated', test_infinite_psi0), &
+               new_unittest('infinite_slope_water', test_infinite_water), &
                new_unittest('prandtl_footing', test_footing), &
                new_unittest('prandtl_footing_drucker_prager', test_footing_dp), &
                new_unittest('taylor_undrained_slope', test_taylor), &
@@ -211,6 +214,26 @@ contains
       call report('safety/infinite_slope_c', [f, fc])
       call check_close(error, f, fc, 0.03_wp, 'infinite slope with cohesion: closed form')
    end subroutine test_infinite_c
+
+   !> The slope of test_infinite_c under a water table parallel to it at half its thickness
+   !> (m = 0.5), seepage parallel to the slope (doc/deck.md Groundwater: a horizontal level
+   !> with GAMMA_W = gamma_w cos(beta) in the column turned horizontal, the K0 procedure with
+   !> the normal weight, then the weight along the slope as a body force): the closed form
+   !> (c' + (gamma - m gamma_w) z cos^2 tan(phi')) / (gamma z sin cos), z = H / cos(beta),
+   !> gamma_w = 10: 1.1652. 3 %: the lowest Gauss points lie 0.053 above the base (20
+   !> elements: +1.2 %; 10 and 40 elements give +2.4 % and +0.5 %).
+   subroutine test_infinite_water(error)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: f, b, p, z, fc
+      call run_factor('infinite_slope_water', f, error)
+      if (allocated(error)) return
+      b = 25.0_wp*DEG
+      p = 30.0_wp*DEG
+      z = 5.0_wp/cos(b)
+      fc = (10.0_wp + (20.0_wp - 0.5_wp*10.0_wp)*z*cos(b)**2*tan(p))/(20.0_wp*z*sin(b)*cos(b))
+      call report('safety/infinite_slope_water', [f, fc])
+      call check_close(error, f, fc, 0.03_wp, 'infinite slope with a water table: closed form')
+   end subroutine test_infinite_water
 
    !> Weightless Tresca soil, c = 10, flexible strip of half-width 1 under q = 25: the
    !> collapse pressure is proportional to c, so Msf = (2 + pi) c / q = 2.0566 exactly in

@@ -242,6 +242,14 @@ contains
          call model%laws(k)%law%reduced_strength(msf, l)
          call move_alloc(l, work%laws(k)%law)
       end do
+      ! UNDRAINED_B with c_u rising with depth: the profile is the strength of its points
+      if (.not. allocated(model%water%mats)) return
+      do k = 1, min(size(plan%materials), size(model%water%mats))
+         if (.not. plan%materials(k)) cycle
+         if (.not. model%water%mats(k)%cu_varies()) cycle
+         work%water%mats(k)%cu = model%water%mats(k)%cu/msf
+         work%water%mats(k)%cu_inc = model%water%mats(k)%cu_inc/msf
+      end do
    end subroutine reduce_model
 
    !> 'name, name' of the materials and laws the plan reduces, and of the others ('none').

@@ -131,9 +131,9 @@ contains
       ! phase changes name joint sets too
       call resolve_phases(state, model, error)
       if (allocated(error)) return
-      call resolve_safety(state, model, error)
-      if (allocated(error)) return
       call resolve_water(state, model, error)
+      if (allocated(error)) return
+      call resolve_safety(state, model, error)
       if (allocated(error)) return
       call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return

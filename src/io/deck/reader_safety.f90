@@ -68,7 +68,7 @@ contains
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
       character(len=:), allocatable :: msg
-      integer :: s, nm, nl
+      integer :: s, nm, nl, i
       nm = size(model%materials)
       nl = 0
       if (allocated(model%laws)) nl = size(model%laws)
@@ -100,6 +100,15 @@ contains
                      'before it', error)
                   return
                end if
+            end if
+            if (allocated(state%water%changes)) then
+               do i = 1, size(state%water%changes)
+                  if (state%water%changes(i)%step /= s) cycle
+                  call line_error(state, state%water%changes(i)%at, "safety step '"// &
+                     raw%name//"' changes nothing but strengths: put *CHANGE_WATER in a "// &
+                     'step before it', error)
+                  return
+               end do
             end if
             if (raw%reset_displacements) then
                call line_error(state, raw%at, 'RESET_DISPLACEMENTS is no option of a safety '// &

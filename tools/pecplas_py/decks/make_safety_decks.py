@@ -108,6 +108,45 @@ def infinite_slope(path, beta, phi, psi, c, gamma=20.0, height=5.0, nel=10, nu=0
         f.write('\n'.join(lines) + '\n')
 
 
+def infinite_slope_water(path, beta, phi, psi, c, level, gamma=20.0, gamma_w=10.0,
+                         height=5.0, nel=20, nu=0.4, title=''):
+    """The infinite slope of `infinite_slope` under a water table parallel to it, `level`
+    above the base (normal to the slope), with seepage parallel to the slope: turned
+    horizontal, the pore pressure grows by gamma_w cos(beta) per unit depth normal to the
+    slope below the table (the head falls along the slope), so the level is a horizontal
+    *WATER with GAMMA_W = gamma_w cos(beta). The K0 procedure with the normal weight
+    gamma cos(beta) (GAMMA_SAT = GAMMA_UNSAT) gives the effective stresses, then a BODY_FORCE
+    gamma sin(beta) along the slope the shear."""
+    b = math.radians(beta)
+    gn = gamma * math.cos(b)
+    lines = ['** ' + title, '*TITLE', title, '*NODES']
+    dy = height / nel
+    for i in range(nel + 1):
+        lines.append(f'{2 * i + 1}, 0.0, {i * dy:.12g}')
+        lines.append(f'{2 * i + 2}, 1.0, {i * dy:.12g}')
+    lines.append('*ELEMENTS, TYPE=Q4, SET=soil')
+    for i in range(1, nel + 1):
+        lines.append(f'{i}, {2 * i - 1}, {2 * i}, {2 * i + 2}, {2 * i + 1}')
+    lines += ['*MATERIAL, NAME=soil, TYPE=MOHR_COULOMB',
+              f'E = 1e5, NU = {nu}, GAMMA_UNSAT = {gn:.15g}, GAMMA_SAT = {gn:.15g}',
+              f'C = {c}, PHI = {phi}, PSI = {psi}',
+              '*SECTION, SET=soil, MATERIAL=soil',
+              f'*WATER, NAME=table, GAMMA_W={gamma_w * math.cos(b):.15g}, LEVEL={level:g}',
+              '*INTERFACE_LAW, NAME=tie, TYPE=KATONA',
+              'MU = 0, C = 1e12, TENSION = 1e12',
+              '*JOINTS, TYPE=SPRING, SET=tie, LAW=tie, ANGLE=0']
+    for i in range(nel + 1):
+        lines.append(f'{1000 + i}, {2 * i + 1}, {2 * i + 2}')
+    lines += ['*NSET, NAME=base', '1, 2', '*BOUNDARY', 'base, XY',
+              '*INITIAL_STRESS, TYPE=GEOSTATIC', f'ALL, {height:g}, {nu / (1 - nu):.15g}',
+              '*LOAD, NAME=along, TYPE=BODY_FORCE', f'soil, {gamma * math.sin(b):.15g}, 0',
+              '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-8',
+              '*STEP, NAME=k0', '*STEP, NAME=incline, INCREMENTS=2', 'along, 1',
+              f'*STEP, NAME=safety, CONTROL=SAFETY, RESOLUTION=0.002, NODE={2 * nel + 1}, DOF=X']
+    with open(path, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
 def footing(path, q, safety=True, dp=False):
     """The Prandtl footing of ../plasticity/footing_t6.inp (196 T6, Tresca c = 10, weightless)
     loaded by a uniform pressure q on the half-width b = 1 (a flexible smooth footing), then
@@ -315,6 +354,9 @@ def main(argv=None):
                        title='infinite slope beta 20, phi 35, psi 0, c 0: sin(phi_r) = tan(beta)')
         infinite_slope('infinite_slope_c.inp', 25, 30, 30, 10,
                        title='infinite slope beta 25, phi 30 (associated), c 10, H 5')
+        infinite_slope_water('infinite_slope_water.inp', 25, 30, 30, 10, 2.5,
+                             title="infinite slope beta 25, phi' 30 (associated), c' 10, 5 "
+                             'thick, water table parallel to it 2.5 above the base')
         footing('footing_safety.inp', 25.0)
         footing('footing_safety_dp.inp', 25.0, dp=True)
         taylor_slope('taylor_slope.inp')

@@ -159,6 +159,9 @@ SAFETY_ROWS = [
     ("infinite_slope_psi0", "the same, ψ = 0", "tan φ / tan(asin(tan β)) (Davis)", "2 %"),
     ("infinite_slope_c", "infinite slope β = 25°, φ = ψ = 30°, c = 10, 5 thick (z = 5 / cos β)",
      "(c + γz cos²β tan φ) / (γz sin β cos β)", "3 %"),
+    ("infinite_slope_water", "the same under a water table parallel to it at half its thickness "
+     "(m = 0.5), seepage parallel", "(c' + (γ − m γ_w) z cos²β tan φ') / (γz sin β cos β)",
+     "3 %"),
     ("footing", "Prandtl footing, Tresca c = 10, q = 25 (196 T6)", "(2 + π) c / q", "2 %"),
     ("footing_dp", "the same, Drucker–Prager `MATCH = 3`", "(2 + π) c / q", "2 %"),
     ("taylor", "undrained slope β = 60°, H = 10, c = 50, γ = 20, D = 1 (128 Q8R)",
