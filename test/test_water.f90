@@ -37,7 +37,8 @@ contains
                new_unittest('restart_keeps_excess', test_restart), &
                new_unittest('flooded_pit', test_flooded_pit), &
                new_unittest('water_on_a_wall', test_wall), &
-               new_unittest('bad_decks', test_bad_decks)]
+               new_unittest('bad_decks', test_bad_decks), &
+               new_unittest('gravity_column', test_gravity_column)]
    end subroutine collect_water
 
    !> A column of nel Q4 elements (width 1, height h, base y = 0, sides on rollers): the
@@ -657,5 +658,120 @@ contains
       call check(error, problem%state%u(1, 11) > 0.0_wp, 'the water on the left pushes the '// &
          'wall to the right (+x)')
    end subroutine test_wall
+
+   !> Gravity loading (a GRAVITY pattern, no *INITIAL_STRESS) of the layered wet column of
+   !> hydrostatic_column (sand over clay at y = 4, surface y = 10, 20 Q4), four increments:
+   !> the pore pressures' forces and the water on the faces come in with the weight
+   !> (doc/theory.md, Groundwater), so at increment i of n every Gauss point has sigma'_v =
+   !> (i/n) times the closed form of the effective weights, p = gamma_w (h - y)+ (the steady
+   !> pore pressure, reported at its full value), and the vertical base reaction plus the
+   !> water's push on the base is (i/n) times the column's total weight (gamma_sat below the
+   !> level, the water standing on the ground included). A Q4 column has u_y linear in each
+   !> element, so its sigma'_v is constant per element: the closed form at the element's
+   !> middle (the average of the linear sigma'_v over the element, exact since the nodal
+   !> displacements of a 1D bar of linear elements under consistent loads are exact, the
+   !> level and the layer boundary on element edges); in a drained Mohr-Coulomb soil that
+   !> yields (sand: phi = 20, c = 1, Ka = 0.49 > K0 = 1/3) the vertical equilibrium gives the
+   !> same sigma'_v (both Gauss rows of an element follow the same strain path). Tolerance
+   !> 1e-10 of gamma_sat H: the solve's round-off for 20 elements (condition ~ nel^2) and
+   !> the Newton tolerance 1e-12 of the plastic runs.
+   subroutine test_gravity_column(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(results_reader_t) :: rd
+      real(wp), parameter :: GW = 10.0_wp, HS = 10.0_wp, HC = 4.0_wp
+      real(wp), parameter :: GSU = 17.0_wp, GSS = 20.0_wp, GCS = 21.0_wp
+      integer, parameter :: NINC = 4
+      real(wp), allocatable :: sig(:, :, :), reac(:, :), pst(:, :)
+      real(wp) :: level, xg(2, 4), p, sv, q, worst_p, worst_s, scale, ym, weight, base, lam
+      integer :: code, s, el, g, v, i
+      character(len=:), allocatable :: body, name
+      character(len=64) :: path
+      character(len=32) :: buf
+      call make_directories(OUT)
+      do v = 1, 3
+         level = merge(12.0_wp, 7.0_wp, v == 2)
+         q = GSU*max(HS - level, 0.0_wp) + (GSS - GW)*(min(level, HS) - HC)
+         weight = GSU*max(HS - level, 0.0_wp) + GSS*(min(level, HS) - HC) + GCS*HC + &
+            GW*max(level - HS, 0.0_wp)
+         write (buf, '(es23.16)') level
+         if (v == 3) then
+            body = '*MATERIAL, NAME=sand, TYPE=MOHR_COULOMB'//NL//'E = 3e4, NU = 0.25, '// &
+               'C = 1, PHI = 20, PSI = 0, GAMMA_UNSAT = 17, GAMMA_SAT = 20'//NL// &
+               '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB'//NL// &
+               'E = 1e4, NU = 0.3, C = 2, PHI = 15, PSI = 0, GAMMA = 18, GAMMA_SAT = 21'
+         else
+            body = '*MATERIAL, NAME=sand'//NL//'E = 3e4, NU = 0.25, GAMMA_UNSAT = 17, '// &
+               'GAMMA_SAT = 20'//NL//'*MATERIAL, NAME=clay'//NL// &
+               'E = 1e4, NU = 0.3, GAMMA = 18, GAMMA_SAT = 21'
+         end if
+         body = body//NL//'*SECTION, SET=high, MATERIAL=sand'//NL// &
+            '*SECTION, SET=low, MATERIAL=clay'//NL// &
+            '*WATER, NAME=gwt, GAMMA_W=10, LEVEL='//trim(adjustl(buf))//NL// &
+            '*LOAD, NAME=weight, TYPE=GRAVITY'//NL//'ALL'//NL// &
+            '*SOLVER, TOLERANCE=1e-12'//NL// &
+            '*STEP, NAME=gravity, INCREMENTS='//itoa(NINC)//NL//'weight, 1'//NL//'*END STEP'
+         name = OUT//'gravity'//itoa(v)
+         call write_column(name//'.inp', 20, HS, HC, body)
+         code = run_deck(name//'.inp', name//'.h5', .true., model, problem)
+         call check(error, code == 0, 'gravity column runs (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         scale = GSS*HS
+         call rd%open(name//'.h5', error)
+         if (allocated(error)) return
+         do i = 1, NINC
+            lam = real(i, wp)/NINC
+            worst_p = 0.0_wp
+            worst_s = 0.0_wp
+            do s = 1, 2
+               associate (set => model%mesh%esets(s))
+                  write (path, '(a,i6.6,a)') '/increments/', i, '/sets/'//trim(set%name)// &
+                     '/stress'
+                  call rd%dataset(trim(path), sig, error)
+                  if (allocated(error)) return
+                  write (path, '(a,i6.6,a)') '/increments/', i, '/sets/'//trim(set%name)// &
+                     '/pore_steady'
+                  call rd%dataset(trim(path), pst, error)
+                  if (allocated(error)) return
+                  do el = 1, size(set%conn, 2)
+                     call massif_gauss_coordinates(problem%system%rules(s), &
+                        model%mesh%x(:, set%conn(:, el)), xg)
+                     ym = 0.5_wp*(minval(xg(2, :)) + maxval(xg(2, :)))
+                     if (set%name == 'high') then
+                        sv = GSU*max(HS - max(ym, level), 0.0_wp) + (GSS - GW)* &
+                           max(min(level, HS) - ym, 0.0_wp)
+                     else
+                        sv = q + (GCS - GW)*(HC - ym)
+                     end if
+                     do g = 1, 4
+                        p = GW*max(level - xg(2, g), 0.0_wp)
+                        worst_p = max(worst_p, abs(pst(g, el) - p))
+                        worst_s = max(worst_s, abs(sig(2, g, el) + lam*sv), abs(sig(4, g, el)))
+                     end do
+                  end do
+               end associate
+            end do
+            write (path, '(a,i6.6,a)') '/increments/', i, '/reaction'
+            call rd%dataset(trim(path), reac, error)
+            if (allocated(error)) return
+            ! the water's push on the supported base (p = gamma_w h at y = 0, width 1)
+            base = sum(reac(2, 1:2)) + GW*level
+            print '(a,i0,a,i0,3(a,es12.4),2(a,f12.6))', 'v', v, ' inc ', i, ' dp ', worst_p, &
+               ' ds ', worst_s, ' base ', base, ' sum reac ', sum(reac(2, 1:2)), &
+               ' weight ', lam*weight
+            call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'p = gamma_w (h - y)+', &
+               atol=1.0e-10_wp*scale)
+            if (allocated(error)) return
+            call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma'_v = lambda closed form", &
+               atol=1.0e-10_wp*scale)
+            if (allocated(error)) return
+            call check_close(error, base, lam*weight, 0.0_wp, &
+               'base reaction + water on the base = lambda total weight', atol=1.0e-10_wp*scale)
+            if (allocated(error)) return
+         end do
+         call rd%close()
+      end do
+   end subroutine test_gravity_column
 
 end module test_water
