@@ -746,7 +746,7 @@ contains
                      end if
                      do g = 1, 4
                         p = GW*max(level - xg(2, g), 0.0_wp)
-                        worst_p = max(worst_p, abs(pst(g, el) - p))
+                        worst_p = max(worst_p, abs(pst(g, el) - lam*p))
                         worst_s = max(worst_s, abs(sig(2, g, el) + lam*sv), abs(sig(4, g, el)))
                      end do
                   end do
@@ -755,8 +755,8 @@ contains
             write (path, '(a,i6.6,a)') '/increments/', i, '/reaction'
             call rd%dataset(trim(path), reac, error)
             if (allocated(error)) return
-            ! the water's push on the supported base (p = gamma_w h at y = 0, width 1)
-            base = sum(reac(2, 1:2)) + GW*level
+            ! the water's push on the supported base (lambda gamma_w h at y = 0, width 1)
+            base = sum(reac(2, 1:2)) + lam*GW*level
             print '(a,i0,a,i0,3(a,es12.4),2(a,f12.6))', 'v', v, ' inc ', i, ' dp ', worst_p, &
                ' ds ', worst_s, ' base ', base, ' sum reac ', sum(reac(2, 1:2)), &
                ' weight ', lam*weight

@@ -57,6 +57,11 @@ module pecplas_phases_start
    !> Length of a line of the change list (results file).
    integer, parameter :: LINE_LEN = 160
 
+   !> A copy of a steady pore pressure array (pore_forces).
+   type :: steady_copy_t
+      real(wp), allocatable :: v(:, :)
+   end type steady_copy_t
+
 contains
 
    !> Applies the phase of step `istep` (module header) to a phased run. On exit `fint`
@@ -223,6 +228,8 @@ contains
          end if
          call held_load(model, problem, eactive, model%water%level_at(istep), error)
          if (allocated(error)) return
+         call gravity_water(model, problem, eactive, model%water%level_at(istep), error)
+         if (allocated(error)) return
          ! the K0 state's own out-of-balance: held until the first nil step
          if (.not. problem%phase%released) then
             if (size(step%pattern) == 0 .and. size(step%changes) == 0) then
@@ -291,10 +298,12 @@ contains
          end do
       end if
       if (.not. allocated(model%initial_stresses)) then
+         problem%phase%water_pattern = gravity_pattern(model)
          call k0_unbalance(model, problem, error)
          return
       end if
       if (size(model%initial_stresses) == 0) then
+         problem%phase%water_pattern = gravity_pattern(model)
          call k0_unbalance(model, problem, error)
          return
       end if
@@ -345,7 +354,7 @@ contains
       call forces_at_start(model, problem, all_on, .true., f, error)
       if (allocated(error)) return
       if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
-      call held_load(model, problem, all_on, model%water%level_at(1), error)
+      call held_load(model, problem, all_on, model%water%level_at(1), error, all_joints=.true.)
       if (allocated(error)) return
       ! on the free equations: at a support it is the support's reaction to the K0 state
       problem%phase%unbalanced = f - problem%system%initial_force
@@ -360,13 +369,18 @@ contains
 
    !> The held load (problem%system%initial_force): what the active sets hold.
    !> `level`: the phreatic level in force (the weights below it are gamma_sat).
-   subroutine held_load(model, problem, eactive, level, error)
+   !> Under gravity loading with water (phase_state_t%water_pattern > 0) it holds the
+   !> forces of the steady pore pressures instead of the water on the faces, with the joint
+   !> sets active now or, `all_joints`, all (the K0 state's out-of-balance is measured so).
+   subroutine held_load(model, problem, eactive, level, error, all_joints)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:)
       integer, intent(in) :: level
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: all_joints
       logical, allocatable :: jon(:), pon(:)
+      real(wp), allocatable :: f(:, :)
       integer :: s
       problem%system%initial_force = 0.0_wp
       do s = 1, size(eactive)
@@ -380,6 +394,18 @@ contains
                problem%phase%homogeneous(:, :, problem%phase%hold(s))
          end if
       end do
+      ! gravity loading: the forces of the steady pore pressures are held (they cancel the
+      ! pore pressures in the internal forces) and the water comes in with the gravity
+      ! pattern (gravity_water)
+      if (problem%phase%water_pattern > 0) then
+         if (level > 0) then
+            allocate (f, mold=problem%system%initial_force)
+            call pore_forces(model, problem, eactive, all_joints, f, error)
+            if (allocated(error)) return
+            problem%system%initial_force = problem%system%initial_force + f
+         end if
+         return
+      end if
       ! the water standing on the free faces and on the plates *PLATE_WATER names
       if (model%water%used() .and. level > 0) then
          allocate (jon(0), pon(0))
@@ -403,6 +429,114 @@ contains
       eon(s) = .true.
       call forces_at_start(model, problem, eon, .false., f, error)
    end subroutine own_forces
+
+   !> The GRAVITY pattern the water comes in with under gravity loading: the first one in a
+   !> model with groundwater and no *INITIAL_STRESS (0: none).
+   integer function gravity_pattern(model) result(k)
+      type(model_t), intent(in) :: model
+      integer :: i
+      k = 0
+      if (.not. model%water%used() .or. .not. allocated(model%patterns)) return
+      do i = 1, size(model%patterns)
+         if (model%patterns(i)%kind == LOAD_GRAVITY) then
+            k = i
+            return
+         end if
+      end do
+   end function gravity_pattern
+
+   !> Gravity loading with groundwater (doc/theory.md, Groundwater): the water comes in with
+   !> the weight. The held load holds the forces F_p of the steady pore pressures (held_load),
+   !> and the gravity pattern's vector gets the water on the free faces and on the plates
+   !> less F_p, so that at pattern factor lambda the effective stresses carry lambda times
+   !> the effective weight and the total stresses (sigma' - lambda p m) lambda times the
+   !> total weight and the water on the faces, as if the pore pressures rose with the weight.
+   !> A phase whose gravity pattern is off holds the water on the faces as under K0.
+   subroutine gravity_water(model, problem, eactive, level, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: eactive(:)
+      integer, intent(in) :: level
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: jon(:), pon(:)
+      real(wp), allocatable :: w(:, :)
+      integer :: k
+      k = problem%phase%water_pattern
+      if (k <= 0 .or. level <= 0) return
+      allocate (w, mold=problem%system%initial_force)
+      w = 0.0_wp
+      allocate (jon(0), pon(0))
+      if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
+      call add_water_faces(model, eactive, jon, level, w, error)
+      if (allocated(error)) return
+      if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
+      call add_plate_water(model, pon, level, w)
+      if (allocated(problem%phase%patterns_on)) then
+         if (.not. problem%phase%patterns_on(k)) then
+            ! no weight coming in: the water on the faces held, F_p's hold released
+            problem%system%initial_force = w
+            return
+         end if
+      end if
+      problem%system%pattern_force(:, :, k) = problem%system%pattern_force(:, :, k) + w - &
+         problem%system%initial_force
+   end subroutine gravity_water
+
+   !> The internal forces f of the steady pore pressures alone (the total-stress part -p m
+   !> of the massif points and p of the joint points) at the current displacements, with
+   !> the element sets `eon` active and the joint sets active now or, `all_joints`, all:
+   !> the forces of the state less those of the same state without steady pore pressures.
+   subroutine pore_forces(model, problem, eon, all_joints, f, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: eon(:)
+      logical, intent(in), optional :: all_joints
+      real(wp), intent(out) :: f(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: ekeep(:), jkeep(:)
+      real(wp), allocatable :: f0(:, :)
+      type(steady_copy_t), allocatable :: keep(:), jpore(:)
+      integer :: s
+      ekeep = problem%state%sets%active
+      allocate (jkeep(0))
+      if (allocated(problem%state%joints%sets)) then
+         jkeep = problem%state%joints%sets%active
+         if (present(all_joints)) then
+            if (all_joints) problem%state%joints%sets%active = .true.
+         end if
+      end if
+      problem%state%sets%active = eon
+      call internal_forces(model, problem%system%rules, problem%state%u, problem%state, f, &
+         error)
+      if (allocated(error)) return
+      call problem%state%rollback()
+      ! the same without the steady pore pressures
+      allocate (keep(size(problem%state%sets)), jpore(size(jkeep)))
+      do s = 1, size(problem%state%sets)
+         if (.not. problem%state%sets(s)%pore%on()) cycle
+         keep(s)%v = problem%state%sets(s)%pore%steady
+         problem%state%sets(s)%pore%steady = 0.0_wp
+      end do
+      do s = 1, size(jkeep)
+         if (.not. allocated(problem%state%joints%sets(s)%pore)) cycle
+         jpore(s)%v = problem%state%joints%sets(s)%pore
+         problem%state%joints%sets(s)%pore = 0.0_wp
+      end do
+      allocate (f0, mold=f)
+      call internal_forces(model, problem%system%rules, problem%state%u, problem%state, f0, &
+         error)
+      do s = 1, size(problem%state%sets)
+         if (allocated(keep(s)%v)) problem%state%sets(s)%pore%steady = keep(s)%v
+      end do
+      do s = 1, size(jkeep)
+         if (allocated(jpore(s)%v)) problem%state%joints%sets(s)%pore = jpore(s)%v
+      end do
+      problem%state%sets%active = ekeep
+      if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep
+      call problem%state%rollback()
+      if (allocated(error)) return
+      f = f - f0
+   end subroutine pore_forces
 
    !> Internal forces of the stresses held in the state at zero displacement, with the element
    !> sets `eon` and every joint set (`joints_on`) or none active; the activity and the

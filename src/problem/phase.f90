@@ -58,6 +58,11 @@ module pecplas_problem_phase
       !> the sets inactive at the start go off): where a set activated with
       !> STRESS=WISHED_IN_PLACE starts.
       real(wp), allocatable :: katona_f0(:, :)
+      !> Under gravity loading with groundwater: the GRAVITY pattern the water comes in with
+      !> (doc/theory.md, Groundwater): the held load holds the forces of the steady pore
+      !> pressures, and this pattern's vector carries the water on the faces less them, so
+      !> that the pore pressures act in proportion to its factor (0: none, the water held).
+      integer :: water_pattern = 0
    end type phase_state_t
 
 end module pecplas_problem_phase

@@ -166,12 +166,28 @@ contains
             call move_alloc(st%sets(s)%strain, r%set_fields(s)%strain)
             call move_alloc(st%sets(s)%hist, r%set_fields(s)%state)
             if (st%sets(s)%pore%on()) then
-               r%set_fields(s)%pore_steady = st%sets(s)%pore%steady
+               ! under gravity loading the steady pore pressures act with the gravity
+               ! pattern's factor (pecplas_phases_start's gravity_water)
+               r%set_fields(s)%pore_steady = water_factor(problem)*st%sets(s)%pore%steady
                r%set_fields(s)%pore_excess = st%sets(s)%pore%excess
             end if
          end do
       end associate
    end subroutine lend
+
+   !> The factor the steady pore pressures act with: the water pattern's factor under
+   !> gravity loading while that pattern is on (doc/theory.md, Groundwater), else 1.
+   real(wp) function water_factor(problem) result(f)
+      type(problem_t), intent(in) :: problem
+      integer :: k
+      f = 1.0_wp
+      k = problem%phase%water_pattern
+      if (k <= 0) return
+      if (allocated(problem%phase%patterns_on)) then
+         if (.not. problem%phase%patterns_on(k)) return
+      end if
+      f = problem%state%factors(k)
+   end function water_factor
 
    !> Gives back to `problem` what `lend` moved into `r`.
    subroutine give_back(problem, r)
