@@ -684,7 +684,7 @@ contains
       real(wp), parameter :: GSU = 17.0_wp, GSS = 20.0_wp, GCS = 21.0_wp
       integer, parameter :: NINC = 4
       real(wp), allocatable :: sig(:, :, :), reac(:, :), pst(:, :)
-      real(wp) :: level, xg(2, 4), p, sv, q, worst_p, worst_s, scale, ym, weight, base, lam
+      real(wp) :: level, xg(2, 4), p, sv, q, worst_p, worst_s, scale, ym, weight, base, lam, ratio
       integer :: code, s, el, g, v, i
       character(len=:), allocatable :: body, name
       character(len=64) :: path
@@ -722,6 +722,7 @@ contains
          if (allocated(error)) return
          do i = 1, NINC
             lam = real(i, wp)/NINC
+            ratio = 0.0_wp
             worst_p = 0.0_wp
             worst_s = 0.0_wp
             do s = 1, 2
@@ -748,6 +749,8 @@ contains
                         p = GW*max(level - xg(2, g), 0.0_wp)
                         worst_p = max(worst_p, abs(pst(g, el) - lam*p))
                         worst_s = max(worst_s, abs(sig(2, g, el) + lam*sv), abs(sig(4, g, el)))
+                        if (set%name == 'high' .and. sig(2, g, el) < 0.0_wp) &
+                           ratio = max(ratio, sig(1, g, el)/sig(2, g, el))
                      end do
                   end do
                end associate
@@ -757,9 +760,6 @@ contains
             if (allocated(error)) return
             ! the water's push on the supported base (lambda gamma_w h at y = 0, width 1)
             base = sum(reac(2, 1:2)) + lam*GW*level
-            print '(a,i0,a,i0,3(a,es12.4),2(a,f12.6))', 'v', v, ' inc ', i, ' dp ', worst_p, &
-               ' ds ', worst_s, ' base ', base, ' sum reac ', sum(reac(2, 1:2)), &
-               ' weight ', lam*weight
             call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'p = gamma_w (h - y)+', &
                atol=1.0e-10_wp*scale)
             if (allocated(error)) return
@@ -768,6 +768,10 @@ contains
             if (allocated(error)) return
             call check_close(error, base, lam*weight, 0.0_wp, &
                'base reaction + water on the base = lambda total weight', atol=1.0e-10_wp*scale)
+            if (allocated(error)) return
+            ! the Mohr-Coulomb sand yields: sigma'_h / sigma'_v rises towards K_a = 0.49 (c = 1
+            ! lowers it, the more the lower the stress), above the elastic nu / (1 - nu) = 1/3
+            if (v == 3) call check(error, ratio > 0.4_wp, 'the Mohr-Coulomb sand yields')
             if (allocated(error)) return
          end do
          call rd%close()
