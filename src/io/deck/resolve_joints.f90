@@ -138,13 +138,6 @@ contains
          end if
       end if
       if (raw%both_faces) then
-         if (set%is_katona()) then
-            call line_error(state, raw%at, "FACES=BOTH with Katona contact (law '"//raw%law// &
-               "') is not available: the plate's nodes would face two partners (one per "// &
-               'face); use a penalty law (e.g. MOHR_COULOMB with a stiff KN) or one-sided '// &
-               'joints (SIDE=)', error)
-            return
-         end if
          call generated_both(state, model, raw, origin, next_id, set, group, error)
          return
       else if (len(raw%edges) > 0) then
@@ -292,6 +285,7 @@ contains
       type(error_t), allocatable :: e
       integer, allocatable :: dupof(:), doublets(:, :), edges(:, :), sel(:)
       real(wp), allocatable :: trib(:), tang(:, :)
+      logical, allocatable :: left(:)
       character(len=:), allocatable :: msg
       integer :: ke, nen, i, k, face, bad
       ke = model%mesh%find_edge_set(raw%edges)
@@ -333,9 +327,10 @@ contains
       if (.not. set%is_spring()) then
          set%conn = res%conn
          group = res%body_set
+         if (set%is_katona()) call katona_left_faces(res%face, set%conn)
       else
          ! one doublet per node of each face: (face-1 node, face-2 node)
-         allocate (doublets(2, 0), trib(0), tang(2, 0))
+         allocate (doublets(2, 0), trib(0), tang(2, 0), left(0))
          do face = FACE_LEFT, FACE_EXTENSION
             sel = pack([(i, i=1, size(res%face))], res%face == face)
             if (size(sel) == 0) cycle
@@ -351,6 +346,7 @@ contains
                   res%conn(6, sel(i)), res%body_set(sel(i)))
             end do
             k = size(doublets, 2) - size(trib)
+            left = [left, [(face == FACE_LEFT, i=1, k)]]
             trib = [trib, [(0.0_wp, i=1, k)]]
             tang = reshape([tang, [(0.0_wp, i=1, 2*k)]], [2, size(trib)])
             call spring_tributaries(model%mesh%x, model%analysis%kind, &
@@ -367,10 +363,42 @@ contains
          set%tangent = tang
          if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
             sin(raw%angle*PI/180.0_wp)], 2, size(set%conn, 2))
+         if (set%is_katona()) then
+            ! the left-face doublets
+            ! swapped, their tangents reversed: the same relative displacement z, each node
+            ! face 1 of one doublet at most (katona_left_faces)
+            do i = 1, size(set%conn, 2)
+               if (.not. left(i)) cycle
+               set%conn(:, i) = set%conn([2, 1], i)
+               set%tangent(:, i) = -set%tangent(:, i)
+            end do
+         end if
       end if
       set%ids = [(next_id + i, i=1, size(set%conn, 2))]
       next_id = next_id + size(set%conn, 2)
    end subroutine generated_both
+
+   !> Katona doublets on both faces: a doublet needs one partner per face-1 node, and the
+   !> line's (the plate's) nodes are face 1 of the joints of both faces. The left-face joints
+   !> are turned over (face 1 the left body's copies, face 2 the line's nodes, (B.8) order:
+   !> nodes 3, 4, 1, 2 [, 6, 5]; their tangent and normal reverse, so that the relative
+   !> displacement and the stresses are the same): every left copy is face 1 of one doublet
+   !> (partner the line node), every line node face 1 of its right-face doublet (partner the
+   !> right copy), and every right copy face 1 only of an extension doublet (partner the left
+   !> copy). A node the split left whole (a line's end inside a body) is its own partner.
+   pure subroutine katona_left_faces(face, conn)
+      integer, intent(in) :: face(:)
+      integer, intent(inout) :: conn(:, :)
+      integer :: i
+      do i = 1, size(conn, 2)
+         if (face(i) /= FACE_LEFT) cycle
+         if (size(conn, 1) == 6) then
+            conn(:, i) = conn([3, 4, 1, 2, 6, 5], i)
+         else
+            conn(:, i) = conn([3, 4, 1, 2], i)
+         end if
+      end do
+   end subroutine katona_left_faces
 
    !> Appends the doublet (a, b) of body set g unless the doublets from column k0 + 1 on
    !> hold it.
