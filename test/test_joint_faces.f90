@@ -256,13 +256,18 @@ contains
       real(wp), allocatable :: fall(:, :), fnp(:, :), fc(:, :)
       logical, allocatable :: keep(:)
       real(wp) :: worst, ref, ftol, excess
-      integer :: code, k, v, nstick, nslip, nopen, nface1
+      integer :: code, k, v, nstick, nslip, nopen, nface1, c
       integer, parameter :: ids(3) = [23, 18, 13]
       real(wp), parameter :: W = 320.0_wp, TOL = 1.0e-9_wp
       call make_directories(OUT)
-      call write_wall(OUT//'katona.inp', katona='MU = 0.5, C = 1e6, TENSION = 1e6')
-      code = run_deck(OUT//'katona.inp', OUT//'katona.h5', .true., model, problem)
-      call check(error, code == 0, 'bonded Katona wall runs (exit '//itoa(code)//')')
+      do c = 1, 3
+      ! GOODMAN4 joints, the chain down then up (extension at its end, at its start); springs
+      call write_wall(OUT//'katona'//itoa(c)//'.inp', katona='MU = 0.5, C = 1e6, TENSION = 1e6', &
+         reversed=c >= 2, spring=c == 3)
+      code = run_deck(OUT//'katona'//itoa(c)//'.inp', OUT//'katona'//itoa(c)//'.h5', .true., &
+         model, problem)
+      call check(error, code == 0, 'bonded Katona wall '//itoa(c)//' runs (exit '// &
+         itoa(code)//')')
       if (allocated(error)) return
       associate (kt => problem%katona)
          call kt%count_modes(nstick, nslip, nopen)
@@ -312,7 +317,9 @@ contains
             'plate nodes', atol=sqrt(2.0_wp)*TOL*W)
          if (allocated(error)) return
       end associate
-      call write_wall(OUT//'katona_mu.inp', katona='MU = 0.05')
+      deallocate (fall, fnp, fc)
+      end do
+      call write_wall(OUT//'katona_mu.inp', katona='MU = 0.05', reversed=.true.)
       code = run_deck(OUT//'katona_mu.inp', OUT//'katona_mu.h5', .true., model, problem)
       call check(error, code == 0, 'frictional Katona wall runs (exit '//itoa(code)//')')
       if (allocated(error)) return
@@ -338,13 +345,15 @@ contains
 
    !> The wall deck: soil cells 13, 14 (left of the line, top row) in set 'dig', removed by
    !> the second phase; gravity in the first.
-   subroutine write_wall(path, thin, katona)
+   subroutine write_wall(path, thin, katona, spring, reversed)
       character(len=*), intent(in) :: path
-      logical, intent(in), optional :: thin
+      !> thin: THIN_LAYER joints; spring: SPRING joints; reversed: the line's edges listed
+      !> from its toe up (its chain starts at the toe: the extension is at its start).
+      logical, intent(in), optional :: thin, spring, reversed
       !> The data line of a TYPE=KATONA law that replaces the elastic one.
       character(len=*), intent(in), optional :: katona
       integer :: u, i, j, n
-      character(len=:), allocatable :: joints, law(:)
+      character(len=:), allocatable :: joints, law(:), wall(:)
       law = [character(len=48) :: '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e3']
       if (present(katona)) law = [character(len=48) :: '*INTERFACE_LAW, NAME=smooth, TYPE=KATONA', &
          katona]
@@ -352,6 +361,14 @@ contains
       if (present(thin)) then
          if (thin) joints = '*JOINTS, TYPE=THIN_LAYER, SET=wj, LAW=smooth, EDGES=wall, '// &
             'FACES=BOTH, EXTEND=1, THICKNESS=0.01'
+      end if
+      if (present(spring)) then
+         if (spring) joints = '*JOINTS, TYPE=SPRING, SET=wj, LAW=smooth, EDGES=wall, '// &
+            'FACES=BOTH, EXTEND=1'
+      end if
+      wall = [character(len=6) :: '23, 18', '18, 13']
+      if (present(reversed)) then
+         if (reversed) wall = [character(len=6) :: '13, 18', '18, 23']
       end if
       open (newunit=u, file=path, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'plate wall with joints on both faces', '*NODES'
@@ -375,7 +392,7 @@ contains
       end do
       write (u, '(a)') '*MATERIAL, NAME=m', 'E = 1e4, NU = 0.3, GAMMA = 20', &
          '*SECTION, SET=soil, MATERIAL=m', '*SECTION, SET=dig, MATERIAL=m', &
-         '*EDGES, NAME=wall', '23, 18', '18, 13', '*NSET, NAME=base', '1, 2, 3, 4, 5', &
+         '*EDGES, NAME=wall', wall, '*NSET, NAME=base', '1, 2, 3, 4, 5', &
          '*NSET, NAME=sides', '1, 6, 11, 16, 21, 5, 10, 15, 20, 25', '*NSET, NAME=line', &
          '23, 18, 13', '*BOUNDARY', 'base, XY', 'sides, X'
       write (u, '(a)') (trim(law(i)), i=1, size(law))

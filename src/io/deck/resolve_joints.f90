@@ -285,7 +285,7 @@ contains
       type(error_t), allocatable :: e
       integer, allocatable :: dupof(:), doublets(:, :), edges(:, :), sel(:)
       real(wp), allocatable :: trib(:), tang(:, :)
-      logical, allocatable :: left(:)
+      logical, allocatable :: turn(:)
       character(len=:), allocatable :: msg
       integer :: ke, nen, i, k, face, bad
       ke = model%mesh%find_edge_set(raw%edges)
@@ -327,10 +327,16 @@ contains
       if (.not. set%is_spring()) then
          set%conn = res%conn
          group = res%body_set
-         if (set%is_katona()) call katona_left_faces(res%face, set%conn)
+         if (set%is_katona()) then
+            turn = katona_turned(res)
+            do i = 1, size(turn)
+               if (turn(i) .and. nen == 3) set%conn(:, i) = set%conn([3, 4, 1, 2, 6, 5], i)
+               if (turn(i) .and. nen == 2) set%conn(:, i) = set%conn([3, 4, 1, 2], i)
+            end do
+         end if
       else
          ! one doublet per node of each face: (face-1 node, face-2 node)
-         allocate (doublets(2, 0), trib(0), tang(2, 0), left(0))
+         allocate (doublets(2, 0), trib(0), tang(2, 0))
          do face = FACE_LEFT, FACE_EXTENSION
             sel = pack([(i, i=1, size(res%face))], res%face == face)
             if (size(sel) == 0) cycle
@@ -346,7 +352,6 @@ contains
                   res%conn(6, sel(i)), res%body_set(sel(i)))
             end do
             k = size(doublets, 2) - size(trib)
-            left = [left, [(face == FACE_LEFT, i=1, k)]]
             trib = [trib, [(0.0_wp, i=1, k)]]
             tang = reshape([tang, [(0.0_wp, i=1, 2*k)]], [2, size(trib)])
             call spring_tributaries(model%mesh%x, model%analysis%kind, &
@@ -364,11 +369,12 @@ contains
          if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
             sin(raw%angle*PI/180.0_wp)], 2, size(set%conn, 2))
          if (set%is_katona()) then
-            ! the left-face doublets
-            ! swapped, their tangents reversed: the same relative displacement z, each node
-            ! face 1 of one doublet at most (katona_left_faces)
+            ! the doublets of the turned joints swapped, their tangents reversed: the same
+            ! relative displacement, each node face 1 of one doublet at most (katona_turned)
+            turn = katona_turned(res)
             do i = 1, size(set%conn, 2)
-               if (.not. left(i)) cycle
+               if (.not. any(turn .and. (holds(1, 4) .or. holds(2, 3) .or. &
+                   (nen == 3 .and. holds(min(5, 2*nen), 2*nen))))) cycle
                set%conn(:, i) = set%conn([2, 1], i)
                set%tangent(:, i) = -set%tangent(:, i)
             end do
@@ -376,29 +382,46 @@ contains
       end if
       set%ids = [(next_id + i, i=1, size(set%conn, 2))]
       next_id = next_id + size(set%conn, 2)
+   contains
+      !> The joints whose nodes a, b (positions in res%conn) are spring doublet i.
+      pure function holds(a, b) result(yes)
+         integer, intent(in) :: a, b
+         logical, allocatable :: yes(:)
+         yes = res%conn(a, :) == set%conn(1, i) .and. res%conn(b, :) == set%conn(2, i)
+      end function holds
    end subroutine generated_both
 
    !> Katona doublets on both faces: a doublet needs one partner per face-1 node, and the
-   !> line's (the plate's) nodes are face 1 of the joints of both faces. The left-face joints
-   !> are turned over (face 1 the left body's copies, face 2 the line's nodes, (B.8) order:
-   !> nodes 3, 4, 1, 2 [, 6, 5]; their tangent and normal reverse, so that the relative
-   !> displacement and the stresses are the same): every left copy is face 1 of one doublet
-   !> (partner the line node), every line node face 1 of its right-face doublet (partner the
-   !> right copy), and every right copy face 1 only of an extension doublet (partner the left
-   !> copy). A node the split left whole (a line's end inside a body) is its own partner.
-   pure subroutine katona_left_faces(face, conn)
-      integer, intent(in) :: face(:)
-      integer, intent(inout) :: conn(:, :)
-      integer :: i
-      do i = 1, size(conn, 2)
-         if (face(i) /= FACE_LEFT) cycle
-         if (size(conn, 1) == 6) then
-            conn(:, i) = conn([3, 4, 1, 2, 6, 5], i)
-         else
-            conn(:, i) = conn([3, 4, 1, 2], i)
+   !> line's (the plate's) nodes are face 1 of the joints of both faces. The joints of the
+   !> left face are turned over (face 1 the left body's copies, face 2 the line's nodes, (B.8)
+   !> order: nodes 3, 4, 1, 2 [, 6, 5]; tangent and normal reverse, so that the relative
+   !> displacement and the stresses are the same), and so are those of an extension beyond
+   !> the start of a chain (oriented away from the line, its right body is the line's left
+   !> one): every left copy is face 1 of one doublet (partner the line node), every line node
+   !> face 1 of its right-face doublet (partner the right copy), and every right copy face 1
+   !> only of an extension doublet (partner the left copy). A node the split left whole (a
+   !> line's end inside a body) is its own partner (a doublet that carries no force).
+   pure function katona_turned(res) result(turn)
+      type(faces_result_t), intent(in) :: res
+      logical, allocatable :: turn(:)
+      logical :: flip
+      integer :: j, m
+      turn = res%face == FACE_LEFT
+      flip = .false.
+      m = 0
+      do j = 1, size(res%face)
+         if (res%face(j) /= FACE_EXTENSION) cycle
+         m = m + 1
+         ! a new extension starts at a line end: the start of a chain's first edge, or its end
+         if (m == 1) then
+            flip = any(res%conn(1, :) == res%extension(1, m) .and. res%face == FACE_LEFT)
+         else if (res%extension(1, m) /= res%extension(2, m - 1)) then
+            flip = any(res%conn(1, :) == res%extension(1, m) .and. res%face == FACE_LEFT)
          end if
+         turn(j) = flip
       end do
-   end subroutine katona_left_faces
+   end function katona_turned
+
 
    !> Appends the doublet (a, b) of body set g unless the doublets from column k0 + 1 on
    !> hold it.
