@@ -3,7 +3,8 @@
 !> below the line's end, springs per face), and a plate wall with joints on both faces in
 !> elastic soil under an excavation phase: at every plate node the plate's nodal forces
 !> balance those of the joints (the jump of the interface forces across the wall), to the
-!> solver tolerance; bad FACES= decks.
+!> solver tolerance; the same wall with Katona doublets on both faces (bonded: plate and
+!> contact forces balance; frictional: the Coulomb limit); bad FACES= decks.
 !>
 !> The mesh: 4 x 4 unit Q4 cells, node (i, j) = id 5 j + i + 1 at (i, j), cell (i, j) = id
 !> 4 j + i + 1; the line x = 2 from the surface y = 4 down to y = 2 (nodes 23, 18, 13).
