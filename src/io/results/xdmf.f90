@@ -9,6 +9,8 @@
 !>
 !> Each plate set is a grid of its own in the increments where it is active: its elements as
 !> polylines on the mesh's nodes, with the displacements and the cell attributes N, Q, M.
+!> Each anchor set likewise: a Polyline per bar (/mesh/anchors/<set>/point_coordinates, the
+!> fixed end of a fixed-end bar included) with the cell attributes force and force_per_width.
 !>
 !> Each joint set is a grid of its own in every increment: its integration points as a
 !> Polyline per joint element (a Polyvertex for springs, one point each) through
@@ -26,7 +28,7 @@ module pecplas_io_results_xdmf
    private
 
    public :: xdmf_set_t, xdmf_joint_t, xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, write_xdmf
-   public :: xdmf_plate_t
+   public :: xdmf_plate_t, xdmf_anchor_t
 
    !> One element set as the XDMF sees it.
    type :: xdmf_set_t
@@ -55,12 +57,19 @@ module pecplas_io_results_xdmf
       integer :: nel = 0, npe = 2
    end type xdmf_plate_t
 
+   !> One anchor set: group name under /mesh/anchors, bars.
+   type :: xdmf_anchor_t
+      character(len=:), allocatable :: name
+      integer :: nbar = 0
+   end type xdmf_anchor_t
+
    !> What the results file holds: enough to write the XDMF without reading the HDF5 file.
    type :: xdmf_layout_t
       integer :: nnode = 0
       type(xdmf_set_t), allocatable :: sets(:)
       type(xdmf_joint_t), allocatable :: joints(:)
       type(xdmf_plate_t), allocatable :: plates(:)
+      type(xdmf_anchor_t), allocatable :: anchors(:)
       logical :: reactions = .true., stresses = .true.
       !> Cell attribute error_indicator (*OUTPUT, ERROR_ESTIMATE=YES).
       logical :: error_estimate = .false.
@@ -124,7 +133,8 @@ contains
    !> esets(nset, k) / jsets(njset, k), when given: the element / joint sets active in
    !> increment k (a staged run); an inactive set has no grid in that increment, so that
    !> ParaView shows only what the phase holds (it plays an excavation).
-   function xdmf_text(layout, h5_name, increments, times, esets, jsets, psets) result(text)
+   function xdmf_text(layout, h5_name, increments, times, esets, jsets, psets, asets) &
+      result(text)
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: increments(:)
@@ -132,10 +142,12 @@ contains
       logical, intent(in), optional :: esets(:, :), jsets(:, :)
       !> psets(nplate, k): the plate sets active in increment k.
       logical, intent(in), optional :: psets(:, :)
+      !> asets(nanchor, k): the anchor sets active in increment k.
+      logical, intent(in), optional :: asets(:, :)
       character(len=:), allocatable :: text
       type(text_buffer_t) :: b
-      logical, allocatable :: eon(:), jon(:), pon(:)
-      integer :: k, nj, np
+      logical, allocatable :: eon(:), jon(:), pon(:), aon(:)
+      integer :: k, nj, np, na
       call put(b, '<?xml version="1.0" ?>')
       call put(b, '<Xdmf Version="3.0">')
       call put(b, ' <Domain>')
@@ -144,12 +156,15 @@ contains
       if (allocated(layout%joints)) nj = size(layout%joints)
       np = 0
       if (allocated(layout%plates)) np = size(layout%plates)
-      allocate (eon(size(layout%sets)), jon(nj), pon(np))
+      na = 0
+      if (allocated(layout%anchors)) na = size(layout%anchors)
+      allocate (eon(size(layout%sets)), jon(nj), pon(np), aon(na))
       eon = .true.
       jon = .true.
       pon = .true.
+      aon = .true.
       if (size(increments) == 0) then
-         call put_increment(b, layout, h5_name, 0, 0.0_wp, eon, jon, pon)
+         call put_increment(b, layout, h5_name, 0, 0.0_wp, eon, jon, pon, aon)
       else
          do k = 1, size(increments)
             if (present(esets)) eon = esets(:, k)
@@ -157,7 +172,10 @@ contains
             if (present(psets)) then
                if (size(psets, 1) == np .and. size(psets, 2) >= k) pon = psets(:, k)
             end if
-            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon, pon)
+            if (present(asets)) then
+               if (size(asets, 1) == na .and. size(asets, 2) >= k) aon = asets(:, k)
+            end if
+            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon, pon, aon)
          end do
       end if
       call put(b, '  </Grid>')
@@ -217,13 +235,13 @@ contains
 
    !> One spatial collection; inc = 0 writes the mesh without attributes. Only the sets
    !> with eon / jon true get a grid.
-   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon, pon)
+   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon, pon, aon)
       type(text_buffer_t), intent(inout) :: b
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: inc
       real(wp), intent(in) :: time
-      logical, intent(in) :: eon(:), jon(:), pon(:)
+      logical, intent(in) :: eon(:), jon(:), pon(:), aon(:)
       character(len=:), allocatable :: h5, group
       integer :: s
       h5 = xml_escape(h5_name)//':'
@@ -273,8 +291,37 @@ contains
             call put_plate_grid(b, layout%plates(s), layout%nnode, h5, group, inc)
          end do
       end if
+      if (allocated(layout%anchors)) then
+         do s = 1, size(layout%anchors)
+            if (aon(s)) call put_anchor_grid(b, layout%anchors(s), h5, group, inc)
+         end do
+      end if
       call put(b, '   </Grid>')
    end subroutine put_increment
+
+   !> The grid of one anchor set, a Polyline per bar; inc = 0: the bars without attributes.
+   subroutine put_anchor_grid(b, anchor, h5, group, inc)
+      type(text_buffer_t), intent(inout) :: b
+      type(xdmf_anchor_t), intent(in) :: anchor
+      character(len=*), intent(in) :: h5, group
+      integer, intent(in) :: inc
+      character(len=:), allocatable :: mesh, fields
+      mesh = h5//'/mesh/anchors/'//anchor%name
+      fields = h5//group//'/anchors/'//anchor%name
+      call put(b, '    <Grid Name="anchors_'//anchor%name//'" GridType="Uniform">')
+      call put(b, '     <Topology TopologyType="Polyline" NumberOfElements="'// &
+         itoa(anchor%nbar)//'" NodesPerElement="2">')
+      call data_item(b, mesh//'/point_connectivity', anchor%nbar, 2, 'Int', 4)
+      call put(b, '     </Topology>')
+      call put(b, '     <Geometry GeometryType="XY">')
+      call data_item(b, mesh//'/point_coordinates', 2*anchor%nbar, 2, 'Float', 8)
+      call put(b, '     </Geometry>')
+      if (inc > 0) then
+         call scalar_attribute(b, 'force', fields//'/force', anchor%nbar)
+         call scalar_attribute(b, 'force_per_width', fields//'/force_per_width', anchor%nbar)
+      end if
+      call put(b, '    </Grid>')
+   end subroutine put_anchor_grid
 
    !> The grid of one plate set: its elements as polylines (Edge_3 for 3-node elements) on
    !> the mesh's nodes, with the node displacements and the cell attributes N, Q, M (the
