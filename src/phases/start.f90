@@ -665,7 +665,7 @@ contains
       integer, intent(in) :: istep
       character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: k
+      integer :: k, s, side
       if (.not. model%water%used()) return
       k = model%water%level_at(istep)
       call set_steady_pressures(model, problem%system%rules, problem%state, k, error)
@@ -683,6 +683,19 @@ contains
             call reset_excess(problem%state)
             call add_line(lines, 'excess pore pressures set to zero')
          end if
+      end if
+      ! *PLATE_WATER of the step: the water's pressure on a plate face comes or goes
+      if (allocated(model%water%plate_side)) then
+         do s = 1, size(model%water%plate_side)
+            side = model%water%plate_side_at(s, istep)
+            if (side == model%water%plate_side_at(s, istep - 1)) cycle
+            if (side == 0) then
+               call add_line(lines, 'no water on plate set '//model%plates(s)%name)
+            else
+               call add_line(lines, 'water on the '//trim(merge('left ', 'right', side > 0))// &
+                  ' face of plate set '//model%plates(s)%name)
+            end if
+         end do
       end if
    end subroutine water_changes
 
