@@ -37,6 +37,7 @@ contains
                new_unittest('restart_keeps_excess', test_restart), &
                new_unittest('flooded_pit', test_flooded_pit), &
                new_unittest('water_on_a_wall', test_wall), &
+               new_unittest('water_on_a_wall_phased', test_wall_phased), &
                new_unittest('bad_decks', test_bad_decks), &
                new_unittest('gravity_column', test_gravity_column)]
    end subroutine collect_water
@@ -663,9 +664,10 @@ contains
    !> hydrostatic_column (sand over clay at y = 4, surface y = 10, 20 Q4), four increments:
    !> the pore pressures' forces and the water on the faces come in with the weight
    !> (doc/theory.md, Groundwater), so at increment i of n every Gauss point has sigma'_v =
-   !> (i/n) times the closed form of the effective weights, p = gamma_w (h - y)+ (the steady
-   !> pore pressure, reported at its full value), and the vertical base reaction plus the
-   !> water's push on the base is (i/n) times the column's total weight (gamma_sat below the
+   !> (i/n) times the closed form of the effective weights, the reported steady pore
+   !> pressure is (i/n) gamma_w (h - y)+ (exact: the same formula), and the vertical base
+   !> reaction plus the water's push on the base, (i/n) gamma_w h, is (i/n) times the
+   !> column's total weight (gamma_sat below the
    !> level, the water standing on the ground included). A Q4 column has u_y linear in each
    !> element, so its sigma'_v is constant per element: the closed form at the element's
    !> middle (the average of the linear sigma'_v over the element, exact since the nodal
@@ -777,5 +779,68 @@ contains
          call rd%close()
       end do
    end subroutine test_gravity_column
+
+   !> The wall of test_wall with the water appearing in phase 2 (*PLATE_WATER inside the
+   !> step, applied over its two increments): after phase 1 the wall carries nothing (base
+   !> shear 0: no load at all), at the end of phase 2 the base shear is gamma_w h^2/2 = 180
+   !> and the moment gamma_w h^3/6 = 360 (linear, 1e-8 as in test_wall); a run stopped after
+   !> phase 1 (and one stopped inside phase 2) and restarted ends as the uninterrupted run
+   !> (1e-12 of the displacements: the same operations on the same numbers but for the
+   !> restart file's round trip).
+   subroutine test_wall_phased(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: whole, part
+      type(plate_fields_t) :: f
+      character(len=*), parameter :: deck = OUT//'wall_phased.inp'
+      integer :: code, u, i, stop
+      call make_directories(OUT)
+      open (newunit=u, file=deck, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'water on a wall from phase 2', '*UNITS', 'kN, m, kPa', '*NODES'
+      do i = 0, 10
+         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
+      end do
+      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
+         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
+         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', &
+         '*STEP, NAME=dry, INCREMENTS=1', '*END STEP', &
+         '*STEP, NAME=flood, INCREMENTS=2', '*PLATE_WATER', 'wall, LEFT', '*END STEP'
+      close (u)
+      code = run_deck(deck, OUT//'wall_phase1.h5', .true., model, part, stop_after=1)
+      call check(error, code == 4, 'stopped after phase 1 (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call plate_results(model, part%state%u, part%state%plates, part%state%factors, 1, f, &
+         error, level=1, step=1)
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(2, 1)) + abs(f%node_forces(3, 1)), 0.0_wp, &
+         0.0_wp, 'no water on the wall in phase 1', atol=1.0e-8_wp*180.0_wp)
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'wall_phased.h5', .true., model, whole)
+      call check(error, code == 0, 'phased wall in water runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call plate_results(model, whole%state%u, whole%state%plates, whole%state%factors, 1, f, &
+         error, level=1, step=2)
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(2, 1)), 180.0_wp, 1.0e-8_wp, &
+         'base shear = gamma_w h^2 / 2 at the end of phase 2')
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(3, 1)), 360.0_wp, 1.0e-8_wp, &
+         'base moment = gamma_w h^3 / 6 at the end of phase 2')
+      if (allocated(error)) return
+      do stop = 1, 2
+         code = run_deck(deck, OUT//'wall_part'//itoa(stop)//'.h5', .true., model, part, &
+            stop_after=stop)
+         call check(error, code == 4, 'stopped (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         code = run_deck(deck, OUT//'wall_resumed'//itoa(stop)//'.h5', .true., model, part, &
+            restart=OUT//'wall_part'//itoa(stop)//'.h5')
+         call check(error, code == 0, 'restarted (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         call check_close(error, maxval(abs(part%state%u - whole%state%u)), 0.0_wp, 0.0_wp, &
+            'restarted after increment '//itoa(stop)//' = uninterrupted', &
+            atol=1.0e-12_wp*maxval(abs(whole%state%u)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_wall_phased
 
 end module test_water

@@ -46,15 +46,16 @@ contains
 
    !> Fields of plate set s at the converged state (u, pstate, pattern factors); `level`:
    !> the phreatic level in force (groundwater: the water's pressure on a plate that
-   !> *PLATE_WATER names is one of its own loads; default none).
-   subroutine plate_results(model, u, pstate, factors, s, f, error, level)
+   !> *PLATE_WATER names is one of its own loads; default none); `step`: the step whose
+   !> *PLATE_WATER sides are in force (default the last).
+   subroutine plate_results(model, u, pstate, factors, s, f, error, level, step)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: u(:, :), factors(:)
       type(plate_state_t), intent(in) :: pstate
       integer, intent(in) :: s
       type(plate_fields_t), intent(out) :: f
       type(error_t), allocatable, intent(out) :: error
-      integer, intent(in), optional :: level
+      integer, intent(in), optional :: level, step
       type(beam_point_t) :: pts(3)
       logical :: wet
       real(wp) :: fe(MAX_BEAM_DOFS), fl(MAX_BEAM_DOFS), x(2, 3), t(2), n(2), scale, q(2)
@@ -103,7 +104,11 @@ contains
                end do
             end if
             if (present(level)) then
-               call plate_water_load(model, s, e, level, fl(1:nd), wet)
+               if (present(step)) then
+                  call plate_water_load(model, s, e, level, step, fl(1:nd), wet)
+               else
+                  call plate_water_load(model, s, e, level, size(model%steps), fl(1:nd), wet)
+               end if
                if (wet) fe(1:nd) = fe(1:nd) - fl(1:nd)
             end if
             do end = 1, 2

@@ -72,46 +72,47 @@ contains
    end subroutine add_water_faces
 
    !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
-   !> in `pactive`, under level k (0: none): see plate_water_load.
-   subroutine add_plate_water(model, pactive, k, force)
+   !> in `pactive`, under level k (0: none), with the sides of step istep: see
+   !> plate_water_load.
+   subroutine add_plate_water(model, pactive, k, istep, force)
       type(model_t), intent(in) :: model
       logical, intent(in) :: pactive(:)
-      integer, intent(in) :: k
+      integer, intent(in) :: k, istep
       real(wp), intent(inout) :: force(:, :)
       real(wp) :: fe(MAX_BEAM_DOFS)
       integer :: s, e, nd
       logical :: any_load
       if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
       do s = 1, size(model%water%plate_side)
-         if (model%water%plate_side(s) == 0) cycle
+         if (model%water%plate_side_at(s, istep) == 0) cycle
          if (s > size(pactive)) cycle
          if (.not. pactive(s)) cycle
          nd = 3*size(model%plates(s)%conn, 1)
          do e = 1, size(model%plates(s)%conn, 2)
-            call plate_water_load(model, s, e, k, fe(1:nd), any_load)
+            call plate_water_load(model, s, e, k, istep, fe(1:nd), any_load)
             if (any_load) call scatter_plate_vector(model, model%plates(s), e, fe(1:nd), force)
          end do
       end do
    end subroutine add_plate_water
 
    !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
-   !> under level k: p = gamma_w (h - y)+ at the element's nodes, interpolated along it like
+   !> under level k, with the side of step istep: p = gamma_w (h - y)+ at the element's nodes, interpolated along it like
    !> its geometry (exact where it lies wholly below or above the level), pressing from the
    !> side *PLATE_WATER names (a plate is impermeable: the water or the soil's pore pressure
    !> on its other side is not this load). `loaded`: false (fe = 0) when p = 0 at every node
    !> or the set has no water.
-   subroutine plate_water_load(model, s, e, k, fe, loaded)
+   subroutine plate_water_load(model, s, e, k, istep, fe, loaded)
       type(model_t), intent(in) :: model
-      integer, intent(in) :: s, e, k
+      integer, intent(in) :: s, e, k, istep
       real(wp), intent(out) :: fe(:)
       logical, intent(out) :: loaded
       real(wp) :: t(2), q(2), p(3), x(2, 3)
-      integer :: j, nen
+      integer :: j, nen, side
       fe = 0.0_wp
       loaded = .false.
       if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
-      if (s > size(model%water%plate_side)) return
-      if (model%water%plate_side(s) == 0) return
+      side = model%water%plate_side_at(s, istep)
+      if (side == 0) return
       associate (pl => model%plates(s))
          nen = size(pl%conn, 1)
          x(:, 1:nen) = plate_element_x(model, pl, e)
@@ -123,7 +124,7 @@ contains
          ! the chord's direction; water on the left (+1) presses towards the right
          t = x(:, 2) - x(:, 1)
          t = t/norm2(t)
-         q = real(model%water%plate_side(s), wp)*[t(2), -t(1)]
+         q = real(side, wp)*[t(2), -t(1)]
          call beam_line_load(x(:, 1:nen), pl%section, model%analysis%kind == AXISYMMETRIC, &
             model%analysis%thickness, q, fe, p(1:nen))
       end associate

@@ -226,9 +226,9 @@ contains
                problem%system%pattern_disp(:, :, p) = 0.0_wp
             end do
          end if
-         call held_load(model, problem, eactive, model%water%level_at(istep), error)
+         call held_load(model, problem, eactive, model%water%level_at(istep), istep, error)
          if (allocated(error)) return
-         call gravity_water(model, problem, eactive, model%water%level_at(istep), error)
+         call gravity_water(model, problem, eactive, model%water%level_at(istep), istep, error)
          if (allocated(error)) return
          ! the K0 state's own out-of-balance: held until the first nil step
          if (.not. problem%phase%released) then
@@ -354,7 +354,8 @@ contains
       call forces_at_start(model, problem, all_on, .true., f, error)
       if (allocated(error)) return
       if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
-      call held_load(model, problem, all_on, model%water%level_at(1), error, all_joints=.true.)
+      call held_load(model, problem, all_on, model%water%level_at(1), 0, error, &
+         all_joints=.true.)
       if (allocated(error)) return
       ! on the free equations: at a support it is the support's reaction to the K0 state
       problem%phase%unbalanced = f - problem%system%initial_force
@@ -368,15 +369,16 @@ contains
    end subroutine k0_unbalance
 
    !> The held load (problem%system%initial_force): what the active sets hold.
-   !> `level`: the phreatic level in force (the weights below it are gamma_sat).
+   !> `level`: the phreatic level in force (the weights below it are gamma_sat); `istep`:
+   !> the step whose *PLATE_WATER sides are in force (0: those before the first step).
    !> Under gravity loading with water (phase_state_t%water_pattern > 0) it holds the
    !> forces of the steady pore pressures instead of the water on the faces, with the joint
    !> sets active now or, `all_joints`, all (the K0 state's out-of-balance is measured so).
-   subroutine held_load(model, problem, eactive, level, error, all_joints)
+   subroutine held_load(model, problem, eactive, level, istep, error, all_joints)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:)
-      integer, intent(in) :: level
+      integer, intent(in) :: level, istep
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: all_joints
       logical, allocatable :: jon(:), pon(:)
@@ -413,7 +415,7 @@ contains
          call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error)
          if (allocated(error)) return
          if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
-         call add_plate_water(model, pon, level, problem%system%initial_force)
+         call add_plate_water(model, pon, level, istep, problem%system%initial_force)
       end if
    end subroutine held_load
 
@@ -452,11 +454,11 @@ contains
    !> the effective weight and the total stresses (sigma' - lambda p m) lambda times the
    !> total weight and the water on the faces, as if the pore pressures rose with the weight.
    !> A phase whose gravity pattern is off holds the water on the faces as under K0.
-   subroutine gravity_water(model, problem, eactive, level, error)
+   subroutine gravity_water(model, problem, eactive, level, istep, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:)
-      integer, intent(in) :: level
+      integer, intent(in) :: level, istep
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: jon(:), pon(:)
       real(wp), allocatable :: w(:, :)
@@ -470,7 +472,7 @@ contains
       call add_water_faces(model, eactive, jon, level, w, error)
       if (allocated(error)) return
       if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
-      call add_plate_water(model, pon, level, w)
+      call add_plate_water(model, pon, level, istep, w)
       if (allocated(problem%phase%patterns_on)) then
          if (.not. problem%phase%patterns_on(k)) then
             ! no weight coming in: the water on the faces held, F_p's hold released
@@ -798,7 +800,7 @@ contains
       integer, intent(in) :: istep
       character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: k
+      integer :: k, s, side
       if (.not. model%water%used()) return
       k = model%water%level_at(istep)
       call set_steady_pressures(model, problem%system%rules, problem%state, k, error)
@@ -816,6 +818,19 @@ contains
             call reset_excess(problem%state)
             call add_line(lines, 'excess pore pressures set to zero')
          end if
+      end if
+      ! *PLATE_WATER of the step: the water's pressure on a plate face comes or goes
+      if (allocated(model%water%plate_side)) then
+         do s = 1, size(model%water%plate_side)
+            side = model%water%plate_side_at(s, istep)
+            if (side == model%water%plate_side_at(s, istep - 1)) cycle
+            if (side == 0) then
+               call add_line(lines, 'no water on plate set '//model%plates(s)%name)
+            else
+               call add_line(lines, 'water on the '//trim(merge('left ', 'right', side > 0))// &
+                  ' face of plate set '//model%plates(s)%name)
+            end if
+         end do
       end if
    end subroutine water_changes
 

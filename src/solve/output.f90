@@ -99,7 +99,8 @@ contains
             ! the water's pressure on the plate is one of its own loads (groundwater)
             call plate_results(model, problem%state%u, problem%state%plates, &
                problem%state%factors, s, r%plate_fields(s), error, &
-               model%water%level_at(max(problem%phase%index, 1)))
+               model%water%level_at(max(problem%phase%index, 1)), &
+               step=max(problem%phase%index, 1))
          else
             call plate_results(model, problem%state%u, problem%state%plates, &
                problem%state%factors, s, r%plate_fields(s), error)

@@ -8,10 +8,12 @@ module pecplas_water_type
    implicit none (type, external)
    private
 
-   public :: water_model_t, LEVEL_KEEP, LEVEL_NONE
+   public :: water_model_t, LEVEL_KEEP, LEVEL_NONE, PLATE_KEEP
 
    !> step_level values besides a level index: keep the level of the step before; no water.
    integer, parameter :: LEVEL_KEEP = 0, LEVEL_NONE = -1
+   !> step_plate value: the plate set keeps the water side of the step before.
+   integer, parameter :: PLATE_KEEP = 2
 
    type :: water_model_t
       !> Phreatic levels (*WATER), in deck order; the first is in force from the start.
@@ -27,7 +29,11 @@ module pecplas_water_type
       !> Per plate set (model%plates): the side the water stands on (*PLATE_WATER):
       !> +1 left, -1 right of the plate walked from its first node to its last, 0 none.
       integer, allocatable :: plate_side(:)
+      !> step_plate(s, i): the side plate set s takes from the start of step i on
+      !> (*PLATE_WATER inside a step: +1, -1, 0 none) or PLATE_KEEP.
+      integer, allocatable :: step_plate(:, :)
    contains
+      procedure :: plate_side_at => water_plate_side_at
       procedure :: used => water_used
       procedure :: level_at => water_level_at
       procedure :: wet => water_wet
@@ -62,6 +68,22 @@ contains
          if (this%step_level(i) > 0) k = this%step_level(i)
       end do
    end function water_level_at
+
+   !> The water side of plate set s in step istep (0: before the first step): +1 left,
+   !> -1 right, 0 none; the *PLATE_WATER before the steps, then those of steps 1 .. istep.
+   pure integer function water_plate_side_at(this, s, istep) result(side)
+      class(water_model_t), intent(in) :: this
+      integer, intent(in) :: s, istep
+      integer :: i
+      side = 0
+      if (.not. allocated(this%plate_side)) return
+      if (s < 1 .or. s > size(this%plate_side)) return
+      side = this%plate_side(s)
+      if (.not. allocated(this%step_plate)) return
+      do i = 1, min(istep, size(this%step_plate, 2))
+         if (this%step_plate(s, i) /= PLATE_KEEP) side = this%step_plate(s, i)
+      end do
+   end function water_plate_side_at
 
    !> True when element set s with material m takes water: porous and not dry.
    pure logical function water_wet(this, s, m)

@@ -12,6 +12,10 @@ construction) and the tools that show their phases.
 - excavation_cantilever_plate.inp: the same wall as a plate: its three stages remove the
   front joints of the plate's faces with their layers, and the head and the moment grow.
 - embankment_stages.inp: each lift settles the ground more.
+- excavation_wet.inp: the strutted excavation with the water table 2 m down and the pit kept
+  flooded: it completes, and each stage dug below the table lowers the sum of the vertical
+  reactions by the buoyant weight of the soil removed only (the water on the pit floor
+  replaces the rest).
 - The post-processing of the cantilever: Blum's estimate against its closed form, and the
   strip's moment integration against a linear stress; the numbers of doc/validation.md are
   those of these runs.
@@ -21,6 +25,7 @@ import math
 import subprocess
 from pathlib import Path
 
+import h5py
 import numpy as np
 import pytest
 
@@ -257,3 +262,35 @@ def test_validation_numbers_are_these_runs(excavation, pile_runs, embankment, pi
     bad = phases_report.check_runs(excavation, *pile_runs, embankment, *pile_gauss_runs,
                                    excavation_plate)
     assert not bad, bad + "\n(regenerate: python3 -m pecplas_py.scenes.phases_report)"
+
+
+@pytest.fixture(scope="module")
+def excavation_wet(tmp_path_factory):
+    return run_deck(EXAMPLES / "excavation_wet.inp", tmp_path_factory.mktemp("wet") / "wet.h5")
+
+
+def test_excavation_wet_pit_floor_water(excavation_wet):
+    """Vertical equilibrium of the flooded pit. The sum of the vertical reactions is minus the
+    sum of the external vertical forces (the internal forces of every element, joint and plate
+    sum to zero; the strut is horizontal): soil weights and the water on the free faces (the
+    water under the base goes into the base's reactions, so that sum is the grains' share).
+    A stage digging 10 m x 2 m of saturated sand (gamma_sat = 20) below the table removes
+    400 kN/m of weight and adds 2 m x 10 m of water on the pit floor (200 kN/m): the sum falls
+    by (gamma_sat - gamma_w) 20 = 200 kN/m, not 400 as in a dry pit. Tolerance: the residual
+    left on the free equations, at most TOLERANCE = 1e-4 of the load norm (<= the 600 kN/m
+    moved) per converged increment, summed over at most sqrt(2527) (Cauchy-Schwarz, 2527
+    equations): 50 x 1e-4 x 600 = 3 kN/m."""
+    with Results(excavation_wet) as r:
+        assert r.status == "completed"
+    with h5py.File(excavation_wet, "r") as f:
+        steps = f["history/step"][()]
+        glob = f["history/global_increment"][()]
+        ends = {int(s): int(g) for s, g in zip(steps, glob)}
+        ry = {s: f[f"increments/{g:06d}/reaction"][()][:, 1].sum() for s, g in ends.items()}
+        phases = [int(s) for s in sorted(ends)]
+        assert len(phases) == 4
+        # phases 3 and 4 dig 2 -> 4 m and 4 -> 6 m, below the table at 2 m
+        for k in (3, 4):
+            assert abs((ry[k] - ry[k - 1]) - (-(20.0 - 10.0) * 20.0)) <= 3.0
+        # the strut phase moves no weight
+        assert abs(ry[2] - ry[1]) <= 3.0
