@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # `make install PREFIX=DIR` (default ~/.local): builds the release profile with fpm and puts
-# pecplas, pecplas-path, pecplas-identify, pecplas-sensitivity, pecplas-sweep and pecplas-plot
-# (the Python sweep and picture tools, tools/pecplas_py/programs/pecplas_{sweep,plot}.py, each
-# stand-alone) into DIR/bin. fpm install
+# pecplas, pecplas-path, pecplas-identify, pecplas-sensitivity, pecplas-sweep, pecplas-plot and
+# pecplas-slope (the Python sweep, picture and limit-equilibrium tools,
+# tools/pecplas_py/programs/pecplas_{sweep,plot,slope}.py, each stand-alone) into DIR/bin. fpm install
 # would also install the benchmark programs, so it installs into a staging directory and only
 # the four are copied.
 set -euo pipefail
@@ -20,7 +20,8 @@ for p in "${PROGRAMS[@]}"; do
 done
 install -m 755 tools/pecplas_py/programs/pecplas_sweep.py "$prefix/bin/pecplas-sweep"
 install -m 755 tools/pecplas_py/programs/pecplas_plot.py "$prefix/bin/pecplas-plot"
-echo "installed into $prefix/bin: ${PROGRAMS[*]} pecplas-sweep pecplas-plot"
+install -m 755 tools/pecplas_py/programs/pecplas_slope.py "$prefix/bin/pecplas-slope"
+echo "installed into $prefix/bin: ${PROGRAMS[*]} pecplas-sweep pecplas-plot pecplas-slope"
 case ":$PATH:" in
   *":$prefix/bin:"*) ;;
   *) echo "note: $prefix/bin is not on PATH (add: export PATH=\"$prefix/bin:\$PATH\")" ;;

@@ -24,10 +24,13 @@ contains
 
    !> Numbers the free DOFs node by node (keeps the bandwidth of the mesh numbering; the
    !> sparse solvers reorder anyway). Supports and DISPLACEMENT patterns are constrained.
-   subroutine new_dofs(model, dofs, error)
+   !> `supports_on(g)` (a phased run): whether the named support g (model%supports%names)
+   !> is active, i.e. constrains its dofs; without it every support does.
+   subroutine new_dofs(model, dofs, error, supports_on)
       type(model_t), intent(in) :: model
       type(dofs_t), intent(out) :: dofs
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: supports_on(:)
       logical, allocatable :: fixed(:, :)
       integer :: i, k, n, d
 
@@ -53,6 +56,7 @@ contains
       end if
       if (allocated(model%supports%node)) then
          do k = 1, size(model%supports%node)
+            if (.not. support_entry_on(model, k, supports_on)) cycle
             fixed(model%supports%dof(k), model%supports%node(k)) = .true.
          end do
       end if
@@ -82,6 +86,20 @@ contains
          end do
       end do
    end subroutine new_dofs
+
+   !> Whether support entry k constrains its dof: always for an unnamed support, else when
+   !> its group is on (or no activity is given).
+   pure logical function support_entry_on(model, k, supports_on) result(on)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: k
+      logical, intent(in), optional :: supports_on(:)
+      on = .true.
+      if (.not. present(supports_on)) return
+      if (.not. allocated(model%supports%group)) return
+      if (size(model%supports%group) /= size(model%supports%node)) return
+      if (model%supports%group(k) == 0) return
+      on = supports_on(model%supports%group(k))
+   end function support_entry_on
 
    !> "node 12 (x = 0.5, y = 1) direction y" for equation `k`.
    function dofs_describe(this, model, k) result(text)

@@ -42,9 +42,17 @@ module pecplas_model_loads
       real(wp), allocatable :: vector(:, :)
    end type load_pattern_t
 
-   !> Fixed (zero) displacements.
+   !> Length of a support group's name.
+   integer, parameter, public :: SUPPORT_NAME_LEN = 64
+
+   !> Fixed (zero) displacements, one entry per (node, dof) and group.
    type :: support_t
       integer, allocatable :: node(:), dof(:)
+      !> Group of each entry: 0 for an unnamed *BOUNDARY (always active), g > 0 for the
+      !> *BOUNDARY, NAME=names(g) that a phase may activate or deactivate. May be absent
+      !> (every entry permanent).
+      integer, allocatable :: group(:)
+      character(len=SUPPORT_NAME_LEN), allocatable :: names(:)
    end type support_t
 
    type :: step_t

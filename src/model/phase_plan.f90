@@ -5,11 +5,12 @@
 module pecplas_model_phase_plan
    use pecplas_model_type, only: model_t
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, TARGET_ELEMENTS, &
-      TARGET_JOINTS
+      TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS
    implicit none (type, external)
    private
 
-   public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes
+   public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes, &
+      target_activity, target_count
 
 contains
 
@@ -56,7 +57,7 @@ contains
                if (ch%target == TARGET_ELEMENTS) then
                   if (.not. eseen(ch%set)) eactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
                   eseen(ch%set) = .true.
-               else
+               else if (ch%target == TARGET_JOINTS) then
                   if (.not. jseen(ch%set)) jactive(ch%set) = ch%kind /= CHANGE_ACTIVATE
                   jseen(ch%set) = .true.
                end if
@@ -64,6 +65,59 @@ contains
          end do
       end do
    end subroutine initial_activity
+
+   !> How many things of kind `target` the model has (element sets, joint sets, load
+   !> patterns, named supports).
+   pure integer function target_count(model, target) result(n)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: target
+      n = 0
+      select case (target)
+      case (TARGET_ELEMENTS)
+         n = size(model%mesh%esets)
+      case (TARGET_JOINTS)
+         if (allocated(model%joint_sets)) n = size(model%joint_sets)
+      case (TARGET_PATTERNS)
+         if (allocated(model%patterns)) n = size(model%patterns)
+      case (TARGET_SUPPORTS)
+         if (allocated(model%supports%names)) n = size(model%supports%names)
+      end select
+   end function target_count
+
+   !> Whether each thing of kind `target` is active in step `istep` once its changes are
+   !> applied (istep = 0: before the first step). A thing whose first mention in the steps
+   !> is an *ACTIVATE is inactive until then; every other one is active. (Joint sets that a
+   !> deactivation leaves hanging are not followed here: step_activity.)
+   pure function target_activity(model, target, istep) result(on)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: target, istep
+      logical, allocatable :: on(:), seen(:)
+      integer :: i, c
+      allocate (on(target_count(model, target)), source=.true.)
+      allocate (seen(size(on)), source=.false.)
+      if (.not. allocated(model%steps)) return
+      do i = 1, size(model%steps)
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= target .or. ch%set < 1) cycle
+               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+               if (.not. seen(ch%set)) on(ch%set) = ch%kind /= CHANGE_ACTIVATE
+               seen(ch%set) = .true.
+            end associate
+         end do
+      end do
+      do i = 1, min(istep, size(model%steps))
+         if (.not. allocated(model%steps(i)%changes)) cycle
+         do c = 1, size(model%steps(i)%changes)
+            associate (ch => model%steps(i)%changes(c))
+               if (ch%target /= target .or. ch%set < 1) cycle
+               if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
+               on(ch%set) = ch%kind == CHANGE_ACTIVATE
+            end associate
+         end do
+      end do
+   end function target_activity
 
    !> Applies the activations and deactivations of step `istep` to the masks. A joint set
    !> one of whose nodes loses its last active massif element (a node that had one) is
@@ -82,7 +136,7 @@ contains
             if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) cycle
             if (ch%target == TARGET_ELEMENTS) then
                eactive(ch%set) = ch%kind == CHANGE_ACTIVATE
-            else
+            else if (ch%target == TARGET_JOINTS) then
                jactive(ch%set) = ch%kind == CHANGE_ACTIVATE
             end if
          end associate

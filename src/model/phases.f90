@@ -1,5 +1,5 @@
 !> What a phase changes in the model (doc/deck.md, Phases): a *STEP may, at its start,
-!> deactivate or activate element sets and joint sets, change the material of an element
+!> deactivate or activate element sets, joint sets, load patterns and named supports, change the material of an element
 !> set or the law of a joint set, and reset the displacements. The action (applying the
 !> changes to a run's state) is in pecplas_phases_start.
 module pecplas_model_phases
@@ -8,7 +8,7 @@ module pecplas_model_phases
 
    public :: phase_change_t
    public :: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES
-   public :: TARGET_ELEMENTS, TARGET_JOINTS
+   public :: TARGET_ELEMENTS, TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_NAMES
    public :: START_ZERO, START_WISHED
 
    !> Kinds of change, and their deck keywords CHANGE_NAMES(kind).
@@ -16,9 +16,15 @@ module pecplas_model_phases
       CHANGE_LAW = 4
    character(len=*), parameter :: CHANGE_NAMES(4) = [character(len=16) :: '*DEACTIVATE', &
       '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW']
-   !> What a change acts on: an element set (model%mesh%esets) or a joint set
-   !> (model%joint_sets).
-   integer, parameter :: TARGET_ELEMENTS = 1, TARGET_JOINTS = 2
+   !> What a change acts on: an element set (model%mesh%esets), a joint set
+   !> (model%joint_sets), a load pattern (model%patterns) or a named support group
+   !> (model%supports%names). TARGET_NAMES(target) names each in messages. A new kind of
+   !> thing that phases switch adds its value here, its lookup in the deck reader
+   !> (pecplas_io_deck_reader_phases) and its action in pecplas_phases_start.
+   integer, parameter :: TARGET_ELEMENTS = 1, TARGET_JOINTS = 2, TARGET_PATTERNS = 3, &
+      TARGET_SUPPORTS = 4
+   character(len=*), parameter :: TARGET_NAMES(4) = [character(len=12) :: 'element set', &
+      'joint set', 'load pattern', 'support']
    !> How an activated element set starts: stress-free, or with the initial (*INITIAL_STRESS)
    !> stress of the ground it replaces ("wished in place").
    integer, parameter :: START_ZERO = 0, START_WISHED = 1
@@ -27,7 +33,7 @@ module pecplas_model_phases
    type :: phase_change_t
       integer :: kind = 0
       integer :: target = TARGET_ELEMENTS
-      !> Index of the element set or joint set.
+      !> Index of the element set, joint set, pattern or support group (by `target`).
       integer :: set = 0
       !> CHANGE_MATERIAL: index in model%materials; CHANGE_LAW: index in model%laws.
       integer :: new = 0

@@ -24,8 +24,10 @@ module pecplas_phases_start
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
-      CHANGE_LAW, TARGET_ELEMENTS, START_WISHED
-   use pecplas_model_phase_plan, only: step_activity, attached_nodes
+      CHANGE_LAW, TARGET_ELEMENTS, TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS, &
+      TARGET_NAMES, START_WISHED
+   use pecplas_model_phase_plan, only: step_activity, attached_nodes, target_activity
+   use pecplas_fe_dofs, only: dofs_t, new_dofs
    use pecplas_problem_type, only: problem_t, set_orphans
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
       PROCEDURE_NAMES, HOLD_NONE, HOLD_WEIGHT
@@ -77,9 +79,17 @@ contains
             trim(PROCEDURE_NAMES(problem%phase%procedure))]
       end if
       indexed = .false.
+      problem%phase%renumbered = .false.
       associate (step => model%steps(istep), st => problem%state)
          do c = 1, size(step%changes)
             associate (ch => step%changes(c))
+               ! load patterns and supports: their activity (below) says what they do
+               if (ch%target == TARGET_PATTERNS .or. ch%target == TARGET_SUPPORTS) then
+                  call add_line(lines, trim(merge('activate  ', 'deactivate', &
+                     ch%kind == CHANGE_ACTIVATE))//' '//trim(TARGET_NAMES(ch%target))//' '// &
+                     ch%set_name)
+                  cycle
+               end if
                refactorise = .true.
                select case (ch%kind)
                case (CHANGE_DEACTIVATE)
@@ -106,10 +116,17 @@ contains
                      if (.not. indexed) call index%build(model)
                      indexed = .true.
                      if (model%joint_sets(ch%set)%is_katona()) then
-                        call katona_on(problem, ch%set)
-                        call add_line(lines, 'activate Katona contact set '//ch%set_name// &
-                           ' (no contact force, in stick, its gaps and slips measured from '// &
-                           'the current displacements)')
+                        call katona_on(problem, ch%set, ch%start == START_WISHED)
+                        if (ch%start == START_WISHED) then
+                           call add_line(lines, 'activate Katona contact set '//ch%set_name// &
+                              ' (wished in place: the contact forces of the initial stresses, '// &
+                              'in stick, its gaps and slips measured from the current '// &
+                              'displacements)')
+                        else
+                           call add_line(lines, 'activate Katona contact set '//ch%set_name// &
+                              ' (no contact force, in stick, its gaps and slips measured from '// &
+                              'the current displacements)')
+                        end if
                      else
                         call activate_joints(model, problem, index, ch%set, error)
                         if (allocated(error)) return
@@ -141,6 +158,16 @@ contains
             call reset_displacements(problem)
             call add_line(lines, 'reset displacements')
          end if
+         ! supports installed or released: the equations follow
+         if (allocated(problem%phase%supports_on)) then
+            if (any(target_activity(model, TARGET_SUPPORTS, istep) .neqv. &
+                    problem%phase%supports_on)) then
+               call renumber(model, problem, target_activity(model, TARGET_SUPPORTS, istep), &
+                  error)
+               if (allocated(error)) return
+               refactorise = .true.
+            end if
+         end if
          ! joint sets left hanging by a deactivation go with it
          eactive = st%sets%active
          allocate (jactive(0))
@@ -160,6 +187,15 @@ contains
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
             problem%system%pattern_disp, error, eactive)
          if (allocated(error)) return
+         ! an inactive pattern loads nothing: a deactivated one's load is released below
+         if (allocated(problem%phase%patterns_on)) then
+            problem%phase%patterns_on = target_activity(model, TARGET_PATTERNS, istep)
+            do p = 1, size(problem%phase%patterns_on)
+               if (problem%phase%patterns_on(p)) cycle
+               problem%system%pattern_force(:, :, p) = 0.0_wp
+               problem%system%pattern_disp(:, :, p) = 0.0_wp
+            end do
+         end if
          call held_load(model, problem, eactive, error)
          if (allocated(error)) return
          ! the K0 state's own out-of-balance: held until the first nil step
@@ -289,6 +325,7 @@ contains
       ! on the free equations: at a support it is the support's reaction to the K0 state
       problem%phase%unbalanced = f - problem%system%initial_force
       problem%phase%base_reaction = problem%phase%unbalanced
+      if (problem%katona%active) problem%phase%katona_f0 = problem%katona%f
       where (problem%system%dofs%eq == 0) problem%phase%unbalanced = 0.0_wp
       where (problem%system%dofs%eq > 0) problem%phase%base_reaction = 0.0_wp
       do j = 1, size(jkeep)
@@ -463,11 +500,14 @@ contains
       end associate
    end subroutine katona_off
 
-   !> The Katona doublets of joint set js come back: in stick, no force, bond intact, their
-   !> gap and slip measured from the current relative displacements.
-   subroutine katona_on(problem, js)
+   !> The Katona doublets of joint set js come back: in stick, bond intact, their gap and
+   !> slip measured from the current relative displacements; without force, or (`wished`)
+   !> with the contact forces of the initial stresses (the normal and shear stress of the
+   !> soil beside them, as at the start of a run).
+   subroutine katona_on(problem, js, wished)
       type(problem_t), intent(inout) :: problem
       integer, intent(in) :: js
+      logical, intent(in) :: wished
       real(wp), allocatable :: z(:, :)
       associate (kt => problem%katona)
          if (.not. kt%active) return
@@ -485,6 +525,9 @@ contains
             kt%f = 0.0_wp
             kt%z = z
          end where
+         if (wished .and. allocated(problem%phase%katona_f0)) then
+            where (spread(kt%set_of == js, 1, 2)) kt%f = problem%phase%katona_f0
+         end if
          call kt%begin_increment()
       end associate
    end subroutine katona_on
@@ -516,12 +559,55 @@ contains
       end associate
    end subroutine swap_material
 
+   !> The equations numbered again with the named supports `son` active (pecplas_fe_dofs):
+   !> a dof a support now holds stays where it is (phase_state_t%held_u); a released dof
+   !> becomes an equation, and the reaction the support exerted there is part of the
+   !> phase's carried out-of-balance (start_phase), released over the step. The solvers
+   !> start afresh on the new system (analysis and factorisation).
+   subroutine renumber(model, problem, son, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      logical, intent(in) :: son(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(dofs_t) :: old
+      old = problem%system%dofs
+      call new_dofs(model, problem%system%dofs, error, son)
+      if (allocated(error)) return
+      associate (eq => problem%system%dofs%eq, ph => problem%phase)
+         where (eq == 0 .and. old%eq > 0) ph%held_u = problem%state%u
+         where (eq > 0) ph%held_u = 0.0_wp
+         ! the K0 reactions and out-of-balance keep to their kind of equation
+         if (allocated(ph%base_reaction)) then
+            where (eq > 0) ph%base_reaction = 0.0_wp
+         end if
+         if (allocated(ph%unbalanced)) then
+            where (eq == 0) ph%unbalanced = 0.0_wp
+         end if
+         ph%supports_on = son
+         ph%renumbered = .true.
+      end associate
+      associate (lin => problem%linear)
+         if (allocated(lin%solver)) then
+            call lin%solver%free()
+            deallocate (lin%solver)
+         end if
+         if (allocated(lin%tsolver)) then
+            call lin%tsolver%free()
+            deallocate (lin%tsolver)
+         end if
+         call lin%kbuild%forget()
+         lin%k_owner = 0
+         lin%tangent_factorised = .false.
+      end associate
+   end subroutine renumber
+
    !> Displacements back to zero; the strains and joint relative displacements measured
    !> from them too. Stresses and histories stay.
    subroutine reset_displacements(problem)
       type(problem_t), intent(inout) :: problem
       integer :: s
       problem%state%u = 0.0_wp
+      if (allocated(problem%phase%held_u)) problem%phase%held_u = 0.0_wp
       do s = 1, size(problem%state%sets)
          problem%state%sets(s)%strain = 0.0_wp
          problem%state%sets(s)%strain_trial = 0.0_wp

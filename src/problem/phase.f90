@@ -44,6 +44,20 @@ module pecplas_problem_phase
       !> the external load at the start of the step and taken to zero along the step's load
       !> path (pecplas_solve_residual's load_vectors).
       real(wp), allocatable :: carried(:, :)
+      !> Whether each load pattern and each named support (model%supports%names) is active
+      !> in the phase in force (pecplas_model_phase_plan's target_activity).
+      logical, allocatable :: patterns_on(:), supports_on(:)
+      !> The displacements at which the active supports hold their dofs (2, nnode): those
+      !> of the nodes when the support was activated (zero for a support active from the
+      !> start); added to the imposed displacements (pecplas_solve_residual's load_vectors).
+      real(wp), allocatable :: held_u(:, :)
+      !> The equations were numbered again at the start of the phase in force (a support
+      !> activated or released): vectors of the old numbering are void.
+      logical :: renumbered = .false.
+      !> The contact forces (2, ndoublet) of the Katona doublets in the initial state (before
+      !> the sets inactive at the start go off): where a set activated with
+      !> STRESS=WISHED_IN_PLACE starts.
+      real(wp), allocatable :: katona_f0(:, :)
    end type phase_state_t
 
 end module pecplas_problem_phase

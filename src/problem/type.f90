@@ -18,7 +18,8 @@ module pecplas_problem_type
    use pecplas_problem_stats, only: run_stats_t
    use pecplas_problem_position, only: run_position_t
    use pecplas_problem_phase, only: phase_state_t
-   use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes
+   use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes, target_activity
+   use pecplas_model_phases, only: TARGET_SUPPORTS, TARGET_PATTERNS
    use pecplas_fe_joint_assembly, only: setup_joint_state
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
@@ -101,7 +102,15 @@ contains
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (problem%state%u(2, nnode), source=0.0_wp)
       allocate (problem%state%factors(npat), source=0.0_wp)
-      call new_dofs(model, problem%system%dofs, error)
+      if (problem%phase%phased) then
+         ! the named supports and patterns a step first activates are off until then
+         problem%phase%supports_on = target_activity(model, TARGET_SUPPORTS, 0)
+         problem%phase%patterns_on = target_activity(model, TARGET_PATTERNS, 0)
+         allocate (problem%phase%held_u(2, nnode), source=0.0_wp)
+         call new_dofs(model, problem%system%dofs, error, problem%phase%supports_on)
+      else
+         call new_dofs(model, problem%system%dofs, error)
+      end if
       if (allocated(error)) return
       if (problem%phase%phased) call set_orphans(model, problem, eactive, jactive)
       allocate (problem%system%initial_force(2, nnode), source=0.0_wp)

@@ -124,6 +124,8 @@ contains
       logical :: refactorise
       call start_phase(model, problem, istep, run%fint_conv, refactorise, lines, error)
       if (allocated(error)) return
+      ! equations numbered again: the last increment's displacement is of the old numbering
+      if (problem%phase%renumbered .and. allocated(run%du_prev)) deallocate (run%du_prev)
       if (refactorise) then
          call factorise_stiffness(model, problem, .false., error)
          if (allocated(error)) return

@@ -47,6 +47,8 @@ contains
          if (ftarget(p) /= f0(p)) fq = fq + (ftarget(p) - f0(p))*problem%system%pattern_force(:, :, p)
          up = up + path_factor(f0(p), ftarget(p), tau_up)*problem%system%pattern_disp(:, :, p)
       end do
+      ! a phase's supports hold their dofs where they were installed
+      if (allocated(problem%phase%held_u)) up = up + problem%phase%held_u
       ! a phase's out-of-balance, carried from the step start to zero at its end
       if (allocated(problem%phase%carried)) then
          fbase = fbase + problem%phase%carried

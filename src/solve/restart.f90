@@ -248,6 +248,9 @@ contains
             end if
             call replay_phases(model, problem, nint(v(1)), error)
             if (allocated(error)) return
+            if (allocated(p%du_prev)) then
+               if (size(p%du_prev) /= problem%system%dofs%neq) deallocate (p%du_prev)
+            end if
             if (data%has('phase_carried')) then
                call data%get('phase_carried', size(st%u), v, error)
                if (allocated(error)) return
@@ -326,7 +329,13 @@ contains
       real(wp), allocatable :: v(:), peak(:), why(:)
       associate (p => problem%position)
          if (data%has('du_prev')) then
-            call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
+            ! (a phased run numbers its equations for the phase in force: checked after
+            ! its phases are replayed)
+            if (problem%phase%phased) then
+               call data%get('du_prev', data%length('du_prev'), p%du_prev, error)
+            else
+               call data%get('du_prev', problem%system%dofs%neq, p%du_prev, error)
+            end if
             if (allocated(error)) return
          end if
          ! the method the chain starts with (older restart data: the run's own)

@@ -1,5 +1,5 @@
 """Installation: `cmake --install` of the CMake build into a temporary prefix puts the four
-programs, pecplas-sweep and pecplas-plot into PREFIX/bin; the installed pecplas runs the default deck and
+programs, pecplas-sweep, pecplas-plot and pecplas-slope into PREFIX/bin; the installed pecplas runs the default deck and
 reports its version and libraries (README, doc/build.md). `make test` builds with CMake first
 and sets PECPLAS_BIN to that build's pecplas; without it the test is skipped."""
 import os
@@ -12,7 +12,7 @@ from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 PROGRAMS = ["pecplas", "pecplas-path", "pecplas-identify", "pecplas-sensitivity", "pecplas-sweep",
-            "pecplas-plot"]
+            "pecplas-plot", "pecplas-slope"]
 
 
 @pytest.fixture(scope="module")
@@ -28,7 +28,7 @@ def prefix(tmp_path_factory):
 
 
 def test_installed_programs(prefix):
-    """Exactly the six programs, executable (no benchmark or test program)."""
+    """Exactly the seven programs, executable (no benchmark or test program)."""
     assert sorted(q.name for q in (prefix / "bin").iterdir()) == sorted(PROGRAMS)
     assert all(os.access(prefix / "bin" / q, os.X_OK) for q in PROGRAMS)
 
@@ -49,6 +49,13 @@ def test_installed_pecplas_runs_default_deck(prefix, tmp_path):
         key = f"{int(r.history('global_increment')[fac.argmax()]):06d}"
         s = -r.field(key, "displacement")[centre, 1]
     assert abs(s - 0.078) < 0.0005
+
+
+def test_installed_slope_help(prefix):
+    """pecplas-slope is installed as a script that runs with the system Python."""
+    r = subprocess.run([str(prefix / "bin/pecplas-slope"), "--help"], capture_output=True,
+                       text=True)
+    assert r.returncode == 0 and "--phreatic" in r.stdout
 
 
 def test_installed_version(prefix):

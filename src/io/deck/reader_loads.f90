@@ -17,16 +17,26 @@ module pecplas_io_deck_reader_loads
 
 contains
 
-   !> *BOUNDARY -- data: target, dof_first[, dof_last] | target, X|Y|R|Z|XY|ALL
+   !> *BOUNDARY [, NAME=group] -- data: target, dof_first[, dof_last] | target,
+   !> X|Y|R|Z|XY|ALL. A named support is one that phases may activate and deactivate.
    subroutine read_boundary(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
       type(error_t), allocatable, intent(out) :: error
       type(field_t), allocatable :: f(:)
       type(raw_item_t) :: item
+      character(len=:), allocatable :: group
+      logical :: named
       integer :: i
-      call block%kw%check_keys(state%lines%get(block%at), [character(len=1) ::], error)
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=4) :: 'NAME'], error)
       if (allocated(error)) return
+      call block%kw%get('NAME', group, named)
+      if (.not. named) group = ''
+      if (named) then
+         call check_name(state, block%at, group, error)
+         if (allocated(error)) return
+      end if
+      item%group = group
       call no_data_error(state, block, 'target, dof_first[, dof_last]', error)
       if (allocated(error)) return
       do i = block%first, block%last

@@ -260,7 +260,7 @@ contains
       type(raw_item_t) :: item
       logical :: found
       integer :: i, n
-      call block%kw%check_keys(state%lines%get(block%at), [character(len=14) :: 'NAME', &
+      call block%kw%check_keys(state%lines%get(block%at), [character(len=19) :: 'NAME', &
          'INCREMENTS', 'CONTROL', 'MAX_INCREMENTS', 'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', &
          'NODE', 'DOF', 'DISPLACEMENT', 'RESET_DISPLACEMENTS'], error)
       if (allocated(error)) return

@@ -1,10 +1,11 @@
 !> Phase changes of the deck (doc/deck.md, Phases): *DEACTIVATE, *ACTIVATE [, STRESS=ZERO |
 !> WISHED_IN_PLACE], *CHANGE_MATERIAL and *CHANGE_LAW after a *STEP line (before its
 !> *END STEP) change the model at the start of that step. Read into the open step, then
-!> resolved to set, material and law indices and checked phase by phase once the whole deck
-!> is read: a set activated while active or deactivated while inactive, a load or imposed
-!> displacement on a node that no active element or joint holds in a phase, an unknown set,
-!> material or law are errors at the deck line.
+!> resolved to the index of an element set, joint set, load pattern or named support (and
+!> of a material or law) and checked phase by phase once the whole deck is read: a thing
+!> activated while active or deactivated while inactive, a step that drives an inactive
+!> pattern, a load or imposed displacement on a node that no active element or joint holds
+!> in a phase, an unknown name, material or law are errors at the deck line.
 module pecplas_io_deck_reader_phases
    use pecplas_base_error, only: error_t
    use pecplas_base_kinds, only: wp
@@ -15,8 +16,9 @@ module pecplas_io_deck_reader_phases
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
-      START_WISHED
-   use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes
+      START_WISHED, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_NAMES
+   use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes, &
+      target_activity
    implicit none (type, external)
    private
 
@@ -195,12 +197,8 @@ contains
          ch%set_name = model%mesh%esets(part)%name
       end if
       ch%target = TARGET_ELEMENTS
-      if (ch%set == 0 .and. allocated(model%joint_sets)) then
-         do j = 1, size(model%joint_sets)
-            if (same_name(model%joint_sets(j)%name, raw%set)) ch%set = j
-         end do
-         if (ch%set > 0) ch%target = TARGET_JOINTS
-      end if
+      ! the kinds of thing a phase switches, looked up in this order (doc/deck.md, Phases)
+      if (ch%set == 0) call find_target(model, raw%set, ch%target, ch%set)
       if (ch%set == 0) then
          list = ''
          do k = 1, size(model%mesh%esets)
@@ -211,16 +209,58 @@ contains
                call add_name(list, model%joint_sets(k)%name)
             end do
          end if
-         call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
-            "'; known sets:"//list, error)
+         if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
+            if (allocated(model%patterns)) then
+               do k = 1, size(model%patterns)
+                  call add_name(list, model%patterns(k)%name)
+               end do
+            end if
+            if (allocated(model%supports%names)) then
+               do k = 1, size(model%supports%names)
+                  call add_name(list, trim(model%supports%names(k)))
+               end do
+            end if
+            call line_error(state, raw%at, "no element set, joint set, load pattern or "// &
+               "named support '"//raw%set//"'; known:"//list, error)
+         else
+            call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
+               "'; known sets:"//list, error)
+         end if
+         return
+      end if
+      if (ch%target == TARGET_PATTERNS .or. ch%target == TARGET_SUPPORTS) then
+         select case (ch%kind)
+         case (CHANGE_MATERIAL, CHANGE_LAW)
+            call line_error(state, raw%at, "'"//raw%set//"' is a "// &
+               trim(TARGET_NAMES(ch%target))//': '//trim(CHANGE_NAMES(ch%kind))// &
+               ' changes element sets or joint sets', error)
+            return
+         end select
+         if (ch%kind == CHANGE_ACTIVATE .and. ch%start == START_WISHED) then
+            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets "// &
+               "and Katona contact sets; '"//raw%set//"' is a "// &
+               trim(TARGET_NAMES(ch%target)), error)
+            return
+         end if
+         if (ch%target == TARGET_PATTERNS) then
+            if (model%patterns(ch%set)%kind == LOAD_DISPLACEMENT) then
+               call line_error(state, raw%at, "load pattern '"//raw%set//"' imposes "// &
+                  'displacements: a phase cannot switch it (its factor drives it; a '// &
+                  'support that a phase installs or removes is a *BOUNDARY, NAME=)', error)
+               return
+            end if
+         end if
          return
       end if
       select case (ch%kind)
       case (CHANGE_ACTIVATE)
          if (ch%target == TARGET_JOINTS .and. ch%start == START_WISHED) then
-            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets; "// &
-               "joint set '"//raw%set//"' starts from the stresses of the soil beside it", error)
-            return
+            if (.not. model%joint_sets(ch%set)%is_katona()) then
+               call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets "// &
+                  "and Katona contact sets; joint set '"//raw%set//"' starts from the "// &
+                  'stresses of the soil beside it anyway', error)
+               return
+            end if
          end if
       case (CHANGE_MATERIAL)
          if (ch%target /= TARGET_ELEMENTS) then
@@ -266,6 +306,40 @@ contains
       end select
    end subroutine resolve_change
 
+   !> The thing a phase-change line names, looked up among the joint sets, the load patterns
+   !> and the named supports, in this order (element sets come first, by the caller);
+   !> set = 0 when none has that name.
+   subroutine find_target(model, name, target, set)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: target, set
+      integer :: k
+      set = 0
+      target = TARGET_ELEMENTS
+      if (allocated(model%joint_sets)) then
+         do k = size(model%joint_sets), 1, -1
+            if (same_name(model%joint_sets(k)%name, name)) set = k
+         end do
+         target = TARGET_JOINTS
+         if (set > 0) return
+      end if
+      if (allocated(model%patterns)) then
+         do k = size(model%patterns), 1, -1
+            if (same_name(model%patterns(k)%name, name)) set = k
+         end do
+         target = TARGET_PATTERNS
+         if (set > 0) return
+      end if
+      if (allocated(model%supports%names)) then
+         do k = size(model%supports%names), 1, -1
+            if (same_name(trim(model%supports%names(k)), name)) set = k
+         end do
+         target = TARGET_SUPPORTS
+         if (set > 0) return
+      end if
+      target = TARGET_ELEMENTS
+   end subroutine find_target
+
    !> Walks the phases: activation of an active set, deactivation of an inactive one, and a
    !> load or imposed displacement acting in a phase on a node that no active element or
    !> joint holds are errors.
@@ -273,12 +347,14 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eact(:), jact(:), dropped(:), held(:)
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), pact(:), sact(:)
       integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
       logical :: on
       call initial_activity(model, eact, jact)
+      pact = target_activity(model, TARGET_PATTERNS, 0)
+      sact = target_activity(model, TARGET_SUPPORTS, 0)
       emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
       allocate (jlaw(size(jact)))
       do c = 1, size(jact)
@@ -292,21 +368,37 @@ contains
             do c = 1, size(step%changes)
                associate (ch => step%changes(c))
                   if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
-                     if (ch%target == TARGET_ELEMENTS) then
+                     select case (ch%target)
+                     case (TARGET_ELEMENTS)
                         on = eact(ch%set)
-                     else
+                     case (TARGET_JOINTS)
                         on = jact(ch%set)
-                     end if
+                     case (TARGET_PATTERNS)
+                        on = pact(ch%set)
+                     case default
+                        on = sact(ch%set)
+                     end select
                      if (ch%kind == CHANGE_ACTIVATE .and. on) then
-                        call line_error(state, state%steps(s)%changes(c)%at, "set '"// &
-                           ch%set_name//"' is already active in step '"//step%name//"'", error)
+                        call line_error(state, state%steps(s)%changes(c)%at, &
+                           trim(what(ch%target))//" '"//ch%set_name// &
+                           "' is already active in step '"//step%name//"'", error)
                         return
                      end if
                      if (ch%kind == CHANGE_DEACTIVATE .and. .not. on) then
-                        call line_error(state, state%steps(s)%changes(c)%at, "set '"// &
-                           ch%set_name//"' is not active in step '"//step%name//"'", error)
+                        call line_error(state, state%steps(s)%changes(c)%at, &
+                           trim(what(ch%target))//" '"//ch%set_name// &
+                           "' is not active in step '"//step%name//"'", error)
                         return
                      end if
+                     if (ch%target == TARGET_PATTERNS) pact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                     ! (--strict) a pattern activated at factor 0 that the step does not drive
+                     if (ch%target == TARGET_PATTERNS .and. ch%kind == CHANGE_ACTIVATE) then
+                        if (factors(ch%set) == 0.0_wp .and. .not. any(step%pattern == ch%set)) &
+                           call model%warnings%add("load pattern '"//ch%set_name//"' is "// &
+                           "activated at factor 0 and step '"//step%name//"' does not drive "// &
+                           'it: it loads nothing', ch%file, ch%line)
+                     end if
+                     if (ch%target == TARGET_SUPPORTS) sact(ch%set) = ch%kind == CHANGE_ACTIVATE
                   end if
                end associate
                ! (--strict) a change to what the set already has changes nothing
@@ -329,9 +421,16 @@ contains
             call step_activity(model, s, eact, jact, dropped)
             held = attached_nodes(model, eact, jact)
             do k = 1, size(step%pattern)
+               if (.not. pact(step%pattern(k))) then
+                  call line_error(state, state%steps(s)%at, "step '"//step%name// &
+                     "' drives load pattern '"//model%patterns(step%pattern(k))%name// &
+                     "', which is not active in it: *ACTIVATE it first", error)
+                  return
+               end if
                factors(step%pattern(k)) = step%target(k)
             end do
             do p = 1, npat
+               if (.not. pact(p)) cycle
                if (factors(p) == 0.0_wp .and. .not. any(step%pattern == p)) cycle
                call check_pattern(state, model, s, p, held, error)
                if (allocated(error)) return
@@ -340,13 +439,21 @@ contains
       end do
    end subroutine check_phases
 
+   !> 'set' for element and joint sets (as the messages have always said), else the kind.
+   pure function what(target) result(text)
+      integer, intent(in) :: target
+      character(len=:), allocatable :: text
+      text = 'set'
+      if (target == TARGET_PATTERNS .or. target == TARGET_SUPPORTS) text = TARGET_NAMES(target)
+   end function what
+
    pure subroutine step_activity_one(ch, eact, jact)
       type(phase_change_t), intent(in) :: ch
       logical, intent(inout) :: eact(:), jact(:)
       if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) return
       if (ch%target == TARGET_ELEMENTS) then
          eact(ch%set) = ch%kind == CHANGE_ACTIVATE
-      else
+      else if (ch%target == TARGET_JOINTS) then
          jact(ch%set) = ch%kind == CHANGE_ACTIVATE
       end if
    end subroutine step_activity_one

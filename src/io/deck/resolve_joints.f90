@@ -267,6 +267,7 @@ contains
                if (dupof(sup%node(k)) == 0) cycle
                sup%node = [sup%node, dupof(sup%node(k))]
                sup%dof = [sup%dof, sup%dof(k)]
+               if (allocated(sup%group)) sup%group = [sup%group, sup%group(k)]
             end do
          end if
       end associate

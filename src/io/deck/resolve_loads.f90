@@ -7,7 +7,8 @@ module pecplas_io_deck_resolve_loads
    use pecplas_io_deck_state, only: deck_state_t, raw_item_t, raw_step_t, line_error
    use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: mesh_t
-   use pecplas_model_loads, only: load_pattern_t, step_t, load_kind, LOAD_DISPLACEMENT
+   use pecplas_model_loads, only: load_pattern_t, step_t, load_kind, LOAD_DISPLACEMENT, &
+      SUPPORT_NAME_LEN
    use pecplas_base_strings, only: itoa
    implicit none (type, external)
    private
@@ -45,27 +46,54 @@ contains
       nodes = mesh%nsets(k)%nodes
    end subroutine target_nodes
 
-   !> Fixed dofs, each (node, dof) once.
+   !> Fixed dofs, each (node, dof) once per group: the unnamed *BOUNDARY lines (group 0,
+   !> always active) and each *BOUNDARY, NAME= (a support that phases switch; the lines of
+   !> several blocks of one name add up).
    subroutine resolve_supports(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: fixed(:, :)
+      logical, allocatable :: fixed(:, :, :)
+      character(len=SUPPORT_NAME_LEN), allocatable :: names(:)
       integer, allocatable :: nodes(:)
-      integer :: i, j, d
-      allocate (fixed(2, model%mesh%nnode()))
-      fixed = .false.
+      integer :: i, j, d, g, k
+      allocate (names(0))
+      do i = 1, state%nboundary
+         associate (grp => state%boundary(i)%group)
+            if (len(grp) == 0) cycle
+            if (len(grp) > SUPPORT_NAME_LEN) then
+               call line_error(state, state%boundary(i)%at, 'support name longer than '// &
+                  itoa(SUPPORT_NAME_LEN)//' characters', error)
+               return
+            end if
+            if (.not. any([(same_name(trim(names(k)), grp), k=1, size(names))])) &
+               names = [character(len=SUPPORT_NAME_LEN) :: names, grp]
+         end associate
+      end do
+      allocate (fixed(2, model%mesh%nnode(), 0:size(names)), source=.false.)
       do i = 1, state%nboundary
          call target_nodes(state, model%mesh, state%boundary(i), nodes, error)
          if (allocated(error)) return
+         g = 0
+         do k = 1, size(names)
+            if (same_name(trim(names(k)), state%boundary(i)%group)) g = k
+         end do
          do j = 1, size(nodes)
             do d = state%boundary(i)%dof(1), state%boundary(i)%dof(2)
-               fixed(d, nodes(j)) = .true.
+               fixed(d, nodes(j), g) = .true.
             end do
          end do
       end do
-      model%supports%node = [((j, d=1, count(fixed(:, j))), j=1, size(fixed, 2))]
-      model%supports%dof = pack(spread([1, 2], 2, size(fixed, 2)), fixed)
+      allocate (model%supports%node(0), model%supports%dof(0), model%supports%group(0))
+      do g = 0, size(names)
+         associate (fx => fixed(:, :, g))
+            model%supports%node = [model%supports%node, &
+               ((j, d=1, count(fx(:, j))), j=1, size(fx, 2))]
+            model%supports%dof = [model%supports%dof, pack(spread([1, 2], 2, size(fx, 2)), fx)]
+            model%supports%group = [model%supports%group, (g, k=1, count(fx))]
+         end associate
+      end do
+      model%supports%names = names
    end subroutine resolve_supports
 
    !> model%patterns from the *LOAD blocks: node sets expanded to (node, dof) entries,

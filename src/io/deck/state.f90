@@ -65,6 +65,8 @@ module pecplas_io_deck_state
       !> PRESSURE varying with depth: value(1) + gradient (y_ref - y).
       real(wp) :: gradient = 0.0_wp, y_ref = 0.0_wp
       integer :: at = 0
+      !> *BOUNDARY, NAME=group: the named support the line belongs to ('' for none).
+      character(len=:), allocatable :: group
    end type raw_item_t
 
    !> One *LOAD block: its data lines as items.
