@@ -41,7 +41,7 @@ help:
 	@echo "                array through pecplas-sweep (doc/sweep.md; needs root or Slurm)"
 	@echo "  make build-mpi  the MPI build with the MUMPS solver in $(MPI_DIR) (installs OpenMPI"
 	@echo "                and MUMPS as root; doc/mpi.md): mpirun -np N $(MPI_DIR)/pecplas DECK"
-	@echo "  make test-mpi MUMPS on 1 and 2 ranks against the serial solvers (5 decks, 1e-8)"
+	@echo "  make test-mpi MUMPS on 1 and 2 ranks against the serial solvers (6 decks, 1e-8)"
 	@echo "                and the MUMPS unit tests under mpirun -np 1 and 2"
 	@echo "  make deps     check (as root: install) compilers, libraries and Python packages"
 	@echo "  make s1       scene S1 (shear box): all decks of input/s1, PNGs in output/s1"
@@ -159,7 +159,8 @@ s6: build
 # default serial builds stay as they are.
 MPI_DIR ?= build/cmake-mpi
 MPI_DECKS ?= input/default.inp test/data/plasticity/footing_t6.inp input/s2/s2_katona.inp \
-  test/data/katona/float_goodman6_axi.inp input/examples/excavation_cantilever.inp
+  test/data/katona/float_goodman6_axi.inp input/examples/excavation_cantilever.inp \
+  test/data/plates/footing_beam.inp
 build-mpi:
 	@PECPLAS_MPI=1 bash tools/install_deps.sh
 	cmake -S . -B $(MPI_DIR) -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -170,7 +171,7 @@ test-mpi: build-mpi
 	$(PYTHON) -m pecplas_py.checks.mpi_check $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
 	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
 	  --signal test/data/plasticity/footing_t6.inp --write-failure test/data/plasticity/footing_t6.inp \
-	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps
+	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps phases phases_switch plates
 
 bench: deps
 	@bash tools/bench.sh

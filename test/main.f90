@@ -8,7 +8,10 @@ program tester
    use test_s1, only: collect_s1
    use test_initial, only: collect_initial
    use test_phases, only: collect_phases
+   use test_anchors, only: collect_anchors
+   use test_joint_faces, only: collect_joint_faces
    use test_phases_switch, only: collect_phases_switch
+   use test_plates, only: collect_plates
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
    use test_estimator, only: collect_estimator
@@ -88,6 +91,8 @@ program tester
    suites = [suites, new_testsuite('s1', collect_s1)]
    suites = [suites, new_testsuite('initial', collect_initial)]
    suites = [suites, new_testsuite('phases', collect_phases)]
+   suites = [suites, new_testsuite('anchors', collect_anchors)]
+   suites = [suites, new_testsuite('joint_faces', collect_joint_faces)]
    suites = [suites, new_testsuite('phases_switch', collect_phases_switch)]
    suites = [suites, new_testsuite('cli', collect_cli)]
    suites = [suites, new_testsuite('model_mesh_tools', collect_model_mesh_tools)]
@@ -152,6 +157,7 @@ program tester
    suites = [suites, new_testsuite('massif_kernels', collect_massif_kernels)]
    suites = [suites, new_testsuite('linalg_omp_serial', collect_linalg_omp_serial)]
    suites = [suites, new_testsuite('cmd_args', collect_cmd_args)]
+   suites = [suites, new_testsuite('plates', collect_plates)]
 
    nargs = command_argument_count()
    arg1 = ''; arg2 = ''

@@ -51,7 +51,7 @@ contains
          bad('bad_number_exp', 5, '*NODES', 'expected y as a number', "'2.0e'"), &
          bad('bad_number_abc', 10, '*MATERIAL', 'expected E as a number', "'abc'"), &
          bad('missing_material_value', 10, '*MATERIAL', 'missing value for NU'), &
-         bad('bad_dof', 15, '*BOUNDARY', "bad dof '3'", 'X Y R Z XY ALL'), &
+         bad('bad_dof', 15, '*BOUNDARY', "bad dof '4'", 'X Y R Z ROT XY ALL'), &
          bad('bad_dof_word', 17, '*LOAD', "bad dof 'XZ'")], error)
    end subroutine test_numbers
 

@@ -60,6 +60,20 @@ contains
             'increments phase by phase by hand')
          return
       end if
+      if (allocated(model%plates)) then
+         if (size(model%plates) > 0) then
+            call input_error(error, 'advise: not available for a deck with plates (*PLATE): '// &
+               'its mesh refinements do not carry plates along')
+            return
+         end if
+      end if
+      if (allocated(model%anchors)) then
+         if (size(model%anchors) > 0) then
+            call input_error(error, 'advise: not available for a deck with anchors (*ANCHOR): '// &
+               'its mesh refinements do not carry anchors along')
+            return
+         end if
+      end if
       if (size(model%steps) < 1) then
          call input_error(error, 'advise: the deck has no *STEP')
          return

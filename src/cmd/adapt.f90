@@ -57,6 +57,22 @@ contains
             'the mesh of the deck by hand')
          return
       end if
+      if (allocated(model%plates)) then
+         if (size(model%plates) > 0) then
+            code = command_error('pecplas', EXIT_INPUT, deck//': adaptive refinement '// &
+               '(--target-error, *ADAPT) is not available for a deck with plates (*PLATE): '// &
+               'the refinement does not carry plates along; refine the mesh of the deck by hand')
+            return
+         end if
+      end if
+      if (allocated(model%anchors)) then
+         if (size(model%anchors) > 0) then
+            code = command_error('pecplas', EXIT_INPUT, deck//': adaptive refinement '// &
+               '(--target-error, *ADAPT) is not available for a deck with anchors (*ANCHOR): '// &
+               'the refinement does not carry anchors along; refine the mesh of the deck by hand')
+            return
+         end if
+      end if
       ! the deck's *SOLVER THREADS= or OMP_NUM_THREADS, else one thread, as for one run
       threads = resolve_threads(model%solver%threads)
       call apply_threads(threads)

@@ -15,6 +15,8 @@ module pecplas_fe_assembly
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_fe_joint_assembly, only: add_joint_stiffness, add_joint_forces
+   use pecplas_fe_anchor_assembly, only: add_anchor_stiffness, add_anchor_forces
+   use pecplas_fe_plate_assembly, only: add_plate_stiffness, add_plate_forces
    use pecplas_base_timers, only: wall_time
    use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    use pecplas_fe_element_context, only: element_context
@@ -76,6 +78,10 @@ contains
       ! the joint blocks as triplets (few); a failure is reported after the massif's own
       call builder%start(dofs%neq, 16, upper)
       call add_joint_stiffness(model, dofs, state%joints, tangent, builder%coo, joint_error, part)
+      ! the plate blocks after the joints' (none without plates)
+      if (.not. allocated(joint_error)) call add_plate_stiffness(model, dofs, state%plates, &
+         tangent, builder%coo, joint_error, part)
+      call add_anchor_stiffness(model, dofs, state%anchors, tangent, builder%coo, part)
       if (allocated(joint_error)) builder%coo%nnz = 0
       call builder%pattern(eptr, elist, k, error)
       if (allocated(joint_error)) call builder%forget()
@@ -242,7 +248,7 @@ contains
          xe(:, 1:size(conn)), d, ke, error)
    end subroutine element_stiffness
 
-   !> Internal forces fint(2, nnode) = sum B^T sigma dV for the trial displacements `u`,
+   !> Internal forces fint(2, ncolumns) = sum B^T sigma dV for the trial displacements `u`,
    !> updating trial stresses, strains, history and tangents from the converged state.
    !> `law_time` (if present) accumulates the wall time of the constitutive updates (summed
    !> over threads). Elements run in parallel (OpenMP), CHUNK at a time, each updating its own
@@ -308,6 +314,8 @@ contains
       end do
       if (timed) t0 = wall_time()
       call add_joint_forces(model, u, state%joints, fint, error)
+      if (.not. allocated(error)) call add_anchor_forces(model, u, state%anchors, fint)
+      if (.not. allocated(error)) call add_plate_forces(model, u, state%plates, fint, error)
       if (timed) law_time = law_time + tlaw + (wall_time() - t0)
    end subroutine internal_forces
 

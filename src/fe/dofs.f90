@@ -1,9 +1,13 @@
-!> Equation numbering: two DOFs per node (x/r, y/z); supports and imposed displacements are
-!> constrained and eliminated from the system of equations.
+!> Equation numbering: two DOFs per node (x/r, y/z), and a rotation at the nodes of plates
+!> (row 1 of the rotation columns of the nodal arrays, pecplas_model_columns); supports and
+!> imposed displacements are constrained and eliminated from the system of equations.
+!> Numbered node by node, a node's rotation after its translations; a model without plates
+!> has the numbering it always had.
 module pecplas_fe_dofs
    use pecplas_base_error, only: error_t, input_error
    use pecplas_model_loads, only: LOAD_DISPLACEMENT
    use pecplas_model_type, only: model_t
+   use pecplas_model_columns, only: nodal_columns, rotation_column
    implicit none (type, external)
    private
 
@@ -12,9 +16,10 @@ module pecplas_fe_dofs
    type :: dofs_t
       !> Number of free equations.
       integer :: neq = 0
-      !> eq(d, node) > 0: equation number of a free DOF; 0: constrained.
+      !> eq(d, column) > 0: equation number of a free DOF; 0: constrained. Columns of the
+      !> nodal arrays: nodes 1..nnode, then the rotations (row 1; row 2 is never free).
       integer, allocatable :: eq(:, :)
-      !> node and direction of each equation (for messages).
+      !> column and row of each equation in the nodal arrays.
       integer, allocatable :: eq_node(:), eq_dir(:)
    contains
       procedure :: describe => dofs_describe
@@ -32,11 +37,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: supports_on(:)
       logical, allocatable :: fixed(:, :)
-      integer :: i, k, n, d
+      integer :: i, k, n, d, c
 
       n = model%mesh%nnode()
       ! Nodes of no element carry no stiffness: they are not unknowns (and not a mechanism).
-      allocate (fixed(2, n), source=.true.)
+      allocate (fixed(2, nodal_columns(model)), source=.true.)
       do i = 1, size(model%mesh%esets)
          associate (conn => model%mesh%esets(i)%conn)
             do k = 1, size(conn, 2)
@@ -54,21 +59,44 @@ contains
             end do
          end do
       end if
+      ! anchor nodes too (a node that only a bar holds)
+      if (allocated(model%anchors)) then
+         do i = 1, size(model%anchors)
+            do k = 1, size(model%anchors(i)%conn, 2)
+               do d = 1, 2
+                  if (model%anchors(i)%conn(d, k) > 0) fixed(:, model%anchors(i)%conn(d, k)) = &
+                     .false.
+               end do
+            end do
+         end do
+      end if
+      ! plate nodes and their rotations too (a plate may stand on nodes of no element)
+      if (allocated(model%plates)) then
+         do i = 1, size(model%plates)
+            do k = 1, size(model%plates(i)%conn, 2)
+               do d = 1, size(model%plates(i)%conn, 1)
+                  c = model%plates(i)%conn(d, k)
+                  fixed(:, c) = .false.
+                  fixed(1, rotation_column(model, c)) = .false.
+               end do
+            end do
+         end do
+      end if
       if (allocated(model%supports%node)) then
          do k = 1, size(model%supports%node)
             if (.not. support_entry_on(model, k, supports_on)) cycle
-            fixed(model%supports%dof(k), model%supports%node(k)) = .true.
+            call fix(model%supports%node(k), model%supports%dof(k))
          end do
       end if
       if (allocated(model%patterns)) then
          do i = 1, size(model%patterns)
             if (model%patterns(i)%kind /= LOAD_DISPLACEMENT) cycle
             do k = 1, size(model%patterns(i)%node)
-               fixed(model%patterns(i)%dof(k), model%patterns(i)%node(k)) = .true.
+               call fix(model%patterns(i)%node(k), model%patterns(i)%dof(k))
             end do
          end do
       end if
-      allocate (dofs%eq(2, n), source=0)
+      allocate (dofs%eq(2, size(fixed, 2)), source=0)
       dofs%neq = count(.not. fixed)
       if (dofs%neq == 0) then
          call input_error(error, 'every degree of freedom is constrained: nothing to solve')
@@ -84,7 +112,24 @@ contains
             dofs%eq_node(k) = i
             dofs%eq_dir(k) = d
          end do
+         c = rotation_column(model, i)
+         if (c == 0) cycle
+         if (fixed(1, c)) cycle
+         k = k + 1
+         dofs%eq(1, c) = k
+         dofs%eq_node(k) = c
+         dofs%eq_dir(k) = 1
       end do
+   contains
+      !> Holds dof d (3: the rotation, where the node carries one) of `node`.
+      subroutine fix(node, d)
+         integer, intent(in) :: node, d
+         if (d <= 2) then
+            fixed(d, node) = .true.
+         else if (rotation_column(model, node) > 0) then
+            fixed(1, rotation_column(model, node)) = .true.
+         end if
+      end subroutine fix
    end subroutine new_dofs
 
    !> Whether support entry k constrains its dof: always for an unnamed support, else when
@@ -116,7 +161,11 @@ contains
          return
       end if
       node = this%eq_node(k)
-      if (model%analysis%kind == 2) then
+      if (node > model%mesh%nnode()) then
+         node = findloc(model%node_rotation, node - model%mesh%nnode(), 1)
+         write (buf, '(a,i0,a,g0.6,a,g0.6,a)') 'node ', model%mesh%node_id(node), ' (', &
+            model%mesh%x(1, node), ', ', model%mesh%x(2, node), ') rotation'
+      else if (model%analysis%kind == 2) then
          write (buf, '(a,i0,a,g0.6,a,g0.6,a,a)') 'node ', model%mesh%node_id(node), ' (r = ', &
             model%mesh%x(1, node), ', z = ', model%mesh%x(2, node), ') direction ', &
             axi_names(this%eq_dir(k))

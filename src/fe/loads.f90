@@ -3,6 +3,8 @@
 module pecplas_fe_loads
    use pecplas_base_kinds, only: wp
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
+   use pecplas_model_columns, only: nodal_columns, rotation_column
+   use pecplas_fe_plate_assembly, only: add_plate_load
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: load_pattern_t
@@ -17,18 +19,21 @@ module pecplas_fe_loads
 
 contains
 
-   !> force(2, nnode, npattern) and displacement(2, nnode, npattern) of every pattern.
+   !> force(2, ncolumns, npattern) and displacement(2, ncolumns, npattern) of every pattern
+   !> (the columns of the plate rotations after the nodes: pecplas_model_columns).
    !> `active` (phases): the body forces and gravity of the active element sets only.
-   subroutine pattern_vectors(model, rules, force, displacement, error, active)
+   subroutine pattern_vectors(model, rules, force, displacement, error, active, plate_active)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       real(wp), allocatable, intent(out) :: force(:, :, :), displacement(:, :, :)
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: active(:)
-      integer :: p, k, nnode, npat, nen
+      !> Phases: the loads of the active plate sets only.
+      logical, intent(in), optional :: plate_active(:)
+      integer :: p, k, nnode, npat, nen, c, d
       real(wp) :: fe(6)
 
-      nnode = model%mesh%nnode()
+      nnode = nodal_columns(model)
       npat = 0
       if (allocated(model%patterns)) npat = size(model%patterns)
       allocate (force(2, nnode, npat), displacement(2, nnode, npat), source=0.0_wp)
@@ -37,11 +42,13 @@ contains
             select case (pat%kind)
             case (LOAD_FORCE)
                do k = 1, size(pat%node)
-                  force(pat%dof(k), pat%node(k), p) = force(pat%dof(k), pat%node(k), p) + pat%value(k)
+                  call column_of(pat%node(k), pat%dof(k), c, d)
+                  if (c > 0) force(d, c, p) = force(d, c, p) + pat%value(k)
                end do
             case (LOAD_DISPLACEMENT)
                do k = 1, size(pat%node)
-                  displacement(pat%dof(k), pat%node(k), p) = pat%value(k)
+                  call column_of(pat%node(k), pat%dof(k), c, d)
+                  if (c > 0) displacement(d, c, p) = pat%value(k)
                end do
             case (LOAD_PRESSURE)
                do k = 1, size(pat%pressure)
@@ -62,8 +69,32 @@ contains
                   if (allocated(error)) return
                end do
             end select
+            ! plate line loads (PLATE_LOAD) and plate weights (GRAVITY naming a plate set)
+            if (allocated(pat%plate)) then
+               do k = 1, size(pat%plate)
+                  if (present(plate_active)) then
+                     if (.not. plate_active(pat%plate(k))) cycle
+                  end if
+                  call add_plate_load(model, pat%plate(k), pat%plate_vector(:, k), &
+                     pat%kind == LOAD_GRAVITY, force(:, :, p))
+               end do
+            end if
          end associate
       end do
+   contains
+      !> Column and row of dof `dof` of `node` in the nodal arrays (c = 0: a rotation the
+      !> node does not carry, e.g. the duplicate of a split plate node).
+      pure subroutine column_of(node, dof, c, d)
+         integer, intent(in) :: node, dof
+         integer, intent(out) :: c, d
+         if (dof <= 2) then
+            c = node
+            d = dof
+         else
+            c = rotation_column(model, node)
+            d = 1
+         end if
+      end subroutine column_of
    end subroutine pattern_vectors
 
    !> Consistent nodal forces of the pressure of edge k of pattern `pat`: uniform, or linear in

@@ -4,6 +4,8 @@
 module pecplas_fe_state
    use pecplas_base_kinds, only: wp
    use pecplas_joints_state, only: joint_state_t
+   use pecplas_structures_anchor_state, only: anchor_state_t
+   use pecplas_structures_state, only: plate_state_t
    implicit none (type, external)
    private
 
@@ -28,13 +30,18 @@ module pecplas_fe_state
    end type set_state_t
 
    type :: fe_state_t
-      !> Converged nodal displacements (2, nnode).
+      !> Converged nodal displacements (2, ncolumns): the nodes, then the plate rotations
+      !> (pecplas_model_columns).
       real(wp), allocatable :: u(:, :)
       !> Factors of the load patterns at the converged state.
       real(wp), allocatable :: factors(:)
       type(set_state_t), allocatable :: sets(:)
       !> Joint sets (PECJOIN), committed and rolled back with the massif.
       type(joint_state_t) :: joints
+      !> Anchors and struts, committed and rolled back with the massif.
+      type(anchor_state_t) :: anchors
+      !> Plate sets, committed and rolled back with the massif.
+      type(plate_state_t) :: plates
       !> True while the points' tangents (massif and joints) are those of the converged
       !> state's last update: set by commit, cleared by rollback (the tangents are then those
       !> of the discarded attempt's last iterate).
@@ -62,6 +69,8 @@ contains
          end associate
       end do
       call this%joints%commit()
+      call this%anchors%commit()
+      call this%plates%commit()
       this%converged_tangents = .true.
    end subroutine state_commit
 
@@ -77,6 +86,8 @@ contains
          end associate
       end do
       call this%joints%rollback()
+      call this%anchors%rollback()
+      call this%plates%rollback()
       this%converged_tangents = .false.
    end subroutine state_rollback
 

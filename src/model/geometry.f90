@@ -85,12 +85,13 @@ contains
       end do
    end subroutine check_distortion
 
-   !> Joints are compared through their face-1 node pair (a, b) (springs: their doublet). Same pair twice: a warning; two joints sharing a face-1
+   !> Joints are compared through their face-1 node pair (a, b) (springs: their doublet). Same pair twice, and
+   !> the same face-2 nodes (the two faces of a line share face 1): a warning; two joints sharing a face-1
    !> node whose faces run the same way from it: an error (the faces overlap).
    subroutine check_joints(model, error)
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: head(:), next(:), js(:), je(:), a(:), b(:)
+      integer, allocatable :: head(:), next(:), js(:), je(:), a(:), b(:), f2(:, :)
       logical, allocatable :: spring(:)
       integer :: s, e, n, k, q, m, shared
       real(wp) :: u(2), v(2)
@@ -102,7 +103,8 @@ contains
          n = n + size(model%joint_sets(s)%conn, 2)
       end do
       if (n == 0) return
-      allocate (js(n), je(n), a(n), b(n), spring(n), next(2*n), head(model%mesh%nnode()))
+      allocate (js(n), je(n), a(n), b(n), spring(n), next(2*n), head(model%mesh%nnode()), &
+         f2(2, n))
       head = 0
       next = 0
       k = 0
@@ -114,6 +116,9 @@ contains
                a(k) = set%conn(1, e)
                b(k) = set%conn(2, e)
                spring(k) = set%is_spring()
+               ! face 2 (both faces of a line share face 1: FACES=BOTH)
+               f2(:, k) = 0
+               if (.not. spring(k)) f2(:, k) = [minval(set%conn(3:4, e)), maxval(set%conn(3:4, e))]
                do m = 1, 2
                   q = merge(a(k), b(k), m == 1)
                   call compare(q)
@@ -135,7 +140,7 @@ contains
          entry = head(q)
          do while (entry > 0)
             o = (entry + 1)/2
-            if (same_pair(a(o), b(o), a(k), b(k))) then
+            if (same_pair(a(o), b(o), a(k), b(k)) .and. all(f2(:, o) == f2(:, k))) then
                msg = 'joint '//joint_text(k)//' is on the same nodes as joint '// &
                   joint_text(o)//location(o)//': their stiffnesses add up (a joint '// &
                   'written twice?)'

@@ -14,17 +14,20 @@ module pecplas_model_loads
    !> Kinds of pattern; LOAD_KINDS(k) is the deck word of kind k (*LOAD, TYPE=...).
    enum, bind(c)
       enumerator :: LOAD_FORCE = 1, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
+      enumerator :: LOAD_PLATE
    end enum
    public :: LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY, LOAD_DISPLACEMENT
-   character(len=*), parameter :: LOAD_KINDS(5) = [character(len=12) :: 'FORCE', 'PRESSURE', &
-      'BODY_FORCE', 'GRAVITY', 'DISPLACEMENT']
+   public :: LOAD_PLATE
+   character(len=*), parameter :: LOAD_KINDS(6) = [character(len=12) :: 'FORCE', 'PRESSURE', &
+      'BODY_FORCE', 'GRAVITY', 'DISPLACEMENT', 'PLATE_LOAD']
 
    type :: load_pattern_t
       character(len=:), allocatable :: name
       !> LOAD_FORCE, LOAD_PRESSURE, LOAD_BODY_FORCE, LOAD_GRAVITY or LOAD_DISPLACEMENT.
       integer :: kind = 0
       !> FORCE / DISPLACEMENT: one entry per (node, dof): value = force or displacement
-      !> at factor 1. dof 1 = x (r), 2 = y (z).
+      !> at factor 1. dof 1 = x (r), 2 = y (z), 3 = rotation of a plate node (a moment, an
+      !> imposed rotation).
       integer, allocatable :: node(:), dof(:)
       real(wp), allocatable :: value(:)
       !> PRESSURE: edges (3, n) as in edge_set_t (third node 0 for 2-node edges) and the
@@ -40,12 +43,18 @@ module pecplas_model_loads
       !> GRAVITY: element sets and unit direction (2, n), magnitude = material unit weight.
       integer, allocatable :: eset(:)
       real(wp), allocatable :: vector(:, :)
+      !> PLATE_LOAD: plate sets (index in model%plates) and the load per unit length of
+      !> plate (2, n), global x, y; GRAVITY naming a plate set: the set and the unit
+      !> direction (2, n), magnitude the plate's weight w.
+      integer, allocatable :: plate(:)
+      real(wp), allocatable :: plate_vector(:, :)
    end type load_pattern_t
 
    !> Length of a support group's name.
    integer, parameter, public :: SUPPORT_NAME_LEN = 64
 
-   !> Fixed (zero) displacements, one entry per (node, dof) and group.
+   !> Fixed (zero) displacements, one entry per (node, dof) and group; dof 3: the rotation
+   !> of a plate node.
    type :: support_t
       integer, allocatable :: node(:), dof(:)
       !> Group of each entry: 0 for an unnamed *BOUNDARY (always active), g > 0 for the

@@ -5,12 +5,12 @@
 module pecplas_model_phase_plan
    use pecplas_model_type, only: model_t
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, TARGET_ELEMENTS, &
-      TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS
+      TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_PLATES, TARGET_ANCHORS
    implicit none (type, external)
    private
 
    public :: is_phased, initial_activity, step_activity, attached_nodes, massif_nodes, &
-      target_activity, target_count
+      target_activity, target_count, plate_activity, initial_anchor_activity
 
 contains
 
@@ -81,6 +81,10 @@ contains
          if (allocated(model%patterns)) n = size(model%patterns)
       case (TARGET_SUPPORTS)
          if (allocated(model%supports%names)) n = size(model%supports%names)
+      case (TARGET_PLATES)
+         if (allocated(model%plates)) n = size(model%plates)
+      case (TARGET_ANCHORS)
+         if (allocated(model%anchors)) n = size(model%anchors)
       end select
    end function target_count
 
@@ -154,10 +158,13 @@ contains
       end do
    end subroutine step_activity
 
-   !> Nodes of an active element of an active element set or of an active joint set.
-   pure function attached_nodes(model, eactive, jactive) result(held)
+   !> Nodes of an active element of an active element set, of an active joint set or of an
+   !> active plate set (`pactive`; absent: every plate), and of an active anchor set when
+   !> `aactive` is given.
+   pure function attached_nodes(model, eactive, jactive, pactive, aactive) result(held)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
+      logical, intent(in), optional :: pactive(:), aactive(:)
       logical, allocatable :: held(:)
       integer :: s
       allocate (held(model%mesh%nnode()), source=.false.)
@@ -167,7 +174,34 @@ contains
       do s = 1, size(jactive)
          if (jactive(s)) held(nodes_of(model%joint_sets(s)%conn)) = .true.
       end do
+      if (present(aactive)) then
+         do s = 1, size(aactive)
+            if (aactive(s)) held(nodes_of(model%anchors(s)%conn)) = .true.
+         end do
+      end if
+      if (.not. allocated(model%plates)) return
+      do s = 1, size(model%plates)
+         if (present(pactive)) then
+            if (.not. pactive(s)) cycle
+         end if
+         held(nodes_of(model%plates(s)%conn)) = .true.
+      end do
    end function attached_nodes
+
+   !> Activity of the plate sets in step `istep` (target_activity of TARGET_PLATES).
+   pure function plate_activity(model, istep) result(pactive)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep
+      logical, allocatable :: pactive(:)
+      pactive = target_activity(model, TARGET_PLATES, istep)
+   end function plate_activity
+
+   !> Activity of the anchor sets before the first step (target_activity of TARGET_ANCHORS).
+   pure function initial_anchor_activity(model) result(aactive)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: aactive(:)
+      aactive = target_activity(model, TARGET_ANCHORS, 0)
+   end function initial_anchor_activity
 
    !> Nodes of any massif element (active or not).
    pure function massif_nodes(model) result(held)

@@ -6,6 +6,7 @@ module pecplas_model_type
    use pecplas_model_options, only: analysis_t, solver_options_t, output_options_t
    use pecplas_massif_materials_type, only: material_box_t
    use pecplas_model_joints, only: joint_set_t
+   use pecplas_model_plates, only: plate_set_t
    use pecplas_model_initial, only: initial_stress_t
    use pecplas_joints_laws_type, only: interface_law_box_t
    use pecplas_model_contact, only: katona_contact_t
@@ -13,6 +14,7 @@ module pecplas_model_type
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_units, only: units_t
    use pecplas_model_adapt_request, only: adapt_request_t
+   use pecplas_model_anchors, only: anchor_set_t
    implicit none (type, external)
    private
 
@@ -35,6 +37,13 @@ module pecplas_model_type
       type(interface_law_box_t), allocatable :: laws(:)
       type(katona_contact_t), allocatable :: contacts(:)
       type(joint_set_t), allocatable :: joint_sets(:)
+      !> Anchors and struts (*ANCHOR): bars on the translations of their nodes.
+      type(anchor_set_t), allocatable :: anchors(:)
+      !> Plate (beam) sets (*PLATE) and the rotation of each node: node_rotation(i) = r > 0
+      !> when node i carries a plate (its rotation is column nnode + r of the nodal arrays,
+      !> pecplas_model_columns), 0 otherwise. Empty without plates.
+      type(plate_set_t), allocatable :: plates(:)
+      integer, allocatable :: node_rotation(:)
       type(support_t) :: supports
       !> Initial stresses (*INITIAL_STRESS), applied in order (later entries overwrite).
       type(initial_stress_t), allocatable :: initial_stresses(:)

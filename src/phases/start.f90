@@ -22,13 +22,16 @@ module pecplas_phases_start
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
+   use pecplas_model_columns, only: nodal_columns
    use pecplas_model_loads, only: LOAD_GRAVITY
    use pecplas_model_phases, only: CHANGE_DEACTIVATE, CHANGE_ACTIVATE, CHANGE_MATERIAL, &
       CHANGE_LAW, TARGET_ELEMENTS, TARGET_JOINTS, TARGET_PATTERNS, TARGET_SUPPORTS, &
-      TARGET_NAMES, START_WISHED
+      TARGET_NAMES, START_WISHED, TARGET_PLATES, TARGET_ANCHORS
    use pecplas_model_phase_plan, only: step_activity, attached_nodes, target_activity
    use pecplas_fe_dofs, only: dofs_t, new_dofs
+   use pecplas_fe_plate_assembly, only: activate_plate
    use pecplas_problem_type, only: problem_t, set_orphans
+   use pecplas_phases_anchors, only: start_anchors
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
       PROCEDURE_NAMES, HOLD_NONE, HOLD_WEIGHT
    use pecplas_fe_state, only: set_state_t
@@ -65,10 +68,11 @@ contains
       logical, intent(out) :: refactorise
       character(len=LINE_LEN), allocatable, intent(out) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:)
+      logical, allocatable :: eactive(:), jactive(:), dropped(:), held(:), pactive(:), &
+         aactive(:)
       type(mesh_index_t) :: index
       integer :: c, j, p
-      logical :: indexed
+      logical :: indexed, anchors_changed
 
       allocate (lines(0))
       refactorise = .false.
@@ -80,8 +84,12 @@ contains
       end if
       indexed = .false.
       problem%phase%renumbered = .false.
+      ! anchors: the prestress of the phase before ends, the step's anchor changes apply
+      call start_anchors(model, problem%state, istep, anchors_changed, lines)
+      if (anchors_changed) refactorise = .true.
       associate (step => model%steps(istep), st => problem%state)
          do c = 1, size(step%changes)
+            if (step%changes(c)%target == TARGET_ANCHORS) cycle
             associate (ch => step%changes(c))
                ! load patterns and supports: their activity (below) says what they do
                if (ch%target == TARGET_PATTERNS .or. ch%target == TARGET_SUPPORTS) then
@@ -93,7 +101,10 @@ contains
                refactorise = .true.
                select case (ch%kind)
                case (CHANGE_DEACTIVATE)
-                  if (ch%target == TARGET_ELEMENTS) then
+                  if (ch%target == TARGET_PLATES) then
+                     st%plates%sets(ch%set)%active = .false.
+                     call add_line(lines, 'deactivate plate set '//ch%set_name)
+                  else if (ch%target == TARGET_ELEMENTS) then
                      st%sets(ch%set)%active = .false.
                      call add_line(lines, 'deactivate element set '//ch%set_name)
                   else
@@ -102,7 +113,12 @@ contains
                      call add_line(lines, 'deactivate joint set '//ch%set_name)
                   end if
                case (CHANGE_ACTIVATE)
-                  if (ch%target == TARGET_ELEMENTS) then
+                  if (ch%target == TARGET_PLATES) then
+                     call activate_plate(model, st%u, st%plates, ch%set, error)
+                     if (allocated(error)) return
+                     call add_line(lines, 'activate plate set '//ch%set_name// &
+                        ' (free of forces, its strains counted from the current displacements)')
+                  else if (ch%target == TARGET_ELEMENTS) then
                      call activate_set(model, problem, ch%set, ch%start == START_WISHED, error)
                      if (allocated(error)) return
                      if (ch%start == START_WISHED) then
@@ -182,10 +198,13 @@ contains
          end do
          ! nodes no active element or joint holds: out of the system
          call set_orphans(model, problem, eactive, jactive)
-         held = attached_nodes(model, eactive, jactive)
+         allocate (pactive(0))
+         if (allocated(st%plates%sets)) pactive = st%plates%sets%active
+         aactive = st%anchors%sets%active
+         held = attached_nodes(model, eactive, jactive, pactive, aactive)
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
-            problem%system%pattern_disp, error, eactive)
+            problem%system%pattern_disp, error, eactive, pactive)
          if (allocated(error)) return
          ! an inactive pattern loads nothing: a deactivated one's load is released below
          if (allocated(problem%phase%patterns_on)) then
@@ -257,8 +276,8 @@ contains
       integer :: s, i, kind, nset, nh
       nset = size(model%mesh%esets)
       allocate (problem%phase%hold(nset), source=HOLD_NONE)
-      allocate (problem%phase%homogeneous(2, model%mesh%nnode(), 0))
-      allocate (problem%phase%unbalanced(2, model%mesh%nnode()), source=0.0_wp)
+      allocate (problem%phase%homogeneous(2, nodal_columns(model), 0))
+      allocate (problem%phase%unbalanced(2, nodal_columns(model)), source=0.0_wp)
       problem%phase%procedure = PROCEDURE_NONE
       if (allocated(model%patterns)) then
          do i = 1, size(model%patterns)
@@ -290,12 +309,12 @@ contains
             problem%phase%hold(s) = HOLD_WEIGHT
          case (2)
             ! homogeneous: the nodal forces of its own stress
-            allocate (f(2, model%mesh%nnode()))
+            allocate (f(2, nodal_columns(model)))
             call own_forces(model, problem, s, f, error)
             if (allocated(error)) return
             nh = nh + 1
             problem%phase%homogeneous = reshape([problem%phase%homogeneous, f], &
-               [2, model%mesh%nnode(), nh])
+               [2, nodal_columns(model), nh])
             problem%phase%hold(s) = nh
             deallocate (f)
          end select

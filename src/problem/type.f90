@@ -18,9 +18,13 @@ module pecplas_problem_type
    use pecplas_problem_stats, only: run_stats_t
    use pecplas_problem_position, only: run_position_t
    use pecplas_problem_phase, only: phase_state_t
-   use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes, target_activity
+   use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes, &
+      target_activity, plate_activity
    use pecplas_model_phases, only: TARGET_SUPPORTS, TARGET_PATTERNS
    use pecplas_fe_joint_assembly, only: setup_joint_state
+   use pecplas_fe_plate_assembly, only: setup_plate_state
+   use pecplas_fe_anchor_assembly, only: setup_anchor_state
+   use pecplas_model_columns, only: nodal_columns, rotation_column
    use pecplas_joints_katona_type, only: katona_t
    use pecplas_joints_katona_doublets, only: setup_katona
    implicit none (type, external)
@@ -57,7 +61,8 @@ contains
       integer :: s, nel, ng, nst, nnode, npat, e, g
       logical, allocatable :: eactive(:), jactive(:)
 
-      nnode = model%mesh%nnode()
+      ! the nodal arrays: a column per node, then per plate rotation
+      nnode = nodal_columns(model)
       allocate (problem%system%elems(size(model%mesh%esets)), problem%system%rules(size(model%mesh%esets)))
       allocate (problem%state%sets(size(model%mesh%esets)))
       do s = 1, size(model%mesh%esets)
@@ -91,12 +96,15 @@ contains
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
       if (allocated(error)) return
+      call setup_plate_state(model, problem%state%plates)
+      call setup_anchor_state(model, problem%state%anchors)
       ! phases: the sets first activated by a step are inactive until then
       problem%phase%phased = is_phased(model)
       if (problem%phase%phased) then
          call initial_activity(model, eactive, jactive)
          problem%state%sets%active = eactive
          if (allocated(problem%state%joints%sets)) problem%state%joints%sets%active = jactive
+         problem%state%plates%sets%active = plate_activity(model, 0)
       end if
       npat = 0
       if (allocated(model%patterns)) npat = size(model%patterns)
@@ -146,9 +154,27 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:), jactive(:)
-      logical, allocatable :: held(:)
+      logical, allocatable :: held(:), pactive(:), aactive(:)
       integer, allocatable :: eq(:, :)
-      held = attached_nodes(model, eactive, jactive)
+      integer :: s, e, k, node
+      allocate (pactive(0), aactive(0))
+      if (allocated(problem%state%plates%sets)) pactive = problem%state%plates%sets%active
+      if (allocated(problem%state%anchors%sets)) aactive = problem%state%anchors%sets%active
+      allocate (held(nodal_columns(model)), source=.false.)
+      held(1:model%mesh%nnode()) = attached_nodes(model, eactive, jactive, pactive, aactive)
+      ! an active plate holds its nodes and their rotations
+      if (allocated(problem%state%plates%sets)) then
+         do s = 1, size(problem%state%plates%sets)
+            if (.not. problem%state%plates%sets(s)%active) cycle
+            do e = 1, size(model%plates(s)%conn, 2)
+               do k = 1, size(model%plates(s)%conn, 1)
+                  node = model%plates(s)%conn(k, e)
+                  held(node) = .true.
+                  held(rotation_column(model, node)) = .true.
+               end do
+            end do
+         end do
+      end if
       eq = problem%system%dofs%eq
       problem%state%orphan_eq = pack(eq, eq > 0 .and. spread(.not. held, 1, 2))
    end subroutine set_orphans

@@ -13,6 +13,8 @@ module pecplas_solve_output
    use pecplas_base_signals, only: interrupt_requested
    use pecplas_base_parallel, only: parallel_any
    use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
+   use pecplas_fe_plate_output, only: plate_results
+   use pecplas_model_columns, only: rotation_column
    implicit none (type, external)
    private
 
@@ -57,9 +59,13 @@ contains
          ! the estimate reads the state: before its arrays are lent
          if (model%output%error_estimate) call estimate_error(model, problem, est, error)
          if (allocated(error)) return
-         r%reaction = reaction
+         ! the nodes' columns (the plates' rotations go with the plate fields)
+         r%reaction = reaction(:, 1:model%mesh%nnode())
          call joint_fields(model, problem, r)
-         call lend(problem, r)
+         call anchor_fields(model, problem, r)
+         call plate_fields(model, problem, reaction, r, error)
+         if (allocated(error)) return
+         call lend(model, problem, r)
          if (model%output%error_estimate) call add_estimate(est, r)
       end if
       ! exact restart data with this increment when the run stops after it (or always)
@@ -75,6 +81,31 @@ contains
       end if
       if (r%write_fields) call give_back(problem, r)
    end subroutine write_increment
+
+   !> Converged plate fields of every plate set (pecplas_fe_plate_output), with the moment
+   !> reactions at their held rotations.
+   subroutine plate_fields(model, problem, reaction, r, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: reaction(:, :)
+      type(increment_result_t), intent(inout) :: r
+      type(error_t), allocatable, intent(out) :: error
+      integer :: s, k
+      if (.not. allocated(model%plates)) return
+      if (size(model%plates) == 0) return
+      allocate (r%plate_fields(size(model%plates)))
+      do s = 1, size(model%plates)
+         call plate_results(model, problem%state%u, problem%state%plates, &
+            problem%state%factors, s, r%plate_fields(s), error)
+         if (allocated(error)) return
+         associate (f => r%plate_fields(s))
+            allocate (f%moment_reaction(size(f%node_index)))
+            do k = 1, size(f%node_index)
+               f%moment_reaction(k) = reaction(1, rotation_column(model, f%node_index(k)))
+            end do
+         end associate
+      end do
+   end subroutine plate_fields
 
    !> Whether the restart data written now carry what makes a restarted run exact
    !> (*OUTPUT, EXACT_RESTART=): with every increment, never, or (ON_STOP) when the run is
@@ -109,13 +140,19 @@ contains
       if (stop .and. model%output%exact_restart == EXACT_ON_STOP) stop = problem%position%exact
    end function stop_pending
 
-   !> Moves u and the massif's stress, strain and hist arrays of `problem` into `r`.
-   subroutine lend(problem, r)
+   !> Moves u and the massif's stress, strain and hist arrays of `problem` into `r` (with
+   !> plates, u's node columns are copied: the rotations stay).
+   subroutine lend(model, problem, r)
+      type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(increment_result_t), intent(inout) :: r
       integer :: s
       associate (st => problem%state)
-         call move_alloc(st%u, r%displacement)
+         if (size(st%u, 2) > model%mesh%nnode()) then
+            r%displacement = st%u(:, 1:model%mesh%nnode())
+         else
+            call move_alloc(st%u, r%displacement)
+         end if
          allocate (r%set_fields(size(st%sets)))
          do s = 1, size(st%sets)
             call move_alloc(st%sets(s)%stress, r%set_fields(s)%stress)
@@ -131,7 +168,11 @@ contains
       type(increment_result_t), intent(inout) :: r
       integer :: s
       associate (st => problem%state)
-         call move_alloc(r%displacement, st%u)
+         if (allocated(st%u)) then
+            deallocate (r%displacement)
+         else
+            call move_alloc(r%displacement, st%u)
+         end if
          do s = 1, size(st%sets)
             call move_alloc(r%set_fields(s)%stress, st%sets(s)%stress)
             call move_alloc(r%set_fields(s)%strain, st%sets(s)%strain)
@@ -156,6 +197,24 @@ contains
          r%joint_fields(s)%error_indicator = est%joints(s)%eta
       end do
    end subroutine add_estimate
+
+   !> Converged forces of every anchor set (N of one anchor and N / L_s).
+   subroutine anchor_fields(model, problem, r)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      type(increment_result_t), intent(inout) :: r
+      integer :: s
+      if (.not. allocated(model%anchors)) return
+      allocate (r%anchor_fields(size(model%anchors)))
+      do s = 1, size(model%anchors)
+         associate (f => r%anchor_fields(s), st => problem%state%anchors%sets(s))
+            f%name = model%anchors(s)%name
+            f%active = st%active
+            f%force = st%force
+            f%force_per_width = st%force/model%anchors(s)%spacing
+         end associate
+      end do
+   end subroutine anchor_fields
 
    !> Converged joint fields of every joint set; the plastic slip is the law's own
    !> (pecplas_joints_laws_coulomb: plastic_slip, 0 for a law without one and for a Katona

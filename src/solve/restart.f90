@@ -70,7 +70,8 @@ contains
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
             call data%add('arc_why', text_codes(p%arc%req%why))
          end if
-         if (fields) then
+         ! (with plates the rotations are no part of the displacement field)
+         if (fields .and. size(st%u, 2) == model%mesh%nnode()) then
             call data%add_field('u', 'displacement', 0)
          else
             call data%add('u', reshape(st%u, [size(st%u)]))
@@ -112,6 +113,28 @@ contains
                end associate
             end do
          end if
+         if (allocated(st%plates%sets)) then
+            do s = 1, size(st%plates%sets)
+               if (.not. st%plates%sets(s)%active) cycle
+               associate (pl => st%plates%sets(s))
+                  call data%add('plate_e_'//itoa(s), flat3(pl%e))
+                  call data%add('plate_s_'//itoa(s), flat3(pl%s))
+                  call data%add('plate_hist_'//itoa(s), flat3(pl%hist))
+                  if (tangents) call data%add('plate_tangent_'//itoa(s), &
+                     reshape(pl%tangent, [size(pl%tangent)]))
+               end associate
+            end do
+         end if
+         ! anchors: activity, prestress, force, plastic and reference elongations
+         if (allocated(st%anchors%sets)) then
+            do s = 1, size(st%anchors%sets)
+               associate (a => st%anchors%sets(s))
+                  call data%add('anchor_'//itoa(s), [merge(1.0_wp, 0.0_wp, a%active), &
+                     merge(1.0_wp, 0.0_wp, a%prestressing), a%prestress, a%force, a%plastic, &
+                     a%e0])
+               end associate
+            end do
+         end if
          if (kt%active) then
             call data%add('katona_mode', real(kt%mode, wp))
             call data%add('katona_sign', real(kt%sgn, wp))
@@ -148,11 +171,25 @@ contains
       character(len=:), allocatable :: names(:), msg
       real(wp) :: deck_sum
       logical :: guarded
-      integer :: nj
+      integer :: nj, np
+      character(len=64), allocatable :: anames(:)
 
       nj = 0
       if (allocated(problem%state%joints%sets)) nj = size(problem%state%joints%sets)
-      names = restart_names(size(problem%state%sets), nj)
+      np = 0
+      if (allocated(problem%state%plates%sets)) np = size(problem%state%plates%sets)
+      names = restart_names(size(problem%state%sets), nj, np)
+      ! anchors (each set's activity, prestress, forces, elongations)
+      if (allocated(problem%state%anchors%sets)) then
+         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         anames(1:size(names)) = names
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         deallocate (names)
+         allocate (character(len=64) :: names(size(anames)))
+         names = anames
+      end if
       ! a damaged file may crash the HDF5 library itself: an input error, not a crash
       guarded = crash_guard_begin('pecplas: error: cannot restart from '//path// &
          ': the HDF5 library crashed reading it (the file is damaged)')
@@ -287,6 +324,35 @@ contains
                if (allocated(error)) return
             end associate
          end do
+         if (allocated(st%plates%sets)) then
+            do s = 1, size(st%plates%sets)
+               if (.not. st%plates%sets(s)%active) cycle
+               associate (pl => st%plates%sets(s))
+                  call get3(data, 'plate_e_'//itoa(s), pl%e, error)
+                  if (.not. allocated(error)) call get3(data, 'plate_s_'//itoa(s), pl%s, error)
+                  if (.not. allocated(error)) call get3(data, 'plate_hist_'//itoa(s), pl%hist, &
+                     error)
+                  if (allocated(error)) return
+                  if (tangents .and. data%has('plate_tangent_'//itoa(s))) &
+                     call get4(data, 'plate_tangent_'//itoa(s), pl%tangent, error)
+                  if (allocated(error)) return
+               end associate
+            end do
+         end if
+         if (allocated(st%anchors%sets)) then
+            do s = 1, size(st%anchors%sets)
+               associate (a => st%anchors%sets(s))
+                  call data%get('anchor_'//itoa(s), 3 + 3*size(a%force), v, error)
+                  if (allocated(error)) return
+                  a%active = v(1) /= 0.0_wp
+                  a%prestressing = v(2) /= 0.0_wp
+                  a%prestress = v(3)
+                  a%force = v(4:3 + size(a%force))
+                  a%plastic = v(4 + size(a%force):3 + 2*size(a%force))
+                  a%e0 = v(4 + 2*size(a%force):)
+               end associate
+            end do
+         end if
          if (kt%active) then
             call data%get('katona_mode', kt%nd, v, error)
             if (allocated(error)) return
@@ -438,8 +504,8 @@ contains
    end subroutine get_operator
 
    !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
-   pure function restart_names(nsets, njoint) result(names)
-      integer, intent(in) :: nsets, njoint
+   pure function restart_names(nsets, njoint, nplate) result(names)
+      integer, intent(in) :: nsets, njoint, nplate
       character(len=:), allocatable :: names(:)
       character(len=32), allocatable :: list(:)
       integer :: s
@@ -454,6 +520,10 @@ contains
       do s = 1, njoint
          list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &
             'joint_hist_'//itoa(s), 'joint_mode_'//itoa(s), 'joint_tangent_'//itoa(s)]
+      end do
+      do s = 1, nplate
+         list = [character(len=32) :: list, 'plate_e_'//itoa(s), 'plate_s_'//itoa(s), &
+            'plate_hist_'//itoa(s), 'plate_tangent_'//itoa(s)]
       end do
       names = list
    end function restart_names

@@ -68,6 +68,7 @@ GENERATORS = [
     (["make_s6_decks", "--out", "{tmp}"], "input"),
     (["make_default_deck", "-o", "{tmp}/strip_footing.inp"], "input/examples"),
     (["make_phase_examples", "--out", "{tmp}"], "input/examples"),
+    (["make_structure_examples", "--out", "{tmp}"], "input/examples"),
     (["make_hertz_deck", "--out", "{tmp}/hertz.inp"], "test/data/katona"),
     (["make_katona_decks", "--out", "{tmp}"], "test/data/katona"),
     (["make_patch_decks", "--out", "{tmp}"], "test/data/joints"),

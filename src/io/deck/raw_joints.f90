@@ -16,6 +16,10 @@ module pecplas_io_deck_raw_joints
       !> THICKNESS= (thin layer), ANGLE= in degrees (springs; has_angle when given).
       real(wp) :: thickness = 0.0_wp, angle = 0.0_wp
       logical :: has_angle = .false.
+      !> FACES=BOTH (joints on both faces of the EDGES line, no SIDE=) and EXTEND= (length
+      !> of the cut beyond the line's ends, 0: none).
+      logical :: both_faces = .false.
+      real(wp) :: extend = 0.0_wp
       !> Line of the keyword; number of explicit elements and nodes per element.
       integer :: at = 0, n = 0, nen = 0
       !> Explicit elements: ids(n), node ids nodes(nen, n), line of each where(n).

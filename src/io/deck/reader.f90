@@ -27,17 +27,19 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
+   use pecplas_io_deck_reader_anchors, only: read_anchor, resolve_anchors
+   use pecplas_io_deck_reader_plates, only: read_plate, resolve_plates, extend_rotations
    implicit none (type, external)
    private
 
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(25) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(28) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
-      '*CHANGE_MATERIAL', '*CHANGE_LAW']
+      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PLATE', '*ANCHOR', '*PRESTRESS']
 
 contains
 
@@ -97,6 +99,9 @@ contains
 
       call build_mesh(state, model, error)
       if (allocated(error)) return
+      ! plates before supports: a rotation support needs the nodes that carry a rotation
+      call resolve_plates(state, model, error)
+      if (allocated(error)) return
       if (.not. allocated(state%steps)) then
          call deck_error(error, path, 0, '*STEP', 'no *STEP: the deck must define at least '// &
             'one step ("*STEP, NAME=..., INCREMENTS=n" with "pattern, target_factor" lines)')
@@ -112,9 +117,13 @@ contains
       if (allocated(error)) return
       call resolve_initial_stress(state, model, error)
       if (allocated(error)) return
+      ! before the joints split the mesh: the bars keep the original nodes
+      call resolve_anchors(state, model, error)
+      if (allocated(error)) return
       ! last: splitting nodes for generated joints extends supports and patterns
       call resolve_joints(state, model, error)
       if (allocated(error)) return
+      call extend_rotations(model)
       ! phase changes name joint sets too
       call resolve_phases(state, model, error)
       if (allocated(error)) return
@@ -164,7 +173,7 @@ contains
          call read_load(state, block, error)
       case ('*STEP')
          call read_step(state, block, error)
-      case ('*DEACTIVATE', '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW')
+      case ('*DEACTIVATE', '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PRESTRESS')
          call read_change(state, block, error)
       case ('*END STEP')
          state%open_step = 0
@@ -186,6 +195,10 @@ contains
          call read_interface_law(state, model, block, error)
       case ('*JOINTS')
          call read_joints(state, block, error)
+      case ('*ANCHOR')
+         call read_anchor(state, block, error)
+      case ('*PLATE')
+         call read_plate(state, block, error)
       case default
          list = ''
          do i = 1, size(KNOWN_KEYWORDS)

@@ -2,6 +2,7 @@
 !>   *INTERFACE_LAW, NAME=name, TYPE=type   -- data: KEY = value pairs (like *MATERIAL)
 !>   *JOINTS, TYPE=t, SET=name, LAW=law [, INTEGRATION=GAUSS|LOBATTO] [, THICKNESS=e]
 !>            [, ANGLE=deg] [, EDGES=edge_set, SIDE=element_set]
+!>            [, EDGES=edge_set, FACES=BOTH [, EXTEND=length]]
 !>      data (explicit joints): id, n1, n2[, n3, n4[, n5, n6]]; none with EDGES/SIDE.
 !> Laws are built at once (parameter errors at their lines); TYPE=KATONA gives Katona contact
 !> parameters (model%contacts), no law. Joints are resolved after the whole deck is read
@@ -147,7 +148,7 @@ contains
       kwline = state%lines%get(block%at)
       associate (kw => block%kw)
          call kw%check_keys(kwline, [character(len=11) :: 'TYPE', 'SET', 'LAW', 'INTEGRATION', &
-            'THICKNESS', 'ANGLE', 'EDGES', 'SIDE'], error)
+            'THICKNESS', 'ANGLE', 'EDGES', 'SIDE', 'FACES', 'EXTEND'], error)
          if (allocated(error)) return
          call kw%require(kwline, 'TYPE', js%etype, error)
          if (allocated(error)) return
@@ -212,6 +213,9 @@ contains
          end if
          call kw%get('EDGES', js%edges, has_edges)
          call kw%get('SIDE', js%side, has_side)
+         call both_faces(state, block, js, has_edges, has_side, error)
+         if (allocated(error)) return
+         if (js%both_faces) has_side = .true.
          if (has_edges .neqv. has_side) then
             call line_error(state, block%at, 'EDGES=edge_set and SIDE=element_set go '// &
                'together (joints generated along EDGES, duplicates given to SIDE)', error)
@@ -246,6 +250,42 @@ contains
       tmp(n + 1) = js
       call move_alloc(tmp, state%joint_sets)
    end subroutine read_joints
+
+   !> FACES=BOTH [, EXTEND=length]: joints on both faces of the EDGES line (no SIDE=).
+   subroutine both_faces(state, block, js, has_edges, has_side, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      type(raw_joint_set_t), intent(inout) :: js
+      logical, intent(in) :: has_edges, has_side
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      logical :: found, ok
+      call block%kw%get('FACES', text, found)
+      if (found) then
+         if (upper(text) /= 'BOTH') then
+            call line_error(state, block%at, "FACES="//text//": expected FACES=BOTH (joints "// &
+               'on both faces of the EDGES line); a joint on one face takes SIDE=', error)
+            return
+         end if
+         if (.not. has_edges .or. has_side) then
+            call line_error(state, block%at, 'FACES=BOTH takes EDGES=edge_set (the line) and '// &
+               'no SIDE= (the bodies on both faces get their own nodes)', error)
+            return
+         end if
+         js%both_faces = .true.
+         js%side = ''
+      end if
+      call block%kw%get('EXTEND', text, found)
+      if (.not. found) return
+      if (.not. js%both_faces) then
+         call line_error(state, block%at, 'EXTEND= goes with FACES=BOTH (the cut beyond the '// &
+            "line's ends)", error)
+         return
+      end if
+      call parse_real(text, js%extend, ok)
+      if (.not. ok .or. js%extend < 0.0_wp) call line_error(state, block%at, 'EXTEND must be '// &
+         "a length >= 0, found '"//text//"'", error)
+   end subroutine both_faces
 
    !> Data lines id, n1, ..., nN of explicit joints (N = 2 springs, 4 GOODMAN4,
    !> 6 GOODMAN6, 4 or 6 THIN_LAYER, the same for the whole set).

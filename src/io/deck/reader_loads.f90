@@ -55,15 +55,17 @@ contains
       end do
    end subroutine read_boundary
 
-   !> Dof range from `first` [`last`]: 1, 2 or X, Y, R, Z (one dof), XY, ALL (both).
+   !> Dof range from `first` [`last`]: 1, 2 or X, Y, R, Z (one dof), 3 or ROT (the rotation
+   !> of a plate node), XY (both translations), ALL (both, and the rotation where the node
+   !> carries one).
    subroutine parse_dofs(state, at, first, last, dof, error)
       type(deck_state_t), intent(in) :: state
       integer, intent(in) :: at
       character(len=*), intent(in) :: first, last
       integer, intent(out) :: dof(2)
       type(error_t), allocatable, intent(out) :: error
-      character(len=*), parameter :: HINT = ': expected 1 (x, r), 2 (y, z) or one of '// &
-         'X Y R Z XY ALL'
+      character(len=*), parameter :: HINT = ': expected 1 (x, r), 2 (y, z), 3 (rotation) '// &
+         'or one of X Y R Z ROT XY ALL'
       integer :: d
       logical :: ok
       select case (upper(first))
@@ -71,17 +73,21 @@ contains
          dof = 1
       case ('2', 'Y', 'Z')
          dof = 2
-      case ('XY', 'ALL')
+      case ('3', 'ROT')
+         dof = 3
+      case ('XY')
          dof = [1, 2]
+      case ('ALL')
+         dof = [1, 3]
       case default
          call line_error(state, at, "bad dof '"//first//"'"//HINT, error)
          return
       end select
       if (len(last) == 0) return
       call parse_int(last, d, ok)
-      if (.not. ok .or. d < 1 .or. d > 2 .or. verify(first, '12') /= 0) then
+      if (.not. ok .or. d < 1 .or. d > 3 .or. verify(first, '123') /= 0) then
          call line_error(state, at, "bad dof range '"//first//', '//last// &
-            "': expected dof_first, dof_last with 1 <= dof_first <= dof_last <= 2", error)
+            "': expected dof_first, dof_last with 1 <= dof_first <= dof_last <= 3", error)
          return
       end if
       if (d < dof(1)) then
@@ -140,6 +146,8 @@ contains
          form = 'edge_set, p | edge_set, p_ref, gradient, y_ref'
       case ('BODY_FORCE')
          form = 'element_set|ALL, bx, by'
+      case ('PLATE_LOAD')
+         form = 'plate_set, qx, qy'
       case default
          form = 'element_set|ALL[, dx, dy]'
       end select
@@ -178,7 +186,7 @@ contains
          if (allocated(error)) return
          if (item%dof(1) /= item%dof(2)) then
             call line_error(state, at, "bad dof '"//f(2)%s//"': a "//pat%kind// &
-               ' line takes one dof: 1, 2, X, Y, R or Z', error)
+               ' line takes one dof: 1, 2, 3, X, Y, R, Z or ROT', error)
             return
          end if
          call field_real(state%lines%get(at), f, 3, 'value', item%value(1), error)
@@ -210,6 +218,12 @@ contains
          call field_real(state%lines%get(at), f, 2, 'bx', item%value(1), error)
          if (allocated(error)) return
          call field_real(state%lines%get(at), f, 3, 'by', item%value(2), error)
+      case ('PLATE_LOAD')
+         call check_count(state%lines%get(at), f, 3, 3, form, error)
+         if (allocated(error)) return
+         call field_real(state%lines%get(at), f, 2, 'qx', item%value(1), error)
+         if (allocated(error)) return
+         call field_real(state%lines%get(at), f, 3, 'qy', item%value(2), error)
       case default
          if (size(f) == 1) then
             item%value = [0.0_wp, -1.0_wp]

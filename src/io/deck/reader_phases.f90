@@ -10,13 +10,14 @@ module pecplas_io_deck_reader_phases
    use pecplas_base_error, only: error_t
    use pecplas_base_kinds, only: wp
    use pecplas_io_text_fields, only: field_t, split_fields, check_count, same_name, upper, &
-      add_name, itoa
+      add_name, itoa, parse_real
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_change_t, line_error
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
-      START_WISHED, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_NAMES
+      START_WISHED, TARGET_PATTERNS, TARGET_SUPPORTS, TARGET_NAMES, TARGET_PLATES, &
+      TARGET_ANCHORS, CHANGE_PRESTRESS
    use pecplas_model_phase_plan, only: initial_activity, step_activity, attached_nodes, &
       target_activity
    implicit none (type, external)
@@ -34,8 +35,9 @@ contains
       type(raw_change_t) :: ch
       type(field_t), allocatable :: f(:)
       character(len=:), allocatable :: text
-      logical :: found
+      logical :: found, ok
       integer :: kind, i, k
+      real(wp) :: force
       kind = 0
       do i = 1, size(CHANGE_NAMES)
          if (trim(CHANGE_NAMES(i)) == block%kw%name) kind = i
@@ -69,6 +71,11 @@ contains
             end select
          end if
       end if
+      if (block%last < block%first .and. kind == CHANGE_PRESTRESS) then
+         call line_error(state, block%at, '*PRESTRESS needs data lines "anchor, force" (the '// &
+            'prestress force of one anchor)', error)
+         return
+      end if
       if (block%last < block%first) then
          if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
             text = merge('element_set, material', 'joint_set, law       ', kind == CHANGE_MATERIAL)
@@ -83,7 +90,19 @@ contains
       do i = block%first, block%last
          call split_fields(state%lines%text(i), f)
          ch%at = i
-         if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
+         if (kind == CHANGE_PRESTRESS) then
+            call check_count(state%lines%get(i), f, 2, 2, 'anchor, force', error)
+            if (allocated(error)) return
+            call parse_real(f(2)%s, force, ok)
+            if (.not. ok) then
+               call line_error(state, i, "prestress force must be a number, found '"// &
+                  f(2)%s//"'", error)
+               return
+            end if
+            ch%set = f(1)%s
+            ch%new = f(2)%s
+            call push(state%steps(state%open_step)%changes, ch)
+         else if (kind == CHANGE_MATERIAL .or. kind == CHANGE_LAW) then
             call check_count(state%lines%get(i), f, 2, 2, merge('element_set, material', &
                'joint_set, law       ', kind == CHANGE_MATERIAL), error)
             if (allocated(error)) return
@@ -199,6 +218,17 @@ contains
       ch%target = TARGET_ELEMENTS
       ! the kinds of thing a phase switches, looked up in this order (doc/deck.md, Phases)
       if (ch%set == 0) call find_target(model, raw%set, ch%target, ch%set)
+      if (ch%set == 0 .and. ch%kind == CHANGE_PRESTRESS) then
+         list = ''
+         if (allocated(model%anchors)) then
+            do k = 1, size(model%anchors)
+               call add_name(list, model%anchors(k)%name)
+            end do
+         end if
+         call line_error(state, raw%at, "no anchor '"//raw%set//"'; known anchors:"//list, &
+            error)
+         return
+      end if
       if (ch%set == 0) then
          list = ''
          do k = 1, size(model%mesh%esets)
@@ -210,6 +240,11 @@ contains
             end do
          end if
          if (ch%kind == CHANGE_ACTIVATE .or. ch%kind == CHANGE_DEACTIVATE) then
+            if (allocated(model%plates)) then
+               do k = 1, size(model%plates)
+                  call add_name(list, model%plates(k)%name)
+               end do
+            end if
             if (allocated(model%patterns)) then
                do k = 1, size(model%patterns)
                   call add_name(list, model%patterns(k)%name)
@@ -220,11 +255,31 @@ contains
                   call add_name(list, trim(model%supports%names(k)))
                end do
             end if
-            call line_error(state, raw%at, "no element set, joint set, load pattern or "// &
-               "named support '"//raw%set//"'; known:"//list, error)
+            if (allocated(model%anchors)) then
+               do k = 1, size(model%anchors)
+                  call add_name(list, model%anchors(k)%name)
+               end do
+            end if
+            call line_error(state, raw%at, "no plate set, anchor, element set, joint set, "// &
+               "load pattern or named support '"//raw%set//"'; known:"//list, error)
          else
             call line_error(state, raw%at, "no element set or joint set '"//raw%set// &
                "'; known sets:"//list, error)
+         end if
+         return
+      end if
+      if (ch%target == TARGET_ANCHORS .or. ch%kind == CHANGE_PRESTRESS) then
+         call resolve_anchor_change(state, model, raw, ch, error)
+         return
+      end if
+      if (ch%target == TARGET_PLATES) then
+         if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) then
+            call line_error(state, raw%at, "'"//raw%set//"' is a plate set: a phase "// &
+               'activates or deactivates it (its section does not change)', error)
+         else if (ch%start == START_WISHED) then
+            call line_error(state, raw%at, "STRESS=WISHED_IN_PLACE is for element sets "// &
+               "and Katona contact sets; plate set '"//raw%set//"' starts free of forces", &
+               error)
          end if
          return
       end if
@@ -323,6 +378,13 @@ contains
          target = TARGET_JOINTS
          if (set > 0) return
       end if
+      if (allocated(model%plates)) then
+         do k = size(model%plates), 1, -1
+            if (same_name(model%plates(k)%name, name)) set = k
+         end do
+         target = TARGET_PLATES
+         if (set > 0) return
+      end if
       if (allocated(model%patterns)) then
          do k = size(model%patterns), 1, -1
             if (same_name(model%patterns(k)%name, name)) set = k
@@ -337,8 +399,48 @@ contains
          target = TARGET_SUPPORTS
          if (set > 0) return
       end if
+      if (allocated(model%anchors)) then
+         do k = size(model%anchors), 1, -1
+            if (same_name(model%anchors(k)%name, name)) set = k
+         end do
+         target = TARGET_ANCHORS
+         if (set > 0) return
+      end if
       target = TARGET_ELEMENTS
    end subroutine find_target
+
+   !> A change naming an anchor set: *ACTIVATE (STRESS= does not apply), *DEACTIVATE, or
+   !> *PRESTRESS with a force within the anchor's limits.
+   subroutine resolve_anchor_change(state, model, raw, ch, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_change_t), intent(in) :: raw
+      type(phase_change_t), intent(inout) :: ch
+      type(error_t), allocatable, intent(out) :: error
+      logical :: ok
+      if (ch%target /= TARGET_ANCHORS) then
+         call line_error(state, raw%at, "'"//raw%set//"' is not an anchor: *PRESTRESS "// &
+            'prestresses anchors (*ANCHOR)', error)
+         return
+      end if
+      select case (ch%kind)
+      case (CHANGE_ACTIVATE)
+         if (ch%start == START_WISHED) call line_error(state, raw%at, 'STRESS= is for '// &
+            "element sets; anchor '"//raw%set//"' starts without force (or with its "// &
+            '*PRESTRESS)', error)
+      case (CHANGE_MATERIAL, CHANGE_LAW)
+         call line_error(state, raw%at, "'"//raw%set//"' is an anchor: it has no material "// &
+            'or law to change (define another *ANCHOR and swap them with *DEACTIVATE and '// &
+            '*ACTIVATE)', error)
+      case (CHANGE_PRESTRESS)
+         call parse_real(raw%new, ch%value, ok)
+         associate (a => model%anchors(ch%set))
+            if (ch%value > a%tension_limit .or. ch%value < -a%compression_limit) &
+               call line_error(state, raw%at, "prestress "//raw%new//" of anchor '"// &
+               raw%set//"' is beyond its TENSION_LIMIT or COMPRESSION_LIMIT", error)
+         end associate
+      end select
+   end subroutine resolve_anchor_change
 
    !> Walks the phases: activation of an active set, deactivation of an inactive one, and a
    !> load or imposed displacement acting in a phase on a node that no active element or
@@ -347,7 +449,8 @@ contains
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), pact(:), sact(:)
+      logical, allocatable :: eact(:), jact(:), dropped(:), held(:), pact(:), sact(:), plact(:), &
+         aact(:)
       integer, allocatable :: emat(:), jlaw(:)
       real(wp), allocatable :: factors(:)
       integer :: s, c, p, k, npat
@@ -355,6 +458,8 @@ contains
       call initial_activity(model, eact, jact)
       pact = target_activity(model, TARGET_PATTERNS, 0)
       sact = target_activity(model, TARGET_SUPPORTS, 0)
+      plact = target_activity(model, TARGET_PLATES, 0)
+      aact = target_activity(model, TARGET_ANCHORS, 0)
       emat = [(model%mesh%esets(c)%material_index, c=1, size(model%mesh%esets))]
       allocate (jlaw(size(jact)))
       do c = 1, size(jact)
@@ -375,6 +480,10 @@ contains
                         on = jact(ch%set)
                      case (TARGET_PATTERNS)
                         on = pact(ch%set)
+                     case (TARGET_PLATES)
+                        on = plact(ch%set)
+                     case (TARGET_ANCHORS)
+                        on = aact(ch%set)
                      case default
                         on = sact(ch%set)
                      end select
@@ -399,6 +508,15 @@ contains
                            'it: it loads nothing', ch%file, ch%line)
                      end if
                      if (ch%target == TARGET_SUPPORTS) sact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                     if (ch%target == TARGET_ANCHORS) aact(ch%set) = ch%kind == CHANGE_ACTIVATE
+                  end if
+                  if (ch%kind == CHANGE_PRESTRESS) then
+                     if (.not. aact(ch%set)) then
+                        call line_error(state, state%steps(s)%changes(c)%at, "anchor '"// &
+                           ch%set_name//"' is not active in step '"//step%name//"': "// &
+                           '*ACTIVATE it in this step or before *PRESTRESS', error)
+                        return
+                     end if
                   end if
                end associate
                ! (--strict) a change to what the set already has changes nothing
@@ -416,10 +534,10 @@ contains
                   end if
                end associate
                ! each change applies before the next is checked (a set named twice)
-               call step_activity_one(step%changes(c), eact, jact)
+               call step_activity_one(step%changes(c), eact, jact, plact)
             end do
             call step_activity(model, s, eact, jact, dropped)
-            held = attached_nodes(model, eact, jact)
+            held = attached_nodes(model, eact, jact, plact, aact)
             do k = 1, size(step%pattern)
                if (.not. pact(step%pattern(k))) then
                   call line_error(state, state%steps(s)%at, "step '"//step%name// &
@@ -444,14 +562,17 @@ contains
       integer, intent(in) :: target
       character(len=:), allocatable :: text
       text = 'set'
-      if (target == TARGET_PATTERNS .or. target == TARGET_SUPPORTS) text = TARGET_NAMES(target)
+      if (target == TARGET_PATTERNS .or. target == TARGET_SUPPORTS .or. &
+          target == TARGET_ANCHORS) text = TARGET_NAMES(target)
    end function what
 
-   pure subroutine step_activity_one(ch, eact, jact)
+   pure subroutine step_activity_one(ch, eact, jact, plact)
       type(phase_change_t), intent(in) :: ch
-      logical, intent(inout) :: eact(:), jact(:)
+      logical, intent(inout) :: eact(:), jact(:), plact(:)
       if (ch%kind /= CHANGE_ACTIVATE .and. ch%kind /= CHANGE_DEACTIVATE) return
-      if (ch%target == TARGET_ELEMENTS) then
+      if (ch%target == TARGET_PLATES) then
+         plact(ch%set) = ch%kind == CHANGE_ACTIVATE
+      else if (ch%target == TARGET_ELEMENTS) then
          eact(ch%set) = ch%kind == CHANGE_ACTIVATE
       else if (ch%target == TARGET_JOINTS) then
          jact(ch%set) = ch%kind == CHANGE_ACTIVATE

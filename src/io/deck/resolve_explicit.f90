@@ -126,7 +126,8 @@ contains
    end function inverted
 
    !> Joint edges of explicit springs: element sides all of whose nodes are face-1 nodes of
-   !> springs of the set, oriented with that element on the right (face 2 on the left).
+   !> springs of the set, oriented with that element on the right (face 2 on the left), and
+   !> the plate elements all of whose nodes are face-1 nodes (as written).
    subroutine spring_edges(model, table, face1, edges)
       type(model_t), intent(in) :: model
       type(side_table_t), intent(in) :: table
@@ -135,7 +136,7 @@ contains
       logical, allocatable :: is_face1(:)
       integer, allocatable :: found(:, :)
       real(wp) :: t(2), c(2)
-      integer :: s, m, k
+      integer :: s, m, k, c1
       allocate (is_face1(model%mesh%nnode()), source=.false.)
       is_face1(face1) = .true.
       allocate (found(3, 0))
@@ -162,6 +163,28 @@ contains
             end if
          end associate
       end do
+      ! the elements of plates along face-1 nodes (springs under a plate on no massif
+      ! element: a beam on a Winkler foundation)
+      if (allocated(model%plates)) then
+         do s = 1, size(model%plates)
+            do k = 1, size(model%plates(s)%conn, 2)
+               associate (pc => model%plates(s)%conn(:, k))
+                  if (.not. all(is_face1(pc))) cycle
+                  m = 0
+                  do c1 = 1, size(found, 2)
+                     if (min(found(1, c1), found(2, c1)) == min(pc(1), pc(2)) .and. &
+                         max(found(1, c1), found(2, c1)) == max(pc(1), pc(2))) m = c1
+                  end do
+                  if (m > 0) cycle
+                  if (size(pc) == 3) then
+                     found = reshape([found, pc], [3, size(found, 2) + 1])
+                  else
+                     found = reshape([found, pc, 0], [3, size(found, 2) + 1])
+                  end if
+               end associate
+            end do
+         end do
+      end if
       call move_alloc(found, edges)
    end subroutine spring_edges
 

@@ -19,6 +19,8 @@ module pecplas_io_deck_resolve_joints
    use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6, &
       JOINT_KATONA
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
+   use pecplas_model_mesh_split_faces, only: faces_result_t, split_both_faces, &
+      remap_to_copies, FACE_LEFT, FACE_EXTENSION
    use pecplas_joints_elements_tributary, only: spring_tributaries
    use pecplas_io_deck_resolve_explicit, only: explicit_joints
    implicit none (type, external)
@@ -38,8 +40,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(joint_set_t), allocatable :: tmp(:)
       type(joint_set_t) :: set
-      integer, allocatable :: origin(:), ids(:), at(:)
-      integer :: r, n, i, next_id, dup(2)
+      type(joint_set_t), allocatable :: parts(:)
+      integer, allocatable :: origin(:), ids(:), at(:), group(:)
+      integer :: r, n, i, next_id, dup(2), p
       if (.not. allocated(model%laws)) allocate (model%laws(0))
       if (.not. allocated(model%contacts)) allocate (model%contacts(0))
       if (.not. allocated(model%joint_sets)) allocate (model%joint_sets(0))
@@ -60,13 +63,17 @@ contains
          end associate
       end do
       do r = 1, size(state%joint_sets)
-         call one_set(state, model, state%joint_sets(r), origin, next_id, set, error)
+         call one_set(state, model, state%joint_sets(r), origin, next_id, set, error, group)
          if (allocated(error)) return
-         n = size(model%joint_sets)
-         allocate (tmp(n + 1))
-         tmp(1:n) = model%joint_sets
-         tmp(n + 1) = set
-         call move_alloc(tmp, model%joint_sets)
+         ! FACES=BOTH: one set per element set of the bodies on the faces
+         call split_by_body(model, set, group, parts)
+         do p = 1, size(parts)
+            n = size(model%joint_sets)
+            allocate (tmp(n + 1))
+            tmp(1:n) = model%joint_sets
+            tmp(n + 1) = parts(p)
+            call move_alloc(tmp, model%joint_sets)
+         end do
          ids = [ids, set%ids]
          if (state%joint_sets(r)%n > 0) then
             at = [at, state%joint_sets(r)%where]
@@ -86,7 +93,9 @@ contains
       end if
    end subroutine resolve_joints
 
-   subroutine one_set(state, model, raw, origin, next_id, set, error)
+   !> The joint set of one *JOINTS block; `group`: for FACES=BOTH the element set of the
+   !> body on face 2 of each element (empty otherwise).
+   subroutine one_set(state, model, raw, origin, next_id, set, error, group)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
       type(raw_joint_set_t), intent(in) :: raw
@@ -94,9 +103,11 @@ contains
       integer, intent(inout) :: next_id
       type(joint_set_t), intent(out) :: set
       type(error_t), allocatable, intent(out) :: error
+      integer, allocatable, intent(out) :: group(:)
       integer, allocatable :: edges(:, :)
       character(len=:), allocatable :: msg
       integer :: i, bad
+      allocate (group(0))
       set%name = raw%name
       set%kind = joint_kind(raw%etype)
       set%law = raw%law
@@ -126,7 +137,17 @@ contains
             return
          end if
       end if
-      if (len(raw%edges) > 0) then
+      if (raw%both_faces) then
+         if (set%is_katona()) then
+            call line_error(state, raw%at, "FACES=BOTH with Katona contact (law '"//raw%law// &
+               "') is not available: the plate's nodes would face two partners (one per "// &
+               'face); use a penalty law (e.g. MOHR_COULOMB with a stiff KN) or one-sided '// &
+               'joints (SIDE=)', error)
+            return
+         end if
+         call generated_both(state, model, raw, origin, next_id, set, group, error)
+         return
+      else if (len(raw%edges) > 0) then
          call generated(state, model, raw, origin, next_id, set, edges, error)
       else
          ! Katona doublets may start apart (node-to-node contact with an initial gap)
@@ -253,6 +274,148 @@ contains
       set%ids = [(next_id + i, i=1, size(set%conn, 2))]
       next_id = next_id + size(set%conn, 2)
    end subroutine generated
+
+   !> FACES=BOTH: the line EDGES split on both faces (pecplas_model_mesh_split_faces); the
+   !> supports and imposed displacements of a split node hold its copies too, the pressure
+   !> edges and edge sets on one body move to its copies. Springs: one doublet per node and
+   !> face, their tributaries and tangents from the joint edges of that face.
+   subroutine generated_both(state, model, raw, origin, next_id, set, group, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(inout) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, allocatable, intent(inout) :: origin(:)
+      integer, intent(inout) :: next_id
+      type(joint_set_t), intent(inout) :: set
+      integer, allocatable, intent(inout) :: group(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(faces_result_t) :: res
+      type(error_t), allocatable :: e
+      integer, allocatable :: dupof(:), doublets(:, :), edges(:, :), sel(:)
+      real(wp), allocatable :: trib(:), tang(:, :)
+      character(len=:), allocatable :: msg
+      integer :: ke, nen, i, k, face, bad
+      ke = model%mesh%find_edge_set(raw%edges)
+      if (ke == 0) then
+         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
+            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
+         return
+      end if
+      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
+      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
+          nen /= 3)) then
+         call line_error(state, raw%at, set%type_name()//" joints need "// &
+            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
+            //raw%edges//"' has "//itoa(nen)//'-node edges', error)
+         return
+      end if
+      call split_both_faces(model%mesh, ke, raw%extend, origin, res, e)
+      if (allocated(e)) then
+         call line_error(state, raw%at, e%message, error)
+         return
+      end if
+      ! supports and imposed displacements: every copy (a copy per body)
+      do k = 1, 2
+         allocate (dupof(size(res%copies, 2)))
+         dupof = res%copies(k, :)
+         call extend_to_duplicates(model, 0, dupof)
+         deallocate (dupof)
+      end do
+      ! edges on one body (pressures, other edge sets) to its copies
+      if (allocated(model%patterns)) then
+         do i = 1, size(model%patterns)
+            if (model%patterns(i)%kind == LOAD_PRESSURE) &
+               call remap_to_copies(model%mesh, res, model%patterns(i)%edge)
+         end do
+      end if
+      do i = 1, size(model%mesh%edge_sets)
+         if (i /= ke) call remap_to_copies(model%mesh, res, model%mesh%edge_sets(i)%nodes)
+      end do
+      if (.not. set%is_spring()) then
+         set%conn = res%conn
+         group = res%body_set
+      else
+         ! one doublet per node of each face: (face-1 node, face-2 node)
+         allocate (doublets(2, 0), trib(0), tang(2, 0))
+         do face = FACE_LEFT, FACE_EXTENSION
+            sel = pack([(i, i=1, size(res%face))], res%face == face)
+            if (size(sel) == 0) cycle
+            edges = res%conn([1, 2], sel)
+            if (nen == 3) edges = res%conn([1, 2, 5], sel)
+            k = size(doublets, 2)
+            do i = 1, size(sel)
+               call add_doublet(doublets, group, k, res%conn(1, sel(i)), res%conn(4, sel(i)), &
+                  res%body_set(sel(i)))
+               call add_doublet(doublets, group, k, res%conn(2, sel(i)), res%conn(3, sel(i)), &
+                  res%body_set(sel(i)))
+               if (nen == 3) call add_doublet(doublets, group, k, res%conn(5, sel(i)), &
+                  res%conn(6, sel(i)), res%body_set(sel(i)))
+            end do
+            k = size(doublets, 2) - size(trib)
+            trib = [trib, [(0.0_wp, i=1, k)]]
+            tang = reshape([tang, [(0.0_wp, i=1, 2*k)]], [2, size(trib)])
+            call spring_tributaries(model%mesh%x, model%analysis%kind, &
+               model%analysis%thickness, doublets(1, size(trib) - k + 1:), edges, &
+               trib(size(trib) - k + 1:), tang(:, size(trib) - k + 1:), bad, error)
+            if (allocated(error)) then
+               msg = "joint set '"//set%name//"': "//error%message
+               call line_error(state, raw%at, msg, error)
+               return
+            end if
+         end do
+         set%conn = doublets
+         set%tributary = trib
+         set%tangent = tang
+         if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
+            sin(raw%angle*PI/180.0_wp)], 2, size(set%conn, 2))
+      end if
+      set%ids = [(next_id + i, i=1, size(set%conn, 2))]
+      next_id = next_id + size(set%conn, 2)
+   end subroutine generated_both
+
+   !> Appends the doublet (a, b) of body set g unless the doublets from column k0 + 1 on
+   !> hold it.
+   pure subroutine add_doublet(doublets, group, k0, a, b, g)
+      integer, allocatable, intent(inout) :: doublets(:, :), group(:)
+      integer, intent(in) :: k0, a, b, g
+      integer :: i
+      do i = k0 + 1, size(doublets, 2)
+         if (doublets(1, i) == a .and. doublets(2, i) == b) return
+      end do
+      doublets = reshape([doublets, a, b], [2, size(doublets, 2) + 1])
+      group = [group, g]
+   end subroutine add_doublet
+
+   !> The joint set `set` as one set per element set in `group` (that of the body on face 2
+   !> of each element, FACES=BOTH), named <set>_<element set>, so that a phase that removes
+   !> a body removes the joints against it; `set` itself when there is one group or none.
+   subroutine split_by_body(model, set, group, parts)
+      type(model_t), intent(in) :: model
+      type(joint_set_t), intent(in) :: set
+      integer, intent(in) :: group(:)
+      type(joint_set_t), allocatable, intent(out) :: parts(:)
+      integer, allocatable :: kinds(:), sel(:)
+      integer :: i, p
+      allocate (kinds(0))
+      do i = 1, size(group)
+         if (.not. any(kinds == group(i))) kinds = [kinds, group(i)]
+      end do
+      if (size(kinds) <= 1) then
+         parts = [set]
+         return
+      end if
+      allocate (parts(size(kinds)))
+      do p = 1, size(kinds)
+         sel = pack([(i, i=1, size(group))], group == kinds(p))
+         parts(p) = set
+         parts(p)%name = set%name//'_'//model%mesh%esets(kinds(p))%name
+         parts(p)%conn = set%conn(:, sel)
+         parts(p)%ids = set%ids(sel)
+         if (allocated(set%tributary)) then
+            parts(p)%tributary = set%tributary(sel)
+            parts(p)%tangent = set%tangent(:, sel)
+         end if
+      end do
+   end subroutine split_by_body
 
    !> Supports and imposed displacements on split nodes also hold the duplicates; pressure
    !> edges on SIDE-only sides move to them (point forces stay where they were given).

@@ -46,9 +46,35 @@ contains
       nodes = mesh%nsets(k)%nodes
    end subroutine target_nodes
 
+   !> Index in model%plates of the plate set `name`, 0 if none.
+   integer function plate_index(model, name) result(k)
+      type(model_t), intent(in) :: model
+      character(len=*), intent(in) :: name
+      integer :: i
+      k = 0
+      if (.not. allocated(model%plates)) return
+      do i = 1, size(model%plates)
+         if (same_name(model%plates(i)%name, name)) k = i
+      end do
+   end function plate_index
+
+   function plate_names(model) result(list)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: list
+      integer :: i
+      list = ''
+      if (allocated(model%plates)) then
+         do i = 1, size(model%plates)
+            call add_name(list, model%plates(i)%name)
+         end do
+      end if
+      if (len(list) == 0) list = ' (none)'
+   end function plate_names
+
    !> Fixed dofs, each (node, dof) once per group: the unnamed *BOUNDARY lines (group 0,
    !> always active) and each *BOUNDARY, NAME= (a support that phases switch; the lines of
-   !> several blocks of one name add up).
+   !> several blocks of one name add up); a rotation (dof 3) only where the node carries one (an
+   !> error when a line names the rotation alone on a node without).
    subroutine resolve_supports(state, model, error)
       type(deck_state_t), intent(in) :: state
       type(model_t), intent(inout) :: model
@@ -70,7 +96,7 @@ contains
                names = [character(len=SUPPORT_NAME_LEN) :: names, grp]
          end associate
       end do
-      allocate (fixed(2, model%mesh%nnode(), 0:size(names)), source=.false.)
+      allocate (fixed(3, model%mesh%nnode(), 0:size(names)), source=.false.)
       do i = 1, state%nboundary
          call target_nodes(state, model%mesh, state%boundary(i), nodes, error)
          if (allocated(error)) return
@@ -80,6 +106,13 @@ contains
          end do
          do j = 1, size(nodes)
             do d = state%boundary(i)%dof(1), state%boundary(i)%dof(2)
+               if (d == 3 .and. model%node_rotation(nodes(j)) == 0) then
+                  if (state%boundary(i)%dof(1) < 3) cycle
+                  call line_error(state, state%boundary(i)%at, 'node '// &
+                     itoa(model%mesh%node_id(nodes(j)))//' carries no rotation (it is on '// &
+                     'no *PLATE): ROT (dof 3) holds the rotation of plate nodes', error)
+                  return
+               end if
                fixed(d, nodes(j), g) = .true.
             end do
          end do
@@ -89,7 +122,7 @@ contains
          associate (fx => fixed(:, :, g))
             model%supports%node = [model%supports%node, &
                ((j, d=1, count(fx(:, j))), j=1, size(fx, 2))]
-            model%supports%dof = [model%supports%dof, pack(spread([1, 2], 2, size(fx, 2)), fx)]
+            model%supports%dof = [model%supports%dof, pack(spread([1, 2, 3], 2, size(fx, 2)), fx)]
             model%supports%group = [model%supports%group, (g, k=1, count(fx))]
          end associate
       end do
@@ -113,30 +146,54 @@ contains
             pat%kind = load_kind(raw%kind)
             allocate (pat%node(0), pat%dof(0), pat%value(0), pat%edge(3, 0), pat%pressure(0), &
                pat%pressure_gradient(0), pat%pressure_y_ref(0), pat%eset(0), pat%vector(2, 0))
+            allocate (pat%plate(0), pat%plate_vector(2, 0))
             pat%floored = raw%floored
             pat%p_min = raw%p_min
             do i = 1, raw%n
-               call add_item(state, model%mesh, raw%kind, raw%items(i), pat, error)
+               call add_item(state, model, raw%kind, raw%items(i), pat, error)
                if (allocated(error)) return
             end do
          end associate
       end do
    end subroutine resolve_patterns
 
-   subroutine add_item(state, mesh, kind, item, pat, error)
+   subroutine add_item(state, model, kind, item, pat, error)
       type(deck_state_t), intent(in) :: state
-      type(mesh_t), intent(in) :: mesh
+      type(model_t), intent(in), target :: model
       character(len=*), intent(in) :: kind
       type(raw_item_t), intent(in) :: item
       type(load_pattern_t), intent(inout) :: pat
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: nodes(:), sets(:), edges(:, :)
       integer :: k, n
+      type(mesh_t), pointer :: mesh
+      mesh => model%mesh
+      k = plate_index(model, item%target)
+      if (kind == 'PLATE_LOAD' .or. (kind == 'GRAVITY' .and. k > 0)) then
+         if (k == 0) then
+            call line_error(state, item%at, "undefined plate set '"//item%target// &
+               "'; known plate sets:"//plate_names(model), error)
+            return
+         end if
+         pat%plate = [pat%plate, k]
+         pat%plate_vector = reshape([pat%plate_vector, item%value], [2, size(pat%plate) ])
+         return
+      end if
       select case (kind)
       case ('FORCE', 'DISPLACEMENT')
          call target_nodes(state, mesh, item, nodes, error)
          if (allocated(error)) return
          n = size(nodes)
+         if (item%dof(1) == 3) then
+            do k = 1, n
+               if (model%node_rotation(nodes(k)) == 0) then
+                  call line_error(state, item%at, 'node '//itoa(mesh%node_id(nodes(k)))// &
+                     ' carries no rotation (it is on no *PLATE): dof 3 (ROT) applies to '// &
+                     'plate nodes', error)
+                  return
+               end if
+            end do
+         end if
          pat%node = [pat%node, nodes]
          pat%dof = [pat%dof, spread(item%dof(1), 1, n)]
          pat%value = [pat%value, spread(item%value(1), 1, n)]

@@ -127,9 +127,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(element_set_t) :: es
       integer :: i, k, e, j, nen, c(9)
-      if (.not. allocated(state%esets) .and. size(model%mesh%esets) == 0) then
+      ! a deck of plates alone (a frame, a beam) needs no massif element
+      if (.not. allocated(state%esets) .and. size(model%mesh%esets) == 0 .and. &
+          .not. allocated(state%plate_sets)) then
          call deck_error(error, model%deck_file, 0, '*ELEMENTS', &
-            'no elements: the deck defines no *ELEMENTS (and no *MESH)')
+            'no elements: the deck defines no *ELEMENTS (and no *MESH, no *PLATE)')
          return
       end if
       if (.not. allocated(state%esets)) return

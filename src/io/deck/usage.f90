@@ -10,6 +10,7 @@ module pecplas_io_deck_usage
    use pecplas_model_type, only: model_t
    use pecplas_model_adapt_request, only: goal_spec_t, parse_goal_spec
    use pecplas_model_phases, only: CHANGE_MATERIAL
+   use pecplas_io_text_fields, only: field_t, split_fields
    implicit none (type, external)
    private
 
@@ -79,10 +80,11 @@ contains
       if (allocated(state%nsets)) then
          do k = 1, size(state%nsets)
             if (.not. named(state, state%nsets(k)%name, .false.) .and. &
-                .not. named_by_option(state, model, state%nsets(k)%name)) &
+                .not. named_by_option(state, model, state%nsets(k)%name) .and. &
+                .not. named_by_anchor(state, state%nsets(k)%name)) &
                call warn_at(state, model, state%nsets(k)%at, "node set '"// &
-               state%nsets(k)%name//"' is used by no *BOUNDARY, *LOAD, *STEP (NODE=) or "// &
-               '*ADAPT (GOAL=) line')
+               state%nsets(k)%name//"' is used by no *BOUNDARY, *LOAD, *STEP (NODE=), "// &
+               '*ANCHOR or *ADAPT (GOAL=) line')
          end do
       end if
       if (allocated(state%edge_sets)) then
@@ -113,6 +115,17 @@ contains
             end do
          end do
       end if
+      ! a *PLATE's NODES= or EDGES=
+      if (allocated(state%plate_sets)) then
+         do i = 1, size(state%plate_sets)
+            if (edges .and. allocated(state%plate_sets(i)%edges)) then
+               if (same_name(state%plate_sets(i)%edges, name)) used = .true.
+            end if
+            if (.not. edges .and. allocated(state%plate_sets(i)%nodes)) then
+               if (same_name(state%plate_sets(i)%nodes, name)) used = .true.
+            end if
+         end do
+      end if
       if (edges .and. allocated(state%joint_sets)) then
          do i = 1, size(state%joint_sets)
             if (allocated(state%joint_sets(i)%edges)) then
@@ -121,6 +134,24 @@ contains
          end do
       end if
    end function named
+
+   !> True when a data line of an *ANCHOR names `name`.
+   logical function named_by_anchor(state, name) result(used)
+      type(deck_state_t), intent(in) :: state
+      character(len=*), intent(in) :: name
+      type(field_t), allocatable :: f(:)
+      integer :: a, i, k
+      used = .false.
+      if (.not. allocated(state%anchors)) return
+      do a = 1, size(state%anchors)
+         do i = 1, size(state%anchors(a)%where)
+            call split_fields(state%lines%text(state%anchors(a)%where(i)), f)
+            do k = 1, size(f)
+               if (same_name(f(k)%s, name)) used = .true.
+            end do
+         end do
+      end do
+   end function named_by_anchor
 
    !> True when a *STEP's NODE= or *ADAPT's GOAL= (node:SET:d, reaction:SET) names `name`.
    logical function named_by_option(state, model, name) result(used)

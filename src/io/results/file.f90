@@ -55,12 +55,14 @@ module pecplas_io_results_file
       write_xdmf
    use pecplas_io_results_fields, only: check_increment, write_history_row, write_fields, &
       has_plastic_state
+   use pecplas_io_results_plates, only: write_plate_mesh, write_plate_fields
    use pecplas_io_results_joints, only: joint_layout_t, plan_joints, write_joint_mesh, &
       check_joint_fields, write_joint_fields
    use pecplas_io_results_describe, only: results_units_t, plan_units, describe_mesh, &
       describe_history
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
+   use pecplas_io_results_anchors, only: write_anchor_mesh, write_anchor_fields
    implicit none (type, external)
    private
 
@@ -219,6 +221,9 @@ contains
       call write_root(file, model, version, error)
       if (.not. allocated(error)) call write_mesh(file, model%mesh, gauss_xy, error)
       if (.not. allocated(error)) call write_joint_mesh(file, model, points, error)
+      if (.not. allocated(error)) call write_anchor_mesh(file, model, this%units%length, &
+         this%units%force, error)
+      if (.not. allocated(error)) call write_plate_mesh(file, model, error)
       if (.not. allocated(error)) call create_history(file, model, error)
       if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
       if (.not. allocated(error)) call describe_history(file, this%units, error)
@@ -585,6 +590,11 @@ contains
          jon = this%layout%joints(:)%active
          if (size(this%joints) > 0) call write_joint_fields(file, inc%global_increment, &
             inc%joint_fields, this%joints, this%units, error, jon)
+         if (allocated(error)) return
+         if (allocated(inc%anchor_fields)) call write_anchor_fields(file, &
+            inc%global_increment, inc%anchor_fields, this%units%length, this%units%force, error)
+         if (allocated(inc%plate_fields)) call write_plate_fields(file, inc%global_increment, &
+            inc%plate_fields, this%units, error)
          if (allocated(error)) return
       end if
       call write_pending_phases(this, file, error)

@@ -6,7 +6,7 @@ module pecplas_io_results_increment
    private
 
    public :: increment_result_t, set_fields_t, gauss_coordinates_t, joint_fields_t, &
-      joint_points_t, limit_point_t
+      joint_points_t, limit_point_t, anchor_fields_t, plate_fields_t
 
    !> Gauss-point fields of one element set, components (xx, yy, zz, xy) as in the
    !> massif materials (xy strain is engineering shear).
@@ -38,6 +38,29 @@ module pecplas_io_results_increment
       real(wp), allocatable :: error_indicator(:)
    end type joint_fields_t
 
+   !> Forces of one anchor set: N of one anchor (nbar, tension positive) and N / L_s;
+   !> `active`: the set acts in the increment's phase (only those are written).
+   type :: anchor_fields_t
+      character(len=:), allocatable :: name
+      logical :: active = .true.
+      real(wp), allocatable :: force(:), force_per_width(:)
+   end type anchor_fields_t
+   !> Fields of one plate set: N, Q, M at both ends of each element end_forces(3, 2, nel);
+   !> at the plate's nodes (node_index: internal numbers, in the order of the plate) the
+   !> mean of the element ends there node_forces(3, nnode_plate), the displacement (2, .)
+   !> and the rotation (.); the points' generalized resultants (5, np, nel) and section
+   !> history (3, np, nel) (pecplas_structures_section).
+   type :: plate_fields_t
+      !> The set's name; whether it is part of the model now (a phase may leave it out).
+      character(len=:), allocatable :: name
+      logical :: active = .true.
+      integer, allocatable :: node_index(:)
+      real(wp), allocatable :: end_forces(:, :, :), node_forces(:, :), displacement(:, :), &
+         rotation(:), resultants(:, :, :), plastic(:, :, :)
+      !> The moment reaction at each plate node whose rotation is held (0 elsewhere).
+      real(wp), allocatable :: moment_reaction(:)
+   end type plate_fields_t
+
    !> Coordinates and unit tangents (2, np, nel) of the points of one joint set.
    type :: joint_points_t
       real(wp), allocatable :: xy(:, :, :), tangent(:, :, :)
@@ -67,6 +90,10 @@ module pecplas_io_results_increment
       type(set_fields_t), allocatable :: set_fields(:)
       !> One entry per joint set, in model%joint_sets order (absent: no joints).
       type(joint_fields_t), allocatable :: joint_fields(:)
+      !> One entry per anchor set, in model%anchors order (absent: no anchors).
+      type(anchor_fields_t), allocatable :: anchor_fields(:)
+      !> One entry per plate set, in model%plates order (absent: no plates).
+      type(plate_fields_t), allocatable :: plate_fields(:)
       !> Global error estimate and energy norm of the solution (when estimated).
       logical :: estimated = .false.
       real(wp) :: error_estimate = 0.0_wp, energy_norm = 0.0_wp
