@@ -8,10 +8,12 @@ program tester
    use test_s1, only: collect_s1
    use test_initial, only: collect_initial
    use test_phases, only: collect_phases
+   use test_water, only: collect_water
    use test_anchors, only: collect_anchors
    use test_joint_faces, only: collect_joint_faces
    use test_phases_switch, only: collect_phases_switch
    use test_plates, only: collect_plates
+   use test_io_results_structures, only: collect_io_results_structures
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
    use test_estimator, only: collect_estimator
@@ -91,9 +93,11 @@ program tester
    suites = [suites, new_testsuite('s1', collect_s1)]
    suites = [suites, new_testsuite('initial', collect_initial)]
    suites = [suites, new_testsuite('phases', collect_phases)]
+   suites = [suites, new_testsuite('water', collect_water)]
    suites = [suites, new_testsuite('anchors', collect_anchors)]
    suites = [suites, new_testsuite('joint_faces', collect_joint_faces)]
    suites = [suites, new_testsuite('phases_switch', collect_phases_switch)]
+   suites = [suites, new_testsuite('io_results_structures', collect_io_results_structures)]
    suites = [suites, new_testsuite('cli', collect_cli)]
    suites = [suites, new_testsuite('model_mesh_tools', collect_model_mesh_tools)]
    suites = [suites, new_testsuite('io_gmsh', collect_io_gmsh)]

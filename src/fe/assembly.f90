@@ -11,7 +11,7 @@ module pecplas_fe_assembly
    use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_gauss_derivs
    use pecplas_massif_point_kernels, only: point_strain, point_force_add
    use pecplas_massif_element_matrices, only: massif_stiffness
-   use pecplas_massif_materials_type, only: NCOMP
+   use pecplas_massif_materials_type, only: NCOMP, material_t
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
    use pecplas_fe_joint_assembly, only: add_joint_stiffness, add_joint_forces
@@ -149,13 +149,15 @@ contains
       integer, parameter :: CHUNK = 2048
       type(error_t), allocatable :: err
       real(wp), allocatable :: ke(:, :, :), d(:, :, :)
-      real(wp) :: delastic(NCOMP, NCOMP)
+      real(wp) :: delastic(NCOMP, NCOMP), kwn
       integer, allocatable :: idx(:)
       integer :: e, c0, c1, nd, bad, e1, e2
       logical :: stored
       associate (set => model%mesh%esets(s), &
                  mat => model%materials(set_material(model, s, st))%m)
          nd = 2*rule%nnode
+         ! an undrained set: the pore water's volumetric stiffness K_w/n (0: none)
+         kwn = model%water%kwn(s, set_material(model, s, st))
          call part%range(size(set%conn, 2), e1, e2)
          if (.not. st%active) then
             ! zero blocks: the pattern (of every element) and the block order stay the same
@@ -186,9 +188,10 @@ contains
             do e = c0, c1
                if (stored) then
                   call element_stiffness(model, rule, set%conn(:, e), st%tangent(:, :, :, e), &
-                     ke(:, :, e - c0 + 1), err)
+                     ke(:, :, e - c0 + 1), err, kwn)
                else
-                  call element_stiffness(model, rule, set%conn(:, e), d, ke(:, :, e - c0 + 1), err)
+                  call element_stiffness(model, rule, set%conn(:, e), d, ke(:, :, e - c0 + 1), &
+                     err, kwn)
                end if
                if (allocated(err)) then
                   !$omp critical (pecplas_assembly_bad)
@@ -211,9 +214,9 @@ contains
             allocate (ke(nd, nd, 1))
             if (stored) then
                call element_stiffness(model, rule, set%conn(:, bad), st%tangent(:, :, :, bad), &
-                  ke(:, :, 1), error)
+                  ke(:, :, 1), error, kwn)
             else
-               call element_stiffness(model, rule, set%conn(:, bad), d, ke(:, :, 1), error)
+               call element_stiffness(model, rule, set%conn(:, bad), d, ke(:, :, 1), error, kwn)
             end if
             if (.not. allocated(error)) call fatal_error(error, 'element stiffness failed')
             call element_context(error, model, s, bad)
@@ -230,15 +233,18 @@ contains
       idx(2::2) = dofs%eq(2, conn)
    end subroutine element_equations
 
-   !> Stiffness ke of one massif element with nodes `conn` and point tangents d.
-   subroutine element_stiffness(model, rule, conn, d, ke, error)
+   !> Stiffness ke of one massif element with nodes `conn` and point tangents d; with
+   !> kwn > 0 (an undrained set) plus that of the pore water, D_w = kwn m m^T.
+   subroutine element_stiffness(model, rule, conn, d, ke, error, kwn)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rule
       integer, intent(in) :: conn(:)
       real(wp), contiguous, intent(in) :: d(:, :, :)
       real(wp), contiguous, intent(out) :: ke(:, :)
       type(error_t), allocatable, intent(out) :: error
+      real(wp), intent(in) :: kwn
       real(wp) :: xe(2, MAX_NODES)
+      real(wp), allocatable :: dw(:, :, :), kw(:, :)
       integer :: k
       ! gathered into a fixed array: x(:, conn) as an argument is a heap temporary
       do k = 1, size(conn)
@@ -246,6 +252,13 @@ contains
       end do
       call massif_stiffness(rule, model%analysis%kind, model%analysis%thickness, &
          xe(:, 1:size(conn)), d, ke, error)
+      if (allocated(error) .or. .not. (kwn > 0.0_wp)) return
+      allocate (dw(NCOMP, NCOMP, size(d, 3)), source=0.0_wp)
+      dw(1:3, 1:3, :) = kwn
+      allocate (kw, mold=ke)
+      call massif_stiffness(rule, model%analysis%kind, model%analysis%thickness, &
+         xe(:, 1:size(conn)), dw, kw, error)
+      ke = ke + kw
    end subroutine element_stiffness
 
    !> Internal forces fint(2, ncolumns) = sum B^T sigma dV for the trial displacements `u`,
@@ -339,9 +352,10 @@ contains
       ! fixed sizes: automatic arrays would be allocated on the heap for every element
       real(wp) :: xe(2, MAX_NODES), ue(2*MAX_NODES), eps(NCOMP, GROUP), deps(NCOMP), t0
       real(wp) :: dpoint(NCOMP, NCOMP), dndx(2, MAX_NODES, GROUP), hr(MAX_NODES, GROUP)
-      real(wp) :: dvol(GROUP)
-      integer :: g, g0, g1, nn, k
-      logical :: clocked
+      real(wp) :: dvol(GROUP), total(NCOMP), kwn
+      class(material_t), allocatable :: pmat
+      integer :: g, g0, g1, nn, k, m
+      logical :: clocked, varies
       associate (conn => model%mesh%esets(s)%conn(:, e), &
                  mat => model%materials(set_material(model, s, st))%m)
          nn = rule%nnode
@@ -354,6 +368,13 @@ contains
          ! a linear material's update (a matrix product) is not timed: reading the clock
          ! would cost more than the update itself
          clocked = timed .and. allocated(st%tangent)
+         kwn = 0.0_wp
+         varies = .false.
+         m = set_material(model, s, st)
+         if (st%pore%on()) then
+            kwn = model%water%kwn(s, m)
+            varies = model%water%mats(m)%cu_varies()
+         end if
          do g0 = 1, st%ngauss, GROUP
             g1 = min(g0 + GROUP - 1, st%ngauss)
             do g = g0, g1
@@ -368,7 +389,19 @@ contains
             do g = g0, g1
                deps = eps(:, g - g0 + 1) - st%strain(:, g, e)
                st%hist_trial(:, g, e) = st%hist(:, g, e)
-               if (allocated(st%tangent)) then
+               if (varies) then
+                  ! UNDRAINED_B with c_u rising with depth: the point's own strength
+                  call mat%with_cohesion(model%water%mats(m)%cu_at(dot_product( &
+                     xe(2, 1:nn), rule%n(1:nn, g))), pmat, error)
+                  if (allocated(error)) exit
+                  if (allocated(st%tangent)) then
+                     call pmat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                        st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
+                  else
+                     call pmat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
+                        st%stress_trial(:, g, e), dpoint, error)
+                  end if
+               else if (allocated(st%tangent)) then
                   call mat%update(st%stress(:, g, e), deps, st%hist_trial(:, g, e), &
                      st%stress_trial(:, g, e), st%tangent(:, :, g, e), error)
                else
@@ -376,13 +409,24 @@ contains
                      st%stress_trial(:, g, e), dpoint, error)
                end if
                if (allocated(error)) exit
+               ! undrained: the excess pore pressure of the volume change, d p = -kwn d eps_v
+               if (kwn > 0.0_wp) st%pore%excess_trial(g, e) = st%pore%excess(g, e) - &
+                  kwn*(deps(1) + deps(2) + deps(3))
             end do
             if (clocked) tlaw = tlaw + (wall_time() - t0)
             if (allocated(error)) return
             do g = g0, g1
                st%strain_trial(:, g, e) = eps(:, g - g0 + 1)
-               call point_force_add(nn, dndx(:, :, g - g0 + 1), hr(:, g - g0 + 1), &
-                  dvol(g - g0 + 1), st%stress_trial(:, g, e), fe)
+               if (st%pore%on()) then
+                  ! the total stress sigma' - p m (tension positive, p compression positive)
+                  total = st%stress_trial(:, g, e)
+                  total(1:3) = total(1:3) - (st%pore%steady(g, e) + st%pore%excess_trial(g, e))
+                  call point_force_add(nn, dndx(:, :, g - g0 + 1), hr(:, g - g0 + 1), &
+                     dvol(g - g0 + 1), total, fe)
+               else
+                  call point_force_add(nn, dndx(:, :, g - g0 + 1), hr(:, g - g0 + 1), &
+                     dvol(g - g0 + 1), st%stress_trial(:, g, e), fe)
+               end if
             end do
          end do
       end associate

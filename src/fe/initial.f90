@@ -107,7 +107,9 @@ contains
          associate (init => model%initial_stresses(i))
             if (init%eset /= 0 .and. init%eset /= s) cycle
             hit = .true.
-            if (init%kind == 'GEOSTATIC') then
+            if (init%kind == 'GEOSTATIC' .and. model%water%level_at(1) > 0) then
+               stress = effective_geostatic(model, init, s, x)
+            else if (init%kind == 'GEOSTATIC') then
                stress = geostatic_stress(init, model%materials( &
                   model%mesh%esets(s)%material_index)%m%unit_weight, x(2))
             else
@@ -116,6 +118,32 @@ contains
          end associate
       end do
    end subroutine stress_at
+
+   !> Geostatic effective stress of set s at x under the level of the first step:
+   !> sigma'_v = q + gamma_unsat d_dry + (gamma_sat - gamma_w) d_wet, d_dry and d_wet the
+   !> thicknesses of [y, y_s] above and below the level (doc/theory.md, Groundwater);
+   !> sigma'_h = K0 sigma'_v. A dry set or a NON_POROUS material: gamma_unsat throughout.
+   pure function effective_geostatic(model, init, s, x) result(stress)
+      type(model_t), intent(in) :: model
+      type(initial_stress_t), intent(in) :: init
+      integer, intent(in) :: s
+      real(wp), intent(in) :: x(2)
+      real(wp) :: stress(4), h, sv, dry, wet, gam
+      integer :: m, k
+      m = model%mesh%esets(s)%material_index
+      k = model%water%level_at(1)
+      gam = model%materials(m)%m%unit_weight
+      if (.not. model%water%wet(s, m)) then
+         stress = geostatic_stress(init, gam, x(2))
+         return
+      end if
+      h = model%water%levels(k)%head(x(1))
+      dry = max(0.0_wp, init%surface - max(x(2), h))
+      wet = max(0.0_wp, min(init%surface, h) - x(2))
+      sv = init%surcharge + gam*dry + (model%water%mats(m)%gamma_sat - &
+         model%water%levels(k)%gamma_w)*wet
+      stress = [-init%k0*sv, -sv, -init%k0*sv, 0.0_wp]
+   end function effective_geostatic
 
    !> Mean over the element sets `sets` of their initial stress at x, of those that an
    !> *INITIAL_STRESS entry covers (hit = .false. when none does; stress 0).

@@ -297,7 +297,12 @@ contains
             return
          end if
          st%eps_trial(:, ip, e) = eps
-         call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
+         if (allocated(st%pore)) then
+            ! the total normal stress (compression positive): effective + pore pressure
+            call joint_force(pts(ip), st%sigma_trial(:, ip, e) + [st%pore(ip, e), 0.0_wp], fe)
+         else
+            call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
+         end if
       end do
    end subroutine joint_element_forces
 

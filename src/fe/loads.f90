@@ -9,7 +9,7 @@ module pecplas_fe_loads
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: load_pattern_t
    use pecplas_fe_element_context, only: element_context
-   use pecplas_massif_kinematics, only: massif_rule_t
+   use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
    use pecplas_massif_element_matrices, only: massif_body_force
    use pecplas_massif_edge_load, only: edge_pressure_forces, edge_linear_pressure_forces
    implicit none (type, external)
@@ -22,7 +22,10 @@ contains
    !> force(2, ncolumns, npattern) and displacement(2, ncolumns, npattern) of every pattern
    !> (the columns of the plate rotations after the nodes: pecplas_model_columns).
    !> `active` (phases): the body forces and gravity of the active element sets only.
-   subroutine pattern_vectors(model, rules, force, displacement, error, active, plate_active)
+   !> `level`: the phreatic level in force (model%water%levels; 0 none; default: that of
+   !> the first step), which gives the unit weights below it (gamma_sat).
+   subroutine pattern_vectors(model, rules, force, displacement, error, active, plate_active, &
+      level)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       real(wp), allocatable, intent(out) :: force(:, :, :), displacement(:, :, :)
@@ -30,6 +33,7 @@ contains
       logical, intent(in), optional :: active(:)
       !> Phases: the loads of the active plate sets only.
       logical, intent(in), optional :: plate_active(:)
+      integer, intent(in), optional :: level
       integer :: p, k, nnode, npat, nen, c, d
       real(wp) :: fe(6)
 
@@ -65,7 +69,7 @@ contains
                      if (.not. active(pat%eset(k))) cycle
                   end if
                   call add_body_force(model, rules, pat%eset(k), pat%vector(:, k), &
-                     pat%kind == LOAD_GRAVITY, force(:, :, p), error)
+                     pat%kind == LOAD_GRAVITY, force(:, :, p), error, level)
                   if (allocated(error)) return
                end do
             end select
@@ -128,8 +132,10 @@ contains
    end subroutine pressure_forces
 
    !> Consistent nodal forces of a body force per unit volume `vec` (or, for gravity, of
-   !> the material unit weight times the direction `vec`) over element set `s`.
-   subroutine add_body_force(model, rules, s, vec, gravity, force, error)
+   !> the material unit weight times the direction `vec`) over element set `s`. With
+   !> groundwater the unit weight is gamma_sat below the phreatic level `level` (default:
+   !> the level of the first step) in a wet set: point by point (pecplas_water_type).
+   subroutine add_body_force(model, rules, s, vec, gravity, force, error, level)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
       integer, intent(in) :: s
@@ -137,10 +143,19 @@ contains
       logical, intent(in) :: gravity
       real(wp), intent(inout) :: force(:, :)
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: level
       real(wp), allocatable :: xe(:, :), fe(:)
       real(wp) :: bf(2)
-      integer :: e, j, nn
+      integer :: e, j, nn, k
 
+      if (gravity .and. model%water%used()) then
+         k = model%water%level_at(1)
+         if (present(level)) k = level
+         if (k > 0) then
+            call add_wet_weight(model, rules, s, vec, k, force, error)
+            return
+         end if
+      end if
       associate (set => model%mesh%esets(s))
          bf = vec
          if (gravity) bf = vec*model%materials(set%material_index)%m%unit_weight
@@ -160,5 +175,40 @@ contains
          end do
       end associate
    end subroutine add_body_force
+
+   !> Gravity over element set s with the unit weight of each integration point under
+   !> phreatic level k (gamma_sat below it in a wet set, the material's gamma elsewhere).
+   subroutine add_wet_weight(model, rules, s, vec, k, force, error)
+      type(model_t), intent(in) :: model
+      type(massif_rule_t), intent(in) :: rules(:)
+      integer, intent(in) :: s, k
+      real(wp), intent(in) :: vec(2)
+      real(wp), intent(inout) :: force(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(massif_point_t) :: pt
+      real(wp), allocatable :: xe(:, :)
+      real(wp) :: w
+      integer :: e, j, g, m
+      associate (set => model%mesh%esets(s), rule => rules(s))
+         m = set%material_index
+         allocate (xe(2, rule%nnode))
+         do e = 1, size(set%conn, 2)
+            xe = model%mesh%x(:, set%conn(:, e))
+            do g = 1, rule%ngauss
+               call massif_gauss_point(rule, g, model%analysis%kind, &
+                  model%analysis%thickness, xe, pt, error)
+               if (allocated(error)) then
+                  call element_context(error, model, s, e)
+                  return
+               end if
+               w = model%water%unit_weight(k, s, m, model%materials(m)%m%unit_weight, pt%x)
+               do j = 1, rule%nnode
+                  force(:, set%conn(j, e)) = force(:, set%conn(j, e)) + &
+                     pt%n(j)*vec*w*pt%dvol
+               end do
+            end do
+         end do
+      end associate
+   end subroutine add_wet_weight
 
 end module pecplas_fe_loads

@@ -16,6 +16,7 @@ module pecplas_fe_plate_output
    use pecplas_structures_beam, only: NGEN, MAX_BEAM_DOFS, beam_point_t, beam_npoint, &
       beam_line_load
    use pecplas_structures_state, only: plate_state_t
+   use pecplas_fe_water_faces, only: plate_water_load
    use pecplas_fe_plate_assembly, only: plate_points, plate_element_x
    use pecplas_io_results_increment, only: plate_fields_t
    implicit none (type, external)
@@ -43,15 +44,19 @@ contains
       end associate
    end function plate_nodes
 
-   !> Fields of plate set s at the converged state (u, pstate, pattern factors).
-   subroutine plate_results(model, u, pstate, factors, s, f, error)
+   !> Fields of plate set s at the converged state (u, pstate, pattern factors); `level`:
+   !> the phreatic level in force (groundwater: the water's pressure on a plate that
+   !> *PLATE_WATER names is one of its own loads; default none).
+   subroutine plate_results(model, u, pstate, factors, s, f, error, level)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: u(:, :), factors(:)
       type(plate_state_t), intent(in) :: pstate
       integer, intent(in) :: s
       type(plate_fields_t), intent(out) :: f
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: level
       type(beam_point_t) :: pts(3)
+      logical :: wet
       real(wp) :: fe(MAX_BEAM_DOFS), fl(MAX_BEAM_DOFS), x(2, 3), t(2), n(2), scale, q(2)
       real(wp) :: dxd(2)
       integer, allocatable :: count(:), at(:)
@@ -96,6 +101,10 @@ contains
                      fe(1:nd) = fe(1:nd) - factors(p)*fl(1:nd)
                   end do
                end do
+            end if
+            if (present(level)) then
+               call plate_water_load(model, s, e, level, fl(1:nd), wet)
+               if (wet) fe(1:nd) = fe(1:nd) - fl(1:nd)
             end if
             do end = 1, 2
                if (pl%nen == 2) then

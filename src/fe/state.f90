@@ -4,6 +4,7 @@
 module pecplas_fe_state
    use pecplas_base_kinds, only: wp
    use pecplas_joints_state, only: joint_state_t
+   use pecplas_water_state, only: pore_state_t
    use pecplas_structures_anchor_state, only: anchor_state_t
    use pecplas_structures_state, only: plate_state_t
    implicit none (type, external)
@@ -27,6 +28,8 @@ module pecplas_fe_state
       !> model%materials of a material given by *CHANGE_MATERIAL (0: the *SECTION's).
       logical :: active = .true.
       integer :: material = 0
+      !> Pore pressures at the points (a model with water; pecplas_water_state).
+      type(pore_state_t) :: pore
    end type set_state_t
 
    type :: fe_state_t
@@ -66,6 +69,7 @@ contains
             st%stress = st%stress_trial
             st%strain = st%strain_trial
             st%hist = st%hist_trial
+            call st%pore%commit()
          end associate
       end do
       call this%joints%commit()
@@ -83,6 +87,7 @@ contains
             st%stress_trial = st%stress
             st%strain_trial = st%strain
             st%hist_trial = st%hist
+            call st%pore%rollback()
          end associate
       end do
       call this%joints%rollback()

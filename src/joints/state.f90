@@ -26,6 +26,10 @@ module pecplas_joints_state
       !> *CHANGE_LAW (0: the *JOINTS one).
       logical :: active = .true.
       integer :: law = 0
+      !> Groundwater: the steady pore pressure at each point (np, nel), compression positive;
+      !> the law works on the effective normal stress, the element's forces take
+      !> sigma_n + p (pecplas_fe_pore). Unallocated in a model without water.
+      real(wp), allocatable :: pore(:, :)
    end type joint_set_state_t
 
    type :: joint_state_t

@@ -22,6 +22,8 @@ contains
       integer :: i
       is_phased = .false.
       if (.not. allocated(model%steps)) return
+      ! groundwater: the pore pressures of each phase come in through its start
+      is_phased = model%water%used()
       do i = 1, size(model%steps)
          associate (st => model%steps(i))
             if (st%reset_displacements) is_phased = .true.

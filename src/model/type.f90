@@ -14,6 +14,7 @@ module pecplas_model_type
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_units, only: units_t
    use pecplas_model_adapt_request, only: adapt_request_t
+   use pecplas_water_type, only: water_model_t
    use pecplas_model_anchors, only: anchor_set_t
    implicit none (type, external)
    private
@@ -53,6 +54,8 @@ module pecplas_model_type
       type(output_options_t) :: output
       !> *ADAPT: run the adaptive loop (pecplas_adapt_adapt) instead of one analysis.
       type(adapt_request_t) :: adapt
+      !> Groundwater: phreatic levels, drainage of the materials, dry sets (*WATER).
+      type(water_model_t) :: water
       !> Deck line of every node, element and joint (for checks after reading).
       type(provenance_t) :: provenance
       !> Suspicious input found while reading and checking (pecplas_base_warnings).

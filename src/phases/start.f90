@@ -46,6 +46,9 @@ module pecplas_phases_start
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_joints_laws_type, only: MODE_STICK, MODE_OPEN
    use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
+   use pecplas_fe_pore, only: set_steady_pressures, reset_excess
+   use pecplas_fe_water_faces, only: add_water_faces, add_plate_water
+   use pecplas_base_strings, only: decimal_text
    implicit none (type, external)
    private
 
@@ -88,6 +91,8 @@ contains
       call start_anchors(model, problem%state, istep, anchors_changed, lines)
       if (anchors_changed) refactorise = .true.
       associate (step => model%steps(istep), st => problem%state)
+         call water_changes(model, problem, istep, lines, error)
+         if (allocated(error)) return
          do c = 1, size(step%changes)
             if (step%changes(c)%target == TARGET_ANCHORS) cycle
             associate (ch => step%changes(c))
@@ -204,7 +209,8 @@ contains
          held = attached_nodes(model, eactive, jactive, pactive, aactive)
          ! the loads of the active sets
          call pattern_vectors(model, problem%system%rules, problem%system%pattern_force, &
-            problem%system%pattern_disp, error, eactive, pactive)
+            problem%system%pattern_disp, error, eactive, pactive, &
+            level=model%water%level_at(istep))
          if (allocated(error)) return
          ! an inactive pattern loads nothing: a deactivated one's load is released below
          if (allocated(problem%phase%patterns_on)) then
@@ -215,7 +221,7 @@ contains
                problem%system%pattern_disp(:, :, p) = 0.0_wp
             end do
          end if
-         call held_load(model, problem, eactive, error)
+         call held_load(model, problem, eactive, model%water%level_at(istep), error)
          if (allocated(error)) return
          ! the K0 state's own out-of-balance: held until the first nil step
          if (.not. problem%phase%released) then
@@ -339,7 +345,7 @@ contains
       call forces_at_start(model, problem, all_on, .true., f, error)
       if (allocated(error)) return
       if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
-      call held_load(model, problem, all_on, error)
+      call held_load(model, problem, all_on, model%water%level_at(1), error)
       if (allocated(error)) return
       ! on the free equations: at a support it is the support's reaction to the K0 state
       problem%phase%unbalanced = f - problem%system%initial_force
@@ -353,24 +359,36 @@ contains
    end subroutine k0_unbalance
 
    !> The held load (problem%system%initial_force): what the active sets hold.
-   subroutine held_load(model, problem, eactive, error)
+   !> `level`: the phreatic level in force (the weights below it are gamma_sat).
+   subroutine held_load(model, problem, eactive, level, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       logical, intent(in) :: eactive(:)
+      integer, intent(in) :: level
       type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: jon(:), pon(:)
       integer :: s
       problem%system%initial_force = 0.0_wp
       do s = 1, size(eactive)
          if (.not. eactive(s)) cycle
          if (problem%phase%hold(s) == HOLD_WEIGHT) then
             call add_body_force(model, problem%system%rules, s, [0.0_wp, -1.0_wp], .true., &
-               problem%system%initial_force, error)
+               problem%system%initial_force, error, level)
             if (allocated(error)) return
          else if (problem%phase%hold(s) > 0) then
             problem%system%initial_force = problem%system%initial_force + &
                problem%phase%homogeneous(:, :, problem%phase%hold(s))
          end if
       end do
+      ! the water standing on the free faces and on the plates *PLATE_WATER names
+      if (model%water%used() .and. level > 0) then
+         allocate (jon(0), pon(0))
+         if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
+         call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error)
+         if (allocated(error)) return
+         if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
+         call add_plate_water(model, pon, level, problem%system%initial_force)
+      end if
    end subroutine held_load
 
    !> Nodal forces of the converged stresses of set s alone.
@@ -637,6 +655,35 @@ contains
          problem%state%joints%sets(s)%eps_trial = 0.0_wp
       end do
    end subroutine reset_displacements
+
+   !> Groundwater at the start of step istep: the steady pore pressures under the level in
+   !> force, and the excess pore pressures set to zero when the step says so (*CHANGE_WATER).
+   subroutine water_changes(model, problem, istep, lines, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      integer, intent(in) :: istep
+      character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      if (.not. model%water%used()) return
+      k = model%water%level_at(istep)
+      call set_steady_pressures(model, problem%system%rules, problem%state, k, error)
+      if (allocated(error)) return
+      if (k /= model%water%level_at(istep - 1) .or. istep == 1) then
+         if (k > 0) then
+            call add_line(lines, 'phreatic level '//model%water%levels(k)%name// &
+               ' (gamma_w = '//decimal_text(model%water%levels(k)%gamma_w, 6)//')')
+         else
+            call add_line(lines, 'no phreatic level (no steady pore pressure)')
+         end if
+      end if
+      if (allocated(model%water%step_reset)) then
+         if (model%water%step_reset(istep)) then
+            call reset_excess(problem%state)
+            call add_line(lines, 'excess pore pressures set to zero')
+         end if
+      end if
+   end subroutine water_changes
 
    subroutine add_line(lines, text)
       character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)

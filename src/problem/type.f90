@@ -8,6 +8,7 @@ module pecplas_problem_type
    use pecplas_fe_dofs, only: new_dofs
    use pecplas_fe_state, only: fe_state_t
    use pecplas_fe_loads, only: pattern_vectors
+   use pecplas_fe_pore, only: setup_pore
    use pecplas_massif_elements_factory, only: new_massif_element
    use pecplas_massif_kinematics, only: new_massif_rule
    use pecplas_fe_initial, only: apply_initial_stresses
@@ -95,6 +96,8 @@ contains
       end do
       problem%linear%separate_tangent = model%solver%method /= METHOD_NEWTON
       call setup_joint_state(model, problem%state%joints, error)
+      if (allocated(error)) return
+      call setup_pore(model, problem%system%rules, problem%state, error)
       if (allocated(error)) return
       call setup_plate_state(model, problem%state%plates)
       call setup_anchor_state(model, problem%state%anchors)

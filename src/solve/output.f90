@@ -95,8 +95,15 @@ contains
       if (size(model%plates) == 0) return
       allocate (r%plate_fields(size(model%plates)))
       do s = 1, size(model%plates)
-         call plate_results(model, problem%state%u, problem%state%plates, &
-            problem%state%factors, s, r%plate_fields(s), error)
+         if (model%water%used()) then
+            ! the water's pressure on the plate is one of its own loads (groundwater)
+            call plate_results(model, problem%state%u, problem%state%plates, &
+               problem%state%factors, s, r%plate_fields(s), error, &
+               model%water%level_at(max(problem%phase%index, 1)))
+         else
+            call plate_results(model, problem%state%u, problem%state%plates, &
+               problem%state%factors, s, r%plate_fields(s), error)
+         end if
          if (allocated(error)) return
          associate (f => r%plate_fields(s))
             allocate (f%moment_reaction(size(f%node_index)))
@@ -158,6 +165,10 @@ contains
             call move_alloc(st%sets(s)%stress, r%set_fields(s)%stress)
             call move_alloc(st%sets(s)%strain, r%set_fields(s)%strain)
             call move_alloc(st%sets(s)%hist, r%set_fields(s)%state)
+            if (st%sets(s)%pore%on()) then
+               r%set_fields(s)%pore_steady = st%sets(s)%pore%steady
+               r%set_fields(s)%pore_excess = st%sets(s)%pore%excess
+            end if
          end do
       end associate
    end subroutine lend

@@ -101,6 +101,9 @@ contains
                call data%add('strain_'//itoa(s), flat3(st%sets(s)%strain))
                call data%add('hist_'//itoa(s), flat3(st%sets(s)%hist))
             end if
+            ! groundwater: the excess pore pressures (the steady ones follow from the phase)
+            if (st%sets(s)%pore%on()) call data%add('pore_excess_'//itoa(s), &
+               reshape(st%sets(s)%pore%excess, [size(st%sets(s)%pore%excess)]))
          end do
          if (allocated(st%joints%sets)) then
             do s = 1, size(st%joints%sets)
@@ -309,6 +312,14 @@ contains
             if (.not. allocated(error)) call get3(data, 'strain_'//itoa(s), st%sets(s)%strain, error)
             if (.not. allocated(error)) call get3(data, 'hist_'//itoa(s), st%sets(s)%hist, error)
             if (allocated(error)) return
+            if (st%sets(s)%pore%on() .and. data%has('pore_excess_'//itoa(s))) then
+               associate (pe => st%sets(s)%pore)
+                  call data%get('pore_excess_'//itoa(s), size(pe%excess), v, error)
+                  if (allocated(error)) return
+                  pe%excess = reshape(v, shape(pe%excess))
+                  pe%excess_trial = pe%excess
+               end associate
+            end if
          end do
          do s = 1, nj
             if (.not. st%joints%sets(s)%active) cycle
@@ -517,7 +528,7 @@ contains
          'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'phase', 'phase_carried']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
-            'hist_'//itoa(s), 'tangent_'//itoa(s)]
+            'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]
       end do
       do s = 1, njoint
          list = [character(len=32) :: list, 'joint_eps_'//itoa(s), 'joint_sigma_'//itoa(s), &

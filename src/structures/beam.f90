@@ -213,13 +213,16 @@ contains
    !> per unit length of plate along x, y; per unit area of the shell in axisymmetry),
    !> integrated with the element's own displacement interpolation (for the 2-node element
    !> the linked one: its end moments are those of a built-in beam, q h^2 / 12 for a straight
-   !> element without shear flexibility). 3-point Gauss.
-   pure subroutine beam_line_load(x, section, axisym, thickness, q, fe)
+   !> element without shear flexibility). 3-point Gauss. `scale` (optional, one value per
+   !> node): the load is q times their interpolation (linear between the ends of a 2-node
+   !> element, quadratic on a 3-node one), e.g. a hydrostatic water pressure.
+   pure subroutine beam_line_load(x, section, axisym, thickness, q, fe, scale)
       real(wp), intent(in) :: x(:, :), q(2)
       type(plate_section_t), intent(in) :: section
       logical, intent(in) :: axisym
       real(wp), intent(in) :: thickness
       real(wp), intent(out) :: fe(:)
+      real(wp), intent(in), optional :: scale(:)
       real(wp), parameter :: XG(3) = [-sqrt(0.6_wp), 0.0_wp, sqrt(0.6_wp)], &
          WG(3) = [5.0_wp, 8.0_wp, 5.0_wp]/9.0_wp
       real(wp) :: h, t(2), n(2), om, s, dw(4), dth(4), dk(4), dg(4), g(4, 6), wrow(6), nf(3)
@@ -238,6 +241,7 @@ contains
             wrow = matmul(dw, g)
             r = x(1, 1) + xi*(x(1, 2) - x(1, 1))
             f = 0.5_wp*WG(p)*h*merge(2.0_wp*PI*r, thickness, axisym)
+            if (present(scale)) f = f*((1.0_wp - xi)*scale(1) + xi*scale(2))
             ! u(s) = t u_s + n w: the load's work q . t u_s + q . n w
             fe(1:2) = fe(1:2) + f*dot_product(q, t)*(1.0_wp - xi)*t
             fe(4:5) = fe(4:5) + f*dot_product(q, t)*xi*t
@@ -250,6 +254,7 @@ contains
             jac = norm2(dxd)
             r = dot_product(nf, x(1, 1:3))
             f = WG(p)*jac*merge(2.0_wp*PI*r, thickness, axisym)
+            if (present(scale)) f = f*dot_product(nf, scale(1:3))
             do k = 1, 3
                fe(3*k - 2:3*k - 1) = fe(3*k - 2:3*k - 1) + f*nf(k)*q
             end do

@@ -9,6 +9,8 @@ construction) and the tools that show their phases.
   wall head moves further towards the excavation and the wall's largest moment grows stage
   by stage;
   the phase figure has one panel per stage.
+- excavation_cantilever_plate.inp: the same wall as a plate: its three stages remove the
+  front joints of the plate's faces with their layers, and the head and the moment grow.
 - embankment_stages.inp: each lift settles the ground more.
 - The post-processing of the cantilever: Blum's estimate against its closed form, and the
   strip's moment integration against a linear stress; the numbers of doc/validation.md are
@@ -205,6 +207,29 @@ def test_excavation_phase_figure(excavation, tmp_path):
 
 
 @pytest.fixture(scope="module")
+def excavation_plate(tmp_path_factory):
+    return run_deck(EXAMPLES / "excavation_cantilever_plate.inp",
+                    tmp_path_factory.mktemp("exc_plate") / "excavation_cantilever_plate.h5")
+
+
+def test_excavation_plate_phases_and_response(excavation_plate, excavation):
+    with Results(excavation_plate) as r:
+        assert r.status == "completed"
+        phases = r.phases()
+        assert [p["name"] for p in phases] == ["excavate_1", "excavate_2", "excavate_3"]
+        for k, p in enumerate(phases):
+            assert not {f"exc_{j + 1}" for j in range(k + 1)} & set(p["active_element_sets"])
+            assert not {f"wif_exc_{j + 1}" for j in range(k + 1)} & set(p["active_joint_sets"])
+            assert "wif_back" in p["active_joint_sets"]
+    rows = excavation_report.plate_table(excavation_plate, excavation_report.table(excavation))
+    ux = [r["head_ux_mm"] for r in rows]
+    m = [r["M_max"] for r in rows]
+    # as the strip (test_excavation_wall_response_grows): the head moves towards the
+    # excavation from the second stage on, the moment grows
+    assert ux[2] > ux[1] > 0 and m[2] > m[1] > m[0], (ux, m)
+
+
+@pytest.fixture(scope="module")
 def embankment(tmp_path_factory):
     return run_deck(EXAMPLES / "embankment_stages.inp",
                     tmp_path_factory.mktemp("emb") / "embankment_stages.h5")
@@ -225,8 +250,10 @@ def test_embankment_lifts_settle_the_ground(embankment):
     assert 0 < settle[0] < settle[1] < settle[2], settle
 
 
-def test_validation_numbers_are_these_runs(excavation, pile_runs, embankment, pile_gauss_runs):
+def test_validation_numbers_are_these_runs(excavation, pile_runs, embankment, pile_gauss_runs,
+                                          excavation_plate):
     """The numbers of doc/validation.md (Staged construction) are those of these runs, to the
     last printed digit (the phases' times excepted: measured, not reproduced)."""
-    bad = phases_report.check_runs(excavation, *pile_runs, embankment, *pile_gauss_runs)
+    bad = phases_report.check_runs(excavation, *pile_runs, embankment, *pile_gauss_runs,
+                                   excavation_plate)
     assert not bad, bad + "\n(regenerate: python3 -m pecplas_py.scenes.phases_report)"

@@ -27,6 +27,8 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
+   use pecplas_io_deck_reader_water, only: read_water, read_dry, read_change_water, &
+      resolve_water, read_plate_water
    use pecplas_io_deck_reader_anchors, only: read_anchor, resolve_anchors
    use pecplas_io_deck_reader_plates, only: read_plate, resolve_plates, extend_rotations
    implicit none (type, external)
@@ -35,11 +37,12 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(28) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(32) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
-      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PLATE', '*ANCHOR', '*PRESTRESS']
+      '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PLATE', '*ANCHOR', '*PRESTRESS', '*WATER', '*DRY', &
+      '*CHANGE_WATER', '*PLATE_WATER']
 
 contains
 
@@ -127,6 +130,8 @@ contains
       ! phase changes name joint sets too
       call resolve_phases(state, model, error)
       if (allocated(error)) return
+      call resolve_water(state, model, error)
+      if (allocated(error)) return
       call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return
       call record_places(state, model)
@@ -195,6 +200,14 @@ contains
          call read_interface_law(state, model, block, error)
       case ('*JOINTS')
          call read_joints(state, block, error)
+      case ('*WATER')
+         call read_water(state, model, block, error)
+      case ('*DRY')
+         call read_dry(state, block, error)
+      case ('*CHANGE_WATER')
+         call read_change_water(state, block, error)
+      case ('*PLATE_WATER')
+         call read_plate_water(state, block, error)
       case ('*ANCHOR')
          call read_anchor(state, block, error)
       case ('*PLATE')

@@ -48,6 +48,14 @@ contains
       real(wp) :: metres
       logical :: found, ok
       kwline = state%lines%get(block%at)
+      ! groundwater (doc/deck.md): joints are drained, whatever the soil beside them
+      if (block%kw%has('DRAINAGE')) then
+         call line_error(state, block%at, 'DRAINAGE= is for *MATERIAL: joints are '// &
+            'drained (their law works on the effective normal stress, the steady pore '// &
+            'pressure of their position taken off); an undrained interface is not available', &
+            error)
+         return
+      end if
       call block%kw%check_keys(kwline, [character(len=11) :: 'NAME', 'TYPE', &
          LENGTH_UNIT_KEYS], error)
       if (allocated(error)) return

@@ -14,6 +14,8 @@ module pecplas_io_deck_reader_materials
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_strings, only: decimal_text
    use pecplas_massif_materials_type, only: material_t, material_box_t
+   use pecplas_io_deck_reader_water, only: material_water, finish_material_water
+   use pecplas_water_drainage, only: water_material_t
    implicit none (type, external)
    private
 
@@ -33,10 +35,12 @@ contains
       type(params_t) :: params
       class(material_t), allocatable :: mat
       type(material_box_t), allocatable :: tmp(:)
+      type(water_material_t) :: wmat
+      character(len=:), allocatable :: drainage
       logical :: found
       integer :: i, n, at
       kwline = state%lines%get(block%at)
-      call block%kw%check_keys(kwline, [character(len=4) :: 'NAME', 'TYPE'], error)
+      call block%kw%check_keys(kwline, [character(len=8) :: 'NAME', 'TYPE', 'DRAINAGE'], error)
       if (allocated(error)) return
       call block%kw%require(kwline, 'NAME', name, error)
       if (allocated(error)) return
@@ -69,8 +73,16 @@ contains
          call read_pairs(state, i, params, error, model%warnings)
          if (allocated(error)) return
       end do
+      ! the water's part (doc/deck.md, Groundwater) is taken out before the soil model
+      call block%kw%get('DRAINAGE', drainage, found)
+      if (.not. found) drainage = ''
+      call material_water(state, at, mtype, drainage, params, wmat, error)
+      if (allocated(error)) return
       call state%registry%new_material(upper(mtype), name, params, mat, error)
       if (allocated(error)) return
+      call finish_material_water(mat, wmat)
+      if (.not. allocated(model%water%mats)) allocate (model%water%mats(0))
+      model%water%mats = [model%water%mats, wmat]
 
       allocate (tmp(n + 1))
       do i = 1, n

@@ -418,7 +418,8 @@ contains
    end subroutine split_by_body
 
    !> Supports and imposed displacements on split nodes also hold the duplicates; pressure
-   !> edges on SIDE-only sides move to them (point forces stay where they were given).
+   !> edges on SIDE-only sides move to them (point forces stay where they were given). Nodes
+   !> beyond dupof (copies made by an earlier call: FACES=BOTH calls once per face) have none.
    subroutine extend_to_duplicates(model, ks, dupof)
       type(model_t), intent(inout) :: model
       integer, intent(in) :: ks, dupof(:)
@@ -427,6 +428,7 @@ contains
          if (allocated(sup%node)) then
             n = size(sup%node)
             do k = 1, n
+               if (sup%node(k) > size(dupof)) cycle
                if (dupof(sup%node(k)) == 0) cycle
                sup%node = [sup%node, dupof(sup%node(k))]
                sup%dof = [sup%dof, sup%dof(k)]
@@ -441,6 +443,7 @@ contains
             case (LOAD_DISPLACEMENT)
                n = size(pat%node)
                do k = 1, n
+                  if (pat%node(k) > size(dupof)) cycle
                   if (dupof(pat%node(k)) == 0) cycle
                   pat%node = [pat%node, dupof(pat%node(k))]
                   pat%dof = [pat%dof, pat%dof(k)]

@@ -11,6 +11,7 @@ module pecplas_io_deck_state
    use pecplas_massif_materials_factory, only: material_registry_t
    use pecplas_model_node_lookup, only: node_lookup_t
    use pecplas_io_deck_raw_joints, only: raw_joint_set_t
+   use pecplas_io_deck_raw_water, only: raw_water_t
    use pecplas_io_deck_raw_anchors, only: raw_anchor_t
    use pecplas_io_deck_raw_plates, only: raw_plate_set_t
    use pecplas_joints_laws_factory, only: law_registry_t
@@ -143,6 +144,8 @@ module pecplas_io_deck_state
       type(law_registry_t) :: laws
       integer, allocatable :: law_at(:), contact_at(:)
       type(raw_joint_set_t), allocatable :: joint_sets(:)
+      !> Groundwater keywords (*WATER, *DRY, *CHANGE_WATER) before resolution.
+      type(raw_water_t) :: water
       !> The *ANCHOR blocks.
       type(raw_anchor_t), allocatable :: anchors(:)
       !> The *PLATE blocks (pecplas_io_deck_reader_plates).

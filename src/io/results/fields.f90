@@ -5,7 +5,7 @@ module pecplas_io_results_fields
    use hdf5, only: hid_t
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
-   use pecplas_io_results_increment, only: increment_result_t
+   use pecplas_io_results_increment, only: increment_result_t, set_fields_t
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr, h5_append, &
       increment_group, h5_describe
    use pecplas_io_results_describe, only: results_units_t, XY, XYZ, STRESS_COMPONENTS
@@ -213,6 +213,8 @@ contains
                      error, STRESS_COMPONENTS)
                   if (.not. allocated(error)) call h5_describe(gs, 'stress_mean', &
                      units%stress, error, STRESS_COMPONENTS)
+                  if (allocated(f%pore_steady) .and. .not. allocated(error)) &
+                     call write_pore(gs, f, units%stress, error)
                end if
                if (strains .and. .not. allocated(error)) then
                   call h5_write(gs, 'strain', f%strain, error)
@@ -235,6 +237,28 @@ contains
       call h5_close_group(gsets)
       call h5_close_group(g)
    end subroutine write_fields
+
+   !> Groundwater: the steady and excess pore pressures (ngauss, nel, compression
+   !> positive) and the total stress sigma' - (p_steady + p_excess) m (4, ngauss, nel).
+   subroutine write_pore(gs, f, unit, error)
+      integer(hid_t), intent(in) :: gs
+      type(set_fields_t), intent(in) :: f
+      character(len=*), intent(in) :: unit
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: total(:, :, :)
+      integer :: k
+      total = f%stress
+      do k = 1, 3
+         total(k, :, :) = total(k, :, :) - (f%pore_steady + f%pore_excess)
+      end do
+      call h5_write(gs, 'pore_steady', f%pore_steady, error)
+      if (.not. allocated(error)) call h5_write(gs, 'pore_excess', f%pore_excess, error)
+      if (.not. allocated(error)) call h5_write(gs, 'total_stress', total, error)
+      if (.not. allocated(error)) call h5_describe(gs, 'pore_steady', unit, error)
+      if (.not. allocated(error)) call h5_describe(gs, 'pore_excess', unit, error)
+      if (.not. allocated(error)) call h5_describe(gs, 'total_stress', unit, error, &
+         STRESS_COMPONENTS)
+   end subroutine write_pore
 
    !> A soil history dataset: all its values are strains or a return kind ("1"); its
    !> components are the material's state names when they match its first axis.

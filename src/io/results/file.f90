@@ -63,6 +63,7 @@ module pecplas_io_results_file
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
    use pecplas_io_results_anchors, only: write_anchor_mesh, write_anchor_fields
+   use pecplas_io_results_anchor_geometry, only: write_anchor_geometry, xdmf_anchors
    implicit none (type, external)
    private
 
@@ -112,6 +113,11 @@ module pecplas_io_results_file
       !> (0: none recorded yet, every set active).
       type(phase_record_t), allocatable :: phases(:)
       integer, allocatable :: written_phase(:)
+      !> The plate sets active in each written increment (nplate, nwritten): their grids in
+      !> the XDMF.
+      logical, allocatable :: written_plates(:, :)
+      !> The anchor sets active in each written increment (nanchor, nwritten).
+      logical, allocatable :: written_anchors(:, :)
    contains
       procedure :: create => results_create
       procedure :: write_increment => results_write_increment
@@ -160,6 +166,9 @@ contains
       if (allocated(error)) return
       call plan_units(model, this%units)
       call plan_xdmf_joints(this)
+      this%layout%anchors = xdmf_anchors(model)
+      if (allocated(this%written_anchors)) deallocate (this%written_anchors)
+      allocate (this%written_anchors(size(this%layout%anchors), 0))
       ! the plastic indicators are written with the sets' fields (write_fields)
       do i = 1, size(this%layout%sets)
          this%layout%sets(i)%plastic = has_plastic_state(this%units%sets(i)%state) .and. &
@@ -224,6 +233,8 @@ contains
       if (.not. allocated(error)) call write_anchor_mesh(file, model, this%units%length, &
          this%units%force, error)
       if (.not. allocated(error)) call write_plate_mesh(file, model, error)
+      if (.not. allocated(error)) call write_anchor_geometry(file, model, this%units%length, &
+         error)
       if (.not. allocated(error)) call create_history(file, model, error)
       if (.not. allocated(error)) call describe_mesh(file, model, this%units, error)
       if (.not. allocated(error)) call describe_history(file, this%units, error)
@@ -271,6 +282,24 @@ contains
       if (allocated(this%staging)) call remove_file(this%staging)
    end subroutine abandon
 
+   !> The plate sets as the XDMF sees them (none without plates).
+   subroutine plan_xdmf_plates(this, model)
+      class(results_file_t), intent(inout) :: this
+      type(model_t), intent(in) :: model
+      integer :: s, n
+      n = 0
+      if (allocated(model%plates)) n = size(model%plates)
+      if (allocated(this%layout%plates)) deallocate (this%layout%plates)
+      allocate (this%layout%plates(n))
+      do s = 1, n
+         this%layout%plates(s)%name = safe_name(model%plates(s)%name)
+         this%layout%plates(s)%nel = size(model%plates(s)%conn, 2)
+         this%layout%plates(s)%npe = model%plates(s)%nen
+      end do
+      if (allocated(this%written_plates)) deallocate (this%written_plates)
+      allocate (this%written_plates(n, 0))
+   end subroutine plan_xdmf_plates
+
    !> The joint sets as the XDMF sees them.
    subroutine plan_xdmf_joints(this)
       class(results_file_t), intent(inout) :: this
@@ -315,6 +344,7 @@ contains
       this%written = [integer ::]
       this%written_time = [real(wp) ::]
       this%written_phase = [integer ::]
+      call plan_xdmf_plates(this, model)
       if (allocated(this%phases)) deallocate (this%phases)
       allocate (this%phases(0))
       if (allocated(this%ngauss)) deallocate (this%ngauss)
@@ -560,6 +590,8 @@ contains
       end do
       if (allocated(error)) return
       if (inc%write_fields) then
+         call note_plates(this, inc)
+         call note_anchors(this, inc)
          this%written = [this%written, inc%global_increment]
          this%written_time = [this%written_time, inc%time]
          this%written_phase = [this%written_phase, size(this%phases)]
@@ -894,6 +926,34 @@ contains
       end do
    end subroutine write_pending_phases
 
+   !> Records which plate sets the increment written now holds (its XDMF grids).
+   subroutine note_plates(this, inc)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      logical :: on(size(this%written_plates, 1))
+      integer :: n
+      on = .true.
+      if (allocated(inc%plate_fields)) then
+         if (size(inc%plate_fields) == size(on)) on = inc%plate_fields(:)%active
+      end if
+      n = size(this%written_plates, 2)
+      this%written_plates = reshape([this%written_plates, on], [size(on), n + 1])
+   end subroutine note_plates
+
+   !> Records which anchor sets the increment written now holds (its XDMF grids).
+   subroutine note_anchors(this, inc)
+      class(results_file_t), intent(inout) :: this
+      type(increment_result_t), intent(in) :: inc
+      logical :: on(size(this%written_anchors, 1))
+      integer :: n
+      on = .true.
+      if (allocated(inc%anchor_fields)) then
+         if (size(inc%anchor_fields) == size(on)) on = inc%anchor_fields(:)%active
+      end if
+      n = size(this%written_anchors, 2)
+      this%written_anchors = reshape([this%written_anchors, on], [size(on), n + 1])
+   end subroutine note_anchors
+
    !> The XDMF text of the increments written so far, each with the sets active in its
    !> phase.
    function sidecar_text(this, h5_name) result(text)
@@ -912,7 +972,8 @@ contains
          esets(:, k) = this%phases(p)%active_esets
          jsets(:, k) = this%phases(p)%active_jsets
       end do
-      text = xdmf_text(this%layout, h5_name, this%written, this%written_time, esets, jsets)
+      text = xdmf_text(this%layout, h5_name, this%written, this%written_time, esets, jsets, &
+         this%written_plates, this%written_anchors)
    end function sidecar_text
 
    !> True between a successful `create` and `finish` / `free`.

@@ -18,6 +18,9 @@ module pecplas_io_results_increment
       real(wp), allocatable :: state(:, :, :)
       !> Error indicator of each element (nel), with *OUTPUT, ERROR_ESTIMATE=YES.
       real(wp), allocatable :: error_indicator(:)
+      !> A model with groundwater: steady and excess pore pressures (ngauss, nel),
+      !> compression positive; `stress` is then the effective stress.
+      real(wp), allocatable :: pore_steady(:, :), pore_excess(:, :)
    end type set_fields_t
 
    !> Coordinates of the Gauss points of one element set, xy(2, ngauss, nel); given once to

@@ -5,6 +5,7 @@
 !>   /increments/<NNNNNN>/plates/<set>
 !>        end_forces (3, 2, nel)     N, Q, M at end 1 and end 2 of each element
 !>        node_forces (3, nnode_plate)  N, Q, M at the plate's nodes (mean of the ends there)
+!>        element_forces (3, nel)    N, Q, M: the mean of each element's two ends (XDMF cells)
 !>        displacement (2, nnode_plate), rotation (nnode_plate), moment_reaction (nnode_plate)
 !>        (the moment at a held rotation: F_int - F_ext there, 0 elsewhere)
 !>        resultants (5, np, nel)    N_s, Q, M_s, N_theta, M_theta at the elements' points
@@ -98,6 +99,8 @@ contains
          associate (f => fields(s))
             call h5_write(g, 'end_forces', f%end_forces, error)
             if (.not. allocated(error)) call h5_write(g, 'node_forces', f%node_forces, error)
+            if (.not. allocated(error)) call h5_write(g, 'element_forces', &
+               0.5_wp*(f%end_forces(:, 1, :) + f%end_forces(:, 2, :)), error)
             if (.not. allocated(error)) call h5_write(g, 'displacement', f%displacement, error)
             if (.not. allocated(error)) call h5_write(g, 'rotation', f%rotation, error)
             if (.not. allocated(error)) call h5_write(g, 'resultants', f%resultants, error)
@@ -109,6 +112,8 @@ contains
          if (.not. allocated(error)) call h5_describe(g, 'end_forces', 'N, Q: '//fw// &
             '; M: '//mw//'*'//units%length//'/'//units%length, error, NQM)
          if (.not. allocated(error)) call h5_describe(g, 'node_forces', 'N, Q: '//fw// &
+            '; M: '//mw//'*'//units%length//'/'//units%length, error, NQM)
+         if (.not. allocated(error)) call h5_describe(g, 'element_forces', 'N, Q: '//fw// &
             '; M: '//mw//'*'//units%length//'/'//units%length, error, NQM)
          if (.not. allocated(error)) call h5_describe(g, 'displacement', units%length, error, XY)
          if (.not. allocated(error)) call h5_describe(g, 'rotation', 'rad', error)

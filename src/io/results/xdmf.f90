@@ -7,6 +7,11 @@
 !> references those. stress_mean (4 components xx, yy, zz, xy) is a "Matrix" attribute; a
 !> soil with plastic history adds the cell scalars eps_p_eq and plastic_fraction.
 !>
+!> Each plate set is a grid of its own in the increments where it is active: its elements as
+!> polylines on the mesh's nodes, with the displacements and the cell attributes N, Q, M.
+!> Each anchor set likewise: a Polyline per bar (/mesh/anchors/<set>/point_coordinates, the
+!> fixed end of a fixed-end bar included) with the cell attributes force and force_per_width.
+!>
 !> Each joint set is a grid of its own in every increment: its integration points as a
 !> Polyline per joint element (a Polyvertex for springs, one point each) through
 !> /mesh/joint_sets/<set>/point_connectivity, with node attributes sigma_n, tau, eps_n, eps_t
@@ -23,6 +28,7 @@ module pecplas_io_results_xdmf
    private
 
    public :: xdmf_set_t, xdmf_joint_t, xdmf_layout_t, xdmf_topology, xdmf_path, xdmf_text, write_xdmf
+   public :: xdmf_plate_t, xdmf_anchor_t
 
    !> One element set as the XDMF sees it.
    type :: xdmf_set_t
@@ -45,11 +51,25 @@ module pecplas_io_results_xdmf
       logical :: active = .true.
    end type xdmf_joint_t
 
+   !> One plate set: group name under /mesh/plates, elements, nodes per element.
+   type :: xdmf_plate_t
+      character(len=:), allocatable :: name
+      integer :: nel = 0, npe = 2
+   end type xdmf_plate_t
+
+   !> One anchor set: group name under /mesh/anchors, bars.
+   type :: xdmf_anchor_t
+      character(len=:), allocatable :: name
+      integer :: nbar = 0
+   end type xdmf_anchor_t
+
    !> What the results file holds: enough to write the XDMF without reading the HDF5 file.
    type :: xdmf_layout_t
       integer :: nnode = 0
       type(xdmf_set_t), allocatable :: sets(:)
       type(xdmf_joint_t), allocatable :: joints(:)
+      type(xdmf_plate_t), allocatable :: plates(:)
+      type(xdmf_anchor_t), allocatable :: anchors(:)
       logical :: reactions = .true., stresses = .true.
       !> Cell attribute error_indicator (*OUTPUT, ERROR_ESTIMATE=YES).
       logical :: error_estimate = .false.
@@ -113,32 +133,49 @@ contains
    !> esets(nset, k) / jsets(njset, k), when given: the element / joint sets active in
    !> increment k (a staged run); an inactive set has no grid in that increment, so that
    !> ParaView shows only what the phase holds (it plays an excavation).
-   function xdmf_text(layout, h5_name, increments, times, esets, jsets) result(text)
+   function xdmf_text(layout, h5_name, increments, times, esets, jsets, psets, asets) &
+      result(text)
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: increments(:)
       real(wp), intent(in) :: times(:)
       logical, intent(in), optional :: esets(:, :), jsets(:, :)
+      !> psets(nplate, k): the plate sets active in increment k.
+      logical, intent(in), optional :: psets(:, :)
+      !> asets(nanchor, k): the anchor sets active in increment k.
+      logical, intent(in), optional :: asets(:, :)
       character(len=:), allocatable :: text
       type(text_buffer_t) :: b
-      logical, allocatable :: eon(:), jon(:)
-      integer :: k, nj
+      logical, allocatable :: eon(:), jon(:), pon(:), aon(:)
+      integer :: k, nj, np, na
       call put(b, '<?xml version="1.0" ?>')
       call put(b, '<Xdmf Version="3.0">')
       call put(b, ' <Domain>')
       call put(b, '  <Grid Name="PECPLAS" GridType="Collection" CollectionType="Temporal">')
       nj = 0
       if (allocated(layout%joints)) nj = size(layout%joints)
-      allocate (eon(size(layout%sets)), jon(nj))
+      np = 0
+      if (allocated(layout%plates)) np = size(layout%plates)
+      na = 0
+      if (allocated(layout%anchors)) na = size(layout%anchors)
+      allocate (eon(size(layout%sets)), jon(nj), pon(np), aon(na))
       eon = .true.
       jon = .true.
+      pon = .true.
+      aon = .true.
       if (size(increments) == 0) then
-         call put_increment(b, layout, h5_name, 0, 0.0_wp, eon, jon)
+         call put_increment(b, layout, h5_name, 0, 0.0_wp, eon, jon, pon, aon)
       else
          do k = 1, size(increments)
             if (present(esets)) eon = esets(:, k)
             if (present(jsets)) jon = jsets(:, k)
-            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon)
+            if (present(psets)) then
+               if (size(psets, 1) == np .and. size(psets, 2) >= k) pon = psets(:, k)
+            end if
+            if (present(asets)) then
+               if (size(asets, 1) == na .and. size(asets, 2) >= k) aon = asets(:, k)
+            end if
+            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon, pon, aon)
          end do
       end if
       call put(b, '  </Grid>')
@@ -198,13 +235,13 @@ contains
 
    !> One spatial collection; inc = 0 writes the mesh without attributes. Only the sets
    !> with eon / jon true get a grid.
-   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon)
+   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon, pon, aon)
       type(text_buffer_t), intent(inout) :: b
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: inc
       real(wp), intent(in) :: time
-      logical, intent(in) :: eon(:), jon(:)
+      logical, intent(in) :: eon(:), jon(:), pon(:), aon(:)
       character(len=:), allocatable :: h5, group
       integer :: s
       h5 = xml_escape(h5_name)//':'
@@ -248,8 +285,86 @@ contains
             call put_joint_grid(b, layout%joints(s), h5, group, inc)
          end do
       end if
+      if (allocated(layout%plates)) then
+         do s = 1, size(layout%plates)
+            if (.not. pon(s)) cycle
+            call put_plate_grid(b, layout%plates(s), layout%nnode, h5, group, inc)
+         end do
+      end if
+      if (allocated(layout%anchors)) then
+         do s = 1, size(layout%anchors)
+            if (aon(s)) call put_anchor_grid(b, layout%anchors(s), h5, group, inc)
+         end do
+      end if
       call put(b, '   </Grid>')
    end subroutine put_increment
+
+   !> The grid of one anchor set, a Polyline per bar; inc = 0: the bars without attributes.
+   subroutine put_anchor_grid(b, anchor, h5, group, inc)
+      type(text_buffer_t), intent(inout) :: b
+      type(xdmf_anchor_t), intent(in) :: anchor
+      character(len=*), intent(in) :: h5, group
+      integer, intent(in) :: inc
+      character(len=:), allocatable :: mesh, fields
+      mesh = h5//'/mesh/anchors/'//anchor%name
+      fields = h5//group//'/anchors/'//anchor%name
+      call put(b, '    <Grid Name="anchors_'//anchor%name//'" GridType="Uniform">')
+      call put(b, '     <Topology TopologyType="Polyline" NumberOfElements="'// &
+         itoa(anchor%nbar)//'" NodesPerElement="2">')
+      call data_item(b, mesh//'/point_connectivity', anchor%nbar, 2, 'Int', 4)
+      call put(b, '     </Topology>')
+      call put(b, '     <Geometry GeometryType="XY">')
+      call data_item(b, mesh//'/point_coordinates', 2*anchor%nbar, 2, 'Float', 8)
+      call put(b, '     </Geometry>')
+      if (inc > 0) then
+         call scalar_attribute(b, 'force', fields//'/force', anchor%nbar)
+         call scalar_attribute(b, 'force_per_width', fields//'/force_per_width', anchor%nbar)
+      end if
+      call put(b, '    </Grid>')
+   end subroutine put_anchor_grid
+
+   !> The grid of one plate set: its elements as polylines (Edge_3 for 3-node elements) on
+   !> the mesh's nodes, with the node displacements and the cell attributes N, Q, M (the
+   !> mean of the element's two ends, /increments/<k>/plates/<set>/element_forces).
+   subroutine put_plate_grid(b, plate, nnode, h5, group, inc)
+      type(text_buffer_t), intent(inout) :: b
+      type(xdmf_plate_t), intent(in) :: plate
+      integer, intent(in) :: nnode, inc
+      character(len=*), intent(in) :: h5, group
+      character(len=:), allocatable :: mesh, fields, topology
+      character(len=1), parameter :: NQM(3) = ['N', 'Q', 'M']
+      integer :: k
+      mesh = h5//'/mesh/plates/'//plate%name
+      fields = h5//group//'/plates/'//plate%name
+      topology = 'Polyline'
+      if (plate%npe == 3) topology = 'Edge_3'
+      call put(b, '    <Grid Name="plates_'//plate%name//'" GridType="Uniform">')
+      call put(b, '     <Topology TopologyType="'//topology//'" NumberOfElements="'// &
+         itoa(plate%nel)//'" NodesPerElement="'//itoa(plate%npe)//'">')
+      call data_item(b, mesh//'/connectivity', plate%nel, plate%npe, 'Int', 4)
+      call put(b, '     </Topology>')
+      call put(b, '     <Geometry GeometryType="XY">')
+      call data_item(b, h5//'/mesh/coordinates', nnode, 2, 'Float', 8)
+      call put(b, '     </Geometry>')
+      if (inc > 0) then
+         call attribute(b, 'displacement', 'Vector', 'Node', h5//group//'/displacement3', &
+            nnode, 3)
+         do k = 1, 3
+            call put(b, '     <Attribute Name="'//NQM(k)//'" AttributeType="Scalar" '// &
+               'Center="Cell">')
+            call put(b, '      <DataItem ItemType="HyperSlab" Dimensions="'// &
+               itoa(plate%nel)//' 1" Type="HyperSlab">')
+            call put(b, '       <DataItem Dimensions="3 2" Format="XML">0 '//itoa(k - 1)// &
+               ' 1 1 '//itoa(plate%nel)//' 1</DataItem>')
+            call put(b, '       <DataItem Dimensions="'//itoa(plate%nel)//' 3" '// &
+               'NumberType="Float" Precision="8" Format="HDF">'//fields// &
+               '/element_forces</DataItem>')
+            call put(b, '      </DataItem>')
+            call put(b, '     </Attribute>')
+         end do
+      end if
+      call put(b, '    </Grid>')
+   end subroutine put_plate_grid
 
    !> The grid of the points of one joint set; inc = 0: the points without attributes.
    subroutine put_joint_grid(b, joint, h5, group, inc)

@@ -28,6 +28,7 @@ module pecplas_massif_materials_drucker_prager
       procedure :: state_names => drucker_prager_state_names
       procedure :: elastic_tangent => drucker_prager_elastic_tangent
       procedure :: update => drucker_prager_update
+      procedure :: with_cohesion => drucker_prager_with_cohesion
       procedure :: symmetric_tangent => drucker_prager_symmetric_tangent
       !> Yield function at a stress vector (<= 0 admissible; stress units).
       procedure :: yield => drucker_prager_yield
@@ -177,5 +178,18 @@ contains
       real(wp) :: a(size(x), size(y))
       a = spread(x, 2, size(y))*spread(y, 1, size(x))
    end function outer
+
+   !> A copy with the cohesion c (the soil's other parameters kept).
+   subroutine drucker_prager_with_cohesion(this, cohesion, copy, error)
+      class(drucker_prager_t), intent(in) :: this
+      real(wp), intent(in) :: cohesion
+      class(material_t), allocatable, intent(out) :: copy
+      type(error_t), allocatable, intent(out) :: error
+      allocate (copy, source=this)
+      select type (copy)
+      class is (drucker_prager_t)
+         copy%soil%cohesion = cohesion
+      end select
+   end subroutine drucker_prager_with_cohesion
 
 end module pecplas_massif_materials_drucker_prager

@@ -29,6 +29,7 @@ module pecplas_massif_materials_mohr_coulomb
       procedure :: state_names => mohr_coulomb_state_names
       procedure :: elastic_tangent => mohr_coulomb_elastic_tangent
       procedure :: update => mohr_coulomb_update
+      procedure :: with_cohesion => mohr_coulomb_with_cohesion
       procedure :: symmetric_tangent => mohr_coulomb_symmetric_tangent
       !> Yield function at a stress vector (<= 0 admissible; stress units).
       procedure :: yield => mohr_coulomb_yield_at
@@ -117,5 +118,18 @@ contains
       tangent = matmul(principal_tangent(axes, s_trial, s, ds), de)
       call soil_plastic_state(this%soil, trial, stress, kind, state)
    end subroutine mohr_coulomb_update
+
+   !> A copy with the cohesion c (the soil's other parameters kept).
+   subroutine mohr_coulomb_with_cohesion(this, cohesion, copy, error)
+      class(mohr_coulomb_t), intent(in) :: this
+      real(wp), intent(in) :: cohesion
+      class(material_t), allocatable, intent(out) :: copy
+      type(error_t), allocatable, intent(out) :: error
+      allocate (copy, source=this)
+      select type (copy)
+      class is (mohr_coulomb_t)
+         copy%soil%cohesion = cohesion
+      end select
+   end subroutine mohr_coulomb_with_cohesion
 
 end module pecplas_massif_materials_mohr_coulomb

@@ -4,7 +4,7 @@
 !> Continuum stresses are tension positive.
 module pecplas_massif_materials_type
    use pecplas_base_kinds, only: wp
-   use pecplas_base_error, only: error_t
+   use pecplas_base_error, only: error_t, fatal_error
    implicit none (type, external)
    private
 
@@ -33,6 +33,9 @@ module pecplas_massif_materials_type
       procedure :: constant_tangent => material_constant_tangent
       !> Names of the history variables (results file `state_names`); none by default.
       procedure :: state_names => material_state_names
+      !> A copy of the material with another cohesion (an undrained shear strength varying
+      !> with depth, doc/deck.md Groundwater); an error for a material without one.
+      procedure :: with_cohesion => material_with_cohesion
    end type material_t
 
    !> Holder so that arrays of polymorphic materials can be built.
@@ -80,5 +83,19 @@ contains
       character(len=16), allocatable, intent(out) :: names(:)
       allocate (names(0))
    end subroutine material_state_names
+
+   subroutine material_with_cohesion(this, cohesion, copy, error)
+      class(material_t), intent(in) :: this
+      real(wp), intent(in) :: cohesion
+      class(material_t), allocatable, intent(out) :: copy
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name
+      character(len=24) :: buf
+      name = 'material'
+      if (allocated(this%name)) name = "material '"//this%name//"'"
+      write (buf, '(es12.4)') cohesion
+      call fatal_error(error, name//' has no cohesion to set to '//trim(adjustl(buf))// &
+         ' (c_u varying with depth needs MOHR_COULOMB or DRUCKER_PRAGER)')
+   end subroutine material_with_cohesion
 
 end module pecplas_massif_materials_type

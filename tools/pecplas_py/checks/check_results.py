@@ -19,7 +19,8 @@ root `deck_text_checksum` match (doc/results.md, Checksums), and that the .xmf p
 "file.h5:/path" DataItem names an existing dataset of the declared dimensions, HyperSlab
 items select inside their dataset, and every joint set has its grid in each increment. In a
 staged run (/phases), an increment holds the fields of the sets active in its phase and of no
-other, and its XDMF grids are those of the active sets.
+other, and its XDMF grids are those of the active sets; a plate or anchor set has its grid
+(plates_<set>, anchors_<set>) in exactly the increments that hold its fields.
 Exit status 0 when everything holds, 1 otherwise (each problem is printed).
 
 --left RESULTS.h5: what runs killed before their end (kill -9, out-of-memory) left beside
@@ -393,6 +394,7 @@ def check_xdmf(h5_path, xmf_path, f, problems):
                             f"{f[path].shape}")
     check_hyperslabs(root, problems)
     check_joint_grids(root, f, problems)
+    check_structure_grids(root, f, problems)
     return len(items)
 
 
@@ -445,6 +447,27 @@ def check_joint_grids(root, f, problems):
                                 f"set not active in its phase")
             for name in sorted(esets - names):
                 problems.append(f"XDMF increment {grid.get('Name')}: no grid {name}")
+
+
+def check_structure_grids(root, f, problems):
+    """A grid 'plates_<set>' ('anchors_<set>') in an increment's collection exactly when the
+    increment holds the set's fields (the set is active in its phase); every structure in the
+    collection of the bare mesh."""
+    kinds = {kind: list(f[f"mesh/{kind}"]) if f"mesh/{kind}" in f else []
+             for kind in ("plates", "anchors")}
+    for grid in root.iter("Grid"):
+        if grid.get("CollectionType") != "Spatial":
+            continue
+        key = grid.get("Name") or ""
+        names = {g.get("Name") for g in grid.findall("Grid")}
+        for kind, sets in kinds.items():
+            for n in sets:
+                held = not key.isdigit() or f"increments/{key}/{kind}/{n}" in f
+                if held and f"{kind}_{n}" not in names:
+                    problems.append(f"XDMF increment {key}: no grid {kind}_{n}")
+                if not held and f"{kind}_{n}" in names:
+                    problems.append(f"XDMF increment {key}: grid {kind}_{n} of a set not "
+                                    "active in its phase")
 
 
 def check(h5_path, expect_status=None, xmf_path=None, xdmf=True):

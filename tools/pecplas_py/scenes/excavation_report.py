@@ -158,6 +158,39 @@ def table(h5, walls=None):
     return rows
 
 
+def plate_table(h5, strip_rows):
+    """The plate variant (input/examples/excavation_cantilever_plate.inp) stage by stage
+    beside the strip's rows (`table`): the plate's top node's u_x and its largest |M| (the
+    smoothed nodal moments, plates/wall/node_forces) with its depth."""
+    rows = []
+    with Results(h5) as r:
+        ends = r.phase_ends()
+        nodes = r.file["mesh/plates/wall/nodes"][()]
+        y = r.coordinates[nodes, 1]
+        top = nodes[int(np.argmax(y))]
+        for s in strip_rows:
+            key = ends[s["stage"]]
+            m = r.field(key, "plates/wall/node_forces")[:, 2]
+            i = int(np.argmax(np.abs(m)))
+            rows.append({"stage": s["stage"], "H": s["H"],
+                         "head_ux_mm": 1e3 * float(r.field(key, "displacement")[top, 0]),
+                         "M_max": float(abs(m[i])), "depth_M": -float(y[i]),
+                         "strip_head_ux_mm": s["head_ux_mm"], "strip_M_max": abs(s["M_max"]),
+                         "strip_depth_M": s["depth_M"]})
+    return rows
+
+
+def plate_markdown(rows):
+    lines = ["| stage | excavation H [m] | head u_x, plate [mm] | strip [mm] "
+             "| max \\|M\\|, plate [kN m/m] (depth [m]) | strip (depth [m]) |",
+             "|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['stage']} | {r['H']:g} | {r['head_ux_mm']:.2f} "
+                     f"| {r['strip_head_ux_mm']:.2f} | {r['M_max']:.2f} ({r['depth_M']:.2f}) "
+                     f"| {r['strip_M_max']:.2f} ({r['strip_depth_M']:.2f}) |")
+    return "\n".join(lines)
+
+
 def markdown(rows):
     lines = ["| stage | excavation H [m] | wall head u_x [mm] | FE M_max [kN m/m] (depth [m]) "
              "| Blum M_max, Kp [kN m/m] (depth) | Blum M_max, Kp/1.5 (depth) "

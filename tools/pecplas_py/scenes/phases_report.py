@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The numbers of doc/validation.md, "Staged construction": runs the three examples of
-input/examples/ (excavation_cantilever, pile_wished_in_place with S2 beside it,
-embankment_stages) into DIR and writes the generated blocks (or, with --check, says whether
-the committed ones differ from these runs, beyond the last digit; the times of the cantilever's
-phases are measured, not checked).
+"""The numbers of doc/validation.md, "Staged construction": runs the examples of
+input/examples/ (excavation_cantilever and its plate variant excavation_cantilever_plate,
+pile_wished_in_place with S2 beside it, embankment_stages) into DIR and writes the generated
+blocks (or, with --check, says whether the committed ones differ from these runs, beyond the
+last digit; the times of the cantilever's phases are measured, not checked).
 
     python3 -m pecplas_py.scenes.phases_report [DIR] [--bin DIR] [--check] [--no-run]
                                                [--figures]
@@ -108,8 +108,10 @@ def embankment_numbers(path):
     return out
 
 
-def blocks(rows, pile, emb, host, gauss=None):
+def blocks(rows, pile, emb, host, gauss=None, plate=None):
     b = {}
+    if plate is not None:
+        b["phases-cantilever-plate"] = excavation_report.plate_markdown(plate)
     b["phases-cantilever"] = (excavation_report.markdown(rows) + "\n\nTimes: one run of the "
                               f"release build on {host}, one thread; CPU from the history "
                               "(the first phase also counts reading the deck and setting up), "
@@ -166,12 +168,14 @@ def with_committed_times(rows, doc=DOC):
     return out, (host.group(1) if host else "this machine")
 
 
-def check_runs(exc, s2, wished, embankment, s2_gauss, wished_gauss):
-    """The differences between the committed blocks and runs given (results files), beyond
-    the last printed digit; '' when they match."""
+def check_runs(exc, s2, wished, embankment, s2_gauss, wished_gauss, plate=None):
+    """The differences between the committed blocks and runs given (results files; `plate`
+    the cantilever's plate variant, its block left out when None), beyond the last printed
+    digit; '' when they match."""
     rows, host = with_committed_times(excavation_report.table(exc))
     b = blocks(rows, pile_numbers(s2, wished), embankment_numbers(embankment), host,
-               pile_numbers(s2_gauss, wished_gauss))
+               pile_numbers(s2_gauss, wished_gauss),
+               None if plate is None else excavation_report.plate_table(plate, rows))
     return check_close(DOC, SCRIPT, b)
 
 
@@ -189,6 +193,8 @@ def main(argv=None):
     walls = None
     if not a.no_run:
         walls = excavation_report.run_timed(EXAMPLES / "excavation_cantilever.inp", exc, a.bin)
+        run(EXAMPLES / "excavation_cantilever_plate.inp", out / "excavation_cantilever_plate.h5",
+            a.bin)
         run(ROOT / "input" / "s2" / "s2_goodman.inp", out / "s2_goodman.h5", a.bin)
         run(EXAMPLES / "pile_wished_in_place.inp", out / "pile_wished_in_place.h5", a.bin)
         run(EXAMPLES / "embankment_stages.inp", out / "embankment_stages.h5", a.bin)
@@ -204,7 +210,8 @@ def main(argv=None):
     except OSError:
         pass
     gauss = pile_numbers(out / "s2_goodman_gauss.h5", out / "pile_wished_in_place_gauss.h5")
-    b = blocks(rows, pile, emb, host, gauss)
+    plate = excavation_report.plate_table(out / "excavation_cantilever_plate.h5", rows)
+    b = blocks(rows, pile, emb, host, gauss, plate)
     if walls is None:
         # no run timed here: the committed table (with its times) stays
         b.pop("phases-cantilever")
@@ -212,7 +219,8 @@ def main(argv=None):
         # the times (last two columns) and the host are measured, not compared
         bad = check_runs(exc, out / "s2_goodman.h5", out / "pile_wished_in_place.h5",
                          out / "embankment_stages.h5", out / "s2_goodman_gauss.h5",
-                         out / "pile_wished_in_place_gauss.h5")
+                         out / "pile_wished_in_place_gauss.h5",
+                         out / "excavation_cantilever_plate.h5")
         if bad:
             print(bad)
             return 1

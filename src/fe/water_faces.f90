@@ -1,0 +1,132 @@
+!> The water pressure on the faces of the model (doc/theory.md, Groundwater): every side of
+!> an active massif element that no other active element shares (a free face: the ground
+!> surface, an excavation face, the model's boundary) and that is no face of a joint carries
+!> the hydrostatic pressure p = gamma_w (h - y)+ of the level in force, pushing into the body.
+!> With it the total stresses are in equilibrium with the water standing on the faces (a
+!> flooded pit, a level above the ground), and on supported faces the pressure goes into the
+!> reactions, which are then those of the effective stresses and the buoyant weight.
+!> Joint faces are left out: a joint carries the pore pressure itself (pecplas_fe_pore).
+module pecplas_fe_water_faces
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_model_mesh_sides, only: side_table_t, build_side_table, find_sides
+   use pecplas_massif_edge_load, only: edge_linear_pressure_forces
+   use pecplas_model_options, only: AXISYMMETRIC
+   use pecplas_structures_beam, only: beam_line_load, MAX_BEAM_DOFS
+   use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
+   implicit none (type, external)
+   private
+
+   public :: add_water_faces, add_plate_water, plate_water_load
+
+contains
+
+   !> force(2, nnode) += the water's pressure on the free faces of the active element sets
+   !> `eactive` under level k (0: none), joint sets `jactive` active.
+   subroutine add_water_faces(model, eactive, jactive, k, force, error)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: eactive(:), jactive(:)
+      integer, intent(in) :: k
+      real(wp), intent(inout) :: force(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(side_table_t) :: table
+      logical, allocatable :: on_joint(:)
+      integer, allocatable :: same(:)
+      real(wp) :: xedge(2, 3), fe(6), h, xm
+      integer :: side, j, nen, n
+      if (k <= 0) return
+      call build_side_table(model%mesh, table)
+      allocate (on_joint(model%mesh%nnode()), source=.false.)
+      if (allocated(model%joint_sets)) then
+         do j = 1, size(model%joint_sets)
+            if (j > size(jactive)) exit
+            if (jactive(j)) on_joint(pack(model%joint_sets(j)%conn, &
+               model%joint_sets(j)%conn > 0)) = .true.
+         end do
+      end if
+      do side = 1, size(table%set)
+         if (.not. eactive(table%set(side))) cycle
+         associate (nodes => table%nodes(:, side))
+            if (on_joint(nodes(1)) .and. on_joint(nodes(2))) cycle
+            same = find_sides(table, nodes)
+            n = 0
+            do j = 1, size(same)
+               if (eactive(table%set(same(j)))) n = n + 1
+            end do
+            if (n /= 1) cycle
+            nen = merge(3, 2, nodes(3) > 0)
+            xedge(:, 1:nen) = model%mesh%x(:, nodes(1:nen))
+            xm = 0.5_wp*(xedge(1, 1) + xedge(1, 2))
+            h = model%water%levels(k)%head(xm)
+            if (.not. any(xedge(2, 1:nen) < h)) cycle
+            ! p = gamma_w (h - y), floored at 0 above the level (h at the side's middle: a
+            ! polyline level is taken straight along one side)
+            call edge_linear_pressure_forces(model%analysis%kind, model%analysis%thickness, &
+               xedge(:, 1:nen), 0.0_wp, model%water%levels(k)%gamma_w, h, fe(1:2*nen), &
+               error, 0.0_wp)
+            if (allocated(error)) return
+            force(:, nodes(1:nen)) = force(:, nodes(1:nen)) + reshape(fe(1:2*nen), [2, nen])
+         end associate
+      end do
+   end subroutine add_water_faces
+
+   !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
+   !> in `pactive`, under level k (0: none): see plate_water_load.
+   subroutine add_plate_water(model, pactive, k, force)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: pactive(:)
+      integer, intent(in) :: k
+      real(wp), intent(inout) :: force(:, :)
+      real(wp) :: fe(MAX_BEAM_DOFS)
+      integer :: s, e, nd
+      logical :: any_load
+      if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
+      do s = 1, size(model%water%plate_side)
+         if (model%water%plate_side(s) == 0) cycle
+         if (s > size(pactive)) cycle
+         if (.not. pactive(s)) cycle
+         nd = 3*size(model%plates(s)%conn, 1)
+         do e = 1, size(model%plates(s)%conn, 2)
+            call plate_water_load(model, s, e, k, fe(1:nd), any_load)
+            if (any_load) call scatter_plate_vector(model, model%plates(s), e, fe(1:nd), force)
+         end do
+      end do
+   end subroutine add_plate_water
+
+   !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
+   !> under level k: p = gamma_w (h - y)+ at the element's nodes, interpolated along it like
+   !> its geometry (exact where it lies wholly below or above the level), pressing from the
+   !> side *PLATE_WATER names (a plate is impermeable: the water or the soil's pore pressure
+   !> on its other side is not this load). `loaded`: false (fe = 0) when p = 0 at every node
+   !> or the set has no water.
+   subroutine plate_water_load(model, s, e, k, fe, loaded)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s, e, k
+      real(wp), intent(out) :: fe(:)
+      logical, intent(out) :: loaded
+      real(wp) :: t(2), q(2), p(3), x(2, 3)
+      integer :: j, nen
+      fe = 0.0_wp
+      loaded = .false.
+      if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
+      if (s > size(model%water%plate_side)) return
+      if (model%water%plate_side(s) == 0) return
+      associate (pl => model%plates(s))
+         nen = size(pl%conn, 1)
+         x(:, 1:nen) = plate_element_x(model, pl, e)
+         do j = 1, nen
+            p(j) = model%water%levels(k)%pressure(x(:, j))
+         end do
+         if (all(p(1:nen) == 0.0_wp)) return
+         loaded = .true.
+         ! the chord's direction; water on the left (+1) presses towards the right
+         t = x(:, 2) - x(:, 1)
+         t = t/norm2(t)
+         q = real(model%water%plate_side(s), wp)*[t(2), -t(1)]
+         call beam_line_load(x(:, 1:nen), pl%section, model%analysis%kind == AXISYMMETRIC, &
+            model%analysis%thickness, q, fe, p(1:nen))
+      end associate
+   end subroutine plate_water_load
+
+end module pecplas_fe_water_faces

@@ -1,0 +1,661 @@
+!> Groundwater (doc/theory.md, Groundwater): the hydrostatic state of a layered column,
+!> undrained oedometric loading against the closed form, undrained plane-strain
+!> Mohr-Coulomb compression, undrained-then-drained phases against a drained run, joints
+!> under pore pressure, bad decks.
+module test_water
+   use pecplas_base_kinds, only: wp
+   use pecplas_base_error, only: error_t
+   use pecplas_model_type, only: model_t
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_base_files, only: make_directories
+   use pecplas_io_deck_reader, only: read_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_massif_element_matrices, only: massif_gauss_coordinates
+   use pecplas_base_strings, only: itoa
+   use pecplas_io_results_reader, only: results_reader_t
+   use pecplas_io_results_increment, only: plate_fields_t
+   use pecplas_fe_plate_output, only: plate_results
+   use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   implicit none (type, external)
+   private
+   public :: collect_water
+
+   character(len=*), parameter :: OUT = 'build/test_out/water/'
+   character(len=*), parameter :: NL = new_line('a')
+
+contains
+
+   subroutine collect_water(tests)
+      type(unittest_t), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('hydrostatic_column', test_hydrostatic), &
+               new_unittest('undrained_oedometer', test_oedometer), &
+               new_unittest('undrained_mc_compression', test_compression), &
+               new_unittest('undrained_then_drained', test_short_long), &
+               new_unittest('footing_undrained_b', test_footing_b), &
+               new_unittest('undrained_b_cu_depth', test_cu_depth), &
+               new_unittest('joint_effective_stress', test_joint), &
+               new_unittest('restart_keeps_excess', test_restart), &
+               new_unittest('flooded_pit', test_flooded_pit), &
+               new_unittest('water_on_a_wall', test_wall), &
+               new_unittest('bad_decks', test_bad_decks)]
+   end subroutine collect_water
+
+   !> A column of nel Q4 elements (width 1, height h, base y = 0, sides on rollers): the
+   !> elements below y = ysplit form set 'low', the others 'high'. `body`: the deck after
+   !> the mesh, sets and supports (materials, sections, water, stresses, steps).
+   subroutine write_column(path, nel, h, ysplit, body)
+      character(len=*), intent(in) :: path, body
+      integer, intent(in) :: nel
+      real(wp), intent(in) :: h, ysplit
+      integer :: u, i
+      real(wp) :: dy
+      dy = h/nel
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'water column', '*NODES'
+      do i = 0, nel
+         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*dy
+         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*dy
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=low'
+      do i = 1, nel
+         if ((i - 0.5_wp)*dy > ysplit) exit
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=high'
+      do i = 1, nel
+         if ((i - 0.5_wp)*dy < ysplit) cycle
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE'
+      write (u, '(a,i0)') '1, ', 2*nel + 2
+      write (u, '(a)') '*NSET, NAME=top'
+      write (u, '(i0,a,i0)') 2*nel + 1, ', ', 2*nel + 2
+      write (u, '(a)') '*BOUNDARY', 'base, XY', 'sides, X'
+      write (u, '(a)') body
+      close (u)
+   end subroutine write_column
+
+   !> A layered column (sand over clay at y = 4, surface y = 10) with the phreatic level at
+   !> y = 7 inside the sand, K0 procedure then a nil step: at every Gauss point the pore
+   !> pressure is gamma_w (7 - y)+ and sigma'_v the closed form from the effective weights
+   !> (gamma_unsat above the level, gamma_sat - gamma_w below), sigma'_h = K0 sigma'_v.
+   !> The level lies on an element edge, so the K0 state is in discrete equilibrium (each
+   !> integrand a polynomial that 2 x 2 Gauss integrates exactly): the nil step moves it by
+   !> round-off only, 1e-12 of the stress scale (a bound on the solve's round-off for
+   !> 20 elements, condition number ~ nel^2). With the level at y = 7.25 inside an element
+   !> the pore pressures (a formula of the point) are checked the same way. With the level
+   !> at y = 12, 2 m of water above the ground, the water's pressure on the surface
+   !> (pecplas_fe_water_faces, a linear pressure integrated exactly) keeps the effective
+   !> stresses those of the buoyant weight from the surface down: the same check.
+   subroutine test_hydrostatic(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: GW = 10.0_wp, K0 = 0.5_wp, HS = 10.0_wp, HC = 4.0_wp
+      real(wp), parameter :: GSU = 17.0_wp, GSS = 20.0_wp, GCS = 21.0_wp
+      real(wp) :: level, xg(2, 4), p, sv, q, worst_p, worst_s, scale
+      integer :: code, s, el, g, v
+      character(len=:), allocatable :: body
+      character(len=32) :: buf
+      call make_directories(OUT)
+      do v = 1, 3
+         level = merge(7.0_wp, 7.25_wp, v == 1)
+         if (v == 3) level = 12.0_wp
+         q = GSU*max(HS - level, 0.0_wp) + (GSS - GW)*(min(level, HS) - HC)
+         write (buf, '(es23.16)') level
+         body = '*MATERIAL, NAME=sand'//NL//'E = 3e4, NU = 0.25, GAMMA_UNSAT = 17, '// &
+            'GAMMA_SAT = 20'//NL//'*MATERIAL, NAME=clay'//NL// &
+            'E = 1e4, NU = 0.3, GAMMA = 18, GAMMA_SAT = 21'//NL// &
+            '*SECTION, SET=high, MATERIAL=sand'//NL//'*SECTION, SET=low, MATERIAL=clay'//NL// &
+            '*WATER, NAME=gwt, GAMMA_W=10, LEVEL='//trim(adjustl(buf))//NL// &
+            '*INITIAL_STRESS, TYPE=GEOSTATIC'//NL//'high, 10.0, 0.5'
+         write (buf, '(es23.16)') q
+         body = body//NL//'low, 4.0, 0.5, '//trim(adjustl(buf))//NL// &
+            '*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'
+         call write_column(OUT//'hydro'//itoa(v)//'.inp', 20, HS, HC, body)
+         code = run_deck(OUT//'hydro'//itoa(v)//'.inp', OUT//'hydro'//itoa(v)//'.h5', .true., &
+            model, problem)
+         call check(error, code == 0, 'hydrostatic column runs (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         scale = GSS*HS
+         worst_p = 0.0_wp
+         worst_s = 0.0_wp
+         do s = 1, 2
+            associate (set => model%mesh%esets(s), st => problem%state%sets(s))
+               do el = 1, size(set%conn, 2)
+                  call massif_gauss_coordinates(problem%system%rules(s), &
+                     model%mesh%x(:, set%conn(:, el)), xg)
+                  do g = 1, 4
+                     p = GW*max(level - xg(2, g), 0.0_wp)
+                     worst_p = max(worst_p, abs(st%pore%steady(g, el) + st%pore%excess(g, el) &
+                        - p))
+                     if (set%name == 'high') then
+                        sv = GSU*max(HS - max(xg(2, g), level), 0.0_wp) + (GSS - GW)* &
+                           max(min(level, HS) - xg(2, g), 0.0_wp)
+                     else
+                        sv = q + (GCS - GW)*(HC - xg(2, g))
+                     end if
+                     worst_s = max(worst_s, abs(st%stress(2, g, el) + sv), &
+                        abs(st%stress(1, g, el) + K0*sv), abs(st%stress(4, g, el)))
+                  end do
+               end do
+            end associate
+         end do
+         call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'pore pressure = gamma_w (h - y)', &
+            atol=1.0e-12_wp*scale)
+         if (allocated(error)) return
+         if (v /= 2) call check_close(error, worst_s, 0.0_wp, 0.0_wp, &
+            "sigma'_v, sigma'_h closed form", atol=1.0e-12_wp*scale)
+         if (allocated(error)) return
+      end do
+   end subroutine test_hydrostatic
+
+   !> An oedometric column (10 Q4 elements, weightless, no phreatic level) of UNDRAINED_A
+   !> elastic soil under a surcharge q = 100: the strain is uniform, eps_v = -q / (M' + K_w/n)
+   !> (M' = K' + 4 G / 3), so the excess pore pressure is q B_oed with
+   !> B_oed = K_w/n / (M' + K_w/n) and sigma'_v = -q M' / (M' + K_w/n) at every point. Once
+   !> with the default K_w/n (the nu_u = 0.495 rule: K_w/n = 45 K' for nu' = 0.3) and once
+   !> with KW_N = 2e5 given. The elements represent the uniform strain exactly: 1e-8 of q
+   !> is far above the round-off.
+   subroutine test_oedometer(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: E = 1.0e4_wp, NU = 0.3_wp, Q = 100.0_wp
+      real(wp) :: bulk, shear, m, kwn, b, worst_p, worst_s
+      integer :: code, v, s
+      character(len=:), allocatable :: body
+      call make_directories(OUT)
+      bulk = E/(3.0_wp*(1.0_wp - 2.0_wp*NU))
+      shear = E/(2.0_wp*(1.0_wp + NU))
+      m = bulk + 4.0_wp*shear/3.0_wp
+      do v = 1, 2
+         if (v == 1) then
+            kwn = 3.0_wp*(0.495_wp - NU)/((1.0_wp - 2.0_wp*0.495_wp)*(1.0_wp + NU))*bulk
+            body = '*MATERIAL, NAME=clay, DRAINAGE=UNDRAINED_A'//NL//'E = 1e4, NU = 0.3'
+         else
+            kwn = 2.0e5_wp
+            body = '*MATERIAL, NAME=clay, DRAINAGE=UNDRAINED_A'//NL// &
+               'E = 1e4, NU = 0.3, KW_N = 2e5'
+         end if
+         b = kwn/(m + kwn)
+         body = body//NL//'*SECTION, SET=low, MATERIAL=clay'//NL// &
+            '*SECTION, SET=high, MATERIAL=clay'//NL//'*LOAD, NAME=q, TYPE=FORCE'//NL// &
+            'top, Y, -50'//NL//'*STEP, NAME=load, INCREMENTS=1'//NL//'q, 1.0'
+         call write_column(OUT//'oedo'//itoa(v)//'.inp', 10, 10.0_wp, 5.0_wp, body)
+         code = run_deck(OUT//'oedo'//itoa(v)//'.inp', OUT//'oedo'//itoa(v)//'.h5', .true., &
+            model, problem)
+         call check(error, code == 0, 'undrained oedometer runs (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         worst_p = 0.0_wp
+         worst_s = 0.0_wp
+         do s = 1, 2
+            associate (st => problem%state%sets(s))
+               worst_p = max(worst_p, maxval(abs(st%pore%excess - Q*b)))
+               worst_s = max(worst_s, maxval(abs(st%stress(2, :, :) + Q*m/(m + kwn))))
+            end associate
+         end do
+         call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'excess pore pressure = q B_oed', &
+            atol=1.0e-8_wp*Q)
+         if (allocated(error)) return
+         call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma'_v = -q (1 - B_oed)", &
+            atol=1.0e-8_wp*Q)
+         if (allocated(error)) return
+      end do
+   end subroutine test_oedometer
+
+   !> Undrained plane-strain compression of one Q4 element of Mohr-Coulomb soil (c' = 10,
+   !> phi' = 30, psi = 0) from an isotropic effective stress s'_0 = 100, the top pushed down
+   !> 2 % in 40 increments against a constant lateral total stress: with no dilatancy the
+   !> mean effective stress stays s'_0 (up to the pore water's compressibility: with
+   !> KW_N = 1000 K' the drift is below K'/K_w/n of the deviator, 0.1 %), so the strength is
+   !> t = (sigma'_1 - sigma'_3) / 2 = c' cos phi' + s'_0 sin phi', checked within 0.5 %.
+   !> With psi = 10 the strength keeps rising (dilatancy lowers the pore pressure): the
+   !> last increment's t is above the psi = 0 strength and still growing.
+   subroutine test_compression(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: C = 10.0_wp, PHI = 30.0_wp, S0 = 100.0_wp
+      real(wp) :: deg, t, expect, sig(4)
+      integer :: code
+      deg = acos(-1.0_wp)/180.0_wp
+      expect = C*cos(PHI*deg) + S0*sin(PHI*deg)
+      call make_directories(OUT)
+      call write_block(OUT//'triax0.inp', 0.0_wp)
+      code = run_deck(OUT//'triax0.inp', OUT//'triax0.h5', .true., model, problem)
+      call check(error, code == 0, 'undrained compression runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      sig = problem%state%sets(1)%stress(:, 1, 1)
+      t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
+      call check_close(error, t, expect, 5.0e-3_wp, "undrained strength c' cos phi' + "// &
+         "s'_0 sin phi'")
+      if (allocated(error)) return
+      call write_block(OUT//'triax10.inp', 10.0_wp)
+      code = run_deck(OUT//'triax10.inp', OUT//'triax10.h5', .true., model, problem)
+      call check(error, code == 0, 'undrained compression, psi = 10, runs (exit '// &
+         itoa(code)//')')
+      if (allocated(error)) return
+      sig = problem%state%sets(1)%stress(:, 1, 1)
+      t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
+      call check(error, t > 1.05_wp*expect, 'psi = 10: the strength rises above the psi = 0 '// &
+         'one (dilatancy lowers the pore pressure)')
+   contains
+      subroutine write_block(path, psi)
+         character(len=*), intent(in) :: path
+         real(wp), intent(in) :: psi
+         integer :: u
+         open (newunit=u, file=path, status='replace', action='write')
+         write (u, '(a)') '*TITLE', 'undrained plane-strain compression', '*NODES', &
+            '1, 0, 0', '2, 1, 0', '3, 1, 1', '4, 0, 1', '*ELEMENTS, TYPE=Q4, SET=soil', &
+            '1, 1, 2, 3, 4', '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_A'
+         write (u, '(a,f4.1,a)') 'E = 1e4, NU = 0.3, C = 10, PHI = 30, PSI = ', psi, &
+            ', KW_N = 8.333333e6'
+         write (u, '(a)') '*SECTION, SET=soil, MATERIAL=clay', '*NSET, NAME=top', '3, 4', &
+            '*BOUNDARY', '1, XY', '2, Y', '4, X', '*INITIAL_STRESS, TYPE=HOMOGENEOUS', &
+            'ALL, -100, -100, -100, 0', '*LOAD, NAME=push, TYPE=DISPLACEMENT', &
+            'top, Y, -0.02', '*STEP, NAME=push, INCREMENTS=40', 'push, 1.0'
+         close (u)
+      end subroutine write_block
+   end subroutine test_compression
+
+   !> Elastic soil loaded undrained (q = 100 on the oedometric column), then a phase that
+   !> makes it drained and sets the excess pore pressures to zero: the end state equals a
+   !> drained run of the same loading (elastic: the state depends on the end strain only),
+   !> displacements to 1e-10 of the drained settlement, effective stresses to 1e-10 of q.
+   subroutine test_short_long(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: two, one
+      real(wp) :: du, ds, umax
+      integer :: code, s
+      character(len=*), parameter :: MATS = '*MATERIAL, NAME=short, DRAINAGE=UNDRAINED_A'// &
+         NL//'E = 1e4, NU = 0.3, GAMMA = 0'//NL//'*MATERIAL, NAME=long'//NL// &
+         'E = 1e4, NU = 0.3, GAMMA = 0'//NL
+      call make_directories(OUT)
+      call write_column(OUT//'short_long.inp', 10, 10.0_wp, 5.0_wp, MATS// &
+         '*SECTION, SET=low, MATERIAL=short'//NL//'*SECTION, SET=high, MATERIAL=short'//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
+         '*STEP, NAME=undrained, INCREMENTS=2'//NL//'q, 1.0'//NL// &
+         '*STEP, NAME=drained, INCREMENTS=2'//NL//'*CHANGE_MATERIAL'//NL//'low, long'//NL// &
+         'high, long'//NL//'*CHANGE_WATER, RESET_EXCESS=YES'//NL//'*END STEP')
+      code = run_deck(OUT//'short_long.inp', OUT//'short_long.h5', .true., model, two)
+      call check(error, code == 0, 'undrained then drained runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call write_column(OUT//'drained.inp', 10, 10.0_wp, 5.0_wp, MATS// &
+         '*SECTION, SET=low, MATERIAL=long'//NL//'*SECTION, SET=high, MATERIAL=long'//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
+         '*STEP, NAME=drained, INCREMENTS=2'//NL//'q, 1.0')
+      code = run_deck(OUT//'drained.inp', OUT//'drained.h5', .true., model, one)
+      call check(error, code == 0, 'drained run (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      umax = maxval(abs(one%state%u))
+      du = maxval(abs(two%state%u - one%state%u))
+      ds = 0.0_wp
+      do s = 1, 2
+         ds = max(ds, maxval(abs(two%state%sets(s)%stress - one%state%sets(s)%stress)))
+         ds = max(ds, maxval(abs(two%state%sets(s)%pore%excess)))
+      end do
+      call check_close(error, du, 0.0_wp, 0.0_wp, 'displacements = drained run', &
+         atol=1.0e-10_wp*umax)
+      if (allocated(error)) return
+      call check_close(error, ds, 0.0_wp, 0.0_wp, 'effective stresses = drained run', &
+         atol=1.0e-10_wp*100.0_wp)
+   end subroutine test_short_long
+
+   !> Smooth rigid strip footing on weightless UNDRAINED_B clay (c_u = 10, effective E, nu,
+   !> K_w/n of nu_u = 0.495), 200 Q8R elements (test/data/water/footing_undrained_b.inp):
+   !> the footing pressure reaches Prandtl's (2 + pi) c_u within 2 % (measured 51.859,
+   !> +0.86 %; T6 on the same mesh density +0.75 %, full Q8 +1.6 %, the stiffening of
+   !> full integration) and has levelled off (last 10 increments within 0.2 %).
+   subroutine test_footing_b(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(results_reader_t) :: rd
+      real(wp), allocatable :: reac(:, :)
+      real(wp) :: q(2), qu
+      character(len=40) :: path
+      integer :: code, n, k, i
+      call make_directories(OUT)
+      code = run_deck('test/data/water/footing_undrained_b.inp', OUT//'footing_b.h5', .true., &
+         model, problem)
+      call check(error, code == 0, 'UNDRAINED_B footing runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      k = model%mesh%find_nset('footing')
+      call rd%open(OUT//'footing_b.h5', error)
+      if (allocated(error)) return
+      call rd%history_length(n, error)
+      if (allocated(error)) return
+      do i = 1, 2
+         write (path, '(a,i6.6,a)') '/increments/', merge(n, n - 10, i == 1), '/reaction'
+         call rd%dataset(trim(path), reac, error)
+         if (allocated(error)) return
+         q(i) = -sum(reac(2, model%mesh%nsets(k)%nodes)) ! half-width 1: q b = q
+      end do
+      call rd%close()
+      qu = (2.0_wp + acos(-1.0_wp))*10.0_wp
+      call check_close(error, q(1), qu, 0.02_wp, 'footing pressure vs (2 + pi) c_u')
+      if (allocated(error)) return
+      call check(error, abs(q(1) - q(2)) <= 2.0e-3_wp*q(1), 'the footing pressure has '// &
+         'levelled off')
+   end subroutine test_footing_b
+
+   !> A pad (2 x 0.25 at y = 1 to 1.25, low so that the push's moment keeps every joint
+   !> point closed; weightless elastic) pressed by 100 onto a fixed block through
+   !> Mohr-Coulomb Goodman joints (phi = 30, c = 5) at y = 1, all under a phreatic level at
+   !> y = 5 (gamma_w = 10); a nil step after the pressure releases the out-of-balance of the
+   !> pore pressures (the buoyancy of the weightless pad). The joint takes the pore pressure
+   !> u = 40 of its position; the water on the pad's top (37.5) adds to the pressure, so the
+   !> pad's vertical equilibrium makes the mean total normal stress sigma_n = 137.5 and the
+   !> law's mean effective normal stress sigma_n - u = 97.5 (1e-8 of 100; the submerged pad's
+   !> buoyancy, 2.5, taken off the 100), and the sliding resistance over the width 2 is
+   !> 2 ((sigma_n - u) tan phi + c) = 122.58. Pushed sideways by 0.99 of it the run converges,
+   !> the mean shear stress T / 2 (1e-8); by 1.01 of it the pad slides away (the run stops,
+   !> exit 3), where a joint blind to the pore pressure (resistance 2 (137.5 tan phi + c) =
+   !> 168.8) would hold.
+   subroutine test_joint(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp) :: resist, tanphi, worst_n, worst_t
+      integer :: code
+      tanphi = tan(30.0_wp*acos(-1.0_wp)/180.0_wp)
+      resist = 2.0_wp*((137.5_wp - 40.0_wp)*tanphi + 5.0_wp)
+      call make_directories(OUT)
+      call write_pad(OUT//'pad_hold.inp', 0.99_wp*resist)
+      code = run_deck(OUT//'pad_hold.inp', OUT//'pad_hold.h5', .true., model, problem)
+      call check(error, code == 0, 'pad below the effective resistance holds (exit '// &
+         itoa(code)//')')
+      if (allocated(error)) return
+      associate (js => problem%state%joints%sets(1))
+         ! equal weights: 2 Gauss points on each of 2 elements of length 1
+         worst_n = abs(sum(js%sigma(1, :, :))/4.0_wp - 97.5_wp)
+         worst_t = abs(abs(sum(js%sigma(2, :, :)))/4.0_wp - 0.99_wp*resist/2.0_wp)
+         call check(error, all(abs(js%pore - 40.0_wp) <= 1.0e-12_wp*40.0_wp), &
+            'joint pore pressure = gamma_w (5 - 1)')
+      end associate
+      if (allocated(error)) return
+      call check_close(error, worst_n, 0.0_wp, 0.0_wp, 'effective normal stress sigma_n - u', &
+         atol=1.0e-8_wp*100.0_wp)
+      if (allocated(error)) return
+      call check_close(error, worst_t, 0.0_wp, 0.0_wp, 'shear stress T / width', &
+         atol=1.0e-8_wp*100.0_wp)
+      if (allocated(error)) return
+      call write_pad(OUT//'pad_slide.inp', 1.01_wp*resist)
+      code = run_deck(OUT//'pad_slide.inp', OUT//'pad_slide.h5', .true., model, problem)
+      call check(error, code == 3, 'pad above the effective resistance slides (exit 3, got '// &
+         itoa(code)//')')
+   contains
+      subroutine write_pad(path, push)
+         character(len=*), intent(in) :: path
+         real(wp), intent(in) :: push
+         integer :: u
+         character(len=32) :: buf
+         write (buf, '(es23.16)') push/3.0_wp
+         open (newunit=u, file=path, status='replace', action='write')
+         write (u, '(a)') '*TITLE', 'pad under water', '*NODES', '1, 0, 0', '2, 1, 0', &
+            '3, 2, 0', '4, 0, 1', '5, 1, 1', '6, 2, 1', '10, 0, 1.25', '11, 1, 1.25', &
+            '12, 2, 1.25', &
+            '*ELEMENTS, TYPE=Q4, SET=ground', '1, 1, 2, 5, 4', '2, 2, 3, 6, 5', &
+            '*ELEMENTS, TYPE=Q4, SET=pad', '3, 4, 5, 11, 10', '4, 5, 6, 12, 11', &
+            '*MATERIAL, NAME=soil', 'E = 1e4, NU = 0.3', '*SECTION, SET=ground, MATERIAL=soil', &
+            '*SECTION, SET=pad, MATERIAL=soil', &
+            '*INTERFACE_LAW, NAME=friction, TYPE=MOHR_COULOMB', &
+            'KN = 1e5, KT = 1e5, PHI = 30, C = 5', '*EDGES, NAME=interface', '4, 5', '5, 6', &
+            '*JOINTS, TYPE=GOODMAN4, SET=contact, LAW=friction, EDGES=interface, SIDE=pad', &
+            '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=5', &
+            '*NSET, NAME=base', '1, 2, 3', '*NSET, NAME=pad_top', '10, 11, 12', '*BOUNDARY', &
+            'base, XY', '*EDGES, NAME=top', '10, 11', '11, 12', '*LOAD, NAME=p, TYPE=PRESSURE', &
+            'top, 100', '*LOAD, NAME=push, TYPE=FORCE', 'pad_top, X, '//trim(adjustl(buf)), &
+            '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-10, MAX_ITERATIONS=50, MAX_CUTS=4', &
+            '*STEP, NAME=press, INCREMENTS=1', 'p, 1', &
+            '*STEP, NAME=water, INCREMENTS=1', '*END STEP', '*STEP, NAME=push, INCREMENTS=4', 'push, 1'
+         close (u)
+      end subroutine write_pad
+   end subroutine test_joint
+
+   !> Bad groundwater decks stop while reading, with file:line and the reason, exit 2 and no
+   !> results file: a phreatic polyline that does not span the model, GAMMA_SAT below
+   !> GAMMA_UNSAT, an undrained interface law, an unknown level in *CHANGE_WATER, CU
+   !> without UNDRAINED_B, UNDRAINED_B on an elastic material.
+   subroutine test_bad_decks(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(error_t), allocatable :: e
+      character(len=*), parameter :: MAT = '*MATERIAL, NAME=clay'//NL//'E = 1e4, NU = 0.3'//NL
+      character(len=*), parameter :: SECS = '*SECTION, SET=low, MATERIAL=clay'//NL// &
+         '*SECTION, SET=high, MATERIAL=clay'//NL
+      character(len=*), parameter :: STEP = '*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'
+      character(len=160) :: bodies(6), marker(6), expect(6)
+      character(len=:), allocatable :: deck, body
+      integer :: k, i, code
+      logical :: exists
+      bodies(1) = '*WATER, NAME=w, GAMMA_W=10|0.2, 5|0.8, 6|'
+      marker(1) = '*WATER, NAME=w, GAMMA_W=10'
+      expect(1) = 'does not cross the model'
+      bodies(2) = '*MATERIAL, NAME=clay|E = 1e4, NU = 0.3, GAMMA = 18, GAMMA_SAT = 16|'
+      marker(2) = 'E = 1e4, NU = 0.3, GAMMA = 18, GAMMA_SAT = 16'
+      expect(2) = 'GAMMA_SAT = 16 is below'
+      bodies(3) = '*INTERFACE_LAW, NAME=j, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_A|'// &
+         'KN = 1e5, KT = 1e5, PHI = 30, C = 0|'
+      marker(3) = '*INTERFACE_LAW, NAME=j, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_A'
+      expect(3) = 'joints are drained'
+      bodies(4) = '*WATER, NAME=w, GAMMA_W=10, LEVEL=5|*STEP, NAME=two, INCREMENTS=1|'// &
+         '*CHANGE_WATER, LEVEL=low|*END STEP|'
+      marker(4) = '*CHANGE_WATER, LEVEL=low'
+      expect(4) = "undefined phreatic level 'low'"
+      bodies(5) = '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB|E = 1e4, NU = 0.3, C = 5, '// &
+         'PHI = 20, PSI = 0, CU = 10|'
+      marker(5) = 'E = 1e4, NU = 0.3, C = 5, PHI = 20, PSI = 0, CU = 10'
+      expect(5) = 'is for DRAINAGE=UNDRAINED_B'
+      bodies(6) = '*MATERIAL, NAME=clay, DRAINAGE=UNDRAINED_B|E = 1e4, NU = 0.3, CU = 10|'
+      marker(6) = 'E = 1e4, NU = 0.3, CU = 10'
+      expect(6) = 'needs a plastic model'
+      call make_directories(OUT)
+      do k = 1, size(bodies)
+         body = trim(bodies(k))
+         do i = 1, len(body)
+            if (body(i:i) == '|') body(i:i) = NL
+         end do
+         if (k /= 2 .and. k /= 5 .and. k /= 6) body = MAT//body
+         deck = OUT//'bad'//itoa(k)//'.inp'
+         call write_column(deck, 4, 4.0_wp, 2.0_wp, body//SECS//STEP)
+         call read_deck(deck, model, e)
+         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
+         if (allocated(error)) return
+         call check(error, index(e%text(), deck//':'//itoa(line_of(deck, trim(marker(k))))) > 0 &
+            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
+         if (allocated(error)) return
+         deallocate (e)
+         open (newunit=i, file=OUT//'bad.h5', status='replace')
+         close (i, status='delete')
+         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
+         inquire (file=OUT//'bad.h5', exist=exists)
+         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
+            itoa(code)//', results file written: '//merge('yes', 'no ', exists))
+         if (allocated(error)) return
+      end do
+   contains
+      !> Number of the line of file `path` that reads `text`.
+      integer function line_of(path, text) result(n)
+         character(len=*), intent(in) :: path, text
+         character(len=256) :: buf
+         integer :: u, j, ios
+         n = 0
+         open (newunit=u, file=path, status='old', action='read')
+         j = 0
+         do
+            read (u, '(a)', iostat=ios) buf
+            if (ios /= 0) exit
+            j = j + 1
+            if (trim(buf) == text) n = j
+         end do
+         close (u)
+      end function line_of
+   end subroutine test_bad_decks
+
+   !> The undrained oedometer loaded in 4 increments, stopped after 2 and restarted from its
+   !> results file, ends with the excess pore pressures and displacements of the
+   !> uninterrupted run (1e-12 of q and of the settlement: the same operations).
+   subroutine test_restart(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: whole, resumed
+      character(len=*), parameter :: deck = OUT//'oedo_restart.inp'
+      real(wp) :: dp, du
+      integer :: code, s
+      call make_directories(OUT)
+      call write_column(deck, 10, 10.0_wp, 5.0_wp, '*MATERIAL, NAME=clay, '// &
+         'DRAINAGE=UNDRAINED_A'//NL//'E = 1e4, NU = 0.3'//NL// &
+         '*SECTION, SET=low, MATERIAL=clay'//NL//'*SECTION, SET=high, MATERIAL=clay'//NL// &
+         '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
+         '*STEP, NAME=load, INCREMENTS=4'//NL//'q, 1.0')
+      code = run_deck(deck, OUT//'oedo_whole.h5', .true., model, whole)
+      call check(error, code == 0, 'undrained oedometer runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'oedo_part.h5', .true., model, resumed, stop_after=2)
+      call check(error, code == 4, 'stopped after increment 2 (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      code = run_deck(deck, OUT//'oedo_resumed.h5', .true., model, resumed, &
+         restart=OUT//'oedo_part.h5')
+      call check(error, code == 0, 'restarted (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      du = maxval(abs(resumed%state%u - whole%state%u))
+      dp = 0.0_wp
+      do s = 1, 2
+         dp = max(dp, maxval(abs(resumed%state%sets(s)%pore%excess - &
+            whole%state%sets(s)%pore%excess)))
+      end do
+      call check_close(error, dp, 0.0_wp, 0.0_wp, 'restarted = uninterrupted: excess pore '// &
+         'pressures', atol=1.0e-12_wp*100.0_wp)
+      if (allocated(error)) return
+      call check_close(error, du, 0.0_wp, 0.0_wp, 'restarted = uninterrupted: displacements', &
+         atol=1.0e-12_wp*maxval(abs(whole%state%u)))
+   end subroutine test_restart
+
+   !> A saturated K0 column (gamma_sat = 20, level at the surface y = 10, K0 = 0.5, elastic
+   !> E = 3e4, nu = 0.25) dug to y = 7 with the pit kept flooded to y = 10: the water on the
+   !> pit floor (gamma_w 3 = 30) replaces the 60 of the soil removed, so the effective
+   !> stresses below fall uniformly by 30 (oedometric unloading, which Q4 elements represent
+   !> exactly): sigma'_v = 10 (7 - y), sigma'_h = 5 (10 - y) - nu/(1 - nu) 30, and the floor
+   !> heaves 30 y / M. To 1e-10 of the stress scale (round-off of the solves).
+   subroutine test_flooded_pit(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), parameter :: E = 3.0e4_wp, NU = 0.25_wp
+      real(wp) :: xg(2, 4), worst_s, worst_u, m, sv, sh
+      integer :: code, el, g, n
+      call make_directories(OUT)
+      call write_column(OUT//'pit.inp', 20, 10.0_wp, 7.0_wp, '*MATERIAL, NAME=soil'//NL// &
+         'E = 3e4, NU = 0.25, GAMMA = 20, GAMMA_SAT = 20'//NL// &
+         '*SECTION, SET=low, MATERIAL=soil'//NL//'*SECTION, SET=high, MATERIAL=soil'//NL// &
+         '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=10'//NL//'*INITIAL_STRESS, TYPE=GEOSTATIC'// &
+         NL//'ALL, 10.0, 0.5'//NL//'*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'//NL// &
+         '*STEP, NAME=dig, INCREMENTS=1'//NL//'*DEACTIVATE'//NL//'high'//NL//'*END STEP')
+      code = run_deck(OUT//'pit.inp', OUT//'pit.h5', .true., model, problem)
+      call check(error, code == 0, 'flooded pit runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      m = E*(1.0_wp - NU)/((1.0_wp + NU)*(1.0_wp - 2.0_wp*NU))
+      worst_s = 0.0_wp
+      associate (set => model%mesh%esets(1), st => problem%state%sets(1))
+         do el = 1, size(set%conn, 2)
+            call massif_gauss_coordinates(problem%system%rules(1), &
+               model%mesh%x(:, set%conn(:, el)), xg)
+            do g = 1, 4
+               sv = 10.0_wp*(7.0_wp - xg(2, g))
+               sh = 5.0_wp*(10.0_wp - xg(2, g)) - NU/(1.0_wp - NU)*30.0_wp
+               worst_s = max(worst_s, abs(st%stress(2, g, el) + sv), &
+                  abs(st%stress(1, g, el) + sh))
+            end do
+         end do
+      end associate
+      worst_u = 0.0_wp
+      do n = 1, 30
+         worst_u = max(worst_u, abs(problem%state%u(2, n) - 30.0_wp*model%mesh%x(2, n)/m))
+      end do
+      call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma' below the flooded pit", &
+         atol=1.0e-10_wp*200.0_wp)
+      if (allocated(error)) return
+      call check_close(error, worst_u, 0.0_wp, 0.0_wp, 'heave 30 y / M', &
+         atol=1.0e-10_wp*30.0_wp*7.0_wp/m)
+   end subroutine test_flooded_pit
+
+   !> UNDRAINED_B with c_u rising with depth, c_u(y) = 10 + 4 (1 - y) below y = 1: one Q4
+   !> element (0 <= y <= 1) from an isotropic effective stress of 100 compressed 2 % in plane
+   !> strain (far beyond the yield strain c_u / G ~ 0.3 %): every Gauss point ends on its own
+   !> Tresca surface, t = (sigma'_1 - sigma'_3) / 2 = c_u(y_g), to 1e-8 of c_u (the return
+   !> map lands on the surface to round-off).
+   subroutine test_cu_depth(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp) :: xg(2, 4), sig(4), t, worst
+      integer :: code, u, g
+      call make_directories(OUT)
+      open (newunit=u, file=OUT//'cu_depth.inp', status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'c_u rising with depth', '*NODES', '1, 0, 0', '2, 1, 0', &
+         '3, 1, 1', '4, 0, 1', '*ELEMENTS, TYPE=Q4, SET=soil', '1, 1, 2, 3, 4', &
+         '*MATERIAL, NAME=clay, TYPE=MOHR_COULOMB, DRAINAGE=UNDRAINED_B', &
+         'E = 1e4, NU = 0.3, CU = 10, CU_INC = 4, CU_YREF = 1', &
+         '*SECTION, SET=soil, MATERIAL=clay', '*NSET, NAME=top', '3, 4', '*BOUNDARY', &
+         '1, XY', '2, Y', '4, X', '*INITIAL_STRESS, TYPE=HOMOGENEOUS', &
+         'ALL, -100, -100, -100, 0', '*LOAD, NAME=push, TYPE=DISPLACEMENT', &
+         'top, Y, -0.02', '*STEP, NAME=push, INCREMENTS=20', 'push, 1.0'
+      close (u)
+      code = run_deck(OUT//'cu_depth.inp', OUT//'cu_depth.h5', .true., model, problem)
+      call check(error, code == 0, 'UNDRAINED_B with CU_INC runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call massif_gauss_coordinates(problem%system%rules(1), &
+         model%mesh%x(:, model%mesh%esets(1)%conn(:, 1)), xg)
+      worst = 0.0_wp
+      do g = 1, 4
+         sig = problem%state%sets(1)%stress(:, g, 1)
+         t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
+         worst = max(worst, abs(t - (10.0_wp + 4.0_wp*(1.0_wp - xg(2, g)))))
+      end do
+      call check_close(error, worst, 0.0_wp, 0.0_wp, 't = c_u(y) at every Gauss point', &
+         atol=1.0e-8_wp*10.0_wp)
+   end subroutine test_cu_depth
+
+   !> A plate wall (x = 0, 0 <= y <= 10, ten 2-node elements, clamped at its base) with water
+   !> on its left to the level y = 6 (*PLATE_WATER), released by a nil step: the shear at
+   !> the base is the water's resultant gamma_w h^2 / 2 = 180 and the moment gamma_w h^3 / 6
+   !> = 360 per unit length (1e-8: the consistent loads of the linear pressure are exact, the
+   !> level on a node, and the cantilever is statically determinate).
+   subroutine test_wall(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(plate_fields_t) :: f
+      integer :: code, u, i
+      call make_directories(OUT)
+      open (newunit=u, file=OUT//'wall.inp', status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'water on a wall', '*UNITS', 'kN, m, kPa', '*NODES'
+      do i = 0, 10
+         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
+      end do
+      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
+         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
+         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
+         '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
+      close (u)
+      code = run_deck(OUT//'wall.inp', OUT//'wall.h5', .true., model, problem)
+      call check(error, code == 0, 'wall in water runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call plate_results(model, problem%state%u, problem%state%plates, problem%state%factors, &
+         1, f, error, level=1)
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(2, 1)), 180.0_wp, 1.0e-8_wp, &
+         'base shear = gamma_w h^2 / 2')
+      if (allocated(error)) return
+      call check_close(error, abs(f%node_forces(3, 1)), 360.0_wp, 1.0e-8_wp, &
+         'base moment = gamma_w h^3 / 6')
+      if (allocated(error)) return
+      call check(error, problem%state%u(1, 11) > 0.0_wp, 'the water on the left pushes the '// &
+         'wall to the right (+x)')
+   end subroutine test_wall
+
+end module test_water
