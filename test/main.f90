@@ -14,6 +14,7 @@ program tester
    use test_phases_switch, only: collect_phases_switch
    use test_plates, only: collect_plates
    use test_io_results_structures, only: collect_io_results_structures
+   use test_safety, only: collect_safety
    use test_cli, only: collect_cli
    use test_lame, only: collect_lame
    use test_estimator, only: collect_estimator
@@ -98,6 +99,7 @@ program tester
    suites = [suites, new_testsuite('joint_faces', collect_joint_faces)]
    suites = [suites, new_testsuite('phases_switch', collect_phases_switch)]
    suites = [suites, new_testsuite('io_results_structures', collect_io_results_structures)]
+   suites = [suites, new_testsuite('safety', collect_safety)]
    suites = [suites, new_testsuite('cli', collect_cli)]
    suites = [suites, new_testsuite('model_mesh_tools', collect_model_mesh_tools)]
    suites = [suites, new_testsuite('io_gmsh', collect_io_gmsh)]

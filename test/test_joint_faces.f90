@@ -3,7 +3,8 @@
 !> below the line's end, springs per face), and a plate wall with joints on both faces in
 !> elastic soil under an excavation phase: at every plate node the plate's nodal forces
 !> balance those of the joints (the jump of the interface forces across the wall), to the
-!> solver tolerance; bad FACES= decks.
+!> solver tolerance; the same wall with Katona doublets on both faces (bonded: plate and
+!> contact forces balance; frictional: the Coulomb limit); bad FACES= decks.
 !>
 !> The mesh: 4 x 4 unit Q4 cells, node (i, j) = id 5 j + i + 1 at (i, j), cell (i, j) = id
 !> 4 j + i + 1; the line x = 2 from the surface y = 4 down to y = 2 (nodes 23, 18, 13).
@@ -18,6 +19,8 @@ module test_joint_faces
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_base_strings, only: itoa
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use pecplas_joints_katona_operator, only: add_contact_forces
+   use pecplas_joints_laws_type, only: MODE_OPEN, MODE_SLIP
    implicit none (type, external)
    private
    public :: collect_joint_faces
@@ -34,6 +37,7 @@ contains
                new_unittest('springs_per_face', test_springs), &
                new_unittest('plate_wall_equilibrium', test_wall), &
                new_unittest('thin_layer_and_goodman6', test_other_types), &
+               new_unittest('katona_both_faces', test_katona), &
                new_unittest('bad_decks', test_bad)]
    end subroutine collect_joint_faces
 
@@ -237,17 +241,135 @@ contains
          atol=sqrt(2.0_wp)*1.0e-9_wp*max(ref, 1.0_wp))
    end subroutine test_wall
 
+   !> The plate wall with Katona doublets on both faces (the left face's turned over: face 1
+   !> the soil copy, face 2 the plate node; every node face 1 of one doublet at most).
+   !> Bonded (C and TENSION 1e6: every doublet sticks): at every plate node the plate's nodal
+   !> forces balance the contact forces D^T f, to the convergence test: |f_plate + D^T f|
+   !> <= sqrt(2) TOL W per node, W = 320 the soil's weight (gamma x 16 cells), which bounds the
+   !> loads and reactions that are the reference of either step. Frictional (MU = 0.05, no
+   !> cohesion): some doublets slip, and every doublet in contact obeys the Coulomb limit as
+   !> the state iteration checks it, |T| <= MU N + 1e-9 max |f| (FORCE_TOL), with |T| at the
+   !> limit (within the same) where it slips.
+   subroutine test_katona(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      real(wp), allocatable :: fall(:, :), fnp(:, :), fc(:, :)
+      logical, allocatable :: keep(:)
+      real(wp) :: worst, ref, ftol, excess
+      integer :: code, k, v, nstick, nslip, nopen, nface1, c
+      integer, parameter :: ids(3) = [23, 18, 13]
+      real(wp), parameter :: W = 320.0_wp, TOL = 1.0e-9_wp
+      call make_directories(OUT)
+      do c = 1, 3
+      ! GOODMAN4 joints, the chain down then up (extension at its end, at its start); springs
+      call write_wall(OUT//'katona'//itoa(c)//'.inp', katona='MU = 0.5, C = 1e6, TENSION = 1e6', &
+         reversed=c >= 2, spring=c == 3)
+      code = run_deck(OUT//'katona'//itoa(c)//'.inp', OUT//'katona'//itoa(c)//'.h5', .true., &
+         model, problem)
+      call check(error, code == 0, 'bonded Katona wall '//itoa(c)//' runs (exit '// &
+         itoa(code)//')')
+      if (allocated(error)) return
+      associate (kt => problem%katona)
+         call kt%count_modes(nstick, nslip, nopen)
+         write (*, '(a,3(1x,i0))') '  bonded: doublets stick, slip, open:', nstick, nslip, nopen
+         ! one partner per face-1 node
+         nface1 = 0
+         do k = 1, kt%nd
+            if (count(kt%node(1, :) == kt%node(1, k) .and. kt%set_of == kt%set_of(k)) > 1) &
+               nface1 = nface1 + 1
+         end do
+         call check(error, nface1 == 0, 'each node is face 1 of one doublet of a set at most')
+         if (allocated(error)) return
+         call check(error, nslip == 0 .and. nstick > 0, 'bonded doublets stick')
+         if (allocated(error)) return
+         do k = 1, size(ids)
+            v = findloc(model%mesh%node_id, ids(k), 1)
+            call check(error, count(kt%node(1, :) == v) + count(kt%node(2, :) == v) >= 2, &
+               'plate node '//itoa(ids(k))//' is in a doublet of each face')
+            if (allocated(error)) return
+         end do
+         allocate (fall(size(problem%state%u, 1), size(problem%state%u, 2)))
+         allocate (fnp, fc, mold=fall)
+         call internal_forces(model, problem%system%rules, problem%state%u, problem%state, &
+            fall, error)
+         if (allocated(error)) return
+         keep = problem%state%plates%sets%active
+         problem%state%plates%sets%active = .false.
+         call internal_forces(model, problem%system%rules, problem%state%u, problem%state, &
+            fnp, error)
+         problem%state%plates%sets%active = keep
+         call problem%state%rollback()
+         if (allocated(error)) return
+         fc = 0.0_wp
+         call add_contact_forces(kt, kt%f, fc)
+         worst = 0.0_wp
+         ref = 0.0_wp
+         do k = 1, size(ids)
+            v = findloc(model%mesh%node_id, ids(k), 1)
+            worst = max(worst, norm2(fall(:, v) - fnp(:, v) + fc(:, v)))
+            ref = max(ref, norm2(fc(:, v)))
+         end do
+         write (*, '(a,es10.3,a,es10.3)') '  plate nodes: largest contact force ', ref, &
+            ', largest |f_plate + D^T f| ', worst
+         call check(error, ref > 0.0_wp, 'the contact loads the plate')
+         if (allocated(error)) return
+         call check_close(error, worst, 0.0_wp, 0.0_wp, 'plate + contact forces at the '// &
+            'plate nodes', atol=sqrt(2.0_wp)*TOL*W)
+         if (allocated(error)) return
+      end associate
+      deallocate (fall, fnp, fc)
+      end do
+      call write_wall(OUT//'katona_mu.inp', katona='MU = 0.05', reversed=.true.)
+      code = run_deck(OUT//'katona_mu.inp', OUT//'katona_mu.h5', .true., model, problem)
+      call check(error, code == 0, 'frictional Katona wall runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      associate (kt => problem%katona)
+         call kt%count_modes(nstick, nslip, nopen)
+         write (*, '(a,3(1x,i0))') '  MU = 0.05: doublets stick, slip, open:', nstick, nslip, &
+            nopen
+         call check(error, nslip > 0, 'some doublets slip')
+         if (allocated(error)) return
+         ftol = 1.0e-9_wp*maxval(abs(kt%f))
+         excess = 0.0_wp
+         do k = 1, kt%nd
+            if (kt%mode(k) == MODE_OPEN .or. kt%off(k)) cycle
+            excess = max(excess, abs(kt%f(2, k)) - kt%mu(k)*kt%f(1, k))
+            if (kt%mode(k) == MODE_SLIP) excess = max(excess, &
+               abs(abs(kt%f(2, k)) - kt%mu(k)*kt%f(1, k)))
+         end do
+         write (*, '(a,es10.3,a,es10.3)') '  largest |T| - MU N (stick), ||T| - MU N| (slip) ', &
+            excess, ', max |f| ', maxval(abs(kt%f))
+         call check(error, excess <= ftol, 'Coulomb limit held, reached where slipping')
+      end associate
+   end subroutine test_katona
+
    !> The wall deck: soil cells 13, 14 (left of the line, top row) in set 'dig', removed by
    !> the second phase; gravity in the first.
-   subroutine write_wall(path, thin)
+   subroutine write_wall(path, thin, katona, spring, reversed)
       character(len=*), intent(in) :: path
-      logical, intent(in), optional :: thin
+      !> thin: THIN_LAYER joints; spring: SPRING joints; reversed: the line's edges listed
+      !> from its toe up (its chain starts at the toe: the extension is at its start).
+      logical, intent(in), optional :: thin, spring, reversed
+      !> The data line of a TYPE=KATONA law that replaces the elastic one.
+      character(len=*), intent(in), optional :: katona
       integer :: u, i, j, n
-      character(len=:), allocatable :: joints
+      character(len=:), allocatable :: joints, law(:), wall(:)
+      law = [character(len=48) :: '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e3']
+      if (present(katona)) law = [character(len=48) :: '*INTERFACE_LAW, NAME=smooth, TYPE=KATONA', &
+         katona]
       joints = '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=BOTH, EXTEND=1'
       if (present(thin)) then
          if (thin) joints = '*JOINTS, TYPE=THIN_LAYER, SET=wj, LAW=smooth, EDGES=wall, '// &
             'FACES=BOTH, EXTEND=1, THICKNESS=0.01'
+      end if
+      if (present(spring)) then
+         if (spring) joints = '*JOINTS, TYPE=SPRING, SET=wj, LAW=smooth, EDGES=wall, '// &
+            'FACES=BOTH, EXTEND=1'
+      end if
+      wall = [character(len=6) :: '23, 18', '18, 13']
+      if (present(reversed)) then
+         if (reversed) wall = [character(len=6) :: '13, 18', '18, 23']
       end if
       open (newunit=u, file=path, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'plate wall with joints on both faces', '*NODES'
@@ -271,11 +393,11 @@ contains
       end do
       write (u, '(a)') '*MATERIAL, NAME=m', 'E = 1e4, NU = 0.3, GAMMA = 20', &
          '*SECTION, SET=soil, MATERIAL=m', '*SECTION, SET=dig, MATERIAL=m', &
-         '*EDGES, NAME=wall', '23, 18', '18, 13', '*NSET, NAME=base', '1, 2, 3, 4, 5', &
+         '*EDGES, NAME=wall', wall, '*NSET, NAME=base', '1, 2, 3, 4, 5', &
          '*NSET, NAME=sides', '1, 6, 11, 16, 21, 5, 10, 15, 20, 25', '*NSET, NAME=line', &
-         '23, 18, 13', '*BOUNDARY', 'base, XY', 'sides, X', &
-         '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e3', &
-         joints, '*PLATE, SET=plate, NODES=line, EA=1e7, EI=1e4', &
+         '23, 18, 13', '*BOUNDARY', 'base, XY', 'sides, X'
+      write (u, '(a)') (trim(law(i)), i=1, size(law))
+      write (u, '(a)') joints, '*PLATE, SET=plate, NODES=line, EA=1e7, EI=1e4', &
          '*LOAD, NAME=weight, TYPE=GRAVITY', 'ALL', '*SOLVER, TOLERANCE=1e-9', &
          '*STEP, NAME=gravity', 'weight, 1', '*END STEP', '*STEP, NAME=dig, INCREMENTS=2', &
          '*DEACTIVATE', 'dig', '*END STEP'
@@ -352,16 +474,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       type(error_t), allocatable :: e
-      character(len=*), parameter :: cases(5) = [character(len=120) :: &
+      character(len=*), parameter :: cases(4) = [character(len=120) :: &
          '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=ONE', &
          '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, FACES=BOTH, SIDE=soil', &
          '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=wall, SIDE=soil, EXTEND=1', &
-         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=top, FACES=BOTH', &
-         '*INTERFACE_LAW, NAME=k, TYPE=KATONA|MU = 0.3|'// &
-         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=k, EDGES=wall, FACES=BOTH']
-      character(len=*), parameter :: expect(5) = [character(len=40) :: 'expected FACES=BOTH', &
-         'no SIDE=', 'EXTEND= goes with FACES=BOTH', 'is a side of 1 element', &
-         'with Katona contact']
+         '*JOINTS, TYPE=GOODMAN4, SET=wj, LAW=smooth, EDGES=top, FACES=BOTH']
+      character(len=*), parameter :: expect(4) = [character(len=40) :: 'expected FACES=BOTH', &
+         'no SIDE=', 'EXTEND= goes with FACES=BOTH', 'is a side of 1 element']
       character(len=:), allocatable :: text
       integer :: k, i
       call make_directories(OUT)

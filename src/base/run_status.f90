@@ -2,10 +2,11 @@
 !> the command line compare these values; the words ('completed', 'limit load', ...) exist
 !> only here and are used where a status is written (results file, console, tables).
 !>
-!>   RUN_COMPLETED    every step reached its end;
+!>   RUN_COMPLETED    every step reached its end (a safety step's end: its factor found);
 !>   RUN_LIMIT_LOAD   the load-displacement path has a maximum (doc/theory.md section 4);
 !>   RUN_DIVERGED     no equilibrium was found at any cut, and no limit was established;
-!>   RUN_STOPPED      an arc-length step used its MAX_INCREMENTS before its target, or a
+!>   RUN_STOPPED      an arc-length step used its MAX_INCREMENTS before its target, a safety
+!>                    step its MAX_INCREMENTS before failure (its factor a lower bound), or a
 !>                    homogeneous path stopped before its last target;
 !>   RUN_FAILED       the run ended on an error (the results file keeps what converged);
 !>   RUN_INTERRUPTED  a termination signal or --stop-after-increments: goes on with --restart.

@@ -5,6 +5,7 @@
 module pecplas_model_loads
    use pecplas_base_kinds, only: wp
    use pecplas_model_phases, only: phase_change_t
+   use pecplas_model_safety, only: safety_plan_t
    implicit none (type, external)
    private
 
@@ -87,6 +88,8 @@ module pecplas_model_loads
       !> RESET_DISPLACEMENTS=YES: the displacements restart at zero at the step start
       !> (stresses and histories kept).
       logical :: reset_displacements = .false.
+      !> CONTROL=SAFETY: a strength-reduction step (pecplas_model_safety).
+      type(safety_plan_t) :: safety
       !> Deck position of the step (for messages).
       character(len=:), allocatable :: file
       integer :: line = 0

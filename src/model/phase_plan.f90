@@ -15,8 +15,9 @@ module pecplas_model_phase_plan
 contains
 
    !> A deck is phased when a step changes the model (a phase change or
-   !> RESET_DISPLACEMENTS) or drives no pattern (a nil step). A deck that is not phased runs
-   !> as before phases existed, to the last bit.
+   !> RESET_DISPLACEMENTS) or drives no pattern (a nil step; a safety step, which drives none
+   !> either, does not count: it starts from whatever state the steps before left). A deck
+   !> that is not phased runs as before phases existed, to the last bit.
    pure logical function is_phased(model)
       type(model_t), intent(in) :: model
       integer :: i
@@ -26,6 +27,7 @@ contains
       is_phased = model%water%used()
       do i = 1, size(model%steps)
          associate (st => model%steps(i))
+            if (st%safety%on) cycle
             if (st%reset_displacements) is_phased = .true.
             if (allocated(st%changes)) then
                if (size(st%changes) > 0) is_phased = .true.

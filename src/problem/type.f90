@@ -19,6 +19,7 @@ module pecplas_problem_type
    use pecplas_problem_stats, only: run_stats_t
    use pecplas_problem_position, only: run_position_t
    use pecplas_problem_phase, only: phase_state_t
+   use pecplas_problem_safety, only: safety_result_t
    use pecplas_model_phase_plan, only: is_phased, initial_activity, attached_nodes, &
       target_activity, plate_activity
    use pecplas_model_phases, only: TARGET_SUPPORTS, TARGET_PATTERNS
@@ -49,6 +50,8 @@ module pecplas_problem_type
       type(run_stats_t) :: stats
       !> Phases: the phase in force and its carried out-of-balance (pecplas_phases_start).
       type(phase_state_t) :: phase
+      !> What a safety step found (pecplas_solve_safety).
+      type(safety_result_t) :: safety
    end type problem_t
 
 contains

@@ -15,7 +15,8 @@
 !>               probe's start included), never a load the path fell to;
 !>   diverged    no equilibrium was found, with the reason of each method and the last
 !>               converged state (increment, load factors);
-!>   stopped     an arc-length step used its MAX_INCREMENTS before its target;
+!>   stopped     an arc-length step used its MAX_INCREMENTS before its target, a safety step
+!>               (pecplas_solve_safety) its MAX_INCREMENTS before failure (a lower bound);
 !>   interrupted a termination signal or --stop-after-increments: the run stopped after a
 !>               converged increment and goes on with --restart.
 module pecplas_solve_increments
@@ -40,6 +41,7 @@ module pecplas_solve_increments
    use pecplas_phases_start, only: start_phase, LINE_LEN
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_io_results_phases, only: write_phase
+   use pecplas_solve_safety, only: safety_step, safety_not_started
    implicit none (type, external)
    private
 
@@ -86,6 +88,17 @@ contains
          end if
       end if
       do istep = istep0, size(model%steps)
+         ! a safety step (strength reduction) is the last: from the state the steps before
+         ! left (pecplas_solve_safety)
+         if (model%steps(istep)%safety%on) then
+            if (problem%phase%phased) then
+               call record_phase(model, problem, results, istep, [character(len=LINE_LEN) :: &
+                  'safety: strengths divided by Msf until no equilibrium exists'], error)
+               if (allocated(error)) return
+            end if
+            call safety_step(model, problem, results, run, istep, status, message, error)
+            exit
+         end if
          ! a phased run: the step's changes at its start (a resumed step has them already)
          if (problem%phase%phased .and. .not. problem%position%resume) then
             call begin_phase(model, problem, results, run, istep, error)
@@ -107,6 +120,12 @@ contains
          if (allocated(error) .or. status /= RUN_COMPLETED) exit
       end do
       if (allocated(error)) return
+      ! a run that fails before its safety step: unstable before reduction, no factor
+      if ((status == RUN_LIMIT_LOAD .or. status == RUN_DIVERGED) .and. &
+          model%steps(size(model%steps))%safety%on) then
+         call safety_not_started(model, problem, results, size(model%steps), message, error)
+         if (allocated(error)) return
+      end if
       if (status == RUN_LIMIT_LOAD) call results%write_limit(run%limit, error)
       if (present(limit) .and. status == RUN_LIMIT_LOAD) limit = run%limit
    end subroutine run_increments

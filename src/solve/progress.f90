@@ -74,6 +74,13 @@ contains
       integer :: i, p, nsteps
       associate (step => model%steps(istep))
          s = 'step '//itoa(istep)//' '''//step%name//''''
+         if (step%safety%on) then
+            ! strength reduction: no load path, no estimate (the Msf lines say where it is)
+            s = s//' (safety), increment '//itoa(inc)//' of at most '// &
+               itoa(step%safety%max_increments)//'; '//duration(now - eta%t0)// &
+               ' elapsed; time left unknown (the factor is not known before failure)'
+            return
+         end if
          if (step%arc_length) then
             s = s//' (arc-length), increment '//itoa(inc)//' of at most '// &
                itoa(step%max_increments)

@@ -73,6 +73,8 @@ GENERATORS = [
     (["make_katona_decks", "--out", "{tmp}"], "test/data/katona"),
     (["make_patch_decks", "--out", "{tmp}"], "test/data/joints"),
     (["make_footing", "-o", "{tmp}/footing_t6.inp"], "test/data/plasticity"),
+    (["make_safety_decks", "--out", "{tmp}"], "test/data/safety"),
+    (["make_safety_decks", "--example", "{tmp}/slope_safety.inp"], "input/examples"),
 ]
 
 

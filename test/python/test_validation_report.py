@@ -40,6 +40,7 @@ def test_every_value_reported_and_finite(values):
                  "katona/penalty_resultant_errors", "katona/penalty_penetrations",
                  "collapse/Q8R_4x2", "collapse/T6_4x2", "collapse/Q4_4x2",
                  "collapse/q8_pressure_umax"}
+    expected |= {f"safety/{k}" for k, *_ in vr.SAFETY_ROWS}
     expected |= {f"estimator/{e}_{k}/{q}" for e in ("Q4", "T3", "Q8", "T6")
                  for k in ("plane", "axi") for q in ("eta", "exact")}
     missing = expected - set(values)

@@ -27,6 +27,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
+   use pecplas_io_deck_reader_safety, only: read_reduce, resolve_safety
    use pecplas_io_deck_reader_water, only: read_water, read_dry, read_change_water, &
       resolve_water, read_plate_water
    use pecplas_io_deck_reader_anchors, only: read_anchor, resolve_anchors
@@ -37,12 +38,12 @@ module pecplas_io_deck_reader
    public :: read_deck, read_deck_with, KNOWN_KEYWORDS
 
    !> Every keyword of the deck language.
-   character(len=*), parameter :: KNOWN_KEYWORDS(32) = [character(len=16) :: '*TITLE', &
+   character(len=*), parameter :: KNOWN_KEYWORDS(33) = [character(len=16) :: '*TITLE', &
       '*UNITS', '*ANALYSIS', '*INCLUDE', '*NODES', '*ELEMENTS', '*MESH', '*NSET', '*EDGES', &
       '*MATERIAL', '*SECTION', '*BOUNDARY', '*LOAD', '*STEP', '*END STEP', '*SOLVER', '*OUTPUT', &
       '*INITIAL_STRESS', '*INTERFACE_LAW', '*JOINTS', '*ADAPT', '*DEACTIVATE', '*ACTIVATE', &
       '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PLATE', '*ANCHOR', '*PRESTRESS', '*WATER', '*DRY', &
-      '*CHANGE_WATER', '*PLATE_WATER']
+      '*CHANGE_WATER', '*PLATE_WATER', '*REDUCE']
 
 contains
 
@@ -132,6 +133,8 @@ contains
       if (allocated(error)) return
       call resolve_water(state, model, error)
       if (allocated(error)) return
+      call resolve_safety(state, model, error)
+      if (allocated(error)) return
       call resolve_adapt_goal(state, model, error)
       if (allocated(error)) return
       call record_places(state, model)
@@ -180,6 +183,8 @@ contains
          call read_step(state, block, error)
       case ('*DEACTIVATE', '*ACTIVATE', '*CHANGE_MATERIAL', '*CHANGE_LAW', '*PRESTRESS')
          call read_change(state, block, error)
+      case ('*REDUCE')
+         call read_reduce(state, block, error)
       case ('*END STEP')
          state%open_step = 0
          call no_data(state, block, error)

@@ -262,7 +262,7 @@ contains
       integer :: i, n
       call block%kw%check_keys(state%lines%get(block%at), [character(len=19) :: 'NAME', &
          'INCREMENTS', 'CONTROL', 'MAX_INCREMENTS', 'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', &
-         'NODE', 'DOF', 'DISPLACEMENT', 'RESET_DISPLACEMENTS'], error)
+         'NODE', 'DOF', 'DISPLACEMENT', 'RESET_DISPLACEMENTS', 'MSF_STEP', 'RESOLUTION'], error)
       if (allocated(error)) return
       if (.not. allocated(state%steps)) allocate (state%steps(0))
       n = size(state%steps)
@@ -318,12 +318,27 @@ contains
       integer :: i
       character(len=14), parameter :: ARC_KEYS(7) = [character(len=14) :: 'MAX_INCREMENTS', &
          'ITERATIONS', 'MIN_LENGTH', 'MAX_LENGTH', 'NODE', 'DOF', 'DISPLACEMENT']
+      character(len=10), parameter :: SAFETY_KEYS(2) = [character(len=10) :: 'MSF_STEP', &
+         'RESOLUTION']
       step%node = ''
       control = 'LOAD'
-      call param_choice(state, block, 'CONTROL', [character(len=10) :: 'LOAD', 'ARC_LENGTH'], &
-         control, error)
+      call param_choice(state, block, 'CONTROL', [character(len=10) :: 'LOAD', 'ARC_LENGTH', &
+         'SAFETY'], control, error)
       if (allocated(error)) return
       step%arc_length = control == 'ARC_LENGTH'
+      step%safety = control == 'SAFETY'
+      do i = 1, 2
+         call block%kw%get(trim(SAFETY_KEYS(i)), control, found)
+         if (found .and. .not. step%safety) then
+            call line_error(state, block%at, trim(SAFETY_KEYS(i))//'= is an option of '// &
+               'CONTROL=SAFETY', error)
+            return
+         end if
+      end do
+      if (step%safety) then
+         call read_safety_control(state, block, step, error)
+         return
+      end if
       if (.not. step%arc_length) then
          do i = 1, size(ARC_KEYS)
             call block%kw%get(trim(ARC_KEYS(i)), control, found)
@@ -371,6 +386,58 @@ contains
          return
       end if
    end subroutine read_step_control
+
+   !> The options of CONTROL=SAFETY: MSF_STEP= (first and largest Msf increment, > 0),
+   !> RESOLUTION= (smallest, 0 < RESOLUTION <= MSF_STEP), MAX_INCREMENTS= (default 100),
+   !> NODE=, DOF= (the displacement of the Msf curve); no arc-length option, no pattern line.
+   subroutine read_safety_control(state, block, step, error)
+      type(deck_state_t), intent(in) :: state
+      type(deck_block_t), intent(in) :: block
+      type(raw_step_t), intent(inout) :: step
+      type(error_t), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      logical :: found, has_node
+      integer :: i
+      character(len=14), parameter :: NOT_HERE(5) = [character(len=14) :: 'ITERATIONS', &
+         'MIN_LENGTH', 'MAX_LENGTH', 'DISPLACEMENT', 'INCREMENTS']
+      do i = 1, size(NOT_HERE)
+         call block%kw%get(trim(NOT_HERE(i)), text, found)
+         if (found) then
+            call line_error(state, block%at, trim(NOT_HERE(i))//'= is no option of '// &
+               'CONTROL=SAFETY (MSF_STEP=, RESOLUTION=, MAX_INCREMENTS=, NODE=, DOF=)', error)
+            return
+         end if
+      end do
+      step%max_increments = 100
+      call param_int(state, block, 'MAX_INCREMENTS', 1, step%max_increments, error, &
+         MAX_INCREMENTS, 'a cap against runs of hours')
+      if (allocated(error)) return
+      call param_real(state, block, 'MSF_STEP', step%msf_step, found, error)
+      if (allocated(error)) return
+      call param_real(state, block, 'RESOLUTION', step%resolution, found, error)
+      if (allocated(error)) return
+      if (.not. (step%msf_step > 0.0_wp .and. step%msf_step <= 10.0_wp .and. &
+          step%resolution > 0.0_wp .and. step%resolution <= step%msf_step)) then
+         call line_error(state, block%at, 'expected 0 < RESOLUTION <= MSF_STEP <= 10', error)
+         return
+      end if
+      call block%kw%get('NODE', step%node, has_node)
+      if (.not. has_node) step%node = ''
+      call block%kw%get('DOF', text, found)
+      if (found) then
+         step%dof = dof_word(text)
+         if (step%dof == 0) then
+            call line_error(state, block%at, "expected DOF=1 or X (x or r), DOF=2 or Y (y "// &
+               "or z), or R, Z, found '"//text//"'", error)
+            return
+         end if
+      end if
+      if (has_node .neqv. step%dof > 0) then
+         call line_error(state, block%at, 'the displacement of the safety curve needs '// &
+            'NODE=id|node_set and DOF=1|2|X|Y|R|Z together', error)
+         return
+      end if
+   end subroutine read_safety_control
 
    !> 1 for 1, X, R; 2 for 2, Y, Z (any letter case); 0 otherwise.
    pure integer function dof_word(text) result(dof)

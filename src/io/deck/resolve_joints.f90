@@ -138,13 +138,6 @@ contains
          end if
       end if
       if (raw%both_faces) then
-         if (set%is_katona()) then
-            call line_error(state, raw%at, "FACES=BOTH with Katona contact (law '"//raw%law// &
-               "') is not available: the plate's nodes would face two partners (one per "// &
-               'face); use a penalty law (e.g. MOHR_COULOMB with a stiff KN) or one-sided '// &
-               'joints (SIDE=)', error)
-            return
-         end if
          call generated_both(state, model, raw, origin, next_id, set, group, error)
          return
       else if (len(raw%edges) > 0) then
@@ -292,6 +285,7 @@ contains
       type(error_t), allocatable :: e
       integer, allocatable :: dupof(:), doublets(:, :), edges(:, :), sel(:)
       real(wp), allocatable :: trib(:), tang(:, :)
+      logical, allocatable :: turn(:)
       character(len=:), allocatable :: msg
       integer :: ke, nen, i, k, face, bad
       ke = model%mesh%find_edge_set(raw%edges)
@@ -333,6 +327,13 @@ contains
       if (.not. set%is_spring()) then
          set%conn = res%conn
          group = res%body_set
+         if (set%is_katona()) then
+            turn = katona_turned(res)
+            do i = 1, size(turn)
+               if (turn(i) .and. nen == 3) set%conn(:, i) = set%conn([3, 4, 1, 2, 6, 5], i)
+               if (turn(i) .and. nen == 2) set%conn(:, i) = set%conn([3, 4, 1, 2], i)
+            end do
+         end if
       else
          ! one doublet per node of each face: (face-1 node, face-2 node)
          allocate (doublets(2, 0), trib(0), tang(2, 0))
@@ -367,10 +368,60 @@ contains
          set%tangent = tang
          if (raw%has_angle) set%tangent = spread([cos(raw%angle*PI/180.0_wp), &
             sin(raw%angle*PI/180.0_wp)], 2, size(set%conn, 2))
+         if (set%is_katona()) then
+            ! the doublets of the turned joints swapped, their tangents reversed: the same
+            ! relative displacement, each node face 1 of one doublet at most (katona_turned)
+            turn = katona_turned(res)
+            do i = 1, size(set%conn, 2)
+               if (.not. any(turn .and. (holds(1, 4) .or. holds(2, 3) .or. &
+                   (nen == 3 .and. holds(min(5, 2*nen), 2*nen))))) cycle
+               set%conn(:, i) = set%conn([2, 1], i)
+               set%tangent(:, i) = -set%tangent(:, i)
+            end do
+         end if
       end if
       set%ids = [(next_id + i, i=1, size(set%conn, 2))]
       next_id = next_id + size(set%conn, 2)
+   contains
+      !> The joints whose nodes a, b (positions in res%conn) are spring doublet i.
+      pure function holds(a, b) result(yes)
+         integer, intent(in) :: a, b
+         logical, allocatable :: yes(:)
+         yes = res%conn(a, :) == set%conn(1, i) .and. res%conn(b, :) == set%conn(2, i)
+      end function holds
    end subroutine generated_both
+
+   !> Katona doublets on both faces: a doublet needs one partner per face-1 node, and the
+   !> line's (the plate's) nodes are face 1 of the joints of both faces. The joints of the
+   !> left face are turned over (face 1 the left body's copies, face 2 the line's nodes, (B.8)
+   !> order: nodes 3, 4, 1, 2 [, 6, 5]; tangent and normal reverse, so that the relative
+   !> displacement and the stresses are the same), and so are those of an extension beyond
+   !> the start of a chain (oriented away from the line, its right body is the line's left
+   !> one): every left copy is face 1 of one doublet (partner the line node), every line node
+   !> face 1 of its right-face doublet (partner the right copy), and every right copy face 1
+   !> only of an extension doublet (partner the left copy). A node the split left whole (a
+   !> line's end inside a body) is its own partner (a doublet that carries no force).
+   pure function katona_turned(res) result(turn)
+      type(faces_result_t), intent(in) :: res
+      logical, allocatable :: turn(:)
+      logical :: flip
+      integer :: j, m
+      turn = res%face == FACE_LEFT
+      flip = .false.
+      m = 0
+      do j = 1, size(res%face)
+         if (res%face(j) /= FACE_EXTENSION) cycle
+         m = m + 1
+         ! a new extension starts at a line end: the start of a chain's first edge, or its end
+         if (m == 1) then
+            flip = any(res%conn(1, :) == res%extension(1, m) .and. res%face == FACE_LEFT)
+         else if (res%extension(1, m) /= res%extension(2, m - 1)) then
+            flip = any(res%conn(1, :) == res%extension(1, m) .and. res%face == FACE_LEFT)
+         end if
+         turn(j) = flip
+      end do
+   end function katona_turned
+
 
    !> Appends the doublet (a, b) of body set g unless the doublets from column k0 + 1 on
    !> hold it.

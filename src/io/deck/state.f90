@@ -104,6 +104,11 @@ module pecplas_io_deck_state
       !> RESET_DISPLACEMENTS=YES, and the phase changes of the step in deck order.
       logical :: reset_displacements = .false.
       type(raw_change_t), allocatable :: changes(:)
+      !> CONTROL=SAFETY and its options, the *REDUCE names (target) with their lines (at).
+      logical :: safety = .false.
+      real(wp) :: msf_step = 0.1_wp, resolution = 0.002_wp
+      type(raw_item_t), allocatable :: reduce(:)
+      integer :: nreduce = 0, reduce_at = 0
    end type raw_step_t
 
    !> Everything collected while reading, before references are resolved.

@@ -62,6 +62,7 @@ module pecplas_io_results_file
       describe_history
    use pecplas_io_results_checksum, only: deck_checksum
    use pecplas_io_results_phase_log, only: phase_record_t, write_phase_group
+   use pecplas_io_results_safety, only: safety_record_t, write_safety_group
    use pecplas_io_results_anchors, only: write_anchor_mesh, write_anchor_fields
    use pecplas_io_results_anchor_geometry, only: write_anchor_geometry, xdmf_anchors
    implicit none (type, external)
@@ -123,6 +124,7 @@ module pecplas_io_results_file
       procedure :: write_increment => results_write_increment
       procedure :: finish => results_finish
       procedure :: write_limit => results_write_limit
+      procedure :: write_safety => results_write_safety
       procedure :: add_phase => results_add_phase
       procedure :: warnings => results_warnings
       procedure :: is_open => results_is_open
@@ -828,6 +830,22 @@ contains
          this%units%patterns)
       call h5_close_group(g)
    end subroutine results_write_limit
+
+   !> /safety: what a safety step found (pecplas_io_results_safety; written before `finish`);
+   !> its mechanism is shown on the last increment of the XDMF sidecar.
+   subroutine results_write_safety(this, rec, error)
+      class(results_file_t), intent(inout) :: this
+      type(safety_record_t), intent(in) :: rec
+      type(error_t), allocatable, intent(out) :: error
+      if (this%detached) return
+      if (.not. this%is_open()) then
+         call fatal_error(error, 'results file is not open')
+         return
+      end if
+      call write_safety_group(this%copies%id('next'), rec, error)
+      if (allocated(error)) return
+      this%layout%mechanism = allocated(rec%mechanism)
+   end subroutine results_write_safety
 
    !> Records the start of a phase (a step of a staged run; pecplas_io_results_phases):
    !> from now on, the element and joint sets not active in `rec` have no fields in the

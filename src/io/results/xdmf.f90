@@ -73,6 +73,8 @@ module pecplas_io_results_xdmf
       logical :: reactions = .true., stresses = .true.
       !> Cell attribute error_indicator (*OUTPUT, ERROR_ESTIMATE=YES).
       logical :: error_estimate = .false.
+      !> The last increment shows /safety/mechanism3 (a safety step's mechanism).
+      logical :: mechanism = .false.
    end type xdmf_layout_t
 
    !> A growing text (amortised doubling).
@@ -175,7 +177,8 @@ contains
             if (present(asets)) then
                if (size(asets, 1) == na .and. size(asets, 2) >= k) aon = asets(:, k)
             end if
-            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon, pon, aon)
+            call put_increment(b, layout, h5_name, increments(k), times(k), eon, jon, pon, aon, &
+               layout%mechanism .and. k == size(increments))
          end do
       end if
       call put(b, '  </Grid>')
@@ -235,8 +238,10 @@ contains
 
    !> One spatial collection; inc = 0 writes the mesh without attributes. Only the sets
    !> with eon / jon true get a grid.
-   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon, pon, aon)
+   subroutine put_increment(b, layout, h5_name, inc, time, eon, jon, pon, aon, mechanism)
       type(text_buffer_t), intent(inout) :: b
+      !> Add the attribute `mechanism` (/safety/mechanism3).
+      logical, intent(in), optional :: mechanism
       type(xdmf_layout_t), intent(in) :: layout
       character(len=*), intent(in) :: h5_name
       integer, intent(in) :: inc
@@ -265,6 +270,10 @@ contains
             if (inc > 0) then
                call attribute(b, 'displacement', 'Vector', 'Node', &
                   h5//group//'/displacement3', layout%nnode, 3)
+               if (present(mechanism)) then
+                  if (mechanism) call attribute(b, 'mechanism', 'Vector', 'Node', &
+                     h5//'/safety/mechanism3', layout%nnode, 3)
+               end if
                if (layout%reactions) call attribute(b, 'reaction', 'Vector', 'Node', &
                   h5//group//'/reaction3', layout%nnode, 3)
                if (layout%stresses) call attribute(b, 'stress_mean', 'Matrix', 'Cell', &

@@ -12,6 +12,7 @@
 module pecplas_joints_katona_doublets
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, input_error
+   use pecplas_base_strings, only: itoa
    use pecplas_model_type, only: model_t
    use pecplas_model_provenance, only: place_t
    use pecplas_joints_state, only: joint_state_t
@@ -131,8 +132,11 @@ contains
                   s0 = reshape([s0, 0.0_wp, 0.0_wp], [2, k])
                   tplain = reshape([tplain, 0.0_wp, 0.0_wp], [2, k - k0])
                else if (kt%node(2, k) /= set%conn(pairs(2, j), e)) then
-                  call input_error(error, 'joint set '//set%name//': a face-1 node faces two '// &
-                     'different face-2 nodes; Katona doublets need one partner per node')
+                  call input_error(error, 'joint set '//set%name//': face-1 node '// &
+                     itoa(model%mesh%node_id(set%conn(pairs(1, j), e)))//' faces two different '// &
+                     'face-2 nodes ('//itoa(model%mesh%node_id(kt%node(2, k)))//', '// &
+                     itoa(model%mesh%node_id(set%conn(pairs(2, j), e)))//'); Katona doublets '// &
+                     'need one partner per node')
                   return
                end if
                do ip = 1, size(pts)

@@ -68,6 +68,9 @@ module pecplas_joints_laws_coulomb
       procedure :: state_names => coulomb_history_names
       !> Current tensile strength T_eff of a point with history `state`.
       procedure :: tensile_limit => coulomb_tensile_limit
+      !> c and mu_f = tan(phi) divided by msf, mu_g = min(mu_g, mu_f / msf) (psi follows phi
+      !> when phi_r falls below it); K_n, K_t and the tensile strength kept.
+      procedure :: reduced_strength => coulomb_reduced_strength
    end type coulomb_law_t
 
 contains
@@ -204,5 +207,18 @@ contains
       state(ST_EPS_NP) = state(ST_EPS_NP) - this%mu_g*dl
       state(ST_EPS_TP) = state(ST_EPS_TP) + s*dl
    end subroutine contact_step
+
+   subroutine coulomb_reduced_strength(this, msf, reduced)
+      class(coulomb_law_t), intent(in) :: this
+      real(wp), intent(in) :: msf
+      class(interface_law_t), allocatable, intent(out) :: reduced
+      allocate (reduced, source=this)
+      select type (r => reduced)
+      class is (coulomb_law_t)
+         r%c = this%c/msf
+         r%mu_f = this%mu_f/msf
+         r%mu_g = min(this%mu_g, r%mu_f)
+      end select
+   end subroutine coulomb_reduced_strength
 
 end module pecplas_joints_laws_coulomb

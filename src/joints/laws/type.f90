@@ -45,6 +45,10 @@ module pecplas_joints_laws_type
       procedure :: state_names => law_state_names
       !> One line describing the law as built (e.g. unit conversions); '' by default.
       procedure :: describe => law_describe
+      !> The law with its strength divided by `msf` (strength reduction, doc/theory.md,
+      !> Factor of safety); unallocated for a law whose strength is not a c, tan(phi) pair
+      !> (the default).
+      procedure :: reduced_strength => law_reduced_strength
    end type interface_law_t
 
    type :: interface_law_box_t
@@ -114,5 +118,11 @@ contains
       character(len=:), allocatable :: text
       text = ''
    end function law_describe
+
+   subroutine law_reduced_strength(this, msf, reduced)
+      class(interface_law_t), intent(in) :: this
+      real(wp), intent(in) :: msf
+      class(interface_law_t), allocatable, intent(out) :: reduced
+   end subroutine law_reduced_strength
 
 end module pecplas_joints_laws_type

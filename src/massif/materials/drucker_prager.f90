@@ -11,7 +11,7 @@ module pecplas_massif_materials_drucker_prager
    use pecplas_massif_materials_type, only: material_t, NCOMP
    use pecplas_massif_materials_soil, only: soil_params_t, read_soil_params, soil_hooke, &
       soil_plastic_state, NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC, RETURN_SMOOTH, &
-      RETURN_APEX
+      RETURN_APEX, reduce_soil
    implicit none (type, external)
    private
 
@@ -32,6 +32,9 @@ module pecplas_massif_materials_drucker_prager
       procedure :: symmetric_tangent => drucker_prager_symmetric_tangent
       !> Yield function at a stress vector (<= 0 admissible; stress units).
       procedure :: yield => drucker_prager_yield
+      !> The Mohr-Coulomb c, tan(phi) divided by msf (psi_r = min(psi, phi_r)), the cone
+      !> fitted again to them with the same MATCH.
+      procedure :: reduced_strength => drucker_prager_reduced_strength
    end type drucker_prager_t
 
 contains
@@ -178,6 +181,18 @@ contains
       real(wp) :: a(size(x), size(y))
       a = spread(x, 2, size(y))*spread(y, 1, size(x))
    end function outer
+
+   subroutine drucker_prager_reduced_strength(this, msf, reduced)
+      class(drucker_prager_t), intent(in) :: this
+      real(wp), intent(in) :: msf
+      class(material_t), allocatable, intent(out) :: reduced
+      allocate (reduced, source=this)
+      select type (r => reduced)
+      class is (drucker_prager_t)
+         r%soil = reduce_soil(this%soil, msf)
+         call drucker_prager_constants(r%match, r%soil%phi, r%soil%psi, r%eta, r%xi, r%etabar)
+      end select
+   end subroutine drucker_prager_reduced_strength
 
    !> A copy with the cohesion c (the soil's other parameters kept).
    subroutine drucker_prager_with_cohesion(this, cohesion, copy, error)

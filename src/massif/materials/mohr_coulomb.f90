@@ -9,7 +9,7 @@ module pecplas_massif_materials_mohr_coulomb
    use pecplas_base_params, only: params_t
    use pecplas_massif_materials_type, only: material_t, NCOMP
    use pecplas_massif_materials_soil, only: soil_params_t, read_soil_params, soil_hooke, &
-      soil_plastic_state, NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC
+      soil_plastic_state, NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC, reduce_soil
    use pecplas_massif_materials_principal, only: principal_axes_t, principal_decompose, &
       principal_compose, principal_tangent
    use pecplas_massif_materials_mohr_coulomb_return, only: mohr_coulomb_return, &
@@ -33,6 +33,8 @@ module pecplas_massif_materials_mohr_coulomb
       procedure :: symmetric_tangent => mohr_coulomb_symmetric_tangent
       !> Yield function at a stress vector (<= 0 admissible; stress units).
       procedure :: yield => mohr_coulomb_yield_at
+      !> c and tan(phi) divided by msf, psi_r = min(psi, phi_r); the tension cut-off kept.
+      procedure :: reduced_strength => mohr_coulomb_reduced_strength
    end type mohr_coulomb_t
 
 contains
@@ -118,6 +120,17 @@ contains
       tangent = matmul(principal_tangent(axes, s_trial, s, ds), de)
       call soil_plastic_state(this%soil, trial, stress, kind, state)
    end subroutine mohr_coulomb_update
+
+   subroutine mohr_coulomb_reduced_strength(this, msf, reduced)
+      class(mohr_coulomb_t), intent(in) :: this
+      real(wp), intent(in) :: msf
+      class(material_t), allocatable, intent(out) :: reduced
+      allocate (reduced, source=this)
+      select type (r => reduced)
+      class is (mohr_coulomb_t)
+         r%soil = reduce_soil(this%soil, msf)
+      end select
+   end subroutine mohr_coulomb_reduced_strength
 
    !> A copy with the cohesion c (the soil's other parameters kept).
    subroutine mohr_coulomb_with_cohesion(this, cohesion, copy, error)

@@ -13,7 +13,7 @@ module pecplas_massif_materials_soil
    implicit none (type, external)
    private
 
-   public :: soil_params_t, read_soil_params, soil_hooke, soil_plastic_state
+   public :: soil_params_t, read_soil_params, soil_hooke, soil_plastic_state, reduce_soil
    public :: NSTATE_SOIL, SOIL_STATE_NAMES, RETURN_ELASTIC, RETURN_SMOOTH, RETURN_EDGE, RETURN_APEX
 
    !> Number of history values of a soil point.
@@ -97,6 +97,19 @@ contains
          call deck_error(error, params%file, params%line, params%keyword, message)
       end subroutine bad
    end subroutine read_soil_params
+
+   !> Strength reduction by msf (doc/theory.md, Factor of safety): c / msf, tan(phi) / msf, and the
+   !> dilatancy angle kept unless the reduced friction angle falls below it, where it follows
+   !> it (psi_r = min(psi, phi_r), as PLAXIS does).
+   pure function reduce_soil(soil, msf) result(r)
+      type(soil_params_t), intent(in) :: soil
+      real(wp), intent(in) :: msf
+      type(soil_params_t) :: r
+      r = soil
+      r%cohesion = soil%cohesion/msf
+      r%phi = atan(tan(soil%phi)/msf)
+      r%psi = min(soil%psi, r%phi)
+   end function reduce_soil
 
    !> Hooke matrix for (xx, yy, zz, xy) with engineering shear strain.
    pure function soil_hooke(soil) result(d)

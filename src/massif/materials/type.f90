@@ -33,6 +33,10 @@ module pecplas_massif_materials_type
       procedure :: constant_tangent => material_constant_tangent
       !> Names of the history variables (results file `state_names`); none by default.
       procedure :: state_names => material_state_names
+      !> The material with its strength divided by `msf` (strength reduction, doc/theory.md,
+      !> Factor of safety); unallocated for a material without a c, tan(phi) strength (the
+      !> default).
+      procedure :: reduced_strength => material_reduced_strength
       !> A copy of the material with another cohesion (an undrained shear strength varying
       !> with depth, doc/deck.md Groundwater); an error for a material without one.
       procedure :: with_cohesion => material_with_cohesion
@@ -83,6 +87,12 @@ contains
       character(len=16), allocatable, intent(out) :: names(:)
       allocate (names(0))
    end subroutine material_state_names
+
+   subroutine material_reduced_strength(this, msf, reduced)
+      class(material_t), intent(in) :: this
+      real(wp), intent(in) :: msf
+      class(material_t), allocatable, intent(out) :: reduced
+   end subroutine material_reduced_strength
 
    subroutine material_with_cohesion(this, cohesion, copy, error)
       class(material_t), intent(in) :: this

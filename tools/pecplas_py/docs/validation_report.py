@@ -39,6 +39,7 @@ TESTS = [("lame", None)] + [("driver_estimator", f"lame_{e}_{k}") for e in ("q4"
     ("pecjoin_katona", "hertz_line_contact"),
     ("pecjoin_katona", "s1_open_close"),
     ("massif_plasticity_fe", "strip_footing_prandtl"),
+    ("safety", None),
     # not quoted here: the cheap part of docs/theory_report.py's stored runs, rerun
     ("massif_collapse", None)]
 VALUES = "values.txt"
@@ -151,6 +152,32 @@ def footing_block(v):
             "meshes: [theory 8.3](theory.md#83-verification)).")
 
 
+#: (key, case, reference, tolerance of the test) of the safety-factor table
+SAFETY_ROWS = [
+    ("block", "block on a Mohr–Coulomb joint, c = 5, tan φ = 0.3", "R / T = 7/3", "1 %"),
+    ("infinite_slope_dry", "infinite slope β = 20°, φ = ψ = 35°, c = 0", "tan φ / tan β", "2 %"),
+    ("infinite_slope_psi0", "the same, ψ = 0", "tan φ / tan(asin(tan β)) (Davis)", "2 %"),
+    ("infinite_slope_c", "infinite slope β = 25°, φ = ψ = 30°, c = 10, 5 thick (z = 5 / cos β)",
+     "(c + γz cos²β tan φ) / (γz sin β cos β)", "3 %"),
+    ("infinite_slope_water", "the same under a water table parallel to it at half its thickness "
+     "(m = 0.5), seepage parallel", "(c' + (γ − m γ_w) z cos²β tan φ') / (γz sin β cos β)",
+     "3 %"),
+    ("footing", "Prandtl footing, Tresca c = 10, q = 25 (196 T6)", "(2 + π) c / q", "2 %"),
+    ("footing_dp", "the same, Drucker–Prager `MATCH = 3`", "(2 + π) c / q", "2 %"),
+    ("taylor", "undrained slope β = 60°, H = 10, c = 50, γ = 20, D = 1 (128 Q8R)",
+     "Taylor: c / (0.191 γ H)", "5 %"),
+]
+
+
+def safety_block(v):
+    rows = ["| case | reference | reference value | finite elements (Msf) | difference | test |",
+            "|---|---|---|---|---|---|"]
+    for key, case, ref, tol in SAFETY_ROWS:
+        f, r = v[f"safety/{key}"]
+        rows.append(f"| {case} | {ref} | {r:.3f} | {f:.3f} | {100 * (f / r - 1):+.2f} % | {tol} |")
+    return "\n".join(rows)
+
+
 def katona_block(v):
     a_fe, a, p_fe, p0, p_err, res, pen = v["hertz/h01"]
     f_k = v["cgs4/katona_f_over_g"][0]
@@ -218,7 +245,8 @@ def estimator_block(v):
 def blocks(v):
     """{doc key: {block name: text}} from the values of the tests."""
     return {"validation": {**lame_blocks(v), "cgs4": friction_block(v),
-                           "footing": footing_block(v), "katona-table": katona_block(v)},
+                           "footing": footing_block(v), "katona-table": katona_block(v),
+                           "safety-table": safety_block(v)},
             "theory": {"estimator-lame": estimator_block(v)}}
 
 
