@@ -9,7 +9,7 @@ module test_io_deck
    use pecplas_base_error, only: error_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_type, only: model_t
-   use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, METHOD_MODIFIED, METHOD_NEWTON
+   use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, METHOD_NEWTON
    use pecplas_massif_materials_elastic, only: elastic_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
@@ -182,7 +182,7 @@ contains
       if (allocated(error)) return
       ! options not given in the deck keep the defaults of options.f90
       call check(error, model%solver%linear == 'AUTO' .and. &
-         model%solver%method == METHOD_MODIFIED .and. near(model%solver%tolerance, 1.0e-4_wp) &
+         model%solver%method == METHOD_NEWTON .and. near(model%solver%tolerance, 1.0e-4_wp) &
          .and. model%solver%max_iterations == 50 .and. model%solver%max_cuts == 5, &
          'solver defaults')
       if (allocated(error)) return

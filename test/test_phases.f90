@@ -402,7 +402,7 @@ contains
    !> columns dug in two phases of 4 increments (pit1 the top row, pit2 the one below).
    subroutine write_pit(deck, slope, steps, method)
       character(len=*), intent(in) :: deck
-      !> *SOLVER METHOD= (default: the deck's default, modified Newton).
+      !> *SOLVER METHOD= (default: the deck's default, full Newton).
       character(len=*), intent(in), optional :: method
       !> Rise of the top surface from x = 0 to x = 20 (the nodes above the base follow in
       !> proportion) and the steps, replacing the two excavation phases.

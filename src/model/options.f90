@@ -17,8 +17,8 @@ module pecplas_model_options
    !> MUMPS: the distributed solver of the MPI build (`mpirun -np N pecplas DECK`).
    character(len=*), parameter :: LINEAR_SOLVERS(4) = [character(len=8) :: 'AUTO', 'CHOLMOD', &
       'UMFPACK', 'MUMPS']
-   !> MODIFIED_NEWTON: the run's stiffness factorised once (the thesis); QUASI_NEWTON: the
-   !> same with BFGS updates; NEWTON: the consistent tangent every iteration.
+   !> MODIFIED_NEWTON: the run's stiffness factorised once (the thesis's method); QUASI_NEWTON:
+   !> the same with BFGS updates; NEWTON (the default): the consistent tangent every iteration.
    !> NONLINEAR_METHODS(m) is the deck and results name of method m.
    character(len=*), parameter :: NONLINEAR_METHODS(3) = [character(len=16) :: &
       'MODIFIED_NEWTON', 'QUASI_NEWTON', 'NEWTON']
@@ -36,15 +36,17 @@ module pecplas_model_options
 
    type :: solver_options_t
       character(len=:), allocatable :: linear
-      !> METHOD_MODIFIED, METHOD_QUASI or METHOD_NEWTON (*SOLVER METHOD=).
-      integer :: method = METHOD_MODIFIED
+      !> METHOD_MODIFIED, METHOD_QUASI or METHOD_NEWTON (*SOLVER METHOD=). Default full
+      !> Newton: every soil model and joint law returns the consistent tangent of its update
+      !> (doc/theory.md §4); the thesis's modified Newton is chosen by name.
+      integer :: method = METHOD_NEWTON
       !> Residual-force criterion ||FR|| <= tol ||F|| (thesis default 1e-4).
       real(wp) :: tolerance = 1.0e-4_wp
       integer :: max_iterations = 50
       !> Number of times an increment may be halved before the run stops.
       integer :: max_cuts = 5
-      !> An increment the method cannot converge is tried by the next methods of the chain
-      !> MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (line search) before it is cut.
+      !> An increment the method cannot converge is tried by the next methods of its chain
+      !> (NEWTON -> QUASI_NEWTON; MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON) before it is cut.
       logical :: fallback = .true.
       !> Line search for full Newton and quasi-Newton iterations.
       logical :: line_search = .true.

@@ -3,9 +3,10 @@
 !> row, progress line).
 !>
 !> The chain (when *SOLVER, FALLBACK=YES, the default): an increment the run's method cannot
-!> converge is tried again from the last converged state by the next methods of
-!>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)
-!> and only then cut (a NEWTON run: NEWTON -> QUASI_NEWTON on its last factorised tangent).
+!> converge is tried again from the last converged state by the next methods of its chain,
+!>     NEWTON -> QUASI_NEWTON (on the last factorised tangent)       the default method
+!>     MODIFIED_NEWTON -> QUASI_NEWTON -> NEWTON (with line search)  the thesis's method
+!> and only then cut.
 !> Modified and quasi-Newton, when a later method follows them, give up as soon as their
 !> residual's rate shows they would crawl (pecplas_solve_iterate); the last method runs to
 !> the iteration cap. When every method failed, those that gave up early are tried once more,

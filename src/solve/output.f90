@@ -6,7 +6,7 @@ module pecplas_solve_output
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
    use pecplas_io_results_file, only: results_file_t
-   use pecplas_io_results_increment, only: increment_result_t
+   use pecplas_io_results_increment, only: increment_result_t, plate_fields_t
    use pecplas_joints_laws_coulomb, only: plastic_slip
    use pecplas_solve_restart, only: pack_restart
    use pecplas_model_options, only: EXACT_ALWAYS, EXACT_ON_STOP
@@ -90,17 +90,34 @@ contains
       real(wp), intent(in) :: reaction(:, :)
       type(increment_result_t), intent(inout) :: r
       type(error_t), allocatable, intent(out) :: error
-      integer :: s, k
+      type(plate_fields_t) :: before
+      integer :: s, k, step
+      real(wp) :: tau
       if (.not. allocated(model%plates)) return
       if (size(model%plates) == 0) return
       allocate (r%plate_fields(size(model%plates)))
+      step = max(problem%phase%index, 1)
+      tau = problem%position%tau
       do s = 1, size(model%plates)
          if (model%water%used()) then
             ! the water's pressure on the plate is one of its own loads (groundwater)
             call plate_results(model, problem%state%u, problem%state%plates, &
                problem%state%factors, s, r%plate_fields(s), error, &
-               model%water%level_at(max(problem%phase%index, 1)), &
-               step=max(problem%phase%index, 1))
+               model%water%level_at(step), step=step)
+            if (allocated(error)) return
+            ! a change of that water at the step's start is applied along the step (the
+            ! phase's carried out-of-balance): the load the plate holds is the last step's
+            ! water plus the fraction tau of the change, and its forces are linear in it
+            if (tau < 1.0_wp .and. water_changed(model, s, step)) then
+               call plate_results(model, problem%state%u, problem%state%plates, &
+                  problem%state%factors, s, before, error, &
+                  model%water%level_at(step - 1), step=step - 1)
+               if (allocated(error)) return
+               associate (f => r%plate_fields(s))
+                  f%end_forces = tau*f%end_forces + (1.0_wp - tau)*before%end_forces
+                  f%node_forces = tau*f%node_forces + (1.0_wp - tau)*before%node_forces
+               end associate
+            end if
          else
             call plate_results(model, problem%state%u, problem%state%plates, &
                problem%state%factors, s, r%plate_fields(s), error)
@@ -114,6 +131,16 @@ contains
          end associate
       end do
    end subroutine plate_fields
+
+   !> Whether the water on plate set s (its wet side or the level in force) changes at the
+   !> start of step `step`.
+   pure logical function water_changed(model, s, step)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s, step
+      water_changed = model%water%plate_side_at(s, step) /= &
+         model%water%plate_side_at(s, step - 1) .or. &
+         model%water%level_at(step) /= model%water%level_at(step - 1)
+   end function water_changed
 
    !> Whether the restart data written now carry what makes a restarted run exact
    !> (*OUTPUT, EXACT_RESTART=): with every increment, never, or (ON_STOP) when the run is

@@ -70,8 +70,10 @@ contains
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
             call data%add('arc_why', text_codes(p%arc%req%why))
          end if
-         ! (with plates the rotations are no part of the displacement field)
-         if (fields .and. size(st%u, 2) == model%mesh%nnode()) then
+         ! (with plates the rotations are no part of the displacement field: lend copied the
+         ! node columns and kept u; without them u is lent to the fields, not allocated here,
+         ! and no size of it may be asked)
+         if (fields .and. .not. allocated(st%u)) then
             call data%add_field('u', 'displacement', 0)
          else
             call data%add('u', reshape(st%u, [size(st%u)]))

@@ -75,6 +75,9 @@ def test_stability_deck_edits():
             "MAX_ITERATIONS=77, MAX_CUTS=3") in text
     chain = bench_stability.make_deck("s1", "chain", 1e3, 1.0, 50)
     assert "*SOLVER, METHOD=MODIFIED_NEWTON, TOLERANCE=1e-4" in chain
+    # the default method: no METHOD
+    default = bench_stability.make_deck("s1", "default", 1e3, 1.0, 50)
+    assert "*SOLVER, TOLERANCE=1e-4, MAX_ITERATIONS=50, MAX_CUTS=3" in default
     assert bench_stability.requested_increments(text) == 70
     k = bench_stability.make_deck("s1", "katona", 1.0, 0.2, 10)
     assert "TYPE=KATONA" in k and "TYPE=MOHR_COULOMB" not in k

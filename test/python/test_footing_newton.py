@@ -1,6 +1,7 @@
-"""Full Newton on an imposed settlement: the smooth rigid strip footing on von Mises soil of
-pecplas_py.decks.make_footing_peer_decks (c_u = 100 kPa, E = 1e5 kPa, weightless, 0.05 m in 20
-increments, TOLERANCE=1e-4; 2 675 equations with Q4, 2 003 with Q8 and Q8R).
+"""The default method (full Newton) on an imposed settlement: the smooth rigid strip footing on
+von Mises soil of pecplas_py.decks.make_footing_peer_decks (c_u = 100 kPa, E = 1e5 kPa,
+weightless, 0.05 m in 20 increments, TOLERANCE=1e-4, no METHOD; 2 675 equations with Q4, 2 003
+with Q8 and Q8R).
 
 Each element completes the 20 increments with no cut and at most 5 iterations per increment
 on average (measured 73, 74 and 76 iterations: 3.7-3.8 per increment; CalculiX 2.20 needs
@@ -11,10 +12,10 @@ reaction at the last increment - is within 0.5 % of CalculiX's on the same mesh 
 increment entered the first iteration through the tangent (doc/theory.md §4) these runs took
 140, 187 and 881 iterations, Q8R with 4 cuts.
 
-The same footing solved by the default chain of methods (no METHOD: modified Newton, then
-quasi-Newton, then full Newton, the chain remembering the method that converged the last
-increment, doc/theory.md §4), and with a Katona contact elsewhere on the surface (the Katona
-increment takes the same first step through the operator).
+The same footing solved by the thesis's method and its chain (METHOD=MODIFIED_NEWTON: modified
+Newton, then quasi-Newton, then full Newton, the chain remembering the method that converged
+the last increment, doc/theory.md §4), and with a Katona contact elsewhere on the surface (the
+Katona increment takes the same first step through the operator).
 """
 import re
 import subprocess
@@ -33,6 +34,7 @@ CCX_PLATEAU = {"Q4": 563.9, "Q8": 535.5, "Q8R": 525.8}
 @pytest.mark.parametrize("element", ["Q4", "Q8", "Q8R"])
 def test_vonmises_footing_newton(tmp_path, element):
     text = decks.ours(element, 1, "vm", "settle", 20, decks.SETTLE["vm"])
+    assert "METHOD" not in text  # the default method
     p, status, hist, _, _ = run(text, tmp_path, f"footing_{element}")
     assert status == "completed", p.stderr
     n = len(hist["iterations"])
@@ -71,8 +73,9 @@ def _summary(text, tmp_path, name):
 
 
 @pytest.mark.parametrize("element", ["Q4", "Q8", "Q8R"])
-def test_default_chain_within_twice_newton(tmp_path, element):
-    """Default chain vs full Newton on the same footing: at most 2x the iterations.
+def test_modified_newton_chain_within_twice_newton(tmp_path, element):
+    """The thesis's method and its chain (METHOD=MODIFIED_NEWTON) vs the default, full Newton,
+    on the same footing: at most 2x the iterations.
 
     Reason of the bound: the chain's extra cost is that of the few increments before full
     Newton leads - modified Newton while its rate predicts at most 20 iterations (the chain
@@ -83,16 +86,16 @@ def test_default_chain_within_twice_newton(tmp_path, element):
     a crawl, 1 134, 1 126, 1 166 (about 15x: quasi-Newton ran to its 50-iteration cap at
     every increment before full Newton took over)."""
     newton = decks.ours(element, 1, "vm", "settle", 20, decks.SETTLE["vm"])
-    default = newton.replace(", METHOD=NEWTON", "")
-    assert default != newton
+    thesis = newton.replace("*SOLVER,", "*SOLVER, METHOD=MODIFIED_NEWTON,")
+    assert thesis != newton
     total_n, n_n = _summary(newton, tmp_path, f"newton_{element}")
-    total_d, n_d = _summary(default, tmp_path, f"default_{element}")
+    total_d, n_d = _summary(thesis, tmp_path, f"thesis_{element}")
     assert n_n == 20 and n_d == 20, "an increment was cut"
-    print(f"{element}: default chain {total_d} iterations, full Newton {total_n}")
+    print(f"{element}: MODIFIED_NEWTON chain {total_d} iterations, full Newton {total_n}")
     assert total_d <= 2 * total_n
     # same answer: the plateaus agree to the solver tolerance (1e-4 of the load norm)
     a = _plateau(tmp_path / f"newton_{element}.h5", element)
-    b = _plateau(tmp_path / f"default_{element}.h5", element)
+    b = _plateau(tmp_path / f"thesis_{element}.h5", element)
     assert abs(a / b - 1.0) <= 1e-3
 
 

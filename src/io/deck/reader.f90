@@ -23,7 +23,7 @@ module pecplas_io_deck_reader
    use pecplas_io_deck_resolve_joints, only: resolve_joints
    use pecplas_joints_laws_factory, only: law_registry_t, default_law_registry
    use pecplas_model_type, only: model_t
-   use pecplas_model_options, only: METHOD_MODIFIED
+   use pecplas_model_options, only: METHOD_NEWTON
    use pecplas_io_deck_record_places, only: record_places
    use pecplas_io_deck_usage, only: check_usage
    use pecplas_io_deck_reader_phases, only: read_change, resolve_phases
@@ -75,7 +75,7 @@ contains
       end if
       model%deck_file = path
       model%solver%linear = 'AUTO'
-      model%solver%method = METHOD_MODIFIED
+      model%solver%method = METHOD_NEWTON
       call read_deck_store(path, state%lines, model%deck_text, error)
       if (allocated(error)) return
       n = state%lines%n

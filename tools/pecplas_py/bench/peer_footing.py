@@ -2,12 +2,12 @@
 """Newton's iteration count beside CalculiX's: the von Mises strip footing pushed by an
 imposed settlement (pecplas_py.decks.make_footing_peer_decks: 20 increments to collapse, c_u = 100
 kPa, closed form (2 + pi) c_u = 514.2 kPa) on the same meshes, ours with Q4 / Q8 / Q8R under
-METHOD=NEWTON, TOLERANCE=1e-4, CalculiX 2.20 (`ccx`) with CPE4 / CPE8 / CPE8R and its default
-controls. Per run: increments, iterations (linear solves), cuts, wall time, plateau (the
+the default method (full Newton, its fallback quasi-Newton), TOLERANCE=1e-4, CalculiX 2.20
+(`ccx`) with CPE4 / CPE8 / CPE8R and its default controls. Per run: increments, iterations (linear solves), cuts, wall time, plateau (the
 footing's reaction at the last increment per unit width). Ours also with the footing pushed
 through stiff springs, and on Mohr-Coulomb and Drucker-Prager soil (phi = psi = 30 deg, no
-CalculiX twin), and the von Mises runs again with the default chain of methods (no METHOD:
-what a user gets without choosing), code "ours, default chain".
+CalculiX twin), and the von Mises runs again with the thesis's method and its chain
+(METHOD=MODIFIED_NEWTON: modified -> quasi- -> full Newton), code "ours, MODIFIED_NEWTON chain".
 
 Iteration counts are deterministic: one run per case, on one thread (OMP_NUM_THREADS=1, ccx
 also CCX_NPROC_EQUATION_SOLVER=1); the wall times are indicative.
@@ -15,8 +15,10 @@ Writes doc/bench/peer_footing.csv and doc/bench/peer_footing.md.
 
     python3 -m pecplas_py.bench.peer_footing [--quick] [--huge] [--no-ccx] [--keep DIR]
     python3 -m pecplas_py.bench.peer_footing --render   (the fragment again from the CSV)
-    python3 -m pecplas_py.bench.peer_footing --chain [--quick] [--huge]   (only the default
-        chain's rows, merged into the CSV: the other rows, CalculiX's included, are kept)
+    python3 -m pecplas_py.bench.peer_footing --chain [--quick] [--huge]   (only the
+        MODIFIED_NEWTON chain's rows, merged into the CSV: the other rows, CalculiX's included,
+        are kept)
+--no-ccx: our rows only, CalculiX's rows of the CSV kept (each with its own provenance).
 --quick: the 2 000-equation meshes only; default adds the 20 000-equation ones; --huge adds
 100 000 equations (CalculiX needs about an hour per element there).
 """
@@ -42,18 +44,19 @@ LEVELS = {"2k": {"Q4": 1, "Q8": 1, "Q8R": 1}, "20k": {"Q4": 3, "Q8": 3, "Q8R": 3
 HEADER = ["mesh", "code", "element", "material", "drive", "equations", "increments",
           "iterations", "cuts", "wall_s", "plateau_kpa", "rc", "load1", "threads"]
 CLOSED_FORM = (2.0 + 3.141592653589793) * fd.C
-#: code column of the default chain's rows
-CHAIN = "ours, default chain"
+#: code column of the thesis chain's rows (METHOD=MODIFIED_NEWTON)
+CHAIN = "ours, MODIFIED_NEWTON chain"
 
 
 def run_ours(exe, work, element, m, material, drive, chain=False):
     """One run of our deck: (row fields) equations, increments, iterations, cuts, wall,
-    plateau, rc. `chain`: without METHOD=NEWTON (the default chain of methods, modified ->
-    quasi- -> full Newton, doc/theory.md §4)."""
+    plateau, rc. `chain`: METHOD=MODIFIED_NEWTON (the thesis's method and its chain, modified
+    -> quasi- -> full Newton, doc/theory.md §4); else the default method (full Newton)."""
     text = fd.ours(element, m, material, drive, INCREMENTS, fd.SETTLE[material])
     name = f"ours_{material}_{element}_m{m}_{drive}"
     if chain:
-        text = text.replace(", METHOD=NEWTON", "")
+        text = text.replace("*SOLVER, TOLERANCE=0.0001",
+                            "*SOLVER, TOLERANCE=0.0001, METHOD=MODIFIED_NEWTON")
         name += "_chain"
     deck, h5 = work / f"{name}.inp", work / f"{name}.h5"
     deck.write_text(text)
@@ -134,12 +137,13 @@ def fragment(rows, quick=False):
          "adds 100 000). Decks of `pecplas_py.decks.make_footing_peer_decks`: a smooth rigid strip "
          "footing pushed 0.05 m into weightless von Mises soil (c_u = 100 kPa, E = 1e5 kPa) "
          f"in {INCREMENTS} increments, closed form (2 + pi) c_u = {CLOSED_FORM:.1f} kPa. Ours: "
-         "METHOD=NEWTON, TOLERANCE=1e-4 (doc/theory.md §4); CalculiX: its default controls "
+         "the default method (full Newton, doc/theory.md §4), TOLERANCE=1e-4; CalculiX: its "
+         "default controls "
          "(residual below 0.5 % of the mean force, correction below 1 % of the increment: "
          "looser than ours). One run per case on one thread; iterations = linear solves "
-         "(every attempt's). \"ours, default chain\": the same decks without METHOD (modified "
-         "Newton, then quasi-Newton, then full Newton, the chain starting each increment with "
-         "the method that converged the last one).",
+         "(every attempt's). \"ours, MODIFIED_NEWTON chain\": the same decks with the thesis's "
+         "method, METHOD=MODIFIED_NEWTON (modified Newton, then quasi-Newton, then full Newton, "
+         "the chain starting each increment with the method that converged the last one).",
          "", "| mesh | element | equations | code | increments | iterations | per increment "
          "| ratio to CalculiX | cuts | wall [s] | plateau [kPa] | vs CalculiX |",
          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -192,7 +196,7 @@ def main():
     ap.add_argument("--chain", action="store_true",
                     help="only the default chain's rows, merged into the CSV")
     a = ap.parse_args()
-    if a.render or a.chain:
+    if a.render or a.chain or a.no_ccx:
         # the rows as stored, each with its own commit, machine and date
         with open(bc.BENCH_DIR / "peer_footing.csv") as f:
             stored = list(csv.reader(f))[1:]
@@ -246,12 +250,26 @@ def main():
             if not a.no_ccx:
                 rows.append(row(size, "CalculiX", element, "vm", "settle",
                                 run_ccx(work, element, m, ours["equations"])))
+            else:
+                # the stored CalculiX row of the same mesh and element, its provenance kept
+                rows += [r for r in stored if r[1] == "CalculiX" and r[0] == size and
+                         r[2] == element and r[3] == "vm" and r[4] == "settle"]
             print(" | ".join(map(str, rows[-1])), flush=True)
-    for element in ("Q4", "Q8", "Q8R"):
-        for material, drive in (("vm", "springs"), ("mc", "settle"), ("dp", "settle")):
-            rows.append(row("2k", "ours", element, material, drive,
-                            run_ours(exe, work, element, 1, material, drive)))
-    bc.write_csv(bc.BENCH_DIR / "peer_footing.csv", HEADER, rows)
+    # the other drive and soils at 2 000 and 20 000 equations (not at 100 000: hours)
+    for size in [s for s in sizes if s != "100k"]:
+        for element, m in LEVELS[size].items():
+            for material, drive in (("vm", "springs"), ("mc", "settle"), ("dp", "settle")):
+                rows.append(row(size, "ours", element, material, drive,
+                                run_ours(exe, work, element, m, material, drive)))
+                print(" | ".join(map(str, rows[-1])), flush=True)
+    prov = bc.provenance()
+    full = [[str(v) for v in r] if len(r) > len(HEADER) else
+            [str(v) for v in r] + [prov["commit"], prov["machine"], prov["date"]] for r in rows]
+    with open(bc.BENCH_DIR / "peer_footing.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(HEADER + ["commit", "machine", "date"])
+        w.writerows(full)
+    rows = [r[:len(HEADER)] for r in full]
     bc.write_fragment("peer_footing", fragment(rows, a.quick))
     for r in rows:
         print(" | ".join(map(str, r)))

@@ -39,16 +39,19 @@ SCENES = {
 }
 ABBREV = {"diverged": "D", "limit load": "L", "singular K": "S", "timeout": "T",
           "failed": "F", "error": "E"}
-METHODS = ("modified_newton", "newton", "quasi_newton", "chain", "katona")
+METHODS = ("modified_newton", "newton", "quasi_newton", "chain", "default", "katona")
 # The deck's *SOLVER line of each row: the thesis's methods alone (FALLBACK=NO, no line search:
-# the maps as they were), BFGS alone, and the default chain MODIFIED_NEWTON -> QUASI_NEWTON ->
-# NEWTON with line search (doc/theory.md §4).
+# the maps as they were), BFGS alone, the thesis's method with its chain MODIFIED_NEWTON ->
+# QUASI_NEWTON -> NEWTON with line search, and the default (no METHOD: full Newton with line
+# search -> QUASI_NEWTON; doc/theory.md §4).
 SOLVERS = {"modified_newton": "METHOD=MODIFIED_NEWTON, FALLBACK=NO, LINE_SEARCH=NO",
            "newton": "METHOD=NEWTON, FALLBACK=NO, LINE_SEARCH=NO",
            "quasi_newton": "METHOD=QUASI_NEWTON, FALLBACK=NO",
            "chain": "METHOD=MODIFIED_NEWTON",
+           "default": "",
            "katona": "METHOD=NEWTON"}
-LABELS = ["modified Newton", "full Newton", "quasi-Newton (BFGS)", "default chain",
+LABELS = ["modified Newton", "full Newton", "quasi-Newton (BFGS)", "modified-Newton chain",
+          "default (full Newton chain)",
           "Katona (no K_n)"]
 HEADER = ["scene", "sweep", "method", "kn_over_e", "increments_requested", "status",
           "timed_out", "increments_done", "iter_mean", "iter_max", "cuts",
@@ -64,7 +67,8 @@ def make_deck(scene, method, ratio, scale, cap):
     else:
         text = sc["deck"].read_text()
         text = re.sub(r"\bKN = [^,]+,", f"KN = {ratio * sc['E']:g},", text)
-    text = re.sub(r"^\*SOLVER.*$", f"*SOLVER, {SOLVERS[method]}, TOLERANCE=1e-4, "
+    options = f"{SOLVERS[method]}, " if SOLVERS[method] else ""
+    text = re.sub(r"^\*SOLVER.*$", f"*SOLVER, {options}TOLERANCE=1e-4, "
                   f"MAX_ITERATIONS={cap}, MAX_CUTS=3", text, flags=re.M)
     text = re.sub(r"(\*STEP[^\n]*INCREMENTS=)(\d+)",
                   lambda m: m.group(1) + str(max(1, round(int(m.group(2)) * scale))), text)
@@ -198,8 +202,9 @@ def fragment(rows, cap, timeout, wall, quick):
          f"(timeout): 'converges' means within this budget (S1 modified Newton at "
          f"K_n/E = 1e3 completes with a 10 000-iteration cap, doc/validation.md). Tolerance "
          f"1e-4. Rows: the thesis's methods alone (modified Newton, full Newton: FALLBACK=NO, "
-         f"no line search), quasi-Newton (BFGS) alone, and the default chain (modified -> "
-         f"quasi- -> full Newton with line search, doc/theory.md §4). Status as the program "
+         f"no line search), quasi-Newton (BFGS) alone, the thesis's method with its chain "
+         f"(METHOD=MODIFIED_NEWTON: modified -> quasi- -> full Newton with line search) and the "
+         f"default (no METHOD: full Newton with line search -> quasi-Newton; doc/theory.md §4). Status as the program "
          f"reports it: an increment no method converges is 'diverged' (a 'limit load' only when "
          f"the arc-length probe finds a maximum; the pile has none at 2000 kN); 'singular K' = "
          f"the first factorisation of the "

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Stability of the S1 compression-opening-closing test (input/s1/s1_open_close_kn1e5.inp)
 against the joint's normal stiffness: K_n / E1 = 1, 10, ..., 1e8 (E1 = 1e5 kPa), modified Newton
-alone (FALLBACK=NO, the thesis's method), modified Newton with the default chain of methods and
-full Newton, tolerance 1e-3 and 1e-4. For each run: status, increments (and how many each
+alone (FALLBACK=NO, the thesis's method), modified Newton with its chain of methods and full
+Newton (the default method, with its fallback), tolerance 1e-3 and 1e-4. For each run: status, increments (and how many each
 method finished), iterations per increment (mean, max), total iterations, and the largest
 interpenetration (closure of the zero-thickness joint, eps_n > 0, in mm). Prints a Markdown table; with --json writes the
 rows to test/reference/s1_stability.json, and --doc writes the table of doc/validation.md from
@@ -32,7 +32,7 @@ DOC = ROOT / "doc" / "validation.md"
 HEADER = ("| K_n/E1 | method | tol | status | increments (by modified / quasi- / full Newton) "
           "| iterations/increment mean (max) | total iterations | max interpenetration [mm] |"
           "\n|---|---|---|---|---|---|---|---|")
-#: (METHOD, FALLBACK) of the runs: the thesis's method alone, the default chain, full Newton
+#: (METHOD, FALLBACK) of the runs: the thesis's method alone, its chain, full Newton (the default)
 METHODS = (("MODIFIED_NEWTON", "NO"), ("MODIFIED_NEWTON", "YES"), ("NEWTON", "YES"))
 
 
