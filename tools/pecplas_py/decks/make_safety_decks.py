@@ -243,7 +243,8 @@ def slope_mesh(height, beta, crest, nx, ny, foundation=0.0, nf=0, right=0.0, nr=
 def example_slope(path):
     """input/examples/slope_safety.inp: Griffiths & Lane's (1999) homogeneous 2:1 slope on a
     firm base at the toe: H = 10, gamma = 20, c' = 10 (c' / gamma H = 0.05), phi' = 20,
-    psi = 0, drained (no water table); Bishop and Morgenstern's charts give F = 1.38."""
+    psi = 0, drained, with a phreatic line falling straight from y = 6 at the back (x = 0)
+    to the toe (Bishop and Morgenstern's charts give F = 1.38 for the dry slope)."""
     beta = math.degrees(math.atan(0.5))
     nodes, elements, left, far, base = slope_mesh(10.0, beta, 12.0, 20, 8)
     crest = [k for k, (x, y) in nodes.items() if abs(y - 10.0) < 1e-9 and abs(x - 12.0) < 1e-9]
@@ -251,10 +252,12 @@ def example_slope(path):
              '** (doc/deck.md, Safety; doc/validation.md, Safety factor). Griffiths & Lane (1999),',
              "** Geotechnique 49(3), fig. 4: a 2:1 slope, H = 10 m, on a firm base at the toe (D = 1),",
              "** c' = 10 kPa, phi' = 20 deg, psi = 0, gamma = 20 kN/m3 (c'/(gamma H) = 0.05): Bishop",
-             "** and Morgenstern's charts F = 1.38. Written by pecplas_py.decks.make_safety_decks.",
+             "** and Morgenstern's charts F = 1.38 dry. A phreatic line falls from y = 6 at the back",
+             "** to the toe (gamma_sat = gamma = 20, gamma_w = 10); gravity loading brings the water",
+             "** in with the weight. Written by pecplas_py.decks.make_safety_decks.",
              '** Run: make run DECK=input/examples/slope_safety.inp; picture:',
              '**   cd tools && python3 -m pecplas_py.plots.plot_safety ../output/slope_safety.h5',
-             '*TITLE', 'drained 2:1 slope, H 10, c 10, phi 20: factor of safety',
+             '*TITLE', 'drained 2:1 slope, H 10, c 10, phi 20, phreatic line to the toe: factor of safety',
              '*UNITS', 'kN, m, kPa', '*ANALYSIS, TYPE=PLANE_STRAIN', '*NODES']
     lines += [f'{k}, {x:.10g}, {y:.10g}' for k, (x, y) in sorted(nodes.items())]
     lines.append('*ELEMENTS, TYPE=Q8, SET=soil')
@@ -262,6 +265,7 @@ def example_slope(path):
     lines += ['*MATERIAL, NAME=soil, TYPE=MOHR_COULOMB',
               'E = 1e5, NU = 0.3, GAMMA = 20', 'C = 10, PHI = 20, PSI = 0',
               '*SECTION, SET=soil, MATERIAL=soil, ELEMENT=Q8R',
+              '*WATER, NAME=seepage, GAMMA_W=10', '0, 6', f'{max(x for x, _ in nodes.values()):.10g}, 0',
               '*NSET, NAME=left'] + [', '.join(map(str, left[i:i + 10])) for i in range(0, len(left), 10)]
     lines += ['*NSET, NAME=base'] + [', '.join(map(str, base[i:i + 10])) for i in range(0, len(base), 10)]
     lines += ['*BOUNDARY', 'left, X', 'base, XY',
