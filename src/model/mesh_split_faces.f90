@@ -20,7 +20,8 @@ module pecplas_model_mesh_split_faces
    use pecplas_model_mesh, only: mesh_t
    use pecplas_model_mesh_sides, only: side_table_t, build_side_table, find_sides, &
       element_centroid
-   use pecplas_model_mesh_tools, only: corner_count
+   use pecplas_model_mesh_tools, only: corner_count, id_list
+   use pecplas_base_strings, only: itoa
    implicit none (type, external)
    private
 
@@ -532,28 +533,5 @@ contains
          if (nmatch == 1) edges(:, f) = pick(1:nen)
       end do
    end subroutine remap_to_copies
-
-   !> "(id id [id])": user ids of internal node numbers.
-   function id_list(mesh, nodes) result(s)
-      type(mesh_t), intent(in) :: mesh
-      integer, intent(in) :: nodes(:)
-      character(len=:), allocatable :: s
-      integer :: i
-      s = '('
-      do i = 1, size(nodes)
-         if (nodes(i) < 1) cycle
-         if (i > 1) s = s//' '
-         s = s//itoa(mesh%node_id(nodes(i)))
-      end do
-      s = s//')'
-   end function id_list
-
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
 end module pecplas_model_mesh_split_faces

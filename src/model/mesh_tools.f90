@@ -10,7 +10,7 @@ module pecplas_model_mesh_tools
    implicit none (type, external)
    private
 
-   public :: node_lookup_t, append_mesh, orient_edge_sets, check_elements, corner_count
+   public :: node_lookup_t, append_mesh, orient_edge_sets, check_elements, corner_count, id_list
 
 contains
 
@@ -310,7 +310,7 @@ contains
       end do
    end subroutine orient_edge_sets
 
-   !> "(id id [id])": user ids of internal node numbers.
+   !> "(id id [id])": user ids of internal node numbers (numbers below 1, no node, left out).
    function id_list(mesh, nodes) result(s)
       type(mesh_t), intent(in) :: mesh
       integer, intent(in) :: nodes(:)
@@ -318,6 +318,7 @@ contains
       integer :: i
       s = '('
       do i = 1, size(nodes)
+         if (nodes(i) < 1) cycle
          if (i > 1) s = s//' '
          s = s//itoa(mesh%node_id(nodes(i)))
       end do

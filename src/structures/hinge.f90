@@ -9,6 +9,7 @@
 !> so a collapse mechanism of hinges at nodes has its exact load (theory.md §12).
 module pecplas_structures_hinge
    use pecplas_base_kinds, only: wp
+   use pecplas_base_matrix3, only: inverse3
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_plates, only: plate_section_t
    use pecplas_structures_beam, only: shear_stiffness
@@ -66,14 +67,14 @@ contains
       real(wp), intent(out) :: q(3), vp(3), dl(2), kalg(3, 3)
       type(error_t), allocatable, intent(out) :: error
       real(wp), parameter :: TOL = 1.0e-12_wp
-      real(wp) :: ia, im, kinv(3, 3), r(5), jac(5, 5), dx(5), fv(2), rhs(5, 3)
+      real(wp) :: ia, im, kinv(3, 3), r(5), jac(5, 5), dx(5), fv(2), rhs(5, 3), det
       logical :: active(2), changed
       integer :: it, pass, na, i, j, idx(2)
       ia = 0.0_wp
       im = 0.0_wp
       if (section%np > 0.0_wp) ia = 1.0_wp/section%np**2
       if (section%mp > 0.0_wp) im = 1.0_wp/section%mp**2
-      kinv = inverse3(kb)
+      call inverse3(kb, kinv, det)  ! kb: a plate's elastic section stiffness, regular
       q = matmul(kb, v - vp0)
       vp = vp0
       dl = 0.0_wp
@@ -193,23 +194,6 @@ contains
          hm(1 + i, 1 + i) = 2.0_wp*im
       end function hess
    end subroutine hinge_update
-
-   !> Inverse of a regular 3 x 3 matrix.
-   pure function inverse3(a) result(b)
-      real(wp), intent(in) :: a(3, 3)
-      real(wp) :: b(3, 3), det
-      b(1, 1) = a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)
-      b(1, 2) = a(1, 3)*a(3, 2) - a(1, 2)*a(3, 3)
-      b(1, 3) = a(1, 2)*a(2, 3) - a(1, 3)*a(2, 2)
-      b(2, 1) = a(2, 3)*a(3, 1) - a(2, 1)*a(3, 3)
-      b(2, 2) = a(1, 1)*a(3, 3) - a(1, 3)*a(3, 1)
-      b(2, 3) = a(1, 3)*a(2, 1) - a(1, 1)*a(2, 3)
-      b(3, 1) = a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1)
-      b(3, 2) = a(1, 2)*a(3, 1) - a(1, 1)*a(3, 2)
-      b(3, 3) = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
-      det = a(1, 1)*b(1, 1) + a(1, 2)*b(2, 1) + a(1, 3)*b(3, 1)
-      b = b/det
-   end function inverse3
 
    !> Solves a x = b in place (b becomes x) by Gaussian elimination with partial pivoting.
    subroutine solve_small(a, b, error)

@@ -22,6 +22,7 @@
 !> (III.22–III.24 as corrected in doc/theory.md) is shift = s R_i, factor = 2.
 module pecplas_joints_laws_modjoin_kernel
    use pecplas_base_kinds, only: wp
+   use pecplas_base_matrix3, only: inverse3
    implicit none (type, external)
    private
 
@@ -244,22 +245,5 @@ contains
       jac = -matmul(ji, p)
       jac(3, 3) = jac(3, 3) + 1.0_wp
    end subroutine mj_plastic_step
-
-   !> Inverse of a 3x3 matrix by cofactors (det = 0: singular, b undefined).
-   pure subroutine inverse3(a, b, det)
-      real(wp), intent(in) :: a(3, 3)
-      real(wp), intent(out) :: b(3, 3), det
-      b(1, 1) = a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)
-      b(1, 2) = a(1, 3)*a(3, 2) - a(1, 2)*a(3, 3)
-      b(1, 3) = a(1, 2)*a(2, 3) - a(1, 3)*a(2, 2)
-      b(2, 1) = a(2, 3)*a(3, 1) - a(2, 1)*a(3, 3)
-      b(2, 2) = a(1, 1)*a(3, 3) - a(1, 3)*a(3, 1)
-      b(2, 3) = a(1, 3)*a(2, 1) - a(1, 1)*a(2, 3)
-      b(3, 1) = a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1)
-      b(3, 2) = a(1, 2)*a(3, 1) - a(1, 1)*a(3, 2)
-      b(3, 3) = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
-      det = a(1, 1)*b(1, 1) + a(1, 2)*b(2, 1) + a(1, 3)*b(3, 1)
-      if (det /= 0.0_wp) b = b/det
-   end subroutine inverse3
 
 end module pecplas_joints_laws_modjoin_kernel
