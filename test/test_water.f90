@@ -38,6 +38,7 @@ contains
                new_unittest('flooded_pit', test_flooded_pit), &
                new_unittest('water_on_a_wall', test_wall), &
                new_unittest('water_on_a_wall_phased', test_wall_phased), &
+               new_unittest('water_on_a_wall_gravity_loading', test_wall_gravity), &
                new_unittest('bad_decks', test_bad_decks), &
                new_unittest('gravity_column', test_gravity_column)]
    end subroutine collect_water
@@ -857,5 +858,49 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_wall_phased
+
+   !> Gravity loading brings the water on a plate in with the weight (the GRAVITY pattern's
+   !> factor): the wall of water_on_a_wall_phased with its water from the start and a GRAVITY
+   !> pattern in two increments: the section forces written after the first are half the
+   !> hydrostatic ones (linear: 1e-8), the whole after the second.
+   subroutine test_wall_gravity(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: whole
+      type(results_reader_t) :: file
+      real(wp), allocatable :: nf(:, :)
+      character(len=*), parameter :: deck = OUT//'wall_gravity.inp'
+      real(wp), parameter :: shear(2) = [90.0_wp, 180.0_wp], moment(2) = [180.0_wp, 360.0_wp]
+      integer :: code, u, i
+      call make_directories(OUT)
+      open (newunit=u, file=deck, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'water on a wall under gravity loading', '*UNITS', &
+         'kN, m, kPa', '*NODES'
+      do i = 0, 10
+         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
+      end do
+      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
+         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
+         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
+         '*LOAD, NAME=weight, TYPE=GRAVITY', 'wall', &
+         '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1', '*END STEP'
+      close (u)
+      code = run_deck(deck, OUT//'wall_gravity.h5', .true., model, whole)
+      call check(error, code == 0, 'wall under gravity loading runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call file%open(OUT//'wall_gravity.h5', error)
+      if (allocated(error)) return
+      do i = 1, 2
+         call file%dataset('/increments/00000'//itoa(i)//'/plates/wall/node_forces', nf, error)
+         if (allocated(error)) return
+         call check_close(error, abs(nf(2, 1)), shear(i), 1.0e-8_wp, &
+            'base shear after increment '//itoa(i)//' of 2 = '//itoa(i)//'/2 gamma_w h^2 / 2')
+         if (allocated(error)) return
+         call check_close(error, abs(nf(3, 1)), moment(i), 1.0e-8_wp, &
+            'base moment after increment '//itoa(i)//' of 2 = '//itoa(i)//'/2 gamma_w h^3 / 6')
+         if (allocated(error)) return
+      end do
+      call file%close()
+   end subroutine test_wall_gravity
 
 end module test_water

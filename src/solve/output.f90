@@ -92,7 +92,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(plate_fields_t) :: before
       integer :: s, k, step
-      real(wp) :: tau
+      real(wp) :: tau, wf
       if (.not. allocated(model%plates)) return
       if (size(model%plates) == 0) return
       allocate (r%plate_fields(size(model%plates)))
@@ -116,6 +116,18 @@ contains
                associate (f => r%plate_fields(s))
                   f%end_forces = tau*f%end_forces + (1.0_wp - tau)*before%end_forces
                   f%node_forces = tau*f%node_forces + (1.0_wp - tau)*before%node_forces
+               end associate
+            end if
+            ! under gravity loading the water comes in with the weight: the plate holds the
+            ! factor wf of it (the fields without water are `before` with no level)
+            wf = water_factor(problem)
+            if (wf /= 1.0_wp) then
+               call plate_results(model, problem%state%u, problem%state%plates, &
+                  problem%state%factors, s, before, error)
+               if (allocated(error)) return
+               associate (f => r%plate_fields(s))
+                  f%end_forces = wf*f%end_forces + (1.0_wp - wf)*before%end_forces
+                  f%node_forces = wf*f%node_forces + (1.0_wp - wf)*before%node_forces
                end associate
             end if
          else
