@@ -84,6 +84,7 @@ def _dummy_values():
                                                              1e-12, 0.0],
               "katona/s1_open_close": [2, 0.0], "katona/penalty_resultant_errors": [1e-2] * 4,
               "katona/penalty_penetrations": [1e-5] * 4})
+    v.update({f"safety/{row[0]}": [1.0, 1.0] for row in vr.SAFETY_ROWS})
     return v
 
 
