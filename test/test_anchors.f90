@@ -20,6 +20,7 @@ module test_anchors
    use pecplas_problem_type, only: problem_t
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_base_strings, only: itoa
+   use test_phases, only: last_line
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -395,7 +396,7 @@ contains
          call read_deck(deck, model, e)
          call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
          if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(line_of(deck, trim(marker(k))))) > 0 &
+         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
             .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
          if (allocated(error)) return
          deallocate (e)
@@ -406,22 +407,5 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks
-
-   !> Number of the line of file `path` that reads `text`.
-   integer function line_of(path, text) result(n)
-      character(len=*), intent(in) :: path, text
-      character(len=256) :: buf
-      integer :: u, i, ios
-      n = 0
-      open (newunit=u, file=path, status='old', action='read')
-      i = 0
-      do
-         read (u, '(a)', iostat=ios) buf
-         if (ios /= 0) exit
-         i = i + 1
-         if (trim(buf) == text) n = i
-      end do
-      close (u)
-   end function line_of
 
 end module test_anchors

@@ -15,6 +15,7 @@ module test_water
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_io_results_increment, only: plate_fields_t
    use pecplas_fe_plate_output, only: plate_results
+   use test_phases, only: last_line
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    implicit none (type, external)
    private
@@ -468,7 +469,7 @@ contains
          call read_deck(deck, model, e)
          call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
          if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(line_of(deck, trim(marker(k))))) > 0 &
+         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
             .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
          if (allocated(error)) return
          deallocate (e)
@@ -480,23 +481,6 @@ contains
             itoa(code)//', results file written: '//merge('yes', 'no ', exists))
          if (allocated(error)) return
       end do
-   contains
-      !> Number of the line of file `path` that reads `text`.
-      integer function line_of(path, text) result(n)
-         character(len=*), intent(in) :: path, text
-         character(len=256) :: buf
-         integer :: u, j, ios
-         n = 0
-         open (newunit=u, file=path, status='old', action='read')
-         j = 0
-         do
-            read (u, '(a)', iostat=ios) buf
-            if (ios /= 0) exit
-            j = j + 1
-            if (trim(buf) == text) n = j
-         end do
-         close (u)
-      end function line_of
    end subroutine test_bad_decks
 
    !> The undrained oedometer loaded in 4 increments, stopped after 2 and restarted from its
