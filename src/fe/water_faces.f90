@@ -15,6 +15,7 @@ module pecplas_fe_water_faces
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_structures_beam, only: beam_line_load, MAX_BEAM_DOFS
    use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
+   use pecplas_model_plate_water_sides, only: plate_water_sides
    implicit none (type, external)
    private
 
@@ -72,14 +73,16 @@ contains
    end subroutine add_water_faces
 
    !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
-   !> in `pactive`, under level k (0: none), with the sides of step istep: see
-   !> plate_water_load.
-   subroutine add_plate_water(model, pactive, k, istep, force)
+   !> in `pactive`, under level k (0: none), with the sides of step istep and, for the sets
+   !> whose water stands on their free faces, the element sets `eactive` and joint sets
+   !> `jactive` active: see plate_water_load.
+   subroutine add_plate_water(model, pactive, eactive, jactive, k, istep, force)
       type(model_t), intent(in) :: model
-      logical, intent(in) :: pactive(:)
+      logical, intent(in) :: pactive(:), eactive(:), jactive(:)
       integer, intent(in) :: k, istep
       real(wp), intent(inout) :: force(:, :)
       real(wp) :: fe(MAX_BEAM_DOFS)
+      integer, allocatable :: side(:)
       integer :: s, e, nd
       logical :: any_load
       if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
@@ -87,32 +90,31 @@ contains
          if (model%water%plate_side_at(s, istep) == 0) cycle
          if (s > size(pactive)) cycle
          if (.not. pactive(s)) cycle
+         side = plate_water_sides(model, s, istep, eactive, jactive)
          nd = 3*size(model%plates(s)%conn, 1)
          do e = 1, size(model%plates(s)%conn, 2)
-            call plate_water_load(model, s, e, k, istep, fe(1:nd), any_load)
+            call plate_water_load(model, s, e, k, side(e), fe(1:nd), any_load)
             if (any_load) call scatter_plate_vector(model, model%plates(s), e, fe(1:nd), force)
          end do
       end do
    end subroutine add_plate_water
 
    !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
-   !> under level k, with the side of step istep: p = gamma_w (h - y)+ at the element's nodes, interpolated along it like
-   !> its geometry (exact where it lies wholly below or above the level), pressing from the
-   !> side *PLATE_WATER names (a plate is impermeable: the water or the soil's pore pressure
-   !> on its other side is not this load). `loaded`: false (fe = 0) when p = 0 at every node
-   !> or the set has no water.
-   subroutine plate_water_load(model, s, e, k, istep, fe, loaded)
+   !> under level k, pressing from the face `side` (+1 left, -1 right, 0 none: the element's
+   !> entry of plate_water_sides): p = gamma_w (h - y)+ at the element's nodes, interpolated
+   !> along it like its geometry (exact where it lies wholly below or above the level). A
+   !> plate is impermeable: the water or the soil's pore pressure on its other face is not
+   !> this load. `loaded`: false (fe = 0) when p = 0 at every node or side = 0.
+   subroutine plate_water_load(model, s, e, k, side, fe, loaded)
       type(model_t), intent(in) :: model
-      integer, intent(in) :: s, e, k, istep
+      integer, intent(in) :: s, e, k, side
       real(wp), intent(out) :: fe(:)
       logical, intent(out) :: loaded
       real(wp) :: t(2), q(2), p(3), x(2, 3)
-      integer :: j, nen, side
+      integer :: j, nen
       fe = 0.0_wp
       loaded = .false.
-      if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
-      side = model%water%plate_side_at(s, istep)
-      if (side == 0) return
+      if (k <= 0 .or. side == 0) return
       associate (pl => model%plates(s))
          nen = size(pl%conn, 1)
          x(:, 1:nen) = plate_element_x(model, pl, e)
