@@ -414,9 +414,10 @@ contains
       if (model%water%used() .and. level > 0) then
          allocate (jon(0), pon(0))
          if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
-         call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error)
-         if (allocated(error)) return
          if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
+         call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error, &
+            pon, istep)
+         if (allocated(error)) return
          call add_plate_water(model, pon, eactive, jon, level, istep, &
             problem%system%initial_force)
       end if
@@ -472,9 +473,9 @@ contains
       w = 0.0_wp
       allocate (jon(0), pon(0))
       if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
-      call add_water_faces(model, eactive, jon, level, w, error)
-      if (allocated(error)) return
       if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
+      call add_water_faces(model, eactive, jon, level, w, error, pon, istep)
+      if (allocated(error)) return
       call add_plate_water(model, pon, eactive, jon, level, istep, w)
       if (allocated(problem%phase%patterns_on)) then
          if (.not. problem%phase%patterns_on(k)) then
