@@ -183,9 +183,9 @@ contains
 
    !> The pit of write_pit with the wall as one plate set under *PLATE_WATER FREE and as three
    !> with LEFT/RIGHT switched in the steps that dig them free: the same loads on the same
-   !> system, so the same displacements and section forces to round-off (1e-10 of the
-   !> largest: two assemblies of the same numbers in another order, condition ~ EA/KJ
-   !> kept out by the supports), at the end and half-way through each stage (the results file).
+   !> system, so the same displacements and base section forces to round-off (1e-10 of the
+   !> largest: the same element loads scattered per set in another grouping, one linear
+   !> solve per increment), at the end and half-way through each stage (the results file).
    subroutine test_free_equals_split(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model

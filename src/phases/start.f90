@@ -844,8 +844,9 @@ contains
    end subroutine water_changes
 
    !> The progress line of plate set s whose water stands on its free faces (*PLATE_WATER
-   !> FREE) when those faces in step istep differ from the step before's: how many of its
-   !> elements have the water on the left face only, how many on the right only.
+   !> FREE) in the first step and when those faces in step istep differ from the step
+   !> before's: how many of its elements have the water on the left face only, how many on
+   !> the right only.
    subroutine free_water_line(model, s, istep, lines)
       type(model_t), intent(in) :: model
       integer, intent(in) :: s, istep
@@ -854,7 +855,7 @@ contains
       logical :: changed
       now = plate_water_sides(model, s, istep)
       before = plate_water_sides(model, s, istep - 1)
-      changed = any(now /= before) .or. &
+      changed = any(now /= before) .or. istep == 1 .or. &
          model%water%plate_side_at(s, istep - 1) /= PLATE_FREE
       if (.not. changed) return
       call add_line(lines, 'water on the free faces of plate set '//model%plates(s)%name// &
