@@ -9,17 +9,17 @@ module test_phases
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
-   use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_base_strings, only: itoa
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
    private
    public :: collect_phases
    ! (shared with test_phases_switch)
-   public :: write_column, oedometric, last_line, H, GAMMA, K0, E, NU, ELASTIC
+   public :: write_column, oedometric, H, GAMMA, K0, E, NU, ELASTIC
 
    real(wp), parameter :: H = 10.0_wp, GAMMA = 20.0_wp, K0 = 0.5_wp, E = 3.0e4_wp, NU = 0.25_wp
    character(len=*), parameter :: OUT = 'build/test_out/phases/'
@@ -704,9 +704,6 @@ contains
    !> Bad phase decks: exit 2, file:line and keyword in the message, no results file.
    subroutine test_bad_decks(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: cases(5) = [character(len=200) :: &
          '*STEP, NAME=a|*DEACTIVATE|nosuch', &
          '*STEP, NAME=a|*DEACTIVATE|t1|*STEP, NAME=b|*ACTIVATE|t1|*STEP, NAME=c|*ACTIVATE|t1', &
@@ -719,8 +716,7 @@ contains
       character(len=*), parameter :: marker(5) = [character(len=16) :: 'nosuch', 't1', 't1', &
          'rest, granite', '*STEP, NAME=b']
       character(len=:), allocatable :: deck, steps
-      integer :: k, code, i
-      logical :: exists
+      integer :: k, i
       call make_directories(OUT)
       do k = 1, size(cases)
          steps = trim(cases(k))
@@ -731,38 +727,10 @@ contains
             '*LOAD, NAME=top, TYPE=FORCE'//new_line('a')//'topn, Y, -1'//new_line('a')//steps
          deck = OUT//'bad'//itoa(k)//'.inp'
          call write_column(deck, 10, 1, [1], 1, ELASTIC, steps=steps)
-         call read_deck(deck, model, e)
-         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
-         if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
-            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
-         if (allocated(error)) return
-         deallocate (e)
-         open (newunit=i, file=OUT//'bad.h5', status='replace')
-         close (i, status='delete')
-         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
-         inquire (file=OUT//'bad.h5', exist=exists)
-         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
-            itoa(code)//', results file written: '//merge('yes', 'no ', exists))
+         call check_refused(error, deck, trim(marker(k)), trim(expect(k)), OUT//'bad.h5', &
+            'bad deck '//itoa(k))
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks
-
-   !> Number of the last line of file `path` that reads `text`.
-   integer function last_line(path, text) result(n)
-      character(len=*), intent(in) :: path, text
-      character(len=256) :: buf
-      integer :: u, i, ios
-      n = 0
-      open (newunit=u, file=path, status='old', action='read')
-      i = 0
-      do
-         read (u, '(a)', iostat=ios) buf
-         if (ios /= 0) exit
-         i = i + 1
-         if (trim(buf) == text) n = i
-      end do
-      close (u)
-   end function last_line
 
 end module test_phases

@@ -15,11 +15,12 @@ module test_phases_switch
    use pecplas_problem_type, only: problem_t
    use pecplas_base_strings, only: itoa
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_bad_decks, only: check_refused
    use pecplas_cmd_adapt, only: adapt_main
    use pecplas_advise_advise, only: advice_t, advise_deck
    use pecplas_linalg_solver, only: mumps_available
    use pecplas_problem_phase, only: PROCEDURE_GRAVITY
-   use test_phases, only: write_column, oedometric, last_line, H, GAMMA, ELASTIC
+   use test_phases, only: write_column, oedometric, H, GAMMA, ELASTIC
    implicit none (type, external)
    private
    public :: collect_phases_switch
@@ -286,9 +287,6 @@ contains
    !> message, no results file.
    subroutine test_bad_decks(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: head = '*NSET, NAME=topn|41, 42|*LOAD, NAME=q, TYPE=FORCE|'// &
          'topn, Y, -50|*LOAD, NAME=pull, TYPE=DISPLACEMENT|topn, X, 0.001|'// &
          '*BOUNDARY, NAME=cap|topn, Y|'
@@ -308,8 +306,7 @@ contains
       character(len=*), parameter :: marker(7) = [character(len=40) :: 'cap', 'cap', 'q', 'q', &
          'pull', 'q', '*STEP, NAME=b']
       character(len=:), allocatable :: deck, steps
-      integer :: k, code, i
-      logical :: exists
+      integer :: k, i
       call make_directories(OUT)
       do k = 1, size(cases)
          steps = head//trim(cases(k))
@@ -318,19 +315,8 @@ contains
          end do
          deck = OUT//'bad'//itoa(k)//'.inp'
          call write_column(deck, NEL, 0, [integer ::], 1, ELASTIC, steps=steps)
-         call read_deck(deck, model, e)
-         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
-         if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
-            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
-         if (allocated(error)) return
-         deallocate (e)
-         open (newunit=i, file=OUT//'bad.h5', status='replace')
-         close (i, status='delete')
-         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
-         inquire (file=OUT//'bad.h5', exist=exists)
-         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
-            itoa(code)//', results file written: '//merge('yes', 'no ', exists))
+         call check_refused(error, deck, trim(marker(k)), trim(expect(k)), OUT//'bad.h5', &
+            'bad deck '//itoa(k))
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks
