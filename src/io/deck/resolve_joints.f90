@@ -204,6 +204,36 @@ contains
       if (raw%n >= k .and. k > 0) at = raw%where(k)
    end function spring_line
 
+   !> The edge set `ke` named by EDGES= of a generated set; an error if there is none.
+   subroutine find_edges(state, model, raw, ke, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, intent(out) :: ke
+      type(error_t), allocatable, intent(out) :: error
+      ke = model%mesh%find_edge_set(raw%edges)
+      if (ke == 0) call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
+         "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
+   end subroutine find_edges
+
+   !> `nen`, the nodes per edge of edge set `ke`; an error if they do not fit the set's type
+   !> (GOODMAN4: 2, GOODMAN6: 3).
+   subroutine check_edge_nodes(state, model, raw, set, ke, nen, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      type(joint_set_t), intent(in) :: set
+      integer, intent(in) :: ke
+      integer, intent(out) :: nen
+      type(error_t), allocatable, intent(out) :: error
+      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
+      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
+          nen /= 3)) call line_error(state, raw%at, set%type_name()//" joints need "// &
+            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
+            //raw%edges//"' has "//itoa(nen)//'-node edges: use '// &
+            trim(merge('GOODMAN6', 'GOODMAN4', nen == 3))//' (or THIN_LAYER, SPRING)', error)
+   end subroutine check_edge_nodes
+
    !> EDGES=, SIDE=: splits the mesh and builds the set; edges(nen, m) = face-1 joint edges.
    subroutine generated(state, model, raw, origin, next_id, set, edges, error)
       type(deck_state_t), intent(in) :: state
@@ -218,12 +248,8 @@ contains
       type(error_t), allocatable :: e
       integer, allocatable :: dupof(:)
       integer :: ke, ks, nen, nn0, i
-      ke = model%mesh%find_edge_set(raw%edges)
-      if (ke == 0) then
-         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
-            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
-         return
-      end if
+      call find_edges(state, model, raw, ke, error)
+      if (allocated(error)) return
       ks = model%mesh%find_eset(raw%side)
       if (ks == 0 .and. size(model%mesh%find_esets(raw%side)) > 1) then
          call line_error(state, raw%at, "SIDE="//raw%side//" is a Gmsh group of several "// &
@@ -237,15 +263,8 @@ contains
             "' in SIDE=; known element sets:"//set_names(model, .false.), error)
          return
       end if
-      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
-      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
-          nen /= 3)) then
-         call line_error(state, raw%at, set%type_name()//" joints need "// &
-            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
-            //raw%edges//"' has "//itoa(nen)//'-node edges: use '// &
-            trim(merge('GOODMAN6', 'GOODMAN4', nen == 3))//' (or THIN_LAYER, SPRING)', error)
-         return
-      end if
+      call check_edge_nodes(state, model, raw, set, ke, nen, error)
+      if (allocated(error)) return
       nn0 = model%mesh%nnode()
       call split_along_edges(model%mesh, ke, ks, origin, res, e)
       if (allocated(e)) then
@@ -288,20 +307,10 @@ contains
       logical, allocatable :: turn(:)
       character(len=:), allocatable :: msg
       integer :: ke, nen, i, k, face, bad
-      ke = model%mesh%find_edge_set(raw%edges)
-      if (ke == 0) then
-         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
-            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
-         return
-      end if
-      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
-      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
-          nen /= 3)) then
-         call line_error(state, raw%at, set%type_name()//" joints need "// &
-            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
-            //raw%edges//"' has "//itoa(nen)//'-node edges', error)
-         return
-      end if
+      call find_edges(state, model, raw, ke, error)
+      if (allocated(error)) return
+      call check_edge_nodes(state, model, raw, set, ke, nen, error)
+      if (allocated(error)) return
       call split_both_faces(model%mesh, ke, raw%extend, origin, res, e)
       if (allocated(e)) then
          call line_error(state, raw%at, e%message, error)
