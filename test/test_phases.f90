@@ -19,7 +19,7 @@ module test_phases
    private
    public :: collect_phases
    ! (shared with test_phases_switch)
-   public :: write_column, oedometric, H, GAMMA, K0, E, NU, ELASTIC
+   public :: write_column, write_block, oedometric, H, GAMMA, K0, E, NU, ELASTIC
 
    real(wp), parameter :: H = 10.0_wp, GAMMA = 20.0_wp, K0 = 0.5_wp, E = 3.0e4_wp, NU = 0.25_wp
    character(len=*), parameter :: OUT = 'build/test_out/phases/'
@@ -642,34 +642,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       type(problem_t) :: before, removed, back
-      character(len=*), parameter :: deck = OUT//'katona.inp'
+      character(len=*), parameter :: deck = OUT//'katona.inp', NL = new_line('a')
       real(wp) :: heave, worst
-      integer :: u, i, code, n
+      integer :: code, n
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'K0 column with a block on Katona contact', '*NODES'
-      do i = 0, 40
-         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*0.25_wp
-         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*0.25_wp
-      end do
-      write (u, '(a)') '1001, 0.0, 7.5', '1002, 1.0, 7.5', '*ELEMENTS, TYPE=Q4, SET=rest'
-      do i = 1, 30
-         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
-      end do
-      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=block', '31, 1001, 1002, 64, 63'
-      do i = 32, 40
-         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
-      end do
-      write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
-         '*SECTION, SET=block, MATERIAL=soil', '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', &
-         'PHI = 30', '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
-         '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 82', &
-         '*NSET, NAME=pair', '1001, 1002', '*BOUNDARY', 'base, XY', 'sides, X', 'pair, X', &
-         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5', &
-         '*STEP, NAME=nil', &
-         '*STEP, NAME=remove, INCREMENTS=2', '*DEACTIVATE', 'block, iface', &
-         '*STEP, NAME=back, INCREMENTS=3', '*ACTIVATE', 'block, iface'
-      close (u)
+      call write_block(deck, '', steps='*STEP, NAME=nil'//NL//'*STEP, NAME=remove, '// &
+         'INCREMENTS=2'//NL//'*DEACTIVATE'//NL//'block, iface'//NL//'*STEP, NAME=back, '// &
+         'INCREMENTS=3'//NL//'*ACTIVATE'//NL//'block, iface')
       code = run_deck(deck, OUT//'katona_1.h5', .true., model, before, stop_after=1)
       call check(error, code == 4, 'nil step (exit '//itoa(code)//')')
       if (allocated(error)) return
@@ -700,6 +679,49 @@ contains
       call check_close(error, sum(back%katona%f(1, :)), GAMMA*2.5_wp, 1.0e-10_wp, &
          'the doublets carry the block''s weight')
    end subroutine test_katona
+
+   !> The K0 column of katona_off_and_on (Q4 1-30, set 'rest') and the block on it (Q4 31-40,
+   !> set 'block') on Katona contact (joint set 'iface'), with the block and the contact set
+   !> off until the first step activates them (`how`: the *ACTIVATE options of the contact set).
+   !> `law`, `steps`: another law for the joint set 'iface', other steps (all sets active at
+   !> the start).
+   subroutine write_block(path, how, law, steps)
+      character(len=*), intent(in) :: path, how
+      character(len=*), intent(in), optional :: law, steps
+      integer :: u, i
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'K0 column with a block on Katona contact', '*NODES'
+      do i = 0, 40
+         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*0.25_wp
+         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*0.25_wp
+      end do
+      write (u, '(a)') '1001, 0.0, 7.5', '1002, 1.0, 7.5', '*ELEMENTS, TYPE=Q4, SET=rest'
+      do i = 1, 30
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=block', '31, 1001, 1002, 64, 63'
+      do i = 32, 40
+         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+      end do
+      write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
+         '*SECTION, SET=block, MATERIAL=soil'
+      if (present(law)) then
+         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, '//law
+      else
+         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', 'PHI = 30'
+      end if
+      write (u, '(a)') '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
+         '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 82', &
+         '*NSET, NAME=pair', '1001, 1002', '*BOUNDARY', 'base, XY', 'sides, X', 'pair, X', &
+         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5'
+      if (present(steps)) then
+         write (u, '(a)') steps
+      else
+         write (u, '(a)') '*STEP, NAME=install, INCREMENTS=2', &
+            '*ACTIVATE, STRESS=WISHED_IN_PLACE', 'block', '*ACTIVATE'//how, 'iface'
+      end if
+      close (u)
+   end subroutine write_block
 
    !> Bad phase decks: exit 2, file:line and keyword in the message, no results file.
    subroutine test_bad_decks(error)

@@ -20,7 +20,7 @@ module test_phases_switch
    use pecplas_advise_advise, only: advice_t, advise_deck
    use pecplas_linalg_solver, only: mumps_available
    use pecplas_problem_phase, only: PROCEDURE_GRAVITY
-   use test_phases, only: write_column, oedometric, H, GAMMA, ELASTIC
+   use test_phases, only: write_column, write_block, oedometric, H, GAMMA, ELASTIC
    implicit none (type, external)
    private
    public :: collect_phases_switch
@@ -240,48 +240,6 @@ contains
       call check_close(error, sum(zero%katona%f(1, :)), GAMMA*2.5_wp, 1.0e-10_wp, &
          'without force: the whole weight at the end of the step')
    end subroutine test_katona_wished
-
-   !> The column of test_phases' katona_off_and_on with the block and the contact set off
-   !> until the first step activates them (`how`: the *ACTIVATE options of the contact set).
-   !> `law`, `steps`: another law for the joint set 'iface', other steps (all sets active at
-   !> the start).
-   subroutine write_block(path, how, law, steps)
-      character(len=*), intent(in) :: path, how
-      character(len=*), intent(in), optional :: law, steps
-      integer :: u, i
-      open (newunit=u, file=path, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'K0 column, block installed on Katona contact', '*NODES'
-      do i = 0, 40
-         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*0.25_wp
-         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*0.25_wp
-      end do
-      write (u, '(a)') '1001, 0.0, 7.5', '1002, 1.0, 7.5', '*ELEMENTS, TYPE=Q4, SET=rest'
-      do i = 1, 30
-         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
-      end do
-      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=block', '31, 1001, 1002, 64, 63'
-      do i = 32, 40
-         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
-      end do
-      write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
-         '*SECTION, SET=block, MATERIAL=soil'
-      if (present(law)) then
-         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, '//law
-      else
-         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', 'PHI = 30'
-      end if
-      write (u, '(a)') '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
-         '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 82', &
-         '*NSET, NAME=pair', '1001, 1002', '*BOUNDARY', 'base, XY', 'sides, X', 'pair, X', &
-         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5'
-      if (present(steps)) then
-         write (u, '(a)') steps
-      else
-         write (u, '(a)') '*STEP, NAME=install, INCREMENTS=2', &
-            '*ACTIVATE, STRESS=WISHED_IN_PLACE', 'block', '*ACTIVATE'//how, 'iface'
-      end if
-      close (u)
-   end subroutine write_block
 
    !> Bad decks that switch supports and patterns: exit 2, file:line and what is wrong in the
    !> message, no results file.
