@@ -16,6 +16,7 @@ module pecplas_io_deck_resolve_joints
    use pecplas_io_deck_raw_joints, only: raw_joint_set_t
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_model_type, only: model_t
+   use pecplas_io_deck_set_names, only: eset_names, edge_set_names
    use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6, &
       JOINT_KATONA
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
@@ -178,25 +179,6 @@ contains
       if (len(list) == 0) list = ' (none: define one with *INTERFACE_LAW, NAME=..., TYPE=...)'
    end function law_names
 
-   !> ' a b' names of the edge sets (edges) or element sets (for messages).
-   function set_names(model, edges) result(list)
-      type(model_t), intent(in) :: model
-      logical, intent(in) :: edges
-      character(len=:), allocatable :: list
-      integer :: i
-      list = ''
-      if (edges) then
-         do i = 1, size(model%mesh%edge_sets)
-            call add_name(list, model%mesh%edge_sets(i)%name)
-         end do
-      else
-         do i = 1, size(model%mesh%esets)
-            call add_name(list, model%mesh%esets(i)%name)
-         end do
-      end if
-      if (len(list) == 0) list = ' (none)'
-   end function set_names
-
    pure integer function spring_line(raw, k) result(at)
       type(raw_joint_set_t), intent(in) :: raw
       integer, intent(in) :: k
@@ -213,7 +195,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       ke = model%mesh%find_edge_set(raw%edges)
       if (ke == 0) call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
-         "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
+         "' in EDGES=; known edge sets:"//edge_set_names(model%mesh, ' (none)'), error)
    end subroutine find_edges
 
    !> `nen`, the nodes per edge of edge set `ke`; an error if they do not fit the set's type
@@ -255,12 +237,12 @@ contains
          call line_error(state, raw%at, "SIDE="//raw%side//" is a Gmsh group of several "// &
             'element types; SIDE= takes one element set: mesh the body on that side with '// &
             'one element type, or name its part (known element sets:'// &
-            set_names(model, .false.)//')', error)
+            eset_names(model%mesh, ' (none)')//')', error)
          return
       end if
       if (ks == 0) then
          call line_error(state, raw%at, "undefined element set '"//raw%side// &
-            "' in SIDE=; known element sets:"//set_names(model, .false.), error)
+            "' in SIDE=; known element sets:"//eset_names(model%mesh, ' (none)'), error)
          return
       end if
       call check_edge_nodes(state, model, raw, set, ke, nen, error)
