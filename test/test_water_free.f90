@@ -9,14 +9,11 @@ module test_water_free
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
-   use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_base_strings, only: itoa
    use pecplas_io_results_reader, only: results_reader_t
-   use pecplas_io_results_increment, only: plate_fields_t
-   use pecplas_fe_plate_output, only: plate_results
-   use test_phases, only: last_line
    use pecplas_testing, only: check, check_close
+   use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
    private
    public :: test_free_stages, test_free_equals_split, test_free_quay, test_free_bad_mode
@@ -296,15 +293,12 @@ contains
       end do
    end subroutine test_free_quay
 
-   !> *PLATE_WATER with a mode word that is none of LEFT, RIGHT, FREE, NONE: exit 2, the
-   !> deck's file and line of the data line in the message.
+   !> *PLATE_WATER with a mode word that is none of LEFT, RIGHT, FREE, NONE: refused with the
+   !> deck's file and line of the data line and the modes in the message, exit 2, no results.
    subroutine test_free_bad_mode(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: deck = OUT//'bad_plate_water.inp'
-      integer :: code, u, i
+      integer :: u, i
       call make_directories(OUT)
       open (newunit=u, file=deck, status='replace', action='write')
       write (u, '(a)') '*TITLE', 'bad plate water mode', '*NODES'
@@ -316,15 +310,9 @@ contains
          '*WATER, NAME=pit, GAMMA_W=10, LEVEL=3', '*PLATE_WATER', 'wall, FLOODED', &
          '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
       close (u)
-      call read_deck(deck, model, e)
-      call check(error, allocated(e), 'an unknown *PLATE_WATER mode is refused')
-      if (allocated(error)) return
-      call check(error, index(e%text(), deck//':'//itoa(last_line(deck, 'wall, FLOODED'))) &
-         > 0 .and. index(e%text(), "side 'FLOODED'") > 0 .and. index(e%text(), 'FREE') > 0, &
-         'the message names the line and the modes: '//e%text())
-      if (allocated(error)) return
-      code = run_deck(deck, OUT//'bad_plate_water.h5', .true., model, problem)
-      call check(error, code == 2, 'exit 2 (got '//itoa(code)//')')
+      call check_refused(error, deck, 'wall, FLOODED', "side 'FLOODED': expected LEFT or "// &
+         'RIGHT (of the plate walked from its first node to its last), FREE', &
+         OUT//'bad_plate_water.h5', 'unknown *PLATE_WATER mode')
    end subroutine test_free_bad_mode
 
 end module test_water_free
