@@ -1,7 +1,8 @@
 !> Groundwater (doc/theory.md, Groundwater): the hydrostatic state of a layered column,
-!> undrained oedometric loading against the closed form, undrained plane-strain
-!> Mohr-Coulomb compression, undrained-then-drained phases against a drained run, joints
-!> under pore pressure, bad decks.
+!> undrained oedometric loading (by a load and by an imposed displacement) against the closed
+!> form, undrained plane-strain Mohr-Coulomb compression, smooth strip footings on UNDRAINED_A
+!> and UNDRAINED_B clay against Prandtl, undrained-then-drained phases against a drained run,
+!> joints under pore pressure, bad decks.
 module test_water
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
