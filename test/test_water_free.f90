@@ -332,7 +332,12 @@ contains
    !> *PLATE_WATER: FREE, the top face free, the soil's top side covered by the raft) and for
    !> LEFT. Water counted twice (the raft's load and the soil's top side as a free face, as
    !> LEFT did before) would give 120; NONE (no water on the raft, by the user's word; the
-   !> soil under the raft cannot take it) gives 80.
+   !> soil under the raft cannot take it) gives 80. The raft carries the water itself: its
+   !> consistent load puts q L / 2 (q = gamma_w d = 20, L = 1) on each end node as the soil's
+   !> side did, so the K0 state stays in equilibrium, the soil does not move, and the raft
+   !> is a simply supported beam under q (the end moments of its load rotate its ends):
+   !> end shear q L / 2 = 10 and end rotations q L^3 / (24 EI), to 1e-10 (one element,
+   !> exact; the soil's nodes still to round-off). A transparent raft carried nothing.
    subroutine test_free_raft(error)
       type(error_t), allocatable, intent(out) :: error
       character(len=4), parameter :: MODES(3) = [character(len=4) :: '', 'LEFT', 'NONE']
@@ -340,7 +345,8 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       type(results_reader_t) :: file
-      real(wp), allocatable :: reac(:, :)
+      real(wp), parameter :: Q = GW*D, EI = 1.0e5_wp
+      real(wp), allocatable :: reac(:, :), nf(:, :), rot(:)
       real(wp) :: expect
       character(len=:), allocatable :: name
       integer :: k, u, i, code
@@ -373,7 +379,19 @@ contains
          if (allocated(error)) return
          call file%dataset('/increments/000001/reaction', reac, error)
          if (allocated(error)) return
+         call file%dataset('/increments/000001/plates/raft/node_forces', nf, error)
+         if (allocated(error)) return
+         call file%dataset('/increments/000001/plates/raft/rotation', rot, error)
+         if (allocated(error)) return
          call file%close()
+         if (MODES(k) /= 'NONE') then
+            call check_close(error, maxval(abs(abs(nf(2, :)) - 0.5_wp*Q)), 0.0_wp, 0.0_wp, &
+               name//': the raft carries its water, end shear q L / 2', atol=1.0e-10_wp*Q)
+            if (allocated(error)) return
+            call check_close(error, maxval(abs(abs(rot) - Q/(24.0_wp*EI))), 0.0_wp, 0.0_wp, &
+               name//': end rotations q L^3 / (24 EI)', atol=1.0e-10_wp*Q/(24.0_wp*EI))
+            if (allocated(error)) return
+         end if
          expect = (GSAT - GW)*HC
          if (MODES(k) == 'NONE') expect = expect - GW*D
          call check_close(error, sum(reac(2, :)), expect, 0.0_wp, name//': vertical '// &
