@@ -18,7 +18,7 @@
 # run (threads_node16.log) still fits; a case left out is logged as SKIP with its estimate:
 #   1. the elastic squares Q4 and Q8 at 1e6 equations (pecplas-bench), 1 and 16 threads, and
 #      the footing at 3e5 (pecplas), 1 and 16 threads: one run each
-#   2. candidates: Q8 ordered by AMD instead of the rule's METIS (PECPLAS_ORDERING=AMD) on
+#   2. candidates: OpenBLAS's default kernels where CORE=auto chose others (below); Q8 ordered by AMD instead of the rule's METIS (PECPLAS_ORDERING=AMD) on
 #      1 and 16 threads; MUMPS (MPI build) on 16 ranks x 1 thread: Q8, Q4, footing
 #   3. 2, 4 and 8 threads on Q4 and Q8
 #   4. the squares on 1 and 16 threads again, twice (3 runs: the spread)
@@ -113,12 +113,32 @@ device() {
     ldd "$B/lib/$e" | grep -q 'not found' && say "=== $e: $(ldd "$B/lib/$e" | grep 'not found' | tr '\n' ' ')"
   done
   TIMEFORMAT='%R %U %S'
+  # OpenBLAS picks its kernels from the CPU model; a model it does not know (0.3.21: Intel
+  # family 6 model 207 here) gets the SSE3 kernels of `Prescott` even on a CPU with AVX-512.
+  # CORE=auto (default): then every run gets OPENBLAS_CORETYPE=SkylakeX (AVX-512) or Haswell
+  # (AVX2), and round 2 compares the default kernels; CORE=none: leave OpenBLAS alone;
+  # CORE=NAME: that core for every run.
+  local flags dflt core=${CORE:-auto}
+  flags=$(grep -m1 '^flags' /proc/cpuinfo)
+  dflt=$(env -u OPENBLAS_CORETYPE OPENBLAS_VERBOSE=2 pecplas-bench-threads 2>&1 | sed -n 's/^Core: //p' | head -1)
+  if [ "$core" = auto ]; then core=none
+    if [ "$dflt" = Prescott ]; then
+      case " $flags " in *" avx512f "*) core=SkylakeX ;; *" avx2 "*) core=Haswell ;; esac
+    fi
+  fi
+  [ "$core" != none ] && export OPENBLAS_CORETYPE=$core
+  say "=== cpu: $(grep -m1 '^cpu family' /proc/cpuinfo | tr -s '\t ' ' '), $(grep -m1 '^model\s' /proc/cpuinfo | tr -s '\t ' ' '); avx2: $(case " $flags " in *" avx2 "*) echo yes ;; *) echo no ;; esac), avx512f: $(case " $flags " in *" avx512f "*) echo yes ;; *) echo no ;; esac)"
+  say "=== OpenBLAS kernels: ${dflt:-unknown} by default; every run below: $(OPENBLAS_VERBOSE=2 pecplas-bench-threads 2>&1 | sed -n 's/^Core: //p' | head -1) (OPENBLAS_CORETYPE=${OPENBLAS_CORETYPE:-unset})"
 
   # round 1: the ends of the scale, one run each
   sq rule 1 Q4; sq rule $NMAX Q4; sq rule 1 Q8; sq rule $NMAX Q8
   ft rule 1; ft rule $NMAX
   say "=== left after round 1: $(left) s"
   # round 2: candidates at the ends
+  if [ "$core" != none ]; then  # OpenBLAS's default kernels, as the program runs today
+    sq blasdefault 1 Q4 -u OPENBLAS_CORETYPE; sq blasdefault $NMAX Q4 -u OPENBLAS_CORETYPE
+    sq blasdefault 1 Q8 -u OPENBLAS_CORETYPE; sq blasdefault $NMAX Q8 -u OPENBLAS_CORETYPE
+  fi
   sq amd 1 Q8 PECPLAS_ORDERING=AMD; sq amd $NMAX Q8 PECPLAS_ORDERING=AMD
   mp mumps $NMAX 1 Q8; mp mumps $NMAX 1 Q4
   # the footing on MUMPS only when MUMPS beat CHOLMOD on Q8 (16 threads, both whole runs)
@@ -170,12 +190,12 @@ fits() { local e; e=$(estimate "$1" "$2")
   [ "$SMALL" = 1 ] && return 0
   [ $(( e * 13 / 10 )) -le "$(left)" ] && return 0
   say "SKIP $3 $1 threads=$2 (about $e s, $(left) s left)"; return 1; }
-# elastic square through the whole program: tag threads element [env...]
+# elastic square through the whole program: tag threads element [env arguments...]
 sq() { local tag=$1 n=$2 el=$3 sz line key=$3; shift 3
   [ "$el" = Q4 ] && sz=$Q4 || sz=$Q8
   [ "$tag" = amd ] && key=${el}amd
   fits "$key" "$n" "$tag" || return 0
-  line=$(env OMP_NUM_THREADS=$n PECPLAS_BENCH_MATRIX=0 "$@" timeout $(( $(estimate "$key" "$n") * 3 + 30 )) \
+  line=$(env "$@" OMP_NUM_THREADS=$n PECPLAS_BENCH_MATRIX=0 timeout $(( $(estimate "$key" "$n") * 3 + 30 )) \
     pecplas-bench $el $sz $W 2>>"$OUT/err.txt") || { say "FAIL $tag $el threads=$n"; return 0; }
   say "RUN $tag threads=$n load=$(cut -d' ' -f1 /proc/loadavg) $line"; }
 # the footing through the program: tag threads [env...]
@@ -197,6 +217,7 @@ mp() { local tag=$1 r=$2 t=$3 c=$4 deck
   fi
   { time env OMP_NUM_THREADS=$t timeout $(( $(estimate "mumps$c" "$r") * 3 + 30 )) \
       orterun -np $r --bind-to none -x OMP_NUM_THREADS -x LD_LIBRARY_PATH \
+      ${OPENBLAS_CORETYPE:+-x OPENBLAS_CORETYPE} \
       pecplas-mpi "$deck" -o $W/m.h5 > $W/m.log 2>&1 ; } 2> $W/m.time
   say "MPI $tag case=$c ranks=$r threads=$t time=$(tail -1 $W/m.time) | $(grep -E 'wall time|summary:|threads:|linear solver:|status:' $W/m.log | tr '\n' '|')"; }
 
