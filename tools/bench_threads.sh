@@ -18,12 +18,16 @@
 # run (threads_node16.log) still fits; a case left out is logged as SKIP with its estimate:
 #   1. the elastic squares Q4 and Q8 at 1e6 equations (pecplas-bench), 1 and 16 threads, and
 #      the footing at 3e5 (pecplas), 1 and 16 threads: one run each
-#   2. candidates: OpenBLAS's default kernels where CORE=auto chose others (below); Q8 ordered by AMD instead of the rule's METIS (PECPLAS_ORDERING=AMD) on
-#      1 and 16 threads; MUMPS (MPI build) on 16 ranks x 1 thread: Q8, Q4, footing
+#   2. candidates: OpenBLAS's default kernels where CORE=auto chose others (see below), on
+#      the squares at 1 and 16 threads; Q8 ordered by AMD instead of the rule's METIS
+#      (PECPLAS_ORDERING=AMD) on 1 and 16 threads; OMP_WAIT_POLICY=passive on Q4, 16 threads;
+#      MUMPS (MPI build) on 16 ranks x 1 thread: Q8, Q4, and the footing if MUMPS beat
+#      CHOLMOD on Q8
 #   3. 2, 4 and 8 threads on Q4 and Q8
 #   4. the squares on 1 and 16 threads again, twice (3 runs: the spread)
 #   5. the footing on 4, 8, 2 threads; candidates: BLAS on 8 of 16 threads
-#      (PECPLAS_THREAD_PARTS=1,8,0), MUMPS 4 ranks x 4 threads, Q8 AMD on 4 and 8 threads
+#      (PECPLAS_THREAD_PARTS=1,8,0), OMP_WAIT_POLICY=passive on Q8, MUMPS 4 ranks x 4
+#      threads, Q8 AMD on 4 and 8 threads
 #   6. the footing on 1 and 16 threads again, twice
 # --small: the same rounds at 1e4 equations, 1 and 2 threads (2 ranks), no time estimates:
 # checks the script end to end on a 2-core machine in about a minute.
@@ -140,6 +144,9 @@ device() {
     sq blasdefault 1 Q8 -u OPENBLAS_CORETYPE; sq blasdefault $NMAX Q8 -u OPENBLAS_CORETYPE
   fi
   sq amd 1 Q8 PECPLAS_ORDERING=AMD; sq amd $NMAX Q8 PECPLAS_ORDERING=AMD
+  # the OpenMP team of the element loops sleeps at once when idle instead of spinning (a
+  # 2-thread profile spent 17 % of its CPU samples in libgomp's wait)
+  sq passive $NMAX Q4 OMP_WAIT_POLICY=passive
   mp mumps $NMAX 1 Q8; mp mumps $NMAX 1 Q4
   # the footing on MUMPS only when MUMPS beat CHOLMOD on Q8 (16 threads, both whole runs)
   local tm tc; tm=$(last_total "^MPI mumps case=Q8 ranks=$NMAX threads=1 ")
@@ -158,6 +165,7 @@ device() {
   for T in 4 8 2; do [ $SMALL = 1 ] && [ $T != 2 ] && continue; ft rule $T; done
   sq blas8 $NMAX Q4 PECPLAS_THREAD_PARTS=1,$((NMAX / 2)),0
   sq blas8 $NMAX Q8 PECPLAS_THREAD_PARTS=1,$((NMAX / 2)),0
+  sq passive $NMAX Q8 OMP_WAIT_POLICY=passive
   if [ $SMALL = 1 ]; then mp mumps 1 2 Q8; else mp mumps 4 4 Q8; fi
   for T in 4 8; do [ $SMALL = 1 ] || sq amd $T Q8 PECPLAS_ORDERING=AMD; done
   say "=== left after round 5: $(left) s"
