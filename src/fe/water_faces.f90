@@ -5,7 +5,8 @@
 !> With it the total stresses are in equilibrium with the water standing on the faces (a
 !> flooded pit, a level above the ground), and on supported faces the pressure goes into the
 !> reactions, which are then those of the effective stresses and the buoyant weight.
-!> Joint faces are left out: a joint carries the pore pressure itself (pecplas_fe_pore).
+!> Joint faces are left out: a joint carries the pore pressure itself (pecplas_fe_pore); so
+!> are the sides of plates whose water stands on their free faces (*PLATE_WATER FREE).
 module pecplas_fe_water_faces
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -15,6 +16,8 @@ module pecplas_fe_water_faces
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_structures_beam, only: beam_line_load, MAX_BEAM_DOFS
    use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
+   use pecplas_model_plate_water_sides, only: plate_water_sides
+   use pecplas_water_type, only: PLATE_FREE
    implicit none (type, external)
    private
 
@@ -23,20 +26,27 @@ module pecplas_fe_water_faces
 contains
 
    !> force(2, nnode) += the water's pressure on the free faces of the active element sets
-   !> `eactive` under level k (0: none), joint sets `jactive` active.
-   subroutine add_water_faces(model, eactive, jactive, k, force, error)
+   !> `eactive` under level k (0: none), joint sets `jactive` active. With `pactive` and
+   !> `istep`: a side of an element of an active plate set whose water stands on its free
+   !> faces in step istep (*PLATE_WATER FREE) is no free face: the impermeable plate lies
+   !> against it and takes the water on its own free face (add_plate_water).
+   subroutine add_water_faces(model, eactive, jactive, k, force, error, pactive, istep)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
       integer, intent(in) :: k
       real(wp), intent(inout) :: force(:, :)
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: pactive(:)
+      integer, intent(in), optional :: istep
       type(side_table_t) :: table
-      logical, allocatable :: on_joint(:)
+      logical, allocatable :: on_joint(:), on_plate(:)
       integer, allocatable :: same(:)
       real(wp) :: xedge(2, 3), fe(6), h, xm
       integer :: side, j, nen, n
       if (k <= 0) return
       call build_side_table(model%mesh, table)
+      allocate (on_plate(model%mesh%nnode()), source=.false.)
+      if (present(pactive) .and. present(istep)) on_plate = free_plate_nodes(model, pactive, istep)
       allocate (on_joint(model%mesh%nnode()), source=.false.)
       if (allocated(model%joint_sets)) then
          do j = 1, size(model%joint_sets)
@@ -49,6 +59,9 @@ contains
          if (.not. eactive(table%set(side))) cycle
          associate (nodes => table%nodes(:, side))
             if (on_joint(nodes(1)) .and. on_joint(nodes(2))) cycle
+            if (on_plate(nodes(1)) .and. on_plate(nodes(2))) then
+               if (on_free_plate(model, pactive, istep, nodes(1:2))) cycle
+            end if
             same = find_sides(table, nodes)
             n = 0
             do j = 1, size(same)
@@ -71,15 +84,57 @@ contains
       end do
    end subroutine add_water_faces
 
-   !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
-   !> in `pactive`, under level k (0: none), with the sides of step istep: see
-   !> plate_water_load.
-   subroutine add_plate_water(model, pactive, k, istep, force)
+   !> Nodes of the elements of the active plate sets (`pactive`) whose water stands on their
+   !> free faces in step istep.
+   pure function free_plate_nodes(model, pactive, istep) result(on)
       type(model_t), intent(in) :: model
       logical, intent(in) :: pactive(:)
+      integer, intent(in) :: istep
+      logical, allocatable :: on(:)
+      integer :: s
+      allocate (on(model%mesh%nnode()), source=.false.)
+      if (.not. allocated(model%plates)) return
+      do s = 1, min(size(model%plates), size(pactive))
+         if (.not. pactive(s)) cycle
+         if (model%water%plate_side_at(s, istep) /= PLATE_FREE) cycle
+         on(pack(model%plates(s)%conn(1:2, :), .true.)) = .true.
+      end do
+   end function free_plate_nodes
+
+   !> Whether the end nodes `ends` are those of an element of an active plate set
+   !> (`pactive`) whose water stands on its free faces in step istep.
+   pure logical function on_free_plate(model, pactive, istep, ends) result(on)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: pactive(:)
+      integer, intent(in) :: istep, ends(2)
+      integer :: s, e
+      on = .false.
+      do s = 1, min(size(model%plates), size(pactive))
+         if (.not. pactive(s)) cycle
+         if (model%water%plate_side_at(s, istep) /= PLATE_FREE) cycle
+         associate (conn => model%plates(s)%conn)
+            do e = 1, size(conn, 2)
+               if ((conn(1, e) == ends(1) .and. conn(2, e) == ends(2)) .or. &
+                   (conn(1, e) == ends(2) .and. conn(2, e) == ends(1))) then
+                  on = .true.
+                  return
+               end if
+            end do
+         end associate
+      end do
+   end function on_free_plate
+
+   !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
+   !> in `pactive`, under level k (0: none), with the sides of step istep and, for the sets
+   !> whose water stands on their free faces, the element sets `eactive` and joint sets
+   !> `jactive` active: see plate_water_load.
+   subroutine add_plate_water(model, pactive, eactive, jactive, k, istep, force)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: pactive(:), eactive(:), jactive(:)
       integer, intent(in) :: k, istep
       real(wp), intent(inout) :: force(:, :)
       real(wp) :: fe(MAX_BEAM_DOFS)
+      integer, allocatable :: side(:)
       integer :: s, e, nd
       logical :: any_load
       if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
@@ -87,32 +142,31 @@ contains
          if (model%water%plate_side_at(s, istep) == 0) cycle
          if (s > size(pactive)) cycle
          if (.not. pactive(s)) cycle
+         side = plate_water_sides(model, s, istep, eactive, jactive)
          nd = 3*size(model%plates(s)%conn, 1)
          do e = 1, size(model%plates(s)%conn, 2)
-            call plate_water_load(model, s, e, k, istep, fe(1:nd), any_load)
+            call plate_water_load(model, s, e, k, side(e), fe(1:nd), any_load)
             if (any_load) call scatter_plate_vector(model, model%plates(s), e, fe(1:nd), force)
          end do
       end do
    end subroutine add_plate_water
 
    !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
-   !> under level k, with the side of step istep: p = gamma_w (h - y)+ at the element's nodes, interpolated along it like
-   !> its geometry (exact where it lies wholly below or above the level), pressing from the
-   !> side *PLATE_WATER names (a plate is impermeable: the water or the soil's pore pressure
-   !> on its other side is not this load). `loaded`: false (fe = 0) when p = 0 at every node
-   !> or the set has no water.
-   subroutine plate_water_load(model, s, e, k, istep, fe, loaded)
+   !> under level k, pressing from the face `side` (+1 left, -1 right, 0 none: the element's
+   !> entry of plate_water_sides): p = gamma_w (h - y)+ at the element's nodes, interpolated
+   !> along it like its geometry (exact where it lies wholly below or above the level). A
+   !> plate is impermeable: the water or the soil's pore pressure on its other face is not
+   !> this load. `loaded`: false (fe = 0) when p = 0 at every node or side = 0.
+   subroutine plate_water_load(model, s, e, k, side, fe, loaded)
       type(model_t), intent(in) :: model
-      integer, intent(in) :: s, e, k, istep
+      integer, intent(in) :: s, e, k, side
       real(wp), intent(out) :: fe(:)
       logical, intent(out) :: loaded
       real(wp) :: t(2), q(2), p(3), x(2, 3)
-      integer :: j, nen, side
+      integer :: j, nen
       fe = 0.0_wp
       loaded = .false.
-      if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
-      side = model%water%plate_side_at(s, istep)
-      if (side == 0) return
+      if (k <= 0 .or. side == 0) return
       associate (pl => model%plates(s))
          nen = size(pl%conn, 1)
          x(:, 1:nen) = plate_element_x(model, pl, e)
