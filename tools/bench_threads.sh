@@ -21,14 +21,14 @@
 #   2. candidates: OpenBLAS's default kernels where CORE=auto chose others (see below), on
 #      the squares at 1 and 16 threads; Q8 ordered by AMD instead of the rule's METIS
 #      (PECPLAS_ORDERING=AMD) on 1 and 16 threads; OMP_WAIT_POLICY=passive on Q4, 16 threads;
-#      MUMPS (MPI build) on 16 ranks x 1 thread: Q8, Q4, and the footing if MUMPS beat
-#      CHOLMOD on Q8
-#   3. 2, 4 and 8 threads on Q4 and Q8
-#   4. the squares on 1 and 16 threads again, twice (3 runs: the spread)
-#   5. the footing on 4, 8, 2 threads; candidates: BLAS on 8 of 16 threads
-#      (PECPLAS_THREAD_PARTS=1,8,0), OMP_WAIT_POLICY=passive on Q8, MUMPS 4 ranks x 4
-#      threads, Q8 AMD on 4 and 8 threads
-#   6. the footing on 1 and 16 threads again, twice
+#      MUMPS (MPI build) on 16 ranks x 1 thread: Q8, Q4
+#   3. the squares on 1 and 16 threads again (run 2 of 3)
+#   4. 2, 4 and 8 threads on Q4 and Q8
+#   5. the squares on 1 and 16 threads again (run 3 of 3)
+#   6. the footing on 4, 8, 2 threads, and on MUMPS 16 x 1 if MUMPS beat CHOLMOD on Q8; BLAS
+#      on 8 of 16 threads (PECPLAS_THREAD_PARTS=1,8,0), OMP_WAIT_POLICY=passive on Q8, MUMPS
+#      4 ranks x 4 threads, Q8 AMD on 4 and 8 threads
+#   7. the footing on 1 and 16 threads again, twice
 # --small: the same rounds at 1e4 equations, 1 and 2 threads (2 ranks), no time estimates:
 # checks the script end to end on a 2-core machine in about a minute.
 set -u
@@ -145,31 +145,35 @@ device() {
   fi
   sq amd 1 Q8 PECPLAS_ORDERING=AMD; sq amd $NMAX Q8 PECPLAS_ORDERING=AMD
   # the OpenMP team of the element loops sleeps at once when idle instead of spinning (a
-  # 2-thread profile spent 17 % of its CPU samples in libgomp's wait)
+  # 2-thread profile spent 17 % of its CPU samples in libgomp)
   sq passive $NMAX Q4 OMP_WAIT_POLICY=passive
   mp mumps $NMAX 1 Q8; mp mumps $NMAX 1 Q4
-  # the footing on MUMPS only when MUMPS beat CHOLMOD on Q8 (16 threads, both whole runs)
-  local tm tc; tm=$(last_total "^MPI mumps case=Q8 ranks=$NMAX threads=1 ")
-  tc=$(last_total "^RUN rule threads=$NMAX .* Q8 ")
-  if [ -n "$tm" ] && [ -n "$tc" ] && awk "BEGIN {exit !($tm < $tc)}"; then mp mumps $NMAX 1 FOOT
-  else say "SKIP mumps FOOT ranks=$NMAX (MUMPS on Q8: ${tm:-none} s, CHOLMOD: ${tc:-none} s)"; fi
   say "=== left after round 2: $(left) s"
-  # round 3: between the ends
+  # round 3: the squares' ends again (run 2 of 3)
+  sq rule 1 Q4; sq rule $NMAX Q4; sq rule 1 Q8; sq rule $NMAX Q8
+  say "=== left after round 3: $(left) s"
+  # round 4: between the ends
   for T in $MID; do sq rule $T Q4; done
   for T in $MID; do sq rule $T Q8; done
-  say "=== left after round 3: $(left) s"
-  # round 4: the spread of the ends (runs 2 and 3)
-  for T in 2 3; do sq rule 1 Q4; sq rule $NMAX Q4; sq rule 1 Q8; sq rule $NMAX Q8; done
   say "=== left after round 4: $(left) s"
-  # round 5: the footing between the ends; more candidates
+  # round 5: the squares' ends, run 3 of 3
+  sq rule 1 Q4; sq rule $NMAX Q4; sq rule 1 Q8; sq rule $NMAX Q8
+  say "=== left after round 5: $(left) s"
+  # round 6: the footing between the ends and on MUMPS (only if MUMPS beat CHOLMOD on Q8,
+  # both whole runs on 16 threads); more candidates
   for T in 4 8 2; do [ $SMALL = 1 ] && [ $T != 2 ] && continue; ft rule $T; done
+  local tm tc; tm=$(last_total "^MPI mumps case=Q8 ranks=$NMAX threads=1 ")
+  tc=$(last_total "^RUN rule threads=$NMAX .* Q8 ")
+  if [ $SMALL = 1 ] || { [ -n "$tm" ] && [ -n "$tc" ] && awk "BEGIN {exit !($tm < $tc)}"; }; then
+    mp mumps $NMAX 1 FOOT  # (--small: always, to check it)
+  else say "SKIP mumps FOOT ranks=$NMAX (MUMPS on Q8: ${tm:-none} s, CHOLMOD: ${tc:-none} s)"; fi
   sq blas8 $NMAX Q4 PECPLAS_THREAD_PARTS=1,$((NMAX / 2)),0
   sq blas8 $NMAX Q8 PECPLAS_THREAD_PARTS=1,$((NMAX / 2)),0
   sq passive $NMAX Q8 OMP_WAIT_POLICY=passive
   if [ $SMALL = 1 ]; then mp mumps 1 2 Q8; else mp mumps 4 4 Q8; fi
   for T in 4 8; do [ $SMALL = 1 ] || sq amd $T Q8 PECPLAS_ORDERING=AMD; done
-  say "=== left after round 5: $(left) s"
-  # round 6: the footing's spread
+  say "=== left after round 6: $(left) s"
+  # round 7: the footing's spread
   for T in 2 3; do ft rule 1; ft rule $NMAX; done
   say "=== done, left $(left) s; load $(cat /proc/loadavg)"
 }
@@ -182,8 +186,11 @@ left() { echo $(( BUDGET - ($(date +%s) - T0) )); }
 say() { echo "$*" | tee -a "$LOG"; }
 # Seconds one run took on the first 16-core node (threads_node16.log; MUMPS and AMD guessed
 # from the 2-core runs of doc/bench/mumps.md and ordering.md): case threads -> seconds.
+# The seconds a case's last run took replace the estimate once it has run.
+declare -A MEAS=()
 estimate() {
   [ "$SMALL" = 1 ] && { echo 1; return; }
+  [ -n "${MEAS["${3:-} $1 $2"]:-}" ] && { echo "${MEAS["${3:-} $1 $2"]}"; return; }
   case "$1 $2" in
     "Q4 1") echo 13 ;; "Q4 2") echo 11 ;; "Q4 "*) echo 9 ;;
     "Q8 1") echo 29 ;; "Q8 2") echo 24 ;; "Q8 4") echo 21 ;; "Q8 "*) echo 20 ;;
@@ -194,7 +201,7 @@ estimate() {
   esac
 }
 # true when a run of `estimate` seconds still fits (30 % margin), else logs a SKIP line
-fits() { local e; e=$(estimate "$1" "$2")
+fits() { local e; e=$(estimate "$1" "$2" "$3")
   [ "$SMALL" = 1 ] && return 0
   [ $(( e * 13 / 10 )) -le "$(left)" ] && return 0
   say "SKIP $3 $1 threads=$2 (about $e s, $(left) s left)"; return 1; }
@@ -203,14 +210,18 @@ sq() { local tag=$1 n=$2 el=$3 sz line key=$3; shift 3
   [ "$el" = Q4 ] && sz=$Q4 || sz=$Q8
   [ "$tag" = amd ] && key=${el}amd
   fits "$key" "$n" "$tag" || return 0
+  local t0; t0=$(date +%s)
   line=$(env "$@" OMP_NUM_THREADS=$n PECPLAS_BENCH_MATRIX=0 timeout $(( $(estimate "$key" "$n") * 3 + 30 )) \
     pecplas-bench $el $sz $W 2>>"$OUT/err.txt") || { say "FAIL $tag $el threads=$n"; return 0; }
+  MEAS["$tag $key $n"]=$(( $(date +%s) - t0 + 1 ))
   say "RUN $tag threads=$n load=$(cut -d' ' -f1 /proc/loadavg) $line"; }
 # the footing through the program: tag threads [env...]
 ft() { local tag=$1 n=$2; shift 2
   fits FOOT "$n" "$tag" || return 0
+  local t0; t0=$(date +%s)
   { time env OMP_NUM_THREADS=$n "$@" timeout $(( $(estimate FOOT "$n") * 3 + 30 )) \
       pecplas "$FOOT" -o $W/f.h5 > $W/f.log 2>&1 ; } 2> $W/f.time
+  MEAS["$tag FOOT $n"]=$(( $(date +%s) - t0 + 1 ))
   say "FOOT $tag threads=$n time=$(tail -1 $W/f.time) | $(grep -E 'wall time|summary:|threads:|linear solver:|status:' $W/f.log | tr '\n' '|')"; }
 # MUMPS, the MPI build on R ranks of T threads each: tag ranks threads Q4|Q8|FOOT
 mp() { local tag=$1 r=$2 t=$3 c=$4 deck
@@ -223,10 +234,12 @@ mp() { local tag=$1 r=$2 t=$3 c=$4 deck
     [ -f "$W/square_${c}_$sz.msh" ] || { say "SKIP $tag $c (no mesh from pecplas-bench)"; return 0; }
     sed 's/^\*STEP/*SOLVER, LINEAR=MUMPS\n*STEP/' "$W/square_${c}_$sz.inp" > "$deck"
   fi
+  local t0; t0=$(date +%s)
   { time env OMP_NUM_THREADS=$t timeout $(( $(estimate "mumps$c" "$r") * 3 + 30 )) \
       orterun -np $r --bind-to none -x OMP_NUM_THREADS -x LD_LIBRARY_PATH \
       ${OPENBLAS_CORETYPE:+-x OPENBLAS_CORETYPE} \
       pecplas-mpi "$deck" -o $W/m.h5 > $W/m.log 2>&1 ; } 2> $W/m.time
+  MEAS["$tag mumps$c $r"]=$(( $(date +%s) - t0 + 1 ))
   say "MPI $tag case=$c ranks=$r threads=$t time=$(tail -1 $W/m.time) | $(grep -E 'wall time|summary:|threads:|linear solver:|status:' $W/m.log | tr '\n' '|')"; }
 
 case ${1:-full} in
