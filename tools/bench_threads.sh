@@ -105,7 +105,7 @@ device() {
   export OPAL_PREFIX=$B OPAL_PKGLIBDIR=$B/ompi/openmpi3 OPAL_PKGDATADIR=$B/share/openmpi \
     OPAL_BINDIR=$B/lib OPAL_LIBDIR=$B/lib PMIX_PREFIX=$B PMIX_PKGLIBDIR=$B/ompi/pmix \
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader \
-    OMPI_MCA_pml=ob1 OMPI_MCA_rmaps_base_oversubscribe=1
+    OMPI_MCA_pml=ob1 OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_backing_directory=/tmp
   local T FOOTN
   if [ $SMALL = 1 ]; then Q4=70; Q8=41; FOOTN=10000; NMAX=2; MID=""
   else Q4=707; Q8=408; FOOTN=300000; NMAX=16; MID="2 4 8"; fi
