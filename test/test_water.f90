@@ -15,7 +15,7 @@ module test_water
    use pecplas_io_results_increment, only: plate_fields_t
    use pecplas_fe_plate_output, only: plate_results
    use test_water_free, only: test_free_stages, test_free_equals_split, test_free_quay, &
-      test_free_bad_mode
+      test_free_raft, test_free_bad_mode
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
@@ -44,6 +44,7 @@ contains
                new_unittest('water_on_free_plate_faces', test_free_stages), &
                new_unittest('water_free_faces_equal_split_sets', test_free_equals_split), &
                new_unittest('water_free_faces_quay_wall', test_free_quay), &
+               new_unittest('water_free_faces_submerged_raft', test_free_raft), &
                new_unittest('water_free_faces_bad_mode', test_free_bad_mode), &
                new_unittest('bad_decks', test_bad_decks), &
                new_unittest('gravity_column', test_gravity_column)]

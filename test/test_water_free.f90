@@ -16,7 +16,8 @@ module test_water_free
    use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
    private
-   public :: test_free_stages, test_free_equals_split, test_free_quay, test_free_bad_mode
+   public :: test_free_stages, test_free_equals_split, test_free_quay, test_free_raft, &
+      test_free_bad_mode
 
    character(len=*), parameter :: OUT = 'build/test_out/water/'
    !> The pit: wall height, level of the pit water, its gamma_w, the bottoms of the two
@@ -224,74 +225,189 @@ contains
       end do
    end subroutine test_free_equals_split
 
-   !> A quay wall (x = 0, 0 <= y <= 6, six 2-node plate elements, clamped at its base) with
-   !> dry ground on its left only, sharing its nodes (no joints), held at every node off the
-   !> wall, water at y = 4 from the start. Under FREE the wall's right face is free from the
-   !> start and takes the water, and the ground's side along the wall is no free face; under
-   !> NONE the water presses on that side of the ground instead (as before FREE existed).
-   !> Either way the water stands on a closed contour (the ground's far side x = -2, its base,
-   !> the wall's water face), whose horizontal resultant is zero: the horizontal reactions
-   !> sum to zero (1e-10 of gamma_w h^2 / 2 = 80: equilibrium of the whole, to round-off).
-   !> Water counted twice on the wall's line (the plate's and the ground's side) or on
-   !> neither would leave -80 or +80.
-   subroutine test_free_quay(error)
+   !> A quay wall (x = 0, 0 <= y <= 6, six 2-node plate elements walked upwards, clamped at
+   !> its base) with dry ground on its left only, sharing its nodes (no joints), held at every
+   !> node off the wall, the sea at y = 4 from the start, the wall under `mode` ('' : not
+   !> named in *PLATE_WATER). Writes the deck and runs it; rx, ry: the sums of the horizontal
+   !> and vertical reactions; u: the displacements.
+   subroutine run_quay(name, mode, rx, ry, u, error)
+      character(len=*), intent(in) :: name, mode
+      real(wp), intent(out) :: rx, ry
+      real(wp), allocatable, intent(out) :: u(:, :)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       type(problem_t) :: problem
       type(results_reader_t) :: file
       real(wp), allocatable :: reac(:, :)
-      real(wp) :: rx(2)
-      character(len=4) :: mode(2) = ['FREE', 'NONE']
-      integer :: code, k, u, r, c
+      integer :: code, k, r, c
       call make_directories(OUT)
-      do k = 1, 2
-         open (newunit=u, file=OUT//'quay_'//trim(mode(k))//'.inp', status='replace', &
-            action='write')
-         write (u, '(a)') '*TITLE', 'quay wall', '*UNITS', 'kN, m, kPa', '*NODES'
-         do r = 0, 6
-            do c = 0, 2
-               write (u, '(i0,a,i0,a,i0)') 3*r + c + 1, ', ', c - 2, ', ', r
-            end do
+      open (newunit=k, file=OUT//name//'.inp', status='replace', action='write')
+      write (k, '(a)') '*TITLE', 'quay wall', '*UNITS', 'kN, m, kPa', '*NODES'
+      do r = 0, 6
+         do c = 0, 2
+            write (k, '(i0,a,i0,a,i0)') 3*r + c + 1, ', ', c - 2, ', ', r
          end do
-         write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=ground'
-         do r = 0, 5
-            do c = 0, 1
-               write (u, '(i0,4(a,i0))') 2*r + c + 1, ', ', 3*r + c + 1, ', ', 3*r + c + 2, &
-                  ', ', 3*r + c + 5, ', ', 3*r + c + 4
-            end do
+      end do
+      write (k, '(a)') '*ELEMENTS, TYPE=Q4, SET=ground'
+      do r = 0, 5
+         do c = 0, 1
+            write (k, '(i0,4(a,i0))') 2*r + c + 1, ', ', 3*r + c + 1, ', ', 3*r + c + 2, &
+               ', ', 3*r + c + 5, ', ', 3*r + c + 4
          end do
-         write (u, '(a)') '*MATERIAL, NAME=ground', 'E = 1e4, NU = 0.3', &
-            '*SECTION, SET=ground, MATERIAL=ground', '*DRY', 'ground', '*NSET, NAME=held'
-         do r = 0, 6
-            write (u, '(i0,a,i0)') 3*r + 1, ', ', 3*r + 2
-         end do
-         write (u, '(a)') '*BOUNDARY', 'held, XY', '3, ALL', &
-            '*PLATE, SET=wall, EA=1e7, EI=1e5'
-         do r = 0, 5
-            write (u, '(i0,a,i0)') 3*r + 3, ', ', 3*r + 6
-         end do
-         write (u, '(a)') '*WATER, NAME=sea, GAMMA_W=10, LEVEL=4', '*PLATE_WATER', &
-            'wall, '//trim(mode(k)), '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
-         close (u)
-         code = run_deck(OUT//'quay_'//trim(mode(k))//'.inp', OUT//'quay_'//trim(mode(k))// &
-            '.h5', .true., model, problem)
-         call check(error, code == 0, 'quay wall '//trim(mode(k))//' runs (exit '// &
-            itoa(code)//')')
+      end do
+      write (k, '(a)') '*MATERIAL, NAME=ground', 'E = 1e4, NU = 0.3', &
+         '*SECTION, SET=ground, MATERIAL=ground', '*DRY', 'ground', '*NSET, NAME=held'
+      do r = 0, 6
+         write (k, '(i0,a,i0)') 3*r + 1, ', ', 3*r + 2
+      end do
+      write (k, '(a)') '*BOUNDARY', 'held, XY', '3, ALL', '*PLATE, SET=wall, EA=1e7, EI=1e5'
+      do r = 0, 5
+         write (k, '(i0,a,i0)') 3*r + 3, ', ', 3*r + 6
+      end do
+      write (k, '(a)') '*WATER, NAME=sea, GAMMA_W=10, LEVEL=4'
+      if (len(mode) > 0) write (k, '(a)') '*PLATE_WATER', 'wall, '//mode
+      write (k, '(a)') '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
+      close (k)
+      code = run_deck(OUT//name//'.inp', OUT//name//'.h5', .true., model, problem)
+      call check(error, code == 0, 'quay wall '//name//' runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call file%open(OUT//name//'.h5', error)
+      if (allocated(error)) return
+      call file%dataset('/increments/000001/reaction', reac, error)
+      if (allocated(error)) return
+      call file%close()
+      rx = sum(reac(1, :))
+      ry = sum(reac(2, :))
+      u = problem%state%u
+   end subroutine run_quay
+
+   !> The quay wall of run_quay. The water stands on a contour that the wall closes: the
+   !> ground's far side x = -2 (pushing +x, gamma_w h^2 / 2 = 80 for h = 4), its base, and
+   !> the wall. The wall is impermeable: the ground's side along it is never a free face, in
+   !> any mode, and the wall takes the water on its faces by its mode. FREE (the wall's right
+   !> face is free from the start), RIGHT (the sea's side, given) and the default (not named:
+   !> FREE) put the water once on the wall's line, so the horizontal reactions sum to zero
+   !> (1e-10 of 80: equilibrium of the whole, to round-off); the default is the same run as
+   !> FREE (displacements and reactions to 1e-10 of the largest: one deck, the same loads).
+   !> NONE (no water on the wall, by the user's word) leaves the far side's 80 to the
+   !> supports: -80. The water counted twice on the wall's line (the plate's and the
+   !> ground's side, as RIGHT did while the ground's side along a plate was a free face)
+   !> would give +80.
+   subroutine test_free_quay(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=5), parameter :: MODES(4) = [character(len=5) :: 'FREE', 'RIGHT', '', &
+         'NONE']
+      real(wp), parameter :: F = 0.5_wp*10.0_wp*4.0_wp**2
+      real(wp) :: rx(4), ry(4), expect
+      real(wp), allocatable :: u(:, :), u_free(:, :)
+      integer :: k
+      do k = 1, 4
+         call run_quay('quay_'//label(MODES(k)), trim(MODES(k)), rx(k), ry(k), u, error)
          if (allocated(error)) return
-         call file%open(OUT//'quay_'//trim(mode(k))//'.h5', error)
+         expect = merge(-F, 0.0_wp, MODES(k) == 'NONE')
+         call check_close(error, rx(k), expect, 0.0_wp, 'horizontal reactions ('// &
+            label(MODES(k))//') sum to '//itoa(nint(expect))//': the water on the wall counted '// &
+            trim(merge('never', 'once ', MODES(k) == 'NONE')), atol=1.0e-10_wp*F)
+         if (allocated(error)) return
+         if (k == 1) u_free = u
+         if (k == 3) then
+            call check_close(error, maxval(abs(u - u_free)), 0.0_wp, 0.0_wp, &
+               'displacements: default = FREE', atol=1.0e-10_wp*maxval(abs(u_free)))
+            if (allocated(error)) return
+            call check_close(error, abs(rx(3) - rx(1)) + abs(ry(3) - ry(1)), 0.0_wp, &
+               0.0_wp, 'reactions: default = FREE', atol=1.0e-10_wp*F)
+            if (allocated(error)) return
+         end if
+      end do
+   end subroutine test_free_quay
+
+   !> A raft on a saturated column (width B = 1, height H = 10, ten Q4, base held, sides on
+   !> rollers; GAMMA_SAT = 20, the K0 procedure, then a nil step) under the level y = 12:
+   !> d = 2 m of water stand on the raft, one 2-node plate on the column's top side (walked
+   !> from x = 0 to x = 1: the water on its left face). The vertical reactions balance the
+   !> column's saturated weight, the water's weight on the raft and the water's pressure
+   !> on the base (a free face of the soil, pushing up): R_y = gamma_sat H B + gamma_w d B
+   !> - gamma_w (H + d) B = (gamma_sat - gamma_w) H B = 100, the buoyant weight; to 1e-10
+   !> of it (equilibrium of the whole, to round-off) for the default (the raft not named in
+   !> *PLATE_WATER: FREE, the top face free, the soil's top side covered by the raft) and for
+   !> LEFT. Water counted twice (the raft's load and the soil's top side as a free face, as
+   !> LEFT did before) would give 120; NONE (no water on the raft, by the user's word; the
+   !> soil under the raft cannot take it) gives 80. The raft carries the water itself: its
+   !> consistent load puts q L / 2 (q = gamma_w d = 20, L = 1) on each end node as the soil's
+   !> side did, so the K0 state stays in equilibrium, the soil does not move, and the raft
+   !> is a simply supported beam under q (the end moments of its load rotate its ends):
+   !> end shear q L / 2 = 10 and end rotations q L^3 / (24 EI), to 1e-10 (one element,
+   !> exact; the soil's nodes still to round-off). A transparent raft carried nothing.
+   subroutine test_free_raft(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=4), parameter :: MODES(3) = [character(len=4) :: '', 'LEFT', 'NONE']
+      real(wp), parameter :: GSAT = 20.0_wp, GW = 10.0_wp, HC = 10.0_wp, D = 2.0_wp
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(results_reader_t) :: file
+      real(wp), parameter :: Q = GW*D, EI = 1.0e5_wp
+      real(wp), allocatable :: reac(:, :), nf(:, :), rot(:)
+      real(wp) :: expect
+      character(len=:), allocatable :: name
+      integer :: k, u, i, code
+      call make_directories(OUT)
+      do k = 1, 3
+         name = 'raft_'//label(MODES(k))
+         open (newunit=u, file=OUT//name//'.inp', status='replace', action='write')
+         write (u, '(a)') '*TITLE', 'submerged raft', '*UNITS', 'kN, m, kPa', '*NODES'
+         do i = 0, 10
+            write (u, '(i0,a,i0)') 2*i + 1, ', 0, ', i
+            write (u, '(i0,a,i0)') 2*i + 2, ', 1, ', i
+         end do
+         write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=soil'
+         do i = 1, 10
+            write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
+         end do
+         write (u, '(a)') '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 22', &
+            '*BOUNDARY', 'base, XY', 'sides, X', '*MATERIAL, NAME=soil', &
+            'E = 3e4, NU = 0.25, GAMMA_UNSAT = 18, GAMMA_SAT = 20', &
+            '*SECTION, SET=soil, MATERIAL=soil', '*PLATE, SET=raft, EA=1e7, EI=1e5', '21, 22', &
+            '*WATER, NAME=lake, GAMMA_W=10, LEVEL=12'
+         if (len_trim(MODES(k)) > 0) write (u, '(a)') '*PLATE_WATER', 'raft, '//trim(MODES(k))
+         write (u, '(a)') '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5', &
+            '*STEP, NAME=nil, INCREMENTS=1', '*END STEP'
+         close (u)
+         code = run_deck(OUT//name//'.inp', OUT//name//'.h5', .true., model, problem)
+         call check(error, code == 0, name//' runs (exit '//itoa(code)//')')
+         if (allocated(error)) return
+         call file%open(OUT//name//'.h5', error)
          if (allocated(error)) return
          call file%dataset('/increments/000001/reaction', reac, error)
          if (allocated(error)) return
+         call file%dataset('/increments/000001/plates/raft/node_forces', nf, error)
+         if (allocated(error)) return
+         call file%dataset('/increments/000001/plates/raft/rotation', rot, error)
+         if (allocated(error)) return
          call file%close()
-         rx(k) = sum(reac(1, :))
-      end do
-      do k = 1, 2
-         call check_close(error, rx(k), 0.0_wp, 0.0_wp, 'horizontal reactions ('// &
-            trim(mode(k))//') sum to zero: the water on the wall counted once', &
-            atol=1.0e-10_wp*0.5_wp*10.0_wp*4.0_wp**2)
+         if (MODES(k) /= 'NONE') then
+            call check_close(error, maxval(abs(abs(nf(2, :)) - 0.5_wp*Q)), 0.0_wp, 0.0_wp, &
+               name//': the raft carries its water, end shear q L / 2', atol=1.0e-10_wp*Q)
+            if (allocated(error)) return
+            call check_close(error, maxval(abs(abs(rot) - Q/(24.0_wp*EI))), 0.0_wp, 0.0_wp, &
+               name//': end rotations q L^3 / (24 EI)', atol=1.0e-10_wp*Q/(24.0_wp*EI))
+            if (allocated(error)) return
+         end if
+         expect = (GSAT - GW)*HC
+         if (MODES(k) == 'NONE') expect = expect - GW*D
+         call check_close(error, sum(reac(2, :)), expect, 0.0_wp, name//': vertical '// &
+            'reactions = the weights of soil and water less the uplift on the base', &
+            atol=1.0e-10_wp*(GSAT - GW)*HC)
          if (allocated(error)) return
       end do
-   end subroutine test_free_quay
+   end subroutine test_free_raft
+
+   !> The mode word of a test deck, DEFAULT for none (the plate set not named).
+   pure function label(mode) result(text)
+      character(len=*), intent(in) :: mode
+      character(len=:), allocatable :: text
+      text = trim(mode)
+      if (len(text) == 0) text = 'DEFAULT'
+   end function label
 
    !> *PLATE_WATER with a mode word that is none of LEFT, RIGHT, FREE, NONE: refused with the
    !> deck's file and line of the data line and the modes in the message, exit 2, no results.

@@ -46,8 +46,8 @@ contains
    end function plate_nodes
 
    !> Fields of plate set s at the converged state (u, pstate, pattern factors); `level`:
-   !> the phreatic level in force (groundwater: the water's pressure on a plate that
-   !> *PLATE_WATER names is one of its own loads; default none); `step`: the step whose
+   !> the phreatic level in force (groundwater: the water's pressure on the plate's faces
+   !> by its *PLATE_WATER mode is one of its own loads; default none); `step`: the step whose
    !> *PLATE_WATER sides are in force (default the last).
    subroutine plate_results(model, u, pstate, factors, s, f, error, level, step)
       type(model_t), intent(in) :: model

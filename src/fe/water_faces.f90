@@ -6,7 +6,8 @@
 !> flooded pit, a level above the ground), and on supported faces the pressure goes into the
 !> reactions, which are then those of the effective stresses and the buoyant weight.
 !> Joint faces are left out: a joint carries the pore pressure itself (pecplas_fe_pore); so
-!> are the sides of plates whose water stands on their free faces (*PLATE_WATER FREE).
+!> are the sides an element of an active plate set lies on: a plate is impermeable and takes
+!> the free water on its own faces, as its *PLATE_WATER mode says (add_plate_water).
 module pecplas_fe_water_faces
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -17,7 +18,6 @@ module pecplas_fe_water_faces
    use pecplas_structures_beam, only: beam_line_load, MAX_BEAM_DOFS
    use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
    use pecplas_model_plate_water_sides, only: plate_water_sides
-   use pecplas_water_type, only: PLATE_FREE
    implicit none (type, external)
    private
 
@@ -26,18 +26,18 @@ module pecplas_fe_water_faces
 contains
 
    !> force(2, nnode) += the water's pressure on the free faces of the active element sets
-   !> `eactive` under level k (0: none), joint sets `jactive` active. With `pactive` and
-   !> `istep`: a side of an element of an active plate set whose water stands on its free
-   !> faces in step istep (*PLATE_WATER FREE) is no free face: the impermeable plate lies
-   !> against it and takes the water on its own free face (add_plate_water).
-   subroutine add_water_faces(model, eactive, jactive, k, force, error, pactive, istep)
+   !> `eactive` under level k (0: none), joint sets `jactive` active. With `pactive`: a side
+   !> of an element of an active plate set is no free face, whatever the set's *PLATE_WATER
+   !> mode: the impermeable plate lies against it and takes the water on its own faces
+   !> (add_plate_water), so the water is counted once whether the plate shares its nodes
+   !> with the soil or joints lie between.
+   subroutine add_water_faces(model, eactive, jactive, k, force, error, pactive)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
       integer, intent(in) :: k
       real(wp), intent(inout) :: force(:, :)
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: pactive(:)
-      integer, intent(in), optional :: istep
       type(side_table_t) :: table
       logical, allocatable :: on_joint(:), on_plate(:)
       integer, allocatable :: same(:)
@@ -46,7 +46,7 @@ contains
       if (k <= 0) return
       call build_side_table(model%mesh, table)
       allocate (on_plate(model%mesh%nnode()), source=.false.)
-      if (present(pactive) .and. present(istep)) on_plate = free_plate_nodes(model, pactive, istep)
+      if (present(pactive)) on_plate = active_plate_nodes(model, pactive)
       allocate (on_joint(model%mesh%nnode()), source=.false.)
       if (allocated(model%joint_sets)) then
          do j = 1, size(model%joint_sets)
@@ -60,7 +60,7 @@ contains
          associate (nodes => table%nodes(:, side))
             if (on_joint(nodes(1)) .and. on_joint(nodes(2))) cycle
             if (on_plate(nodes(1)) .and. on_plate(nodes(2))) then
-               if (on_free_plate(model, pactive, istep, nodes(1:2))) cycle
+               if (on_active_plate(model, pactive, nodes(1:2))) cycle
             end if
             same = find_sides(table, nodes)
             n = 0
@@ -84,34 +84,30 @@ contains
       end do
    end subroutine add_water_faces
 
-   !> Nodes of the elements of the active plate sets (`pactive`) whose water stands on their
-   !> free faces in step istep.
-   pure function free_plate_nodes(model, pactive, istep) result(on)
+   !> Nodes of the elements of the active plate sets (`pactive`).
+   pure function active_plate_nodes(model, pactive) result(on)
       type(model_t), intent(in) :: model
       logical, intent(in) :: pactive(:)
-      integer, intent(in) :: istep
       logical, allocatable :: on(:)
       integer :: s
       allocate (on(model%mesh%nnode()), source=.false.)
       if (.not. allocated(model%plates)) return
       do s = 1, min(size(model%plates), size(pactive))
          if (.not. pactive(s)) cycle
-         if (model%water%plate_side_at(s, istep) /= PLATE_FREE) cycle
          on(pack(model%plates(s)%conn(1:2, :), .true.)) = .true.
       end do
-   end function free_plate_nodes
+   end function active_plate_nodes
 
    !> Whether the end nodes `ends` are those of an element of an active plate set
-   !> (`pactive`) whose water stands on its free faces in step istep.
-   pure logical function on_free_plate(model, pactive, istep, ends) result(on)
+   !> (`pactive`).
+   pure logical function on_active_plate(model, pactive, ends) result(on)
       type(model_t), intent(in) :: model
       logical, intent(in) :: pactive(:)
-      integer, intent(in) :: istep, ends(2)
+      integer, intent(in) :: ends(2)
       integer :: s, e
       on = .false.
       do s = 1, min(size(model%plates), size(pactive))
          if (.not. pactive(s)) cycle
-         if (model%water%plate_side_at(s, istep) /= PLATE_FREE) cycle
          associate (conn => model%plates(s)%conn)
             do e = 1, size(conn, 2)
                if ((conn(1, e) == ends(1) .and. conn(2, e) == ends(2)) .or. &
@@ -122,12 +118,12 @@ contains
             end do
          end associate
       end do
-   end function on_free_plate
+   end function on_active_plate
 
-   !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
-   !> in `pactive`, under level k (0: none), with the sides of step istep and, for the sets
-   !> whose water stands on their free faces, the element sets `eactive` and joint sets
-   !> `jactive` active: see plate_water_load.
+   !> force(:, :) += the water's pressure on the plate sets active in `pactive` under level
+   !> k (0: none), by their *PLATE_WATER mode in step istep (FREE where *PLATE_WATER does
+   !> not name them) and, for the sets whose water stands on their free faces, the element
+   !> sets `eactive` and joint sets `jactive` active: see plate_water_load.
    subroutine add_plate_water(model, pactive, eactive, jactive, k, istep, force)
       type(model_t), intent(in) :: model
       logical, intent(in) :: pactive(:), eactive(:), jactive(:)

@@ -6,6 +6,7 @@
 !> pore pressure of its soil onto the plate itself). Where both faces are covered the pore
 !> pressure acts through the soil and joints; where both are free the two equal pressures
 !> cancel. The activity is the run's (passed in) or the plan's for a step (phase_plan).
+!> FREE is the mode of a plate set *PLATE_WATER does not name.
 module pecplas_model_plate_water_sides
    use pecplas_base_kinds, only: wp
    use pecplas_model_type, only: model_t

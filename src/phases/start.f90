@@ -410,13 +410,13 @@ contains
          end if
          return
       end if
-      ! the water standing on the free faces and on the plates *PLATE_WATER names
+      ! the water standing on the free faces and on the plates (by their *PLATE_WATER modes)
       if (model%water%used() .and. level > 0) then
          allocate (jon(0), pon(0))
          if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
          if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
          call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error, &
-            pon, istep)
+            pon)
          if (allocated(error)) return
          call add_plate_water(model, pon, eactive, jon, level, istep, &
             problem%system%initial_force)
@@ -474,7 +474,7 @@ contains
       allocate (jon(0), pon(0))
       if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
       if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
-      call add_water_faces(model, eactive, jon, level, w, error, pon, istep)
+      call add_water_faces(model, eactive, jon, level, w, error, pon)
       if (allocated(error)) return
       call add_plate_water(model, pon, eactive, jon, level, istep, w)
       if (allocated(problem%phase%patterns_on)) then

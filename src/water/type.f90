@@ -32,7 +32,7 @@ module pecplas_water_type
       logical, allocatable :: step_reset(:)
       !> Per plate set (model%plates): the side the water stands on (*PLATE_WATER):
       !> +1 left, -1 right of the plate walked from its first node to its last, 0 none,
-      !> PLATE_FREE its free faces.
+      !> PLATE_FREE its free faces (the deck's default for a set *PLATE_WATER does not name).
       integer, allocatable :: plate_side(:)
       !> step_plate(s, i): the side plate set s takes from the start of step i on
       !> (*PLATE_WATER inside a step: +1, -1, 0 none, PLATE_FREE) or PLATE_KEEP.

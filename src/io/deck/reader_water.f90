@@ -153,7 +153,7 @@ contains
    !> *PLATE_WATER: data lines `plate_set, LEFT|RIGHT|FREE|NONE`: the water stands on that
    !> side of the plate (walked from its first node to its last), or on its free faces
    !> (FREE), and presses on it below the level. Before the steps: from the start; inside a
-   !> step: from that step on (NONE: no more).
+   !> step: from that step on (NONE: no more). A plate set no line names has FREE.
    subroutine read_plate_water(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
@@ -422,7 +422,8 @@ contains
       end if
       k = 0
       if (allocated(model%plates)) k = size(model%plates)
-      allocate (model%water%plate_side(k), source=0)
+      ! a plate set *PLATE_WATER does not name takes the water on its free faces
+      allocate (model%water%plate_side(k), source=PLATE_FREE)
       allocate (model%water%step_plate(k, nstep), source=PLATE_KEEP)
       if (allocated(state%water%plate)) then
          do i = 1, size(state%water%plate)
