@@ -18,6 +18,7 @@ program bench_massif
    use bench_mesh, only: square_case
    use bench_matrix, only: create_matrix_file
    use bench_process, only: cpu_times, peak_memory_mb
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    character(len=:), allocatable :: etype, base
    integer :: n, code, err, length
@@ -28,6 +29,7 @@ program bench_massif
    integer(hid_t) :: f
    real(wp) :: t0, total, cpu0(2), cpu1(2), peak
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    call square_case('usage: pecplas-bench Q4|Q8 N [DIR]', etype, n, base)
 
    cpu0 = cpu_times()

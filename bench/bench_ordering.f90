@@ -25,6 +25,7 @@ program bench_ordering
       ORDER_METIS, ORDER_NESDIS, ORDER_METIS_NODES
    use bench_mesh, only: square_case
    use bench_process, only: cpu_times
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    integer(c_int), parameter :: METHODS(7) = [ORDER_AMD, ORDER_CHOLMOD_DEFAULT, ORDER_METIS, &
       ORDER_NESDIS, ORDER_METIS_NODES, ORDER_RULE, ORDER_RULE]
@@ -44,6 +45,7 @@ program bench_ordering
    real(wp) :: cpu(2)
    integer(c_int) :: rc, neq
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    call square_case('usage: pecplas-bench-ordering Q4|Q8 N [DIR] [REPEATS] [ORDERINGS]', &
       etype, n, base)
    repeats = 3
