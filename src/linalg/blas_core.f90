@@ -121,7 +121,7 @@ contains
       call get_environment_variable(name, length=length, status=status)
       value = ''
       if (status /= 0 .or. length == 0) return
-      allocate (character(len=length) :: value)
+      value = repeat(' ', length)
       call get_environment_variable(name, value)
    end function env
 

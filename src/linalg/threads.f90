@@ -149,16 +149,18 @@ contains
       type(thread_setting_t), intent(in) :: setting
       character(len=:), allocatable :: text
       character(len=16) :: work
-      character(len=:), allocatable :: blas
+      character(len=:), allocatable :: blas, detail
       blas = setting%blas
       if (len(blas) == 0) blas = 'without thread control'
-      if (allocated(setting%blas_threading)) then
-         if (len(setting%blas_threading) > 0) blas = blas//' ('//setting%blas_threading//')'
-      end if
+      detail = ''
+      if (allocated(setting%blas_threading)) detail = setting%blas_threading
       if (allocated(setting%blas_core)) then
-         if (len(setting%blas_core) > 0) blas = blas//' ('//setting%blas_core//' kernels, '// &
-            setting%blas_core_source//')'
+         if (len(setting%blas_core) > 0) then
+            if (len(detail) > 0) detail = detail//'; '
+            detail = detail//setting%blas_core//' kernels: '//setting%blas_core_source
+         end if
       end if
+      if (len(detail) > 0) blas = blas//' ('//detail//')'
       text = 'element loops '//itoa(setting%loops)//', CHOLMOD regions '// &
          itoa(setting%regions)//', BLAS '//blas//' '//itoa(setting%blas_threads)
       if (setting%blas_work > 0.0) then
