@@ -139,9 +139,11 @@ device() {
   ft rule 1; ft rule $NMAX
   say "=== left after round 1: $(left) s"
   # round 2: candidates at the ends
-  if [ "$core" != none ]; then  # OpenBLAS's default kernels, as the program runs today
-    sq blasdefault 1 Q4 -u OPENBLAS_CORETYPE; sq blasdefault $NMAX Q4 -u OPENBLAS_CORETYPE
-    sq blasdefault 1 Q8 -u OPENBLAS_CORETYPE; sq blasdefault $NMAX Q8 -u OPENBLAS_CORETYPE
+  if [ "$core" != none ]; then  # OpenBLAS's default kernels (the program would set the
+    # same ones as CORE=auto by itself: PECPLAS_BLAS_CORE=keep stops it)
+    local keep="-u OPENBLAS_CORETYPE PECPLAS_BLAS_CORE=keep"
+    sq blasdefault 1 Q4 $keep; sq blasdefault $NMAX Q4 $keep
+    sq blasdefault 1 Q8 $keep; sq blasdefault $NMAX Q8 $keep
   fi
   sq amd 1 Q8 PECPLAS_ORDERING=AMD; sq amd $NMAX Q8 PECPLAS_ORDERING=AMD
   # the OpenMP team of the element loops sleeps at once when idle instead of spinning (a
