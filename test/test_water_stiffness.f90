@@ -65,8 +65,9 @@ contains
    !> drained D, so the two runs have the same displacements and sigma' - p_excess m equals
    !> the drained sigma, and the estimate eta and the energy norm are the same. They differ
    !> by the rounding of the two D (a few ulps) amplified by the condition number of K; the
-   !> tolerance 1e-6 lies far above that (measured 1e-14) and far below the gap of an
-   !> estimate that left the water out (eta 0.48 of the drained K_u value, energy norm 0.37).
+   !> tolerance 1e-6 lies far above that (measured 1e-15) and far below the gap of an
+   !> estimate that left the water out (C'^-1 on sigma': eta 0.965, energy norm 0.903 of the
+   !> drained K_u values).
    subroutine test_undrained_estimator(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
