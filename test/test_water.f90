@@ -8,15 +8,14 @@ module test_water
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
-   use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_base_strings, only: itoa
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_io_results_increment, only: plate_fields_t
    use pecplas_fe_plate_output, only: plate_results
-   use test_phases, only: last_line
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
    private
    public :: collect_water
@@ -425,17 +424,13 @@ contains
    !> without UNDRAINED_B, UNDRAINED_B on an elastic material.
    subroutine test_bad_decks(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: MAT = '*MATERIAL, NAME=clay'//NL//'E = 1e4, NU = 0.3'//NL
       character(len=*), parameter :: SECS = '*SECTION, SET=low, MATERIAL=clay'//NL// &
          '*SECTION, SET=high, MATERIAL=clay'//NL
       character(len=*), parameter :: STEP = '*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'
       character(len=160) :: bodies(6), marker(6), expect(6)
       character(len=:), allocatable :: deck, body
-      integer :: k, i, code
-      logical :: exists
+      integer :: k, i
       bodies(1) = '*WATER, NAME=w, GAMMA_W=10|0.2, 5|0.8, 6|'
       marker(1) = '*WATER, NAME=w, GAMMA_W=10'
       expect(1) = 'does not cross the model'
@@ -466,19 +461,8 @@ contains
          if (k /= 2 .and. k /= 5 .and. k /= 6) body = MAT//body
          deck = OUT//'bad'//itoa(k)//'.inp'
          call write_column(deck, 4, 4.0_wp, 2.0_wp, body//SECS//STEP)
-         call read_deck(deck, model, e)
-         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
-         if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
-            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
-         if (allocated(error)) return
-         deallocate (e)
-         open (newunit=i, file=OUT//'bad.h5', status='replace')
-         close (i, status='delete')
-         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
-         inquire (file=OUT//'bad.h5', exist=exists)
-         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
-            itoa(code)//', results file written: '//merge('yes', 'no ', exists))
+         call check_refused(error, deck, trim(marker(k)), trim(expect(k)), OUT//'bad.h5', &
+            'bad deck '//itoa(k))
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks
