@@ -51,6 +51,23 @@ def test_vonmises_footing_newton(tmp_path, element):
     assert abs(plateau / CCX_PLATEAU[element] - 1.0) <= 0.005
 
 
+@pytest.mark.parametrize("element", ["Q8", "Q8R"])
+def test_mohr_coulomb_footing_newton(tmp_path, element):
+    """The same footing on Mohr-Coulomb soil (c = 100 kPa, phi = psi = 30 deg, 0.2 m in 20
+    increments; 2 003 equations): completes with no cut in at most 5 iterations per
+    increment on average, the issue's target for every soil. Measured 84 and 84 with the
+    extrapolated start of each increment (doc/theory.md §4); with the tangent predictor
+    before it, 104 and 105 (5.2 per increment), the plastic zone spreading by hundreds of
+    points per increment and the iteration crawling while points at its front switch
+    between elastic and plastic."""
+    text = decks.ours(element, 1, "mc", "settle", 20, decks.SETTLE["mc"])
+    assert "METHOD" not in text  # the default method
+    total, n = _summary(text, tmp_path, f"footing_mc_{element}")
+    print(f"{element}: {n} increments, {total} iterations ({total / n:.2f} per increment)")
+    assert n == 20, "an increment was cut"
+    assert total <= 5 * 20
+
+
 def _plateau(path, element):
     with Results(path) as res:
         reaction = res.field(res.last_key(), "reaction")
