@@ -38,7 +38,7 @@ contains
       real(wp), intent(out) :: f(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: xe(2, MAX_NODES), ue(2*MAX_NODES), ke(2*MAX_NODES, 2*MAX_NODES), &
-         fe(2*MAX_NODES), delastic(NCOMP, NCOMP)
+         fe(2*MAX_NODES), delastic(NCOMP, NCOMP), kwn
       real(wp), allocatable :: d(:, :, :)
       logical, allocatable :: moved(:)
       integer :: s, e, k, nn, nd
@@ -51,7 +51,10 @@ contains
                     mat => model%materials(set_material(model, s, state%sets(s)))%m)
             nn = rules(s)%nnode
             nd = 2*nn
+            ! an undrained set: plus the pore water's volumetric stiffness, as in the assembly
+            kwn = model%water%kwn(s, set_material(model, s, st))
             call mat%elastic_tangent(delastic)
+            delastic(1:3, 1:3) = delastic(1:3, 1:3) + kwn
             d = spread(delastic, 3, st%ngauss)
             do e = 1, size(set%conn, 2)
                if (.not. any(moved(set%conn(:, e)))) cycle
@@ -60,7 +63,10 @@ contains
                   ue(2*k - 1:2*k) = merge(dup(:, set%conn(k, e)), 0.0_wp, &
                      dofs%eq(:, set%conn(k, e)) == 0)
                end do
-               if (tangent .and. allocated(st%tangent)) d = st%tangent(:, :, :, e)
+               if (tangent .and. allocated(st%tangent)) then
+                  d = st%tangent(:, :, :, e)
+                  d(1:3, 1:3, :) = d(1:3, 1:3, :) + kwn
+               end if
                call massif_stiffness(rules(s), model%analysis%kind, model%analysis%thickness, &
                   xe(:, 1:nn), d, ke(1:nd, 1:nd), error)
                if (allocated(error)) then
