@@ -17,6 +17,7 @@ module test_water
    use pecplas_fe_plate_output, only: plate_results
    use test_water_free, only: test_free_stages, test_free_equals_split, test_free_quay, &
       test_free_raft, test_free_bad_mode
+   use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
@@ -37,6 +38,8 @@ contains
                new_unittest('footing_undrained_b', test_footing_b), &
                new_unittest('footing_undrained_a', test_footing_a), &
                new_unittest('undrained_imposed', test_imposed), &
+               new_unittest('undrained_spring_penalty', test_undrained_penalty), &
+               new_unittest('undrained_estimator', test_undrained_estimator), &
                new_unittest('undrained_b_cu_depth', test_cu_depth), &
                new_unittest('joint_effective_stress', test_joint), &
                new_unittest('restart_keeps_excess', test_restart), &
