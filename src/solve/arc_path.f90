@@ -10,7 +10,8 @@
 !> forward: its first increment raises the step fraction (the operator's response at a state
 !> where the tangent fails is no guide to the direction), later ones follow the previous
 !> increment. A maximum counts as passed only when the load has fallen below the peak by more
-!> than the convergence test leaves undecided (load_noise) and the displacement conjugate to
+!> than the convergence test leaves undecided (load_noise) and by more than FALL_MIN of the
+!> peak, and the displacement conjugate to
 !> the step's load, s = q.u, has moved on beyond the peak's; an arc increment that ends below
 !> the peak with s back behind it has turned onto an unloading branch (its load fell because the
 !> structure unloaded, not because it passed a maximum) and is refused like one that did not
@@ -43,6 +44,12 @@ module pecplas_solve_arc_path
    !> A maximum counts once the load has fallen in this many increments after it, each
    !> below the peak by more than the load noise of the convergence test (load_noise).
    integer, parameter :: BEYOND_PEAK = 2
+   !> ... and below it by more than this share of the peak's step fraction: a fall smaller
+   !> than 0.1 % of the load is no maximum an engineer reads off the curve, and near a
+   !> singular tangent (a stiff penalty joint) two converged states of a rising path were
+   !> measured 1.04 times the load noise apart. A path that levels off is caught by the
+   !> flatness test (SP_FLAT) instead.
+   real(wp), parameter :: FALL_MIN = 1.0e-3_wp
    !> Load-controlled step that tests a singular tangent for a mechanism (step fraction).
    real(wp), parameter :: PROBE_STEP = 1.0e-3_wp
 
@@ -205,11 +212,11 @@ contains
                res%peak_factors = att%factors(tau)
                res%s_peak = s
                res%beyond = 0
-            else if (tau < res%tau_peak - noise) then
-               ! below the peak by more than the convergence test leaves undecided: the load
-               ! fell (a fall within `noise` proves no maximum: two converged states of a
-               ! rising path may lie that far apart, e.g. a stiff penalty joint whose states
-               ! each converge just under the tolerance)
+            else if (tau < res%tau_peak - max(noise, FALL_MIN*res%tau_peak)) then
+               ! below the peak by more than the convergence test leaves undecided and by
+               ! more than FALL_MIN of it: the load fell (a fall within `noise` proves no
+               ! maximum: two converged states of a rising path may lie that far apart, e.g.
+               ! a stiff penalty joint whose states each converge just under the tolerance)
                res%beyond = res%beyond + 1
             end if
             nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)

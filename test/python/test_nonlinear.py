@@ -144,7 +144,9 @@ def test_no_limit_from_falls_within_the_load_noise(tmp_path):
     0.728404: two falls of 2e-5 and 8e-6, where the convergence test leaves the step fraction
     of each state undecided by 1.46e-4 (2 tol max(||F_ext||, ||R||) / ||q||: the geostatic
     load dwarfs the head load). Those falls are no maximum; the run once stopped there with a
-    false 'limit load'. It must end 'diverged' (with the probe's reason) or go on."""
+    false 'limit load'. Under OpenBLAS's SkylakeX kernels the path fell to 0.728280 instead,
+    1.04 times that bound: a fall also has to exceed 0.1 % of the peak (doc/theory.md, run
+    status). It must end 'diverged' (with the probe's reason) or go on."""
     text = (ROOT / "input/s2/s2_mohr_coulomb.inp").read_text()
     text = re.sub(r"\bKN = [^,]+,", f"KN = {1e8 * 2e4:g},", text)
     text = re.sub(r"^\*STEP, NAME=unload.*\n(?:(?!\*).*\n)*", "", text, flags=re.M)

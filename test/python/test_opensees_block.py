@@ -144,7 +144,9 @@ def test_opensees_runner_agrees_with_ours(tmp_path):
         residual = np.abs(f - k @ x).max() / (knorm * np.abs(x).max() + np.abs(f).max())
         assert residual <= n * eps, residual
     kappa = knorm * np.abs(np.linalg.inv(k)).sum(1).max()
-    assert np.abs(u).max() == abs(u[m["tip"] - 1, 1])
+    # the tip is the largest displacement (another node of the loaded end may equal it to
+    # within the solution's own error, the bound below)
+    assert np.abs(u).max() <= abs(u[m["tip"] - 1, 1]) * (1 + 2 * kappa * n * eps)
     tip, field = bpo.compare(u, peer, m["tip"])
     assert tip <= 2 * kappa * n * eps and field <= 2 * kappa * n * eps, (tip, field, kappa)
 
