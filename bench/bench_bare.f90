@@ -16,6 +16,7 @@ program bench_bare
    use bench_matrix, only: read_matrix_file
    use bench_process, only: cpu_times
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    character(len=4096) :: arg
    type(csc_t) :: k
@@ -26,6 +27,7 @@ program bench_bare
    real(wp), allocatable :: b(:), x(:)
    type(thread_setting_t) :: threads
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    if (command_argument_count() /= 1) error stop 'usage: pecplas-bench-bare FILE.matrix.h5'
    call get_command_argument(1, arg)
    call read_matrix_file(trim(arg), k, error)

@@ -15,6 +15,7 @@ program bench_deck
    use pecplas_base_timers, only: wall_time
    use pecplas_base_files, only: make_directories
    use bench_mesh, only: write_square_msh, write_square_deck, write_square_keywords
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    character(len=64) :: arg
    character(len=:), allocatable :: dir, base
@@ -25,6 +26,7 @@ program bench_deck
    type(error_t), allocatable :: error
    real(wp) :: t0, t_kw, t_msh, total
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    if (command_argument_count() < 1) error stop 'usage: pecplas-bench-deck N [DIR] [--run]'
    call get_command_argument(1, arg); read (arg, *) n
    dir = 'build/bench'

@@ -9,7 +9,8 @@
 !> the analysis (load-independent), median / min / max analysis and factorisation times, and
 !> the largest difference of the solution of K x = 1 from the one with the first ordering
 !> listed, relative to max|x|. ORDERINGS: a comma list of the labels AMD, DEFAULT, METIS,
-!> NESDIS, M-NODES, RULE, RULE2 (default: all).
+!> NESDIS, M-NODES, RULE, RULE2 (default: all). Last two columns: median CPU time (user + system) of the
+!> analysis and of the factorisation [s] (the process's, so a loaded machine does not count).
 program bench_ordering
    use, intrinsic :: iso_c_binding, only: c_ptr, c_int
    use pecplas_base_kinds, only: wp
@@ -23,6 +24,8 @@ program bench_ordering
       pecplas_cholmod_set_ordering, ORDER_RULE, ORDER_CHOLMOD_DEFAULT, ORDER_AMD, &
       ORDER_METIS, ORDER_NESDIS, ORDER_METIS_NODES
    use bench_mesh, only: square_case
+   use bench_process, only: cpu_times
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    integer(c_int), parameter :: METHODS(7) = [ORDER_AMD, ORDER_CHOLMOD_DEFAULT, ORDER_METIS, &
       ORDER_NESDIS, ORDER_METIS_NODES, ORDER_RULE, ORDER_RULE]
@@ -38,9 +41,11 @@ program bench_ordering
    type(problem_t) :: problem
    type(c_ptr) :: h
    real(wp) :: t0, lnz, fl, dx
-   real(wp), allocatable :: b(:), x(:), xref(:), ta(:), tf(:)
+   real(wp), allocatable :: b(:), x(:), xref(:), ta(:), tf(:), ca(:), cf(:)
+   real(wp) :: cpu(2)
    integer(c_int) :: rc, neq
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    call square_case('usage: pecplas-bench-ordering Q4|Q8 N [DIR] [REPEATS] [ORDERINGS]', &
       etype, n, base)
    repeats = 3
@@ -59,7 +64,7 @@ program bench_ordering
    if (code /= 0) error stop 'bench run failed'
 
    neq = int(problem%linear%k%n, c_int)
-   allocate (b(neq), x(neq), xref(neq), ta(repeats), tf(repeats))
+   allocate (b(neq), x(neq), xref(neq), ta(repeats), tf(repeats), ca(repeats), cf(repeats))
    b = 1.0_wp
    first = .true.
    do m = 1, size(METHODS)
@@ -67,20 +72,26 @@ program bench_ordering
       do r = 1, repeats
          h = pecplas_cholmod_new(0_c_int)
          call pecplas_cholmod_set_ordering(h, METHODS(m))
+         cpu = cpu_times()
          t0 = wall_time()
          rc = pecplas_cholmod_analyse(h, neq, problem%linear%k%colptr, problem%linear%k%rowind)
          ta(r) = wall_time() - t0
+         ca(r) = sum(cpu_times() - cpu)
          if (rc /= 0) error stop 'analysis failed'
+         cpu = cpu_times()
          t0 = wall_time()
          rc = pecplas_cholmod_factorise(h, neq, problem%linear%k%colptr, problem%linear%k%rowind, &
             problem%linear%k%values)
          tf(r) = wall_time() - t0
+         cf(r) = sum(cpu_times() - cpu)
          if (rc /= 0) error stop 'factorisation failed'
          if (LABELS(m) == 'RULE2') then
+            cpu = cpu_times()
             t0 = wall_time()
             rc = pecplas_cholmod_factorise(h, neq, problem%linear%k%colptr, problem%linear%k%rowind, &
                problem%linear%k%values)
             tf(r) = wall_time() - t0
+            cf(r) = sum(cpu_times() - cpu)
             if (rc /= 0) error stop 'second factorisation failed'
          end if
          rc = pecplas_cholmod_solve(h, neq, 1_c_int, b, x)
@@ -93,9 +104,9 @@ program bench_ordering
       if (first) xref = x
       first = .false.
       dx = maxval(abs(x - xref))/maxval(abs(xref))
-      write (*, '(a3,i6,i9,1x,a7,1x,a7,2es11.3,6f9.3,es10.2)') etype, n, neq, LABELS(m), &
+      write (*, '(a3,i6,i9,1x,a7,1x,a7,2es11.3,6f9.3,es10.2,2f9.3)') etype, n, neq, LABELS(m), &
          CODES(max(0, min(6, used))), lnz, fl, median(ta), minval(ta), maxval(ta), median(tf), &
-         minval(tf), maxval(tf), dx
+         minval(tf), maxval(tf), dx, median(ca), median(cf)
       flush (6)
    end do
 contains

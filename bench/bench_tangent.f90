@@ -21,6 +21,7 @@ program bench_tangent
    use pecplas_solve_residual, only: free_part
    use pecplas_io_results_h5, only: h5_write, h5_attr
    use bench_matrix, only: create_matrix_file
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    character(len=4096) :: arg
    character(len=:), allocatable :: deck, out
@@ -31,6 +32,7 @@ program bench_tangent
    integer(hid_t) :: f
    real(wp), allocatable :: u(:), ku(:)
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    if (command_argument_count() /= 2) error stop 'usage: pecplas-bench-tangent DECK OUT.h5'
    call get_command_argument(1, arg); deck = trim(arg)
    call get_command_argument(2, arg); out = trim(arg)

@@ -18,6 +18,7 @@ program bench_threads
    use bench_matrix, only: read_matrix_file
    use bench_process, only: cpu_times
    use pecplas_linalg_threads, only: thread_setting_t, resolve_threads, apply_threads
+   use pecplas_linalg_blas_core, only: blas_core_start
    implicit none (type, external)
    interface
       integer(c_int) function pecplas_threads_configure(loops, regions, blas, work) bind(C)
@@ -42,6 +43,7 @@ program bench_threads
    integer :: i, ios
    type(thread_setting_t) :: setting
 
+   call blas_core_start() ! OpenBLAS's kernels: may run this program again (doc/build.md)
    if (command_argument_count() < 2) error stop 'usage: pecplas-bench-threads FILE.matrix.h5 R,B,W ...'
    call get_command_argument(1, arg)
    call read_matrix_file(trim(arg), k, error)

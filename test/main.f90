@@ -71,6 +71,7 @@ program tester
    use test_massif_q8r, only: collect_massif_q8r
    use test_driver_sanity, only: collect_driver_sanity
    use test_linalg_threads, only: collect_linalg_threads
+   use test_linalg_blas_core, only: collect_linalg_blas_core
    use test_model_units, only: collect_model_units
    use test_linalg_mumps, only: collect_linalg_mumps
    use test_fe_share, only: collect_fe_share
@@ -146,6 +147,7 @@ program tester
    suites = [suites, new_testsuite('massif_q8r', collect_massif_q8r)]
    suites = [suites, new_testsuite('driver_sanity', collect_driver_sanity)]
    suites = [suites, new_testsuite('linalg_threads', collect_linalg_threads)]
+   suites = [suites, new_testsuite('linalg_blas_core', collect_linalg_blas_core)]
    suites = [suites, new_testsuite('io_deck_trust', collect_io_deck_trust)]
    suites = [suites, new_testsuite('io_deck_user', collect_io_deck_user)]
    suites = [suites, new_testsuite('solve_progress', collect_solve_progress)]

@@ -16,12 +16,11 @@ module test_anchors
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
-   use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_fe_assembly, only: internal_forces
    use pecplas_base_strings, only: itoa
-   use test_phases, only: last_line
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
    private
    public :: collect_anchors
@@ -360,9 +359,6 @@ contains
    !> Bad anchor decks: exit 2, the file:line of the culprit and the message.
    subroutine test_bad_decks(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: cases(8) = [character(len=200) :: &
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 2', &
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4|2, 99', &
@@ -382,8 +378,7 @@ contains
          '*ANCHOR, NAME=a, TYPE=FIXED_END, EA=1e4, ANGLE=0', &
          '*ANCHOR, NAME=a, TYPE=NODE_TO_NODE, EA=1e4']
       character(len=:), allocatable :: deck, extra
-      integer :: k, code, i
-      logical :: exists
+      integer :: k, i
       call make_directories(OUT)
       do k = 1, size(cases)
          extra = trim(cases(k))
@@ -393,17 +388,8 @@ contains
          if (index(extra, '*STEP') == 0) extra = extra//NL//'*STEP, NAME=s'//NL//'*END STEP'
          deck = OUT//'bad'//itoa(k)//'.inp'
          call write_block(deck, extra)
-         call read_deck(deck, model, e)
-         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
-         if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
-            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
-         if (allocated(error)) return
-         deallocate (e)
-         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
-         inquire (file=OUT//'bad.h5', exist=exists)
-         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
-            itoa(code))
+         call check_refused(error, deck, trim(marker(k)), trim(expect(k)), OUT//'bad.h5', &
+            'bad deck '//itoa(k))
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks

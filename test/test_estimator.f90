@@ -84,7 +84,7 @@ contains
       call estimate_error(model, problem, est, error)
       if (allocated(error)) return
       eta = est%eta
-      call set_compliance(model, 1, cinv, error)
+      call set_compliance(model, 1, model%mesh%esets(1)%material_index, cinv, error)
       if (allocated(error)) return
       exact = 0.0_wp
       associate (set => model%mesh%esets(1), st => problem%state%sets(1))

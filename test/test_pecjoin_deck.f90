@@ -120,6 +120,10 @@ contains
              'together'), &
          bad('goodman6_linear_edges', 5, '*JOINTS', 'GOODMAN6 joints need 3-node', &
              'use GOODMAN4'), &
+         bad('faces_goodman6_linear_edges', 5, '*JOINTS', 'GOODMAN6 joints need 3-node', &
+             'use GOODMAN4'), &
+         bad('faces_edges_undefined', 5, '*JOINTS', "undefined edge set 'shaft' in EDGES=", &
+             'interface bottom top'), &
          bad('edges_twice', 6, '*JOINTS', 'is already split')], error)
    end subroutine test_bad_generated
 

@@ -15,11 +15,12 @@ module test_phases_switch
    use pecplas_problem_type, only: problem_t
    use pecplas_base_strings, only: itoa
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_bad_decks, only: check_refused
    use pecplas_cmd_adapt, only: adapt_main
    use pecplas_advise_advise, only: advice_t, advise_deck
    use pecplas_linalg_solver, only: mumps_available
    use pecplas_problem_phase, only: PROCEDURE_GRAVITY
-   use test_phases, only: write_column, oedometric, last_line, H, GAMMA, ELASTIC
+   use test_phases, only: write_column, write_block, oedometric, H, GAMMA, ELASTIC
    implicit none (type, external)
    private
    public :: collect_phases_switch
@@ -240,55 +241,10 @@ contains
          'without force: the whole weight at the end of the step')
    end subroutine test_katona_wished
 
-   !> The column of test_phases' katona_off_and_on with the block and the contact set off
-   !> until the first step activates them (`how`: the *ACTIVATE options of the contact set).
-   !> `law`, `steps`: another law for the joint set 'iface', other steps (all sets active at
-   !> the start).
-   subroutine write_block(path, how, law, steps)
-      character(len=*), intent(in) :: path, how
-      character(len=*), intent(in), optional :: law, steps
-      integer :: u, i
-      open (newunit=u, file=path, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'K0 column, block installed on Katona contact', '*NODES'
-      do i = 0, 40
-         write (u, '(i0,a,es23.16)') 2*i + 1, ', 0.0, ', i*0.25_wp
-         write (u, '(i0,a,es23.16)') 2*i + 2, ', 1.0, ', i*0.25_wp
-      end do
-      write (u, '(a)') '1001, 0.0, 7.5', '1002, 1.0, 7.5', '*ELEMENTS, TYPE=Q4, SET=rest'
-      do i = 1, 30
-         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
-      end do
-      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=block', '31, 1001, 1002, 64, 63'
-      do i = 32, 40
-         write (u, '(i0,4(", ",i0))') i, 2*i - 1, 2*i, 2*i + 2, 2*i + 1
-      end do
-      write (u, '(a)') ELASTIC, '*SECTION, SET=rest, MATERIAL=soil', &
-         '*SECTION, SET=block, MATERIAL=soil'
-      if (present(law)) then
-         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, '//law
-      else
-         write (u, '(a)') '*INTERFACE_LAW, NAME=kat, TYPE=KATONA', 'PHI = 30'
-      end if
-      write (u, '(a)') '*JOINTS, TYPE=GOODMAN4, SET=iface, LAW=kat', '500, 61, 62, 1002, 1001', &
-         '*NSET, NAME=base', '1, 2', '*NSET, NAME=sides, GENERATE', '1, 82', &
-         '*NSET, NAME=pair', '1001, 1002', '*BOUNDARY', 'base, XY', 'sides, X', 'pair, X', &
-         '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5'
-      if (present(steps)) then
-         write (u, '(a)') steps
-      else
-         write (u, '(a)') '*STEP, NAME=install, INCREMENTS=2', &
-            '*ACTIVATE, STRESS=WISHED_IN_PLACE', 'block', '*ACTIVATE'//how, 'iface'
-      end if
-      close (u)
-   end subroutine write_block
-
    !> Bad decks that switch supports and patterns: exit 2, file:line and what is wrong in the
    !> message, no results file.
    subroutine test_bad_decks(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: head = '*NSET, NAME=topn|41, 42|*LOAD, NAME=q, TYPE=FORCE|'// &
          'topn, Y, -50|*LOAD, NAME=pull, TYPE=DISPLACEMENT|topn, X, 0.001|'// &
          '*BOUNDARY, NAME=cap|topn, Y|'
@@ -308,8 +264,7 @@ contains
       character(len=*), parameter :: marker(7) = [character(len=40) :: 'cap', 'cap', 'q', 'q', &
          'pull', 'q', '*STEP, NAME=b']
       character(len=:), allocatable :: deck, steps
-      integer :: k, code, i
-      logical :: exists
+      integer :: k, i
       call make_directories(OUT)
       do k = 1, size(cases)
          steps = head//trim(cases(k))
@@ -318,19 +273,8 @@ contains
          end do
          deck = OUT//'bad'//itoa(k)//'.inp'
          call write_column(deck, NEL, 0, [integer ::], 1, ELASTIC, steps=steps)
-         call read_deck(deck, model, e)
-         call check(error, allocated(e), 'bad deck '//itoa(k)//' is refused')
-         if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(last_line(deck, trim(marker(k))))) > 0 &
-            .and. index(e%text(), trim(expect(k))) > 0, 'bad deck '//itoa(k)//': '//e%text())
-         if (allocated(error)) return
-         deallocate (e)
-         open (newunit=i, file=OUT//'bad.h5', status='replace')
-         close (i, status='delete')
-         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
-         inquire (file=OUT//'bad.h5', exist=exists)
-         call check(error, code == 2 .and. .not. exists, 'bad deck '//itoa(k)//': exit '// &
-            itoa(code)//', results file written: '//merge('yes', 'no ', exists))
+         call check_refused(error, deck, trim(marker(k)), trim(expect(k)), OUT//'bad.h5', &
+            'bad deck '//itoa(k))
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks

@@ -25,11 +25,11 @@ module test_safety
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
-   use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_safety, only: SAFETY_FACTOR, SAFETY_LOWER_BOUND, SAFETY_UNSTABLE
    use pecplas_base_strings, only: itoa, g6
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_bad_decks, only: check_refused
    use pecplas_io_results_reader, only: results_reader_t
    use doc_report, only: report
    use pecplas_massif_materials_type, only: material_t
@@ -356,53 +356,19 @@ contains
    !> no results file.
    subroutine test_bad_decks(error)
       type(error_t), allocatable, intent(out) :: error
-      type(model_t) :: model
-      type(problem_t) :: problem
-      type(error_t), allocatable :: e
       character(len=*), parameter :: names(2) = [character(len=18) :: 'bad_safety_first', &
          'bad_reduce_elastic']
       character(len=*), parameter :: expect(2) = [character(len=40) :: 'is the first step', &
          "material 'soil' has no strength"]
-      character(len=*), parameter :: marker(2) = [character(len=40) :: &
-         '*STEP, NAME=safety, CONTROL=SAFETY', 'friction, soil']
-      character(len=:), allocatable :: deck
-      integer :: k, code
-      logical :: exists
+      character(len=*), parameter :: marker(2) = [character(len=96) :: '*STEP, NAME=safety, '// &
+         'CONTROL=SAFETY, MSF_STEP=0.2, RESOLUTION=0.002, NODE=11, DOF=X', 'friction, soil']
+      integer :: k
       call make_directories(OUT)
       do k = 1, size(names)
-         deck = DATA//trim(names(k))//'.inp'
-         call read_deck(deck, model, e)
-         call check(error, allocated(e), trim(names(k))//' is refused')
-         if (allocated(error)) return
-         call check(error, index(e%text(), deck//':'//itoa(line_of(deck, trim(marker(k))))) &
-            > 0 .and. index(e%text(), trim(expect(k))) > 0, trim(names(k))//': '//e%text())
-         if (allocated(error)) return
-         deallocate (e)
-         code = run_deck(deck, OUT//'bad.h5', .true., model, problem)
-         inquire (file=OUT//'bad.h5', exist=exists)
-         call check(error, code == 2 .and. .not. exists, trim(names(k))//': exit '//itoa(code))
+         call check_refused(error, DATA//trim(names(k))//'.inp', trim(marker(k)), &
+            trim(expect(k)), OUT//'bad.h5', trim(names(k)))
          if (allocated(error)) return
       end do
    end subroutine test_bad_decks
-
-   !> Number of the first line of `path` that starts with `text`.
-   integer function line_of(path, text) result(n)
-      character(len=*), intent(in) :: path, text
-      character(len=256) :: buf
-      integer :: u, i, ios
-      n = 0
-      open (newunit=u, file=path, status='old', action='read')
-      i = 0
-      do
-         read (u, '(a)', iostat=ios) buf
-         if (ios /= 0) exit
-         i = i + 1
-         if (index(buf, text) == 1) then
-            n = i
-            exit
-         end if
-      end do
-      close (u)
-   end function line_of
 
 end module test_safety

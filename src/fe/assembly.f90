@@ -11,6 +11,7 @@ module pecplas_fe_assembly
    use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_gauss_derivs
    use pecplas_massif_point_kernels, only: point_strain, point_force_add
    use pecplas_massif_element_matrices, only: massif_stiffness
+   use pecplas_fe_water_stiffness, only: add_water_stiffness
    use pecplas_massif_materials_type, only: NCOMP, material_t
    use pecplas_linalg_sparse, only: csc_t
    use pecplas_linalg_sparse_reuse, only: csc_builder_t
@@ -254,7 +255,7 @@ contains
          xe(:, 1:size(conn)), d, ke, error)
       if (allocated(error) .or. .not. (kwn > 0.0_wp)) return
       allocate (dw(NCOMP, NCOMP, size(d, 3)), source=0.0_wp)
-      dw(1:3, 1:3, :) = kwn
+      call add_water_stiffness(kwn, dw)
       allocate (kw, mold=ke)
       call massif_stiffness(rule, model%analysis%kind, model%analysis%thickness, &
          xe(:, 1:size(conn)), dw, kw, error)

@@ -17,6 +17,7 @@ module pecplas_fe_imposed
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_fe_element_context, only: element_context
    use pecplas_fe_assembly, only: set_material
+   use pecplas_fe_water_stiffness, only: add_water_stiffness, set_elastic_tangent
    use pecplas_fe_joint_assembly, only: set_law
    implicit none (type, external)
    private
@@ -38,20 +39,22 @@ contains
       real(wp), intent(out) :: f(:, :)
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: xe(2, MAX_NODES), ue(2*MAX_NODES), ke(2*MAX_NODES, 2*MAX_NODES), &
-         fe(2*MAX_NODES), delastic(NCOMP, NCOMP)
+         fe(2*MAX_NODES), delastic(NCOMP, NCOMP), kwn
       real(wp), allocatable :: d(:, :, :)
       logical, allocatable :: moved(:)
-      integer :: s, e, k, nn, nd
+      integer :: s, e, k, nn, nd, m
       f = 0.0_wp
       moved = any(dup /= 0.0_wp .and. dofs%eq == 0, dim=1)
       if (.not. any(moved)) return
       do s = 1, size(rules)
          if (.not. state%sets(s)%active) cycle
-         associate (set => model%mesh%esets(s), st => state%sets(s), &
-                    mat => model%materials(set_material(model, s, state%sets(s)))%m)
+         associate (set => model%mesh%esets(s), st => state%sets(s))
             nn = rules(s)%nnode
             nd = 2*nn
-            call mat%elastic_tangent(delastic)
+            ! an undrained set: plus the pore water's volumetric stiffness, as in the assembly
+            m = set_material(model, s, st)
+            kwn = model%water%kwn(s, m)
+            call set_elastic_tangent(model, s, m, delastic)
             d = spread(delastic, 3, st%ngauss)
             do e = 1, size(set%conn, 2)
                if (.not. any(moved(set%conn(:, e)))) cycle
@@ -60,7 +63,10 @@ contains
                   ue(2*k - 1:2*k) = merge(dup(:, set%conn(k, e)), 0.0_wp, &
                      dofs%eq(:, set%conn(k, e)) == 0)
                end do
-               if (tangent .and. allocated(st%tangent)) d = st%tangent(:, :, :, e)
+               if (tangent .and. allocated(st%tangent)) then
+                  d = st%tangent(:, :, :, e)
+                  call add_water_stiffness(kwn, d)
+               end if
                call massif_stiffness(rules(s), model%analysis%kind, model%analysis%thickness, &
                   xe(:, 1:nn), d, ke(1:nd, 1:nd), error)
                if (allocated(error)) then

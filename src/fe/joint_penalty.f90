@@ -1,6 +1,7 @@
 !> Default penalty stiffness of the laws that enforce continuity with springs (Frank,
 !> doc/theory.md §7, (I.10)): K = 1e5 E_ryg R_max, R_max the largest diagonal term of the massif
-!> stiffness (a force per displacement). Laws take stiffness per unit measure (they map a
+!> stiffness (a force per displacement; with the pore water's stiffness in undrained sets,
+!> pecplas_fe_water_stiffness). Laws take stiffness per unit measure (they map a
 !> relative displacement to a stress, the element multiplies by the tributary measure), so
 !> K is divided by the mean measure of the joint points that use the law.
 module pecplas_fe_joint_penalty
@@ -14,6 +15,7 @@ module pecplas_fe_joint_penalty
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_joints_state, only: joint_state_t
    use pecplas_fe_joint_assembly, only: reset_joint_tangents
+   use pecplas_fe_water_stiffness, only: set_elastic_tangent
    use pecplas_joints_laws_spring, only: spring_law_t
    implicit none (type, external)
    private
@@ -54,7 +56,8 @@ contains
       if (done) call reset_joint_tangents(model, jstate)
    end subroutine set_default_penalties
 
-   !> Largest diagonal term of the assembled elastic massif stiffness, over all dofs.
+   !> Largest diagonal term of the assembled elastic massif stiffness, over all dofs; an
+   !> undrained set counts with its pore water's stiffness (K_w/n) m m^T, as the assembly.
    subroutine massif_rmax(model, rules, rmax, error)
       type(model_t), intent(in) :: model
       type(massif_rule_t), intent(in) :: rules(:)
@@ -65,11 +68,11 @@ contains
       integer :: s, e, j, nn
       allocate (diag(2, model%mesh%nnode()), source=0.0_wp)
       do s = 1, size(rules)
-         associate (set => model%mesh%esets(s), &
-                    mat => model%materials(model%mesh%esets(s)%material_index)%m)
+         associate (set => model%mesh%esets(s))
             nn = rules(s)%nnode
             allocate (ke(2*nn, 2*nn), d(NCOMP, NCOMP, rules(s)%ngauss))
-            call mat%elastic_tangent(delastic)
+            ! an undrained set with its pore water: stiffer in compression, as assembled
+            call set_elastic_tangent(model, s, set%material_index, delastic)
             d = spread(delastic, 3, rules(s)%ngauss)
             do e = 1, size(set%conn, 2)
                call massif_stiffness(rules(s), model%analysis%kind, model%analysis%thickness, &

@@ -18,6 +18,7 @@ module pecplas_fe_plate_output
    use pecplas_structures_state, only: plate_state_t
    use pecplas_fe_water_faces, only: plate_water_load
    use pecplas_fe_plate_assembly, only: plate_points, plate_element_x
+   use pecplas_model_plate_water_sides, only: plate_water_sides
    use pecplas_io_results_increment, only: plate_fields_t
    implicit none (type, external)
    private
@@ -45,8 +46,8 @@ contains
    end function plate_nodes
 
    !> Fields of plate set s at the converged state (u, pstate, pattern factors); `level`:
-   !> the phreatic level in force (groundwater: the water's pressure on a plate that
-   !> *PLATE_WATER names is one of its own loads; default none); `step`: the step whose
+   !> the phreatic level in force (groundwater: the water's pressure on the plate's faces
+   !> by its *PLATE_WATER mode is one of its own loads; default none); `step`: the step whose
    !> *PLATE_WATER sides are in force (default the last).
    subroutine plate_results(model, u, pstate, factors, s, f, error, level, step)
       type(model_t), intent(in) :: model
@@ -60,7 +61,7 @@ contains
       logical :: wet
       real(wp) :: fe(MAX_BEAM_DOFS), fl(MAX_BEAM_DOFS), x(2, 3), t(2), n(2), scale, q(2)
       real(wp) :: dxd(2)
-      integer, allocatable :: count(:), at(:)
+      integer, allocatable :: count(:), at(:), wside(:)
       integer :: e, p, k, nd, np, nel, end, j
       associate (pl => model%plates(s), st => pstate%sets(s))
          nd = 3*pl%nen
@@ -81,6 +82,14 @@ contains
          f%name = pl%name
          f%active = st%active
          if (.not. st%active) return
+         if (present(level)) then
+            ! the faces the water stands on in that step (the phase plan's activity)
+            if (present(step)) then
+               wside = plate_water_sides(model, s, step)
+            else
+               wside = plate_water_sides(model, s, size(model%steps))
+            end if
+         end if
          do e = 1, nel
             x(:, 1:pl%nen) = plate_element_x(model, pl, e)
             call plate_points(model, pl, e, pts(1:np), error)
@@ -104,11 +113,7 @@ contains
                end do
             end if
             if (present(level)) then
-               if (present(step)) then
-                  call plate_water_load(model, s, e, level, step, fl(1:nd), wet)
-               else
-                  call plate_water_load(model, s, e, level, size(model%steps), fl(1:nd), wet)
-               end if
+               call plate_water_load(model, s, e, level, wside(e), fl(1:nd), wet)
                if (wet) fe(1:nd) = fe(1:nd) - fl(1:nd)
             end if
             do end = 1, 2

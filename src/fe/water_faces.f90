@@ -5,7 +5,9 @@
 !> With it the total stresses are in equilibrium with the water standing on the faces (a
 !> flooded pit, a level above the ground), and on supported faces the pressure goes into the
 !> reactions, which are then those of the effective stresses and the buoyant weight.
-!> Joint faces are left out: a joint carries the pore pressure itself (pecplas_fe_pore).
+!> Joint faces are left out: a joint carries the pore pressure itself (pecplas_fe_pore); so
+!> are the sides an element of an active plate set lies on: a plate is impermeable and takes
+!> the free water on its own faces, as its *PLATE_WATER mode says (add_plate_water).
 module pecplas_fe_water_faces
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -15,6 +17,7 @@ module pecplas_fe_water_faces
    use pecplas_model_options, only: AXISYMMETRIC
    use pecplas_structures_beam, only: beam_line_load, MAX_BEAM_DOFS
    use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
+   use pecplas_model_plate_water_sides, only: plate_water_sides
    implicit none (type, external)
    private
 
@@ -23,20 +26,27 @@ module pecplas_fe_water_faces
 contains
 
    !> force(2, nnode) += the water's pressure on the free faces of the active element sets
-   !> `eactive` under level k (0: none), joint sets `jactive` active.
-   subroutine add_water_faces(model, eactive, jactive, k, force, error)
+   !> `eactive` under level k (0: none), joint sets `jactive` active. With `pactive`: a side
+   !> of an element of an active plate set is no free face, whatever the set's *PLATE_WATER
+   !> mode: the impermeable plate lies against it and takes the water on its own faces
+   !> (add_plate_water), so the water is counted once whether the plate shares its nodes
+   !> with the soil or joints lie between.
+   subroutine add_water_faces(model, eactive, jactive, k, force, error, pactive)
       type(model_t), intent(in) :: model
       logical, intent(in) :: eactive(:), jactive(:)
       integer, intent(in) :: k
       real(wp), intent(inout) :: force(:, :)
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: pactive(:)
       type(side_table_t) :: table
-      logical, allocatable :: on_joint(:)
+      logical, allocatable :: on_joint(:), on_plate(:)
       integer, allocatable :: same(:)
       real(wp) :: xedge(2, 3), fe(6), h, xm
       integer :: side, j, nen, n
       if (k <= 0) return
       call build_side_table(model%mesh, table)
+      allocate (on_plate(model%mesh%nnode()), source=.false.)
+      if (present(pactive)) on_plate = active_plate_nodes(model, pactive)
       allocate (on_joint(model%mesh%nnode()), source=.false.)
       if (allocated(model%joint_sets)) then
          do j = 1, size(model%joint_sets)
@@ -49,6 +59,9 @@ contains
          if (.not. eactive(table%set(side))) cycle
          associate (nodes => table%nodes(:, side))
             if (on_joint(nodes(1)) .and. on_joint(nodes(2))) cycle
+            if (on_plate(nodes(1)) .and. on_plate(nodes(2))) then
+               if (on_active_plate(model, pactive, nodes(1:2))) cycle
+            end if
             same = find_sides(table, nodes)
             n = 0
             do j = 1, size(same)
@@ -71,15 +84,53 @@ contains
       end do
    end subroutine add_water_faces
 
-   !> force(:, :) += the water's pressure on the plate sets that *PLATE_WATER names, active
-   !> in `pactive`, under level k (0: none), with the sides of step istep: see
-   !> plate_water_load.
-   subroutine add_plate_water(model, pactive, k, istep, force)
+   !> Nodes of the elements of the active plate sets (`pactive`).
+   pure function active_plate_nodes(model, pactive) result(on)
       type(model_t), intent(in) :: model
       logical, intent(in) :: pactive(:)
+      logical, allocatable :: on(:)
+      integer :: s
+      allocate (on(model%mesh%nnode()), source=.false.)
+      if (.not. allocated(model%plates)) return
+      do s = 1, min(size(model%plates), size(pactive))
+         if (.not. pactive(s)) cycle
+         on(pack(model%plates(s)%conn(1:2, :), .true.)) = .true.
+      end do
+   end function active_plate_nodes
+
+   !> Whether the end nodes `ends` are those of an element of an active plate set
+   !> (`pactive`).
+   pure logical function on_active_plate(model, pactive, ends) result(on)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: pactive(:)
+      integer, intent(in) :: ends(2)
+      integer :: s, e
+      on = .false.
+      do s = 1, min(size(model%plates), size(pactive))
+         if (.not. pactive(s)) cycle
+         associate (conn => model%plates(s)%conn)
+            do e = 1, size(conn, 2)
+               if ((conn(1, e) == ends(1) .and. conn(2, e) == ends(2)) .or. &
+                   (conn(1, e) == ends(2) .and. conn(2, e) == ends(1))) then
+                  on = .true.
+                  return
+               end if
+            end do
+         end associate
+      end do
+   end function on_active_plate
+
+   !> force(:, :) += the water's pressure on the plate sets active in `pactive` under level
+   !> k (0: none), by their *PLATE_WATER mode in step istep (FREE where *PLATE_WATER does
+   !> not name them) and, for the sets whose water stands on their free faces, the element
+   !> sets `eactive` and joint sets `jactive` active: see plate_water_load.
+   subroutine add_plate_water(model, pactive, eactive, jactive, k, istep, force)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: pactive(:), eactive(:), jactive(:)
       integer, intent(in) :: k, istep
       real(wp), intent(inout) :: force(:, :)
       real(wp) :: fe(MAX_BEAM_DOFS)
+      integer, allocatable :: side(:)
       integer :: s, e, nd
       logical :: any_load
       if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
@@ -87,32 +138,31 @@ contains
          if (model%water%plate_side_at(s, istep) == 0) cycle
          if (s > size(pactive)) cycle
          if (.not. pactive(s)) cycle
+         side = plate_water_sides(model, s, istep, eactive, jactive)
          nd = 3*size(model%plates(s)%conn, 1)
          do e = 1, size(model%plates(s)%conn, 2)
-            call plate_water_load(model, s, e, k, istep, fe(1:nd), any_load)
+            call plate_water_load(model, s, e, k, side(e), fe(1:nd), any_load)
             if (any_load) call scatter_plate_vector(model, model%plates(s), e, fe(1:nd), force)
          end do
       end do
    end subroutine add_plate_water
 
    !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
-   !> under level k, with the side of step istep: p = gamma_w (h - y)+ at the element's nodes, interpolated along it like
-   !> its geometry (exact where it lies wholly below or above the level), pressing from the
-   !> side *PLATE_WATER names (a plate is impermeable: the water or the soil's pore pressure
-   !> on its other side is not this load). `loaded`: false (fe = 0) when p = 0 at every node
-   !> or the set has no water.
-   subroutine plate_water_load(model, s, e, k, istep, fe, loaded)
+   !> under level k, pressing from the face `side` (+1 left, -1 right, 0 none: the element's
+   !> entry of plate_water_sides): p = gamma_w (h - y)+ at the element's nodes, interpolated
+   !> along it like its geometry (exact where it lies wholly below or above the level). A
+   !> plate is impermeable: the water or the soil's pore pressure on its other face is not
+   !> this load. `loaded`: false (fe = 0) when p = 0 at every node or side = 0.
+   subroutine plate_water_load(model, s, e, k, side, fe, loaded)
       type(model_t), intent(in) :: model
-      integer, intent(in) :: s, e, k, istep
+      integer, intent(in) :: s, e, k, side
       real(wp), intent(out) :: fe(:)
       logical, intent(out) :: loaded
       real(wp) :: t(2), q(2), p(3), x(2, 3)
-      integer :: j, nen, side
+      integer :: j, nen
       fe = 0.0_wp
       loaded = .false.
-      if (k <= 0 .or. .not. allocated(model%water%plate_side)) return
-      side = model%water%plate_side_at(s, istep)
-      if (side == 0) return
+      if (k <= 0 .or. side == 0) return
       associate (pl => model%plates(s))
          nen = size(pl%conn, 1)
          x(:, 1:nen) = plate_element_x(model, pl, e)

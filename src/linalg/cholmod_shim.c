@@ -60,6 +60,18 @@ static cholmod_sparse wrap(int n, const int *colptr, const int *rowind, const do
     return a;
 }
 
+/* The ordering of a new handle: the project's rule, unless PECPLAS_ORDERING names AMD or
+ * METIS (METIS on the graph of nodes) instead. For benchmarks only (as PECPLAS_THREAD_PARTS in
+ * threads_shim.c): it lets the thread benchmark weigh the serial METIS ordering against the
+ * factorisation flops it saves at each thread count (doc/bench/threads.md); any other value
+ * is ignored. */
+static int bench_ordering(void) {
+    const char *v = getenv("PECPLAS_ORDERING");
+    if (v && strcmp(v, "AMD") == 0) return CHOLMOD_AMD;
+    if (v && strcmp(v, "METIS") == 0) return PECPLAS_ORDER_METIS_NODES;
+    return PECPLAS_ORDER_RULE;
+}
+
 /* New handle. ldl = 0: supernodal LL' (production); ldl = 1: simplicial LDL' (used to tell
  * a singular matrix from an indefinite one). Fill-reducing ordering by the project's rule
  * (pecplas_cholmod_analyse); the one used is read back with pecplas_cholmod_ordering. */
@@ -70,7 +82,7 @@ void *pecplas_cholmod_new(int ldl) {
     h->c.print = 0; /* errors are reported by the caller from the status */
     h->c.supernodal = ldl ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
     h->c.final_ll = ldl ? 0 : 1;
-    h->ordering = PECPLAS_ORDER_RULE;
+    h->ordering = bench_ordering();
 #if CHOLMOD_MAIN_VERSION >= 4 && defined(_OPENMP)
     h->c.nthreads_max = omp_get_max_threads(); /* the program's thread setting */
 #endif

@@ -9,6 +9,7 @@ module pecplas_linalg_threads
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_char, c_f_pointer, &
       c_associated
    use pecplas_base_strings, only: itoa
+   use pecplas_linalg_blas_core, only: blas_core_in_use
    implicit none (type, external)
    private
 
@@ -42,6 +43,9 @@ module pecplas_linalg_threads
       character(len=:), allocatable :: parts_source
       !> How the BLAS threads: 'pthreads', 'OpenMP', 'none' or '' (not known).
       character(len=:), allocatable :: blas_threading
+      !> Core whose kernels OpenBLAS runs ('SkylakeX', 'Haswell', 'Prescott', ...; '' when the
+      !> BLAS is not OpenBLAS) and where that came from (blas_core_source).
+      character(len=:), allocatable :: blas_core, blas_core_source
    end type thread_setting_t
 
    interface
@@ -127,7 +131,7 @@ contains
    end subroutine decide_parts
 
    !> Applies `setting` to OpenMP, CHOLMOD's regions and the BLAS; records the BLAS found,
-   !> how it threads and whether OpenMP is on.
+   !> how it threads, OpenBLAS's kernels and whether OpenMP is on.
    subroutine apply_threads(setting)
       type(thread_setting_t), intent(inout) :: setting
       integer(c_int) :: k
@@ -136,6 +140,7 @@ contains
          int(setting%blas_threads, c_int), real(setting%blas_work, c_double))
       setting%blas = c_text(pecplas_threads_blas_name(k))
       setting%blas_threading = c_text(pecplas_threads_blas_threading())
+      call blas_core_in_use(setting%blas_core, setting%blas_core_source)
       setting%openmp = pecplas_threads_openmp() /= 0
    end subroutine apply_threads
 
@@ -144,12 +149,18 @@ contains
       type(thread_setting_t), intent(in) :: setting
       character(len=:), allocatable :: text
       character(len=16) :: work
-      character(len=:), allocatable :: blas
+      character(len=:), allocatable :: blas, detail
       blas = setting%blas
       if (len(blas) == 0) blas = 'without thread control'
-      if (allocated(setting%blas_threading)) then
-         if (len(setting%blas_threading) > 0) blas = blas//' ('//setting%blas_threading//')'
+      detail = ''
+      if (allocated(setting%blas_threading)) detail = setting%blas_threading
+      if (allocated(setting%blas_core)) then
+         if (len(setting%blas_core) > 0) then
+            if (len(detail) > 0) detail = detail//'; '
+            detail = detail//setting%blas_core//' kernels: '//setting%blas_core_source
+         end if
       end if
+      if (len(detail) > 0) blas = blas//' ('//detail//')'
       text = 'element loops '//itoa(setting%loops)//', CHOLMOD regions '// &
          itoa(setting%regions)//', BLAS '//blas//' '//itoa(setting%blas_threads)
       if (setting%blas_work > 0.0) then

@@ -48,7 +48,9 @@ module pecplas_phases_start
    use pecplas_joints_katona_operator, only: relative_displacements, add_contact_forces
    use pecplas_fe_pore, only: set_steady_pressures, reset_excess
    use pecplas_fe_water_faces, only: add_water_faces, add_plate_water
-   use pecplas_base_strings, only: decimal_text
+   use pecplas_model_plate_water_sides, only: plate_water_sides
+   use pecplas_water_type, only: PLATE_FREE
+   use pecplas_base_strings, only: decimal_text, itoa
    implicit none (type, external)
    private
 
@@ -408,14 +410,16 @@ contains
          end if
          return
       end if
-      ! the water standing on the free faces and on the plates *PLATE_WATER names
+      ! the water standing on the free faces and on the plates (by their *PLATE_WATER modes)
       if (model%water%used() .and. level > 0) then
          allocate (jon(0), pon(0))
          if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
-         call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error)
-         if (allocated(error)) return
          if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
-         call add_plate_water(model, pon, level, istep, problem%system%initial_force)
+         call add_water_faces(model, eactive, jon, level, problem%system%initial_force, error, &
+            pon)
+         if (allocated(error)) return
+         call add_plate_water(model, pon, eactive, jon, level, istep, &
+            problem%system%initial_force)
       end if
    end subroutine held_load
 
@@ -469,10 +473,10 @@ contains
       w = 0.0_wp
       allocate (jon(0), pon(0))
       if (allocated(problem%state%joints%sets)) jon = problem%state%joints%sets%active
-      call add_water_faces(model, eactive, jon, level, w, error)
-      if (allocated(error)) return
       if (allocated(problem%state%plates%sets)) pon = problem%state%plates%sets%active
-      call add_plate_water(model, pon, level, istep, w)
+      call add_water_faces(model, eactive, jon, level, w, error, pon)
+      if (allocated(error)) return
+      call add_plate_water(model, pon, eactive, jon, level, istep, w)
       if (allocated(problem%phase%patterns_on)) then
          if (.not. problem%phase%patterns_on(k)) then
             ! no weight coming in: the water on the faces held, F_p's hold released
@@ -823,6 +827,11 @@ contains
       if (allocated(model%water%plate_side)) then
          do s = 1, size(model%water%plate_side)
             side = model%water%plate_side_at(s, istep)
+            if (side == PLATE_FREE) then
+               ! on the free faces: they change with the sets the step activates or removes
+               call free_water_line(model, s, istep, lines)
+               cycle
+            end if
             if (side == model%water%plate_side_at(s, istep - 1)) cycle
             if (side == 0) then
                call add_line(lines, 'no water on plate set '//model%plates(s)%name)
@@ -833,6 +842,26 @@ contains
          end do
       end if
    end subroutine water_changes
+
+   !> The progress line of plate set s whose water stands on its free faces (*PLATE_WATER
+   !> FREE) in the first step and when those faces in step istep differ from the step
+   !> before's: how many of its elements have the water on the left face only, how many on
+   !> the right only.
+   subroutine free_water_line(model, s, istep, lines)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s, istep
+      character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)
+      integer, allocatable :: now(:), before(:)
+      logical :: changed
+      now = plate_water_sides(model, s, istep)
+      before = plate_water_sides(model, s, istep - 1)
+      changed = any(now /= before) .or. istep == 1 .or. &
+         model%water%plate_side_at(s, istep - 1) /= PLATE_FREE
+      if (.not. changed) return
+      call add_line(lines, 'water on the free faces of plate set '//model%plates(s)%name// &
+         ': '//itoa(count(now > 0))//' of its '//itoa(size(now))//' elements on the left, '// &
+         itoa(count(now < 0))//' on the right')
+   end subroutine free_water_line
 
    subroutine add_line(lines, text)
       character(len=LINE_LEN), allocatable, intent(inout) :: lines(:)

@@ -22,6 +22,9 @@ module pecplas_problem_position
       !> Free displacement increment of the last converged increment (the arc-length
       !> predictor's direction and the limit probe's first length); may be unallocated.
       real(wp), allocatable :: du_prev(:)
+      !> Step fraction that increment spanned when it was load controlled (the scale of the
+      !> next increment's extrapolated start); 0 after an arc-length increment.
+      real(wp) :: dtau_prev = 0.0_wp
       !> The arc-length path under way (PATH_STEP, PATH_PROBE: pecplas_problem_arc_trace), or
       !> PATH_NONE, and its state.
       integer :: path = PATH_NONE
@@ -43,15 +46,16 @@ module pecplas_problem_position
 contains
 
    !> Records the position after a converged increment, with `arc` the path it belongs to
-   !> (absent: a load-controlled increment).
+   !> (absent: a load-controlled increment, of step fraction `dtau_prev`).
    subroutine position_record(this, istep, inc_in_step, tau, dt, level, k_first, k_conv, f0, &
-         fint_conv, du_prev, arc)
+         fint_conv, du_prev, arc, dtau_prev)
       class(run_position_t), intent(inout) :: this
       integer, intent(in) :: istep, inc_in_step, level
       real(wp), intent(in) :: tau, dt, k_first, k_conv, f0(:), fint_conv(:, :)
       !> The increment's free displacement increment (as accept_increment keeps it).
       real(wp), allocatable, intent(in) :: du_prev(:)
       type(arc_trace_t), intent(in), optional :: arc
+      real(wp), intent(in), optional :: dtau_prev
       this%istep = istep
       this%inc_in_step = inc_in_step
       this%tau = tau
@@ -62,6 +66,8 @@ contains
       this%f0 = f0
       this%fint_conv = fint_conv
       if (allocated(du_prev)) this%du_prev = du_prev
+      this%dtau_prev = 0.0_wp
+      if (present(dtau_prev)) this%dtau_prev = dtau_prev
       this%path = PATH_NONE
       if (present(arc)) then
          this%path = arc%req%origin

@@ -227,6 +227,7 @@ contains
                att%arc = .false.
                att%tau0 = tau
                att%tau1 = tau + dt
+               call extrapolated_start(problem, run, inc, dt, att)
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
             end if
@@ -294,7 +295,8 @@ contains
             ! the loop's position after this increment (the size grows back below), for the
             ! restart data written with the increment
             call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
-               level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint, out%du)
+               level > 0), max(level - 1, 0), run%k_first, 0.0_wp, f0, fint, out%du, &
+               dtau_prev=dt)
             ! the end of the last step ends the run: that increment is written once
             call accept_increment(model, problem, results, run, att, out, method, u, fint, &
                reaction, istep, inc, real(istep - 1, wp) + tau, tau >= 1.0_wp - 1.0e-12_wp, 0, &
@@ -308,6 +310,25 @@ contains
          end do
       end associate
    end subroutine load_step
+
+   !> The extrapolated start of a load-controlled increment of size `dt` (att%du_start): the
+   !> previous converged increment of the same step (`inc` > 0 of them converged), when it
+   !> was load controlled too, scaled by dt over its size. Along one step the imposed
+   !> displacements and loads grow in proportion to the step fraction, so the scaled
+   !> increment continues the path the last one followed (iterate_increment decides whether
+   !> to start from it).
+   subroutine extrapolated_start(problem, run, inc, dt, att)
+      type(problem_t), intent(in) :: problem
+      type(run_t), intent(in) :: run
+      integer, intent(in) :: inc
+      real(wp), intent(in) :: dt
+      type(attempt_t), intent(inout) :: att
+      if (allocated(att%du_start)) deallocate (att%du_start)
+      if (inc < 1 .or. .not. allocated(run%du_prev)) return
+      if (.not. (problem%position%dtau_prev > 0.0_wp)) return
+      if (size(run%du_prev) /= problem%system%dofs%neq) return
+      att%du_start = (dt/problem%position%dtau_prev)*run%du_prev
+   end subroutine extrapolated_start
 
    !> A step under arc-length control.
    subroutine arc_step(model, problem, results, run, istep, f0, ftarget, status, message, error)

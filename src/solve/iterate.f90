@@ -9,6 +9,10 @@
 !> K du = F_ext - F_int(u_n) - K_fc dup (the stiffness columns of the constrained DOFs
 !> times their change), so that the whole body follows the moved nodes from the start;
 !> its later iterations, like every update, integrate each point from the converged state.
+!> Full Newton with a previous increment of the same step (att%du_start) starts instead
+!> from the linear extrapolation u_n + (dtau/dtau_prev) du_prev of the free DOFs, the
+!> imposed ones at their new values, and iterates from there with the tangent of that
+!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4).
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
@@ -81,7 +85,7 @@ contains
       type(line_search_t) :: ls
       real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
       integer :: neq, it
-      logical :: moved, ok, elastic_now, imposed
+      logical :: moved, ok, elastic_now, imposed, extrapolated
 
       neq = problem%system%dofs%neq
       out%reason = ''
@@ -108,6 +112,30 @@ contains
          if (allocated(error)) return
       end if
       out%tau = tau
+      ! full Newton under load control: start from the extrapolated increment
+      extrapolated = .false.
+      if (imposed .and. att%method == METHOD_NEWTON .and. allocated(att%du_start)) then
+         if (size(att%du_start) == neq) then
+            extrapolated = .true.
+            imposed = .false.
+            dtot = att%du_start
+            call add_free(problem, dtot, u)
+            call forces(u, error)
+            if (allocated(error)) then
+               ! a point that cannot return there: the tangent predictor after all, on the
+               ! elastic stiffness (the points' tangents are no longer the converged ones)
+               if (error%kind /= ERR_RUN) return
+               deallocate (error)
+               problem%state%converged_tangents = .false.
+               extrapolated = .false.
+               imposed = .true.
+               dtot = 0.0_wp
+               u = problem%state%u
+               where (problem%system%dofs%eq == 0) u = up
+               fint = fint_conv
+            end if
+         end if
+      end if
 
       if (att%arc) then
          ! predictor: tangent (or stiffness) response to the step load, along the last
@@ -176,7 +204,8 @@ contains
              .not. problem%state%converged_tangents) then
             call elastic_operator(error)
             if (allocated(error)) return
-         else if (att%method == METHOD_NEWTON .and. (it > 0 .or. .not. tangent_ready())) then
+         else if (att%method == METHOD_NEWTON .and. (it > 0 .or. extrapolated .or. &
+             .not. tangent_ready())) then
             call refactorise(error)
             if (allocated(error)) return
          end if

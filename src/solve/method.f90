@@ -46,6 +46,10 @@ module pecplas_solve_method
       real(wp) :: dl = 0.0_wp
       !> Previous converged free increment (the arc predictor's sign); may be empty.
       real(wp), allocatable :: du_prev(:)
+      !> Load control: the previous converged free increment of the step scaled to this
+      !> one's size, the start of a full-Newton increment whose imposed displacements move
+      !> (linear extrapolation, pecplas_solve_iterate); empty: the tangent predictor.
+      real(wp), allocatable :: du_start(:)
       real(wp), allocatable :: f0(:), ftarget(:)
       real(wp) :: tau0 = 0.0_wp, tau1 = 0.0_wp
    contains

@@ -15,6 +15,7 @@ module pecplas_solve_output
    use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
    use pecplas_fe_plate_output, only: plate_results
    use pecplas_model_columns, only: rotation_column
+   use pecplas_model_plate_water_sides, only: plate_water_sides
    implicit none (type, external)
    private
 
@@ -144,13 +145,13 @@ contains
       end do
    end subroutine plate_fields
 
-   !> Whether the water on plate set s (its wet side or the level in force) changes at the
-   !> start of step `step`.
-   pure logical function water_changed(model, s, step)
+   !> Whether the water on plate set s (the faces it stands on, element by element, or the
+   !> level in force) changes at the start of step `step`.
+   logical function water_changed(model, s, step)
       type(model_t), intent(in) :: model
       integer, intent(in) :: s, step
-      water_changed = model%water%plate_side_at(s, step) /= &
-         model%water%plate_side_at(s, step - 1) .or. &
+      water_changed = any(plate_water_sides(model, s, step) /= &
+         plate_water_sides(model, s, step - 1)) .or. &
          model%water%level_at(step) /= model%water%level_at(step - 1)
    end function water_changed
 

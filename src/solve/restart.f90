@@ -65,6 +65,7 @@ contains
          ! that directs it (a limit probe's first length, an arc predictor's sign)
          if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
          call data%add('lead', [real(p%lead, wp)])
+         call data%add('dtau_prev', [p%dtau_prev])
          call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
          if (p%path /= PATH_NONE) then
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
@@ -417,6 +418,13 @@ contains
             end if
             if (allocated(error)) return
          end if
+         ! the last increment's step fraction (older restart data: none, no extrapolation)
+         p%dtau_prev = 0.0_wp
+         if (data%has('dtau_prev')) then
+            call data%get('dtau_prev', 1, v, error)
+            if (allocated(error)) return
+            p%dtau_prev = v(1)
+         end if
          ! the method the chain starts with (older restart data: the run's own)
          p%lead = 0
          if (data%has('lead')) then
@@ -525,7 +533,8 @@ contains
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
-         'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'phase', 'phase_carried']
+         'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'dtau_prev', 'phase', &
+         'phase_carried']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]

@@ -8,12 +8,16 @@ module pecplas_water_type
    implicit none (type, external)
    private
 
-   public :: water_model_t, LEVEL_KEEP, LEVEL_NONE, PLATE_KEEP
+   public :: water_model_t, LEVEL_KEEP, LEVEL_NONE, PLATE_KEEP, PLATE_FREE
 
    !> step_level values besides a level index: keep the level of the step before; no water.
    integer, parameter :: LEVEL_KEEP = 0, LEVEL_NONE = -1
    !> step_plate value: the plate set keeps the water side of the step before.
    integer, parameter :: PLATE_KEEP = 2
+   !> plate_side / step_plate value (*PLATE_WATER FREE): the water stands on every face of
+   !> the set's elements that no active element or joint lies against
+   !> (pecplas_model_plate_water_sides).
+   integer, parameter :: PLATE_FREE = 3
 
    type :: water_model_t
       !> Phreatic levels (*WATER), in deck order; the first is in force from the start.
@@ -27,10 +31,11 @@ module pecplas_water_type
       integer, allocatable :: step_level(:)
       logical, allocatable :: step_reset(:)
       !> Per plate set (model%plates): the side the water stands on (*PLATE_WATER):
-      !> +1 left, -1 right of the plate walked from its first node to its last, 0 none.
+      !> +1 left, -1 right of the plate walked from its first node to its last, 0 none,
+      !> PLATE_FREE its free faces (the deck's default for a set *PLATE_WATER does not name).
       integer, allocatable :: plate_side(:)
       !> step_plate(s, i): the side plate set s takes from the start of step i on
-      !> (*PLATE_WATER inside a step: +1, -1, 0 none) or PLATE_KEEP.
+      !> (*PLATE_WATER inside a step: +1, -1, 0 none, PLATE_FREE) or PLATE_KEEP.
       integer, allocatable :: step_plate(:, :)
    contains
       procedure :: plate_side_at => water_plate_side_at
@@ -70,7 +75,8 @@ contains
    end function water_level_at
 
    !> The water side of plate set s in step istep (0: before the first step): +1 left,
-   !> -1 right, 0 none; the *PLATE_WATER before the steps, then those of steps 1 .. istep.
+   !> -1 right, 0 none, PLATE_FREE the free faces; the *PLATE_WATER before the steps, then
+   !> those of steps 1 .. istep.
    pure integer function water_plate_side_at(this, s, istep) result(side)
       class(water_model_t), intent(in) :: this
       integer, intent(in) :: s, istep

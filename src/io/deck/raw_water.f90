@@ -25,7 +25,7 @@ module pecplas_io_deck_raw_water
       integer, allocatable :: level_at(:)
       type(raw_name_t), allocatable :: dry(:)
       type(raw_water_change_t), allocatable :: changes(:)
-      !> *PLATE_WATER: plate set names and the side ('LEFT', 'RIGHT' or 'NONE', upper
+      !> *PLATE_WATER: plate set names and the side ('LEFT', 'RIGHT', 'FREE' or 'NONE', upper
       !> case); plate_step: the step it was given in (0: before the first step).
       type(raw_name_t), allocatable :: plate(:), plate_side(:)
       integer, allocatable :: plate_step(:)

@@ -5,11 +5,11 @@ module pecplas_io_deck_reader_initial
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_io_text_fields, only: deck_line_t, &
-      field_t, split_fields, field_real, check_count, upper, &
-      add_name
+      field_t, split_fields, field_real, check_count, upper
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, line_error
    use pecplas_io_deck_reader_mesh, only: no_data_error
    use pecplas_model_type, only: model_t
+   use pecplas_io_deck_set_names, only: eset_names
    use pecplas_model_initial, only: initial_stress_t
    implicit none (type, external)
    private
@@ -99,7 +99,6 @@ contains
       type(initial_stress_t), allocatable :: out(:)
       integer, allocatable :: nparts(:), parts(:)
       integer :: i, k, n
-      character(len=:), allocatable :: list
       if (.not. allocated(model%initial_stresses)) return
       ! the parts of each line (one: a set or ALL), then one entry per part, element by
       ! element (no array constructor of the type: its allocatable components)
@@ -109,12 +108,9 @@ contains
             if (upper(init%set) == 'ALL') cycle
             nparts(i) = size(model%mesh%find_esets(init%set))
             if (nparts(i) == 0) then
-               list = ''
-               do k = 1, size(model%mesh%esets)
-                  call add_name(list, model%mesh%esets(k)%name)
-               end do
                call line_error(state, find_line(state, init%file, init%line), &
-                  "undefined element set '"//init%set//"'; known element sets: ALL"//list, error)
+                  "undefined element set '"//init%set//"'; known element sets: ALL"// &
+                  eset_names(model%mesh), error)
                return
             end if
          end associate

@@ -10,6 +10,7 @@ module pecplas_io_deck_reader_materials
       where_text
    use pecplas_io_deck_reader_mesh, only: check_name
    use pecplas_model_type, only: model_t
+   use pecplas_io_deck_set_names, only: eset_names
    use pecplas_base_params, only: params_t
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_strings, only: decimal_text
@@ -209,12 +210,8 @@ contains
             associate (sec => state%sections(i))
                parts = model%mesh%find_esets(sec%set)
                if (size(parts) == 0) then
-                  list = ''
-                  do m = 1, size(model%mesh%esets)
-                     call add_name(list, model%mesh%esets(m)%name)
-                  end do
                   call line_error(state, sec%at, "undefined element set '"//sec%set// &
-                     "'; known element sets:"//list, error)
+                     "'; known element sets:"//eset_names(model%mesh), error)
                   return
                end if
                m = 0

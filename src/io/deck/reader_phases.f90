@@ -13,6 +13,7 @@ module pecplas_io_deck_reader_phases
       add_name, itoa, parse_real
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_change_t, line_error
    use pecplas_model_type, only: model_t
+   use pecplas_io_deck_set_names, only: eset_names
    use pecplas_model_loads, only: LOAD_FORCE, LOAD_DISPLACEMENT, LOAD_PRESSURE
    use pecplas_model_phases, only: phase_change_t, CHANGE_DEACTIVATE, CHANGE_ACTIVATE, &
       CHANGE_MATERIAL, CHANGE_LAW, CHANGE_NAMES, TARGET_ELEMENTS, TARGET_JOINTS, START_ZERO, &
@@ -230,10 +231,7 @@ contains
          return
       end if
       if (ch%set == 0) then
-         list = ''
-         do k = 1, size(model%mesh%esets)
-            call add_name(list, model%mesh%esets(k)%name)
-         end do
+         list = eset_names(model%mesh)
          if (allocated(model%joint_sets)) then
             do k = 1, size(model%joint_sets)
                call add_name(list, model%joint_sets(k)%name)

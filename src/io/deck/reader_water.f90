@@ -19,7 +19,7 @@ module pecplas_io_deck_reader_water
    use pecplas_water_phreatic, only: phreatic_t
    use pecplas_water_drainage, only: water_material_t, default_water_stiffness, &
       DRAINAGE_NAMES, DRAINED, UNDRAINED_A, UNDRAINED_B, NON_POROUS
-   use pecplas_water_type, only: LEVEL_KEEP, LEVEL_NONE, PLATE_KEEP
+   use pecplas_water_type, only: LEVEL_KEEP, LEVEL_NONE, PLATE_KEEP, PLATE_FREE
    implicit none (type, external)
    private
 
@@ -150,9 +150,10 @@ contains
       end do
    end subroutine read_dry
 
-   !> *PLATE_WATER: data lines `plate_set, LEFT|RIGHT|NONE`: the water stands on that side of
-   !> the plate (walked from its first node to its last) and presses on it below the level.
-   !> Before the steps: from the start; inside a step: from that step on (NONE: no more).
+   !> *PLATE_WATER: data lines `plate_set, LEFT|RIGHT|FREE|NONE`: the water stands on that
+   !> side of the plate (walked from its first node to its last), or on its free faces
+   !> (FREE), and presses on it below the level. Before the steps: from the start; inside a
+   !> step: from that step on (NONE: no more). A plate set no line names has FREE.
    subroutine read_plate_water(state, block, error)
       type(deck_state_t), intent(inout) :: state
       type(deck_block_t), intent(in) :: block
@@ -164,19 +165,21 @@ contains
       if (allocated(error)) return
       if (block%last < block%first) then
          call line_error(state, block%at, '*PLATE_WATER needs data lines "plate_set, '// &
-            'LEFT|RIGHT|NONE"', error)
+            'LEFT|RIGHT|FREE|NONE"', error)
          return
       end if
       if (.not. allocated(state%water%plate)) allocate (state%water%plate(0), &
          state%water%plate_side(0), state%water%plate_step(0))
       do i = block%first, block%last
          call split_fields(state%lines%text(i), f)
-         call check_count(state%lines%get(i), f, 2, 2, 'plate_set, LEFT|RIGHT|NONE', error)
+         call check_count(state%lines%get(i), f, 2, 2, 'plate_set, LEFT|RIGHT|FREE|NONE', &
+            error)
          if (allocated(error)) return
          if (upper(f(2)%s) /= 'LEFT' .and. upper(f(2)%s) /= 'RIGHT' .and. &
-             upper(f(2)%s) /= 'NONE') then
+             upper(f(2)%s) /= 'FREE' .and. upper(f(2)%s) /= 'NONE') then
             call line_error(state, i, "side '"//f(2)%s//"': expected LEFT or RIGHT (of the "// &
-               'plate walked from its first node to its last) or NONE (no water)', error)
+               'plate walked from its first node to its last), FREE (every face no active '// &
+               'element or joint lies against) or NONE (no water)', error)
             return
          end if
          item%name = f(1)%s
@@ -419,7 +422,8 @@ contains
       end if
       k = 0
       if (allocated(model%plates)) k = size(model%plates)
-      allocate (model%water%plate_side(k), source=0)
+      ! a plate set *PLATE_WATER does not name takes the water on its free faces
+      allocate (model%water%plate_side(k), source=PLATE_FREE)
       allocate (model%water%step_plate(k, nstep), source=PLATE_KEEP)
       if (allocated(state%water%plate)) then
          do i = 1, size(state%water%plate)
@@ -438,6 +442,7 @@ contains
             i2 = 0
             if (state%water%plate_side(i)%name == 'LEFT') i2 = 1
             if (state%water%plate_side(i)%name == 'RIGHT') i2 = -1
+            if (state%water%plate_side(i)%name == 'FREE') i2 = PLATE_FREE
             if (state%water%plate_step(i) == 0) then
                model%water%plate_side(k) = i2
             else

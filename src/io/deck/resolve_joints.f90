@@ -16,6 +16,7 @@ module pecplas_io_deck_resolve_joints
    use pecplas_io_deck_raw_joints, only: raw_joint_set_t
    use pecplas_io_deck_repeats, only: first_repeat
    use pecplas_model_type, only: model_t
+   use pecplas_io_deck_set_names, only: eset_names, edge_set_names
    use pecplas_model_joints, only: joint_set_t, joint_kind, JOINT_GOODMAN4, JOINT_GOODMAN6, &
       JOINT_KATONA
    use pecplas_model_mesh_split, only: split_result_t, split_along_edges, remap_side_edges
@@ -178,31 +179,42 @@ contains
       if (len(list) == 0) list = ' (none: define one with *INTERFACE_LAW, NAME=..., TYPE=...)'
    end function law_names
 
-   !> ' a b' names of the edge sets (edges) or element sets (for messages).
-   function set_names(model, edges) result(list)
-      type(model_t), intent(in) :: model
-      logical, intent(in) :: edges
-      character(len=:), allocatable :: list
-      integer :: i
-      list = ''
-      if (edges) then
-         do i = 1, size(model%mesh%edge_sets)
-            call add_name(list, model%mesh%edge_sets(i)%name)
-         end do
-      else
-         do i = 1, size(model%mesh%esets)
-            call add_name(list, model%mesh%esets(i)%name)
-         end do
-      end if
-      if (len(list) == 0) list = ' (none)'
-   end function set_names
-
    pure integer function spring_line(raw, k) result(at)
       type(raw_joint_set_t), intent(in) :: raw
       integer, intent(in) :: k
       at = raw%at
       if (raw%n >= k .and. k > 0) at = raw%where(k)
    end function spring_line
+
+   !> The edge set `ke` named by EDGES= of a generated set; an error if there is none.
+   subroutine find_edges(state, model, raw, ke, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      integer, intent(out) :: ke
+      type(error_t), allocatable, intent(out) :: error
+      ke = model%mesh%find_edge_set(raw%edges)
+      if (ke == 0) call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
+         "' in EDGES=; known edge sets:"//edge_set_names(model%mesh, ' (none)'), error)
+   end subroutine find_edges
+
+   !> `nen`, the nodes per edge of edge set `ke`; an error if they do not fit the set's type
+   !> (GOODMAN4: 2, GOODMAN6: 3).
+   subroutine check_edge_nodes(state, model, raw, set, ke, nen, error)
+      type(deck_state_t), intent(in) :: state
+      type(model_t), intent(in) :: model
+      type(raw_joint_set_t), intent(in) :: raw
+      type(joint_set_t), intent(in) :: set
+      integer, intent(in) :: ke
+      integer, intent(out) :: nen
+      type(error_t), allocatable, intent(out) :: error
+      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
+      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
+          nen /= 3)) call line_error(state, raw%at, set%type_name()//" joints need "// &
+            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
+            //raw%edges//"' has "//itoa(nen)//'-node edges: use '// &
+            trim(merge('GOODMAN6', 'GOODMAN4', nen == 3))//' (or THIN_LAYER, SPRING)', error)
+   end subroutine check_edge_nodes
 
    !> EDGES=, SIDE=: splits the mesh and builds the set; edges(nen, m) = face-1 joint edges.
    subroutine generated(state, model, raw, origin, next_id, set, edges, error)
@@ -218,34 +230,23 @@ contains
       type(error_t), allocatable :: e
       integer, allocatable :: dupof(:)
       integer :: ke, ks, nen, nn0, i
-      ke = model%mesh%find_edge_set(raw%edges)
-      if (ke == 0) then
-         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
-            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
-         return
-      end if
+      call find_edges(state, model, raw, ke, error)
+      if (allocated(error)) return
       ks = model%mesh%find_eset(raw%side)
       if (ks == 0 .and. size(model%mesh%find_esets(raw%side)) > 1) then
          call line_error(state, raw%at, "SIDE="//raw%side//" is a Gmsh group of several "// &
             'element types; SIDE= takes one element set: mesh the body on that side with '// &
             'one element type, or name its part (known element sets:'// &
-            set_names(model, .false.)//')', error)
+            eset_names(model%mesh, ' (none)')//')', error)
          return
       end if
       if (ks == 0) then
          call line_error(state, raw%at, "undefined element set '"//raw%side// &
-            "' in SIDE=; known element sets:"//set_names(model, .false.), error)
+            "' in SIDE=; known element sets:"//eset_names(model%mesh, ' (none)'), error)
          return
       end if
-      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
-      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
-          nen /= 3)) then
-         call line_error(state, raw%at, set%type_name()//" joints need "// &
-            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
-            //raw%edges//"' has "//itoa(nen)//'-node edges: use '// &
-            trim(merge('GOODMAN6', 'GOODMAN4', nen == 3))//' (or THIN_LAYER, SPRING)', error)
-         return
-      end if
+      call check_edge_nodes(state, model, raw, set, ke, nen, error)
+      if (allocated(error)) return
       nn0 = model%mesh%nnode()
       call split_along_edges(model%mesh, ke, ks, origin, res, e)
       if (allocated(e)) then
@@ -288,20 +289,10 @@ contains
       logical, allocatable :: turn(:)
       character(len=:), allocatable :: msg
       integer :: ke, nen, i, k, face, bad
-      ke = model%mesh%find_edge_set(raw%edges)
-      if (ke == 0) then
-         call line_error(state, raw%at, "undefined edge set '"//raw%edges// &
-            "' in EDGES=; known edge sets:"//set_names(model, .true.), error)
-         return
-      end if
-      nen = size(model%mesh%edge_sets(ke)%nodes, 1)
-      if ((set%kind == JOINT_GOODMAN4 .and. nen /= 2) .or. (set%kind == JOINT_GOODMAN6 .and. &
-          nen /= 3)) then
-         call line_error(state, raw%at, set%type_name()//" joints need "// &
-            trim(merge('2-node (linear)   ', '3-node (quadratic)', nen == 3))//" edges; edge set '" &
-            //raw%edges//"' has "//itoa(nen)//'-node edges', error)
-         return
-      end if
+      call find_edges(state, model, raw, ke, error)
+      if (allocated(error)) return
+      call check_edge_nodes(state, model, raw, set, ke, nen, error)
+      if (allocated(error)) return
       call split_both_faces(model%mesh, ke, raw%extend, origin, res, e)
       if (allocated(e)) then
          call line_error(state, raw%at, e%message, error)

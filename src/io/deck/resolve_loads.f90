@@ -7,6 +7,7 @@ module pecplas_io_deck_resolve_loads
    use pecplas_io_deck_state, only: deck_state_t, raw_item_t, raw_step_t, line_error
    use pecplas_model_type, only: model_t
    use pecplas_model_mesh, only: mesh_t
+   use pecplas_io_deck_set_names, only: eset_names, nset_names, edge_set_names
    use pecplas_model_loads, only: load_pattern_t, step_t, load_kind, LOAD_DISPLACEMENT, &
       SUPPORT_NAME_LEN
    use pecplas_base_strings, only: itoa
@@ -40,7 +41,7 @@ contains
       k = mesh%find_nset(item%target)
       if (k == 0) then
          call line_error(state, item%at, "undefined node set '"//item%target// &
-            "'; known node sets:"//nset_names(mesh), error)
+            "'; known node sets:"//nset_names(mesh, ' (none)'), error)
          return
       end if
       nodes = mesh%nsets(k)%nodes
@@ -201,7 +202,7 @@ contains
          k = mesh%find_edge_set(item%target)
          if (k == 0) then
             call line_error(state, item%at, "undefined edge set '"//item%target// &
-               "'; known edge sets:"//edge_set_names(mesh), error)
+               "'; known edge sets:"//edge_set_names(mesh, ' (none)'), error)
             return
          end if
          ! pattern edges are (3, n), third node 0 on linear sides
@@ -319,39 +320,7 @@ contains
       end if
    end subroutine resolve_arc_step
 
-   !> ' a b c' lists of names for messages (' (none)' when empty).
-   function nset_names(mesh) result(list)
-      type(mesh_t), intent(in) :: mesh
-      character(len=:), allocatable :: list
-      integer :: k
-      list = ''
-      do k = 1, size(mesh%nsets)
-         call add_name(list, mesh%nsets(k)%name)
-      end do
-      if (len(list) == 0) list = ' (none)'
-   end function nset_names
-
-   function edge_set_names(mesh) result(list)
-      type(mesh_t), intent(in) :: mesh
-      character(len=:), allocatable :: list
-      integer :: k
-      list = ''
-      do k = 1, size(mesh%edge_sets)
-         call add_name(list, mesh%edge_sets(k)%name)
-      end do
-      if (len(list) == 0) list = ' (none)'
-   end function edge_set_names
-
-   function eset_names(mesh) result(list)
-      type(mesh_t), intent(in) :: mesh
-      character(len=:), allocatable :: list
-      integer :: k
-      list = ''
-      do k = 1, size(mesh%esets)
-         call add_name(list, mesh%esets(k)%name)
-      end do
-   end function eset_names
-
+   !> ' a b c': the names of the load patterns (' (none)' when there are none).
    function pattern_names(patterns) result(list)
       type(load_pattern_t), intent(in) :: patterns(:)
       character(len=:), allocatable :: list

@@ -417,7 +417,8 @@ contains
 
    !> The threads each part of the run got (pecplas_linalg_threads): root attributes
    !> threads_element_loops, threads_cholmod_regions, threads_blas, blas_flops_per_thread
-   !> (0: every BLAS call gets threads_blas), blas and blas_threading ('' when not known).
+   !> (0: every BLAS call gets threads_blas), blas, blas_threading, blas_core (OpenBLAS's
+   !> kernels) and blas_core_source ('' when not known).
    subroutine write_threads(file, t, error)
       integer(hid_t), intent(in) :: file
       type(thread_setting_t), intent(in) :: t
@@ -430,6 +431,9 @@ contains
       if (.not. allocated(error)) call h5_attr(file, 'blas', text_or_empty(t%blas), error)
       if (.not. allocated(error)) call h5_attr(file, 'blas_threading', &
          text_or_empty(t%blas_threading), error)
+      if (.not. allocated(error)) call h5_attr(file, 'blas_core', text_or_empty(t%blas_core), error)
+      if (.not. allocated(error)) call h5_attr(file, 'blas_core_source', &
+         text_or_empty(t%blas_core_source), error)
    end subroutine write_threads
 
    !> Replaces the root attribute `warnings` of an open file by `list` (the deck's warnings

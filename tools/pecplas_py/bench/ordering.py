@@ -52,10 +52,10 @@ def measure(exe, cases, orderings, repeats, tmp):
         load = max(load, load1())
         for line in r["stdout"].splitlines():
             f = line.split()
-            if len(f) != 14 or f[0] not in ("Q4", "Q8"):
+            if len(f) < 14 or f[0] not in ("Q4", "Q8"):
                 continue
             rows.append([f[0], int(f[1]), int(f[2]), f[3], f[4]] +
-                        [float(x) for x in f[5:]] + [repeats, load])
+                        [float(x) for x in f[5:14]] + [repeats, load])
             print(" ".join(str(x) for x in rows[-1]), flush=True)
     return rows
 

@@ -99,25 +99,52 @@ def excavation_geometry():
     return x_back, x_wall, x_front, ys
 
 
-def excavation_deck():
-    x_back, x_wall, x_front, ys = excavation_geometry()
-    xs = x_back[:-1] + x_wall + x_front[1:]
+def grid_mesh(xs, ys, set_of):
+    """Q8 mesh of the grid xs x ys (ys from the surface down), each element in the set
+    set_of(x, y) of its centre."""
     m = Q8Mesh()
-
-    def set_of(xc, yc):
-        if xc < 0:
-            return "back"
-        if xc < WALL_T:
-            return "wall" if yc > -WALL_L else "front"
-        for k, depth in enumerate(STAGES):
-            if yc > -depth:
-                return f"exc_{k + 1}"
-        return "front"
-
     for j in range(len(ys) - 1):
         for i in range(len(xs) - 1):
             x0, x1, y0, y1 = xs[i], xs[i + 1], ys[j + 1], ys[j]
             m.quad(set_of((x0 + x1) / 2, (y0 + y1) / 2), [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+    return m
+
+
+def excavation_set(xc, yc, strip):
+    """The element set of the cantilever decks' element centred at (xc, yc): the back soil
+    (x < 0), the wall strip (strip deck only, 0 < x < WALL_T, above its tip), the layers
+    exc_k excavated at stage k, the front soil."""
+    if xc < 0:
+        return "back"
+    if strip and xc < WALL_T:
+        return "wall" if yc > -WALL_L else "front"
+    for k, depth in enumerate(STAGES):
+        if yc > -depth:
+            return f"exc_{k + 1}"
+    return "front"
+
+
+def excavation_stages(d, m, xs, ys, joints):
+    """The supports, K0 state, stages and solver shared by both cantilever decks: stage k
+    removes the layer exc_k and the joint set {joints}_k beside it. Returns the deck text."""
+    xmin, xmax, ymin = min(xs), max(xs), min(ys)
+    d.nset("left", m.nodes_where(lambda x, y: abs(x - xmin) < 1e-9), per_line=16)
+    d.nset("right", m.nodes_where(lambda x, y: abs(x - xmax) < 1e-9), per_line=16)
+    d.nset("bottom", m.nodes_where(lambda x, y: abs(y - ymin) < 1e-9), per_line=16)
+    d.boundary("left, X", "right, X", "bottom, XY")
+    d.initial_stress("GEOSTATIC", f"ALL, 0.0, {K0_SAND}")
+    for k in range(len(STAGES)):
+        d.keyword("STEP", NAME=f"excavate_{k + 1}", INCREMENTS=5)
+        d.keyword("DEACTIVATE").data(f"exc_{k + 1}", f"{joints}_{k + 1}")
+        d.keyword("END STEP")
+    d.solver(METHOD="NEWTON", MAX_ITERATIONS=50, MAX_CUTS=6).output(EVERY=1)
+    return d.text()
+
+
+def excavation_deck():
+    x_back, x_wall, x_front, ys = excavation_geometry()
+    xs = x_back[:-1] + x_wall + x_front[1:]
+    m = grid_mesh(xs, ys, lambda xc, yc: excavation_set(xc, yc, strip=True))
     wall_ys = [y for y in ys if y >= -WALL_L - 1e-9]
     # edges: face 1 is the soil (the body that is not SIDE=wall)
     back = [m.edge((0.0, wall_ys[j + 1]), (0.0, wall_ys[j])) for j in range(len(wall_ys) - 1)]
@@ -180,18 +207,7 @@ def excavation_deck():
                   INTEGRATION="LOBATTO", EDGES=f"{name}_face", SIDE="wall")
     d.keyword("JOINTS", TYPE="GOODMAN6", SET="j_tip", LAW="wall_friction",
               INTEGRATION="GAUSS", EDGES="tip_face", SIDE="wall")
-    xmin, xmax, ymin = min(xs), max(xs), min(ys)
-    d.nset("left", m.nodes_where(lambda x, y: abs(x - xmin) < 1e-9), per_line=16)
-    d.nset("right", m.nodes_where(lambda x, y: abs(x - xmax) < 1e-9), per_line=16)
-    d.nset("bottom", m.nodes_where(lambda x, y: abs(y - ymin) < 1e-9), per_line=16)
-    d.boundary("left, X", "right, X", "bottom, XY")
-    d.initial_stress("GEOSTATIC", f"ALL, 0.0, {K0_SAND}")
-    for k in range(len(STAGES)):
-        d.keyword("STEP", NAME=f"excavate_{k + 1}", INCREMENTS=5)
-        d.keyword("DEACTIVATE").data(f"exc_{k + 1}", f"j_front_{k + 1}")
-        d.keyword("END STEP")
-    d.solver(METHOD="NEWTON", MAX_ITERATIONS=50, MAX_CUTS=6).output(EVERY=1)
-    return d.text()
+    return excavation_stages(d, m, xs, ys, "j_front")
 
 
 def excavation_plate_deck():
@@ -202,20 +218,7 @@ def excavation_plate_deck():
     shared with the soil below)."""
     x_back, _, x_front, ys = excavation_geometry()
     xs = x_back + [x - WALL_T for x in x_front[1:]]
-    m = Q8Mesh()
-
-    def set_of(xc, yc):
-        if xc < 0:
-            return "back"
-        for k, depth in enumerate(STAGES):
-            if yc > -depth:
-                return f"exc_{k + 1}"
-        return "front"
-
-    for j in range(len(ys) - 1):
-        for i in range(len(xs) - 1):
-            x0, x1, y0, y1 = xs[i], xs[i + 1], ys[j + 1], ys[j]
-            m.quad(set_of((x0 + x1) / 2, (y0 + y1) / 2), [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+    m = grid_mesh(xs, ys, lambda xc, yc: excavation_set(xc, yc, strip=False))
     wall_ys = [y for y in ys if y >= -WALL_L - 1e-9]
     line = [m.edge((0.0, wall_ys[j]), (0.0, wall_ys[j + 1])) for j in range(len(wall_ys) - 1)]
     ea, ei = WALL_E * WALL_T, WALL_E * WALL_T**3 / 12
@@ -250,18 +253,7 @@ def excavation_plate_deck():
     d.keyword("PLATE", SET="wall", EDGES="wall_line", EA=ea, EI=ei, NU=WALL_NU)
     d.keyword("JOINTS", TYPE="GOODMAN6", SET="wif", LAW="wall_friction",
               INTEGRATION="LOBATTO", EDGES="wall_line", FACES="BOTH")
-    xmin, xmax, ymin = min(xs), max(xs), min(ys)
-    d.nset("left", m.nodes_where(lambda x, y: abs(x - xmin) < 1e-9), per_line=16)
-    d.nset("right", m.nodes_where(lambda x, y: abs(x - xmax) < 1e-9), per_line=16)
-    d.nset("bottom", m.nodes_where(lambda x, y: abs(y - ymin) < 1e-9), per_line=16)
-    d.boundary("left, X", "right, X", "bottom, XY")
-    d.initial_stress("GEOSTATIC", f"ALL, 0.0, {K0_SAND}")
-    for k in range(len(STAGES)):
-        d.keyword("STEP", NAME=f"excavate_{k + 1}", INCREMENTS=5)
-        d.keyword("DEACTIVATE").data(f"exc_{k + 1}", f"wif_exc_{k + 1}")
-        d.keyword("END STEP")
-    d.solver(METHOD="NEWTON", MAX_ITERATIONS=50, MAX_CUTS=6).output(EVERY=1)
-    return d.text()
+    return excavation_stages(d, m, xs, ys, "wif_exc")
 
 
 # ---- pile wished in place
@@ -311,11 +303,7 @@ def embankment_deck():
     x_under = [base * i / ncol for i in range(ncol + 1)]
     xs = x_under + cumulative(base, [1.5, 2.0, 2.5, 3.0, 4.0, 6.0])[1:]   # .. 30 m
     ys = cumulative(0.0, [1.0, 1.0, 1.5, 2.0, 2.0, 2.5], -1.0)            # 0 .. -10
-    m = Q8Mesh()
-    for j in range(len(ys) - 1):
-        for i in range(len(xs) - 1):
-            x0, x1, y0, y1 = xs[i], xs[i + 1], ys[j + 1], ys[j]
-            m.quad("clay", [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+    m = grid_mesh(xs, ys, lambda xc, yc: "clay")
     lift = EMB_H / EMB_LIFTS
 
     def half(y):

@@ -15,9 +15,9 @@ Structures):
 - excavation_wet.inp: excavation_strutted.inp with groundwater: the water table 2 m below the
   surface (GAMMA_SAT = 20 below it), the pit kept flooded to it as it is dug: the water stands
   on the pit floor (free faces under the level) and on the wall's pit face where its soil is
-  gone: the wall is four plate sets (wall_1 .. wall_3 between the stage depths, wall_4 below),
-  each given `*PLATE_WATER ..., RIGHT` in the step that exposes it (below the pit floor the
-  joints carry the soil's pore pressure to the wall on both faces).
+  gone: `*PLATE_WATER wall, FREE` puts it on every face of the wall that no soil element or
+  joint lies against any more, stage by stage (below the pit floor the joints carry the
+  soil's pore pressure to the wall on both faces).
 - anchored_wall.inp: a sheet pile (plate, EA = 2e6 kN/m, EI = 4e4 kN m2/m), 8 m deep, retaining
   4 m of dry sand excavated in two stages, tied back at 1 m depth by a ground anchor: a free
   length (NODE_TO_NODE anchor, EA = 1e5 kN, one every 2.5 m) from the wall to a grouted body,
@@ -157,16 +157,7 @@ def excavation(strip, wet=False):
         lines += ["*NSET, NAME=wall_nodes"] + chunk(line_nodes)
         lines += ["*EDGES, NAME=wall_line"] + [f"{a}, {b}" for a, b in
                                                 zip(line_nodes[:-1], line_nodes[1:])]
-        if wet:
-            # one plate set per stage depth (the same wall: its sets share the nodes, the
-            # rotation included), so that the pit water can be put on the part dug free
-            depths = [0.0] + list(STAGES) + [WALL_DEPTH]
-            for k in range(len(depths) - 1):
-                j0, j1 = jy(-depths[k]), jy(-depths[k + 1])
-                lines += [f"*PLATE, SET=wall_{k + 1}, EA=2.4e7, EI=1.28e6, NU=0.15"] + \
-                    [f"{nid(iw, j)}, {nid(iw, j - 1)}" for j in range(j0, j1, -1)]
-        else:
-            lines += ["*PLATE, SET=wall, EDGES=wall_line, EA=2.4e7, EI=1.28e6, NU=0.15"]
+        lines += ["*PLATE, SET=wall, EDGES=wall_line, EA=2.4e7, EI=1.28e6, NU=0.15"]
         lines += ["*JOINTS, TYPE=GOODMAN4, SET=wif, LAW=wall_friction, EDGES=wall_line, "
                   "FACES=BOTH, EXTEND=1"]
         strut_node = nid(iw, jy(STRUT_Y))
@@ -175,17 +166,16 @@ def excavation(strip, wet=False):
               "SPACING=5", "strut_node",
               ]
     if wet:
-        lines += [f"*WATER, NAME=gwt, GAMMA_W=10, LEVEL={WATER_TABLE:g}"]
+        # the pit's water on the wall's faces dug free, stage by stage (FREE: wherever no
+        # soil element or joint is left against a face)
+        lines += [f"*WATER, NAME=gwt, GAMMA_W=10, LEVEL={WATER_TABLE:g}",
+                  "*PLATE_WATER", "wall, FREE"]
     lines += ["*INITIAL_STRESS, TYPE=GEOSTATIC", "ALL, 0.0, 0.5",
               "*OUTPUT, EVERY=1"]
     for k in range(1, len(STAGES) + 1):
         jname = f"j_front_{k}" if strip else f"wif_exc_{k}"
         lines += [f"*STEP, NAME=excavate_{k}, INCREMENTS=5", "*DEACTIVATE",
                   f"exc_{k}, {jname}"]
-        if wet and -STAGES[k - 1] < WATER_TABLE:
-            # the pit's water on the wall's face dug free in this stage (pit side: right of
-            # the wall walked downwards)
-            lines += ["*PLATE_WATER", f"wall_{k}, RIGHT"]
         if k == 1:
             lines += ["*END STEP", "*STEP, NAME=strut, INCREMENTS=1", "*ACTIVATE", "strut"]
         lines += ["*END STEP"]
