@@ -155,19 +155,21 @@ s6: build
 	@$(PYTHON) -m pecplas_py.scenes.plot_s6 output/s6
 	@$(PYTHON) -m pecplas_py.scenes.s6_report output/s6
 
-# The optional MPI build (doc/mpi.md): CMake with -DPECPLAS_MPI=ON in its own tree, so the
-# default serial builds stay as they are.
-MPI_DIR ?= build/cmake-mpi
+# The optional MPI build (doc/mpi.md): the CMake tree of `make test` configured with
+# -DPECPLAS_MPI=ON, which adds MPI flavours of pecplas and of the test driver in $(MPI_DIR),
+# linked with the serial programs' own Fortran objects (only the C shims and the two main
+# programs are compiled again); the serial programs stay as they are.
+MPI_DIR = $(CMAKE_DIR)/mpi
 MPI_DECKS ?= input/default.inp test/data/plasticity/footing_t6.inp input/s2/s2_katona.inp \
   test/data/katona/float_goodman6_axi.inp input/examples/excavation_cantilever.inp \
   test/data/plates/footing_beam.inp
 build-mpi:
 	@PECPLAS_MPI=1 bash tools/install_deps.sh
-	cmake -S . -B $(MPI_DIR) -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
-	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas
+	cmake -S . -B $(CMAKE_DIR) -DPECPLAS_MPI=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake --build $(CMAKE_DIR) -j$(JOBS) --target pecplas_mpi
 
 test-mpi: build-mpi
-	cmake --build $(MPI_DIR) -j$(JOBS) --target pecplas_tests
+	cmake --build $(CMAKE_DIR) -j$(JOBS) --target pecplas_tests_mpi
 	$(PYTHON) -m pecplas_py.checks.mpi_check $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
 	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
 	  --signal test/data/plasticity/footing_t6.inp --write-failure test/data/plasticity/footing_t6.inp \

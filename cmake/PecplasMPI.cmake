@@ -1,7 +1,11 @@
 # The optional MPI build (doc/mpi.md): -DPECPLAS_MPI=ON links OpenMPI and MUMPS (Debian 12:
-# libopenmpi-dev, openmpi-bin, libmumps-dev) and compiles the C shims with PECPLAS_MPI, which
-# turns on `mpirun -np N pecplas DECK` and *SOLVER, LINEAR=MUMPS. The default build (OFF) has
-# no MPI dependency: the shims compile to one-rank stubs and LINEAR=MUMPS is an input error.
+# libopenmpi-dev, openmpi-bin, libmumps-dev) into a second flavour of the programs: the C shims
+# compiled once more with PECPLAS_MPI (pecplas_shims_mpi), which turns on
+# `mpirun -np N pecplas DECK` and *SOLVER, LINEAR=MUMPS, linked with the same Fortran objects as
+# the serial programs. The serial programs stay as they are, with no MPI dependency (their shims
+# compile to one-rank stubs and LINEAR=MUMPS is an input error); the MPI ones are
+# mpi/pecplas and mpi/pecplas_tests (targets pecplas_mpi, pecplas_tests_mpi), defined by
+# pecplas_mpi_programs() once the serial programs are.
 option(PECPLAS_MPI "Build with MPI and the MUMPS distributed solver" OFF)
 if(PECPLAS_MPI)
   find_package(MPI REQUIRED COMPONENTS C)
@@ -14,7 +18,32 @@ if(PECPLAS_MPI)
       "apt-get install libmumps-dev libopenmpi-dev openmpi-bin")
   endif()
   message(STATUS "PECPLAS_MPI: MUMPS ${DMUMPS_LIBRARY}, MPI ${MPI_C_VERSION}")
-  target_compile_definitions(pecplas_lib PRIVATE "$<$<COMPILE_LANGUAGE:C>:PECPLAS_MPI>")
-  target_include_directories(pecplas_lib PRIVATE "$<$<COMPILE_LANGUAGE:C>:${MUMPS_INCLUDE_DIR}>")
-  target_link_libraries(pecplas_lib PUBLIC ${DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY} MPI::MPI_C)
+  pecplas_add_shims(pecplas_shims_mpi)
+  target_compile_definitions(pecplas_shims_mpi PRIVATE PECPLAS_MPI)
+  target_include_directories(pecplas_shims_mpi PRIVATE ${MUMPS_INCLUDE_DIR})
+  target_link_libraries(pecplas_shims_mpi PUBLIC ${DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY}
+    MPI::MPI_C)
 endif()
+
+# pecplas_mpi_programs(): with PECPLAS_MPI, `pecplas` and the test driver `pecplas_tests` once
+# more as mpi/pecplas and mpi/pecplas_tests: only their main programs are compiled again, the
+# libraries (pecplas_lib, the app and test support) are the serial programs' own.
+function(pecplas_mpi_programs)
+  if(NOT PECPLAS_MPI)
+    return()
+  endif()
+  add_executable(pecplas_mpi "${PROJECT_SOURCE_DIR}/app/main.f90")
+  target_link_libraries(pecplas_mpi PRIVATE pecplas_lib
+    $<TARGET_NAME_IF_EXISTS:pecplas_app_support>)
+  add_executable(pecplas_tests_mpi "${PROJECT_SOURCE_DIR}/test/main.f90")
+  target_link_libraries(pecplas_tests_mpi PRIVATE pecplas_test_support)
+  target_compile_options(pecplas_tests_mpi PRIVATE ${PECPLAS_TEST_FFLAGS})
+  foreach(target IN ITEMS pecplas_mpi pecplas_tests_mpi)
+    string(REGEX REPLACE "_mpi$" "" name ${target})
+    set_target_properties(${target} PROPERTIES
+      PECPLAS_MPI_PROGRAM ON
+      OUTPUT_NAME ${name}
+      RUNTIME_OUTPUT_DIRECTORY "${PROJECT_BINARY_DIR}/mpi"
+      Fortran_MODULE_DIRECTORY "${PROJECT_BINARY_DIR}/mod/mpi/${target}")
+  endforeach()
+endfunction()

@@ -6,8 +6,10 @@
 #   PECPLAS_MPI=1 tools/install_deps.sh   also OpenMPI and MUMPS, for the MPI build
 #                                         (make build-mpi, doc/mpi.md); never otherwise
 # Optional Python packages (OPTIONAL_PIP_PACKAGES: gmsh, which meshes the examples of
-# doc/gmsh.md and their test) are installed as root when missing, on a best-effort basis;
-# their absence is never an error (the tests that need them are skipped, saying why).
+# doc/gmsh.md and their test; pytest-xdist, with which make test runs the Python tests on
+# two workers) are installed as root when missing, on a best-effort basis; their absence is
+# never an error (the tests that need gmsh are skipped, saying why; without pytest-xdist the
+# Python tests run one at a time).
 # Quiet and fast when all is present: cheap file and PATH tests, one python start-up.
 # Runs unattended (CI=true, no stdin): apt-get -y with DEBIAN_FRONTEND=noninteractive.
 set -euo pipefail
@@ -16,7 +18,7 @@ APT_PACKAGES=(gfortran libhdf5-dev libsuitesparse-dev libopenblas-dev liblapack-
 MPI_APT_PACKAGES=(libmumps-dev libopenmpi-dev openmpi-bin)
 if [[ ${PECPLAS_MPI:-0} == 1 ]]; then APT_PACKAGES+=("${MPI_APT_PACKAGES[@]}"); fi
 PIP_PACKAGES=(fpm numpy h5py matplotlib pytest)
-OPTIONAL_PIP_PACKAGES=(gmsh)
+OPTIONAL_PIP_PACKAGES=(gmsh pytest-xdist)
 PYTHON=${PYTHON:-python3}
 export DEBIAN_FRONTEND=noninteractive
 
@@ -38,7 +40,8 @@ marker = os.path.join(sysconfig.get_path("stdlib"), "EXTERNALLY-MANAGED")
 print("managed" if os.path.exists(marker) else "free")
 print(" ".join(m for m in ("numpy", "h5py", "matplotlib", "pytest")
                if importlib.util.find_spec(m) is None))
-print(" ".join(m for m in ("gmsh",) if importlib.util.find_spec(m) is None))
+print(" ".join(p for m, p in (("gmsh", "gmsh"), ("xdist", "pytest-xdist"))
+               if importlib.util.find_spec(m) is None))
 EOF
 }
 
@@ -136,7 +139,7 @@ optional() {  # the optional packages: installed as root (one try), else a note
       --root-user-action=ignore -q "${missing_optional[@]}" </dev/null \
       || echo "install_deps: optional ${missing_optional[*]} not installed (tests that need it are skipped)" >&2
   else
-    echo "install_deps: optional, not installed: ${missing_optional[*]} (pip install ${missing_optional[*]}: doc/gmsh.md)" >&2
+    echo "install_deps: optional, not installed: ${missing_optional[*]} (pip install ${missing_optional[*]}: doc/build.md)" >&2
   fi
 }
 

@@ -109,7 +109,17 @@ else
   export PECPLAS_BIN=$PWD/$CMAKE_DIR/pecplas
   export PECPLAS_STAMP=$PWD/$build_stamp
   export PECPLAS_TEST_START=$PWD/$start_stamp
-  "$PYTHON" -m pytest -q -rs -p no:cacheprovider test/python 2>&1 | tee "$logdir/pytest.log"
+  # The test files are shared among $JOBS pytest-xdist workers when it is installed (an
+  # optional package of tools/install_deps.sh), whole files to one worker (--dist loadfile:
+  # a module's fixtures run once); the programs they start run one thread each.
+  pytest_par=()
+  if ((JOBS > 1)) && "$PYTHON" -c 'import xdist' 2>/dev/null; then
+    pytest_par=(-n "$JOBS" --dist loadfile)
+  else
+    echo "(pytest-xdist not installed or JOBS=1: the Python tests run one at a time)"
+  fi
+  "$PYTHON" -m pytest -q -rs -p no:cacheprovider "${pytest_par[@]}" test/python 2>&1 \
+    | tee "$logdir/pytest.log"
   rc=${PIPESTATUS[0]}
   line=$(grep -E '[0-9]+ (passed|failed|skipped|errors?)( |,|$)' "$logdir/pytest.log" | tail -n 1)
   np=0 nf=0 ns=0

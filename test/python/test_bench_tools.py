@@ -273,12 +273,14 @@ def test_summary_lists_the_run_of_each_section(tmp_path):
 
 def test_scaling_render_keeps_the_csv_rows_and_their_provenance(tmp_path, monkeypatch):
     # --render rewrites the fragment and figure from the CSV; the CSV's rows keep the commit
-    # and date of the run that measured them (it rewrote them with the current commit)
+    # and date of the run that measured them (it rewrote them with the current commit); the
+    # fragment is rendered afresh into tmp_path (it once went to doc/bench/scaling.md)
     import shutil
     for name in ("scaling.csv", "scaling.md"):
         shutil.copy(ROOT / "doc" / "bench" / name, tmp_path / name)
     before = (tmp_path / "scaling.csv").read_bytes()
     monkeypatch.setattr(bench_scaling, "BENCH_DIR", tmp_path)
+    monkeypatch.setattr(bench_common, "BENCH_DIR", tmp_path)   # write_fragment's scaling.md
     monkeypatch.setenv("OPENBLAS_NUM_THREADS", "1")
     bench_scaling.render()
     assert (tmp_path / "scaling.csv").read_bytes() == before

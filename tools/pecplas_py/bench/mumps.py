@@ -26,7 +26,7 @@ keeps what it measured.
 
     python3 -m pecplas_py.bench.mumps [--quick] [--sizes 1e5 1e6] [--problems elastic]
                                  [--configs MUMPS:1:2] [--timeout 1800]
-                                 [--pecplas build/cmake-mpi/pecplas]
+                                 [--pecplas build/cmake/mpi/pecplas]
 """
 import argparse
 import csv
@@ -240,7 +240,7 @@ def main():
     ap.add_argument("--configs", nargs="+", default=None, metavar="SOLVER:THREADS:RANKS",
                     help="a subset of " + " ".join(f"{s}:{t}:{r}" for s, t, r in CONFIGS))
     ap.add_argument("--timeout", type=float, default=1800.0)
-    ap.add_argument("--pecplas", default=str(ROOT / "build" / "cmake-mpi" / "pecplas"))
+    ap.add_argument("--pecplas", default=str(ROOT / "build" / "cmake" / "mpi" / "pecplas"))
     a = ap.parse_args()
     if not Path(a.pecplas).exists():
         sys.exit(f"bench_mumps: no MPI build at {a.pecplas} (make build-mpi)")
