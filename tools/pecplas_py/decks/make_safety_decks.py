@@ -78,26 +78,37 @@ push, 1
 """
 
 
-def infinite_slope(path, beta, phi, psi, c, gamma=20.0, height=5.0, nel=10, nu=0.4,
-                   title='', water=None, steps=None):
-    lines = ['** ' + title, '*TITLE', title, '*NODES']
+def column_mesh(height, nel):
+    """Nodes and Q4 elements (set soil) of a column one unit wide, `nel` elements over
+    `height`: nodes 2i+1 (x = 0) and 2i+2 (x = 1) at level i."""
     dy = height / nel
+    lines = []
     for i in range(nel + 1):
         lines.append(f'{2 * i + 1}, 0.0, {i * dy:.12g}')
         lines.append(f'{2 * i + 2}, 1.0, {i * dy:.12g}')
     lines.append('*ELEMENTS, TYPE=Q4, SET=soil')
     for i in range(1, nel + 1):
         lines.append(f'{i}, {2 * i - 1}, {2 * i}, {2 * i + 2}, {2 * i + 1}')
+    return lines
+
+
+def column_ties(nel):
+    """Stiff springs tying together the two nodes of each level of column_mesh (both sides
+    of the column move alike, as in an infinite slope)."""
+    return (['*INTERFACE_LAW, NAME=tie, TYPE=KATONA', 'MU = 0, C = 1e12, TENSION = 1e12',
+             '*JOINTS, TYPE=SPRING, SET=tie, LAW=tie, ANGLE=0'] +
+            [f'{1000 + i}, {2 * i + 1}, {2 * i + 2}' for i in range(nel + 1)])
+
+
+def infinite_slope(path, beta, phi, psi, c, gamma=20.0, height=5.0, nel=10, nu=0.4,
+                   title='', water=None, steps=None):
+    lines = ['** ' + title, '*TITLE', title, '*NODES']
+    lines += column_mesh(height, nel)
     lines += ['*MATERIAL, NAME=soil, TYPE=MOHR_COULOMB',
               f'E = 1e5, NU = {nu}, GAMMA = {gamma}',
               f'C = {c}, PHI = {phi}, PSI = {psi}',
               '*SECTION, SET=soil, MATERIAL=soil',
-              '*INTERFACE_LAW, NAME=tie, TYPE=KATONA',
-              'MU = 0, C = 1e12, TENSION = 1e12',
-              '*JOINTS, TYPE=SPRING, SET=tie, LAW=tie, ANGLE=0']
-    for i in range(nel + 1):
-        lines.append(f'{1000 + i}, {2 * i + 1}, {2 * i + 2}')
-    lines += ['*NSET, NAME=base', '1, 2', '*BOUNDARY', 'base, XY',
+              *column_ties(nel), '*NSET, NAME=base', '1, 2', '*BOUNDARY', 'base, XY',
               '*LOAD, NAME=weight, TYPE=GRAVITY',
               f'soil, {math.sin(math.radians(beta)):.15g}, {-math.cos(math.radians(beta)):.15g}',
               '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-8',
@@ -120,24 +131,13 @@ def infinite_slope_water(path, beta, phi, psi, c, level, gamma=20.0, gamma_w=10.
     b = math.radians(beta)
     gn = gamma * math.cos(b)
     lines = ['** ' + title, '*TITLE', title, '*NODES']
-    dy = height / nel
-    for i in range(nel + 1):
-        lines.append(f'{2 * i + 1}, 0.0, {i * dy:.12g}')
-        lines.append(f'{2 * i + 2}, 1.0, {i * dy:.12g}')
-    lines.append('*ELEMENTS, TYPE=Q4, SET=soil')
-    for i in range(1, nel + 1):
-        lines.append(f'{i}, {2 * i - 1}, {2 * i}, {2 * i + 2}, {2 * i + 1}')
+    lines += column_mesh(height, nel)
     lines += ['*MATERIAL, NAME=soil, TYPE=MOHR_COULOMB',
               f'E = 1e5, NU = {nu}, GAMMA_UNSAT = {gn:.15g}, GAMMA_SAT = {gn:.15g}',
               f'C = {c}, PHI = {phi}, PSI = {psi}',
               '*SECTION, SET=soil, MATERIAL=soil',
               f'*WATER, NAME=table, GAMMA_W={gamma_w * math.cos(b):.15g}, LEVEL={level:g}',
-              '*INTERFACE_LAW, NAME=tie, TYPE=KATONA',
-              'MU = 0, C = 1e12, TENSION = 1e12',
-              '*JOINTS, TYPE=SPRING, SET=tie, LAW=tie, ANGLE=0']
-    for i in range(nel + 1):
-        lines.append(f'{1000 + i}, {2 * i + 1}, {2 * i + 2}')
-    lines += ['*NSET, NAME=base', '1, 2', '*BOUNDARY', 'base, XY',
+              *column_ties(nel), '*NSET, NAME=base', '1, 2', '*BOUNDARY', 'base, XY',
               '*INITIAL_STRESS, TYPE=GEOSTATIC', f'ALL, {height:g}, {nu / (1 - nu):.15g}',
               '*LOAD, NAME=along, TYPE=BODY_FORCE', f'soil, {gamma * math.sin(b):.15g}, 0',
               '*SOLVER, METHOD=NEWTON, TOLERANCE=1e-8',
