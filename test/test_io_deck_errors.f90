@@ -135,6 +135,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call run_bad_cases(DECKS, [ &
          bad('no_nodes', 0, '*NODES', 'no nodes'), &
+         bad('empty_deck', 0, '*NODES', 'the deck is empty', 'complete example of doc/deck.md'), &
          bad('no_elements', 0, '*ELEMENTS', 'no elements'), &
          bad('no_step', 0, '*STEP', 'no *STEP')], error)
    end subroutine test_missing_parts
