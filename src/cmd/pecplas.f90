@@ -201,7 +201,8 @@ contains
       call make_directories(path_dir(outfile))
       if (.not. quiet) call banner(model, problem, deck, outfile)
       if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
-         ' clockwise elements renumbered counter-clockwise'
+         ' clockwise elements renumbered counter-clockwise (harmless: the results are '// &
+         'the same; a Gmsh surface whose curve loop runs clockwise gives such elements)'
 
       ! an MPI run (doc/mpi.md): every rank runs the analysis, rank 0 alone writes the file
       results%detached = parallel_rank() > 0
