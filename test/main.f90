@@ -12,6 +12,7 @@ program tester
    use test_anchors, only: collect_anchors
    use test_joint_faces, only: collect_joint_faces
    use test_phases_switch, only: collect_phases_switch
+   use test_phases_orphans, only: collect_phases_orphans
    use test_plates, only: collect_plates
    use test_io_results_structures, only: collect_io_results_structures
    use test_safety, only: collect_safety
@@ -99,6 +100,7 @@ program tester
    suites = [suites, new_testsuite('anchors', collect_anchors)]
    suites = [suites, new_testsuite('joint_faces', collect_joint_faces)]
    suites = [suites, new_testsuite('phases_switch', collect_phases_switch)]
+   suites = [suites, new_testsuite('phases_orphans', collect_phases_orphans)]
    suites = [suites, new_testsuite('io_results_structures', collect_io_results_structures)]
    suites = [suites, new_testsuite('safety', collect_safety)]
    suites = [suites, new_testsuite('cli', collect_cli)]
