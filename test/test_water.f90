@@ -18,7 +18,8 @@ module test_water
    use test_water_free, only: test_free_stages, test_free_equals_split, test_free_quay, &
       test_free_raft, test_free_bad_mode
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
-   use test_water_level, only: test_wall_level_inside, test_plate_polyline, test_face_polyline
+   use test_water_level, only: test_wall_level_inside, test_plate_polyline, test_face_polyline, &
+      test_plate_cone
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
    implicit none (type, external)
@@ -51,6 +52,7 @@ contains
                new_unittest('water_level_inside_a_wall_element', test_wall_level_inside), &
                new_unittest('water_polyline_level_on_a_plate', test_plate_polyline), &
                new_unittest('water_polyline_level_on_a_face', test_face_polyline), &
+               new_unittest('water_level_inside_a_conical_plate', test_plate_cone), &
                new_unittest('water_on_free_plate_faces', test_free_stages), &
                new_unittest('water_free_faces_equal_split_sets', test_free_equals_split), &
                new_unittest('water_free_faces_quay_wall', test_free_quay), &

@@ -21,7 +21,7 @@ module test_water_level
    implicit none (type, external)
    private
 
-   public :: test_wall_level_inside, test_plate_polyline, test_face_polyline
+   public :: test_wall_level_inside, test_plate_polyline, test_face_polyline, test_plate_cone
 
    character(len=*), parameter :: OUT = 'build/test_out/water/'
    !> Unit weight of water and the level of the walls.
@@ -190,5 +190,53 @@ contains
          deallocate (force)
       end do
    end subroutine test_face_polyline
+
+   !> Axisymmetry: a conical plate from (r, y) = (1, 0) to (3, 2) (two 2-node, then two
+   !> 3-node elements), water on its left to the level y = 1.3 (at 0.3 of the upper element).
+   !> Along it r = 1 + 2a, y = 2a, dl = 2 sqrt(2) da, so the consistent loads sum to the
+   !> ring force 2 pi gamma_w 2 sqrt(2) int_0^0.65 (1.3 - 2a)(1 + 2a) da = 2 pi gamma_w
+   !> 2 sqrt(2) 0.6055833.. along the normal (1, -1)/sqrt(2). Round-off only: 1e-12.
+   subroutine test_plate_cone(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      real(wp), parameter :: PI = acos(-1.0_wp), &
+         RING = 2.0_wp*PI*GW*2.0_wp*sqrt(2.0_wp)*(1.3_wp*0.65_wp + 0.3_wp*0.65_wp**2 - &
+         4.0_wp/3.0_wp*0.65_wp**3)
+      real(wp) :: fe(9), f(2)
+      character(len=:), allocatable :: deck
+      logical :: loaded
+      integer :: u, nen, e, k
+      call make_directories(OUT)
+      do nen = 2, 3
+         deck = OUT//'plate_cone'//itoa(nen)//'.inp'
+         open (newunit=u, file=deck, status='replace', action='write')
+         write (u, '(a)') '*TITLE', 'a conical plate with the level inside an element', &
+            '*ANALYSIS, TYPE=AXISYMMETRIC', '*NODES', '1, 1, 0', '2, 1.5, 0.5', '3, 2, 1', &
+            '4, 2.5, 1.5', '5, 3, 2', '*PLATE, SET=cone, EA=1e7, EI=1e5'
+         if (nen == 2) then
+            write (u, '(a)') '1, 3', '3, 5'
+         else
+            write (u, '(a)') '1, 3, 2', '3, 5, 4'
+         end if
+         write (u, '(a)') '*BOUNDARY', '1, ALL', '*WATER, NAME=w, GAMMA_W=10, LEVEL=1.3', &
+            '*PLATE_WATER', 'cone, LEFT', '*STEP, NAME=nil', '*END STEP'
+         close (u)
+         call read_deck(deck, model, error)
+         if (allocated(error)) return
+         f = 0.0_wp
+         do e = 1, 2
+            call plate_water_load(model, 1, e, 1, 1, fe(1:3*nen), loaded)
+            do k = 1, nen
+               f = f + fe(3*k - 2:3*k - 1)
+            end do
+         end do
+         call check_close(error, f(1), RING/sqrt(2.0_wp), 1.0e-12_wp, itoa(nen)// &
+            '-node cone: ring force, r component')
+         if (allocated(error)) return
+         call check_close(error, f(2), -RING/sqrt(2.0_wp), 1.0e-12_wp, itoa(nen)// &
+            '-node cone: ring force, y component')
+         if (allocated(error)) return
+      end do
+   end subroutine test_plate_cone
 
 end module test_water_level
