@@ -20,6 +20,7 @@ module test_water
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
+   use fixtures_water, only: write_wall
    implicit none (type, external)
    private
    public :: collect_water
@@ -684,18 +685,10 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       type(plate_fields_t) :: f
-      integer :: code, u, i
+      integer :: code
       call make_directories(OUT)
-      open (newunit=u, file=OUT//'wall.inp', status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a wall', '*UNITS', 'kN, m, kPa', '*NODES'
-      do i = 0, 10
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
-         '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
-      close (u)
+      call write_wall(OUT//'wall.inp', 'water on a wall', 10, '6', [character(len=32) :: &
+         '*PLATE_WATER', 'wall, LEFT', '*STEP, NAME=water, INCREMENTS=1', '*END STEP'])
       code = run_deck(OUT//'wall.inp', OUT//'wall.h5', .true., model, problem)
       call check(error, code == 0, 'wall in water runs (exit '//itoa(code)//')')
       if (allocated(error)) return
@@ -843,19 +836,11 @@ contains
       type(results_reader_t) :: file
       real(wp), allocatable :: nf(:, :)
       character(len=*), parameter :: deck = OUT//'wall_phased.inp'
-      integer :: code, u, i, stop
+      integer :: code, stop
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a wall from phase 2', '*UNITS', 'kN, m, kPa', '*NODES'
-      do i = 0, 10
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', &
-         '*STEP, NAME=dry, INCREMENTS=1', '*END STEP', &
-         '*STEP, NAME=flood, INCREMENTS=2', '*PLATE_WATER', 'wall, LEFT', '*END STEP'
-      close (u)
+      call write_wall(deck, 'water on a wall from phase 2', 10, '6', [character(len=32) :: &
+         '*STEP, NAME=dry, INCREMENTS=1', '*END STEP', '*STEP, NAME=flood, INCREMENTS=2', &
+         '*PLATE_WATER', 'wall, LEFT', '*END STEP'])
       code = run_deck(deck, OUT//'wall_phase1.h5', .true., model, part, stop_after=1)
       call check(error, code == 4, 'stopped after phase 1 (exit '//itoa(code)//')')
       if (allocated(error)) return
@@ -909,20 +894,11 @@ contains
       type(results_reader_t) :: file
       real(wp), allocatable :: nf(:, :)
       character(len=*), parameter :: deck = OUT//'wall_gravity.inp'
-      integer :: code, u, i
+      integer :: code, i
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a wall under gravity loading', '*UNITS', &
-         'kN, m, kPa', '*NODES'
-      do i = 0, 10
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
-         '*LOAD, NAME=weight, TYPE=GRAVITY', 'wall', &
-         '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1', '*END STEP'
-      close (u)
+      call write_wall(deck, 'water on a wall under gravity loading', 10, '6', &
+         [character(len=34) :: '*PLATE_WATER', 'wall, LEFT', '*LOAD, NAME=weight, TYPE=GRAVITY', &
+         'wall', '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1', '*END STEP'])
       code = run_deck(deck, OUT//'wall_gravity.h5', .true., model, whole)
       call check(error, code == 0, 'wall under gravity loading runs (exit '//itoa(code)//')')
       if (allocated(error)) return

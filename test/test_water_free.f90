@@ -14,6 +14,7 @@ module test_water_free
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: check, check_close
    use fixtures_bad_decks, only: check_refused
+   use fixtures_water, only: write_wall
    implicit none (type, external)
    private
    public :: test_free_stages, test_free_equals_split, test_free_quay, test_free_raft, &
@@ -414,18 +415,9 @@ contains
    subroutine test_free_bad_mode(error)
       type(error_t), allocatable, intent(out) :: error
       character(len=*), parameter :: deck = OUT//'bad_plate_water.inp'
-      integer :: u, i
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'bad plate water mode', '*NODES'
-      do i = 0, 4
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 5, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=3', '*PLATE_WATER', 'wall, FLOODED', &
-         '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
-      close (u)
+      call write_wall(deck, 'bad plate water mode', 4, '3', [character(len=32) :: &
+         '*PLATE_WATER', 'wall, FLOODED', '*STEP, NAME=water, INCREMENTS=1', '*END STEP'])
       call check_refused(error, deck, 'wall, FLOODED', "side 'FLOODED': expected LEFT or "// &
          'RIGHT (of the plate walked from its first node to its last), FREE', &
          OUT//'bad_plate_water.h5', 'unknown *PLATE_WATER mode')
