@@ -1,5 +1,5 @@
-!> Runs of test decks shared by the suites: a deck that must complete, and the default
-!> penalty its spring joints get.
+!> Runs of test decks shared by the suites: a deck that must complete, the default penalty
+!> its spring joints get, whether a run left a file.
 module fixtures_runs
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -11,7 +11,7 @@ module fixtures_runs
    use pecplas_testing, only: check, check_close
    implicit none (type, external)
    private
-   public :: run_completes, check_default_penalty
+   public :: run_completes, check_default_penalty, file_exists
 
 contains
 
@@ -48,5 +48,12 @@ contains
          call check(error, .false., 'the law is the spring law')
       end select
    end subroutine check_default_penalty
+
+   !> Whether the file `path` exists (a run that fails must leave no results file; stale
+   !> files are removed first with remove_file).
+   logical function file_exists(path)
+      character(len=*), intent(in) :: path
+      inquire (file=path, exist=file_exists)
+   end function file_exists
 
 end module fixtures_runs
