@@ -67,11 +67,19 @@ def _prose_keep_code_spans(text):
     return out
 
 
+def _name(path):
+    """A path as the report writes it: relative to the repository when inside it."""
+    try:
+        return path.relative_to(ROOT)
+    except ValueError:
+        return path
+
+
 def broken(page_list=None):
     """List of 'page:line: what' for every link that does not resolve."""
     problems, cache = [], {}
     for page in page_list or pages():
-        rel = page.relative_to(ROOT)
+        rel = _name(page)
         for i, line in enumerate(_prose(page.read_text()), 1):
             for target in LINK.findall(line) + HTML.findall(line):
                 if re.match(r"[a-z][a-z0-9+.-]*:", target, re.I):
@@ -86,7 +94,7 @@ def broken(page_list=None):
                         cache[dest] = anchors(dest)
                     if anchor not in cache[dest]:
                         problems.append(f"{rel}:{i}: {target}: no heading #{anchor} in "
-                                        f"{dest.relative_to(ROOT)}")
+                                        f"{_name(dest)}")
     return problems
 
 
