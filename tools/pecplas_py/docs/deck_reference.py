@@ -12,7 +12,8 @@ Checked:
   is a keyword the reader knows;
 - every parameter a keyword accepts is written (in backticks) in its section of doc/deck.md;
 - every parameter written in a keyword's signature (a backticked `*KEYWORD, A=... [, B=...]`)
-  anywhere in README.md and doc/*.md is accepted by that keyword;
+  or on a keyword line of a deck example (a fenced code block) anywhere in README.md and
+  doc/*.md is accepted by that keyword;
 - every data key of every material type is in the section *MATERIAL* (the water keys in
   *GROUNDWATER*), of every interface-law type in *INTERFACE_LAW*; every type name the reader
   lists (materials, laws, elements, loads, joints, anchors) is in its section.
@@ -33,6 +34,8 @@ TOKEN = re.compile(r"\b[A-Z][A-Z0-9_]*\b")
 # the water data keys of *MATERIAL (src/io/deck/reader_water.f90, WATER_PARAMS) are read by
 # the water, not by the soil model: the soil's "known parameters" answer does not list them
 WATER_KEYS = ("GAMMA_UNSAT", "GAMMA_SAT", "KW_N", "CU", "CU_INC", "CU_YREF")
+# keywords of the point driver's decks (pecplas-path, doc/path.md), not of pecplas's reader
+OTHER_PROGRAMS = ("*PATH",)
 
 
 def _answer(exe, text, workdir):
@@ -127,6 +130,21 @@ def _signatures(text):
         yield kw, sorted(set(names))
 
 
+def _code_keyword_lines(text):
+    """(keyword, [parameters]) of every keyword line `*KEYWORD, A=.., B` inside the fenced code
+    blocks of a page (the deck examples)."""
+    fenced = False
+    for line in text.splitlines():
+        if line.lstrip().startswith("```"):
+            fenced = not fenced
+            continue
+        m = re.match(r"\s*(\*[A-Za-z_]+(?: [Ss][Tt][Ee][Pp])?)\s*(,.*)?$", line) if fenced else None
+        if m and not line.lstrip().startswith("**"):
+            fields = (m.group(2) or "").split("!")[0].split(",")[1:]
+            names = [f.split("=")[0].strip().upper() for f in fields if f.strip()]
+            yield m.group(1).upper(), sorted({n for n in names if TOKEN.fullmatch(n)})
+
+
 def check(vocab, deck_md=DECK_MD, pages=None):
     """List of problems (empty when the docs and the reader agree)."""
     text = deck_md.read_text()
@@ -152,9 +170,10 @@ def check(vocab, deck_md=DECK_MD, pages=None):
                                 f"section #{anchor_of.get(kw)}")
     pages = pages or [ROOT / "README.md", *sorted((ROOT / "doc").glob("*.md"))]
     for page in pages:
-        for kw, names in _signatures(page.read_text()):
+        text = page.read_text()
+        for kw, names in [*_signatures(text), *_code_keyword_lines(text)]:
             if kw not in vocab["params"]:
-                if kw not in vocab["keywords"]:
+                if kw not in vocab["keywords"] and kw not in OTHER_PROGRAMS:
                     problems.append(f"{page.name}: `{kw}` is no keyword of the reader")
                 continue
             for p in names:
