@@ -108,7 +108,8 @@ contains
          deck = OUT//'plate_polyline'//itoa(nen)//'.inp'
          open (newunit=u, file=deck, status='replace', action='write')
          write (u, '(a)') '*TITLE', 'a plate under a polyline level', '*NODES', &
-            '1, 0, 0', '2, 1, 0', '3, 2, 0', '4, 3, 0', '5, 4, 0', '*PLATE, SET=raft, EA=1e7, EI=1e5'
+            '1, 0, 0', '2, 1, 0', '3, 2, 0', '4, 3, 0', '5, 4, 0', &
+            '*PLATE, SET=raft, EA=1e7, EI=1e5'
          if (nen == 2) then
             write (u, '(a)') '1, 3', '3, 5'
          else
@@ -144,9 +145,10 @@ contains
    !> One Q4 (then Q8) element 0 <= x <= 4, 0 <= y <= 3 under the polyline level (0, 2),
    !> (2, 1), (4, -1): its bottom face takes p = gamma_w h(x)+ upwards, h with a vertex at
    !> x = 2 and falling to 0 at x = 3, so F_y = gamma_w int h+ dx = 35 and its moment about
-   !> the origin gamma_w int x h+ dx = 115/3 = 38.333 (on a Q4 the nodal forces at x = 0 and 4 follow
-   !> from these two); the left face x = 0 takes gamma_w (2 - y)+, F_x = gamma_w 2^2/2 = 20
-   !> (x constant: h is one along it). Round-off only (as test_plate_polyline): 1e-12.
+   !> the origin gamma_w int x h+ dx = 115/3 = 38.333 (on a Q4 the nodal forces at x = 0
+   !> and 4 follow from these two); the left face x = 0 takes gamma_w (2 - y)+,
+   !> F_x = gamma_w 2^2/2 = 20 (x constant: h is one along it). Round-off only (as
+   !> test_plate_polyline): 1e-12.
    !> Taking h at each side's middle (before the cut) gave F_y = 40 and its moment 80.
    subroutine test_face_polyline(error)
       type(error_t), allocatable, intent(out) :: error
