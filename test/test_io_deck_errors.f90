@@ -105,6 +105,8 @@ contains
          'known types: ELASTIC', '(did you mean MOHR_COULOMB?)'), &
          bad('unknown_material_key', 10, '*MATERIAL', 'unknown parameter NUU', &
          'known parameters: E NU GAMMA', '(did you mean NU?)'), &
+         bad('misspelt_water_key', 10, '*MATERIAL', 'unknown parameter GAMA_SAT', &
+         '(did you mean GAMMA_SAT?)', 'GAMMA_UNSAT GAMMA_SAT KW_N CU'), &
          bad('duplicate_material', 11, '*MATERIAL', "material 'SAND' is defined twice", &
          'bad_duplicate_material.inp:9'), &
          bad('no_section', 7, '*ELEMENTS', "element set 'soil' has no material", &
