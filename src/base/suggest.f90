@@ -19,7 +19,8 @@ module pecplas_base_suggest
 
 contains
 
-   !> `message` with the suggestion of `did_you_mean` inserted before its "; known ...:" list,
+   !> `message` with the suggestion of `did_you_mean` inserted before its "; known ...:" (or
+   !> "; known:") list,
    !> when it has one: the unknown word is the first one quoted '...' before the list, or the
    !> word after "unknown parameter "; the names are the list's words up to a remark in
    !> parentheses. Other messages are returned as they are.
@@ -30,8 +31,10 @@ contains
       integer :: k, colon, q1, q2, cut
       text = message
       if (index(message, '(did you mean ') > 0) return
-      k = index(message, '; known ')
+      k = index(message, '; known')
       if (k == 0) return
+      if (k + 7 > len(message)) return
+      if (message(k + 7:k + 7) /= ' ' .and. message(k + 7:k + 7) /= ':') return
       colon = index(message(k:), ':')
       if (colon == 0) return
       ! a message that already gives a hint in parentheses (an Abaqus element name) keeps it
