@@ -38,7 +38,7 @@ module pecplas_solve_increments
    use pecplas_base_timers, only: wall_time
    use pecplas_base_signals, only: interrupt_requested, interrupt_signal
    use pecplas_solve_output, only: stop_pending
-   use pecplas_solve_progress, only: pattern_value
+   use pecplas_solve_progress, only: pattern_value, step_end_text
    use pecplas_phases_start, only: start_phase, LINE_LEN
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_io_results_phases, only: write_phase
@@ -375,6 +375,11 @@ contains
          case (END_NODE)
             if (res%beyond > 0 .and. res%tau < res%tau_peak) then
                call limit_reached(model, problem, run, step, istep, res, status, message)
+            else if (.not. run%quiet) then
+               ! stopped at its node's displacement: the loads it reached (force patterns
+               ! only under arc-length control, so no reaction sums are needed)
+               write (*, '(a)') ' end of '//step_end_text(model, istep, problem%state%factors, &
+                  problem%state%u, reshape([real(wp) ::], [2, 0]))
             end if
          case (END_LIMIT, END_UNLOADED)
             call limit_reached(model, problem, run, step, istep, res, status, message)
