@@ -60,7 +60,7 @@ contains
 
    !> ' (did you mean X?)', ' (did you mean X or Y?)', or '' when no name of `known` is close
    !> to `word`. `known`: the names separated by blanks (as the "known ...:" lists of the
-   !> messages are written); a name equal to the word is not suggested.
+   !> messages are written); nothing when the word is one of them (letter case aside).
    function did_you_mean(word, known) result(text)
       character(len=*), intent(in) :: word, known
       character(len=:), allocatable :: text
@@ -74,9 +74,10 @@ contains
       if (size(names) == 0) return
       allocate (d(size(names)))
       do i = 1, size(names)
+         ! a known name (letter case aside): nothing to suggest (MOHR-COULOMB for MOHR_COULOMB
+         ! is not the name itself, and gets one)
+         if (upper(names(i)) == upper(word)) return
          d(i) = name_distance(w, key(names(i)))
-         ! written as the name itself: no suggestion (MOHR-COULOMB for MOHR_COULOMB is one)
-         if (upper(names(i)) == upper(word)) d(i) = huge(1)
       end do
       limit = 1
       if (len(w) > 4) limit = 2
