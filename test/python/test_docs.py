@@ -69,6 +69,7 @@ GENERATORS = [
     (["make_default_deck", "-o", "{tmp}/strip_footing.inp"], "input/examples"),
     (["make_phase_examples", "--out", "{tmp}"], "input/examples"),
     (["make_structure_examples", "--out", "{tmp}"], "input/examples"),
+    (["make_sweep_examples", "--out", "{tmp}"], "input/sweeps"),
     (["make_hertz_deck", "--out", "{tmp}/hertz.inp"], "test/data/katona"),
     (["make_katona_decks", "--out", "{tmp}"], "test/data/katona"),
     (["make_patch_decks", "--out", "{tmp}"], "test/data/joints"),
