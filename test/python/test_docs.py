@@ -26,7 +26,8 @@ PACKAGE = ROOT / "tools" / "pecplas_py"
 # cite the thesis or doc/; remove a file from this list once it is clean). Only src/ and
 # test/*.f90 may appear here.
 ALLOWED_INTERNAL_CITATIONS = set()
-CITATION = re.compile(r"\bSPEC\b|SPEC\.md|\b[Ii]ssues? #?[0-9]|\b[Ss]ession [0-9]")
+CITATION = re.compile(r"\bSPEC\b|SPEC\.md|\b[Ii]ssues? #?[0-9]|\b[Ss]ession [0-9]"
+                      r"|\b[Tt]he issue\b|\b[Ii]ssue's")
 
 
 def tracked_files():
