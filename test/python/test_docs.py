@@ -132,7 +132,8 @@ def _s1_stability():
 
 def test_s1_stability_table_is_the_stored_reference():
     """The S1 stability table of doc/validation.md is rendered from
-    test/reference/s1_stability.json (54 runs, about 15 minutes of one core: too slow to rerun here)."""
+    test/reference/s1_stability.json (54 runs, about 15 minutes of one core: too slow to rerun
+    here)."""
     diff = _s1_stability().doc_block(check=True)
     assert not diff, diff + "\nregenerate: python3 -m pecplas_py.scenes.s1_stability --doc"
 
