@@ -34,7 +34,7 @@ module pecplas_solve_arc_path
    implicit none (type, external)
    private
 
-   public :: trace_arc
+   public :: trace_arc, BEYOND_PEAK
 
    !> The path has become flat when |current stiffness parameter| stays below this for
    !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
