@@ -13,12 +13,22 @@
   (test/data/modjoin/fe_cnl_force_arc.inp, softening MODJOIN joint: largest load 0.577027 at
   increment 86, one fall beyond the noise at increment 89, the second at 90) is 'stopped', and
   its message names the largest load instead of saying that there was no maximum on the way.
+- An arc-length step that ends at a target displacement of a node (NODE=, DOF=, DISPLACEMENT=)
+  ends there, as a step ends on its target load: rigid footing on Tresca soil (the stiff-plate
+  footing of test_footing_paths.py, T6) pushed by a pressure until its axis node has settled
+  0.02 m, 10 arc-length increments. The step used to end on the first increment past the
+  target: 0.02358 m (+18 %) at 60.50 kN/m, against 57.245 kN/m at 0.02 m under displacement
+  control (+5.7 %; 20 and 40 increments: +3.1 %, +2.6 %). Now the node ends within the landing
+  tolerance of the code (1e-6 of the target) and the load within 0.5 % of the displacement-
+  controlled one (measured 57.251: +0.01 %; 0.5 % bounds the increment-size error of the
+  plastic path: 10, 20 and 40 increments give 57.251, 57.241, 57.263).
 """
 import math
 import re
 import subprocess
 from pathlib import Path
 
+from footing_decks import deck as footing_deck
 from pecplas_exe import pecplas_cmd
 from pecplas_py.results import Results
 
@@ -69,3 +79,31 @@ def test_arc_budget_after_a_fall_names_the_peak(tmp_path):
     # the message prints 6 significant digits of the largest load of the path
     assert abs(float(m.group(1)) - loads.max()) <= 1e-5 * loads.max()
     assert int(m.group(2)) == int(loads.argmax()) + 1 and int(m.group(3)) == 1
+
+
+def test_arc_step_ends_on_its_node_displacement(tmp_path):
+    solver = "*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=30, MAX_CUTS=8"
+    settle = footing_deck(nf=2, stiff_footing=True, drive="settle", settle=0.03, increments=6,
+                          solver=solver)
+    p, out = run(settle, tmp_path, "settle")
+    with Results(out) as r:
+        assert r.status == "completed", r.attr("status_message")
+        ids = [int(v) for v in re.search(r"\*NSET, NAME=footing\n([\d, \n]+?)\*", settle)
+               .group(1).replace("\n", ",").split(",") if v.strip()]
+        rows = [r.node_index(i) for i in ids]
+        loads = {round(-r.field(k, "displacement")[rows[0], 1], 9):
+                 -r.field(k, "reaction")[rows, 1].sum() for k in r.keys}
+    reference = loads[0.02]
+    arc = footing_deck(nf=2, stiff_footing=True, drive="pressure", pressure=70.0, increments=10,
+                       solver=solver, step_options=", CONTROL=ARC_LENGTH, MAX_INCREMENTS=200, "
+                       f"NODE={ids[0]}, DOF=Y, DISPLACEMENT=-0.02")
+    p, out = run(arc, tmp_path, "arc_node")
+    assert p.returncode == 0, p.stderr
+    with Results(out) as r:
+        assert r.status == "completed", r.attr("status_message")
+        u = r.field(r.keys[-1], "displacement")[r.node_index(ids[0]), 1]
+        load = r.pattern_factors()[-1, 0]
+    print(f"arc-length step to u = -0.02 m: node at {u:.9f} m, pressure {load:.3f} kPa; "
+          f"displacement control at 0.02 m: {reference:.3f} kN/m ({load / reference - 1:+.3%})")
+    assert abs(u + 0.02) <= 1e-6 * 0.02
+    assert abs(load / reference - 1.0) <= 5e-3
