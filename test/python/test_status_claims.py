@@ -22,6 +22,11 @@
   tolerance of the code (1e-6 of the target) and the load within 0.5 % of the displacement-
   controlled one (measured 57.251: +0.01 %; 0.5 % bounds the increment-size error of the
   plastic path: 10, 20 and 40 increments give 57.251, 57.241, 57.263).
+  The same under Katona contact (test/data/katona/pad_slip.inp, the push under arc length until
+  a top node of the pad has moved 1e-3, before any slip: a linear path): 4 and 8 increments end
+  with the node at 1e-3 and the same push factor (measured 0.031206 both; within 2e-6, the
+  landing tolerance 1e-6 on a linear path plus the deck's residual tolerance 1e-8). The step
+  used to end at 9.25e-3 and 4.63e-3 with factors 0.2887 and 0.1444.
 """
 import math
 import re
@@ -107,3 +112,21 @@ def test_arc_step_ends_on_its_node_displacement(tmp_path):
           f"displacement control at 0.02 m: {reference:.3f} kN/m ({load / reference - 1:+.3%})")
     assert abs(u + 0.02) <= 1e-6 * 0.02
     assert abs(load / reference - 1.0) <= 5e-3
+
+
+def test_katona_arc_step_ends_on_its_node_displacement(tmp_path):
+    text = (DATA / "katona" / "pad_slip.inp").read_text()
+    assert "*STEP, NAME=push, INCREMENTS=4\npush, 1" in text
+    factors = []
+    for n in (4, 8):
+        deck = text.replace("*STEP, NAME=push, INCREMENTS=4\npush, 1",
+                            f"*STEP, NAME=push, INCREMENTS={n}, CONTROL=ARC_LENGTH, "
+                            "MAX_INCREMENTS=100, NODE=11, DOF=X, DISPLACEMENT=1e-3\npush, 1")
+        p, out = run(deck, tmp_path, f"pad_node_{n}")
+        with Results(out) as r:
+            assert r.status == "completed", r.attr("status_message")
+            u = r.field(r.keys[-1], "displacement")[r.node_index(11), 0]
+            factors.append(r.pattern_factors()[-1, list(r.patterns).index("push")])
+        print(f"Katona pad, {n} arc increments: node 11 u_x = {u:.9e}, push {factors[-1]:.6f}")
+        assert abs(u - 1e-3) <= 1e-6 * 1e-3
+    assert abs(factors[1] / factors[0] - 1.0) <= 2e-6
