@@ -27,6 +27,12 @@
   with the node at 1e-3 and the same push factor (measured 0.031206 both; within 2e-6, the
   landing tolerance 1e-6 on a linear path plus the deck's residual tolerance 1e-8). The step
   used to end at 9.25e-3 and 4.63e-3 with factors 0.2887 and 0.1444.
+- Every row of /history records a residual at most TOLERANCE (a converged increment): the
+  Katona S1 opening-closing (test/data/katona/s1_open_close.inp) passes through a state of nil
+  load and reactions (lift 0), converged by the roundoff floor of doc/theory.md 6.5
+  (|u| 2e-19 m, reactions 1e-13); its row recorded 1.38, the residual over a roundoff reference,
+  13800 times the tolerance. Now the residual relative to the forces it was measured against
+  (9.9e-16).
 """
 import math
 import re
@@ -130,3 +136,14 @@ def test_katona_arc_step_ends_on_its_node_displacement(tmp_path):
         print(f"Katona pad, {n} arc increments: node 11 u_x = {u:.9e}, push {factors[-1]:.6f}")
         assert abs(u - 1e-3) <= 1e-6 * 1e-3
     assert abs(factors[1] / factors[0] - 1.0) <= 2e-6
+
+
+def test_history_residuals_within_the_tolerance(tmp_path):
+    text = (DATA / "katona" / "s1_open_close.inp").read_text()
+    assert "*SOLVER, TOLERANCE=1e-4" in text
+    p, out = run(text, tmp_path, "katona_open_close")
+    with Results(out) as r:
+        assert r.status == "completed", r.attr("status_message")
+        residual = r.history("residual")
+    print(f"Katona S1 opening-closing: largest recorded residual {residual.max():.3g}")
+    assert residual.max() <= 1e-4
