@@ -48,6 +48,10 @@ contains
          "top (or ALL)") == "undefined node set 'bsae' (did you mean base?); known node "// &
          "sets: base top (or ALL)", 'inserted before the list, the remark not a name')
       if (allocated(error)) return
+      call check(error, index(with_suggestion('unknown parameter GAMA_SAT; known parameters: '// &
+         'E NU GAMMA; water parameters: GAMMA_UNSAT GAMMA_SAT'), &
+         'GAMA_SAT (did you mean GAMMA_SAT?); known') > 0, 'the names of a second list too')
+      if (allocated(error)) return
       call check(error, with_suggestion('cannot read mesh file') == 'cannot read mesh file', &
          'a message without a list is kept')
    end subroutine test_suggest

@@ -20,10 +20,9 @@ module pecplas_base_suggest
 contains
 
    !> `message` with the suggestion of `did_you_mean` inserted before its "; known ...:" (or
-   !> "; known:") list,
-   !> when it has one: the unknown word is the first one quoted '...' before the list, or the
-   !> word after "unknown parameter "; the names are the list's words up to a remark in
-   !> parentheses. Other messages are returned as they are.
+   !> "; known:") list, when it has one: the unknown word is the first one quoted '...' before
+   !> the list, or the word after "unknown parameter "; the names are those of `names_of`.
+   !> Other messages are returned as they are.
    function with_suggestion(message) result(text)
       character(len=*), intent(in) :: message
       character(len=:), allocatable :: text
@@ -39,11 +38,7 @@ contains
       if (colon == 0) return
       ! a message that already gives a hint in parentheses (an Abaqus element name) keeps it
       if (index(message(1:k - 1), ' (') > 0) return
-      list = message(k + colon:)
-      cut = index(list, ' (')
-      if (cut > 0) list = list(1:cut - 1)
-      cut = index(list, ';')
-      if (cut > 0) list = list(1:cut - 1)
+      list = names_of(message(k + colon:))
       q1 = index(message(1:k - 1), "'")
       word = ''
       if (q1 > 0) then
@@ -57,6 +52,31 @@ contains
       if (len(word) == 0) return
       text = message(1:k - 1)//did_you_mean(word, list)//message(k:)
    end function with_suggestion
+
+   !> The names of a "known ...:" list: up to a remark in parentheses, and with those of the
+   !> lists that follow it as "; label: names" (the water parameters after the soil model's).
+   function names_of(text) result(list)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: list
+      character(len=:), allocatable :: rest, part
+      integer :: cut, colon
+      list = ''
+      rest = text
+      do
+         cut = index(rest, ';')
+         if (cut > 0) then
+            part = rest(1:cut - 1)
+         else
+            part = rest
+         end if
+         colon = index(part, ':')
+         if (len(list) > 0 .and. colon > 0) part = part(colon + 1:)
+         if (index(part, ' (') > 0) part = part(1:index(part, ' (') - 1)
+         list = list//' '//part
+         if (cut == 0) exit
+         rest = rest(cut + 1:)
+      end do
+   end function names_of
 
    !> ' (did you mean X?)', ' (did you mean X or Y?)', or '' when no name of `known` is close
    !> to `word`. `known`: the names separated by blanks (as the "known ...:" lists of the

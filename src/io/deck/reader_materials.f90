@@ -2,7 +2,7 @@
 !> -> material) once the whole deck is read.
 module pecplas_io_deck_reader_materials
    use pecplas_base_kinds, only: wp
-   use pecplas_base_error, only: error_t, deck_error
+   use pecplas_base_error, only: error_t
    use pecplas_io_deck_element_aliases, only: element_alias_hint
    use pecplas_io_text_fields, only: deck_line_t, &
       field_t, split_fields, parse_real, same_name, upper, &
@@ -16,7 +16,7 @@ module pecplas_io_deck_reader_materials
    use pecplas_base_warnings, only: warnings_t
    use pecplas_base_strings, only: decimal_text
    use pecplas_massif_materials_type, only: material_t, material_box_t
-   use pecplas_io_deck_reader_water, only: material_water, finish_material_water, WATER_PARAMS
+   use pecplas_io_deck_reader_water, only: material_water, finish_material_water
    use pecplas_water_drainage, only: water_material_t
    implicit none (type, external)
    private
@@ -81,10 +81,7 @@ contains
       call material_water(state, at, mtype, drainage, params, wmat, error)
       if (allocated(error)) return
       call state%registry%new_material(upper(mtype), name, params, mat, error)
-      if (allocated(error)) then
-         call with_water_keys(error)
-         return
-      end if
+      if (allocated(error)) return
       call finish_material_water(mat, wmat)
       if (.not. allocated(model%water%mats)) allocate (model%water%mats(0))
       model%water%mats = [model%water%mats, wmat]
@@ -97,31 +94,6 @@ contains
       call move_alloc(tmp, model%materials)
       state%material_at = [state%material_at, block%at]
    end subroutine read_material
-
-   !> An unknown parameter of a *MATERIAL: the soil model lists its own keys; *MATERIAL also
-   !> takes the groundwater ones (taken out before the soil model sees them), so the message
-   !> lists those too and suggests among all of them (GAMA_SAT -> GAMMA_SAT).
-   subroutine with_water_keys(error)
-      type(error_t), allocatable, intent(inout) :: error
-      character(len=:), allocatable :: message, file, keyword
-      integer :: k, i, line
-      if (index(error%message, 'unknown parameter ') == 0) return
-      k = index(error%message, '; known parameters:')
-      if (k == 0) return
-      message = error%message
-      ! the suggestion made from the soil model's keys alone is made again below
-      i = index(message, ' (did you mean ')
-      if (i > 0 .and. i < k) message = message(1:i - 1)//message(k:)
-      do i = 1, size(WATER_PARAMS)
-         message = message//' '//trim(WATER_PARAMS(i))
-      end do
-      file = ''
-      if (allocated(error%file)) file = error%file
-      keyword = ''
-      if (allocated(error%keyword)) keyword = error%keyword
-      line = error%line
-      call deck_error(error, file, line, keyword, message)
-   end subroutine with_water_keys
 
    !> One data line of `KEY = value` pairs (also used by *INTERFACE_LAW).
    subroutine read_pairs(state, at, params, error, warnings)
