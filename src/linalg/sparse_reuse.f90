@@ -46,6 +46,7 @@ module pecplas_linalg_sparse_reuse
       procedure :: add_block => builder_add_block
       procedure :: add_extra => builder_add_extra
       procedure :: forget => builder_forget
+      procedure :: unrecorded => builder_unrecorded
    end type csc_builder_t
 
 contains
@@ -168,7 +169,7 @@ contains
       this%bnext = 1
       this%bcur = 0
       if (same_key(this, eptr, elist, csc)) then
-         csc%values = 0.0_wp
+         call zero_values(csc%values)
          this%fast = this%fast + 1
          ! a pattern used a second time: record the block positions for the next ones
          if (this%bstate /= 2) then
@@ -192,6 +193,19 @@ contains
       this%npat = this%coo%n
       this%full = this%full + 1
    end subroutine builder_pattern
+
+   !> v = 0 on the element loops' threads (the matrix's values, each assembly).
+   subroutine zero_values(v)
+      real(wp), intent(inout) :: v(:)
+      integer, parameter :: PIECE = 65536
+      integer :: i
+      !$omp parallel do default(shared) private(i) schedule(static) &
+      !$omp if (size(v) >= 4*PIECE)
+      do i = 1, size(v), PIECE
+         v(i:min(i + PIECE - 1, size(v))) = 0.0_wp
+      end do
+      !$omp end parallel do
+   end subroutine zero_values
 
    logical function same_key(this, eptr, elist, csc)
       class(csc_builder_t), intent(in) :: this
@@ -290,6 +304,13 @@ contains
          csc%values(q) = csc%values(q) + this%coo%vals(p)
       end do
    end subroutine builder_add_extra
+
+   !> Blocks of this assembly are added without the builder (pecplas_linalg_sparse_columns):
+   !> no block positions are kept from it; the next assembly on the kept pattern records them.
+   subroutine builder_unrecorded(this)
+      class(csc_builder_t), intent(inout) :: this
+      this%bstate = 0
+   end subroutine builder_unrecorded
 
    !> Forgets the kept pattern (the next `pattern` builds one).
    subroutine builder_forget(this)
