@@ -181,13 +181,14 @@ contains
             d = spread(delastic, 3, st%ngauss)
          end if
          allocate (ke(nd, nd, min(CHUNK, max(e2 - e1 + 1, 1))), idx(nd))
-         ! with a team, the blocks are added by threads owning column ranges (the same sums)
+         ! a new pattern with a team: the blocks are added by threads owning column ranges
+         ! (the same sums); a kept one: serially through the recorded positions
          nparts = 1
-         if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS) nparts = openmp_threads()
+         if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS .and. .not. builder%positioned()) &
+            nparts = openmp_threads()
          if (nparts > 1) then
             parts = k%column_parts(nparts)
             allocate (idxs(nd, size(ke, 3)))
-            call builder%unrecorded()
          end if
          bad = huge(bad)
          do c0 = e1, e2, CHUNK

@@ -46,7 +46,7 @@ module pecplas_linalg_sparse_reuse
       procedure :: add_block => builder_add_block
       procedure :: add_extra => builder_add_extra
       procedure :: forget => builder_forget
-      procedure :: unrecorded => builder_unrecorded
+      procedure :: positioned => builder_positioned
    end type csc_builder_t
 
 contains
@@ -305,12 +305,13 @@ contains
       end do
    end subroutine builder_add_extra
 
-   !> Blocks of this assembly are added without the builder (pecplas_linalg_sparse_columns):
-   !> no block positions are kept from it; the next assembly on the kept pattern records them.
-   subroutine builder_unrecorded(this)
-      class(csc_builder_t), intent(inout) :: this
-      this%bstate = 0
-   end subroutine builder_unrecorded
+   !> Whether add_block records or replays the blocks' positions in this assembly (a kept
+   !> pattern); if not (a new pattern), each block is searched for in the columns, and the
+   !> blocks may as well be added by other means (pecplas_linalg_sparse_columns).
+   logical function builder_positioned(this)
+      class(csc_builder_t), intent(in) :: this
+      builder_positioned = this%bstate > 0
+   end function builder_positioned
 
    !> Forgets the kept pattern (the next `pattern` builds one).
    subroutine builder_forget(this)
