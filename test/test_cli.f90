@@ -6,12 +6,13 @@ module test_cli
    use pecplas_base_error, only: error_t, fatal_error, ERR_SINGULAR
    use pecplas_model_type, only: model_t
    use pecplas_cmd_pecplas, only: run_deck
-   use pecplas_base_files, only: make_directories
+   use pecplas_base_files, only: make_directories, remove_file
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t, setup_problem
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use fixtures_runs, only: file_exists
    implicit none (type, external)
    private
    public :: collect_cli
@@ -30,19 +31,6 @@ contains
                new_unittest('divergence_keeps_increments', test_diverge)]
    end subroutine collect_cli
 
-   !> Deletes `path` if it exists (a stale file must not satisfy a test).
-   subroutine remove(path)
-      character(len=*), intent(in) :: path
-      integer :: u, ios
-      open (newunit=u, file=path, status='old', iostat=ios)
-      if (ios == 0) close (u, status='delete')
-   end subroutine remove
-
-   logical function exists(path)
-      character(len=*), intent(in) :: path
-      inquire (file=path, exist=exists)
-   end function exists
-
    !> Oedometer, p = 100 then 50: eps_yy = -p/M, sigma_xx = nu/(1-nu) sigma_yy, reactions of
    !> the base balance the load; every increment converges in one iteration (linear).
    subroutine test_oedometer(error)
@@ -57,7 +45,7 @@ contains
 
       call make_directories(DIR)
       out = DIR//'/oedometer.h5'
-      call remove(out)
+      call remove_file(out)
       code = run_deck(DATA//'oedometer.inp', out, .true., model, problem)
       call check(error, code == 0, 'oedometer run exits 0')
       if (allocated(error)) return
@@ -116,9 +104,9 @@ contains
          read (u, '(a)', iostat=ios) name
          if (ios /= 0) exit
          out = DIR//'/bad.h5'
-         call remove(out)
+         call remove_file(out)
          code = run_deck(trim(name), out, .true., model, problem)
-         if (code /= 2 .or. exists(out)) then
+         if (code /= 2 .or. file_exists(out)) then
             call fatal_error(error, trim(name)//': expected exit 2 and no results file')
             close (u)
             return
@@ -161,9 +149,9 @@ contains
          index(text, 'node ') > 0 .and. index(text, 'direction') > 0, &
          'floating block: singular, node and direction named: '//text)
       if (allocated(error)) return
-      call remove(DIR//'/floating.h5')
+      call remove_file(DIR//'/floating.h5')
       code = run_deck(DATA//'floating.inp', DIR//'/floating.h5', .true., model, problem)
-      call check(error, code == 2 .and. .not. exists(DIR//'/floating.h5'), &
+      call check(error, code == 2 .and. .not. file_exists(DIR//'/floating.h5'), &
          'singular model: exit 2, no results file')
    end subroutine test_floating
 
@@ -189,7 +177,7 @@ contains
       integer :: code, n, complete
       call make_directories(DIR)
       out = DIR//'/diverge.h5'
-      call remove(out)
+      call remove_file(out)
       code = run_deck(DATA//'diverge.inp', out, .true., model, problem)
       call check(error, code == 3, 'a stopped run exits 3')
       if (allocated(error)) return

@@ -11,7 +11,7 @@ module test_io_deck
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: PLANE_STRAIN, AXISYMMETRIC, METHOD_NEWTON
    use pecplas_massif_materials_elastic, only: elastic_t
-   use pecplas_testing, only: unittest_t, new_unittest, check, check_close
+   use pecplas_testing, only: unittest_t, new_unittest, check, check_close, near
    implicit none (type, external)
    private
    public :: collect_io_deck, DECKS
@@ -20,14 +20,6 @@ module test_io_deck
    character(len=*), parameter :: DECKS = 'test/data/decks/'
 
 contains
-
-   !> Equal up to 2 ulp. Values read from deck text and the same decimal literals here
-   !> are both correctly rounded, so they agree to the last bit; the margin only keeps
-   !> the comparison a tolerance comparison.
-   elemental logical function near(a, b)
-      real(wp), intent(in) :: a, b
-      near = abs(a - b) <= 2.0_wp*epsilon(1.0_wp)*abs(b)
-   end function near
 
    subroutine collect_io_deck(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)

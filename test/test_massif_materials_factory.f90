@@ -10,21 +10,13 @@ module test_massif_materials_factory
    use pecplas_massif_materials_factory, only: material_registry_t, default_material_registry, &
       register_material, new_material, KNOWN_MATERIALS
    use pecplas_io_deck_reader, only: read_deck, read_deck_with
-   use pecplas_testing, only: unittest_t, new_unittest, check
+   use pecplas_testing, only: unittest_t, new_unittest, check, near
    use test_io_deck, only: DECKS
    implicit none (type, external)
    private
    public :: collect_massif_materials_factory
 
 contains
-
-   !> Equal up to 2 ulp. Values read from deck text and the same decimal literals here
-   !> are both correctly rounded, so they agree to the last bit; the margin only keeps
-   !> the comparison a tolerance comparison.
-   elemental logical function near(a, b)
-      real(wp), intent(in) :: a, b
-      near = abs(a - b) <= 2.0_wp*epsilon(1.0_wp)*abs(b)
-   end function near
 
    subroutine collect_massif_materials_factory(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)

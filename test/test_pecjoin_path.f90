@@ -5,13 +5,14 @@
 module test_pecjoin_path
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
-   use pecplas_base_files, only: make_directories
+   use pecplas_base_files, only: make_directories, remove_file
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use pecplas_joints_laws_type, only: interface_law_t, MODE_SLIP, MODE_STICK
    use pecplas_studies_path_deck, only: path_deck_t, read_path_deck, PATH_CNL, PATH_CND, PATH_CNS
    use pecplas_studies_path_driver, only: path_result_t, run_path
    use pecplas_cmd_path, only: run_path_deck
    use fixtures_pecjoin, only: make_law
+   use fixtures_runs, only: file_exists
    implicit none (type, external)
    private
    public :: collect_pecjoin_path
@@ -173,8 +174,8 @@ contains
       logical :: ok
       real(wp) :: tau
       call make_directories(DIR)
-      call remove(DIR//'/cnl.csv')
-      call remove(DIR//'/cnl.h5')
+      call remove_file(DIR//'/cnl.csv')
+      call remove_file(DIR//'/cnl.h5')
       code = run_path_deck('input/paths/cnl_mohr_coulomb.inp', DIR//'/cnl', .true., res)
       call check(error, code == 0, 'example CNL deck runs (exit 0)')
       if (allocated(error)) return
@@ -242,9 +243,9 @@ contains
          PATH, ':2:', 'penalty')
       if (allocated(error)) return
       ! the command returns 2 and writes nothing
-      call remove(DIR//'/kn_out.csv')
+      call remove_file(DIR//'/kn_out.csv')
       code = run_path_deck(DIR//'/kn.inp', DIR//'/kn_out', .true., res)
-      call check(error, code == 2 .and. .not. exists(DIR//'/kn_out.csv'), &
+      call check(error, code == 2 .and. .not. file_exists(DIR//'/kn_out.csv'), &
          'bad deck: exit 2, no output')
    end subroutine test_deck_errors
 
@@ -271,17 +272,5 @@ contains
       call check(error, index(t, file) == 1 .and. index(t, where) > 0 .and. &
          index(t, fragment) > 0, name//': expected '//where//' and '//fragment//' in: '//t)
    end subroutine bad
-
-   subroutine remove(path)
-      character(len=*), intent(in) :: path
-      integer :: u, ios
-      open (newunit=u, file=path, status='old', iostat=ios)
-      if (ios == 0) close (u, status='delete')
-   end subroutine remove
-
-   logical function exists(path)
-      character(len=*), intent(in) :: path
-      inquire (file=path, exist=exists)
-   end function exists
 
 end module test_pecjoin_path

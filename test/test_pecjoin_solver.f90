@@ -14,9 +14,9 @@ module test_pecjoin_solver
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_fe_joint_penalty, only: massif_rmax
-   use pecplas_joints_laws_spring, only: spring_law_t
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use test_pecjoin_patch, only: run_patch
+   use fixtures_runs, only: run_completes, check_default_penalty
    implicit none (type, external)
    private
    public :: collect_pecjoin_solver
@@ -109,26 +109,14 @@ contains
       call run_patch('penalty_spring_plane.inp', 100.0_wp, 0.0_wp, error)
       if (allocated(error)) return
       call make_directories(DIR)
-      if (run_deck(DATA//'penalty_spring_plane.inp', DIR//'/penalty.h5', .true., model, &
-          problem) /= 0) then
-         call check(error, .false., 'penalty_spring_plane.inp runs')
-         return
-      end if
+      call run_completes(error, DATA//'penalty_spring_plane.inp', DIR//'/penalty.h5', model, &
+         problem, 'penalty_spring_plane.inp')
+      if (allocated(error)) return
       call massif_rmax(model, problem%system%rules, rmax, error)
       if (allocated(error)) return
       call check_close(error, rmax, 2.0_wp*(d11 + g)/3.0_wp, 1.0e-12_wp, 'R_max = 2 (D11 + G)/3')
       if (allocated(error)) return
-      select type (law => model%laws(1)%law)
-      class is (spring_law_t)
-         call check(error, .not. law%needs_penalty, 'the penalty was set')
-         if (allocated(error)) return
-         call check_close(error, law%kn, 1.0e5_wp*0.5_wp*rmax/(2.0_wp/3.0_wp), 1.0e-12_wp, &
-            'KN = 1e5 E_RYG R_max / mean tributary')
-         if (allocated(error)) return
-         call check_close(error, law%kt, law%kn, 1.0e-15_wp, 'KT = KN')
-      class default
-         call check(error, .false., 'the law is the spring law')
-      end select
+      call check_default_penalty(error, model, rmax, '')
    end subroutine test_penalty
 
 end module test_pecjoin_solver

@@ -158,15 +158,25 @@ contains
          ': resolution '//g6(problem%safety%resolution))
    end subroutine run_factor
 
+   !> Runs deck `name` (run_factor), reports [factor, expected] as safety/`key` and checks the
+   !> factor against `expected` within the relative tolerance `rel` (each test says why).
+   subroutine check_factor(error, name, key, expected, rel, what)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: name, key, what
+      real(wp), intent(in) :: expected, rel
+      real(wp) :: f
+      call run_factor(name, f, error)
+      if (allocated(error)) return
+      call report('safety/'//key, [f, expected])
+      call check_close(error, f, expected, rel, what)
+   end subroutine check_factor
+
    !> R = c L + N tan(phi) = 5 x 2 + 200 x 0.3 = 70, T = 30: the joint alone fails, at
    !> 7/3. 1 %: the resolution (0.002) and the penalty joint's exact return leave less.
    subroutine test_block(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f
-      call run_factor('block', f, error)
-      if (allocated(error)) return
-      call report('safety/block', [f, 70.0_wp/30.0_wp])
-      call check_close(error, f, 70.0_wp/30.0_wp, 0.01_wp, 'block on a joint: R / T')
+      call check_factor(error, 'block', 'block', 70.0_wp/30.0_wp, 0.01_wp, &
+         'block on a joint: R / T')
    end subroutine test_block
 
    !> beta = 20, phi = psi = 35, c = 0: associated flow in the simple shear of the infinite
@@ -174,11 +184,8 @@ contains
    !> F = tan(phi) / tan(beta) = 1.9238. 2 %: the resolution and the tolerance of equilibrium.
    subroutine test_infinite_dry(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f
-      call run_factor('infinite_slope_dry', f, error)
-      if (allocated(error)) return
-      call report('safety/infinite_slope_dry', [f, tan(35.0_wp*DEG)/tan(20.0_wp*DEG)])
-      call check_close(error, f, tan(35.0_wp*DEG)/tan(20.0_wp*DEG), 0.02_wp, &
+      call check_factor(error, 'infinite_slope_dry', 'infinite_slope_dry', &
+         tan(35.0_wp*DEG)/tan(20.0_wp*DEG), 0.02_wp, &
          'infinite slope, dry, cohesionless: tan(phi) / tan(beta)')
    end subroutine test_infinite_dry
 
@@ -188,12 +195,8 @@ contains
    !> 2 %: as above.
    subroutine test_infinite_psi0(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f
-      call run_factor('infinite_slope_psi0', f, error)
-      if (allocated(error)) return
-      call report('safety/infinite_slope_psi0', [f, &
-         tan(35.0_wp*DEG)/tan(asin(tan(20.0_wp*DEG)))])
-      call check_close(error, f, tan(35.0_wp*DEG)/tan(asin(tan(20.0_wp*DEG))), 0.02_wp, &
+      call check_factor(error, 'infinite_slope_psi0', 'infinite_slope_psi0', &
+         tan(35.0_wp*DEG)/tan(asin(tan(20.0_wp*DEG))), 0.02_wp, &
          'infinite slope, psi = 0: Davis''s strength in simple shear')
    end subroutine test_infinite_psi0
 
@@ -204,15 +207,13 @@ contains
    !> the resolution.
    subroutine test_infinite_c(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f, b, p, fc
-      call run_factor('infinite_slope_c', f, error)
-      if (allocated(error)) return
+      real(wp) :: b, p, fc
       b = 25.0_wp*DEG
       p = 30.0_wp*DEG
       ! gamma z = 20 x 5 / cos(beta)
       fc = (10.0_wp + 100.0_wp/cos(b)*cos(b)**2*tan(p))/(100.0_wp/cos(b)*sin(b)*cos(b))
-      call report('safety/infinite_slope_c', [f, fc])
-      call check_close(error, f, fc, 0.03_wp, 'infinite slope with cohesion: closed form')
+      call check_factor(error, 'infinite_slope_c', 'infinite_slope_c', fc, 0.03_wp, &
+         'infinite slope with cohesion: closed form')
    end subroutine test_infinite_c
 
    !> The slope of test_infinite_c under a water table parallel to it at half its thickness
@@ -224,15 +225,13 @@ contains
    !> elements: +1.2 %; 10 and 40 elements give +2.4 % and +0.5 %).
    subroutine test_infinite_water(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f, b, p, z, fc
-      call run_factor('infinite_slope_water', f, error)
-      if (allocated(error)) return
+      real(wp) :: b, p, z, fc
       b = 25.0_wp*DEG
       p = 30.0_wp*DEG
       z = 5.0_wp/cos(b)
       fc = (10.0_wp + (20.0_wp - 0.5_wp*10.0_wp)*z*cos(b)**2*tan(p))/(20.0_wp*z*sin(b)*cos(b))
-      call report('safety/infinite_slope_water', [f, fc])
-      call check_close(error, f, fc, 0.03_wp, 'infinite slope with a water table: closed form')
+      call check_factor(error, 'infinite_slope_water', 'infinite_slope_water', fc, 0.03_wp, &
+         'infinite slope with a water table: closed form')
    end subroutine test_infinite_water
 
    !> Weightless Tresca soil, c = 10, flexible strip of half-width 1 under q = 25: the
@@ -241,12 +240,8 @@ contains
    !> test_massif_plasticity_fe) and the resolution.
    subroutine test_footing(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f
-      call run_factor('footing_safety', f, error)
-      if (allocated(error)) return
-      call report('safety/footing', [f, (2.0_wp + PI)*10.0_wp/25.0_wp])
-      call check_close(error, f, (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, &
-         'Prandtl footing: Msf = q_ult / q')
+      call check_factor(error, 'footing_safety', 'footing', (2.0_wp + PI)*10.0_wp/25.0_wp, &
+         0.02_wp, 'Prandtl footing: Msf = q_ult / q')
    end subroutine test_footing
 
    !> The same footing with Drucker-Prager soil fitted to the plane-strain Mohr-Coulomb limit
@@ -254,12 +249,8 @@ contains
    !> same (2 %, as above).
    subroutine test_footing_dp(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f
-      call run_factor('footing_safety_dp', f, error)
-      if (allocated(error)) return
-      call report('safety/footing_dp', [f, (2.0_wp + PI)*10.0_wp/25.0_wp])
-      call check_close(error, f, (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, &
-         'Prandtl footing, Drucker-Prager: Msf = q_ult / q')
+      call check_factor(error, 'footing_safety_dp', 'footing_dp', &
+         (2.0_wp + PI)*10.0_wp/25.0_wp, 0.02_wp, 'Prandtl footing, Drucker-Prager: Msf = q_ult / q')
    end subroutine test_footing_dp
 
    !> phi = 0, beta = 60, H = 10, gamma = 20, c = 50, firm base at the toe: Taylor (1948)
@@ -268,12 +259,8 @@ contains
    !> digits; the finite elements' is a continuum mechanism on a Q8R mesh.
    subroutine test_taylor(error)
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: f
-      call run_factor('taylor_slope', f, error)
-      if (allocated(error)) return
-      call report('safety/taylor', [f, 50.0_wp/(0.191_wp*20.0_wp*10.0_wp)])
-      call check_close(error, f, 50.0_wp/(0.191_wp*20.0_wp*10.0_wp), 0.05_wp, &
-         'undrained slope against Taylor''s chart')
+      call check_factor(error, 'taylor_slope', 'taylor', 50.0_wp/(0.191_wp*20.0_wp*10.0_wp), &
+         0.05_wp, 'undrained slope against Taylor''s chart')
    end subroutine test_taylor
 
    !> The block's results file: /safety with kind, factor and resolution as found, the note

@@ -36,11 +36,8 @@ contains
       type(progress_eta_t) :: eta
       real(wp), allocatable :: u(:, :)
       character(len=:), allocatable :: line
-      call read_deck(DIR//'load.inp', model, error)
+      call setup(error, 'load', 1, 100.0_wp, 8, model, u, eta)
       if (allocated(error)) return
-      allocate (u(2, 4), source=0.0_wp)
-      call eta%start(100.0_wp, 8)
-      call begin_progress(model, 1, 0.0_wp, u, 100.0_wp, eta)
       line = progress_text(model, 1, 1, 0.25_wp, [0.25_wp], u, .false., eta, 130.0_wp)
       call expect(error, line, [character(len=60) :: "step 1 'first', increment 1 (4 planned)", &
          'fraction 0.25 of the step', 'push = 0.25 (of 1; resultant F_y = -5 kN)', &
@@ -66,11 +63,8 @@ contains
       type(progress_eta_t) :: eta
       real(wp), allocatable :: u(:, :)
       character(len=:), allocatable :: line
-      call read_deck(DIR//'settle.inp', model, error)
+      call setup(error, 'settle', 1, 0.0_wp, 10, model, u, eta)
       if (allocated(error)) return
-      allocate (u(2, 4), source=0.0_wp)
-      call eta%start(0.0_wp, 10)
-      call begin_progress(model, 1, 0.0_wp, u, 0.0_wp, eta)
       line = progress_text(model, 1, 4, 0.4_wp, [0.4_wp], u, .false., eta, 8.0_wp)
       call expect(error, line, [character(len=60) :: "step 1 'sink', increment 4 (10 planned)", &
          'settle = 0.4 (of 1; imposed u_y = -0.004 m at 2 nodes)', 'about 12 s left in this step'])
@@ -86,11 +80,8 @@ contains
       type(progress_eta_t) :: eta
       real(wp), allocatable :: u(:, :)
       character(len=:), allocatable :: line
-      call read_deck(DIR//'arc.inp', model, error)
+      call setup(error, 'arc', 1, 1000.0_wp, 20, model, u, eta)
       if (allocated(error)) return
-      allocate (u(2, 4), source=0.0_wp)
-      call eta%start(1000.0_wp, 20)
-      call begin_progress(model, 1, 0.0_wp, u, 1000.0_wp, eta)
       u(2, 4) = -0.005_wp
       line = progress_text(model, 1, 63, 0.734_wp, [0.734_wp], u, .true., eta, 1180.0_wp)
       call expect(error, line, [character(len=70) :: &
@@ -113,11 +104,8 @@ contains
       type(progress_eta_t) :: eta
       real(wp), allocatable :: u(:, :)
       character(len=:), allocatable :: line
-      call read_deck(DIR//'arc.inp', model, error)
+      call setup(error, 'arc', 2, 0.0_wp, 20, model, u, eta)
       if (allocated(error)) return
-      allocate (u(2, 4), source=0.0_wp)
-      call eta%start(0.0_wp, 20)
-      call begin_progress(model, 2, 0.0_wp, u, 0.0_wp, eta)
       line = progress_text(model, 2, 30, 0.9_wp, [3.0_wp + 0.9_wp*3.0_wp], u, .true., eta, &
          600.0_wp)
       call expect(error, line, [character(len=70) :: "step 2 'beyond' (arc-length)", &
@@ -142,6 +130,23 @@ contains
       if (allocated(error)) return
       call check(error, eta%step_left(0.1_wp, 1.0_wp, 60.0_wp) < 0.0_wp, 'moved back: unknown')
    end subroutine test_step_left
+
+   !> Deck DIR/<deck>.inp read into `model`, no displacement (u of its 4 nodes zero), the
+   !> progress clock started at `t0` with `planned` increments and step `istep` begun there.
+   subroutine setup(error, deck, istep, t0, planned, model, u, eta)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: deck
+      integer, intent(in) :: istep, planned
+      real(wp), intent(in) :: t0
+      type(model_t), intent(out) :: model
+      real(wp), allocatable, intent(out) :: u(:, :)
+      type(progress_eta_t), intent(out) :: eta
+      call read_deck(DIR//deck//'.inp', model, error)
+      if (allocated(error)) return
+      allocate (u(2, 4), source=0.0_wp)
+      call eta%start(t0, planned)
+      call begin_progress(model, istep, 0.0_wp, u, t0, eta)
+   end subroutine setup
 
    !> Every piece of `want` in `line`.
    subroutine expect(error, line, want)

@@ -18,8 +18,12 @@ module test_water
    use test_water_free, only: test_free_stages, test_free_equals_split, test_free_quay, &
       test_free_raft, test_free_bad_mode
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
+   use test_water_level, only: test_wall_level_inside, test_plate_polyline, test_face_polyline, &
+      test_plate_cone
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
+   use fixtures_water, only: write_wall
+   use fixtures_runs, only: run_completes
    implicit none (type, external)
    private
    public :: collect_water
@@ -47,6 +51,10 @@ contains
                new_unittest('water_on_a_wall', test_wall), &
                new_unittest('water_on_a_wall_phased', test_wall_phased), &
                new_unittest('water_on_a_wall_gravity_loading', test_wall_gravity), &
+               new_unittest('water_level_inside_a_wall_element', test_wall_level_inside), &
+               new_unittest('water_polyline_level_on_a_plate', test_plate_polyline), &
+               new_unittest('water_polyline_level_on_a_face', test_face_polyline), &
+               new_unittest('water_level_inside_a_conical_plate', test_plate_cone), &
                new_unittest('water_on_free_plate_faces', test_free_stages), &
                new_unittest('water_free_faces_equal_split_sets', test_free_equals_split), &
                new_unittest('water_free_faces_quay_wall', test_free_quay), &
@@ -110,7 +118,7 @@ contains
       real(wp), parameter :: GW = 10.0_wp, K0 = 0.5_wp, HS = 10.0_wp, HC = 4.0_wp
       real(wp), parameter :: GSU = 17.0_wp, GSS = 20.0_wp, GCS = 21.0_wp
       real(wp) :: level, xg(2, 4), p, sv, q, worst_p, worst_s, scale
-      integer :: code, s, el, g, v
+      integer :: s, el, g, v
       character(len=:), allocatable :: body
       character(len=32) :: buf
       call make_directories(OUT)
@@ -129,9 +137,8 @@ contains
          body = body//NL//'low, 4.0, 0.5, '//trim(adjustl(buf))//NL// &
             '*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'
          call write_column(OUT//'hydro'//itoa(v)//'.inp', 20, HS, HC, body)
-         code = run_deck(OUT//'hydro'//itoa(v)//'.inp', OUT//'hydro'//itoa(v)//'.h5', .true., &
-            model, problem)
-         call check(error, code == 0, 'hydrostatic column runs (exit '//itoa(code)//')')
+         call run_completes(error, OUT//'hydro'//itoa(v)//'.inp', OUT//'hydro'//itoa(v)//'.h5', &
+            model, problem, 'hydrostatic column')
          if (allocated(error)) return
          scale = GSS*HS
          worst_p = 0.0_wp
@@ -178,8 +185,8 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       real(wp), parameter :: E = 1.0e4_wp, NU = 0.3_wp, Q = 100.0_wp
-      real(wp) :: bulk, shear, m, kwn, b, worst_p, worst_s
-      integer :: code, v, s
+      real(wp) :: bulk, shear, m, kwn, b
+      integer :: v
       character(len=:), allocatable :: body
       call make_directories(OUT)
       bulk = E/(3.0_wp*(1.0_wp - 2.0_wp*NU))
@@ -199,26 +206,37 @@ contains
             '*SECTION, SET=high, MATERIAL=clay'//NL//'*LOAD, NAME=q, TYPE=FORCE'//NL// &
             'top, Y, -50'//NL//'*STEP, NAME=load, INCREMENTS=1'//NL//'q, 1.0'
          call write_column(OUT//'oedo'//itoa(v)//'.inp', 10, 10.0_wp, 5.0_wp, body)
-         code = run_deck(OUT//'oedo'//itoa(v)//'.inp', OUT//'oedo'//itoa(v)//'.h5', .true., &
-            model, problem)
-         call check(error, code == 0, 'undrained oedometer runs (exit '//itoa(code)//')')
+         call run_completes(error, OUT//'oedo'//itoa(v)//'.inp', OUT//'oedo'//itoa(v)//'.h5', &
+            model, problem, 'undrained oedometer')
          if (allocated(error)) return
-         worst_p = 0.0_wp
-         worst_s = 0.0_wp
-         do s = 1, 2
-            associate (st => problem%state%sets(s))
-               worst_p = max(worst_p, maxval(abs(st%pore%excess - Q*b)))
-               worst_s = max(worst_s, maxval(abs(st%stress(2, :, :) + Q*m/(m + kwn))))
-            end associate
-         end do
-         call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'excess pore pressure = q B_oed', &
-            atol=1.0e-8_wp*Q)
-         if (allocated(error)) return
-         call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma'_v = -q (1 - B_oed)", &
-            atol=1.0e-8_wp*Q)
+         call check_uniform(error, problem, Q*b, Q*m/(m + kwn), 1.0e-8_wp*Q, &
+            'excess pore pressure = q B_oed', "sigma'_v = -q (1 - B_oed)")
          if (allocated(error)) return
       end do
    end subroutine test_oedometer
+
+   !> The uniform state of the oedometric column (both sets, every point): excess pore
+   !> pressure `p` and sigma'_v = -`sv`, each to `atol` (the tests say why); `what_p`,
+   !> `what_s` name the two checks.
+   subroutine check_uniform(error, problem, p, sv, atol, what_p, what_s)
+      type(error_t), allocatable, intent(out) :: error
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: p, sv, atol
+      character(len=*), intent(in) :: what_p, what_s
+      real(wp) :: worst_p, worst_s
+      integer :: s
+      worst_p = 0.0_wp
+      worst_s = 0.0_wp
+      do s = 1, 2
+         associate (st => problem%state%sets(s))
+            worst_p = max(worst_p, maxval(abs(st%pore%excess - p)))
+            worst_s = max(worst_s, maxval(abs(st%stress(2, :, :) + sv)))
+         end associate
+      end do
+      call check_close(error, worst_p, 0.0_wp, 0.0_wp, what_p, atol=atol)
+      if (allocated(error)) return
+      call check_close(error, worst_s, 0.0_wp, 0.0_wp, what_s, atol=atol)
+   end subroutine check_uniform
 
    !> The oedometric column of test_oedometer (elastic UNDRAINED_A, default K_w/n) with its
    !> top pushed down d = 0.01 (imposed displacement) in 2 increments: the strain is uniform,
@@ -234,8 +252,7 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       real(wp), parameter :: E = 1.0e4_wp, NU = 0.3_wp, D = 0.01_wp, H = 10.0_wp
-      real(wp) :: bulk, shear, m, kwn, worst_p, worst_s
-      integer :: code, s
+      real(wp) :: bulk, shear, m, kwn
       call make_directories(OUT)
       bulk = E/(3.0_wp*(1.0_wp - 2.0_wp*NU))
       shear = E/(2.0_wp*(1.0_wp + NU))
@@ -246,22 +263,11 @@ contains
          '*SECTION, SET=low, MATERIAL=clay'//NL//'*SECTION, SET=high, MATERIAL=clay'//NL// &
          '*LOAD, NAME=push, TYPE=DISPLACEMENT'//NL//'top, Y, -1.0'//NL// &
          '*STEP, NAME=push, INCREMENTS=2'//NL//'push, 0.01')
-      code = run_deck(OUT//'oedo_imposed.inp', OUT//'oedo_imposed.h5', .true., model, problem)
-      call check(error, code == 0, 'undrained column pushed down runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'oedo_imposed.inp', OUT//'oedo_imposed.h5', model, problem, &
+         'undrained column pushed down')
       if (allocated(error)) return
-      worst_p = 0.0_wp
-      worst_s = 0.0_wp
-      do s = 1, 2
-         associate (st => problem%state%sets(s))
-            worst_p = max(worst_p, maxval(abs(st%pore%excess - kwn*D/H)))
-            worst_s = max(worst_s, maxval(abs(st%stress(2, :, :) + m*D/H)))
-         end associate
-      end do
-      call check_close(error, worst_p, 0.0_wp, 0.0_wp, 'excess pore pressure = K_w/n d / H', &
-         atol=1.0e-8_wp*m*D/H)
-      if (allocated(error)) return
-      call check_close(error, worst_s, 0.0_wp, 0.0_wp, "sigma'_v = -M' d / H", &
-         atol=1.0e-8_wp*m*D/H)
+      call check_uniform(error, problem, kwn*D/H, m*D/H, 1.0e-8_wp*m*D/H, &
+         'excess pore pressure = K_w/n d / H', "sigma'_v = -M' d / H")
       if (allocated(error)) return
       call check(error, problem%stats%increments == 2 .and. problem%stats%iterations == 2, &
          'one iteration per increment (increments '//itoa(problem%stats%increments)// &
@@ -282,13 +288,12 @@ contains
       type(problem_t) :: problem
       real(wp), parameter :: C = 10.0_wp, PHI = 30.0_wp, S0 = 100.0_wp
       real(wp) :: deg, t, expect, sig(4)
-      integer :: code
       deg = acos(-1.0_wp)/180.0_wp
       expect = C*cos(PHI*deg) + S0*sin(PHI*deg)
       call make_directories(OUT)
       call write_block(OUT//'triax0.inp', 0.0_wp)
-      code = run_deck(OUT//'triax0.inp', OUT//'triax0.h5', .true., model, problem)
-      call check(error, code == 0, 'undrained compression runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'triax0.inp', OUT//'triax0.h5', model, problem, &
+         'undrained compression')
       if (allocated(error)) return
       sig = problem%state%sets(1)%stress(:, 1, 1)
       t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
@@ -296,9 +301,8 @@ contains
          "s'_0 sin phi'")
       if (allocated(error)) return
       call write_block(OUT//'triax10.inp', 10.0_wp)
-      code = run_deck(OUT//'triax10.inp', OUT//'triax10.h5', .true., model, problem)
-      call check(error, code == 0, 'undrained compression, psi = 10, runs (exit '// &
-         itoa(code)//')')
+      call run_completes(error, OUT//'triax10.inp', OUT//'triax10.h5', model, problem, &
+         'undrained compression, psi = 10,')
       if (allocated(error)) return
       sig = problem%state%sets(1)%stress(:, 1, 1)
       t = 0.5_wp*sqrt((sig(1) - sig(2))**2 + 4.0_wp*sig(4)**2)
@@ -343,8 +347,8 @@ contains
          '*STEP, NAME=undrained, INCREMENTS=2'//NL//'q, 1.0'//NL// &
          '*STEP, NAME=drained, INCREMENTS=2'//NL//'*CHANGE_MATERIAL'//NL//'low, long'//NL// &
          'high, long'//NL//'*CHANGE_WATER, RESET_EXCESS=YES'//NL//'*END STEP')
-      code = run_deck(OUT//'short_long.inp', OUT//'short_long.h5', .true., model, two)
-      call check(error, code == 0, 'undrained then drained runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'short_long.inp', OUT//'short_long.h5', model, two, &
+         'undrained then drained')
       if (allocated(error)) return
       call write_column(OUT//'drained.inp', 10, 10.0_wp, 5.0_wp, MATS// &
          '*SECTION, SET=low, MATERIAL=long'//NL//'*SECTION, SET=high, MATERIAL=long'//NL// &
@@ -402,11 +406,10 @@ contains
       real(wp), allocatable :: reac(:, :)
       real(wp) :: q(2), qu
       character(len=40) :: path
-      integer :: code, n, k, i
+      integer :: n, k, i
       call make_directories(OUT)
-      code = run_deck('test/data/water/'//name//'.inp', OUT//name//'.h5', .true., model, &
-         problem)
-      call check(error, code == 0, name//' runs (exit '//itoa(code)//')')
+      call run_completes(error, 'test/data/water/'//name//'.inp', OUT//name//'.h5', model, &
+         problem, name)
       if (allocated(error)) return
       k = model%mesh%find_nset('footing')
       call rd%open(OUT//name//'.h5', error)
@@ -566,8 +569,7 @@ contains
          '*SECTION, SET=low, MATERIAL=clay'//NL//'*SECTION, SET=high, MATERIAL=clay'//NL// &
          '*LOAD, NAME=q, TYPE=FORCE'//NL//'top, Y, -50'//NL// &
          '*STEP, NAME=load, INCREMENTS=4'//NL//'q, 1.0')
-      code = run_deck(deck, OUT//'oedo_whole.h5', .true., model, whole)
-      call check(error, code == 0, 'undrained oedometer runs (exit '//itoa(code)//')')
+      call run_completes(error, deck, OUT//'oedo_whole.h5', model, whole, 'undrained oedometer')
       if (allocated(error)) return
       code = run_deck(deck, OUT//'oedo_part.h5', .true., model, resumed, stop_after=2)
       call check(error, code == 4, 'stopped after increment 2 (exit '//itoa(code)//')')
@@ -601,7 +603,7 @@ contains
       type(problem_t) :: problem
       real(wp), parameter :: E = 3.0e4_wp, NU = 0.25_wp
       real(wp) :: xg(2, 4), worst_s, worst_u, m, sv, sh
-      integer :: code, el, g, n
+      integer :: el, g, n
       call make_directories(OUT)
       call write_column(OUT//'pit.inp', 20, 10.0_wp, 7.0_wp, '*MATERIAL, NAME=soil'//NL// &
          'E = 3e4, NU = 0.25, GAMMA = 20, GAMMA_SAT = 20'//NL// &
@@ -609,8 +611,7 @@ contains
          '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=10'//NL//'*INITIAL_STRESS, TYPE=GEOSTATIC'// &
          NL//'ALL, 10.0, 0.5'//NL//'*STEP, NAME=nil, INCREMENTS=1'//NL//'*END STEP'//NL// &
          '*STEP, NAME=dig, INCREMENTS=1'//NL//'*DEACTIVATE'//NL//'high'//NL//'*END STEP')
-      code = run_deck(OUT//'pit.inp', OUT//'pit.h5', .true., model, problem)
-      call check(error, code == 0, 'flooded pit runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'pit.inp', OUT//'pit.h5', model, problem, 'flooded pit')
       if (allocated(error)) return
       m = E*(1.0_wp - NU)/((1.0_wp + NU)*(1.0_wp - 2.0_wp*NU))
       worst_s = 0.0_wp
@@ -647,7 +648,7 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       real(wp) :: xg(2, 4), sig(4), t, worst
-      integer :: code, u, g
+      integer :: u, g
       call make_directories(OUT)
       open (newunit=u, file=OUT//'cu_depth.inp', status='replace', action='write')
       write (u, '(a)') '*TITLE', 'c_u rising with depth', '*NODES', '1, 0, 0', '2, 1, 0', &
@@ -659,8 +660,8 @@ contains
          'ALL, -100, -100, -100, 0', '*LOAD, NAME=push, TYPE=DISPLACEMENT', &
          'top, Y, -0.02', '*STEP, NAME=push, INCREMENTS=20', 'push, 1.0'
       close (u)
-      code = run_deck(OUT//'cu_depth.inp', OUT//'cu_depth.h5', .true., model, problem)
-      call check(error, code == 0, 'UNDRAINED_B with CU_INC runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'cu_depth.inp', OUT//'cu_depth.h5', model, problem, &
+         'UNDRAINED_B with CU_INC')
       if (allocated(error)) return
       call massif_gauss_coordinates(problem%system%rules(1), &
          model%mesh%x(:, model%mesh%esets(1)%conn(:, 1)), xg)
@@ -684,20 +685,10 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       type(plate_fields_t) :: f
-      integer :: code, u, i
       call make_directories(OUT)
-      open (newunit=u, file=OUT//'wall.inp', status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a wall', '*UNITS', 'kN, m, kPa', '*NODES'
-      do i = 0, 10
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
-         '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
-      close (u)
-      code = run_deck(OUT//'wall.inp', OUT//'wall.h5', .true., model, problem)
-      call check(error, code == 0, 'wall in water runs (exit '//itoa(code)//')')
+      call write_wall(OUT//'wall.inp', 'water on a wall', 10, '6', [character(len=32) :: &
+         '*PLATE_WATER', 'wall, LEFT', '*STEP, NAME=water, INCREMENTS=1', '*END STEP'])
+      call run_completes(error, OUT//'wall.inp', OUT//'wall.h5', model, problem, 'wall in water')
       if (allocated(error)) return
       call plate_results(model, problem%state%u, problem%state%plates, problem%state%factors, &
          1, f, error, level=1)
@@ -735,7 +726,7 @@ contains
       integer, parameter :: NINC = 4
       real(wp), allocatable :: sig(:, :, :), reac(:, :), pst(:, :)
       real(wp) :: level, xg(2, 4), p, sv, q, worst_p, worst_s, scale, ym, weight, base, lam, ratio
-      integer :: code, s, el, g, v, i
+      integer :: s, el, g, v, i
       character(len=:), allocatable :: body, name
       character(len=64) :: path
       character(len=32) :: buf
@@ -764,8 +755,7 @@ contains
             '*STEP, NAME=gravity, INCREMENTS='//itoa(NINC)//NL//'weight, 1'//NL//'*END STEP'
          name = OUT//'gravity'//itoa(v)
          call write_column(name//'.inp', 20, HS, HC, body)
-         code = run_deck(name//'.inp', name//'.h5', .true., model, problem)
-         call check(error, code == 0, 'gravity column runs (exit '//itoa(code)//')')
+         call run_completes(error, name//'.inp', name//'.h5', model, problem, 'gravity column')
          if (allocated(error)) return
          scale = GSS*HS
          call rd%open(name//'.h5', error)
@@ -843,19 +833,11 @@ contains
       type(results_reader_t) :: file
       real(wp), allocatable :: nf(:, :)
       character(len=*), parameter :: deck = OUT//'wall_phased.inp'
-      integer :: code, u, i, stop
+      integer :: code, stop
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a wall from phase 2', '*UNITS', 'kN, m, kPa', '*NODES'
-      do i = 0, 10
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', &
-         '*STEP, NAME=dry, INCREMENTS=1', '*END STEP', &
-         '*STEP, NAME=flood, INCREMENTS=2', '*PLATE_WATER', 'wall, LEFT', '*END STEP'
-      close (u)
+      call write_wall(deck, 'water on a wall from phase 2', 10, '6', [character(len=32) :: &
+         '*STEP, NAME=dry, INCREMENTS=1', '*END STEP', '*STEP, NAME=flood, INCREMENTS=2', &
+         '*PLATE_WATER', 'wall, LEFT', '*END STEP'])
       code = run_deck(deck, OUT//'wall_phase1.h5', .true., model, part, stop_after=1)
       call check(error, code == 4, 'stopped after phase 1 (exit '//itoa(code)//')')
       if (allocated(error)) return
@@ -865,8 +847,7 @@ contains
       call check_close(error, abs(f%node_forces(2, 1)) + abs(f%node_forces(3, 1)), 0.0_wp, &
          0.0_wp, 'no water on the wall in phase 1', atol=1.0e-8_wp*180.0_wp)
       if (allocated(error)) return
-      code = run_deck(deck, OUT//'wall_phased.h5', .true., model, whole)
-      call check(error, code == 0, 'phased wall in water runs (exit '//itoa(code)//')')
+      call run_completes(error, deck, OUT//'wall_phased.h5', model, whole, 'phased wall in water')
       if (allocated(error)) return
       call plate_results(model, whole%state%u, whole%state%plates, whole%state%factors, 1, f, &
          error, level=1, step=2)
@@ -909,22 +890,13 @@ contains
       type(results_reader_t) :: file
       real(wp), allocatable :: nf(:, :)
       character(len=*), parameter :: deck = OUT//'wall_gravity.inp'
-      integer :: code, u, i
+      integer :: i
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a wall under gravity loading', '*UNITS', &
-         'kN, m, kPa', '*NODES'
-      do i = 0, 10
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 11, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', 'wall, LEFT', &
-         '*LOAD, NAME=weight, TYPE=GRAVITY', 'wall', &
-         '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1', '*END STEP'
-      close (u)
-      code = run_deck(deck, OUT//'wall_gravity.h5', .true., model, whole)
-      call check(error, code == 0, 'wall under gravity loading runs (exit '//itoa(code)//')')
+      call write_wall(deck, 'water on a wall under gravity loading', 10, '6', &
+         [character(len=34) :: '*PLATE_WATER', 'wall, LEFT', '*LOAD, NAME=weight, TYPE=GRAVITY', &
+         'wall', '*STEP, NAME=gravity, INCREMENTS=2', 'weight, 1', '*END STEP'])
+      call run_completes(error, deck, OUT//'wall_gravity.h5', model, whole, &
+         'wall under gravity loading')
       if (allocated(error)) return
       call file%open(OUT//'wall_gravity.h5', error)
       if (allocated(error)) return

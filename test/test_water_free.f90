@@ -7,13 +7,14 @@ module test_water_free
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
-   use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
    use pecplas_problem_type, only: problem_t
    use pecplas_base_strings, only: itoa
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: check, check_close
    use fixtures_bad_decks, only: check_refused
+   use fixtures_water, only: write_wall
+   use fixtures_runs, only: run_completes
    implicit none (type, external)
    private
    public :: test_free_stages, test_free_equals_split, test_free_quay, test_free_raft, &
@@ -140,11 +141,11 @@ contains
       real(wp), allocatable :: nf(:, :)
       real(wp) :: shear(0:2), moment(0:2), v, m, umax
       character(len=*), parameter :: deck = OUT//'pit_free.inp'
-      integer :: code, i, stage
+      integer :: i, stage
       call make_directories(OUT)
       call write_pit(deck, .true.)
-      code = run_deck(deck, OUT//'pit_free.h5', .true., model, problem)
-      call check(error, code == 0, 'wall in a flooded pit (FREE) runs (exit '//itoa(code)//')')
+      call run_completes(error, deck, OUT//'pit_free.h5', model, problem, &
+         'wall in a flooded pit (FREE)')
       if (allocated(error)) return
       shear(0) = 0.0_wp
       moment(0) = 0.0_wp
@@ -190,15 +191,14 @@ contains
       type(problem_t) :: free, split
       type(results_reader_t) :: file
       real(wp), allocatable :: a(:, :), b(:, :)
-      integer :: code, i
+      integer :: i
       call make_directories(OUT)
       call write_pit(OUT//'pit_free2.inp', .true.)
       call write_pit(OUT//'pit_split.inp', .false.)
-      code = run_deck(OUT//'pit_free2.inp', OUT//'pit_free2.h5', .true., model, free)
-      call check(error, code == 0, 'FREE wall runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'pit_free2.inp', OUT//'pit_free2.h5', model, free, 'FREE wall')
       if (allocated(error)) return
-      code = run_deck(OUT//'pit_split.inp', OUT//'pit_split.h5', .true., model, split)
-      call check(error, code == 0, 'split wall runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//'pit_split.inp', OUT//'pit_split.h5', model, split, &
+         'split wall')
       if (allocated(error)) return
       call check(error, all(shape(free%state%u) == shape(split%state%u)), 'same unknowns')
       if (allocated(error)) return
@@ -239,7 +239,7 @@ contains
       type(problem_t) :: problem
       type(results_reader_t) :: file
       real(wp), allocatable :: reac(:, :)
-      integer :: code, k, r, c
+      integer :: k, r, c
       call make_directories(OUT)
       open (newunit=k, file=OUT//name//'.inp', status='replace', action='write')
       write (k, '(a)') '*TITLE', 'quay wall', '*UNITS', 'kN, m, kPa', '*NODES'
@@ -268,8 +268,8 @@ contains
       if (len(mode) > 0) write (k, '(a)') '*PLATE_WATER', 'wall, '//mode
       write (k, '(a)') '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
       close (k)
-      code = run_deck(OUT//name//'.inp', OUT//name//'.h5', .true., model, problem)
-      call check(error, code == 0, 'quay wall '//name//' runs (exit '//itoa(code)//')')
+      call run_completes(error, OUT//name//'.inp', OUT//name//'.h5', model, problem, &
+         'quay wall '//name)
       if (allocated(error)) return
       call file%open(OUT//name//'.h5', error)
       if (allocated(error)) return
@@ -349,7 +349,7 @@ contains
       real(wp), allocatable :: reac(:, :), nf(:, :), rot(:)
       real(wp) :: expect
       character(len=:), allocatable :: name
-      integer :: k, u, i, code
+      integer :: k, u, i
       call make_directories(OUT)
       do k = 1, 3
          name = 'raft_'//label(MODES(k))
@@ -372,8 +372,7 @@ contains
          write (u, '(a)') '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10.0, 0.5', &
             '*STEP, NAME=nil, INCREMENTS=1', '*END STEP'
          close (u)
-         code = run_deck(OUT//name//'.inp', OUT//name//'.h5', .true., model, problem)
-         call check(error, code == 0, name//' runs (exit '//itoa(code)//')')
+         call run_completes(error, OUT//name//'.inp', OUT//name//'.h5', model, problem, name)
          if (allocated(error)) return
          call file%open(OUT//name//'.h5', error)
          if (allocated(error)) return
@@ -414,18 +413,9 @@ contains
    subroutine test_free_bad_mode(error)
       type(error_t), allocatable, intent(out) :: error
       character(len=*), parameter :: deck = OUT//'bad_plate_water.inp'
-      integer :: u, i
       call make_directories(OUT)
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'bad plate water mode', '*NODES'
-      do i = 0, 4
-         write (u, '(i0,a,i0)') i + 1, ', 0, ', i
-      end do
-      write (u, '(a)') '*NSET, NAME=wall, GENERATE', '1, 5, 1', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', '*BOUNDARY', '1, ALL', &
-         '*WATER, NAME=pit, GAMMA_W=10, LEVEL=3', '*PLATE_WATER', 'wall, FLOODED', &
-         '*STEP, NAME=water, INCREMENTS=1', '*END STEP'
-      close (u)
+      call write_wall(deck, 'bad plate water mode', 4, '3', [character(len=32) :: &
+         '*PLATE_WATER', 'wall, FLOODED', '*STEP, NAME=water, INCREMENTS=1', '*END STEP'])
       call check_refused(error, deck, 'wall, FLOODED', "side 'FLOODED': expected LEFT or "// &
          'RIGHT (of the plate walked from its first node to its last), FREE', &
          OUT//'bad_plate_water.h5', 'unknown *PLATE_WATER mode')

@@ -6,14 +6,12 @@ module test_water_stiffness
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
-   use pecplas_cmd_pecplas, only: run_deck
    use pecplas_base_files, only: make_directories
    use pecplas_problem_type, only: problem_t
-   use pecplas_base_strings, only: itoa
    use pecplas_fe_joint_penalty, only: massif_rmax
-   use pecplas_joints_laws_spring, only: spring_law_t
    use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
    use pecplas_testing, only: check, check_close
+   use fixtures_runs, only: run_completes, check_default_penalty
    implicit none (type, external)
    private
    public :: test_undrained_penalty, test_undrained_estimator
@@ -35,28 +33,18 @@ contains
       type(problem_t) :: problem
       real(wp), parameter :: E = 1.0e4_wp, NU = 0.3_wp, KWN = 5.0e4_wp
       real(wp) :: rmax, expect, d11, g
-      integer :: code
       d11 = E*(1.0_wp - NU)/((1.0_wp + NU)*(1.0_wp - 2.0_wp*NU))
       g = E/(2.0_wp*(1.0_wp + NU))
       expect = 2.0_wp*(d11 + KWN + g)/3.0_wp
       call make_directories(OUT)
-      code = run_deck(DATA//'penalty_spring_undrained.inp', OUT//'penalty_undrained.h5', .true., &
-         model, problem)
-      call check(error, code == 0, 'penalty_spring_undrained.inp runs (exit '//itoa(code)//')')
+      call run_completes(error, DATA//'penalty_spring_undrained.inp', &
+         OUT//'penalty_undrained.h5', model, problem, 'penalty_spring_undrained.inp')
       if (allocated(error)) return
       call massif_rmax(model, problem%system%rules, rmax, error)
       if (allocated(error)) return
       call check_close(error, rmax, expect, 1.0e-12_wp, "R_max = 2 (D'11 + K_w/n + G)/3")
       if (allocated(error)) return
-      select type (law => model%laws(1)%law)
-      class is (spring_law_t)
-         call check(error, .not. law%needs_penalty, 'the penalty was set')
-         if (allocated(error)) return
-         call check_close(error, law%kn, 1.0e5_wp*0.5_wp*expect/(2.0_wp/3.0_wp), 1.0e-12_wp, &
-            'KN = 1e5 E_RYG R_max / mean tributary, R_max with the pore water')
-      class default
-         call check(error, .false., 'the law is the spring law')
-      end select
+      call check_default_penalty(error, model, expect, ', R_max with the pore water')
    end subroutine test_undrained_penalty
 
    !> The smooth rigid footing of footing_q8r_mesh.inc (200 Q8R) on elastic UNDRAINED_A clay
@@ -73,17 +61,14 @@ contains
       type(model_t) :: model
       type(problem_t) :: problem
       type(error_estimate_t) :: und, dra
-      integer :: code
       call make_directories(OUT)
-      code = run_deck(DATA//'estimator_undrained.inp', OUT//'estimator_undrained.h5', .true., &
-         model, problem)
-      call check(error, code == 0, 'estimator_undrained.inp runs (exit '//itoa(code)//')')
+      call run_completes(error, DATA//'estimator_undrained.inp', OUT//'estimator_undrained.h5', &
+         model, problem, 'estimator_undrained.inp')
       if (allocated(error)) return
       call estimate_error(model, problem, und, error)
       if (allocated(error)) return
-      code = run_deck(DATA//'estimator_drained_ku.inp', OUT//'estimator_drained_ku.h5', .true., &
-         model, problem)
-      call check(error, code == 0, 'estimator_drained_ku.inp runs (exit '//itoa(code)//')')
+      call run_completes(error, DATA//'estimator_drained_ku.inp', &
+         OUT//'estimator_drained_ku.h5', model, problem, 'estimator_drained_ku.inp')
       if (allocated(error)) return
       call estimate_error(model, problem, dra, error)
       if (allocated(error)) return

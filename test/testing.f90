@@ -8,7 +8,7 @@ module pecplas_testing
    private
 
    public :: unittest_t, testsuite_t, new_unittest, new_testsuite, run_testsuite
-   public :: check, check_close, test_ifc, collect_ifc
+   public :: check, check_close, near, test_ifc, collect_ifc
 
    abstract interface
       !> One test: leaves `error` allocated when it fails.
@@ -41,6 +41,14 @@ module pecplas_testing
    end interface check
 
 contains
+
+   !> Equal up to 2 ulp. Values read from deck text and the same decimal literals in a
+   !> test are both correctly rounded, so they agree to the last bit; the margin only keeps
+   !> the comparison a tolerance comparison.
+   elemental logical function near(a, b)
+      real(wp), intent(in) :: a, b
+      near = abs(a - b) <= 2.0_wp*epsilon(1.0_wp)*abs(b)
+   end function near
 
    function new_unittest(name, run) result(test)
       character(len=*), intent(in) :: name

@@ -21,7 +21,7 @@ module pecplas_estimate_estimator
    use pecplas_estimate_recovery, only: recover_set_stresses, solve_small
    use pecplas_estimate_type, only: eta_set_t, error_estimate_t
    use pecplas_estimate_joints, only: joint_indicators
-   use pecplas_fe_assembly, only: set_material
+   use pecplas_fe_state, only: set_material
    use pecplas_fe_water_stiffness, only: set_elastic_tangent
    implicit none (type, external)
    private

@@ -7,7 +7,7 @@ module pecplas_fe_assembly
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
    use pecplas_fe_dofs, only: dofs_t
-   use pecplas_fe_state, only: fe_state_t, set_state_t
+   use pecplas_fe_state, only: fe_state_t, set_state_t, set_material
    use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t, massif_gauss_derivs
    use pecplas_massif_point_kernels, only: point_strain, point_force_add
    use pecplas_massif_element_matrices, only: massif_stiffness
@@ -26,7 +26,7 @@ module pecplas_fe_assembly
    implicit none (type, external)
    private
 
-   public :: assemble_stiffness, internal_forces, set_material
+   public :: assemble_stiffness, internal_forces
 
 contains
 
@@ -123,16 +123,6 @@ contains
          if (q > 0) k%values(q) = k%values(q) + max(maxval(abs(diag)), 1.0_wp)
       end do
    end subroutine add_orphans
-
-   !> Index in model%materials of the material of element set s: the *SECTION's, or the one
-   !> a phase changed it to.
-   pure integer function set_material(model, s, st) result(m)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: s
-      type(set_state_t), intent(in) :: st
-      m = model%mesh%esets(s)%material_index
-      if (st%material > 0) m = st%material
-   end function set_material
 
    !> Adds the stiffness of this share's elements of massif set s to k (pattern ready):
    !> element matrices in parallel, CHUNK elements at a time, added serially in order

@@ -9,14 +9,13 @@ module pecplas_fe_imposed
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_fe_dofs, only: dofs_t
-   use pecplas_fe_state, only: fe_state_t
+   use pecplas_fe_state, only: fe_state_t, set_material
    use pecplas_massif_kinematics, only: MAX_NODES, massif_rule_t
    use pecplas_massif_element_matrices, only: massif_stiffness
    use pecplas_massif_materials_type, only: NCOMP
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t, joint_stiffness
    use pecplas_joints_points, only: joint_set_element, joint_element_points
    use pecplas_fe_element_context, only: element_context
-   use pecplas_fe_assembly, only: set_material
    use pecplas_fe_water_stiffness, only: add_water_stiffness, set_elastic_tangent
    use pecplas_fe_joint_assembly, only: set_law
    implicit none (type, external)

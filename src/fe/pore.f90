@@ -4,7 +4,7 @@
 module pecplas_fe_pore
    use pecplas_base_kinds, only: wp
    use pecplas_model_type, only: model_t
-   use pecplas_fe_state, only: fe_state_t, set_state_t
+   use pecplas_fe_state, only: fe_state_t, set_material
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_base_error, only: error_t
@@ -13,7 +13,7 @@ module pecplas_fe_pore
    implicit none (type, external)
    private
 
-   public :: setup_pore, set_steady_pressures, reset_excess, pore_material
+   public :: setup_pore, set_steady_pressures, reset_excess
 
 contains
 
@@ -40,15 +40,6 @@ contains
       call set_steady_pressures(model, rules, state, model%water%level_at(1), error)
    end subroutine setup_pore
 
-   !> Index in model%materials of the material that set s has now.
-   pure integer function pore_material(model, s, st) result(m)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: s
-      type(set_state_t), intent(in) :: st
-      m = model%mesh%esets(s)%material_index
-      if (st%material > 0) m = st%material
-   end function pore_material
-
    !> Steady pore pressures of every point under level k (0: none): massif points by their
    !> set and material, joint points by the rule of joint_wet.
    subroutine set_steady_pressures(model, rules, state, k, error)
@@ -63,7 +54,7 @@ contains
       do s = 1, size(state%sets)
          associate (st => state%sets(s), set => model%mesh%esets(s))
             if (.not. st%pore%on()) cycle
-            m = pore_material(model, s, st)
+            m = set_material(model, s, st)
             allocate (xg(2, st%ngauss))
             do e = 1, size(set%conn, 2)
                call massif_gauss_coordinates(rules(s), model%mesh%x(:, set%conn(:, e)), xg)
@@ -110,7 +101,7 @@ contains
       do i = 1, size(conn)
          do j = index%head(conn(i)), index%head(conn(i) + 1) - 1
             s = index%node_set(j)
-            if (model%water%wet(s, pore_material(model, s, state%sets(s)))) then
+            if (model%water%wet(s, set_material(model, s, state%sets(s)))) then
                wet = .true.
                return
             end if

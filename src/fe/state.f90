@@ -3,6 +3,7 @@
 !> the model stays intent(in).
 module pecplas_fe_state
    use pecplas_base_kinds, only: wp
+   use pecplas_model_type, only: model_t
    use pecplas_joints_state, only: joint_state_t
    use pecplas_water_state, only: pore_state_t
    use pecplas_structures_anchor_state, only: anchor_state_t
@@ -11,7 +12,7 @@ module pecplas_fe_state
    implicit none (type, external)
    private
 
-   public :: set_state_t, fe_state_t, set_state_allocate
+   public :: set_state_t, fe_state_t, set_material, set_state_allocate
 
    !> Per element set: arrays (component, gauss point, element).
    type :: set_state_t
@@ -60,6 +61,16 @@ module pecplas_fe_state
    end type fe_state_t
 
 contains
+
+   !> Index in model%materials of the material of element set s whose state is `st`: the
+   !> *SECTION's, or the one a phase changed it to.
+   pure integer function set_material(model, s, st) result(m)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s
+      type(set_state_t), intent(in) :: st
+      m = model%mesh%esets(s)%material_index
+      if (st%material > 0) m = st%material
+   end function set_material
 
    !> The point arrays of a set (ncomp stress components, nst history values, ng points,
    !> nel elements), converged and trial, all zero: the initial state. The zeros are

@@ -13,11 +13,14 @@ module pecplas_fe_water_faces
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_mesh_sides, only: side_table_t, build_side_table, find_sides
-   use pecplas_massif_edge_load, only: edge_linear_pressure_forces
+   use pecplas_massif_edge_load, only: edge_linear_pressure_forces, &
+      edge_part_pressure_forces
    use pecplas_model_options, only: AXISYMMETRIC
-   use pecplas_structures_beam, only: beam_line_load, MAX_BEAM_DOFS
+   use pecplas_structures_beam, only: beam_line_load, beam_part_load, MAX_BEAM_DOFS
    use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
    use pecplas_model_plate_water_sides, only: plate_water_sides
+   use pecplas_water_wet_parts, only: wet_parts
+   use pecplas_water_phreatic, only: phreatic_t
    implicit none (type, external)
    private
 
@@ -70,19 +73,54 @@ contains
             if (n /= 1) cycle
             nen = merge(3, 2, nodes(3) > 0)
             xedge(:, 1:nen) = model%mesh%x(:, nodes(1:nen))
-            xm = 0.5_wp*(xedge(1, 1) + xedge(1, 2))
-            h = model%water%levels(k)%head(xm)
-            if (.not. any(xedge(2, 1:nen) < h)) cycle
-            ! p = gamma_w (h - y), floored at 0 above the level (h at the side's middle: a
-            ! polyline level is taken straight along one side)
-            call edge_linear_pressure_forces(model%analysis%kind, model%analysis%thickness, &
-               xedge(:, 1:nen), 0.0_wp, model%water%levels(k)%gamma_w, h, fe(1:2*nen), &
-               error, 0.0_wp)
-            if (allocated(error)) return
+            if (size(model%water%levels(k)%y) > 1 .and. &
+                any(xedge(1, 2:nen) /= xedge(1, 1))) then
+               ! a polyline level along a side not vertical: h(x) varies along it, with kinks
+               ! at the level's vertices; p cut there and at the level, each part exact
+               call sloping_face(model, model%water%levels(k), xedge(:, 1:nen), fe(1:2*nen), &
+                  error)
+               if (allocated(error)) return
+            else
+               xm = 0.5_wp*(xedge(1, 1) + xedge(1, 2))
+               h = model%water%levels(k)%head(xm)
+               if (.not. any(xedge(2, 1:nen) < h)) cycle
+               ! p = gamma_w (h - y), floored at 0 above the level (h is one along the side),
+               ! cut at the level and each part exact (edge_linear_pressure_forces)
+               call edge_linear_pressure_forces(model%analysis%kind, &
+                  model%analysis%thickness, xedge(:, 1:nen), 0.0_wp, &
+                  model%water%levels(k)%gamma_w, h, fe(1:2*nen), error, 0.0_wp)
+               if (allocated(error)) return
+            end if
             force(:, nodes(1:nen)) = force(:, nodes(1:nen)) + reshape(fe(1:2*nen), [2, nen])
          end associate
       end do
    end subroutine add_water_faces
+
+   !> fe(2 nen) of the water p = gamma_w (h(x) - y)+ of a polyline level on the side with
+   !> nodes xedge (ends, then the mid node): the side is cut where it crosses the x of a
+   !> vertex of the level and where p falls to 0 (pecplas_water_wet_parts), and each wet part
+   !> integrated exactly (p is a polynomial of degree nen - 1 along it).
+   subroutine sloping_face(model, level, xedge, fe, error)
+      type(model_t), intent(in) :: model
+      type(phreatic_t), intent(in) :: level
+      real(wp), intent(in) :: xedge(:, :)
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: from(:), to(:), p(:, :)
+      real(wp) :: part(6)
+      logical :: split
+      integer :: j
+      fe = 0.0_wp
+      call wet_parts(level, xedge, from, to, p, split)
+      do j = 1, size(from)
+         ! the parameter of the parts in [0, 1], the edge's in [-1, 1]
+         call edge_part_pressure_forces(model%analysis%kind, model%analysis%thickness, &
+            xedge, 2.0_wp*from(j) - 1.0_wp, 2.0_wp*to(j) - 1.0_wp, p(:, j), &
+            part(1:size(fe)), error)
+         if (allocated(error)) return
+         fe = fe + part(1:size(fe))
+      end do
+   end subroutine sloping_face
 
    !> Nodes of the elements of the active plate sets (`pactive`).
    pure function active_plate_nodes(model, pactive) result(on)
@@ -149,32 +187,49 @@ contains
 
    !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
    !> under level k, pressing from the face `side` (+1 left, -1 right, 0 none: the element's
-   !> entry of plate_water_sides): p = gamma_w (h - y)+ at the element's nodes, interpolated
-   !> along it like its geometry (exact where it lies wholly below or above the level). A
-   !> plate is impermeable: the water or the soil's pore pressure on its other face is not
-   !> this load. `loaded`: false (fe = 0) when p = 0 at every node or side = 0.
+   !> entry of plate_water_sides): p = gamma_w (h - y)+ normal to the chord. Where p is one
+   !> polynomial along the element (wholly below or above the level, the level at a node)
+   !> it is interpolated from the nodal pressures like the geometry, which is exact; where
+   !> the level crosses the element (or a polyline level has a kink on it) the element is cut
+   !> there (pecplas_water_wet_parts) and each wet part integrated exactly
+   !> (beam_part_load). A plate is impermeable: the water or the soil's pore pressure on its
+   !> other face is not this load. `loaded`: false (fe = 0) when p = 0 along the element or
+   !> side = 0.
    subroutine plate_water_load(model, s, e, k, side, fe, loaded)
       type(model_t), intent(in) :: model
       integer, intent(in) :: s, e, k, side
       real(wp), intent(out) :: fe(:)
       logical, intent(out) :: loaded
-      real(wp) :: t(2), q(2), p(3), x(2, 3)
+      real(wp) :: t(2), q(2), p(3), x(2, 3), part(MAX_BEAM_DOFS)
+      real(wp), allocatable :: from(:), to(:), pp(:, :)
+      logical :: split
       integer :: j, nen
       fe = 0.0_wp
       loaded = .false.
       if (k <= 0 .or. side == 0) return
-      associate (pl => model%plates(s))
+      associate (pl => model%plates(s), level => model%water%levels(k))
          nen = size(pl%conn, 1)
          x(:, 1:nen) = plate_element_x(model, pl, e)
-         do j = 1, nen
-            p(j) = model%water%levels(k)%pressure(x(:, j))
-         end do
-         if (all(p(1:nen) == 0.0_wp)) return
-         loaded = .true.
          ! the chord's direction; water on the left (+1) presses towards the right
          t = x(:, 2) - x(:, 1)
          t = t/norm2(t)
          q = real(side, wp)*[t(2), -t(1)]
+         call wet_parts(level, x(:, 1:nen), from, to, pp, split)
+         if (split) then
+            loaded = size(from) > 0
+            do j = 1, size(from)
+               call beam_part_load(x(:, 1:nen), pl%section, &
+                  model%analysis%kind == AXISYMMETRIC, &
+                  model%analysis%thickness, q, from(j), to(j), pp(:, j), part(1:size(fe)))
+               fe = fe + part(1:size(fe))
+            end do
+            return
+         end if
+         do j = 1, nen
+            p(j) = level%pressure(x(:, j))
+         end do
+         if (all(p(1:nen) == 0.0_wp)) return
+         loaded = .true.
          call beam_line_load(x(:, 1:nen), pl%section, model%analysis%kind == AXISYMMETRIC, &
             model%analysis%thickness, q, fe, p(1:nen))
       end associate

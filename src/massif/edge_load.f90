@@ -15,6 +15,7 @@ module pecplas_massif_edge_load
    private
 
    public :: edge_pressure_forces, edge_traction_forces, edge_linear_pressure_forces
+   public :: edge_part_pressure_forces
 
    !> fe(2*nen) of a pressure: uniform p, or nodal values p(nen).
    interface edge_pressure_forces
@@ -90,6 +91,21 @@ contains
       end do
    end subroutine edge_linear_pressure_forces
 
+   !> fe(2*nen) of a pressure p on the part a <= s <= b of the edge (s in [-1, 1]), p the
+   !> polynomial of degree nen - 1 in s with the values p3 at a, (a + b)/2 and b: a piece of
+   !> a pressure that is polynomial on each part of the edge only, such as the water's under
+   !> a polyline level (pecplas_water_wet_parts). The Gauss rule is that of nodal values.
+   subroutine edge_part_pressure_forces(analysis_kind, thickness, xedge, a, b, p3, fe, error)
+      integer, intent(in) :: analysis_kind
+      real(wp), intent(in) :: thickness, xedge(:, :), a, b, p3(3)
+      real(wp), intent(out) :: fe(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: nen
+      nen = size(xedge, 2)
+      call edge_forces(analysis_kind, thickness, xedge, spread(0.0_wp, 1, nen), &
+         spread([0.0_wp, 0.0_wp], 2, nen), nen - 1, a, b, fe, error, p3)
+   end subroutine edge_part_pressure_forces
+
    !> q(s) = sum N_k(s) q_k on the edge (2 or 3 nodal values).
    pure real(wp) function along(q, s) result(v)
       real(wp), intent(in) :: q(:), s
@@ -156,14 +172,17 @@ contains
    end subroutine traction_nodal
 
    !> Integrates N (t |dx/ds| - p n_out |dx/ds|) weight ds with nodal p(nen), t(2, nen)
-   !> of polynomial degree load_degree along the part a <= s <= b of the edge.
-   subroutine edge_forces(analysis_kind, thickness, xedge, p, t, load_degree, a, b, fe, error)
+   !> of polynomial degree load_degree along the part a <= s <= b of the edge; with `p3`,
+   !> p is instead the polynomial of degree <= 2 with the values p3 at a, (a + b)/2, b.
+   subroutine edge_forces(analysis_kind, thickness, xedge, p, t, load_degree, a, b, fe, error, &
+      p3)
       integer, intent(in) :: analysis_kind, load_degree
       real(wp), intent(in) :: thickness, xedge(:, :), p(:), t(:, :), a, b
       real(wp), intent(out) :: fe(:)
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: s(:), w(:)
-      real(wp) :: n(3), dn(3), x(2), tang(2), f(2), weight, len_t
+      real(wp), intent(in), optional :: p3(3)
+      real(wp), allocatable :: s(:), w(:), tl(:)
+      real(wp) :: n(3), dn(3), x(2), tang(2), f(2), weight, len_t, pg
       integer :: nen, g, degree, ig, k
       character(len=60) :: buf
       nen = size(xedge, 2)
@@ -180,6 +199,7 @@ contains
       degree = g + (g - 1) + load_degree
       if (analysis_kind == AXISYMMETRIC) degree = degree + g
       call gauss_line(degree/2 + 1, s, w)
+      tl = 0.5_wp*(s + 1.0_wp)
       ! the rule on [-1, 1] mapped onto [a, b]
       s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*s
       w = 0.5_wp*(b - a)*w
@@ -205,7 +225,10 @@ contains
             weight = w(ig)*thickness
          end if
          ! -p n_out |t| = p (-t_y, t_x)
-         f = (dot_product(p, n(1:nen))*[-tang(2), tang(1)] + matmul(t, n(1:nen))*len_t)*weight
+         pg = dot_product(p, n(1:nen))
+         if (present(p3)) pg = p3(1)*(1.0_wp - tl(ig))*(1.0_wp - 2.0_wp*tl(ig)) + &
+            4.0_wp*p3(2)*tl(ig)*(1.0_wp - tl(ig)) + p3(3)*tl(ig)*(2.0_wp*tl(ig) - 1.0_wp)
+         f = (pg*[-tang(2), tang(1)] + matmul(t, n(1:nen))*len_t)*weight
          do k = 1, nen
             fe(2*k - 1:2*k) = fe(2*k - 1:2*k) + n(k)*f
          end do

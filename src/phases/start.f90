@@ -34,8 +34,8 @@ module pecplas_phases_start
    use pecplas_phases_anchors, only: start_anchors
    use pecplas_problem_phase, only: PROCEDURE_NONE, PROCEDURE_K0, PROCEDURE_GRAVITY, &
       PROCEDURE_NAMES, HOLD_NONE, HOLD_WEIGHT
-   use pecplas_fe_state, only: set_state_t
-   use pecplas_fe_assembly, only: internal_forces, set_material
+   use pecplas_fe_state, only: set_state_t, set_material
+   use pecplas_fe_assembly, only: internal_forces
    use pecplas_fe_loads, only: pattern_vectors, add_body_force
    use pecplas_fe_initial, only: initial_set_stress, initial_joint_set_stress, mesh_index_t
    use pecplas_fe_joint_initial, only: set_joint_stress

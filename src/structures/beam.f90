@@ -22,6 +22,7 @@ module pecplas_structures_beam
    private
 
    public :: NGEN, MAX_BEAM_DOFS, beam_point_t, beam_npoint, beam_points, beam_line_load
+   public :: beam_part_load
    public :: beam_frame, shear_stiffness
 
    !> Generalized strains per point: eps_s, gamma, kappa_s, eps_theta, kappa_theta.
@@ -261,5 +262,75 @@ contains
          end do
       end if
    end subroutine beam_line_load
+
+   !> Consistent nodal vector (3 nen, as beam_line_load) of the load q p(a) on the part
+   !> a0 <= a <= a1 of the element, a in [0, 1] its parameter (0 at node 1, 1 at node 2, the
+   !> mid node of a 3-node element at 1/2) and p the polynomial of degree <= 2 in a with the
+   !> values p3 at a0, (a0 + a1)/2 and a1: a piece of a load that is polynomial on each
+   !> part of the element only, such as a water pressure cut at its level
+   !> (pecplas_water_wet_parts). Gauss rules on the part exact for the integrand: 3 points
+   !> on the 2-node element (its w cubic, p linear, r linear: degree 5), 4 on the 3-node
+   !> one (N and p quadratic, r quadratic, |dx/dxi| linear on a straight element: degree 7;
+   !> a curved element's |dx/dxi| is no polynomial, as in beam_line_load).
+   pure subroutine beam_part_load(x, section, axisym, thickness, q, a0, a1, p3, fe)
+      real(wp), intent(in) :: x(:, :), q(2), a0, a1, p3(3)
+      type(plate_section_t), intent(in) :: section
+      logical, intent(in) :: axisym
+      real(wp), intent(in) :: thickness
+      real(wp), intent(out) :: fe(:)
+      real(wp), parameter :: X3(3) = [-sqrt(0.6_wp), 0.0_wp, sqrt(0.6_wp)], &
+         W3(3) = [5.0_wp, 8.0_wp, 5.0_wp]/9.0_wp
+      real(wp), parameter :: X4A = sqrt(3.0_wp/7.0_wp - 2.0_wp/7.0_wp*sqrt(1.2_wp)), &
+         X4B = sqrt(3.0_wp/7.0_wp + 2.0_wp/7.0_wp*sqrt(1.2_wp)), &
+         X4(4) = [-X4B, -X4A, X4A, X4B], &
+         W4(4) = [18.0_wp - sqrt(30.0_wp), 18.0_wp + sqrt(30.0_wp), &
+         18.0_wp + sqrt(30.0_wp), 18.0_wp - sqrt(30.0_wp)]/36.0_wp
+      real(wp) :: h, t(2), n(2), om, s, dw(4), dth(4), dk(4), dg(4), g(4, 6), wrow(6), nf(3)
+      real(wp) :: dn(3), dxd(2), jac, r, f, xi, a, tl, pl
+      integer :: i, k
+      fe = 0.0_wp
+      if (size(x, 2) == 2) then
+         call beam_frame(x, h, t)
+         n = [-t(2), t(1)]
+         om = section%ei/(1.0_wp - section%nu**2)/shear_stiffness(section)
+         g = local_to_global(n)
+         do i = 1, 3
+            tl = 0.5_wp*(X3(i) + 1.0_wp)
+            a = a0 + tl*(a1 - a0)
+            pl = part_value(p3, tl)
+            s = a*h
+            call linked_shape(h, om, s, dw, dth, dk, dg)
+            wrow = matmul(dw, g)
+            r = x(1, 1) + a*(x(1, 2) - x(1, 1))
+            f = 0.5_wp*W3(i)*(a1 - a0)*h*merge(2.0_wp*PI*r, thickness, axisym)*pl
+            fe(1:2) = fe(1:2) + f*dot_product(q, t)*(1.0_wp - a)*t
+            fe(4:5) = fe(4:5) + f*dot_product(q, t)*a*t
+            fe(1:6) = fe(1:6) + f*dot_product(q, n)*wrow
+         end do
+      else
+         do i = 1, 4
+            tl = 0.5_wp*(X4(i) + 1.0_wp)
+            a = a0 + tl*(a1 - a0)
+            pl = part_value(p3, tl)
+            xi = 2.0_wp*a - 1.0_wp
+            call quadratic(xi, nf, dn)
+            dxd = matmul(x(:, 1:3), dn)
+            jac = norm2(dxd)
+            r = dot_product(nf, x(1, 1:3))
+            ! d xi = 2 da, and the rule on [a0, a1] weighs (a1 - a0) / 2
+            f = W4(i)*(a1 - a0)*jac*merge(2.0_wp*PI*r, thickness, axisym)*pl
+            do k = 1, 3
+               fe(3*k - 2:3*k - 1) = fe(3*k - 2:3*k - 1) + f*nf(k)*q
+            end do
+         end do
+      end if
+   end subroutine beam_part_load
+
+   !> The polynomial of degree <= 2 with the values p3 at t = 0, 1/2, 1, at t.
+   pure real(wp) function part_value(p3, t) result(v)
+      real(wp), intent(in) :: p3(3), t
+      v = p3(1)*(1.0_wp - t)*(1.0_wp - 2.0_wp*t) + 4.0_wp*p3(2)*t*(1.0_wp - t) + &
+         p3(3)*t*(2.0_wp*t - 1.0_wp)
+   end function part_value
 
 end module pecplas_structures_beam

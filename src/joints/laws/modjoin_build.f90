@@ -19,6 +19,7 @@
 module pecplas_joints_laws_modjoin_build
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
+   use pecplas_base_strings, only: decimal_text
    use pecplas_base_params, only: params_t
    use pecplas_joints_laws_type, only: interface_law_t
    use pecplas_joints_laws_checks, only: get_param, param_error, tan_deg
@@ -169,19 +170,8 @@ contains
       end if
       e = floor(log10(abs(x)))
       if (e >= -4 .and. e <= 6) then
-         d = max(0, 5 - e)
-         write (buf, '(f0.'//achar(48 + d/10)//achar(48 + mod(d, 10))//')') x
-         s = trim(adjustl(buf))
-         if (index(s, '.') > 0) then
-            i = len(s)
-            do while (s(i:i) == '0')
-               i = i - 1
-            end do
-            if (s(i:i) == '.') i = i - 1
-            s = s(1:i)
-         end if
-         if (s(1:1) == '.') s = '0'//s
-         if (s(1:2) == '-.') s = '-0'//s(2:)
+         ! 5 - e decimals: six significant digits (never a value rounded to zero)
+         s = decimal_text(x, max(0, 5 - e))
       else
          write (buf, '(es12.5e2)') x
          s = trim(adjustl(buf))
