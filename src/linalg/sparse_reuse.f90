@@ -30,8 +30,8 @@ module pecplas_linalg_sparse_reuse
       !> triplets' positions it was built from, and the matrix order (-1: none).
       integer(ik4), allocatable :: eptr(:), elist(:), xrows(:), xcols(:)
       integer :: npat = -1
-      !> Entries added by the last `pattern` assembly: the element-block entries kept (as
-      !> many as add_block triplets) plus the triplets of `coo`.
+      !> Entries added by an assembly on the kept pattern (counted when it is built): the
+      !> element-block entries kept (as many as add_block triplets) plus the triplets of `coo`.
       integer :: entries = 0
       !> Positions in csc%values of the element-block entries on the kept pattern, block
       !> after block, each block's kept entries column by column: recorded by the first
@@ -162,12 +162,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: nx, b
       nx = this%coo%nnz
-      this%entries = nx
-      do b = 1, size(eptr) - 1
-         this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
-      end do
       this%bnext = 1
       this%bcur = 0
+      ! a kept pattern: the same lists and triplets as the last call, so as many entries
       if (same_key(this, eptr, elist, csc)) then
          call zero_values(csc%values)
          this%fast = this%fast + 1
@@ -181,6 +178,10 @@ contains
          end if
          return
       end if
+      this%entries = nx
+      do b = 1, size(eptr) - 1
+         this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
+      end do
       this%bstate = 0
       this%npat = -1
       call pattern_from_blocks(this%coo%n, this%coo%upper_only, eptr, elist, this%coo, csc, &
