@@ -26,7 +26,8 @@ module pecplas_solve_arc_path
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_arc_length, only: adapt_length
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_request_t, arc_end_t, END_TARGET, &
-      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED
+      END_PASSED, END_NODE, END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED, &
+      PATH_STEP
    use pecplas_solve_residual, only: load_vectors, free_part
    use pecplas_io_results_file, only: results_file_t
    use pecplas_solve_output, only: stop_pending
@@ -34,7 +35,7 @@ module pecplas_solve_arc_path
    implicit none (type, external)
    private
 
-   public :: trace_arc
+   public :: trace_arc, BEYOND_PEAK
 
    !> The path has become flat when |current stiffness parameter| stays below this for
    !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
@@ -52,6 +53,10 @@ module pecplas_solve_arc_path
    real(wp), parameter :: FALL_MIN = 1.0e-3_wp
    !> Load-controlled step that tests a singular tangent for a mechanism (step fraction).
    real(wp), parameter :: PROBE_STEP = 1.0e-3_wp
+   !> An arc-length step with a target displacement v of a node ends within this share of
+   !> |v| of it (land_on_node), found in at most MAX_LANDINGS solves of the last increment.
+   real(wp), parameter :: NODE_LANDING = 1.0e-6_wp
+   integer, parameter :: MAX_LANDINGS = 12
 
 contains
 
@@ -168,6 +173,15 @@ contains
                         g6(att%tau1)//'): '//out%reason
                   end if
                end if
+               ! past the step's target displacement of a node: shortened so that it ends
+               ! there, as the target load is landed on (the end state of the step is the
+               ! state at that displacement, whatever the increments)
+               if (att%arc .and. out%converged .and. step%node > 0 .and. &
+                   req%origin == PATH_STEP) then
+                  call land_on_node(model, problem, run, step, att, u, fint, reaction, out, &
+                     method, error)
+                  if (allocated(error)) return
+               end if
                if (att%arc .and. out%converged) then
                   noise = load_noise(problem, model%solver%tolerance, att, out%tau, reaction, fq)
                   if (turned_back(res, out%tau, sum(fq*u), noise)) then
@@ -259,6 +273,50 @@ contains
       end associate
    end subroutine trace_arc
 
+   !> An arc increment (att, converged: u, fint, reaction, out, method) that ends past the
+   !> step's target displacement v of its node (step%node, step%dof) is solved again with a
+   !> shorter length, by regula falsi on the node's distance to v between the converged
+   !> state (length 0, before v) and the lengths tried, until it ends within NODE_LANDING of
+   !> |v| of it or MAX_LANDINGS solves were made (the path then goes on, or ends past v, from
+   !> the last one). A solve that does not converge returns that outcome (the caller cuts).
+   subroutine land_on_node(model, problem, run, step, att, u, fint, reaction, out, method, &
+         error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(run_t), intent(in) :: run
+      type(step_t), intent(in) :: step
+      type(attempt_t), intent(inout) :: att
+      real(wp), allocatable, intent(inout) :: u(:, :), fint(:, :), reaction(:, :)
+      type(outcome_t), intent(inout) :: out
+      integer, intent(inout) :: method
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: dir, tol, a, ga, b, gb, g
+      integer :: k
+      dir = sign(1.0_wp, step%displacement)
+      tol = NODE_LANDING*abs(step%displacement)
+      gb = (u(step%dof, step%node) - step%displacement)*dir
+      ga = (problem%state%u(step%dof, step%node) - step%displacement)*dir
+      ! not past, or the path started at or beyond v (path_end ends it)
+      if (gb <= tol .or. ga >= 0.0_wp) return
+      a = 0.0_wp
+      b = att%dl
+      do k = 1, MAX_LANDINGS
+         call problem%state%rollback()
+         att%dl = a - ga*(b - a)/(gb - ga)
+         call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
+         if (allocated(error) .or. .not. out%converged) return
+         g = (u(step%dof, step%node) - step%displacement)*dir
+         if (abs(g) <= tol) return
+         if (g > 0.0_wp) then
+            b = att%dl
+            gb = g
+         else
+            a = att%dl
+            ga = g
+         end if
+      end do
+   end subroutine land_on_node
+
    !> How the path ends after a converged, written increment that did not land on the
    !> target (0: it goes on), from the path so far and the displacements `u`.
    integer function path_end(step, res, req, u) result(kind)
@@ -272,7 +330,7 @@ contains
          kind = END_PASSED
       else if (step%node > 0) then
          if ((u(step%dof, step%node) - step%displacement)*sign(1.0_wp, step%displacement) &
-             >= 0.0_wp) kind = END_NODE
+             >= -NODE_LANDING*abs(step%displacement)) kind = END_NODE
       end if
       if (kind /= 0) return
       if (res%beyond >= BEYOND_PEAK .and. res%tau <= 0.0_wp) then

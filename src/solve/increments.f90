@@ -29,7 +29,7 @@ module pecplas_solve_increments
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
-   use pecplas_solve_arc_path, only: trace_arc
+   use pecplas_solve_arc_path, only: trace_arc, BEYOND_PEAK
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &
       END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED, PATH_STEP, PATH_PROBE
    use pecplas_io_results_file, only: results_file_t
@@ -388,7 +388,7 @@ contains
             status = RUN_STOPPED
             message = 'step '//itoa(istep)//' ('//step%name//'): MAX_INCREMENTS='// &
                itoa(step%max_increments)//' arc-length increments used at step fraction '// &
-               g6(res%tau)//' before the target (no maximum of the load on the way)'
+               g6(res%tau)//' before the target ('//peak_note(res)//')'
          case default
             call diverged(model, problem, istep, res%tau, model%solver%max_cuts, res%reason, &
                status, message)
@@ -580,12 +580,29 @@ contains
       select case (res%kind)
       case (END_MAX)
          text = 'traced '//itoa(res%increments)//' increments to fraction '//g6(res%tau)// &
-            ' without passing the failed load or a maximum'
+            ' without passing the failed load ('//peak_note(res)//')'
       case (END_NODE)
          text = 'reached the step''s target displacement'
       case default
          text = 'failed after '//itoa(res%increments)//' increments: '//res%reason
       end select
    end function probe_failure
+
+   !> What a path that used its increments says of a maximum: none when it still rises;
+   !> otherwise its largest load and how many falls beyond the noise followed it (a maximum
+   !> is established by BEYOND_PEAK of them, pecplas_solve_arc_path), so that a path whose
+   !> load had fallen is not said to have met no maximum.
+   function peak_note(res) result(text)
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable :: text
+      if (.not. (res%tau < res%tau_peak)) then
+         text = 'no maximum of the load on the way'
+         return
+      end if
+      text = 'no maximum established: the largest load, at step fraction '// &
+         g6(res%tau_peak)//' (increment '//itoa(res%peak_increment)//'), was followed by '// &
+         itoa(res%beyond)//' fall(s) beyond the convergence noise and 0.1 % of it, of the '// &
+         itoa(BEYOND_PEAK)//' that establish a maximum'
+   end function peak_note
 
 end module pecplas_solve_increments

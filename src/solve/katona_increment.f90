@@ -160,6 +160,11 @@ contains
             ! against the internal forces and the forces of the run so far (ROUNDOFF_FLOOR)
             if (iters > 0 .and. (rnorm <= model%solver%tolerance*ref .or. rnorm == 0.0_wp .or. &
                 rnorm <= ROUNDOFF_FLOOR*max(norm2(pack(fint, dofs%eq > 0)), kt%force_scale))) then
+               ! converged by the roundoff floor: the residual recorded is relative to the
+               ! forces it was measured against (rnorm over a roundoff ref would read as a
+               ! residual far above the tolerance in the history)
+               if (rnorm > model%solver%tolerance*ref) residual = rnorm/max(ref, &
+                  norm2(pack(fint, dofs%eq > 0)), kt%force_scale)
                kt%force_scale = max(kt%force_scale, ref, norm2(fc))
                converged = .true.
                exit

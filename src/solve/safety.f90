@@ -65,7 +65,7 @@ contains
          ulast(:, :, :)
       real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow
       integer :: inc, method, k, nnode
-      logical :: ok
+      logical :: ok, returned
 
       t0 = wall_time()
       if (problem%position%resume) then
@@ -112,6 +112,7 @@ contains
             call internal_forces_at(work, problem, problem%state%u, fred, error)
             call problem%state%rollback()
             ok = .not. allocated(error)
+            returned = ok
             if (allocated(error)) then
                if (error%kind /= ERR_RUN .and. error%kind /= ERR_SINGULAR) return
                deallocate (error)
@@ -132,7 +133,7 @@ contains
                end if
                dm = max(0.5_wp*dm, plan%resolution)
                if (.not. run%quiet) write (*, '(a)') '   no equilibrium at Msf = '// &
-                  g6(trial)//': Msf step cut to '//g6(dm)
+                  g6(trial)//' ('//failure_reason(returned, out)//'): Msf step cut to '//g6(dm)
                cycle
             end if
             inc = inc + 1
@@ -202,6 +203,20 @@ contains
          ' ('//model%steps(istep)%name//') was not started (no factor of safety)'
       call write_safety(results, problem%safety, error)
    end subroutine safety_not_started
+
+   !> Why a trial Msf found no equilibrium, for the console: the methods' reasons, or the
+   !> converged state that could not be returned onto the reduced strengths.
+   function failure_reason(returned, out) result(text)
+      logical, intent(in) :: returned
+      type(outcome_t), intent(in) :: out
+      character(len=:), allocatable :: text
+      text = 'the converged state could not be returned onto the reduced strengths'
+      if (.not. returned) return
+      text = 'no method converged'
+      if (allocated(out%reason)) then
+         if (len(out%reason) > 0) text = out%reason
+      end if
+   end function failure_reason
 
    !> /safety of the results file.
    subroutine write_safety(results, res, error)

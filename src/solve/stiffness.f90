@@ -35,6 +35,12 @@ contains
       if (name /= 'AUTO') return
       tangent = model%solver%method == METHOD_NEWTON
       if (present(tangent_of_fallback)) tangent = tangent .or. tangent_of_fallback
+      ! Katona contact has no separate fallback solver: its full-Newton iterations factorise
+      ! the consistent tangent into the run's own solver (the bordered solves and the
+      ! flexibility use that one), so a run whose chain reaches Newton needs LU there when
+      ! the tangent is not symmetric (CHOLMOD would read its upper triangle alone: a
+      ! symmetrised tangent, linear convergence, false failures)
+      if (model%solver%fallback .and. has_katona(model)) tangent = .true.
       ! The elastic stiffness of modified Newton is symmetric positive definite: CHOLMOD.
       ! Full Newton with a non-symmetric consistent tangent (non-associated plasticity,
       ! frictional interfaces) needs LU: UMFPACK.
@@ -51,6 +57,17 @@ contains
       end if
       name = merge('CHOLMOD', 'UMFPACK', symmetric)
    end function linear_solver_name
+
+   !> True when a joint set of the model is held by Katona contact.
+   logical function has_katona(model)
+      type(model_t), intent(in) :: model
+      integer :: s
+      has_katona = .false.
+      if (.not. allocated(model%joint_sets)) return
+      do s = 1, size(model%joint_sets)
+         if (model%joint_sets(s)%is_katona()) has_katona = .true.
+      end do
+   end function has_katona
 
    !> True when every matrix of the run goes to CHOLMOD (its own stiffness and, for a
    !> method other than full Newton, the tangent of its fallback): the stiffness is then
