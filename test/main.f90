@@ -32,6 +32,7 @@ program tester
    use test_io_results_phases, only: collect_io_results_phases
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
+   use test_linalg_sparse_columns, only: collect_linalg_sparse_columns
    use test_linalg_solvers, only: collect_linalg_solvers
    use test_io_deck_fields, only: collect_io_deck_fields
    use test_io_deck, only: collect_io_deck
@@ -114,6 +115,7 @@ program tester
    suites = [suites, new_testsuite('io_results_final', collect_io_results_final)]
    suites = [suites, new_testsuite('linalg_sparse', collect_linalg_sparse)]
    suites = [suites, new_testsuite('linalg_sparse_reuse', collect_linalg_sparse_reuse)]
+   suites = [suites, new_testsuite('linalg_sparse_columns', collect_linalg_sparse_columns)]
    suites = [suites, new_testsuite('linalg_solvers', collect_linalg_solvers)]
    suites = [suites, new_testsuite('io_deck_fields', collect_io_deck_fields)]
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]
