@@ -160,7 +160,7 @@ contains
    end subroutine test_weightless
 
    !> A FORCE on a node set loads each node with the value: the banner's note says what that
-   !> makes in all (block.inc's top row, nodes 7, 8, 9: 3 x -5 = -15 kN); a force on one node
+   !> makes in all (block.inc's top row, nodes 7, 8, 9: 3 x -5 = -15 kN/m); a force on one node
    !> gets no note. Sums of three exact binary fractions: compared as text.
    subroutine test_force_notes(error)
       type(error_t), allocatable, intent(out) :: error
@@ -170,7 +170,7 @@ contains
       if (allocated(error)) return
       text = force_notes(model)
       call check(error, index(text, "load pattern 'spread' (FORCE) acts on 3 nodes along y, "// &
-         'each with its value: -15 kN in all at factor 1') > 0, 'note: '//text)
+         'each with its value: -15 kN/m in all at factor 1') > 0, 'note: '//text)
       if (allocated(error)) return
       call check(error, index(text, "'point'") == 0, 'a force on one node: no note: '//text)
    end subroutine test_force_notes

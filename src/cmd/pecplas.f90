@@ -18,6 +18,7 @@ module pecplas_cmd_pecplas
    use pecplas_solve_prepare, only: prepare_run
    use pecplas_solve_stiffness, only: linear_solver_name
    use pecplas_solve_increments, only: run_increments
+   use pecplas_solve_progress, only: force_unit
    use pecplas_solve_gauss, only: gauss_coordinates
    use pecplas_solve_sanity, only: large_displacement_warning
    use pecplas_io_results_increment, only: joint_points_t
@@ -347,8 +348,7 @@ contains
       character(len=:), allocatable :: force
       text = ''
       if (.not. allocated(model%patterns)) return
-      force = ''
-      if (model%unit_system%stated) force = ' '//model%unit_system%of('force')
+      force = force_unit(model)
       do p = 1, size(model%patterns)
          associate (pat => model%patterns(p))
             if (pat%kind /= LOAD_FORCE .or. .not. allocated(pat%dof)) cycle

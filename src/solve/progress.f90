@@ -15,7 +15,7 @@ module pecplas_solve_progress
    implicit none (type, external)
    private
 
-   public :: begin_progress, progress_text, step_measure, pattern_value, step_end_text
+   public :: begin_progress, progress_text, step_measure, pattern_value, step_end_text, force_unit
 
 contains
 
@@ -59,7 +59,7 @@ contains
    !> `factors`, displacements `u`; `arc`: the increment was arc-length controlled) at clock
    !> `now`, e.g.
    !>   step 2 'push' (arc-length), increment 63 of at most 200: push = 0.734 (of 1;
-   !>   resultant F_y = -73.4 kN), node 1849 u_y = -0.0123 m (stops at -0.05 m, 25 %);
+   !>   resultant F_y = -73.4 kN/m), node 1849 u_y = -0.0123 m (stops at -0.05 m, 25 %);
    !>   9.4 min elapsed; about 28 min left in this step (from the distance to the stop
    !>   displacement)
    function progress_text(model, istep, inc, tau, factors, u, arc, eta, now) result(s)
@@ -153,7 +153,7 @@ contains
                if (.not. any(pat%dof == d)) cycle
                s = s//trim(merge('; resultant ', ',           ', len(s) == 0))//' F_'// &
                   axis(model, d)//' = '//num(factor*sum(pat%value, mask=pat%dof == d))// &
-                  unit(model, 'force')
+                  force_unit(model)
             end do
          case (LOAD_DISPLACEMENT)
             if (.not. allocated(pat%value)) return
@@ -190,7 +190,7 @@ contains
    !> imposed displacement with the sum of the reactions that impose it: the footing's load
    !> under a settlement, the shear force of a shear box), then the largest displacement and
    !> its node: "step 1 'push': settle = 1 (imposed u_y = -0.2 m at 17 nodes, reaction
-   !> F_y = 251.3 kN); largest displacement 0.2 m at node 12 (x = 0, y = 0)".
+   !> F_y = 251.3 kN/m); largest displacement 0.2 m at node 12 (x = 0, y = 0)".
    !> `reaction`: F_int - F_ext (2, ncolumns), counted from the initial state.
    function step_end_text(model, istep, factors, u, reaction) result(s)
       type(model_t), intent(in) :: model
@@ -216,7 +216,7 @@ contains
                         if (pat%dof(k) == d .and. pat%node(k) <= size(reaction, 2)) &
                            r = r + reaction(d, pat%node(k))
                      end do
-                     s = s//', reaction F_'//axis(model, d)//' = '//num(r)//unit(model, 'force')
+                     s = s//', reaction F_'//axis(model, d)//' = '//num(r)//force_unit(model)
                   end do
                end if
                if (len(value) > 2) s = s//')'
@@ -275,6 +275,18 @@ contains
       if (.not. model%unit_system%stated) return
       s = ' '//model%unit_system%of(quantity)
    end function unit
+
+   !> The unit of a nodal force or reaction as a plane-strain engineer reads it: per unit
+   !> length out of plane (' kN/m') for the default thickness 1, the force on the slab
+   !> (' kN') for another THICKNESS, the whole ring (' kN') in axisymmetry; '' without *UNITS.
+   function force_unit(model) result(s)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: s
+      s = unit(model, 'force')
+      if (len(s) == 0) return
+      if (model%analysis%kind /= AXISYMMETRIC .and. model%analysis%thickness == 1.0_wp) &
+         s = s//'/'//model%unit_system%of('length')
+   end function force_unit
 
    function length_unit(model) result(s)
       type(model_t), intent(in) :: model
