@@ -29,7 +29,7 @@ contains
    end subroutine collect_solve_progress
 
    !> Force step 'first' at fraction 0.25 after 30 s (clock 100 -> 130): factor 0.25 of 1,
-   !> resultant 0.25 x 2 x (-10) = -5 kN; the rest of the step at the same rate is
+   !> resultant 0.25 x 2 x (-10) = -5 kN/m; the rest of the step at the same rate is
    !> 30 x 0.75/0.25 = 90 s; one more step follows.
    subroutine test_load(error)
       type(error_t), allocatable, intent(out) :: error
@@ -41,7 +41,7 @@ contains
       if (allocated(error)) return
       line = progress_text(model, 1, 1, 0.25_wp, [0.25_wp], u, .false., eta, 130.0_wp)
       call expect(error, line, [character(len=60) :: "step 1 'first', increment 1 (4 planned)", &
-         'fraction 0.25 of the step', 'push = 0.25 (of 1; resultant F_y = -5 kN)', &
+         'fraction 0.25 of the step', 'push = 0.25 (of 1; resultant F_y = -5 kN/m)', &
          '30 s elapsed', 'about 90 s left in this step', 'then 1 more step'])
       if (allocated(error)) return
       call check(error, index(line, '%') == 0, 'no percentage of planned increments: '//line)
@@ -50,7 +50,7 @@ contains
       call begin_progress(model, 2, 0.0_wp, u, 200.0_wp, eta)
       line = progress_text(model, 2, 2, 0.5_wp, [1.5_wp], u, .false., eta, 220.0_wp)
       call expect(error, line, [character(len=60) :: "step 2 'second'", &
-         'push = 1.5 (of 2; resultant F_y = -30 kN)', '2.0 min elapsed', &
+         'push = 1.5 (of 2; resultant F_y = -30 kN/m)', '2.0 min elapsed', &
          'about 20 s left in this step'])
       if (allocated(error)) return
       call check(error, index(line, 'more step') == 0, 'no step after the last: '//line)
@@ -133,7 +133,7 @@ contains
    end subroutine test_step_left
 
    !> The line at the end of a step: the imposed settlement of the top (nodes 3, 4: -0.01 m)
-   !> with the sum of the reactions there (-3 - 4 = -7 kN: what a footing's settlement took,
+   !> with the sum of the reactions there (-3 - 4 = -7 kN/m: what a footing's settlement took,
    !> the force a user reads the bearing capacity from), the base's reactions left out, and the
    !> largest displacement (node 3: |(0.003, -0.01)| = 0.01044 m, against 0.01 at node 4).
    subroutine test_step_end(error)
@@ -149,7 +149,7 @@ contains
       reaction(2, :) = [5.0_wp, 2.0_wp, -3.0_wp, -4.0_wp]
       line = step_end_text(model, 1, [1.0_wp], u, reaction)
       call expect(error, line, [character(len=60) :: "step 1 'sink': settle = 1 (", &
-         'imposed u_y = -0.01 m at 2 nodes, reaction F_y = -7 kN)', &
+         'imposed u_y = -0.01 m at 2 nodes, reaction F_y = -7 kN/m)', &
          'largest displacement 0.01044 m at node 3 (x = 1, y = 1)'])
    end subroutine test_step_end
 
