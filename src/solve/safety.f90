@@ -74,6 +74,7 @@ contains
       real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow, floor, confirm_until
       integer :: inc, method, k, nnode
       logical :: ok, returned
+      character(len=:), allocatable :: why
 
       t0 = wall_time()
       if (problem%position%resume) then
@@ -136,13 +137,12 @@ contains
             deallocate (fred)
             if (.not. ok) then
                if (dm <= floor*(1.0_wp + 1.0e-12_wp)) then
-                  if (floor < plan%resolution*(1.0_wp - 1.0e-12_wp)) then
+                  if (floor < plan%resolution*(1.0_wp - 1.0e-9_wp)) then
                      ! the sub-steps of a failed trial of RESOLUTION fail too: the factor
                      res%kind = SAFETY_FACTOR
                      res%factor = msf
                      res%resolution = dm
-                     if (.not. run%quiet) write (*, '(a)') '   no equilibrium at Msf = '// &
-                        g6(trial)//' ('//failure_reason(returned, out)//')'
+                     why = failure_reason(returned, out)
                      exit
                   end if
                   ! a trial of RESOLUTION failed: before the claim, the same Msf is sought
@@ -194,8 +194,9 @@ contains
          case (SAFETY_FACTOR)
             status = RUN_COMPLETED
             message = 'safety factor Msf = '//g6(res%factor)//' (resolution '// &
-               g6(res%resolution)//': no equilibrium at Msf = '// &
-               g6(res%factor + res%resolution)//') after '//itoa(inc)// &
+               g6(res%resolution)//': no equilibrium found at Msf = '// &
+               g6(res%factor + res%resolution)//' by any method of the chain: '//why// &
+               ') after '//itoa(inc)// &
                ' strength-reduction increments in step '//itoa(istep)//' ('// &
                model%steps(istep)%name//'); its displacements are not physical'
          case default
