@@ -1,5 +1,5 @@
 !> Runs of test decks shared by the suites: a deck that must complete, the default penalty
-!> its spring joints get, whether a run left a file.
+!> its spring joints get, whether a run left a file; reading and writing a deck's text.
 module fixtures_runs
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -11,7 +11,7 @@ module fixtures_runs
    use pecplas_testing, only: check, check_close
    implicit none (type, external)
    private
-   public :: run_completes, check_default_penalty, file_exists
+   public :: run_completes, check_default_penalty, file_exists, read_text, write_text
 
 contains
 
@@ -55,5 +55,27 @@ contains
       character(len=*), intent(in) :: path
       inquire (file=path, exist=file_exists)
    end function file_exists
+
+   !> The whole text of file `path`.
+   subroutine read_text(path, text)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: text
+      integer :: u, n
+      open (newunit=u, file=path, access='stream', form='unformatted', status='old', &
+         action='read')
+      inquire (unit=u, size=n)
+      allocate (character(len=n) :: text)
+      read (u) text
+      close (u)
+   end subroutine read_text
+
+   !> Writes `text` and a line end to `path` (replaced).
+   subroutine write_text(path, text)
+      character(len=*), intent(in) :: path, text
+      integer :: u
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') text
+      close (u)
+   end subroutine write_text
 
 end module fixtures_runs

@@ -100,7 +100,11 @@ contains
          bad('unknown_material_type', 9, '*MATERIAL', "unknown material type 'MOHR'", &
          'known types: ELASTIC'), &
          bad('unknown_material_key', 10, '*MATERIAL', 'unknown parameter NUU', &
-         'known parameters: E NU GAMMA'), &
+         'known parameters: E NU GAMMA;', &
+         'water parameters: GAMMA_UNSAT GAMMA_SAT KW_N CU CU_INC CU_YREF'), &
+         bad('unknown_water_key', 10, '*MATERIAL', 'unknown parameter KWN', &
+         'known parameters: E NU C PHI PSI GAMMA TENSION;', &
+         'water parameters: GAMMA_UNSAT GAMMA_SAT KW_N CU CU_INC CU_YREF'), &
          bad('duplicate_material', 11, '*MATERIAL', "material 'SAND' is defined twice", &
          'bad_duplicate_material.inp:9'), &
          bad('no_section', 7, '*ELEMENTS', "element set 'soil' has no material", &

@@ -10,6 +10,8 @@ module test_massif_plasticity_fe
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_stiffness, only: linear_solver_name
    use pecplas_io_results_reader, only: results_reader_t
+   use pecplas_io_deck_reader, only: read_deck
+   use fixtures_runs, only: read_text, write_text
    use pecplas_massif_materials_soil, only: RETURN_SMOOTH, RETURN_EDGE
    use doc_report, only: report
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
@@ -30,7 +32,8 @@ contains
       tests = [new_unittest('biaxial_mohr_coulomb', test_biaxial_mc), &
                new_unittest('biaxial_drucker_prager', test_biaxial_dp), &
                new_unittest('triaxial_axisymmetric_edge', test_triaxial), &
-               new_unittest('strip_footing_prandtl', test_footing)]
+               new_unittest('strip_footing_prandtl', test_footing), &
+               new_unittest('spare_material_no_solver_choice', test_spare_material)]
    end subroutine collect_massif_plasticity_fe
 
    !> Runs `deck` (exit code 0 expected) and returns the sum of the reactions in direction 2
@@ -91,6 +94,38 @@ contains
       if (allocated(error)) return
       call check(error, linear_solver_name(model) == 'UMFPACK', 'non-symmetric tangent: UMFPACK')
    end subroutine test_biaxial_mc
+
+   !> A material no element set has nor gets does not choose the linear solver: the
+   !> biaxial deck's Mohr-Coulomb sand (non-symmetric tangent, psi /= phi) kept beside an
+   !> elastic material that the sample has leaves full Newton on CHOLMOD; the sand given to
+   !> the sample in a later step (*CHANGE_MATERIAL) makes it UMFPACK.
+   subroutine test_spare_material(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      character(len=:), allocatable :: base, deck
+      character(len=*), parameter :: SECTION = '*SECTION, SET=sample, MATERIAL=sand'
+      character(len=*), parameter :: STEP = '*STEP, NAME=compress'
+      integer :: i
+      call read_text(DATA//'biaxial_mc.inp', base)
+      i = index(base, SECTION)
+      base = base(:i - 1)//'*MATERIAL, NAME=stiff, TYPE=ELASTIC'//new_line('a')// &
+         'E = 1e4, NU = 0.3'//new_line('a')//'*SECTION, SET=sample, MATERIAL=stiff'// &
+         base(i + len(SECTION):)
+      call make_directories(DIR)
+      deck = DIR//'/spare.inp'
+      call write_text(deck, base)
+      call read_deck(deck, model, error)
+      if (allocated(error)) return
+      call check(error, linear_solver_name(model) == 'CHOLMOD', 'spare sand: CHOLMOD')
+      if (allocated(error)) return
+      i = index(base, STEP)
+      call write_text(deck, base(:i - 1)//'*STEP, NAME=soften, INCREMENTS=1'//new_line('a')// &
+         '*CHANGE_MATERIAL'//new_line('a')//'sample, sand'//new_line('a')//'*END STEP'// &
+         new_line('a')//base(i:))
+      call read_deck(deck, model, error)
+      if (allocated(error)) return
+      call check(error, linear_solver_name(model) == 'UMFPACK', 'sand from a phase on: UMFPACK')
+   end subroutine test_spare_material
 
    !> Drucker–Prager with the plane strain match reaches the same strength (1e-8).
    subroutine test_biaxial_dp(error)

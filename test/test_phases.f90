@@ -15,6 +15,7 @@ module test_phases
    use pecplas_base_strings, only: itoa
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
+   use fixtures_runs, only: read_text, write_text
    implicit none (type, external)
    private
    public :: collect_phases
@@ -554,25 +555,6 @@ contains
          'law changed at installation = law from the start', atol=1.0e-12_wp*umax)
    end subroutine test_change_law
 
-   subroutine read_text(path, text)
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable, intent(out) :: text
-      integer :: u, n
-      open (newunit=u, file=path, access='stream', form='unformatted', status='old', &
-         action='read')
-      inquire (unit=u, size=n)
-      allocate (character(len=n) :: text)
-      read (u) text
-      close (u)
-   end subroutine read_text
-
-   subroutine write_text(path, text)
-      character(len=*), intent(in) :: path, text
-      integer :: u
-      open (newunit=u, file=path, status='replace', action='write')
-      write (u, '(a)') text
-      close (u)
-   end subroutine write_text
 
    !> The pit dug with each increment method (quasi-Newton, full Newton) ends where modified
    !> Newton does: the carried out-of-balance is the same load for every method. The

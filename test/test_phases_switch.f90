@@ -293,7 +293,7 @@ contains
       logical :: exists
       call make_directories(OUT)
       call write_switched(deck, 1)
-      code = adapt_main(deck, '10%', '', 0, OUT//'refused.h5')
+      code = adapt_main(deck, '10%', '', 0, OUT//'refused.h5', .false.)
       inquire (file=OUT//'refused.h5', exist=exists)
       call check(error, code == 2 .and. .not. exists, '--target-error refuses a phased deck '// &
          '(exit '//itoa(code)//')')

@@ -166,7 +166,8 @@ contains
 
    !> The 3-node element is not exact under a uniform load (w is quartic): 0.1 % on 10
    !> elements (measured 4e-11 on the deflection and the support moment: it is exact at
-   !> the nodes in practice; the 0.1 % bound is the issue's for a non-exact element).
+   !> the nodes in practice; not exact in theory, so no round-off bound can be derived:
+   !> 0.1 % is the bound this suite gives an element that is not exact, as test_thin's).
    subroutine test_uniform3(error)
       type(error_t), allocatable, intent(out) :: error
       call uniform_case(3, 1.0e-3_wp, error)

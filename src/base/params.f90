@@ -15,6 +15,10 @@ module pecplas_base_params
       !> Where the parameters were given.
       character(len=:), allocatable :: file, keyword
       integer :: line = 0
+      !> Keys another part of the reader takes before these parameters reach their model
+      !> (the water keys of *MATERIAL): the unknown-key message lists them too, under `other_what`.
+      character(len=32), allocatable :: other_keys(:)
+      character(len=:), allocatable :: other_what
    contains
       procedure :: add => params_add
       procedure :: has => params_has
@@ -68,7 +72,8 @@ contains
       end if
    end subroutine params_get
 
-   !> Error if a key is not in `known` (catches typos such as `NUU = 0.3`).
+   !> Error if a key is not in `known` (catches typos such as `NUU = 0.3`); the message lists
+   !> `known` and, when set, the keys taken by another part of the reader (`other_keys`).
    subroutine params_unknown_keys(this, known, error)
       class(params_t), intent(in) :: this
       character(len=*), intent(in) :: known(:)
@@ -87,6 +92,12 @@ contains
             do j = 1, size(known)
                list = list//' '//upper(trim(known(j)))
             end do
+            if (allocated(this%other_keys) .and. allocated(this%other_what)) then
+               list = list//'; '//this%other_what//':'
+               do j = 1, size(this%other_keys)
+                  list = list//' '//upper(trim(this%other_keys(j)))
+               end do
+            end if
             call deck_error(error, this%file, this%line, this%keyword, 'unknown parameter '// &
                trim(this%keys(i))//'; known parameters:'//list)
             return

@@ -8,6 +8,8 @@ module pecplas_cmd_adapt
    use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_phase_plan, only: is_phased
+   use pecplas_model_geometry, only: check_geometry
+   use pecplas_model_mesh_tools, only: check_elements
    use pecplas_problem_type, only: problem_t
    use pecplas_adapt_adapt, only: adapt_options_t, adapt_level_t, adapt_model
    use pecplas_base_files, only: make_directories, path_stem, path_dir
@@ -23,9 +25,11 @@ module pecplas_cmd_adapt
 
 contains
 
-   integer function adapt_main(deck, target, goal, max_dofs, outfile_in) result(code)
+   integer function adapt_main(deck, target, goal, max_dofs, outfile_in, strict) result(code)
       character(len=*), intent(in) :: deck, target, goal, outfile_in
       integer, intent(in) :: max_dofs
+      !> Any warning of the deck is an input error (exit 2, no results file).
+      logical, intent(in) :: strict
       type(model_t) :: model
       type(problem_t) :: problem
       type(adapt_options_t) :: opts
@@ -34,7 +38,7 @@ contains
       character(len=:), allocatable :: msg
       type(goal_spec_t) :: spec
       type(thread_setting_t) :: threads
-      integer :: n
+      integer :: n, nflipped
       call parse_target(target, opts%target, msg)
       if (allocated(msg)) then
          code = command_error('pecplas', EXIT_INPUT, 'option --target-error: '//msg)
@@ -72,6 +76,17 @@ contains
                'the refinement does not carry anchors along; refine the mesh of the deck by hand')
             return
          end if
+      end if
+      ! the deck's warnings (reading, element shapes, joints) once, before the first level, as
+      ! for one run; the refined levels' meshes are the program's own
+      call check_elements(model%mesh, nflipped, error)
+      if (.not. allocated(error)) call check_geometry(model, error)
+      if (allocated(error)) deallocate (error)   ! the first level reports it, with its place
+      call model%warnings%print(0)
+      if (strict) call model%warnings%as_error(error)
+      if (allocated(error)) then
+         code = command_error('pecplas', error%exit_code(), error%text())
+         return
       end if
       ! the deck's *SOLVER THREADS= or OMP_NUM_THREADS, else one thread, as for one run
       threads = resolve_threads(model%solver%threads)

@@ -106,7 +106,7 @@ contains
          return
       end if
       if (len(target) > 0) then
-         code = adapt_main(deck, target, goal, max_dofs, cli%text('-o'))
+         code = adapt_main(deck, target, goal, max_dofs, cli%text('-o'), cli%given('--strict'))
          return
       else if (len(goal) > 0 .or. max_dofs > 0) then
          code = cli%usage_error('--goal and --max-dofs need --target-error')
@@ -139,20 +139,21 @@ contains
       integer :: status
       real(wp) :: t0, t1, w0
       integer :: nflipped
+      logical :: adaptive, is_strict
 
+      is_strict = .false.
+      if (present(strict)) is_strict = strict
       call cpu_time(t0)
       w0 = wall_time()
       ! Everything that can be checked is checked before a results file exists.
       call read_deck(deck, model, error)
       if (.not. allocated(error) .and. model%adapt%given) then
          ! *ADAPT in the deck: the adaptive loop instead of one analysis (not for a restart)
-         if (.not. present(restart)) then
+         adaptive = .not. present(restart)
+         if (.not. adaptive) adaptive = len(restart) == 0
+         if (adaptive) then
             code = adapt_main(deck, model%adapt%target, model%adapt%goal, &
-               model%adapt%max_dofs, outfile_in)
-            return
-         else if (len(restart) == 0) then
-            code = adapt_main(deck, model%adapt%target, model%adapt%goal, &
-               model%adapt%max_dofs, outfile_in)
+               model%adapt%max_dofs, outfile_in, is_strict)
             return
          end if
       end if
@@ -164,9 +165,7 @@ contains
       end if
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
       if (.not. allocated(error)) call model%warnings%print(0)
-      if (.not. allocated(error) .and. present(strict)) then
-         if (strict) call model%warnings%as_error(error)
-      end if
+      if (.not. allocated(error) .and. is_strict) call model%warnings%as_error(error)
       if (.not. allocated(error) .and. present(restart)) then
          if (len(restart) > 0) call restore_restart(restart, model, problem, error)
       end if

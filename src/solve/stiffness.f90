@@ -6,6 +6,7 @@ module pecplas_solve_stiffness
    use pecplas_base_error, only: error_t, ERR_SINGULAR, fatal_error
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: METHOD_NEWTON
+   use pecplas_model_phases, only: CHANGE_MATERIAL, CHANGE_LAW
    use pecplas_model_provenance, only: place_t
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
@@ -31,6 +32,7 @@ contains
       character(len=:), allocatable :: name
       integer :: i
       logical :: symmetric, tangent
+      logical, allocatable :: used(:)
       name = model%solver%linear
       if (name /= 'AUTO') return
       tangent = model%solver%method == METHOD_NEWTON
@@ -44,19 +46,68 @@ contains
       ! The elastic stiffness of modified Newton is symmetric positive definite: CHOLMOD.
       ! Full Newton with a non-symmetric consistent tangent (non-associated plasticity,
       ! frictional interfaces) needs LU: UMFPACK.
+      ! Only the materials and laws the run uses count (a deck may keep spare ones).
       symmetric = .true.
       if (tangent) then
+         used = used_materials(model)
          do i = 1, size(model%materials)
-            symmetric = symmetric .and. model%materials(i)%m%symmetric_tangent()
+            if (used(i)) symmetric = symmetric .and. model%materials(i)%m%symmetric_tangent()
          end do
          if (allocated(model%laws)) then
+            used = used_laws(model)
             do i = 1, size(model%laws)
-               symmetric = symmetric .and. model%laws(i)%law%symmetric_tangent()
+               if (used(i)) symmetric = symmetric .and. model%laws(i)%law%symmetric_tangent()
             end do
          end if
       end if
       name = merge('CHOLMOD', 'UMFPACK', symmetric)
    end function linear_solver_name
+
+   !> Materials an element set has at the start or gets in a phase (*CHANGE_MATERIAL).
+   function used_materials(model) result(used)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: used(:)
+      integer :: s, c
+      allocate (used(size(model%materials)), source=.false.)
+      do s = 1, size(model%mesh%esets)
+         c = model%mesh%esets(s)%material_index
+         if (c >= 1 .and. c <= size(used)) used(c) = .true.
+      end do
+      call mark_changed(model, CHANGE_MATERIAL, used)
+   end function used_materials
+
+   !> Laws a joint set has at the start or gets in a phase (*CHANGE_LAW).
+   function used_laws(model) result(used)
+      type(model_t), intent(in) :: model
+      logical, allocatable :: used(:)
+      integer :: s, c
+      allocate (used(size(model%laws)), source=.false.)
+      if (allocated(model%joint_sets)) then
+         do s = 1, size(model%joint_sets)
+            c = model%joint_sets(s)%law_index
+            if (c >= 1 .and. c <= size(used)) used(c) = .true.
+         end do
+      end if
+      call mark_changed(model, CHANGE_LAW, used)
+   end function used_laws
+
+   !> Marks in `used` the new index of every phase change of kind `kind`.
+   subroutine mark_changed(model, kind, used)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: kind
+      logical, intent(inout) :: used(:)
+      integer :: s, c, k
+      if (.not. allocated(model%steps)) return
+      do s = 1, size(model%steps)
+         if (.not. allocated(model%steps(s)%changes)) cycle
+         do c = 1, size(model%steps(s)%changes)
+            associate (ch => model%steps(s)%changes(c))
+               k = ch%new
+               if (ch%kind == kind .and. k >= 1 .and. k <= size(used)) used(k) = .true.
+            end associate
+         end do
+      end do
+   end subroutine mark_changed
 
    !> True when a joint set of the model is held by Katona contact.
    logical function has_katona(model)

@@ -111,3 +111,24 @@ def test_adapt_keyword_errors_name_the_line(pecplas, tmp_path, line, expected):
     assert r.returncode == 2 and expected in r.stderr, r.stderr
     assert f"bad.inp:{nline}:" in r.stderr and "*ADAPT" in r.stderr
     assert not out.exists()
+
+
+@pytest.mark.parametrize("how", ["keyword", "option"])
+def test_adaptive_run_prints_warnings_and_strict_refuses(pecplas, tmp_path, how):
+    """An adaptive run (*ADAPT or --target-error) reports the deck's warnings as one run does
+    (an unused node set here), and under --strict refuses the deck: exit 2, the warning as the
+    error at its line, no results file."""
+    deck = tmp_path / "l_spare.inp"
+    text = DECK.read_text() + "*NSET, NAME=spare_set\n1\n"
+    args = ["--target-error", "15%"]
+    if how == "keyword":
+        text += "*ADAPT, TARGET=15%\n"
+        args = []
+    deck.write_text(text)
+    out = tmp_path / "s.h5"
+    r = run(pecplas, deck, *args, "--strict", "-o", out)
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert "spare_set" in r.stderr and not out.exists()
+    r = run(pecplas, deck, *args, "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "warning:" in r.stderr and "spare_set" in r.stderr and out.exists()

@@ -56,7 +56,8 @@ def test_vonmises_footing_newton(tmp_path, element):
 def test_mohr_coulomb_footing_newton(tmp_path, element):
     """The same footing on Mohr-Coulomb soil (c = 100 kPa, phi = psi = 30 deg, 0.2 m in 20
     increments; 2 003 equations): completes with no cut in at most 5 iterations per
-    increment on average, the issue's target for every soil. Measured 84 and 84 with the
+    increment on average, the bound of the von Mises footing above (CalculiX needs about 3
+    on it, doc/bench/peer_footing.md), kept for every soil. Measured 84 and 84 with the
     extrapolated start of each increment (doc/theory.md §4); with the tangent predictor
     before it, 104 and 105 (5.2 per increment), the plastic zone spreading by hundreds of
     points per increment and the iteration crawling while points at its front switch

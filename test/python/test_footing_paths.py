@@ -5,8 +5,8 @@ arc-length (doc/theory.md §4).
 - c-phi footing (phi = psi = 30 deg, c = 10 kPa, surcharge 10 kPa, weightless), T6 mesh refined
   twice from the coarsest (nf = 1 -> 4 elements under the half footing), 0.5 m of settlement in
   50 increments under full Newton with line search: every increment converges without a cut
-  in at most 5 iterations on average (measured: 3.0 per increment, 0 cuts, 5 line-search
-  residuals; 3.1 without line search. Before the imposed settlement entered the first iteration
+  in at most 5 iterations on average (measured: 2.0 per increment, 0 cuts, 4 line-search
+  residuals; 2.0 without line search. Before the imposed settlement entered the first iteration
   through the tangent, doc/theory.md §4: 13.3 with line search, 128 cuts without), and the
   pressure reaches a plateau (last four within 0.2 %) within
   0.95-1.10 of Prandtl's q_u = c N_c + q N_q = 485.4 kPa (measured 498.9: +2.8 %, the FE mesh's

@@ -191,7 +191,9 @@ def test_s6_modjoin_force_control_arc_length(tmp_path):
     rises past it), and the uplift at 2.83 kN equals the imposed-uplift run within 1 %."""
     mc = (ROOT / "input/s6/s6_mohr_coulomb.inp").read_text()
     mj = (ROOT / "input/s6/s6_modjoin.inp").read_text()
-    pull = re.search(r"\*LOAD, NAME=pull, TYPE=PRESSURE\nhead, [-0-9.e+]+\n", mc).group(0)
+    # the pressure and its edges (the MODJOIN deck pulls the head's nodes: it has no edges)
+    pull = (re.search(r"\*EDGES, NAME=head\n(?:[0-9, ]+\n)+", mc).group(0)
+            + re.search(r"\*LOAD, NAME=pull, TYPE=PRESSURE\nhead, [-0-9.e+]+\n", mc).group(0))
     i, j = mj.index("*LOAD, NAME=pull, TYPE=DISPLACEMENT"), mj.index("*SOLVER")
     arc = (mj[:i] + pull + "*STEP, NAME=pull, INCREMENTS=23, CONTROL=ARC_LENGTH, "
            "MAX_INCREMENTS=200\npull, 1\n" + mj[j:])

@@ -266,6 +266,9 @@ contains
       soil%file = params%file
       soil%line = params%line
       soil%keyword = params%keyword
+      ! a typo's message lists the water keys too (they never reach the soil model)
+      soil%other_keys = WATER_PARAMS
+      soil%other_what = 'water parameters'
       allocate (soil%keys(0), soil%values(0))
       do i = 1, size(params%keys)
          if (any(WATER_PARAMS == params%keys(i))) cycle

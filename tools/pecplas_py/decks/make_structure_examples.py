@@ -154,7 +154,6 @@ def excavation(strip, wet=False):
         strut_node = nid(xs.index(FRONT + 0.4), jy(STRUT_Y))
     else:
         line_nodes = [nid(iw, j) for j in range(top, bottom - 1, -1)]
-        lines += ["*NSET, NAME=wall_nodes"] + chunk(line_nodes)
         lines += ["*EDGES, NAME=wall_line"] + [f"{a}, {b}" for a, b in
                                                 zip(line_nodes[:-1], line_nodes[1:])]
         lines += ["*PLATE, SET=wall, EDGES=wall_line, EA=2.4e7, EI=1.28e6, NU=0.15"]

@@ -31,9 +31,6 @@ from pecplas_py import ROOT
 
 DECK_MD = ROOT / "doc" / "deck.md"
 TOKEN = re.compile(r"\b[A-Z][A-Z0-9_]*\b")
-# the water data keys of *MATERIAL (src/io/deck/reader_water.f90, WATER_PARAMS) are read by
-# the water, not by the soil model: the soil's "known parameters" answer does not list them
-WATER_KEYS = ("GAMMA_UNSAT", "GAMMA_SAT", "KW_N", "CU", "CU_INC", "CU_YREF")
 # keywords of the point driver's decks (pecplas-path, doc/path.md), not of pecplas's reader
 OTHER_PROGRAMS = ("*PATH",)
 
@@ -54,13 +51,15 @@ def _after(line, marker):
     """The blank-separated words after `marker` in `line`."""
     if marker not in line:
         raise RuntimeError(f"no '{marker}' in the reader's answer: {line}")
-    words = line.split(marker, 1)[1].split("(", 1)[0]
+    words = line.split(marker, 1)[1].split("(", 1)[0].split(";", 1)[0]
     return [w for w in words.split() if w != "(none)"]
 
 
 def reader_vocabulary(exe):
     """What the reader accepts: {'keywords': [...], 'params': {kw: [...]},
-    'material_keys': {type: [...]}, 'law_keys': {type: [...]}, 'types': {kw: [...]}}."""
+    'material_keys': {type: [...]}, 'water_keys': [...], 'law_keys': {type: [...]},
+    'types': {kw: [...]}}. The water data keys of *MATERIAL are read by the water, not by the
+    soil model: its answer lists them after the soil model's ("; water parameters: ...")."""
     with tempfile.TemporaryDirectory() as tmp:
         ask = lambda text: _answer(exe, text, tmp)  # noqa: E731
         keywords = ["*" + k for k in " ".join(_after(ask("*ZZQ\n"), "known keywords:"))
@@ -80,10 +79,11 @@ def reader_vocabulary(exe):
         }
         material_keys = {t: _after(ask(f"*MATERIAL, NAME=m, TYPE={t}\nZZQ=1\n"),
                                    "known parameters:") for t in types["*MATERIAL"]}
+        water_keys = _after(ask("*MATERIAL, NAME=m\nZZQ=1\n"), "water parameters:")
         law_keys = {t: _after(ask(f"*INTERFACE_LAW, NAME=m, TYPE={t}\nZZQ=1\n"),
                               "known parameters:") for t in types["*INTERFACE_LAW"]}
     return {"keywords": keywords, "params": params, "types": types,
-            "material_keys": material_keys, "law_keys": law_keys}
+            "material_keys": material_keys, "water_keys": water_keys, "law_keys": law_keys}
 
 
 def _sections(text):
@@ -185,7 +185,7 @@ def check(vocab, deck_md=DECK_MD, pages=None):
         for k in keys:
             if k not in sec("material"):
                 problems.append(f"{deck_md.name}: *MATERIAL TYPE={t} key {k} not in #material")
-    for k in WATER_KEYS:
+    for k in vocab["water_keys"]:
         if k not in sec("groundwater"):
             problems.append(f"{deck_md.name}: *MATERIAL water key {k} not in #groundwater")
     law_words = sec("interface_law")
@@ -218,6 +218,7 @@ def main(argv=None):
     n = sum(len(v) for v in vocab["params"].values())
     print(f"{len(vocab['keywords'])} keywords, {n} keyword parameters, "
           f"{sum(len(v) for v in vocab['material_keys'].values())} material keys, "
+          f"{len(vocab['water_keys'])} water keys, "
           f"{sum(len(v) for v in vocab['law_keys'].values())} law keys checked")
     for p in problems:
         print(p)

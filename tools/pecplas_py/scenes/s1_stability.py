@@ -2,12 +2,13 @@
 """Stability of the S1 compression-opening-closing test (input/s1/s1_open_close_kn1e5.inp)
 against the joint's normal stiffness: K_n / E1 = 1, 10, ..., 1e8 (E1 = 1e5 kPa), modified Newton
 alone (FALLBACK=NO, the thesis's method), modified Newton with its chain of methods and full
-Newton (the default method, with its fallback), tolerance 1e-3 and 1e-4. For each run: status, increments (and how many each
-method finished), iterations per increment (mean, max), total iterations, and the largest
-interpenetration (closure of the zero-thickness joint, eps_n > 0, in mm). Prints a Markdown table; with --json writes the
-rows to test/reference/s1_stability.json, and --doc writes the table of doc/validation.md from
-that file (72 runs take minutes: too slow for the tests, which rerun a few rows against the
-file and check the table against it).
+Newton (the default method, with its fallback), tolerance 1e-3 and 1e-4. For each run: status,
+increments (and how many each method finished), iterations per increment (mean, max), total
+iterations, and the largest interpenetration (closure of the zero-thickness joint, eps_n > 0, in
+mm). Prints a Markdown table; with --json writes the rows to test/reference/s1_stability.json,
+and --doc writes the table of doc/validation.md from that file (54 runs: 9 stiffnesses x 3
+methods x 2 tolerances, about 15 minutes of one core: too slow for the tests, which rerun a few
+rows against the file and check the table against it).
 
     python3 -m pecplas_py.scenes.s1_stability [--pecplas PATH] [--max-iterations 10000] [--json]
     python3 -m pecplas_py.scenes.s1_stability --doc [--check]
