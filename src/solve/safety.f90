@@ -71,7 +71,7 @@ contains
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), u0(:, :), fred(:, :), &
          ulast(:, :, :)
-      real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow, floor, confirm_until
+      real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow, smallest, confirm_until
       integer :: inc, method, k, nnode
       logical :: ok, returned
       character(len=:), allocatable :: why
@@ -102,7 +102,7 @@ contains
          msf = 1.0_wp
          dm = plan%msf_step
          rate_prev = -1.0_wp
-         floor = plan%resolution
+         smallest = plan%resolution
          confirm_until = -1.0_wp
          inc = 0
          call plan_names(model, plan, res%reduced, res%kept)
@@ -136,8 +136,8 @@ contains
             end if
             deallocate (fred)
             if (.not. ok) then
-               if (dm <= floor*(1.0_wp + 1.0e-12_wp)) then
-                  if (floor < plan%resolution*(1.0_wp - 1.0e-9_wp)) then
+               if (dm <= smallest*(1.0_wp + 1.0e-12_wp)) then
+                  if (smallest < plan%resolution*(1.0_wp - 1.0e-9_wp)) then
                      ! the sub-steps of a failed trial of RESOLUTION fail too: the factor
                      res%kind = SAFETY_FACTOR
                      res%factor = msf
@@ -147,15 +147,15 @@ contains
                   end if
                   ! a trial of RESOLUTION failed: before the claim, the same Msf is sought
                   ! from the last equilibrium in SUBSTEPS increments (module header)
-                  floor = plan%resolution/SUBSTEPS
+                  smallest = plan%resolution/SUBSTEPS
                   confirm_until = trial
-                  dm = floor
+                  dm = smallest
                   if (.not. run%quiet) write (*, '(a)') '   no equilibrium found at Msf = '// &
                      g6(trial)//' ('//failure_reason(returned, out)//'): sought again in '// &
                      'steps of '//g6(dm)
                   cycle
                end if
-               dm = max(0.5_wp*dm, floor)
+               dm = max(0.5_wp*dm, smallest)
                if (.not. run%quiet) write (*, '(a)') '   no equilibrium at Msf = '// &
                   g6(trial)//' ('//failure_reason(returned, out)//'): Msf step cut to '//g6(dm)
                cycle
@@ -183,8 +183,8 @@ contains
                dm = dm*grow
             end if
             ! past the Msf sought again in sub-steps, the resolution is the step's again
-            if (msf >= confirm_until*(1.0_wp - 1.0e-12_wp)) floor = plan%resolution
-            dm = min(plan%msf_step, max(dm, floor))
+            if (msf >= confirm_until*(1.0_wp - 1.0e-12_wp)) smallest = plan%resolution
+            dm = min(plan%msf_step, max(dm, smallest))
             if (rate > 0.0_wp) rate_prev = rate
          end do
          res%increments = inc
