@@ -12,6 +12,7 @@ program tester
    use test_anchors, only: collect_anchors
    use test_joint_faces, only: collect_joint_faces
    use test_phases_switch, only: collect_phases_switch
+   use test_phases_orphans, only: collect_phases_orphans
    use test_plates, only: collect_plates
    use test_io_results_structures, only: collect_io_results_structures
    use test_safety, only: collect_safety
@@ -31,6 +32,7 @@ program tester
    use test_io_results_phases, only: collect_io_results_phases
    use test_linalg_sparse, only: collect_linalg_sparse
    use test_linalg_sparse_reuse, only: collect_linalg_sparse_reuse
+   use test_linalg_sparse_columns, only: collect_linalg_sparse_columns
    use test_linalg_solvers, only: collect_linalg_solvers
    use test_io_deck_fields, only: collect_io_deck_fields
    use test_io_deck, only: collect_io_deck
@@ -99,6 +101,7 @@ program tester
    suites = [suites, new_testsuite('anchors', collect_anchors)]
    suites = [suites, new_testsuite('joint_faces', collect_joint_faces)]
    suites = [suites, new_testsuite('phases_switch', collect_phases_switch)]
+   suites = [suites, new_testsuite('phases_orphans', collect_phases_orphans)]
    suites = [suites, new_testsuite('io_results_structures', collect_io_results_structures)]
    suites = [suites, new_testsuite('safety', collect_safety)]
    suites = [suites, new_testsuite('cli', collect_cli)]
@@ -112,6 +115,7 @@ program tester
    suites = [suites, new_testsuite('io_results_final', collect_io_results_final)]
    suites = [suites, new_testsuite('linalg_sparse', collect_linalg_sparse)]
    suites = [suites, new_testsuite('linalg_sparse_reuse', collect_linalg_sparse_reuse)]
+   suites = [suites, new_testsuite('linalg_sparse_columns', collect_linalg_sparse_columns)]
    suites = [suites, new_testsuite('linalg_solvers', collect_linalg_solvers)]
    suites = [suites, new_testsuite('io_deck_fields', collect_io_deck_fields)]
    suites = [suites, new_testsuite('io_deck', collect_io_deck)]

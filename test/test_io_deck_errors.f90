@@ -31,7 +31,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call run_bad_cases(DECKS, [ &
          bad('unknown_keyword', 14, '*BOUNDRY', "unknown keyword '*BOUNDRY'", &
-         'known keywords:', '*BOUNDARY'), &
+         'known keywords:', '(did you mean *BOUNDARY?)'), &
          bad('unknown_parameter', 7, '*ELEMENTS', 'unknown parameter MATERIAL', &
          'known parameters: TYPE SET'), &
          bad('missing_set', 7, '*ELEMENTS', 'missing required parameter SET='), &
@@ -62,6 +62,8 @@ contains
          '(4 nodes)', 'found 3'), &
          bad('unknown_element_type', 7, '*ELEMENTS', "unknown element type 'Q9'", &
          'T3 T6 Q4 Q8'), &
+         bad('abaqus_element', 7, '*ELEMENTS', "unknown element type 'CPE4'", &
+         '(Abaqus CPE4 is Q4 here', 'known types: T3 T6 Q4 Q8'), &
          bad('duplicate_node', 6, '*NODES', 'duplicate node id 2', &
          'bad_duplicate_node.inp:4'), &
          bad('duplicate_element', 11, '*ELEMENTS', 'duplicate element id 1', &
@@ -83,6 +85,8 @@ contains
          'known element sets: soil'), &
          bad('undefined_nset', 15, '*BOUNDARY', "undefined node set 'bottom'", &
          'known node sets: base'), &
+         bad('misspelt_nset', 15, '*BOUNDARY', "undefined node set 'bsae'", &
+         "(did you mean base?); known node sets: base"), &
          bad('undefined_edge_set', 19, '*LOAD', "undefined edge set 'top'", &
          'known edge sets: (none)'), &
          bad('undefined_material', 11, '*SECTION', "undefined material 'clay'", &
@@ -98,13 +102,17 @@ contains
          bad('nu_half', 10, '*MATERIAL', 'Poisson ratio NU', '-1 < NU < 0.5', '0.5000'), &
          bad('nu_minus_one', 10, '*MATERIAL', 'Poisson ratio NU', '-1.0000'), &
          bad('unknown_material_type', 9, '*MATERIAL', "unknown material type 'MOHR'", &
-         'known types: ELASTIC'), &
+         'known types: ELASTIC', '(did you mean MOHR_COULOMB?)'), &
          bad('unknown_material_key', 10, '*MATERIAL', 'unknown parameter NUU', &
          'known parameters: E NU GAMMA;', &
          'water parameters: GAMMA_UNSAT GAMMA_SAT KW_N CU CU_INC CU_YREF'), &
          bad('unknown_water_key', 10, '*MATERIAL', 'unknown parameter KWN', &
          'known parameters: E NU C PHI PSI GAMMA TENSION;', &
          'water parameters: GAMMA_UNSAT GAMMA_SAT KW_N CU CU_INC CU_YREF'), &
+         bad('misspelt_water_key', 10, '*MATERIAL', 'unknown parameter GAMA_SAT', &
+         '(did you mean GAMMA_SAT?)', 'water parameters: GAMMA_UNSAT GAMMA_SAT'), &
+         bad('unknown_material_key', 10, '*MATERIAL', 'unknown parameter NUU', &
+         '(did you mean NU?)'), &
          bad('duplicate_material', 11, '*MATERIAL', "material 'SAND' is defined twice", &
          'bad_duplicate_material.inp:9'), &
          bad('no_section', 7, '*ELEMENTS', "element set 'soil' has no material", &
@@ -135,6 +143,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call run_bad_cases(DECKS, [ &
          bad('no_nodes', 0, '*NODES', 'no nodes'), &
+         bad('empty_deck', 0, '*NODES', 'the deck is empty', 'complete example of doc/deck.md'), &
          bad('no_elements', 0, '*ELEMENTS', 'no elements'), &
          bad('no_step', 0, '*STEP', 'no *STEP')], error)
    end subroutine test_missing_parts

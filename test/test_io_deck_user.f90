@@ -14,6 +14,7 @@ module test_io_deck_user
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_model_refine_refine, only: refine_model
    use fixtures_bad_decks, only: bad, run_bad_cases
+   use pecplas_cmd_pecplas, only: force_notes
    implicit none (type, external)
    private
    public :: collect_io_deck_user
@@ -35,7 +36,9 @@ contains
                new_unittest('gmsh_group_one_name', test_gmsh_group), &
                new_unittest('gmsh_group_phase', test_gmsh_group_phase), &
                new_unittest('gmsh_q8r', test_gmsh_q8r), &
-               new_unittest('gmsh_forms_refused', test_bad_gmsh)]
+               new_unittest('gmsh_forms_refused', test_bad_gmsh), &
+               new_unittest('weightless_geostatic_warned', test_weightless), &
+               new_unittest('force_on_node_set_noted', test_force_notes)]
    end subroutine collect_io_deck_user
 
    subroutine load(name, model, error)
@@ -130,6 +133,47 @@ contains
       call check(error, index(text, "'head'") == 0 .and. index(text, "'corner'") == 0, &
          'head (NODE=) and corner (GOAL=) are not warned: '//text)
    end subroutine test_no_unused_warning
+
+   !> A geostatic initial stress of a material without unit weight is zero everywhere (a
+   !> forgotten GAMMA): warned at its data line; with a surcharge it is not zero, no warning.
+   subroutine test_weightless(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      character(len=:), allocatable :: text
+      integer :: i
+      call load('warn_weightless.inp', model, error)
+      if (allocated(error)) return
+      text = ''
+      do i = 1, model%warnings%count()
+         text = text//model%warnings%line(i)//'; '
+      end do
+      call check(error, index(text, "warn_weightless.inp:5: warning: geostatic initial "// &
+         "stress of set 'soil' is zero everywhere") > 0, 'warned at line 5: '//text)
+      if (allocated(error)) return
+      call load('good_weightless_surcharge.inp', model, error)
+      if (allocated(error)) return
+      text = ''
+      do i = 1, model%warnings%count()
+         text = text//model%warnings%line(i)//'; '
+      end do
+      call check(error, index(text, 'zero everywhere') == 0, 'a surcharge: no warning: '//text)
+   end subroutine test_weightless
+
+   !> A FORCE on a node set loads each node with the value: the banner's note says what that
+   !> makes in all (block.inc's top row, nodes 7, 8, 9: 3 x -5 = -15 kN); a force on one node
+   !> gets no note. Sums of three exact binary fractions: compared as text.
+   subroutine test_force_notes(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      character(len=:), allocatable :: text
+      call load('force_on_set.inp', model, error)
+      if (allocated(error)) return
+      text = force_notes(model)
+      call check(error, index(text, "load pattern 'spread' (FORCE) acts on 3 nodes along y, "// &
+         'each with its value: -15 kN in all at factor 1') > 0, 'note: '//text)
+      if (allocated(error)) return
+      call check(error, index(text, "'point'") == 0, 'a force on one node: no note: '//text)
+   end subroutine test_force_notes
 
    !> A set of several nodes, a missing set, two dofs, a goal on a set of three nodes: input
    !> errors at the line of the keyword, each saying what is expected.

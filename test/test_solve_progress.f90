@@ -8,7 +8,7 @@ module test_solve_progress
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_model_type, only: model_t
    use pecplas_base_progress_eta, only: progress_eta_t
-   use pecplas_solve_progress, only: begin_progress, progress_text
+   use pecplas_solve_progress, only: begin_progress, progress_text, step_end_text
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
@@ -24,7 +24,8 @@ contains
                new_unittest('displacement_control', test_displacement), &
                new_unittest('arc_length_stop_node', test_arc_node), &
                new_unittest('arc_length_unknown', test_arc_unknown), &
-               new_unittest('step_estimate', test_step_left)]
+               new_unittest('step_estimate', test_step_left), &
+               new_unittest('step_end', test_step_end)]
    end subroutine collect_solve_progress
 
    !> Force step 'first' at fraction 0.25 after 30 s (clock 100 -> 130): factor 0.25 of 1,
@@ -130,6 +131,27 @@ contains
       if (allocated(error)) return
       call check(error, eta%step_left(0.1_wp, 1.0_wp, 60.0_wp) < 0.0_wp, 'moved back: unknown')
    end subroutine test_step_left
+
+   !> The line at the end of a step: the imposed settlement of the top (nodes 3, 4: -0.01 m)
+   !> with the sum of the reactions there (-3 - 4 = -7 kN: what a footing's settlement took,
+   !> the force a user reads the bearing capacity from), the base's reactions left out, and the
+   !> largest displacement (node 3: |(0.003, -0.01)| = 0.01044 m, against 0.01 at node 4).
+   subroutine test_step_end(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      real(wp), allocatable :: u(:, :), reaction(:, :)
+      character(len=:), allocatable :: line
+      call read_deck(DIR//'settle.inp', model, error)
+      if (allocated(error)) return
+      allocate (u(2, 4), reaction(2, 4), source=0.0_wp)
+      u(:, 3) = [0.003_wp, -0.01_wp]
+      u(:, 4) = [0.0_wp, -0.01_wp]
+      reaction(2, :) = [5.0_wp, 2.0_wp, -3.0_wp, -4.0_wp]
+      line = step_end_text(model, 1, [1.0_wp], u, reaction)
+      call expect(error, line, [character(len=60) :: "step 1 'sink': settle = 1 (", &
+         'imposed u_y = -0.01 m at 2 nodes, reaction F_y = -7 kN)', &
+         'largest displacement 0.01044 m at node 3 (x = 1, y = 1)'])
+   end subroutine test_step_end
 
    !> Deck DIR/<deck>.inp read into `model`, no displacement (u of its 4 nodes zero), the
    !> progress clock started at `t0` with `planned` increments and step `istep` begun there.

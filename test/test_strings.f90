@@ -5,6 +5,7 @@ module test_strings
    use pecplas_base_strings, only: upper, same_name, itoa, decimal_text, g6
    use pecplas_base_run_status, only: RUN_NOT_RUN, RUN_COMPLETED, RUN_LIMIT_LOAD, RUN_DIVERGED, &
       RUN_STOPPED, RUN_FAILED, RUN_INTERRUPTED, status_name, is_run_status
+   use pecplas_base_suggest, only: did_you_mean, with_suggestion
    use pecplas_testing, only: unittest_t, new_unittest, check
    implicit none (type, external)
    private
@@ -17,8 +18,43 @@ contains
       tests = [new_unittest('names', test_names), &
                new_unittest('integers', test_integers), &
                new_unittest('decimals', test_decimals), &
-               new_unittest('run_status_words', test_run_status_words)]
+               new_unittest('run_status_words', test_run_status_words), &
+               new_unittest('did_you_mean', test_suggest)]
    end subroutine collect_strings
+
+   !> The closest known names of a misspelt one (pecplas_base_suggest): a typo (one letter
+   !> wrong, missing or swapped), a missing digit, '-' for '_', any letter case; nothing for a
+   !> name written as it is (letter case aside) or for a word that is no typo of any name.
+   subroutine test_suggest(error)
+      type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: KNOWN = ' E NU C PHI PSI GAMMA TENSION'
+      call check(error, did_you_mean('PHY', KNOWN) == ' (did you mean PHI?)', 'PHY -> PHI')
+      if (allocated(error)) return
+      call check(error, did_you_mean('gamam', KNOWN) == ' (did you mean GAMMA?)', &
+         'swapped letters, lower case')
+      if (allocated(error)) return
+      call check(error, did_you_mean('GOODMAN', 'SPRING GOODMAN4 GOODMAN6 THIN_LAYER') == &
+         ' (did you mean GOODMAN4 or GOODMAN6?)', 'missing digit: both')
+      if (allocated(error)) return
+      call check(error, did_you_mean('mohr-coulomb', 'ELASTIC MOHR_COULOMB') == &
+         ' (did you mean MOHR_COULOMB?)', "'-' for '_'")
+      if (allocated(error)) return
+      call check(error, did_you_mean('phi', KNOWN) == '', 'the name itself: nothing')
+      if (allocated(error)) return
+      call check(error, did_you_mean('INTERFACE', 'SPRING GOODMAN4 GOODMAN6 THIN_LAYER') == &
+         '', 'no typo of any name: nothing')
+      if (allocated(error)) return
+      call check(error, with_suggestion("undefined node set 'bsae'; known node sets: base "// &
+         "top (or ALL)") == "undefined node set 'bsae' (did you mean base?); known node "// &
+         "sets: base top (or ALL)", 'inserted before the list, the remark not a name')
+      if (allocated(error)) return
+      call check(error, index(with_suggestion('unknown parameter GAMA_SAT; known parameters: '// &
+         'E NU GAMMA; water parameters: GAMMA_UNSAT GAMMA_SAT'), &
+         'GAMA_SAT (did you mean GAMMA_SAT?); known') > 0, 'the names of a second list too')
+      if (allocated(error)) return
+      call check(error, with_suggestion('cannot read mesh file') == 'cannot read mesh file', &
+         'a message without a list is kept')
+   end subroutine test_suggest
 
    subroutine test_names(error)
       type(error_t), allocatable, intent(out) :: error

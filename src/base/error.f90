@@ -3,6 +3,7 @@
 !> write `if (allocated(error)) return`. Only the command layer (`src/cmd/`) turns an error
 !> into an exit code (`exit_code`); the programs of `app/` hand that code to the system.
 module pecplas_base_error
+   use pecplas_base_suggest, only: with_suggestion
    implicit none (type, external)
    private
 
@@ -47,7 +48,7 @@ contains
       character(len=*), intent(in) :: message
       allocate (error)
       error%kind = ERR_INPUT
-      error%message = message
+      error%message = with_suggestion(message)
    end subroutine input_error
 
    !> Deck error naming file, line and keyword.
@@ -60,7 +61,8 @@ contains
       error%file = file
       error%line = line
       error%keyword = keyword
-      error%message = message
+      ! a misspelt name: the closest known names (pecplas_base_suggest)
+      error%message = with_suggestion(message)
    end subroutine deck_error
 
    !> `text` with every word (run of characters without a blank) longer than LONG_WORD cut

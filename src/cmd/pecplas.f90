@@ -11,6 +11,8 @@ module pecplas_cmd_pecplas
    use pecplas_base_files, only: make_directories, path_stem, path_dir, same_file, exit_now
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: method_name
+   use pecplas_model_loads, only: LOAD_FORCE
+   use pecplas_base_strings, only: decimal_text, itoa
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_prepare, only: prepare_run
@@ -38,7 +40,7 @@ module pecplas_cmd_pecplas
    !> Program name in error messages.
    character(len=*), parameter :: COMMAND = 'pecplas'
 
-   public :: pecplas_main, run_deck, pecplas_command_line
+   public :: pecplas_main, run_deck, pecplas_command_line, force_notes
 
 contains
 
@@ -200,7 +202,8 @@ contains
       call make_directories(path_dir(outfile))
       if (.not. quiet) call banner(model, problem, deck, outfile)
       if (.not. quiet .and. nflipped > 0) write (*, '(a,i0,a)') ' note: ', nflipped, &
-         ' clockwise elements renumbered counter-clockwise'
+         ' clockwise elements renumbered counter-clockwise (harmless: the results are '// &
+         'the same; a Gmsh surface whose curve loop runs clockwise gives such elements)'
 
       ! an MPI run (doc/mpi.md): every rank runs the analysis, rank 0 alone writes the file
       results%detached = parallel_rank() > 0
@@ -300,7 +303,7 @@ contains
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       character(len=*), intent(in) :: deck, outfile
-      character(len=:), allocatable :: title, units
+      character(len=:), allocatable :: title, units, notes
       integer :: i
       title = '(untitled)'
       if (allocated(model%title)) title = model%title
@@ -311,6 +314,13 @@ contains
       write (*, '(a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' nodes ', model%mesh%nnode(), '  elements ', &
          model%mesh%nelem(), '  equations ', problem%system%dofs%neq, '  steps ', size(model%steps), &
          '  solver ', linear_solver_name(model), ' / ', method_name(model%solver%method)
+      notes = force_notes(model)
+      do while (len(notes) > 0)
+         i = index(notes, new_line('a'))
+         if (i == 0) i = len(notes) + 1
+         write (*, '(a)') ' note: '//notes(1:i - 1)
+         notes = notes(min(i + 1, len(notes) + 1):)
+      end do
       if (allocated(model%laws)) then
          do i = 1, size(model%laws)
             if (len(model%laws(i)%law%describe()) > 0) write (*, '(a)') ' law '// &
@@ -325,6 +335,35 @@ contains
          end associate
       end do
    end subroutine banner
+
+   !> A FORCE pattern on several nodes puts its value on each of them (doc/deck.md, Nodes): the
+   !> banner's notes say what that makes in all, at factor 1, so that a force meant as a
+   !> resultant is seen at once. One line per pattern and direction (new_line separated), ''
+   !> when every FORCE pattern acts on one node per direction.
+   function force_notes(model) result(text)
+      type(model_t), intent(in) :: model
+      character(len=:), allocatable :: text
+      integer :: p, d, n
+      character(len=:), allocatable :: force
+      text = ''
+      if (.not. allocated(model%patterns)) return
+      force = ''
+      if (model%unit_system%stated) force = ' '//model%unit_system%of('force')
+      do p = 1, size(model%patterns)
+         associate (pat => model%patterns(p))
+            if (pat%kind /= LOAD_FORCE .or. .not. allocated(pat%dof)) cycle
+            do d = 1, 2
+               n = count(pat%dof == d)
+               if (n < 2) cycle
+               if (len(text) > 0) text = text//new_line('a')
+               text = text//'load pattern '''//pat%name//''' (FORCE) acts on '//itoa(n)// &
+                  ' nodes along '//trim(merge('x', 'y', d == 1))//', each with its value: '// &
+                  decimal_text(sum(pat%value, mask=pat%dof == d), 4)//force//' in all at '// &
+                  'factor 1 (for a resultant spread over a surface, use a PRESSURE)'
+            end do
+         end associate
+      end do
+   end function force_notes
 
    subroutine summary(problem, threads, status, message, outfile, cpu, wall, quiet)
       type(problem_t), intent(in) :: problem

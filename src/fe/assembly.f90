@@ -19,7 +19,8 @@ module pecplas_fe_assembly
    use pecplas_fe_anchor_assembly, only: add_anchor_stiffness, add_anchor_forces
    use pecplas_fe_plate_assembly, only: add_plate_stiffness, add_plate_forces
    use pecplas_base_timers, only: wall_time
-   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
+   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS, openmp_threads
+   use pecplas_linalg_sparse_columns, only: add_blocks_by_columns
    use pecplas_fe_element_context, only: element_context
    use pecplas_fe_share, only: share_t
    implicit none (type, external)
@@ -141,8 +142,8 @@ contains
       type(error_t), allocatable :: err
       real(wp), allocatable :: ke(:, :, :), d(:, :, :)
       real(wp) :: delastic(NCOMP, NCOMP), kwn
-      integer, allocatable :: idx(:)
-      integer :: e, c0, c1, nd, bad, e1, e2
+      integer, allocatable :: idx(:), idxs(:, :), parts(:)
+      integer :: e, c0, c1, nd, bad, e1, e2, nparts
       logical :: stored
       associate (set => model%mesh%esets(s), &
                  mat => model%materials(set_material(model, s, st))%m)
@@ -170,6 +171,15 @@ contains
             d = spread(delastic, 3, st%ngauss)
          end if
          allocate (ke(nd, nd, min(CHUNK, max(e2 - e1 + 1, 1))), idx(nd))
+         ! a new pattern with a team: the blocks are added by threads owning column ranges
+         ! (the same sums); a kept one: serially through the recorded positions
+         nparts = 1
+         if (e2 - e1 + 1 >= PARALLEL_MIN_ELEMENTS .and. .not. builder%positioned()) &
+            nparts = openmp_threads()
+         if (nparts > 1) then
+            parts = k%column_parts(nparts)
+            allocate (idxs(nd, size(ke, 3)))
+         end if
          bad = huge(bad)
          do c0 = e1, e2, CHUNK
             c1 = min(c0 + CHUNK - 1, e2)
@@ -193,6 +203,14 @@ contains
             !$omp end do
             !$omp end parallel
             if (bad <= e2) exit
+            if (nparts > 1) then
+               do e = c0, c1
+                  call element_equations(dofs, set%conn(:, e), idxs(:, e - c0 + 1))
+               end do
+               call add_blocks_by_columns(k, c1 - c0 + 1, idxs, ke, parts, error)
+               if (allocated(error)) return
+               cycle
+            end if
             do e = c0, c1
                call element_equations(dofs, set%conn(:, e), idx)
                call builder%add_block(k, idx, ke(:, :, e - c0 + 1), error)

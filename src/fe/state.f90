@@ -8,10 +8,11 @@ module pecplas_fe_state
    use pecplas_water_state, only: pore_state_t
    use pecplas_structures_anchor_state, only: anchor_state_t
    use pecplas_structures_state, only: plate_state_t
+   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    implicit none (type, external)
    private
 
-   public :: set_state_t, fe_state_t, set_material
+   public :: set_state_t, fe_state_t, set_material, set_state_allocate
 
    !> Per element set: arrays (component, gauss point, element).
    type :: set_state_t
@@ -71,15 +72,61 @@ contains
       if (st%material > 0) m = st%material
    end function set_material
 
+   !> The point arrays of a set (ncomp stress components, nst history values, ng points,
+   !> nel elements), converged and trial, all zero: the initial state. The zeros are
+   !> written element by element by the element loops' threads, so that the page faults
+   !> of this fresh memory (six arrays of ncomp or nst values per point) are spread over
+   !> the team instead of taken by one thread.
+   subroutine set_state_allocate(st, ncomp, nst, ng, nel)
+      type(set_state_t), intent(inout) :: st
+      integer, intent(in) :: ncomp, nst, ng, nel
+      integer :: e
+      allocate (st%stress(ncomp, ng, nel), st%strain(ncomp, ng, nel), st%hist(nst, ng, nel))
+      allocate (st%stress_trial(ncomp, ng, nel), st%strain_trial(ncomp, ng, nel), &
+         st%hist_trial(nst, ng, nel))
+      !$omp parallel do default(shared) private(e) schedule(static) &
+      !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
+      do e = 1, nel
+         st%stress(:, :, e) = 0.0_wp
+         st%strain(:, :, e) = 0.0_wp
+         st%hist(:, :, e) = 0.0_wp
+         st%stress_trial(:, :, e) = 0.0_wp
+         st%strain_trial(:, :, e) = 0.0_wp
+         st%hist_trial(:, :, e) = 0.0_wp
+      end do
+      !$omp end parallel do
+   end subroutine set_state_allocate
+
+   !> a = b, element by element on the element loops' threads where a has b's shape
+   !> already (the state arrays: a copy, no arithmetic); else an ordinary assignment.
+   subroutine copy_points(a, b)
+      real(wp), allocatable, intent(inout) :: a(:, :, :)
+      real(wp), intent(in) :: b(:, :, :)
+      integer :: e
+      logical :: same
+      same = allocated(a) .and. size(b) > 0
+      if (same) same = all(shape(a) == shape(b))
+      if (.not. same) then
+         a = b
+         return
+      end if
+      !$omp parallel do default(shared) private(e) schedule(static) &
+      !$omp if (size(b, 3) >= PARALLEL_MIN_ELEMENTS)
+      do e = 1, size(b, 3)
+         a(:, :, e) = b(:, :, e)
+      end do
+      !$omp end parallel do
+   end subroutine copy_points
+
    !> Accepts the trial values of every point (end of a converged increment).
    subroutine state_commit(this)
       class(fe_state_t), intent(inout) :: this
       integer :: s
       do s = 1, size(this%sets)
          associate (st => this%sets(s))
-            st%stress = st%stress_trial
-            st%strain = st%strain_trial
-            st%hist = st%hist_trial
+            call copy_points(st%stress, st%stress_trial)
+            call copy_points(st%strain, st%strain_trial)
+            call copy_points(st%hist, st%hist_trial)
             call st%pore%commit()
          end associate
       end do

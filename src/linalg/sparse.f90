@@ -4,7 +4,7 @@
 !> Equation numbers are 1-based everywhere in Fortran; only the CSC index arrays are 0-based
 !> (`colptr(1) = 0`, `colptr(n+1) = nnz`) because they go to C as they are.
 module pecplas_linalg_sparse
-   use pecplas_base_kinds, only: wp, ik4
+   use pecplas_base_kinds, only: wp, ik4, ik8
    use pecplas_base_error, only: error_t, fatal_error
    implicit none (type, external)
    private
@@ -47,6 +47,7 @@ module pecplas_linalg_sparse
       procedure :: locate => csc_locate
       procedure :: diagonal => csc_diagonal
       procedure :: add_block => csc_add_block
+      procedure :: column_parts => csc_column_parts
       procedure :: is_symmetric => csc_is_symmetric
       procedure :: whole_nnz => csc_whole_nnz
       procedure :: upper_of_whole => csc_upper_of_whole
@@ -324,14 +325,21 @@ contains
    !> block's rows are sorted once; each column is then walked along with them (rows are
    !> sorted in a CSC column) instead of searching every entry. `pos(r, c)`, if present,
    !> receives the 1-based position in `values` of each entry added (others untouched).
-   subroutine csc_add_block(this, idx, kblock, error, pos)
+   !> `first`, `last`: only the columns first..last (threads that own disjoint column
+   !> ranges add one block sequence at once, each entry's terms in the sequence's order).
+   subroutine csc_add_block(this, idx, kblock, error, pos, first, last)
       class(csc_t), intent(inout) :: this
       integer, intent(in) :: idx(:)
       real(wp), intent(in) :: kblock(:, :)
       type(error_t), allocatable, intent(out) :: error
       integer(ik4), intent(inout), optional :: pos(:, :)
-      integer :: order(size(idx)), nr, r, c, p, hi, k, row
+      integer, intent(in), optional :: first, last
+      integer :: order(size(idx)), nr, r, c, p, hi, k, row, c1, c2
       character(len=64) :: buf
+      c1 = 1
+      c2 = this%n
+      if (present(first)) c1 = max(first, 1)
+      if (present(last)) c2 = last
       nr = 0
       do r = 1, size(idx)
          if (idx(r) <= 0) cycle
@@ -345,7 +353,7 @@ contains
          order(k) = r
       end do
       do c = 1, size(idx)
-         if (idx(c) <= 0) cycle
+         if (idx(c) < c1 .or. idx(c) > c2) cycle
          p = this%colptr(idx(c)) + 1
          hi = this%colptr(idx(c) + 1)
          do k = 1, nr
@@ -371,6 +379,27 @@ contains
          end do
       end do
    end subroutine csc_add_block
+
+   !> Columns split into nparts ranges of about equal stored entries: part p holds the
+   !> columns first(p) .. first(p+1)-1 (possibly none).
+   pure function csc_column_parts(this, nparts) result(first)
+      class(csc_t), intent(in) :: this
+      integer, intent(in) :: nparts
+      integer :: first(nparts + 1)
+      integer :: p, j
+      integer(ik8) :: target
+      first(1) = 1
+      j = 1
+      do p = 2, nparts
+         target = (int(this%colptr(this%n + 1), ik8)*(p - 1))/nparts
+         do while (j <= this%n)
+            if (this%colptr(j) >= target) exit
+            j = j + 1
+         end do
+         first(p) = j
+      end do
+      first(nparts + 1) = this%n + 1
+   end function csc_column_parts
 
    !> True when |a(i,j) - a(j,i)| <= tol * max|a| for every stored entry.
    logical function csc_is_symmetric(this, tol) result(sym)

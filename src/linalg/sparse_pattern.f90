@@ -143,7 +143,9 @@ contains
                if (pass == 1) then
                   cnt(jj) = int(m, ik4)
                else
-                  csc%rowind(csc%colptr(jj) + 1:csc%colptr(jj) + m) = buf(1:m)
+                  ! 0-based, as csc_t stores them; the values' first touch on this thread
+                  csc%rowind(csc%colptr(jj) + 1:csc%colptr(jj) + m) = buf(1:m) - 1_ik4
+                  csc%values(csc%colptr(jj) + 1:csc%colptr(jj) + m) = 0.0_wp
                end if
             end do
          end do
@@ -155,11 +157,9 @@ contains
             do j = 1, n
                csc%colptr(j + 1) = csc%colptr(j) + cnt(j)
             end do
-            allocate (csc%rowind(csc%colptr(n + 1)))
+            allocate (csc%rowind(csc%colptr(n + 1)), csc%values(csc%colptr(n + 1)))
          end if
       end do
-      csc%rowind = csc%rowind - 1_ik4
-      allocate (csc%values(csc%colptr(n + 1)), source=0.0_wp)
    end subroutine pattern_from_blocks
 
 end module pecplas_linalg_sparse_pattern

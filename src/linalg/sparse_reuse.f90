@@ -30,8 +30,8 @@ module pecplas_linalg_sparse_reuse
       !> triplets' positions it was built from, and the matrix order (-1: none).
       integer(ik4), allocatable :: eptr(:), elist(:), xrows(:), xcols(:)
       integer :: npat = -1
-      !> Entries added by the last `pattern` assembly: the element-block entries kept (as
-      !> many as add_block triplets) plus the triplets of `coo`.
+      !> Entries added by an assembly on the kept pattern (counted when it is built): the
+      !> element-block entries kept (as many as add_block triplets) plus the triplets of `coo`.
       integer :: entries = 0
       !> Positions in csc%values of the element-block entries on the kept pattern, block
       !> after block, each block's kept entries column by column: recorded by the first
@@ -46,6 +46,7 @@ module pecplas_linalg_sparse_reuse
       procedure :: add_block => builder_add_block
       procedure :: add_extra => builder_add_extra
       procedure :: forget => builder_forget
+      procedure :: positioned => builder_positioned
    end type csc_builder_t
 
 contains
@@ -161,14 +162,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: nx, b
       nx = this%coo%nnz
-      this%entries = nx
-      do b = 1, size(eptr) - 1
-         this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
-      end do
       this%bnext = 1
       this%bcur = 0
+      ! a kept pattern: the same lists and triplets as the last call, so as many entries
       if (same_key(this, eptr, elist, csc)) then
-         csc%values = 0.0_wp
+         call zero_values(csc%values)
          this%fast = this%fast + 1
          ! a pattern used a second time: record the block positions for the next ones
          if (this%bstate /= 2) then
@@ -180,6 +178,10 @@ contains
          end if
          return
       end if
+      this%entries = nx
+      do b = 1, size(eptr) - 1
+         this%entries = this%entries + this%coo%block_size(elist(eptr(b):eptr(b + 1) - 1))
+      end do
       this%bstate = 0
       this%npat = -1
       call pattern_from_blocks(this%coo%n, this%coo%upper_only, eptr, elist, this%coo, csc, &
@@ -192,6 +194,19 @@ contains
       this%npat = this%coo%n
       this%full = this%full + 1
    end subroutine builder_pattern
+
+   !> v = 0 on the element loops' threads (the matrix's values, each assembly).
+   subroutine zero_values(v)
+      real(wp), intent(inout) :: v(:)
+      integer, parameter :: PIECE = 65536
+      integer :: i
+      !$omp parallel do default(shared) private(i) schedule(static) &
+      !$omp if (size(v) >= 4*PIECE)
+      do i = 1, size(v), PIECE
+         v(i:min(i + PIECE - 1, size(v))) = 0.0_wp
+      end do
+      !$omp end parallel do
+   end subroutine zero_values
 
    logical function same_key(this, eptr, elist, csc)
       class(csc_builder_t), intent(in) :: this
@@ -290,6 +305,14 @@ contains
          csc%values(q) = csc%values(q) + this%coo%vals(p)
       end do
    end subroutine builder_add_extra
+
+   !> Whether add_block records or replays the blocks' positions in this assembly (a kept
+   !> pattern); if not (a new pattern), each block is searched for in the columns, and the
+   !> blocks may as well be added by other means (pecplas_linalg_sparse_columns).
+   logical function builder_positioned(this)
+      class(csc_builder_t), intent(in) :: this
+      builder_positioned = this%bstate > 0
+   end function builder_positioned
 
    !> Forgets the kept pattern (the next `pattern` builds one).
    subroutine builder_forget(this)

@@ -241,6 +241,13 @@ contains
             else
                problem%system%initial_force = problem%system%initial_force + &
                   problem%phase%unbalanced
+               ! a node no active element holds any more carries none of it: its own share of
+               ! the K0 out-of-balance (not zero where the K0 stress is not linear across an
+               ! element, e.g. one that a phreatic level crosses) would stay in its residual,
+               ! which no internal force of its can balance
+               do p = 1, size(held)
+                  if (.not. held(p)) problem%system%initial_force(:, p) = 0.0_wp
+               end do
             end if
          end if
          ! the out-of-balance of the changes, carried along the step

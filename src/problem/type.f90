@@ -6,7 +6,8 @@ module pecplas_problem_type
    use pecplas_model_type, only: model_t
    use pecplas_model_options, only: METHOD_NEWTON
    use pecplas_fe_dofs, only: new_dofs
-   use pecplas_fe_state, only: fe_state_t
+   use pecplas_fe_state, only: fe_state_t, set_state_allocate
+   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    use pecplas_fe_loads, only: pattern_vectors
    use pecplas_fe_pore, only: setup_pore
    use pecplas_massif_elements_factory, only: new_massif_element
@@ -80,19 +81,20 @@ contains
             st%ngauss = ng
             nel = size(model%mesh%esets(s)%conn, 2)
             nst = model%materials(model%mesh%esets(s)%material_index)%m%nstate()
-            allocate (st%stress(NCOMP, ng, nel), st%strain(NCOMP, ng, nel), source=0.0_wp)
-            allocate (st%hist(nst, ng, nel), source=0.0_wp)
-            allocate (st%stress_trial, st%strain_trial, source=st%stress)
-            allocate (st%hist_trial, source=st%hist)
+            call set_state_allocate(st, NCOMP, nst, ng, nel)
             associate (mat => model%materials(model%mesh%esets(s)%material_index)%m)
                if (.not. mat%constant_tangent()) then
                   call mat%elastic_tangent(d)
                   allocate (st%tangent(NCOMP, NCOMP, ng, nel))
+                  ! first touch on the element loops' threads (as set_state_allocate)
+                  !$omp parallel do default(shared) private(e, g) schedule(static) &
+                  !$omp if (nel >= PARALLEL_MIN_ELEMENTS)
                   do e = 1, nel
                      do g = 1, ng
                         st%tangent(:, :, g, e) = d
                      end do
                   end do
+                  !$omp end parallel do
                end if
             end associate
          end associate

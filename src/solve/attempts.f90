@@ -36,7 +36,7 @@ module pecplas_solve_attempts
    use pecplas_model_options, only: METHOD_MODIFIED, METHOD_QUASI, METHOD_NEWTON, method_name
    use pecplas_base_strings, only: itoa
    use pecplas_base_progress_eta, only: progress_eta_t
-   use pecplas_solve_progress, only: begin_progress, progress_text
+   use pecplas_solve_progress, only: begin_progress, progress_text, step_end_text
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: limit_point_t
    implicit none (type, external)
@@ -219,6 +219,10 @@ contains
       call progress_line(model, problem, istep, inc, out%tau, out%iterations, out%residual, how)
       if (run%eta%due(clock)) write (*, '(a)') ' progress: '//progress_text(model, istep, inc, &
          out%tau, problem%state%factors, problem%state%u, control == 1, run%eta, clock)
+      ! the step's result in the deck's quantities (the load a settlement took, ...)
+      if (last .and. .not. model%steps(istep)%safety%on) write (*, '(a)') ' end of '// &
+         step_end_text(model, istep, &
+         problem%state%factors, problem%state%u, reaction)
    end subroutine accept_increment
 
 end module pecplas_solve_attempts

@@ -8,6 +8,7 @@ module pecplas_solve_gauss
    use pecplas_io_results_increment, only: gauss_coordinates_t, joint_points_t
    use pecplas_base_error, only: error_t
    use pecplas_joints_points, only: joint_point_geometry
+   use pecplas_linalg_threads, only: PARALLEL_MIN_ELEMENTS
    implicit none (type, external)
    private
 
@@ -15,24 +16,32 @@ module pecplas_solve_gauss
 
 contains
 
+   !> The elements' points in parallel (each element's own, so the same values on any
+   !> number of threads).
    function gauss_coordinates(model, problem) result(gxy)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       type(gauss_coordinates_t), allocatable :: gxy(:)
       real(wp), allocatable :: xe(:, :)
-      integer :: s, e, nn
+      integer :: s, e, nn, nel
 
       allocate (gxy(size(model%mesh%esets)))
       do s = 1, size(model%mesh%esets)
-         associate (set => model%mesh%esets(s), st => problem%state%sets(s))
-            nn = problem%system%rules(s)%nnode
+         associate (set => model%mesh%esets(s), st => problem%state%sets(s), &
+                    rule => problem%system%rules(s))
+            nn = rule%nnode
+            nel = size(set%conn, 2)
+            allocate (gxy(s)%xy(2, st%ngauss, nel))
+            !$omp parallel default(shared) private(e, xe) if (nel >= PARALLEL_MIN_ELEMENTS)
             allocate (xe(2, nn))
-            allocate (gxy(s)%xy(2, st%ngauss, size(set%conn, 2)))
-            do e = 1, size(set%conn, 2)
+            !$omp do schedule(static)
+            do e = 1, nel
                xe = model%mesh%x(:, set%conn(:, e))
-               call massif_gauss_coordinates(problem%system%rules(s), xe, gxy(s)%xy(:, :, e))
+               call massif_gauss_coordinates(rule, xe, gxy(s)%xy(:, :, e))
             end do
+            !$omp end do
             deallocate (xe)
+            !$omp end parallel
          end associate
       end do
    end function gauss_coordinates

@@ -38,6 +38,7 @@ module pecplas_solve_increments
    use pecplas_base_timers, only: wall_time
    use pecplas_base_signals, only: interrupt_requested, interrupt_signal
    use pecplas_solve_output, only: stop_pending
+   use pecplas_solve_progress, only: pattern_value, step_end_text
    use pecplas_phases_start, only: start_phase, LINE_LEN
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_io_results_phases, only: write_phase
@@ -374,6 +375,11 @@ contains
          case (END_NODE)
             if (res%beyond > 0 .and. res%tau < res%tau_peak) then
                call limit_reached(model, problem, run, step, istep, res, status, message)
+            else if (.not. run%quiet) then
+               ! stopped at its node's displacement: the loads it reached (force patterns
+               ! only under arc-length control, so no reaction sums are needed)
+               write (*, '(a)') ' end of '//step_end_text(model, istep, problem%state%factors, &
+                  problem%state%u, reshape([real(wp) ::], [2, 0]))
             end if
          case (END_LIMIT, END_UNLOADED)
             call limit_reached(model, problem, run, step, istep, res, status, message)
@@ -551,8 +557,9 @@ contains
             'fraction '//g6(tau_failed)//' after '//itoa(cuts)//' increment cuts ('//reason// &
             '); last converged state: '
          if (problem%stats%increments > 0) then
-            message = message//'increment '//itoa(problem%stats%increments)//', load '// &
-               'factors'//factors_text(model, step, problem%state%factors)
+            message = message//'increment '//itoa(problem%stats%increments)
+            if (len(factors_text(model, step, problem%state%factors)) > 0) message = &
+               message//', load factors'//factors_text(model, step, problem%state%factors)
          else
             message = message//'the initial state'
          end if
@@ -560,17 +567,23 @@ contains
       end associate
    end subroutine diverged
 
-   !> ' name = value' for each pattern that has a factor or that the step drives.
+   !> ' name = value' for each pattern that has a factor or that the step drives, with what
+   !> the factor means in the deck's quantities: ' push = 0.5 (resultant F_y = -73.4 kN)'.
    function factors_text(model, step, factors) result(text)
       type(model_t), intent(in) :: model
       type(step_t), intent(in) :: step
       real(wp), intent(in) :: factors(:)
       character(len=:), allocatable :: text
+      character(len=:), allocatable :: value
       integer :: p
       text = ''
       do p = 1, size(factors)
-         if (factors(p) /= 0.0_wp .or. any(step%pattern == p)) &
+         if (factors(p) /= 0.0_wp .or. any(step%pattern == p)) then
             text = text//' '//model%patterns(p)%name//' = '//g6(factors(p))
+            ! what the factor means in the deck's units: '(resultant F_y = -160 kN)'
+            value = pattern_value(model, p, factors(p))
+            if (len(value) > 2) text = text//' ('//value(3:)//')'
+         end if
       end do
    end function factors_text
 

@@ -15,7 +15,7 @@ module pecplas_solve_progress
    implicit none (type, external)
    private
 
-   public :: begin_progress, progress_text, step_measure
+   public :: begin_progress, progress_text, step_measure, pattern_value, step_end_text
 
 contains
 
@@ -106,6 +106,8 @@ contains
                itoa(nint(100.0_wp*max(0.0_wp, (m - eta%m_start)/(target - eta%m_start))))//' %'
             s = s//')'
          end if
+         ! a step that drives nothing (a nil step of a phase) lists nothing after the colon
+         if (s(len(s):) == ':') s = s(1:len(s) - 1)
          s = s//'; '//duration(now - eta%t0)//' elapsed; '
          call step_measure(model, istep, tau, u, m, target, estimable)
          if (arc .and. .not. step%arc_length) estimable = .false.
@@ -182,6 +184,59 @@ contains
          end select
       end associate
    end function pattern_value
+
+   !> What a step reached, in the deck's quantities, for the line printed at its end: each
+   !> pattern the step drives with its factor and value (a force's resultant, a pressure, an
+   !> imposed displacement with the sum of the reactions that impose it: the footing's load
+   !> under a settlement, the shear force of a shear box), then the largest displacement and
+   !> its node: "step 1 'push': settle = 1 (imposed u_y = -0.2 m at 17 nodes, reaction
+   !> F_y = 251.3 kN); largest displacement 0.2 m at node 12 (x = 0, y = 0)".
+   !> `reaction`: F_int - F_ext (2, ncolumns), counted from the initial state.
+   function step_end_text(model, istep, factors, u, reaction) result(s)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: factors(:), u(:, :), reaction(:, :)
+      character(len=:), allocatable :: s, value
+      integer :: i, p, d, k, n, big
+      real(wp) :: r, m
+      associate (step => model%steps(istep))
+         s = 'step '//itoa(istep)//' '''//step%name//''''
+         do i = 1, size(step%pattern)
+            p = step%pattern(i)
+            s = s//merge(': ', ', ', i == 1)//model%patterns(p)%name//' = '// &
+               num(factors(p))
+            value = pattern_value(model, p, factors(p))
+            associate (pat => model%patterns(p))
+               if (len(value) > 2) s = s//' ('//value(3:)
+               if (pat%kind == LOAD_DISPLACEMENT .and. allocated(pat%node)) then
+                  do d = 1, 2
+                     if (.not. any(pat%dof == d)) cycle
+                     r = 0.0_wp
+                     do k = 1, size(pat%node)
+                        if (pat%dof(k) == d .and. pat%node(k) <= size(reaction, 2)) &
+                           r = r + reaction(d, pat%node(k))
+                     end do
+                     s = s//', reaction F_'//axis(model, d)//' = '//num(r)//unit(model, 'force')
+                  end do
+               end if
+               if (len(value) > 2) s = s//')'
+            end associate
+         end do
+      end associate
+      n = min(model%mesh%nnode(), size(u, 2))
+      if (n == 0) return
+      big = 1
+      m = -1.0_wp
+      do k = 1, n
+         if (norm2(u(1:2, k)) > m) then
+            m = norm2(u(1:2, k))
+            big = k
+         end if
+      end do
+      s = s//'; largest displacement '//num(m)//length_unit(model)//' at node '// &
+         itoa(node_id(model, big))//' ('//axis(model, 1)//' = '//num(model%mesh%x(1, big))// &
+         ', '//axis(model, 2)//' = '//num(model%mesh%x(2, big))//')'
+   end function step_end_text
 
    !> 'x'/'y', or 'r'/'z' in axisymmetry.
    function axis(model, d) result(s)

@@ -97,18 +97,37 @@ contains
       rnorm = norm2(r)
       if (allocated(problem%phase%base_reaction)) then
          ! a phased run: the reactions from those of the K0 state (its weight's)
-         ref = max(norm2(pack(fext - problem%system%initial_force, problem%system%dofs%eq > 0)), &
+         ref = max(free_norm(problem, fext, problem%system%initial_force), &
             norm2(reaction - problem%phase%base_reaction))
          ! nothing acts beyond the held load but roundoff (a nil step on a balanced state):
          ! measured against the held load, as the initial-stress forces below
-         if (ref <= HELD_ROUNDOFF*norm2(pack(problem%system%initial_force, &
-             problem%system%dofs%eq > 0))) ref = 0.0_wp
+         if (ref <= HELD_ROUNDOFF*free_norm(problem, problem%system%initial_force)) ref = 0.0_wp
       else
-         ref = max(norm2(pack(fext - problem%system%initial_force, problem%system%dofs%eq > 0)), &
-            norm2(reaction))
+         ref = max(free_norm(problem, fext, problem%system%initial_force), norm2(reaction))
       end if
-      if (ref == 0.0_wp) ref = norm2(pack(problem%system%initial_force, problem%system%dofs%eq > 0))
+      if (ref == 0.0_wp) ref = free_norm(problem, problem%system%initial_force)
    end subroutine free_residual
+
+   !> norm2(pack(a - b, eq > 0)) (b absent: of a), the free equations' entries in array
+   !> order, without the temporaries of the difference, the mask and the packed copy.
+   real(wp) function free_norm(problem, a, b) result(v)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: a(:, :)
+      real(wp), intent(in), optional :: b(:, :)
+      real(wp), allocatable :: w(:)
+      integer :: i, d, k
+      allocate (w(size(a)))
+      k = 0
+      do i = 1, size(a, 2)
+         do d = 1, size(a, 1)
+            if (problem%system%dofs%eq(d, i) <= 0) cycle
+            k = k + 1
+            w(k) = a(d, i)
+            if (present(b)) w(k) = a(d, i) - b(d, i)
+         end do
+      end do
+      v = norm2(w(1:k))
+   end function free_norm
 
    !> The free equations' entries of a nodal array.
    function free_part(problem, a) result(v)

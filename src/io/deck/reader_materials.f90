@@ -3,6 +3,7 @@
 module pecplas_io_deck_reader_materials
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
+   use pecplas_io_deck_element_aliases, only: element_alias_hint
    use pecplas_io_text_fields, only: deck_line_t, &
       field_t, split_fields, parse_real, same_name, upper, &
       add_name
@@ -179,7 +180,8 @@ contains
       if (.not. found) sec%element = ''
       sec%element = upper(sec%element)
       if (found .and. sec%element /= 'Q8' .and. sec%element /= 'Q8R') then
-         call line_error(state, block%at, "bad value ELEMENT="//sec%element//'; expected '// &
+         call line_error(state, block%at, "bad value ELEMENT="//sec%element// &
+            element_alias_hint(sec%element)//'; expected '// &
             'Q8R (8-node quadrilaterals with 2 x 2 Gauss points) or Q8 (3 x 3)', error)
          return
       end if

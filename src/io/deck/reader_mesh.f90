@@ -3,6 +3,7 @@
 module pecplas_io_deck_reader_mesh
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, deck_error
+   use pecplas_io_deck_element_aliases, only: element_alias_hint
    use pecplas_io_text_fields, only: deck_line_t, field_t, split_fields, field_int, field_real, &
       check_count, parse_int, same_name, upper, itoa, add_name
    use pecplas_io_deck_mesh_lines, only: quick_node, quick_ids
@@ -98,8 +99,8 @@ contains
          do i = 1, size(ELEMENT_TYPES)
             call add_name(list, trim(ELEMENT_TYPES(i)))
          end do
-         call line_error(state, block%at, "unknown element type '"//etype//"'; known types:"// &
-            list, error)
+         call line_error(state, block%at, "unknown element type '"//etype//"'"// &
+            element_alias_hint(etype)//'; known types:'//list, error)
          return
       end if
       call check_name(state, block%at, name, error)

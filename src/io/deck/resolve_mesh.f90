@@ -42,8 +42,16 @@ contains
          call append_imported(state, mesh, error)
          if (allocated(error)) return
          if (mesh%nnode() == 0) then
-            call deck_error(error, model%deck_file, 0, '*NODES', &
-               'no nodes: the deck defines no *NODES (and no *MESH)')
+            if (state%lines%n == 0) then
+               ! an empty file (or only comments): say so, and where to start
+               call deck_error(error, model%deck_file, 0, '*NODES', 'no nodes: the deck '// &
+                  'is empty (no keyword line, only blanks or comments); a deck is keyword '// &
+                  'blocks *NODES, *ELEMENTS (or *MESH), *MATERIAL, *SECTION, *BOUNDARY, '// &
+                  '*LOAD, *STEP: see the complete example of doc/deck.md')
+            else
+               call deck_error(error, model%deck_file, 0, '*NODES', &
+                  'no nodes: the deck defines no *NODES (and no *MESH)')
+            end if
             return
          end if
          ! the lookup finds a repeated id in O(n); the message names the first repeat

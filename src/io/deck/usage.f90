@@ -1,7 +1,8 @@
 !> Warnings about parts of a read deck that do nothing: a load pattern no step uses, a
 !> material no section uses, a node or edge set nothing refers to, a step that leaves every
 !> load factor where it was; and initial stresses that are tensile (a geostatic surface
-!> below the top of its set, a homogeneous state with a tensile principal stress).
+!> below the top of its set, a homogeneous state with a tensile principal stress) or zero (a
+!> geostatic state of a material without unit weight).
 !> Each warning names the defining line (pecplas_base_warnings); none changes the run.
 module pecplas_io_deck_usage
    use pecplas_base_kinds, only: wp
@@ -212,6 +213,11 @@ contains
       do i = 1, size(model%initial_stresses)
          associate (init => model%initial_stresses(i))
             if (init%kind == 'GEOSTATIC') then
+               if (init%surcharge == 0.0_wp .and. weightless(model, init%eset)) &
+                  call model%warnings%add("geostatic initial stress of set '"//init%set// &
+                  "' is zero everywhere: its material has no unit weight (GAMMA, or "// &
+                  'GAMMA_UNSAT/GAMMA_SAT, is 0) and q_surface is 0, so a frictional soil '// &
+                  'starts without strength (give GAMMA on *MATERIAL)', init%file, init%line)
                top = set_top(model, init%eset)
                if (init%surface < top .and. init%surcharge <= 0.0_wp) then
                   write (b1, '(g0.6)') init%surface
@@ -235,6 +241,31 @@ contains
          end associate
       end do
    end subroutine tensile_initial
+
+   !> True when no element set covered by `s` (0: every set) has a unit weight: neither its
+   !> material's GAMMA nor, with groundwater, its saturated unit weight.
+   logical function weightless(model, s)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s
+      integer :: k, m
+      weightless = .true.
+      if (.not. allocated(model%materials)) return
+      do k = 1, size(model%mesh%esets)
+         if (s /= 0 .and. k /= s) cycle
+         m = model%mesh%esets(k)%material_index
+         if (m < 1 .or. m > size(model%materials)) then
+            weightless = .false.
+            return
+         end if
+         if (model%materials(m)%m%unit_weight /= 0.0_wp) weightless = .false.
+         if (allocated(model%water%mats)) then
+            if (m <= size(model%water%mats)) then
+               if (model%water%mats(m)%gamma_sat /= 0.0_wp) weightless = .false.
+            end if
+         end if
+         if (.not. weightless) return
+      end do
+   end function weightless
 
    !> Highest y of the nodes of element set `s` (0: every set).
    real(wp) function set_top(model, s) result(top)
