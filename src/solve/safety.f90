@@ -11,8 +11,13 @@
 !> when the increment converged in at most EASY_ITERATIONS iterations (the displacement of
 !> an increment may grow while the curve is gentle), clamped to [1/4, 3/2] and to MSF_STEP:
 !> as the mechanism forms the rate grows without bound and dM shrinks with it; a failed
-!> increment is halved, down to RESOLUTION. When an increment of RESOLUTION fails too, no
-!> equilibrium was found beyond the Msf reached: that Msf is the factor, dM its resolution.
+!> increment is halved, down to RESOLUTION. An increment of RESOLUTION that fails too may be
+!> the solver stalling from a state reached by coarse steps (non-associated soil near its
+!> factor), not the failure: the same Msf is sought again from the last equilibrium in
+!> increments of RESOLUTION/SUBSTEPS (each by the whole chain, growing again as above once
+!> converged), and only when one of those fails is no equilibrium found beyond the Msf
+!> reached: that Msf is the factor, the failed step (at most RESOLUTION/SUBSTEPS) its
+!> resolution. Past the Msf sought again the smallest step is RESOLUTION again.
 !> MAX_INCREMENTS used before makes the Msf reached a lower bound (status stopped).
 module pecplas_solve_safety
    use pecplas_base_kinds, only: wp
@@ -44,6 +49,9 @@ module pecplas_solve_safety
    integer, parameter :: EASY_ITERATIONS = 4
    !> The mechanism: the displacements of the last MECHANISM_INCREMENTS increments.
    integer, parameter :: MECHANISM_INCREMENTS = 3
+   !> A failed trial of RESOLUTION is sought again in this many increments from the last
+   !> equilibrium before the factor is claimed (module header).
+   real(wp), parameter :: SUBSTEPS = 4.0_wp
 
 contains
 
@@ -63,9 +71,10 @@ contains
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), u0(:, :), fred(:, :), &
          ulast(:, :, :)
-      real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow
+      real(wp) :: msf, dm, trial, rate, rate_prev, t0, grow, smallest, confirm_until
       integer :: inc, method, k, nnode
       logical :: ok, returned
+      character(len=:), allocatable :: why
 
       t0 = wall_time()
       if (problem%position%resume) then
@@ -93,6 +102,8 @@ contains
          msf = 1.0_wp
          dm = plan%msf_step
          rate_prev = -1.0_wp
+         smallest = plan%resolution
+         confirm_until = -1.0_wp
          inc = 0
          call plan_names(model, plan, res%reduced, res%kept)
          if (.not. run%quiet) write (*, '(a)') ' safety step '//itoa(istep)//' ('// &
@@ -125,13 +136,26 @@ contains
             end if
             deallocate (fred)
             if (.not. ok) then
-               if (dm <= plan%resolution*(1.0_wp + 1.0e-12_wp)) then
-                  res%kind = SAFETY_FACTOR
-                  res%factor = msf
-                  res%resolution = dm
-                  exit
+               if (dm <= smallest*(1.0_wp + 1.0e-12_wp)) then
+                  if (smallest < plan%resolution*(1.0_wp - 1.0e-9_wp)) then
+                     ! the sub-steps of a failed trial of RESOLUTION fail too: the factor
+                     res%kind = SAFETY_FACTOR
+                     res%factor = msf
+                     res%resolution = dm
+                     why = failure_reason(returned, out)
+                     exit
+                  end if
+                  ! a trial of RESOLUTION failed: before the claim, the same Msf is sought
+                  ! from the last equilibrium in SUBSTEPS increments (module header)
+                  smallest = plan%resolution/SUBSTEPS
+                  confirm_until = trial
+                  dm = smallest
+                  if (.not. run%quiet) write (*, '(a)') '   no equilibrium found at Msf = '// &
+                     g6(trial)//' ('//failure_reason(returned, out)//'): sought again in '// &
+                     'steps of '//g6(dm)
+                  cycle
                end if
-               dm = max(0.5_wp*dm, plan%resolution)
+               dm = max(0.5_wp*dm, smallest)
                if (.not. run%quiet) write (*, '(a)') '   no equilibrium at Msf = '// &
                   g6(trial)//' ('//failure_reason(returned, out)//'): Msf step cut to '//g6(dm)
                cycle
@@ -158,7 +182,9 @@ contains
             else
                dm = dm*grow
             end if
-            dm = min(plan%msf_step, max(dm, plan%resolution))
+            ! past the Msf sought again in sub-steps, the resolution is the step's again
+            if (msf >= confirm_until*(1.0_wp - 1.0e-12_wp)) smallest = plan%resolution
+            dm = min(plan%msf_step, max(dm, smallest))
             if (rate > 0.0_wp) rate_prev = rate
          end do
          res%increments = inc
@@ -168,8 +194,9 @@ contains
          case (SAFETY_FACTOR)
             status = RUN_COMPLETED
             message = 'safety factor Msf = '//g6(res%factor)//' (resolution '// &
-               g6(res%resolution)//': no equilibrium at Msf = '// &
-               g6(res%factor + res%resolution)//') after '//itoa(inc)// &
+               g6(res%resolution)//': no equilibrium found at Msf = '// &
+               g6(res%factor + res%resolution)//' by any method of the chain: '//why// &
+               ') after '//itoa(inc)// &
                ' strength-reduction increments in step '//itoa(istep)//' ('// &
                model%steps(istep)%name//'); its displacements are not physical'
          case default
