@@ -182,16 +182,7 @@ contains
       n = 0
       longest = 1
       i = 1
-      do while (i <= len(list))
-         if (list(i:i) == ' ') then
-            i = i + 1
-            cycle
-         end if
-         j = i
-         do while (j < len(list))
-            if (list(j + 1:j + 1) == ' ') exit
-            j = j + 1
-         end do
+      do while (next_word(list, i, j))
          if (list(i:i) /= '(') then
             n = n + 1
             longest = max(longest, j - i + 1)
@@ -201,16 +192,7 @@ contains
       allocate (character(len=longest) :: names(n))
       n = 0
       i = 1
-      do while (i <= len(list))
-         if (list(i:i) == ' ') then
-            i = i + 1
-            cycle
-         end if
-         j = i
-         do while (j < len(list))
-            if (list(j + 1:j + 1) == ' ') exit
-            j = j + 1
-         end do
+      do while (next_word(list, i, j))
          if (list(i:i) /= '(') then
             n = n + 1
             names(n) = list(i:j)
@@ -218,5 +200,24 @@ contains
          i = j + 1
       end do
    end subroutine split_names
+
+   !> The next blank-separated word of `list` from position i on: list(i:j) (i moved to its
+   !> first character); false when only blanks are left.
+   logical function next_word(list, i, j) result(found)
+      character(len=*), intent(in) :: list
+      integer, intent(inout) :: i
+      integer, intent(out) :: j
+      do while (i <= len(list))
+         if (list(i:i) /= ' ') exit
+         i = i + 1
+      end do
+      found = i <= len(list)
+      j = i
+      if (.not. found) return
+      do while (j < len(list))
+         if (list(j + 1:j + 1) == ' ') exit
+         j = j + 1
+      end do
+   end function next_word
 
 end module pecplas_base_suggest
