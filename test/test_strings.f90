@@ -71,6 +71,14 @@ contains
       if (allocated(error)) return
       call check(error, g6(0.990099_wp) == '0.990099' .and. g6(-2.5_wp) == '-2.50000', &
          'g6: six significant digits, no blanks, got '//g6(0.990099_wp)//' '//g6(-2.5_wp))
+      if (allocated(error)) return
+      ! below 0.1 in fixed notation with six significant digits (the round-off of the
+      ! decimal values is far below the seventh digit), scientific outside 1e-4 .. 1e6
+      call check(error, g6(0.0942241_wp) == '0.0942241' .and. g6(-0.00123_wp) == &
+         '-0.00123000' .and. g6(4.38107e-5_wp) == '4.38107E-05' .and. &
+         g6(1234567.0_wp) == '1.23457E+06' .and. g6(0.0_wp) == '0.00000', &
+         'g6 small and large: '//g6(0.0942241_wp)//' '//g6(-0.00123_wp)//' '// &
+         g6(4.38107e-5_wp)//' '//g6(1234567.0_wp)//' '//g6(0.0_wp))
    end subroutine test_integers
 
    !> Each case is a text a person reads in a table: no trailing zeros, a leading 0, no '-0'.

@@ -63,12 +63,25 @@ contains
       end if
    end function decimal_text
 
-   !> Six significant digits, no blanks ("0.990099", "0.438107E-5").
+   !> Six significant digits, no blanks, in the notation an engineer reads: "0.990099",
+   !> "0.0942241", "-2.50000"; outside 1e-4 <= |x| < 1e6 in scientific notation
+   !> ("4.38107E-05", "1.23457E+06").
    pure function g6(x) result(s)
       real(wp), intent(in) :: x
       character(len=:), allocatable :: s
       character(len=32) :: buf
-      write (buf, '(g0.6)') x
+      character(len=16) :: fmt
+      real(wp) :: ax
+      ax = abs(x)
+      if (ax >= 1.0e-4_wp .and. ax < 0.1_wp) then
+         ! digits after the point for six significant ones (0.0942241: 7)
+         write (fmt, '(a,i0,a)') '(f24.', 5 - floor(log10(ax)), ')'
+         write (buf, fmt) x
+      else if (ax > 1.0e-99_wp .and. ax < 1.0e99_wp .and. (ax < 1.0e-4_wp .or. ax >= 1.0e6_wp)) then
+         write (buf, '(es12.5e2)') x
+      else
+         write (buf, '(g0.6)') x
+      end if
       s = trim(adjustl(buf))
    end function g6
 
