@@ -10,6 +10,7 @@
 !> Gauss rule exact for the integrand's degree integrates the load exactly.
 module pecplas_water_wet_parts
    use pecplas_base_kinds, only: wp
+   use pecplas_base_sort, only: sort_short
    use pecplas_water_phreatic, only: phreatic_t
    implicit none (type, external)
    private
@@ -123,18 +124,7 @@ contains
    !> Sorts v ascending and drops repeated values.
    pure subroutine sort_unique(v)
       real(wp), allocatable, intent(inout) :: v(:)
-      real(wp) :: t
-      integer :: i, j
-      do i = 2, size(v)
-         t = v(i)
-         j = i - 1
-         do while (j >= 1)
-            if (.not. v(j) > t) exit
-            v(j + 1) = v(j)
-            j = j - 1
-         end do
-         v(j + 1) = t
-      end do
+      call sort_short(v)
       v = pack(v, [.true., v(2:) > v(:size(v) - 1)])
    end subroutine sort_unique
 
