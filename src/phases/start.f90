@@ -865,8 +865,9 @@ contains
       changed = any(now /= before) .or. istep == 1 .or. &
          model%water%plate_side_at(s, istep - 1) /= PLATE_FREE
       if (.not. changed) return
-      call add_line(lines, 'water on the free faces of plate set '//model%plates(s)%name// &
-         ': '//itoa(count(now > 0))//' of its '//itoa(size(now))//' elements on the left, '// &
+      call add_line(lines, 'free faces of plate set '//model%plates(s)%name// &
+         ' (no soil against them; water acts below the level): '// &
+         itoa(count(now > 0))//' of its '//itoa(size(now))//' elements on the left, '// &
          itoa(count(now < 0))//' on the right')
    end subroutine free_water_line
 
