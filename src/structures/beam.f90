@@ -62,6 +62,19 @@ contains
       t = (x(:, 2) - x(:, 1))/h
    end subroutine beam_frame
 
+   !> The frame of the linked-interpolation 2-node element: chord length h, tangent t,
+   !> normal n = (-t_y, t_x), the ratio om of bending to shear stiffness
+   !> (EI/(1 - nu^2)/GA_s) and the local-to-global map g.
+   pure subroutine linked_frame(x, section, h, t, n, om, g)
+      real(wp), intent(in) :: x(:, :)
+      type(plate_section_t), intent(in) :: section
+      real(wp), intent(out) :: h, t(2), n(2), om, g(4, 6)
+      call beam_frame(x, h, t)
+      n = [-t(2), t(1)]
+      om = section%ei/(1.0_wp - section%nu**2)/shear_stiffness(section)
+      g = local_to_global(n)
+   end subroutine linked_frame
+
    !> The integration points of the element with nodes x(2, nen). `axisym`: 2 pi r weights
    !> and hoop rows; else `thickness` (out of plane) weights and zero hoop rows.
    subroutine beam_points(x, section, axisym, thickness, pts, error)
@@ -120,10 +133,7 @@ contains
       real(wp) :: h, t(2), n(2), om, s, r, g(4, 6), dw(4), dth(4), dk(4), dg(4), us(6)
       real(wp) :: xi(3), wt(3)
       integer :: p
-      call beam_frame(x, h, t)
-      n = [-t(2), t(1)]
-      om = section%ei/(1.0_wp - section%nu**2)/shear_stiffness(section)
-      g = local_to_global(n)
+      call linked_frame(x, section, h, t, n, om, g)
       if (axisym) then
          xi = GAUSS
          wt = GAUSS_W
@@ -231,10 +241,7 @@ contains
       integer :: p, k
       fe = 0.0_wp
       if (size(x, 2) == 2) then
-         call beam_frame(x, h, t)
-         n = [-t(2), t(1)]
-         om = section%ei/(1.0_wp - section%nu**2)/shear_stiffness(section)
-         g = local_to_global(n)
+         call linked_frame(x, section, h, t, n, om, g)
          do p = 1, 3
             xi = 0.5_wp*(XG(p) + 1.0_wp)
             s = xi*h
@@ -290,10 +297,7 @@ contains
       integer :: i, k
       fe = 0.0_wp
       if (size(x, 2) == 2) then
-         call beam_frame(x, h, t)
-         n = [-t(2), t(1)]
-         om = section%ei/(1.0_wp - section%nu**2)/shear_stiffness(section)
-         g = local_to_global(n)
+         call linked_frame(x, section, h, t, n, om, g)
          do i = 1, 3
             tl = 0.5_wp*(X3(i) + 1.0_wp)
             a = a0 + tl*(a1 - a0)
