@@ -19,12 +19,11 @@ psi = 0 slope is path dependent: from the deck's state every method stagnates at
 RESOLUTION/4 (and with 4 times the iteration cap), while the path of modified Newton's run
 goes on to 1.29 (and a run with MAX_ITERATIONS=200 throughout to 1.298).
 """
-import subprocess
 from pathlib import Path
 
 import pytest
 
-from pecplas_exe import pecplas_cmd
+from deck_runs import run_text
 from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -34,12 +33,7 @@ RESOLUTION = 0.005
 
 
 def factor_of(text, tmp_path, name):
-    deck = tmp_path / f"{name}.inp"
-    deck.write_text(text)
-    out = tmp_path / f"{name}.h5"
-    p = subprocess.run(pecplas_cmd() + [str(deck), "-o", str(out), "--quiet"],
-                       capture_output=True, text=True, cwd=ROOT, timeout=600)
-    assert out.exists(), p.stderr
+    p, out = run_text(text, tmp_path, name, timeout=600)
     with Results(out) as r:
         assert r.status == "completed", r.attr("status_message")
         kind = r.file["safety"].attrs["kind"]

@@ -36,32 +36,21 @@
 """
 import math
 import re
-import subprocess
 from pathlib import Path
 
 from footing_decks import deck as footing_deck
-from pecplas_exe import pecplas_cmd
+from deck_runs import run_text
 from pecplas_py.results import Results
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "test" / "data"
 
 
-def run(text, tmp_path, name):
-    deck = tmp_path / f"{name}.inp"
-    deck.write_text(text)
-    out = tmp_path / f"{name}.h5"
-    p = subprocess.run(pecplas_cmd() + [str(deck), "-o", str(out), "--quiet"],
-                       capture_output=True, text=True, cwd=ROOT, timeout=300)
-    assert out.exists(), p.stderr
-    return p, out
-
-
 def test_safety_factor_under_modified_newton_with_katona(tmp_path):
     text = (DATA / "safety" / "infinite_slope_psi0.inp").read_text()
     assert "METHOD=NEWTON" in text
     text = text.replace("METHOD=NEWTON", "METHOD=MODIFIED_NEWTON")
-    p, out = run(text, tmp_path, "psi0_modified")
+    p, out = run_text(text, tmp_path, "psi0_modified")
     beta, phi = math.radians(20.0), math.radians(35.0)
     davis = math.tan(phi) / math.tan(math.asin(math.tan(beta)))
     with Results(out) as r:
@@ -77,7 +66,7 @@ def test_arc_budget_after_a_fall_names_the_peak(tmp_path):
     text = (DATA / "modjoin" / "fe_cnl_force_arc.inp").read_text()
     text = text.replace("FILE=block_mesh.inc", f"FILE={DATA / 'modjoin' / 'block_mesh.inc'}")
     assert "MAX_INCREMENTS=600" in text
-    p, out = run(text.replace("MAX_INCREMENTS=600", "MAX_INCREMENTS=89"), tmp_path, "budget89")
+    p, out = run_text(text.replace("MAX_INCREMENTS=600", "MAX_INCREMENTS=89"), tmp_path, "budget89")
     assert p.returncode == 3
     with Results(out) as r:
         message = r.attr("status_message")
@@ -96,7 +85,7 @@ def test_arc_step_ends_on_its_node_displacement(tmp_path):
     solver = "*SOLVER, METHOD=NEWTON, MAX_ITERATIONS=30, MAX_CUTS=8"
     settle = footing_deck(nf=2, stiff_footing=True, drive="settle", settle=0.03, increments=6,
                           solver=solver)
-    p, out = run(settle, tmp_path, "settle")
+    p, out = run_text(settle, tmp_path, "settle")
     with Results(out) as r:
         assert r.status == "completed", r.attr("status_message")
         ids = [int(v) for v in re.search(r"\*NSET, NAME=footing\n([\d, \n]+?)\*", settle)
@@ -108,7 +97,7 @@ def test_arc_step_ends_on_its_node_displacement(tmp_path):
     arc = footing_deck(nf=2, stiff_footing=True, drive="pressure", pressure=70.0, increments=10,
                        solver=solver, step_options=", CONTROL=ARC_LENGTH, MAX_INCREMENTS=200, "
                        f"NODE={ids[0]}, DOF=Y, DISPLACEMENT=-0.02")
-    p, out = run(arc, tmp_path, "arc_node")
+    p, out = run_text(arc, tmp_path, "arc_node")
     assert p.returncode == 0, p.stderr
     with Results(out) as r:
         assert r.status == "completed", r.attr("status_message")
@@ -128,7 +117,7 @@ def test_katona_arc_step_ends_on_its_node_displacement(tmp_path):
         deck = text.replace("*STEP, NAME=push, INCREMENTS=4\npush, 1",
                             f"*STEP, NAME=push, INCREMENTS={n}, CONTROL=ARC_LENGTH, "
                             "MAX_INCREMENTS=100, NODE=11, DOF=X, DISPLACEMENT=1e-3\npush, 1")
-        p, out = run(deck, tmp_path, f"pad_node_{n}")
+        p, out = run_text(deck, tmp_path, f"pad_node_{n}")
         with Results(out) as r:
             assert r.status == "completed", r.attr("status_message")
             u = r.field(r.keys[-1], "displacement")[r.node_index(11), 0]
@@ -141,7 +130,7 @@ def test_katona_arc_step_ends_on_its_node_displacement(tmp_path):
 def test_history_residuals_within_the_tolerance(tmp_path):
     text = (DATA / "katona" / "s1_open_close.inp").read_text()
     assert "*SOLVER, TOLERANCE=1e-4" in text
-    p, out = run(text, tmp_path, "katona_open_close")
+    p, out = run_text(text, tmp_path, "katona_open_close")
     with Results(out) as r:
         assert r.status == "completed", r.attr("status_message")
         residual = r.history("residual")
