@@ -45,7 +45,8 @@ contains
       do while (sc%next())
          section = sc%token()
          if (.not. got_format .and. section /= '$MeshFormat') then
-            call sc%fail(error, '$MeshFormat', 'not a Gmsh file: $MeshFormat expected first, got '''//section//'''')
+            call sc%fail(error, '$MeshFormat', &
+               'not a Gmsh file: $MeshFormat expected first, got '''//section//'''')
             return
          end if
          select case (section)
