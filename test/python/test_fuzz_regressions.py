@@ -31,6 +31,11 @@ MUTANTS = {
     "joint_negative_radius": ("test/data/katona/float_goodman6_axi.inp", "deck",
                               "\n25, 0.3, 0\n", "\n25, 0.7, 0\n",
                               "joint element 1", "deck"),
+    # the same with the midside node of a loaded edge: 'axisymmetric edge load at r < 0'
+    # named no file, line, load or element
+    "edge_load_negative_radius": ("test/data/katona/float_goodman6_axi.inp", "deck",
+                                  "\n1018, 0.3, 0.5\n", "\n1018, 0.7, 0.5\n",
+                                  "axisymmetric edge load at r < 0", "deck"),
     # the mesh of the stray token above with classic Mac OS line ends (a carriage return
     # alone): its line numbers stayed 1
     "gmsh_cr_only_line": ("test/data/user/good_gmsh_group_phase.inp", "mesh-cr",
