@@ -30,7 +30,8 @@ MUTANTS = {
     # negative radius at an integration point was an error naming no file or line
     "joint_negative_radius": ("test/data/katona/float_goodman6_axi.inp", "deck",
                               "\n25, 0.3, 0\n", "\n25, 0.7, 0\n",
-                              "joint element 1", "deck"),
+                              "joint element 107 of set joint: axisymmetric joint element with a "
+                              "negative radius", "deck"),
     # the same with the midside node of a loaded edge: 'axisymmetric edge load at r < 0'
     # named no file, line, load or element
     "edge_load_negative_radius": ("test/data/katona/float_goodman6_axi.inp", "deck",

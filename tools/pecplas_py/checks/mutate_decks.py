@@ -1,22 +1,31 @@
 #!/usr/bin/env python3
-"""Mutation testing of the deck reader and the run: random mutations of the decks under
-input/ (lines deleted, duplicated or swapped, numbers swapped or replaced by huge, negative,
-NaN or garbage values, truncated files, random keyword lines, a byte order mark; for a deck
-with *MESH, half of the time its Gmsh file is mutated instead), each run
-by the release `pecplas` with a timeout, and the outcome classified:
+"""Mutation testing (fuzzing) of the deck reader and the run: random mutations of the decks
+under input/ and test/data (or of the mesh and include files they read), each run by the
+release `pecplas` with a timeout, and the outcome classified (doc/tools.md, Fuzzing):
 
-  completed (exit 0) | input error (exit 2) | stopped (exit 3)
-  crash (any other exit code, or a signal) | hang (timeout)
-  no line (exit 2 whose message names no file:line; a whole-deck error such as "no *STEP"
-           names the deck with line 0 and is counted apart as "whole deck")
-  file left (exit 2 with a results file written)
+  completed (exit 0) | input error (exit 2, "file:line: [KEYWORD] ...") | stopped (exit 3)
+  whole deck (exit 2 about the whole deck, such as "no *STEP": the deck named, no line)
+  crash (another exit code, a signal, or a runtime error / backtrace on stderr)
+  hang (timeout)
+  no line (exit 2 whose message names no file:line) | no keyword (no [KEYWORD])
+  file left (exit 2 with anything written to the output folder)
+  silent (a value doc/deck.md refuses, put in by the mutation, run to exit 0 or 3 without
+          an error or a warning)
+
+Mutations: mutate_once (lines deleted, duplicated, swapped, cut short; numbers replaced by
+garbage or extreme values; random keyword lines) and mutate_targeted (stray comma, tab,
+non-ASCII bytes, misspelt keyword or name, dropped parameter, empty data line, undefined or
+repeated node, same coordinates, refused material values, ...); then sometimes a byte order
+mark, a truncated file, CRLF or CR-only line ends.
 
 Usage: checks/mutate_decks.py [-n 10000] [--exe build/.../pecplas] [--timeout 20]
-       [--seed 1] [--keep DIR] [--jobs 1] [--json FILE] [--sources DECK ...]
+       [--seed 1] [--first 0] [--keep DIR] [--jobs 1] [--json FILE] [--messages FILE]
+       [--sources DECK ...]
 Only source decks whose unmutated run takes less than --max-source-seconds are used (also
-among those given with --sources), so that the run stays short and a timeout is a hang. Failing cases are copied to --keep (default
-build/mutate_decks) with their stderr, to reproduce them. Exit 1 when any crash, hang, no
-line or file left was seen."""
+among those given with --sources), so that the run stays short and a timeout is a hang.
+Failing cases are copied to --keep (default build/mutate_decks) with their stderr and
+mutations, to reproduce them. Exit 1 when any defect (crash, hang, no line, no keyword,
+file left, silent) was seen."""
 import argparse
 import json
 import random
@@ -85,16 +94,16 @@ def mutate_once(lines, rng):
     return lines
 
 
-NAME_PARAM = re.compile(r"\b(NAME|SET|MATERIAL|LAW|SIDE|EDGES|FACES|PATTERN|NSET|ELSET)\s*=\s*([^,\s]+)",
-                        re.I)
+NAME_PARAM = re.compile(r"\b(NAME|SET|MATERIAL|LAW|SIDE|EDGES|FACES|PATTERN|NSET|ELSET)"
+                        r"\s*=\s*([^,\s]+)", re.I)
 PARAM = re.compile(r",\s*[A-Za-z_]+\s*=\s*[^,]*")
 # values a deck must refuse (doc/deck.md): key = value on a data line -> nonsense replacements
 NONSENSE = {"E": ["-1e4", "0"], "NU": ["0.5", "0.7", "-1.5"], "KN": ["-1e5"],
             "KS": ["-1e5"], "EA": ["-1e6", "0"], "EI": ["-1e3"],
             "THICKNESS": ["-0.1", "0"], "PHI": ["-5", "95"], "C": ["-10"],
             "GAMMA": ["-18"], "K0": ["-0.5"], "SPACING": ["-1", "0"], "LENGTH": ["-1", "0"]}
-KEYVAL = re.compile(r"\b(" + "|".join(NONSENSE) + r")\s*=\s*([-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?)",
-                    re.I)
+KEYVAL = re.compile(r"\b(" + "|".join(NONSENSE) + r")\s*=\s*"
+                    r"([-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?)", re.I)
 NONASCII = ["\u00e9", "\u00a0", "\u2013", "\udce9", "\udcff", "\ufeff", "\u00b5"]
 
 
@@ -226,9 +235,9 @@ def mutate_targeted(lines, rng):
         if not nums:
             return lines, None, False
         m = rng.choice(nums)
-        lines[i] = lines[i][:m.start()] + rng.choice(["one", "1,0", "1 0", "1e", "e5", "--1",
-                                                        "+-2", "1..0", "NaN", "Infinity", "1e300"]) \
-            + lines[i][m.end():]
+        text = rng.choice(["one", "1,0", "1 0", "1e", "e5", "--1", "+-2", "1..0", "NaN",
+                           "Infinity", "1e300"])
+        lines[i] = lines[i][:m.start()] + text + lines[i][m.end():]
     elif kind == "lowercase":
         lines[i] = lines[i].lower()
     return lines, kind, False
