@@ -10,6 +10,10 @@ module test_water_curve
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
+   use pecplas_cmd_pecplas, only: run_deck
+   use pecplas_problem_type, only: problem_t
+   use pecplas_io_results_increment, only: plate_fields_t
+   use pecplas_fe_plate_output, only: plate_results
    use pecplas_base_files, only: make_directories
    use pecplas_base_strings, only: itoa
    use pecplas_fe_water_faces, only: plate_water_load, add_water_faces
@@ -17,7 +21,8 @@ module test_water_curve
    implicit none (type, external)
    private
 
-   public :: test_curved_wall, test_curved_trough, test_curved_shell, test_curved_face
+   public :: test_curved_wall, test_curved_wall_run, test_curved_trough, test_curved_shell, &
+      test_curved_face
 
    character(len=*), parameter :: OUT = 'build/test_out/water/'
    real(wp), parameter :: GW = 10.0_wp, PI = acos(-1.0_wp)
@@ -27,6 +32,9 @@ module test_water_curve
    !> there); about 5 elements x 2 parts x 4 points x 3 nodes = 120 terms of some 20
    !> operations each: 2.4e3 eps ~ 5e-13 of the resultant's scale. Tolerance 1e-12.
    real(wp), parameter :: TOL = 1.0e-12_wp
+   !> The curved wall x = u (10 - u) / 20, y = u (coefficients from the constant up).
+   real(wp), parameter :: WALL_X(3) = [0.0_wp, 0.5_wp, -0.05_wp], &
+      WALL_Y(3) = [0.0_wp, 1.0_wp, 0.0_wp]
 
 contains
 
@@ -42,9 +50,47 @@ contains
    subroutine test_curved_wall(error)
       type(error_t), allocatable, intent(out) :: error
       real(wp), parameter :: LEVELS(4) = [6.3_wp, 7.0_wp, 6.0_wp, 12.0_wp]
-      real(wp), parameter :: XC(3) = [0.0_wp, 0.5_wp, -0.05_wp], YC(3) = [0.0_wp, 1.0_wp, 0.0_wp]
-      call curve_case(error, 'wall', XC, YC, 0.0_wp, 10.0_wp, 5, LEVELS, .false.)
+      call curve_case(error, 'wall', WALL_X, WALL_Y, 0.0_wp, 10.0_wp, 5, LEVELS, .false.)
    end subroutine test_curved_wall
+
+   !> The curved wall of test_curved_wall clamped at its base, the water to 6.3 on its left,
+   !> released by a nil step: the cantilever is statically determinate, so its base section
+   !> forces (the element's nodal forces less its own water load, in its frame at the base:
+   !> t = (1/2, 1)/sqrt(5/4), n = (-t_y, t_x)) are those of the water's resultant F and
+   !> moment M about the base: N = t.F, Q = n.F, M. The load is exact; the solve leaves a
+   !> residual of n eps |K||u| with |K||u| ~ F L^2 EA/EI (a curved element's membrane
+   !> stiffness EA/L against its bending displacement F L^3/EI, L = 2 m): 33 eps 400 ~ 3e-12
+   !> relative of |F| (measured: 4e-12 of N = t.F, a difference of terms 5 times larger,
+   !> 3e-13 of Q, 6e-13 of M); tolerance 1e-10 as test_wall_level_inside.
+   subroutine test_curved_wall_run(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      type(plate_fields_t) :: f
+      real(wp), parameter :: LEVEL(1) = [6.3_wp]
+      character(len=:), allocatable :: deck
+      real(wp) :: fc(2), mc, t(2), n(2)
+      integer :: code
+      deck = OUT//'curved_wall_run.inp'
+      call write_curve(deck, 'wall_run', WALL_X, WALL_Y, 0.0_wp, 10.0_wp, 5, LEVEL, .false.)
+      code = run_deck(deck, OUT//'curved_wall_run.h5', .true., model, problem)
+      call check(error, code == 0, 'curved wall runs (exit '//itoa(code)//')')
+      if (allocated(error)) return
+      call plate_results(model, problem%state%u, problem%state%plates, &
+         problem%state%factors, 1, f, error, level=1)
+      if (allocated(error)) return
+      call closed_form(WALL_X, WALL_Y, LEVEL(1), 0.0_wp, LEVEL(1), .false., fc, mc)
+      t = [0.5_wp, 1.0_wp]/sqrt(1.25_wp)
+      n = [-t(2), t(1)]
+      call check_close(error, f%node_forces(1, 1), dot_product(t, fc), 1.0e-10_wp, &
+         'curved wall: base N = t . F')
+      if (allocated(error)) return
+      call check_close(error, f%node_forces(2, 1), dot_product(n, fc), 1.0e-10_wp, &
+         'curved wall: base Q = n . F')
+      if (allocated(error)) return
+      call check_close(error, f%node_forces(3, 1), mc, 1.0e-10_wp, &
+         'curved wall: base M = the moment of the water about the base')
+   end subroutine test_curved_wall_run
 
    !> A trough y = x^2 / 4 from x = -3 to 5 (four 3-node elements walked in +x), water on
    !> its left (above it) to the level 2.5, which crosses it at x = sqrt(10) inside element 4
@@ -140,34 +186,12 @@ contains
       integer, intent(in) :: ne
       logical, intent(in) :: axisym
       type(model_t) :: model
-      real(wp) :: fe(9), f(2), m, fc(2), mc, ui, scale, x(2)
+      real(wp) :: fe(9), f(2), m, fc(2), mc, scale, x(2)
       character(len=:), allocatable :: deck
-      character(len=80) :: line
       logical :: loaded
-      integer :: u, i, e, k, node, lv
-      call make_directories(OUT)
+      integer :: e, k, node, lv
       deck = OUT//'curved_'//name//'.inp'
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'water on a curved plate: '//name
-      if (axisym) write (u, '(a)') '*ANALYSIS, TYPE=AXISYMMETRIC'
-      write (u, '(a)') '*NODES'
-      do i = 0, 2*ne
-         ui = u0 + (u1 - u0)*real(i, wp)/real(2*ne, wp)
-         write (line, '(i0,2(a,es24.16e3))') i + 1, ', ', poly_at(xc, ui), ', ', poly_at(yc, ui)
-         write (u, '(a)') trim(line)
-      end do
-      write (u, '(a)') '*PLATE, SET=curve, EA=1e7, EI=1e5'
-      do e = 1, ne
-         write (u, '(i0,a,i0,a,i0)') 2*e - 1, ', ', 2*e + 1, ', ', 2*e
-      end do
-      write (u, '(a)') '*BOUNDARY', '1, ALL'
-      do lv = 1, size(levels)
-         write (line, '(a,i0,a,es24.16e3)') '*WATER, NAME=w', lv, ', GAMMA_W=10, LEVEL=', &
-            levels(lv)
-         write (u, '(a)') trim(line)
-      end do
-      write (u, '(a)') '*PLATE_WATER', 'curve, LEFT', '*STEP, NAME=nil', '*END STEP'
-      close (u)
+      call write_curve(deck, name, xc, yc, u0, u1, ne, levels, axisym)
       call read_deck(deck, model, error)
       if (allocated(error)) return
       do lv = 1, size(levels)
@@ -198,6 +222,41 @@ contains
          if (allocated(error)) return
       end do
    end subroutine curve_case
+
+   !> Writes the deck `path` of the plate (X(u), Y(u)), u0 <= u <= u1 in ne 3-node elements
+   !> (nodes at the ends and middles of equal steps of u), clamped at its first node, with
+   !> one *WATER level per entry of `levels`, the water on the plate's left, a nil step.
+   subroutine write_curve(path, name, xc, yc, u0, u1, ne, levels, axisym)
+      character(len=*), intent(in) :: path, name
+      real(wp), intent(in) :: xc(:), yc(:), u0, u1, levels(:)
+      integer, intent(in) :: ne
+      logical, intent(in) :: axisym
+      character(len=80) :: line
+      real(wp) :: ui
+      integer :: u, i, e, lv
+      call make_directories(OUT)
+      open (newunit=u, file=path, status='replace', action='write')
+      write (u, '(a)') '*TITLE', 'water on a curved plate: '//name
+      if (axisym) write (u, '(a)') '*ANALYSIS, TYPE=AXISYMMETRIC'
+      write (u, '(a)') '*NODES'
+      do i = 0, 2*ne
+         ui = u0 + (u1 - u0)*real(i, wp)/real(2*ne, wp)
+         write (line, '(i0,2(a,es24.16e3))') i + 1, ', ', poly_at(xc, ui), ', ', poly_at(yc, ui)
+         write (u, '(a)') trim(line)
+      end do
+      write (u, '(a)') '*PLATE, SET=curve, EA=1e7, EI=1e5'
+      do e = 1, ne
+         write (u, '(i0,a,i0,a,i0)') 2*e - 1, ', ', 2*e + 1, ', ', 2*e
+      end do
+      write (u, '(a)') '*BOUNDARY', '1, ALL'
+      do lv = 1, size(levels)
+         write (line, '(a,i0,a,es24.16e3)') '*WATER, NAME=w', lv, ', GAMMA_W=10, LEVEL=', &
+            levels(lv)
+         write (u, '(a)') trim(line)
+      end do
+      write (u, '(a)') '*PLATE_WATER', 'curve, LEFT', '*STEP, NAME=nil', '*END STEP'
+      close (u)
+   end subroutine write_curve
 
    !> The end of the wet part of u0 <= u <= u1 under the level h, for the curves here (wet
    !> from u0 on, Y rising at the crossing): u1, or the root of Y(u) = h in (u0, u1).
