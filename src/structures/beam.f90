@@ -277,8 +277,9 @@ contains
    !> part of the element only, such as a water pressure cut at its level
    !> (pecplas_water_wet_parts). Gauss rules on the part exact for the integrand: 3 points
    !> on the 2-node element (its w cubic, p linear, r linear: degree 5), 4 on the 3-node
-   !> one (N and p quadratic, r quadratic, |dx/dxi| linear on a straight element: degree 7;
-   !> a curved element's |dx/dxi| is no polynomial, as in beam_line_load).
+   !> one (N and p quadratic, r quadratic, |dx/dxi| linear on a straight element: degree 7).
+   !> q is fixed along the element: for a pressure on a curved 3-node element, whose normal
+   !> turns along it, see beam_curved_pressure.
    pure subroutine beam_part_load(x, section, axisym, thickness, q, a0, a1, p3, fe)
       real(wp), intent(in) :: x(:, :), q(2), a0, a1, p3(3)
       type(plate_section_t), intent(in) :: section
