@@ -122,17 +122,20 @@ contains
    !> takes p (-y', 1) into the body, F = gamma_w int (h - y)+ (-y', 1) dx = (0, 0.38730)
    !> (a side whose nodes all lie at or above the level was skipped before: F = 0). Under
    !> the level 0.5 the bottom (from x = 1.5 - sqrt(1.25)) and the right side x = 2 (up to
-   !> y = 0.5, F_x = -gamma_w 0.5^2 / 2) are wet: the curved side was exact already.
+   !> y = 0.5, F_x = -gamma_w 0.5^2 / 2) are wet: the curved side was exact already. A
+   !> 3-node plate along the bottom side with the water on its free face takes the soil
+   !> side's nodal forces (under -0.05, to 1e-12 of the largest; normal to the chord, before,
+   !> it took the resultant (0.176, 0.352) against the side's (0, 0.387)).
    subroutine test_curved_face(error)
       type(error_t), allocatable, intent(out) :: error
       type(model_t) :: model
       real(wp), parameter :: YC(3) = [1.0_wp, -1.5_wp, 0.5_wp], XC(2) = [0.0_wp, 1.0_wp]
       real(wp), parameter :: LEVELS(2) = [-0.05_wp, 0.5_wp]
       real(wp), allocatable :: force(:, :)
-      real(wp) :: f(2), m, x0, scale
-      logical :: none(0)
+      real(wp) :: f(2), m, x0, scale, fe(9)
+      logical :: none(0), loaded
       character(len=:), allocatable :: deck
-      integer :: u, k
+      integer :: u, k, i, c, node
       call make_directories(OUT)
       deck = OUT//'curved_face.inp'
       open (newunit=u, file=deck, status='replace', action='write')
@@ -140,7 +143,8 @@ contains
          '1, 0, 1', '2, 2, 0', '3, 2, 3', '4, 0, 3', '5, 1, 0', '6, 2, 1.5', '7, 1, 3', &
          '8, 0, 2', '*ELEMENTS, TYPE=Q8, SET=soil', '1, 1, 2, 3, 4, 5, 6, 7, 8', &
          '*MATERIAL, NAME=sand, TYPE=ELASTIC', 'E = 1e4, NU = 0.3', &
-         '*SECTION, SET=soil, MATERIAL=sand', '*BOUNDARY', '1, XY', '2, Y', &
+         '*SECTION, SET=soil, MATERIAL=sand', '*PLATE, SET=skin, EA=1e7, EI=1e5', '1, 2, 5', &
+         '*BOUNDARY', '1, XY', '2, Y', &
          '*WATER, NAME=low, GAMMA_W=10, LEVEL=-0.05', '*WATER, NAME=high, GAMMA_W=10, LEVEL=0.5', &
          '*STEP, NAME=nil', '*END STEP'
       close (u)
@@ -171,6 +175,20 @@ contains
             model%mesh%x(2, :)*force(1, :)), m, TOL, 'curved face, level '//itoa(k)// &
             ': moment about the origin', atol=TOL*scale)
          if (allocated(error)) return
+         if (k == 1) then
+            ! a plate on that side, the water on its free (right) face: the same load at its
+            ! nodes 1, 2, 5 (the same pressure on the same parabola; both rules exact)
+            call plate_water_load(model, 1, 1, k, -1, fe, loaded)
+            do i = 1, 3
+               node = model%plates(1)%conn(i, 1)
+               do c = 1, 2
+                  call check_close(error, fe(3*(i - 1) + c), force(c, node), 0.0_wp, &
+                     'curved face: the plate on it takes the same load, node '// &
+                     itoa(model%mesh%node_id(node)), atol=TOL*maxval(abs(force)))
+                  if (allocated(error)) return
+               end do
+            end do
+         end if
          deallocate (force)
       end do
    end subroutine test_curved_face
