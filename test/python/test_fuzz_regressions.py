@@ -37,6 +37,11 @@ MUTANTS = {
     "edge_load_negative_radius": ("test/data/katona/float_goodman6_axi.inp", "deck",
                                   "\n1018, 0.3, 0.5\n", "\n1018, 0.7, 0.5\n",
                                   "axisymmetric edge load at r < 0", "deck"),
+    # a step left without its data line makes the deck phased: its *ADAPT was refused
+    # naming the deck but no line
+    "adapt_phased": ("test/data/user/good_node_forms.inp", "deck",
+                     "INCREMENTS=1\npull, 1.0\n", "INCREMENTS=1\n",
+                     "[*ADAPT] adaptive refinement is not available for a phased deck", "deck"),
     # the mesh of the stray token above with classic Mac OS line ends (a carriage return
     # alone): its line numbers stayed 1
     "gmsh_cr_only_line": ("test/data/user/good_gmsh_group_phase.inp", "mesh-cr",
@@ -66,12 +71,12 @@ def test_fuzz_mutant_refused_cleanly(tmp_path, name):
         if where == "mesh-cr":
             mtext = mtext.replace("\n", "\r")
         mesh.write_text(mtext, newline="")
-        text = text[:m.start(1)] + mesh.name + text[m.end(1):]
+        text = text[:m.start(1)] + str(mesh) + text[m.end(1):]
     else:
         assert old in text
         text = text.replace(old, new, 1)
     # meshes and includes named relative to the source stay reachable
-    text = re.sub(r"^(\*(?:MESH|INCLUDE)\b.*?FILE\s*=\s*)(\.\./\S+)",
+    text = re.sub(r"^(\*(?:MESH|INCLUDE)\b.*?FILE\s*=\s*)([^/,\s][^,\s]*)",
                   lambda q: q.group(1) + str((src.parent / q.group(2)).resolve()), text,
                   flags=re.M | re.I)
     deck.write_text(text)
