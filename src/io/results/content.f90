@@ -3,6 +3,12 @@
 !> written so far, and the phases of a staged run. It writes one increment into one copy of
 !> the file (write_copy) and gives the XDMF text of the increments written (sidecar_text);
 !> the copies, their publishing and the sidecar's files are the results file's.
+!>   /increments/<NNNNNN>  fields of global increment NNNNNN: displacement (2, nnode),
+!>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
+!>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
+!>                joints/<set>/... (see pecplas_io_results_joints); the sets not active
+!>                in the increment's phase have no group there
+!>   /phases/<k>  the phases of a staged run (see pecplas_io_results_phase_log, add_phase)
 module pecplas_io_results_content
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use hdf5, only: hid_t

@@ -1,19 +1,7 @@
-!> The results file of a run (HDF5), written while the run goes on:
-!>   /            attributes program, version, format_version, title, units (the *UNITS line),
-!>                length_unit, force_unit, stress_unit (as read from it), deck_file,
-!>                deck_text, analysis, thickness, threads, the threads of each part and
-!>                the BLAS (see write_threads), created, status, complete,
-!>                status_message, warnings (+ finished, and completed when status = 'completed')
-!>   /mesh        see pecplas_io_results_mesh
-!>   /history     one row per converged increment: step, increment, global_increment, time,
-!>                iterations, residual, cpu_time, fields (1 = field group written) and
-!>                pattern_factors (npattern, nrow); attribute `patterns` (names)
-!>   /increments/<NNNNNN>  fields of global increment NNNNNN: displacement (2, nnode),
-!>                displacement3 (3, nnode, z = 0, for ParaView), reaction, reaction3,
-!>                sets/<set>/{stress, strain (4, ngauss, nel), stress_mean (4, nel)},
-!>                joints/<set>/... (see pecplas_io_results_joints); the sets not active
-!>                in the increment's phase have no group there
-!>   /phases/<k>  the phases of a staged run (see pecplas_io_results_phase_log, add_phase)
+!> The results file of a run (HDF5), written while the run goes on: the root attributes,
+!> /mesh and the empty /history at `create` (pecplas_io_results_start), one history row and
+!> the fields of /increments/<NNNNNN> per increment (pecplas_io_results_content), /phases
+!> (add_phase), /limit, /safety and the run's status at the end (`finish`).
 !> While the run goes on, the file is written as two copies in the target's directory, one
 !> of them always published as `.NAME.h5.<pid>.tmp` (see `temporary_path` and
 !> pecplas_io_results_copies), with its XDMF sidecar (`.NAME.xmf.<pid>.tmp`); `finish`
@@ -26,26 +14,24 @@
 !> published only, which `finish` then completes and renames onto the target: a kill
 !> between that write and the rename (the time of one increment's write) leaves the `.tmp`
 !> one increment behind, still whole; `free` publishes the copy with the final increment.
-!> The sidecar is rewritten whole (through a staging file and a rename) at most once a
-!> second and at most 5 % of the time, and at the end: its cost stays linear in the number
-!> of increments. Test hook: PECPLAS_TEST_FAIL_WRITE=N in the environment makes the N-th
-!> write (`write_increment`, or the warnings found at the end of the run) and every later
-!> write fail as a full disk would.
+!> The sidecar: pecplas_io_results_sidecar; the test hooks that make writes fail:
+!> pecplas_io_results_write_hooks.
 module pecplas_io_results_file
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
-   use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_base_run_status, only: RUN_COMPLETED, is_run_status, status_name
    use pecplas_base_strings, only: itoa
-   use pecplas_base_files, only: rename_file, remove_file, process_id, path_base, free_bytes
+   use pecplas_base_files, only: rename_file, process_id, path_base, free_bytes
    use pecplas_io_results_copies, only: copies_t
    use pecplas_model_type, only: model_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
       joint_points_t, limit_point_t
    use pecplas_io_results_h5, only: h5_init, h5_attr
    use pecplas_io_results_restart, only: restart_data_t
-   use pecplas_io_results_xdmf, only: xdmf_path, write_xdmf
+   use pecplas_io_results_xdmf, only: xdmf_path
+   use pecplas_io_results_sidecar, only: sidecar_t
+   use pecplas_io_results_write_hooks, only: write_hook_t, test_no_kernel_copy
    use pecplas_io_results_content, only: results_content_t
    use pecplas_io_results_start, only: write_start, write_warnings, timestamp
    use pecplas_io_results_limit, only: write_limit_group
@@ -56,24 +42,18 @@ module pecplas_io_results_file
 
    public :: results_file_t, temporary_path
 
-   !> The running sidecar is rewritten at most every XMF_PERIOD seconds and when its last
-   !> write took at most 1/XMF_SHARE of the time since.
-   real(wp), parameter :: XMF_PERIOD = 1.0_wp, XMF_SHARE = 20.0_wp
-
    !> An open results file. Do not copy an open one: the copy would share the HDF5 id.
    type :: results_file_t
       private
       !> The two copies written while the run goes on (the published one is `work`).
       type(copies_t) :: copies
-      !> Targets (.h5 and .xmf), the temporary files of the run (the published copy and its
-      !> sidecar), and the staging name through which every .xmf is written.
-      character(len=:), allocatable :: path, xmf, work, work_xmf, staging
-      !> Fields groups listed in the running .xmf; time of its last write and its cost [s].
-      integer :: xmf_count = -1
-      real(wp) :: xmf_at = 0.0_wp, xmf_cost = 0.0_wp
+      !> The target and the temporary file of the run (the published copy).
+      character(len=:), allocatable :: path, work
+      !> The XDMF sidecar, running and final.
+      type(sidecar_t) :: xmf
       !> Test hook: writes fail from the fail_at-th write on (write_increment, and the
-      !> warnings at the end of the run; 0: never).
-      integer :: fail_at = 0, nwrite = 0
+      !> warnings at the end of the run).
+      type(write_hook_t) :: hook
       !> The first write error of the file (disk full, permissions), kept for the command layer;
       !> broken: the HDF5 library itself failed (its file can no longer be closed cleanly).
       character(len=:), allocatable :: failure
@@ -134,19 +114,15 @@ contains
       call h5_init(error)
       if (allocated(error)) return
       this%path = path
-      this%xmf = xdmf_path(path)
       this%work = temporary_path(path)
-      this%work_xmf = temporary_path(this%xmf)
-      this%staging = this%work_xmf(1:len(this%work_xmf) - 4)//'.new'
+      call this%xmf%init(xdmf_path(path), temporary_path(xdmf_path(path)))
       call this%copies%init(this%work)
-      this%xmf_count = -1
-      this%nwrite = 0
       this%broken = .false.
       this%ended = .false.
       this%bytes = 0
       this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
-      this%fail_at = test_fail_at()
+      call this%hook%init()
       this%copies%kernel = .not. test_no_kernel_copy()
       ! both copies whole and committed before the first is published: a .tmp is readable.
       ! The second is a kernel copy of the first when the system allows, else written.
@@ -167,7 +143,8 @@ contains
          if (i == 1) call this%copies%publish(error)
          if (allocated(error) .or. cloned) exit
       end do
-      if (.not. allocated(error)) call commit(this, .true., error)
+      if (.not. allocated(error)) call this%xmf%commit(this%content, path_base(this%work), &
+         .true., error)
       if (allocated(error)) then
          this%broken = .true.
          call abandon(this)
@@ -185,26 +162,6 @@ contains
       tmp = path(1:i)//'.'//path_base(path)//'.'//itoa(process_id())//'.tmp'
    end function temporary_path
 
-   !> PECPLAS_TEST_FAIL_WRITE (test hook), 0 when unset or not a positive integer.
-   integer function test_fail_at() result(n)
-      character(len=32) :: text
-      integer :: length, stat, ios
-      n = 0
-      call get_environment_variable('PECPLAS_TEST_FAIL_WRITE', text, length, stat)
-      if (stat /= 0 .or. length == 0) return
-      read (text, *, iostat=ios) n
-      if (ios /= 0 .or. n < 0) n = 0
-   end function test_fail_at
-
-   !> PECPLAS_TEST_NO_KERNEL_COPY (test hook) set to 1: the second copy of a new file is
-   !> written by HDF5 rather than copied by the kernel, as where the kernel refuses.
-   logical function test_no_kernel_copy() result(off)
-      character(len=8) :: text
-      integer :: length, stat
-      call get_environment_variable('PECPLAS_TEST_NO_KERNEL_COPY', text, length, stat)
-      off = stat == 0 .and. text == '1'
-   end function test_no_kernel_copy
-
    !> Closes the file and removes its temporary files (a file that could not be created,
    !> a scratch run).
    subroutine abandon(this)
@@ -212,8 +169,7 @@ contains
       integer :: err
       call this%copies%close('both', err)
       call this%copies%remove(.true.)
-      if (allocated(this%work_xmf)) call remove_file(this%work_xmf)
-      if (allocated(this%staging)) call remove_file(this%staging)
+      call this%xmf%remove(.true.)
    end subroutine abandon
 
    !> Replaces the root attribute `warnings` of an open file by `list` (the deck's warnings
@@ -228,7 +184,7 @@ contains
          call fatal_error(error, 'results file: warnings written to a file not open')
          return
       end if
-      call start_write(this, error)
+      call this%hook%count(this%work, error)
       ! into the copy that `finish` completes (the published one is never written)
       if (.not. allocated(error)) call write_warnings(this%copies%id('next'), list, error)
       if (allocated(error)) call this%note_failure(error%text())
@@ -266,7 +222,7 @@ contains
       if (present(final)) last = final
       call this%content%check(inc, error)
       if (allocated(error)) return
-      call start_write(this, error)
+      call this%hook%count(this%work, error)
       if (.not. allocated(error)) call check_space(this, error)
       if (allocated(error)) then
          call this%note_failure(error%text())
@@ -318,7 +274,8 @@ contains
       if (allocated(error)) return
       call this%content%note_written(inc)
       this%ended = final
-      if (.not. final) call commit(this, .false., error)
+      if (.not. final) call this%xmf%commit(this%content, path_base(this%work), .false., &
+         error)
       if (allocated(error)) return
       inquire (file=this%copies%name('next'), size=nbytes)
       if (nbytes > 0) then
@@ -327,24 +284,6 @@ contains
       end if
    end subroutine write_checked
 
-
-   !> Counts one write (an increment, or the warnings at the end of the run) and fails it
-   !> when the test hook says so.
-   subroutine start_write(this, error)
-      class(results_file_t), intent(inout) :: this
-      type(error_t), allocatable, intent(out) :: error
-      this%nwrite = this%nwrite + 1
-      call test_hook(this, error)
-   end subroutine start_write
-
-   !> PECPLAS_TEST_FAIL_WRITE: the fail_at-th write and every later one fail.
-   subroutine test_hook(this, error)
-      class(results_file_t), intent(in) :: this
-      type(error_t), allocatable, intent(out) :: error
-      if (this%fail_at > 0 .and. this%nwrite >= this%fail_at) call fatal_error(error, &
-         'HDF5: cannot write results file '//this%work//' (write '//itoa(this%nwrite)// &
-         ' failed on purpose: PECPLAS_TEST_FAIL_WRITE='//itoa(this%fail_at)//')')
-   end subroutine test_hook
 
    !> Records how the run ended in the copy not published, closes it and renames it onto the
    !> target (then the final XDMF, naming the target), then removes the published copy.
@@ -368,7 +307,7 @@ contains
             '(pecplas_base_run_status)')
          return
       end if
-      if (allocated(this%failure)) call test_hook(this, error)
+      if (allocated(this%failure)) call this%hook%check(this%work, error)
       if (.not. allocated(error) .and. allocated(this%failure)) call check_space(this, error)
       if (allocated(error)) return
       complete = 0
@@ -393,20 +332,18 @@ contains
          return
       end if
       ! the final sidecar is staged first: the two renames then follow each other closely
-      call write_xdmf(this%staging, '', this%content%sidecar_text(path_base(this%path)), error)
+      call this%xmf%finish(this%content, path_base(this%path), .true., error)
       if (allocated(error)) return
       if (.not. rename_file(this%copies%name('next'), this%path)) then
          call fatal_error(error, 'cannot rename '//this%copies%name('next')//' onto '// &
             this%path//'; the finished results are in '//this%copies%name('next'))
          return
       end if
-      if (.not. rename_file(this%staging, this%xmf)) then
-         call fatal_error(error, 'cannot rename '//this%staging//' onto '//this%xmf)
-         return
-      end if
+      call this%xmf%finish(this%content, path_base(this%path), .false., error)
+      if (allocated(error)) return
       ! the running sidecar first (it names the published copy), then the published copy:
       ! names first, then closed (a close may still write)
-      call remove_file(this%work_xmf)
+      call this%xmf%remove(.false.)
       call this%copies%remove(.true.)
       call this%copies%close('both', err)
    end subroutine results_finish
@@ -522,47 +459,13 @@ contains
       end if
       call this%copies%close('both', err)
       if (allocated(error)) deallocate (error)
-      if (.not. allocated(this%failure) .and. this%xmf_count /= size(this%content%written)) &
-         call write_running_xmf(this, error)
+      if (.not. allocated(this%failure) .and. this%xmf%behind(this%content)) &
+         call this%xmf%write_running(this%content, path_base(this%work), error)
    end subroutine results_free
 
    subroutine results_final(this)
       type(results_file_t), intent(inout) :: this
       call this%free()
    end subroutine results_final
-
-   !> After an increment is in both copies: rewrites the running XDMF when it lacks
-   !> increments and `force` or its period has passed (see XMF_PERIOD, XMF_SHARE).
-   subroutine commit(this, force, error)
-      class(results_file_t), intent(inout) :: this
-      logical, intent(in) :: force
-      type(error_t), allocatable, intent(out) :: error
-      real(wp) :: since
-      if (this%xmf_count == size(this%content%written)) return
-      since = clock() - this%xmf_at
-      if (force .or. since >= max(XMF_PERIOD, XMF_SHARE*this%xmf_cost)) &
-         call write_running_xmf(this, error)
-   end subroutine commit
-
-   !> The XDMF of the temporary file, naming it, through the staging file and a rename.
-   subroutine write_running_xmf(this, error)
-      class(results_file_t), intent(inout) :: this
-      type(error_t), allocatable, intent(out) :: error
-      real(wp) :: t0
-      t0 = clock()
-      call write_xdmf(this%work_xmf, this%staging, this%content%sidecar_text(path_base(this%work)), &
-         error)
-      if (allocated(error)) return
-      this%xmf_count = size(this%content%written)
-      this%xmf_at = clock()
-      this%xmf_cost = this%xmf_at - t0
-   end subroutine write_running_xmf
-
-   !> Wall-clock seconds (monotonic).
-   real(wp) function clock()
-      integer(int64) :: count, rate
-      call system_clock(count, rate)
-      clock = real(count, wp)/real(max(rate, 1_int64), wp)
-   end function clock
 
 end module pecplas_io_results_file

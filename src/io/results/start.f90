@@ -1,7 +1,17 @@
-!> The first contents of a results file (pecplas_io_results_file): the root attributes
-!> (provenance, units, deck, threads, status 'running', complete = 0, warnings), the mesh
-!> of every part, the empty /history and /increments, and the units of the datasets.
-!> Also the root attribute `warnings` written again at the end of a run, and `timestamp`.
+!> The first contents of a results file (pecplas_io_results_file):
+!>   /            attributes program, version, format_version, title, units (the *UNITS line),
+!>                length_unit, force_unit, stress_unit (as read from it), deck_file,
+!>                deck_text, analysis, thickness, threads, the threads of each part and
+!>                the BLAS (see write_threads), created, status, complete,
+!>                status_message, warnings (+ finished, and completed when status = 'completed',
+!>                written by `finish`)
+!>   /mesh        see pecplas_io_results_mesh (and the joints', anchors' and plates' meshes)
+!>   /history     one row per converged increment: step, increment, global_increment, time,
+!>                iterations, residual, cpu_time, fields (1 = field group written) and
+!>                pattern_factors (npattern, nrow); attribute `patterns` (names); empty here
+!>   /increments  empty here (pecplas_io_results_content writes the increments)
+!> and the units of the datasets. Also the root attribute `warnings` written again at the
+!> end of a run, and `timestamp`.
 module pecplas_io_results_start
    use hdf5, only: hid_t
    use pecplas_base_kinds, only: wp
