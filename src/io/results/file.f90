@@ -17,12 +17,11 @@
 !> The sidecar: pecplas_io_results_sidecar; the test hooks that make writes fail:
 !> pecplas_io_results_write_hooks.
 module pecplas_io_results_file
-   use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_base_run_status, only: RUN_COMPLETED, is_run_status, status_name
    use pecplas_base_strings, only: itoa
-   use pecplas_base_files, only: rename_file, process_id, path_base, free_bytes
+   use pecplas_base_files, only: rename_file, process_id, path_base
    use pecplas_io_results_copies, only: copies_t
    use pecplas_model_type, only: model_t
    use pecplas_io_results_increment, only: increment_result_t, gauss_coordinates_t, &
@@ -62,8 +61,6 @@ module pecplas_io_results_file
       logical :: ended = .false.
       !> Detached: every write does nothing (the ranks above 0 of an MPI run; rank 0 writes).
       logical, public :: detached = .false.
-      !> Size of a copy after the last increment and what that increment added.
-      integer(int64) :: bytes = 0, growth = 0
       !> The layout, the history rows and increments written, the phases.
       type(results_content_t) :: content
    contains
@@ -119,8 +116,6 @@ contains
       call this%copies%init(this%work)
       this%broken = .false.
       this%ended = .false.
-      this%bytes = 0
-      this%growth = 0
       if (allocated(this%failure)) deallocate (this%failure)
       call this%hook%init()
       this%copies%kernel = .not. test_no_kernel_copy()
@@ -223,7 +218,7 @@ contains
       call this%content%check(inc, error)
       if (allocated(error)) return
       call this%hook%count(this%work, error)
-      if (.not. allocated(error)) call check_space(this, error)
+      if (.not. allocated(error)) call this%copies%check_space(error)
       if (allocated(error)) then
          call this%note_failure(error%text())
          return
@@ -235,20 +230,6 @@ contains
          call this%note_failure(error%text())
       end if
    end subroutine results_write_increment
-
-   !> Refuses to start an increment that may not fit on the disk (twice what the last one
-   !> took in both copies, plus 64 KiB): HDF5 cut short by a full disk leaves a damaged
-   !> last increment (in the copy being written; the published one stays whole).
-   subroutine check_space(this, error)
-      class(results_file_t), intent(in) :: this
-      type(error_t), allocatable, intent(out) :: error
-      integer(int64) :: free, need
-      free = free_bytes(this%work)
-      need = 4*this%growth + 65536_int64
-      if (free >= 0 .and. free < need) call fatal_error(error, 'disk full: '// &
-         itoa(int(free/1024))//' KiB left for '//this%work//', an increment needs about '// &
-         itoa(int(need/1024))//' KiB')
-   end subroutine check_space
 
    !> The writing part of write_increment: the copy written next gets the increment and is
    !> flushed and published, then the other one (no longer published) gets it too. A copy
@@ -262,7 +243,6 @@ contains
       logical, intent(in) :: final
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
-      integer(int64) :: nbytes
       integer :: i
       do i = 1, 2
          call this%content%write_copy(this%copies%id('next'), inc, error, restart)
@@ -277,13 +257,8 @@ contains
       if (.not. final) call this%xmf%commit(this%content, path_base(this%work), .false., &
          error)
       if (allocated(error)) return
-      inquire (file=this%copies%name('next'), size=nbytes)
-      if (nbytes > 0) then
-         this%growth = max(0_int64, nbytes - this%bytes)
-         this%bytes = nbytes
-      end if
+      call this%copies%note_size()
    end subroutine write_checked
-
 
    !> Records how the run ended in the copy not published, closes it and renames it onto the
    !> target (then the final XDMF, naming the target), then removes the published copy.
@@ -308,7 +283,8 @@ contains
          return
       end if
       if (allocated(this%failure)) call this%hook%check(this%work, error)
-      if (.not. allocated(error) .and. allocated(this%failure)) call check_space(this, error)
+      if (.not. allocated(error) .and. allocated(this%failure)) &
+         call this%copies%check_space(error)
       if (allocated(error)) return
       complete = 0
       if (status == RUN_COMPLETED) complete = 1
