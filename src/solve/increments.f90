@@ -80,8 +80,9 @@ contains
          run%fint_conv = problem%position%fint_conv
          istep0 = problem%position%istep
          if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
-         ! a phased run goes on in the phase in force: the new file records it
-         if (problem%phase%phased) then
+         ! a phased run goes on in the phase in force: the new file records it (a safety
+         ! step records its own below)
+         if (problem%phase%phased .and. .not. model%steps(istep0)%safety%on) then
             call record_phase(model, problem, results, istep0, [character(len=LINE_LEN) :: &
                'resumed by a restart (the changes of this phase were made by the run before)'], &
                error)
@@ -98,6 +99,9 @@ contains
                if (allocated(error)) return
             end if
             call safety_step(model, problem, results, run, istep, status, message, error)
+            ! stopped after an increment of it (a signal, --stop-after-increments)
+            if (.not. allocated(error) .and. status == RUN_INTERRUPTED) &
+               call interrupted_status(problem, status, message)
             exit
          end if
          ! a phased run: the step's changes at its start (a resumed step has them already)
