@@ -87,6 +87,15 @@ contains
             call data%add('phase', [real(problem%phase%index, wp)])
             if (allocated(problem%phase%carried)) call data%add('phase_carried', &
                reshape(problem%phase%carried, [size(problem%phase%carried)]))
+            ! gravity loading with water: the held forces of the steady pore pressures and
+            ! the water coming in with the gravity pattern, computed at the phase's start from
+            ! the state of then (replayed from another state, they would differ by roundoff)
+            if (problem%phase%water_pattern > 0) then
+               call data%add('phase_held', reshape(problem%system%initial_force, &
+                  [size(problem%system%initial_force)]))
+               call data%add('phase_water', reshape(problem%system%pattern_force(:, :, &
+                  problem%phase%water_pattern), [size(problem%system%initial_force)]))
+            end if
          end if
          tangents = tangents_carried(model, problem)
          do s = 1, size(st%sets)
@@ -309,6 +318,19 @@ contains
                call data%get('phase_carried', size(st%u), v, error)
                if (allocated(error)) return
                problem%phase%carried = reshape(v, shape(st%u))
+            end if
+            ! (restart data of an earlier version: the replayed ones)
+            if (problem%phase%water_pattern > 0 .and. data%has('phase_held') .and. &
+                data%has('phase_water')) then
+               associate (sys => problem%system)
+                  call data%get('phase_held', size(sys%initial_force), v, error)
+                  if (allocated(error)) return
+                  sys%initial_force = reshape(v, shape(sys%initial_force))
+                  call data%get('phase_water', size(sys%initial_force), v, error)
+                  if (allocated(error)) return
+                  sys%pattern_force(:, :, problem%phase%water_pattern) = &
+                     reshape(v, shape(sys%initial_force))
+               end associate
             end if
             call data%get('u', size(st%u), v, error)
             if (allocated(error)) return
@@ -630,7 +652,7 @@ contains
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
          'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'dtau_prev', 'phase', &
-         'phase_carried', 'safety', 'safety_curve', 'safety_u0', 'safety_ulast']
+         'phase_carried', 'phase_held', 'phase_water', 'safety', 'safety_curve', 'safety_u0', 'safety_ulast']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]
