@@ -180,3 +180,18 @@ def test_restart_equals_uninterrupted_everywhere(tmp_path, deck, points):
         points = sorted(({1, total // 2, total - 1} | ends | {e + 1 for e in ends}) &
                         set(range(1, total)))
     restarts_equal(tmp_path, d, points)
+
+
+def test_restart_under_gravity_loading_with_water(tmp_path):
+    """The slope of input/examples/slope_safety.inp under its weight (gravity loading, a
+    phreatic level: the forces of the steady pore pressures are held and the water comes in
+    with the gravity pattern), in 3 increments, stopped after the first and the second. Those
+    forces were computed again by the restart from the restored displacements instead of the
+    phase start's: the restarted run was 1e-14 (displacements) and 6e-9 (residuals) off."""
+    text = (ROOT / "input/examples/slope_safety.inp").read_text()
+    text = text[:text.index("*STEP, NAME=safety")].replace(
+        "*STEP, NAME=gravity, INCREMENTS=2", "*STEP, NAME=gravity, INCREMENTS=3")
+    assert "INCREMENTS=3" in text
+    deck = tmp_path / "slope_gravity.inp"
+    deck.write_text(text)
+    restarts_equal(tmp_path, deck, [1, 2])
