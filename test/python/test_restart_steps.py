@@ -187,11 +187,16 @@ def test_restart_under_gravity_loading_with_water(tmp_path):
     phreatic level: the forces of the steady pore pressures are held and the water comes in
     with the gravity pattern), in 3 increments, stopped after the first and the second. Those
     forces were computed again by the restart from the restored displacements instead of the
-    phase start's: the restarted run was 1e-14 (displacements) and 6e-9 (residuals) off."""
+    phase start's: the restarted run was 1e-14 (displacements) and 6e-9 (residuals) off.
+    The file says `initial_procedure` = 'gravity loading'."""
     text = (ROOT / "input/examples/slope_safety.inp").read_text()
     text = text[:text.index("*STEP, NAME=safety")].replace(
         "*STEP, NAME=gravity, INCREMENTS=2", "*STEP, NAME=gravity, INCREMENTS=3")
     assert "INCREMENTS=3" in text
     deck = tmp_path / "slope_gravity.inp"
     deck.write_text(text)
-    restarts_equal(tmp_path, deck, [1, 2])
+    full = restarts_equal(tmp_path, deck, [1, 2])
+    # (doc/results.md; the name was cut to 'gravity loadin')
+    with h5py.File(full) as f:
+        assert f.attrs["initial_procedure"] == "gravity loading"
+
