@@ -652,7 +652,8 @@ contains
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
          'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'dtau_prev', 'phase', &
-         'phase_carried', 'phase_held', 'phase_water', 'safety', 'safety_curve', 'safety_u0', 'safety_ulast']
+         'phase_carried', 'phase_held', 'phase_water', 'safety', 'safety_curve', 'safety_u0', &
+         'safety_ulast']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]

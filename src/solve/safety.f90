@@ -34,7 +34,8 @@ module pecplas_solve_safety
    use pecplas_massif_materials_type, only: material_t
    use pecplas_joints_laws_type, only: interface_law_t
    use pecplas_problem_type, only: problem_t
-   use pecplas_problem_safety, only: safety_result_t, safety_walk_t, SAFETY_FACTOR, SAFETY_LOWER_BOUND, &
+   use pecplas_problem_safety, only: safety_result_t, safety_walk_t, SAFETY_FACTOR, &
+      SAFETY_LOWER_BOUND, &
       SAFETY_UNSTABLE, SAFETY_KIND_NAMES
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
