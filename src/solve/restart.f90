@@ -138,6 +138,8 @@ contains
                   call data%add('anchor_'//itoa(s), [merge(1.0_wp, 0.0_wp, a%active), &
                      merge(1.0_wp, 0.0_wp, a%prestressing), a%prestress, a%force, a%plastic, &
                      a%e0])
+                  ! the forces a prestress phase started from (optional on reading)
+                  call data%add('anchor_start_'//itoa(s), a%force_start)
                end associate
             end do
          end if
@@ -364,6 +366,12 @@ contains
                   a%force = v(4:3 + size(a%force))
                   a%plastic = v(4 + size(a%force):3 + 2*size(a%force))
                   a%e0 = v(4 + 2*size(a%force):)
+                  a%force_start = a%force
+                  if (data%has('anchor_start_'//itoa(s))) then
+                     call data%get('anchor_start_'//itoa(s), size(a%force), v, error)
+                     if (allocated(error)) return
+                     a%force_start = v
+                  end if
                end associate
             end do
          end if
