@@ -189,10 +189,14 @@ contains
       names = restart_names(size(problem%state%sets), nj, np)
       ! anchors (each set's activity, prestress, forces, elongations)
       if (allocated(problem%state%anchors%sets)) then
-         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         allocate (anames(size(names) + 2*size(problem%state%anchors%sets)))
          anames(1:size(names)) = names
          do np = 1, size(problem%state%anchors%sets)
             anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         ! and the forces a prestress phase started from (optional)
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + size(problem%state%anchors%sets) + np) = 'anchor_start_'//itoa(np)
          end do
          deallocate (names)
          allocate (character(len=64) :: names(size(anames)))

@@ -47,3 +47,29 @@ def test_prestress_force_is_the_acting_one_at_every_increment(tmp_path):
                 assert abs(n - (n0 + tau * (target - n0))) <= TOL, (step, i, n)
                 assert abs(f - n / SPACING) <= TOL, (step, i, f, n)
                 assert abs(ry - f) <= TOL, (step, i, ry, f)
+
+
+def test_restart_inside_the_prestress_step_reports_the_same_forces(tmp_path):
+    """A run stopped after increment 2 (tau = 0.25 of the prestress) and restarted reports the
+    forces of the uninterrupted run: the force the step started from is in the restart data
+    (it reported P from the restart on when it was not). Same linear problem, same bound."""
+    import subprocess
+    from deck_runs import ROOT
+    from pecplas_exe import pecplas_cmd
+    _, full = run_text(deck(), tmp_path, "full")
+    deck_path = tmp_path / "full.inp"
+    part, rest = tmp_path / "part.h5", tmp_path / "rest.h5"
+    p = subprocess.run(pecplas_cmd() + [str(deck_path), "-o", str(part), "--quiet",
+                                        "--stop-after-increments", "2"],
+                       capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert p.returncode == 4, p.stderr
+    p = subprocess.run(pecplas_cmd() + [str(deck_path), "--restart", str(part), "-o", str(rest),
+                                        "--quiet"], capture_output=True, text=True, cwd=ROOT,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    with Results(full) as a, Results(rest) as b:
+        assert b.status == "completed" and len(b.keys) == 5
+        for k in b.keys:
+            na = a.increment(k)["anchors/prop/force"][()][0]
+            nb = b.increment(k)["anchors/prop/force"][()][0]
+            assert abs(na - nb) <= TOL, (k, na, nb)
