@@ -225,6 +225,8 @@ contains
       if (allocated(error)) then
          status = RUN_FAILED
          message = error%text()
+         ! the run's error is its status: the file keeps what converged and says why it ended
+         deallocate (error)
       end if
       ! a warning keeps the status and exit code; it goes to stderr, the message and the file
       warning = large_displacement_warning(model%mesh%x, problem%state%u)
