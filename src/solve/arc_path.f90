@@ -35,13 +35,25 @@ module pecplas_solve_arc_path
    implicit none (type, external)
    private
 
-   public :: trace_arc, BEYOND_PEAK
+   public :: trace_arc, BEYOND_PEAK, conjugate_displacement
 
-   !> The path has become flat when |current stiffness parameter| stays below this for
-   !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
-   !> limit is where the plateau began, traced FLAT_COUNT - 1 increments beyond.
-   real(wp), parameter :: SP_FLAT = 2.0e-3_wp
+   !> A plateau window opens where |current stiffness parameter| falls below SP_FLAT and
+   !> counts once it has stayed there FLAT_COUNT increments.
+   real(wp), parameter, public :: SP_FLAT = 2.0e-3_wp
    integer, parameter :: FLAT_COUNT = 3
+   !> The window is a plateau (a limit load to this tolerance) when the displacement
+   !> conjugate to the step's load, measured from the step's start, has doubled in it while
+   !> the load rose by at most this share of itself; a window whose load rose more is closed
+   !> and the next one opens there. Over a doubling of the displacement a load approaching
+   !> its limit as 1/u rises by half its remaining distance to it, so the limit is then at
+   !> most 2 PLATEAU_RISE above the load traced; a locking mesh climbs on by about the same
+   !> share per doubling (doc/theory.md section 4, "Convergence, increment cutting and
+   !> statuses").
+   real(wp), parameter, public :: PLATEAU_RISE = 1.0e-3_wp
+   !> On a plateau window the length may grow to this share of the free displacements'
+   !> norm (beyond MAX_LENGTH times the first length), so that the displacement can double
+   !> within the increments of the step or probe.
+   real(wp), parameter :: PLATEAU_STRIDE = 0.5_wp
    !> A maximum counts once the load has fallen in this many increments after it, each
    !> below the peak by more than the load noise of the convergence test (load_noise).
    integer, parameter :: BEYOND_PEAK = 2
@@ -111,6 +123,8 @@ contains
             res%peak_increment = problem%stats%increments
             res%peak_factors = att%factors(tau)
             res%s_peak = sum(fq*problem%state%u)
+            res%s_now = res%s_peak - req%s_step0
+            res%rise = -1.0_wp
             res%beyond = 0
             tr%started = .true.
          end if
@@ -233,15 +247,19 @@ contains
                ! a stiff penalty joint whose states each converge just under the tolerance)
                res%beyond = res%beyond + 1
             end if
+            res%s_now = s - req%s_step0
             nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
-            if (nflat == 1) then
-               res%flat_increment = problem%stats%increments + 1
-               res%tau_flat = tau
+            if (nflat == 1) call open_window(res, problem%stats%increments + 1, tau)
+            call plateau_test(res, nflat, problem%stats%increments + 1, tau)
+            ! the next increment's length, should the path go on (on a plateau window not yet
+            ! established, up to PLATEAU_STRIDE of the displacements, so that they can double)
+            if (nflat >= FLAT_COUNT .and. .not. res%flat) then
+               dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+                  max(step%max_length*dl0, PLATEAU_STRIDE*norm2(free_part(problem, u))))
+            else
+               dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+                  step%max_length*dl0)
             end if
-            res%flat = nflat >= FLAT_COUNT
-            ! the next increment's length, should the path go on
-            dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
-               step%max_length*dl0)
             level = 0
             ! (an increment that lands on the target ends the path: none goes on)
             if (landed) then
@@ -316,6 +334,62 @@ contains
          end if
       end do
    end subroutine land_on_node
+
+   !> A plateau window opens at global increment `inc`, step fraction tau, at the last
+   !> converged state (res%s_now).
+   pure subroutine open_window(res, inc, tau)
+      type(arc_end_t), intent(inout) :: res
+      integer, intent(in) :: inc
+      real(wp), intent(in) :: tau
+      res%flat_increment = inc
+      res%tau_flat = tau
+      res%s_flat = res%s_now
+   end subroutine open_window
+
+   !> Whether the path is on a plateau (res%flat), after a converged increment (global
+   !> number `inc`, step fraction tau, res%s_now) that is the `nflat`-th flat one in a row:
+   !> in the window that began at res%flat_increment the displacement conjugate to the load,
+   !> from the step's start (res%s_flat, res%s_now), has doubled and the load rose by at most
+   !> PLATEAU_RISE of itself (res%rise: the rise). A window whose displacement doubled with
+   !> more rise is closed, and the next one opens at this increment. Before a window has
+   !> doubled the path is no plateau (yet).
+   pure subroutine plateau_test(res, nflat, inc, tau)
+      type(arc_end_t), intent(inout) :: res
+      integer, intent(inout) :: nflat
+      integer, intent(in) :: inc
+      real(wp), intent(in) :: tau
+      real(wp) :: top
+      res%flat = .false.
+      if (nflat < FLAT_COUNT) return
+      if (.not. (res%s_flat > 0.0_wp)) then
+         ! no displacement along the load yet (or against it): no doubling to measure
+         call open_window(res, inc, tau)
+         return
+      end if
+      ! the window's displacement has not doubled yet: no plateau (yet)
+      if (res%s_now < 2.0_wp*res%s_flat) return
+      ! the largest load in the window: the path's peak when it lies in the window
+      top = tau
+      if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
+      res%rise = (top - res%tau_flat)/max(abs(top), tiny(1.0_wp))
+      if (res%rise <= PLATEAU_RISE) then
+         res%flat = .true.
+      else
+         call open_window(res, inc, tau)
+         nflat = FLAT_COUNT
+      end if
+   end subroutine plateau_test
+
+   !> The displacement conjugate to the step's load (factors f0 -> ftarget), q.u, of the
+   !> current state: the origin of the plateau's doubling when taken at the step's start.
+   function conjugate_displacement(problem, f0, ftarget) result(s)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      real(wp) :: s
+      real(wp), allocatable :: fq(:, :)
+      call step_load(problem, f0, ftarget, fq)
+      s = sum(fq*problem%state%u)
+   end function conjugate_displacement
 
    !> How the path ends after a converged, written increment that did not land on the
    !> target (0: it goes on), from the path so far and the displacements `u`.

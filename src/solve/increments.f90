@@ -29,7 +29,8 @@ module pecplas_solve_increments
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
-   use pecplas_solve_arc_path, only: trace_arc, BEYOND_PEAK
+   use pecplas_solve_arc_path, only: trace_arc, BEYOND_PEAK, conjugate_displacement, SP_FLAT, &
+      PLATEAU_RISE
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &
       END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED, PATH_STEP, PATH_PROBE
    use pecplas_io_results_file, only: results_file_t
@@ -54,7 +55,10 @@ contains
    !> RUN_INTERRUPTED (a termination signal, or the --stop-after-increments test hook);
    !> `message` says why a run stopped. Converged increments are written as they come.
    !> `limit`: where the limit is, when the status is RUN_LIMIT_LOAD (as written to /limit).
-   subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
+   !> `warning`: the steps that ended on a plateau of their load-displacement path, where
+   !> the displacement reached is set by how slowly the load still rises ('' for none).
+   subroutine run_increments(model, problem, results, quiet, status, message, error, limit, &
+         warning)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(results_file_t), intent(inout) :: results
@@ -63,12 +67,14 @@ contains
       character(len=:), allocatable, intent(out) :: message
       type(error_t), allocatable, intent(out) :: error
       type(limit_point_t), intent(out), optional :: limit
+      character(len=:), allocatable, intent(out), optional :: warning
       type(run_t) :: run
       real(wp), allocatable :: f0(:), ftarget(:)
       integer :: istep, istep0
 
       call cpu_time(run%cpu_start)
       run%quiet = quiet
+      run%plateau_warning = ''
       call run%eta%start(wall_time(), sum(model%steps%increments), 10.0_wp)
       status = RUN_COMPLETED
       message = 'all steps completed'
@@ -111,6 +117,10 @@ contains
          ftarget(model%steps(istep)%pattern) = model%steps(istep)%target
          run%k_first = 0.0_wp
          if (problem%position%resume) run%k_first = problem%position%k_first
+         ! the origin of a plateau's doubling (kept in the position for a restart)
+         if (.not. problem%position%resume) problem%position%s_step0 = &
+            conjugate_displacement(problem, f0, ftarget)
+         run%s_step0 = problem%position%s_step0
          if (model%steps(istep)%arc_length) then
             call arc_step(model, problem, results, run, istep, f0, ftarget, status, message, &
                error)
@@ -129,6 +139,7 @@ contains
       end if
       if (status == RUN_LIMIT_LOAD) call results%write_limit(run%limit, error)
       if (present(limit) .and. status == RUN_LIMIT_LOAD) limit = run%limit
+      if (present(warning)) warning = run%plateau_warning
    end subroutine run_increments
 
    !> The start of step istep of a phased run (pecplas_phases_start): its changes applied,
@@ -195,7 +206,7 @@ contains
       type(outcome_t) :: out
       type(arc_trace_t) :: probe
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
-      real(wp) :: tau, dt, dt0
+      real(wp) :: tau, dt, dt0, sp_last
       integer :: level, inc, method
       logical :: probing
 
@@ -208,6 +219,7 @@ contains
          level = 0
          inc = 0
          probing = .false.
+         sp_last = 1.0_wp
          if (problem%position%resume) then
             associate (pos => problem%position)
                dt = pos%dt; tau = pos%tau; level = pos%level; inc = pos%inc_in_step
@@ -251,7 +263,7 @@ contains
                   if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
                      'probing the path by arc-length from the last converged state'
                   call probe_request(model, istep, tau, dt, level, out%reason, run%k_first, &
-                     probe)
+                     run%s_step0, probe)
                end if
                probing = .false.
                call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, probe, &
@@ -293,6 +305,10 @@ contains
             inc = inc + 1
             if (run%k_first == 0.0_wp .and. allocated(out%du)) &
                run%k_first = dt/max(norm2(out%du), tiny(1.0_wp))
+            ! the current stiffness parameter of this increment (the step's end on a plateau)
+            sp_last = 1.0_wp
+            if (run%k_first > 0.0_wp .and. allocated(out%du)) &
+               sp_last = dt/max(norm2(out%du), tiny(1.0_wp))/run%k_first
             ! the loop's position after this increment (the size grows back below), for the
             ! restart data written with the increment
             call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
@@ -309,8 +325,30 @@ contains
                dt = min(dt0, 2.0_wp*dt)
             end if
          end do
+         ! reached its end on a plateau: say so (the displacement is not the soil's answer)
+         if (abs(sp_last) < SP_FLAT .and. probe_allowed(model, f0, ftarget)) &
+            call plateau_end(model, istep, sp_last, run)
       end associate
    end subroutine load_step
+
+   !> Step istep reached its target with its last increment on a plateau of the
+   !> load-displacement path (current stiffness parameter sp, |sp| < SP_FLAT): the run's
+   !> warning says that the displacement reached is set by how slowly the load still rises
+   !> there and is unbounded in small-strain terms.
+   subroutine plateau_end(model, istep, sp, run)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: sp
+      type(run_t), intent(inout) :: run
+      if (len(run%plateau_warning) > 0) run%plateau_warning = run%plateau_warning//'; '
+      run%plateau_warning = run%plateau_warning//'step '//itoa(istep)//' ('// &
+         model%steps(istep)%name//') reached its load on a plateau of the load-displacement '// &
+         'path (its last increment''s stiffness is '//g6(sp)//' times its first, below '// &
+         g6(SP_FLAT)//'): the load is at or near the limit of this model, and the '// &
+         'displacement reached is set by how slowly the load still rises there (unbounded in '// &
+         'small-strain terms, not a settlement of the soil); an arc-length step shows whether '// &
+         'the path still rises (doc/theory.md section 4)'
+   end subroutine plateau_end
 
    !> The extrapolated start of a load-controlled increment of size `dt` (att%du_start): the
    !> previous converged increment of the same step (`inc` > 0 of them converged), when it
@@ -363,12 +401,15 @@ contains
             path%req%dtau_first = 1.0_wp/step%increments
             path%req%max_increments = step%max_increments
             path%req%time0 = real(istep - 1, wp)
+            path%req%s_step0 = run%s_step0
          end if
          call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, path, error)
          if (allocated(error)) return
          select case (res%kind)
          case (END_TARGET)
-            ! the step ends on its target: the run may have to stop after that increment
+            ! the step ends on its target (on a plateau: say so); the run may have to stop
+            ! after that increment
+            if (abs(res%sp) < SP_FLAT) call plateau_end(model, istep, res%sp, run)
             if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
          case (END_INTERRUPTED)
             call interrupted_status(problem, status, message)
@@ -411,10 +452,10 @@ contains
    !> increment: near a limit that increment may have run far along the plateau, and an arc
    !> that long from a state where the tangent fails converges, if at all, on an unloading
    !> branch.
-   subroutine probe_request(model, istep, tau, dt, cuts, why, k_first, probe)
+   subroutine probe_request(model, istep, tau, dt, cuts, why, k_first, s_step0, probe)
       type(model_t), intent(in) :: model
       integer, intent(in) :: istep, cuts
-      real(wp), intent(in) :: tau, dt, k_first
+      real(wp), intent(in) :: tau, dt, k_first, s_step0
       character(len=*), intent(in) :: why
       type(arc_trace_t), intent(out) :: probe
       associate (req => probe%req)
@@ -426,6 +467,7 @@ contains
          req%dtau_first = dt
          req%max_increments = model%solver%limit_probe
          req%stop_at_limit = .true.
+         req%s_step0 = s_step0
          req%time0 = real(istep - 1, wp) + tau
          req%time_span = 0.5_wp*dt
          req%cuts = cuts
@@ -487,11 +529,15 @@ contains
          ! the plateau: where it began, and the largest load traced on it
          run%limit%kind = 'flat'
          run%limit%global_increment = res%flat_increment ! where the plateau began
-         message = message//'the load-displacement path is flat (current stiffness '// &
-            'parameter '//g6(res%sp)//') from step fraction '//g6(res%tau_flat)// &
-            ' (increment '//itoa(res%flat_increment)//'), traced '// &
-            itoa(problem%stats%increments - res%flat_increment)//' increments along it, its '// &
-            'largest load at step fraction '//g6(res%tau_peak)
+         message = message//'the load-displacement path has a plateau, no maximum: from '// &
+            'step fraction '//g6(res%tau_flat)//' (increment '//itoa(res%flat_increment)// &
+            ') the load rose by '//pct(res%rise)//' (a plateau: at most '//pct(PLATEAU_RISE)// &
+            ') while the displacement conjugate to it grew '//g6(growth(res))//' times '// &
+            '(from the step''s start; current stiffness parameter '//g6(res%sp)//'), traced '// &
+            itoa(problem%stats%increments - res%flat_increment)//' increments along it; its '// &
+            'largest load, at step fraction '//g6(res%tau_peak)//', is the limit to that '// &
+            'tolerance (a load approaching its limit as 1/u lies at most twice that rise '// &
+            'below it; a larger load may still be carried at a larger displacement)'
       end if
       message = message//'; load factors at the peak:'//factors_text(model, step, &
          run%limit%pattern_factors)
@@ -610,6 +656,9 @@ contains
       character(len=:), allocatable :: text
       if (.not. (res%tau < res%tau_peak)) then
          text = 'no maximum of the load on the way'
+         if (res%rise >= 0.0_wp) text = text//'; the path is nearly flat but still rises: '// &
+            'the load rose by '//pct(res%rise)//' over its last doubling of the '// &
+            'displacement, more than the '//pct(PLATEAU_RISE)//' of a plateau'
          return
       end if
       text = 'no maximum established: the largest load, at step fraction '// &
@@ -617,5 +666,26 @@ contains
          itoa(res%beyond)//' fall(s) beyond the convergence noise and 0.1 % of it, of the '// &
          itoa(BEYOND_PEAK)//' that establish a maximum'
    end function peak_note
+
+   !> A share as a percentage, e.g. '0.140 %' or '7.14E-03 %'.
+   function pct(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=16) :: b
+      if (abs(x) >= 1.0e-3_wp) then
+         write (b, '(f10.3)') 100.0_wp*x
+      else
+         write (b, '(es9.2)') 100.0_wp*x
+      end if
+      text = trim(adjustl(b))//' %'
+   end function pct
+
+   !> How many times the displacement conjugate to the step's load, from the step's start,
+   !> grew over the plateau window.
+   real(wp) function growth(res)
+      type(arc_end_t), intent(in) :: res
+      growth = 0.0_wp
+      if (res%s_flat > 0.0_wp) growth = res%s_now/res%s_flat
+   end function growth
 
 end module pecplas_solve_increments
