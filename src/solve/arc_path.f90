@@ -90,7 +90,7 @@ contains
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
-      real(wp) :: tau, k_inc, time, s, noise
+      real(wp) :: tau, k_inc, time, s, noise, tau_before
       integer :: method, wanted
       logical :: landed
 
@@ -222,6 +222,7 @@ contains
                cycle
             end if
             res%mechanism = .false.
+            tau_before = tau
             k_inc = (out%tau - tau)/max(norm2(out%du), tiny(1.0_wp))
             if (run%k_first == 0.0_wp) run%k_first = k_inc
             res%sp = k_inc/run%k_first
@@ -248,14 +249,20 @@ contains
                res%beyond = res%beyond + 1
             end if
             res%s_now = s - req%s_step0
-            nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
+            ! flat: a small stiffness parameter, or a change of load the convergence test
+            ! does not resolve (tiny arcs near a mechanism: their stiffness is noise)
+            nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT .or. abs(tau - tau_before) <= noise)
             if (nflat == 1) call open_window(res, problem%stats%increments + 1, tau)
             call plateau_test(res, nflat, problem%stats%increments + 1, tau)
             ! the next increment's length, should the path go on (on a plateau window not yet
             ! established, up to PLATEAU_STRIDE of the displacements, so that they can double)
             if (nflat >= FLAT_COUNT .and. .not. res%flat) then
-               dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
-                  max(step%max_length*dl0, PLATEAU_STRIDE*norm2(free_part(problem, u))))
+               ! (doubled at least: a plateau traced in increments of a fixed length, e.g.
+               ! a rigid-plastic interface that converges each just under the tolerance,
+               ! would take thousands of them to double its displacement)
+               dl = min(max(adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+                  huge(1.0_wp)), 2.0_wp*dl), max(step%max_length*dl0, &
+                  PLATEAU_STRIDE*norm2(free_part(problem, u))))
             else
                dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
                   step%max_length*dl0)

@@ -531,7 +531,8 @@ contains
          run%limit%global_increment = res%flat_increment ! where the plateau began
          message = message//'the load-displacement path has a plateau, no maximum: from '// &
             'step fraction '//g6(res%tau_flat)//' (increment '//itoa(res%flat_increment)// &
-            ') the load rose by '//pct(res%rise)//' (a plateau: at most '//pct(PLATEAU_RISE)// &
+            ') the load '//merge('rose by', 'fell by', res%rise >= 0.0_wp)//' '// &
+            pct(abs(res%rise))//' (a plateau: a rise of at most '//pct(PLATEAU_RISE)// &
             ') while the displacement conjugate to it grew '//g6(growth(res))//' times '// &
             '(from the step''s start; current stiffness parameter '//g6(res%sp)//'), traced '// &
             itoa(problem%stats%increments - res%flat_increment)//' increments along it; its '// &
