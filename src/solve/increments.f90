@@ -8,7 +8,9 @@
 !>   limit load  the load-displacement path has a maximum: the arc-length path passed it (the
 !>               load fell in two increments after it, each below the peak by more than the
 !>               convergence test's load noise, while the loaded points moved on) or
-!>               became flat (current stiffness parameter ~ 0); under load control a step
+!>               has a plateau (the load rose by at most PLATEAU_RISE = 0.1 % while the
+!>               displacement conjugate to it doubled: pecplas_solve_arc_path); a step that
+!>               completes on a plateau says so in a warning; under load control a step
 !>               that cannot be converged is probed by arc-length from the last converged
 !>               state, which either passes the failed load (the run goes on) or establishes
 !>               the maximum; /limit stores the largest converged load of the path (the
