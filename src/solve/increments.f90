@@ -279,6 +279,7 @@ contains
                      ! a convergence failure, not a limit: load control goes on from here
                      ! (a probe that landed on the target: the run may have to stop there)
                      if (res%kind == END_TARGET) then
+                        sp_last = res%sp
                         if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
                      end if
                      tau = res%tau
@@ -328,7 +329,7 @@ contains
             end if
          end do
          ! reached its end on a plateau: say so (the displacement is not the soil's answer)
-         if (abs(sp_last) < SP_FLAT .and. probe_allowed(model, f0, ftarget)) &
+         if (abs(sp_last) < SP_FLAT .and. force_driven(model, f0, ftarget)) &
             call plateau_end(model, istep, sp_last, run)
       end associate
    end subroutine load_step
@@ -482,9 +483,16 @@ contains
    logical function probe_allowed(model, f0, ftarget) result(ok)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: f0(:), ftarget(:)
-      integer :: p
       ok = model%solver%limit_probe > 0
-      if (.not. ok) return
+      if (ok) ok = force_driven(model, f0, ftarget)
+   end function probe_allowed
+
+   !> The step (factors f0 -> ftarget) raises a force and changes no imposed displacement:
+   !> its load-displacement path can have a limit.
+   logical function force_driven(model, f0, ftarget) result(ok)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      integer :: p
       ok = .false.
       do p = 1, size(f0)
          if (model%patterns(p)%kind == LOAD_DISPLACEMENT) then
@@ -496,7 +504,7 @@ contains
             ok = .true.
          end if
       end do
-   end function probe_allowed
+   end function force_driven
 
    subroutine limit_reached(model, problem, run, step, istep, res, status, message)
       type(model_t), intent(in) :: model
