@@ -21,8 +21,9 @@ arc-length (doc/theory.md §4).
   (T6, nf = 1) and 12 (nf = 3): the run says either 'limit load' within 2 % of the arc-length
   limit of the same mesh, the stored limit being the largest load of the path, or 'diverged'
   naming a last converged load within 2 % below that limit; never a limit more than 2 % below.
-  (Measured: every run 'limit load', +0.15 to +0.40 % of the arc-length limits 315.92 and
-  307.54 kPa after 60 and 40 increments, which still creep up along the plateau; before the
+  (Measured: every run 'limit load', +0.03 to +0.09 % of the arc-length limits 317.00 and
+  308.61 kPa, plateaus to 0.1 % per doubling of the displacement (doc/theory.md §4; before
+  that rule the arc-length steps said 315.92 and 307.54 kPa, still creeping up); before the
   probe started at its first state and went forward, 24 and 48 increments said 'diverged' at
   the limit without naming a load, and nf = 3 with 12 increments reported a limit of
   86.0 kPa, a load the probe had stepped down to.)
