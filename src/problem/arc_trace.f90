@@ -58,17 +58,17 @@ module pecplas_problem_arc_trace
       logical :: flat = .false.
       !> The arc iteration met singular states and no equilibrium exists a little further.
       logical :: mechanism = .false.
-      !> Plateau: first increment of the flat run (its window), its step fraction and q.u
-      !> there, q.u of the last converged state (both from the step's start, s_step0), and
-      !> the load's rise over the last window whose displacement doubled (relative to the
-      !> load; < 0 while none has).
+      !> Plateau: first increment of the open window, its step fraction and q.u there, q.u
+      !> of the last converged state (both from the step's start, s_step0), and the load's
+      !> rise (relative to the load) over the plateau, or over the last window that closed
+      !> (< 0 while there is neither).
       integer :: flat_increment = 0
       real(wp) :: tau_flat = 0.0_wp, s_flat = 0.0_wp, s_now = 0.0_wp, rise = -1.0_wp
       character(len=:), allocatable :: reason
    end type arc_end_t
 
    !> A path: the request, the path so far (res), and the next increment's length dl (dl0
-   !> the first), cut level, count of flat increments in a row, and whether it goes on by
+   !> the first), cut level, increments in the open plateau window, and whether it goes on by
    !> load control (lc_mode). `started`: set up (a first length chosen), to be continued.
    type :: arc_trace_t
       type(arc_request_t) :: req

@@ -90,7 +90,7 @@ contains
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
-      real(wp) :: tau, k_inc, time, s, noise, tau_before
+      real(wp) :: tau, k_inc, time, s, noise, tau_before, s_before, dl_need
       integer :: method, wanted
       logical :: landed
 
@@ -248,20 +248,26 @@ contains
                ! a stiff penalty joint whose states each converge just under the tolerance)
                res%beyond = res%beyond + 1
             end if
+            s_before = res%s_now
             res%s_now = s - req%s_step0
-            ! flat: a small stiffness parameter, or a change of load the convergence test
-            ! does not resolve (tiny arcs near a mechanism: their stiffness is noise)
-            nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT .or. abs(tau - tau_before) <= noise)
-            if (nflat == 1) call open_window(res, problem%stats%increments + 1, tau)
-            call plateau_test(res, nflat, problem%stats%increments + 1, tau)
+            ! the plateau window: opened by a flat increment (a small stiffness parameter, or
+            ! a change of load the convergence test does not resolve: tiny arcs near a
+            ! mechanism, whose stiffness is noise), kept while the load stays within
+            ! PLATEAU_RISE of where it opened (plateau_test)
+            call plateau_test(res, nflat, problem%stats%increments + 1, tau, &
+               abs(res%sp) < SP_FLAT .or. abs(tau - tau_before) <= noise)
             ! the next increment's length, should the path go on (on a plateau window not yet
             ! established, up to PLATEAU_STRIDE of the displacements, so that they can double)
             if (nflat >= FLAT_COUNT .and. .not. res%flat) then
-               ! (doubled at least: a plateau traced in increments of a fixed length, e.g.
-               ! a rigid-plastic interface that converges each just under the tolerance,
-               ! would take thousands of them to double its displacement)
+               ! (doubled at least, or half the length that doubles the displacement at the
+               ! rate of this increment: a plateau traced in increments of a fixed length, e.g.
+               ! a rigid-plastic interface that converges each just under the tolerance, or
+               ! arcs cut short where the tangent failed, would take thousands of them)
+               dl_need = 0.0_wp
+               if (res%s_now > s_before) dl_need = norm2(out%du)/(res%s_now - s_before)* &
+                  (2.0_wp*res%s_flat - res%s_now)
                dl = min(max(adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
-                  huge(1.0_wp)), 2.0_wp*dl), max(step%max_length*dl0, &
+                  huge(1.0_wp)), 2.0_wp*dl, 0.5_wp*dl_need), max(step%max_length*dl0, &
                   PLATEAU_STRIDE*norm2(free_part(problem, u))))
             else
                dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
@@ -354,37 +360,47 @@ contains
    end subroutine open_window
 
    !> Whether the path is on a plateau (res%flat), after a converged increment (global
-   !> number `inc`, step fraction tau, res%s_now) that is the `nflat`-th flat one in a row:
-   !> in the window that began at res%flat_increment the displacement conjugate to the load,
-   !> from the step's start (res%s_flat, res%s_now), has doubled and the load rose by at most
-   !> PLATEAU_RISE of itself (res%rise: the rise). A window whose displacement doubled with
-   !> more rise is closed, and the next one opens at this increment. Before a window has
-   !> doubled the path is no plateau (yet).
-   pure subroutine plateau_test(res, nflat, inc, tau)
+   !> number `inc`, step fraction tau, res%s_now; `flat`: its stiffness parameter is small or
+   !> its change of load unresolved). A flat increment opens a window when none is open;
+   !> `nflat` counts the increments of the open window (0: none). The window closes when the
+   !> load has risen above where it opened by more than PLATEAU_RISE of itself (this
+   !> increment, if flat, opens the next one), and is a plateau once it holds FLAT_COUNT
+   !> increments and the displacement conjugate to the load, from the step's start
+   !> (res%s_flat, res%s_now), has doubled in it (res%rise: the window's rise then).
+   pure subroutine plateau_test(res, nflat, inc, tau, flat)
       type(arc_end_t), intent(inout) :: res
       integer, intent(inout) :: nflat
       integer, intent(in) :: inc
       real(wp), intent(in) :: tau
-      real(wp) :: top
+      logical, intent(in) :: flat
+      real(wp) :: top, rise
       res%flat = .false.
-      if (nflat < FLAT_COUNT) return
-      if (.not. (res%s_flat > 0.0_wp)) then
-         ! no displacement along the load yet (or against it): no doubling to measure
-         call open_window(res, inc, tau)
-         return
+      if (nflat > 0) then
+         ! the largest load in the window: the path's peak when it lies in the window
+         top = tau
+         if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
+         rise = (top - res%tau_flat)/max(abs(top), tiny(1.0_wp))
+         if (rise > PLATEAU_RISE) then
+            ! risen beyond the tolerance: no plateau here (the rise is kept for the message
+            ! of a path that ends still rising)
+            res%rise = rise
+            nflat = 0
+         else
+            nflat = nflat + 1
+         end if
       end if
-      ! the window's displacement has not doubled yet: no plateau (yet)
+      if (nflat == 0) then
+         if (.not. flat) return
+         call open_window(res, inc, tau)
+         nflat = 1
+      end if
+      ! no displacement along the load yet (or against it): no doubling to measure
+      if (nflat < FLAT_COUNT .or. .not. (res%s_flat > 0.0_wp)) return
       if (res%s_now < 2.0_wp*res%s_flat) return
-      ! the largest load in the window: the path's peak when it lies in the window
       top = tau
       if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
       res%rise = (top - res%tau_flat)/max(abs(top), tiny(1.0_wp))
-      if (res%rise <= PLATEAU_RISE) then
-         res%flat = .true.
-      else
-         call open_window(res, inc, tau)
-         nflat = FLAT_COUNT
-      end if
+      res%flat = .true.
    end subroutine plateau_test
 
    !> The displacement conjugate to the step's load (factors f0 -> ftarget), q.u, of the

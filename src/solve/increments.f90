@@ -668,8 +668,9 @@ contains
       if (.not. (res%tau < res%tau_peak)) then
          text = 'no maximum of the load on the way'
          if (res%rise >= 0.0_wp) text = text//'; the path is nearly flat but still rises: '// &
-            'the load rose by '//pct(res%rise)//' over its last doubling of the '// &
-            'displacement, more than the '//pct(PLATEAU_RISE)//' of a plateau'
+            'its last plateau window closed when the load had risen by '//pct(res%rise)// &
+            ', more than the '//pct(PLATEAU_RISE)//' a plateau allows while the displacement '// &
+            'conjugate to it doubles'
          return
       end if
       text = 'no maximum established: the largest load, at step fraction '// &
