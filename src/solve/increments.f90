@@ -547,8 +547,8 @@ contains
             '(from the step''s start; current stiffness parameter '//g6(res%sp)//'), traced '// &
             itoa(problem%stats%increments - res%flat_increment)//' increments along it; its '// &
             'largest load, at step fraction '//g6(res%tau_peak)//', is the limit to that '// &
-            'tolerance (a load approaching its limit as 1/u lies at most twice that rise '// &
-            'below it; a larger load may still be carried at a larger displacement)'
+            'tolerance (a path approaching its limit as 1/u has it at most twice that rise '// &
+            'above; a larger load may still be carried at a larger displacement)'
       end if
       message = message//'; load factors at the peak:'//factors_text(model, step, &
          run%limit%pattern_factors)
