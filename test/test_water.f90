@@ -20,6 +20,8 @@ module test_water
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
    use test_water_level, only: test_wall_level_inside, test_plate_polyline, test_face_polyline, &
       test_plate_cone
+   use test_water_curve, only: test_curved_wall, test_curved_wall_run, test_curved_trough, &
+      test_curved_shell, test_curved_face
    use pecplas_testing, only: unittest_t, new_unittest, check, check_close
    use fixtures_bad_decks, only: check_refused
    use fixtures_water, only: write_wall
@@ -55,6 +57,11 @@ contains
                new_unittest('water_polyline_level_on_a_plate', test_plate_polyline), &
                new_unittest('water_polyline_level_on_a_face', test_face_polyline), &
                new_unittest('water_level_inside_a_conical_plate', test_plate_cone), &
+               new_unittest('water_on_a_curved_wall', test_curved_wall), &
+               new_unittest('water_on_a_curved_wall_run', test_curved_wall_run), &
+               new_unittest('water_in_a_curved_trough', test_curved_trough), &
+               new_unittest('water_in_a_curved_shell', test_curved_shell), &
+               new_unittest('water_on_a_curved_soil_face', test_curved_face), &
                new_unittest('water_on_free_plate_faces', test_free_stages), &
                new_unittest('water_free_faces_equal_split_sets', test_free_equals_split), &
                new_unittest('water_free_faces_quay_wall', test_free_quay), &

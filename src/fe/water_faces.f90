@@ -16,10 +16,11 @@ module pecplas_fe_water_faces
    use pecplas_massif_edge_load, only: edge_linear_pressure_forces, &
       edge_part_pressure_forces
    use pecplas_model_options, only: AXISYMMETRIC
-   use pecplas_structures_beam, only: beam_line_load, beam_part_load, MAX_BEAM_DOFS
+   use pecplas_structures_beam, only: beam_line_load, beam_part_load, MAX_BEAM_DOFS, &
+      beam_curved_pressure, beam_on_chord
    use pecplas_fe_plate_assembly, only: plate_element_x, scatter_plate_vector
    use pecplas_model_plate_water_sides, only: plate_water_sides
-   use pecplas_water_wet_parts, only: wet_parts
+   use pecplas_water_wet_parts, only: wet_parts, line_lowest
    use pecplas_water_phreatic, only: phreatic_t
    implicit none (type, external)
    private
@@ -83,7 +84,8 @@ contains
             else
                xm = 0.5_wp*(xedge(1, 1) + xedge(1, 2))
                h = model%water%levels(k)%head(xm)
-               if (.not. any(xedge(2, 1:nen) < h)) cycle
+               ! the side's lowest point: a curved side can dip below all its nodes
+               if (.not. line_lowest(xedge(:, 1:nen)) < h) cycle
                ! p = gamma_w (h - y), floored at 0 above the level (h is one along the side),
                ! cut at the level and each part exact (edge_linear_pressure_forces)
                call edge_linear_pressure_forces(model%analysis%kind, &
@@ -187,14 +189,18 @@ contains
 
    !> Consistent nodal vector fe(3 nen) of the water's pressure on element e of plate set s
    !> under level k, pressing from the face `side` (+1 left, -1 right, 0 none: the element's
-   !> entry of plate_water_sides): p = gamma_w (h - y)+ normal to the chord. Where p is one
-   !> polynomial along the element (wholly below or above the level, the level at a node)
-   !> it is interpolated from the nodal pressures like the geometry, which is exact; where
-   !> the level crosses the element (or a polyline level has a kink on it) the element is cut
-   !> there (pecplas_water_wet_parts) and each wet part integrated exactly
-   !> (beam_part_load). A plate is impermeable: the water or the soil's pore pressure on its
-   !> other face is not this load. `loaded`: false (fe = 0) when p = 0 along the element or
-   !> side = 0.
+   !> entry of plate_water_sides): p = gamma_w (h - y)+ normal to the element's own geometry,
+   !> integrated along it. On an element that is its chord (2 nodes, or a mid node at the
+   !> middle: beam_on_chord), where p is one polynomial along the element (wholly below or
+   !> above the level, the level at a node) it is interpolated from the nodal pressures like
+   !> the geometry, which is exact; where the level crosses the element (or a polyline level
+   !> has a kink on it) the element is cut there (pecplas_water_wet_parts) and each wet part
+   !> integrated exactly (beam_part_load). A curved 3-node element (its mid node off the
+   !> middle of the chord) is a parabola: it is cut where the level crosses the parabola
+   !> (the root of p in its parameter), and each wet part takes p normal to the curve,
+   !> integrated exactly along it (beam_curved_pressure). A plate is impermeable: the water
+   !> or the soil's pore pressure on its other face is not this load. `loaded`: false
+   !> (fe = 0) when p = 0 along the element or side = 0.
    subroutine plate_water_load(model, s, e, k, side, fe, loaded)
       type(model_t), intent(in) :: model
       integer, intent(in) :: s, e, k, side
@@ -215,6 +221,15 @@ contains
          t = t/norm2(t)
          q = real(side, wp)*[t(2), -t(1)]
          call wet_parts(level, x(:, 1:nen), from, to, pp, split)
+         if (.not. beam_on_chord(x(:, 1:nen))) then
+            loaded = size(from) > 0
+            do j = 1, size(from)
+               call beam_curved_pressure(x(:, 1:nen), model%analysis%kind == AXISYMMETRIC, &
+                  model%analysis%thickness, side, from(j), to(j), pp(:, j), part(1:size(fe)))
+               fe = fe + part(1:size(fe))
+            end do
+            return
+         end if
          if (split) then
             loaded = size(from) > 0
             do j = 1, size(from)

@@ -22,7 +22,7 @@ module pecplas_structures_beam
    private
 
    public :: NGEN, MAX_BEAM_DOFS, beam_point_t, beam_npoint, beam_points, beam_line_load
-   public :: beam_part_load
+   public :: beam_part_load, beam_curved_pressure, beam_on_chord
    public :: beam_frame, shear_stiffness
 
    !> Generalized strains per point: eps_s, gamma, kappa_s, eps_theta, kappa_theta.
@@ -277,8 +277,9 @@ contains
    !> part of the element only, such as a water pressure cut at its level
    !> (pecplas_water_wet_parts). Gauss rules on the part exact for the integrand: 3 points
    !> on the 2-node element (its w cubic, p linear, r linear: degree 5), 4 on the 3-node
-   !> one (N and p quadratic, r quadratic, |dx/dxi| linear on a straight element: degree 7;
-   !> a curved element's |dx/dxi| is no polynomial, as in beam_line_load).
+   !> one (N and p quadratic, r quadratic, |dx/dxi| linear on a straight element: degree 7).
+   !> q is fixed along the element: for a pressure on a curved 3-node element, whose normal
+   !> turns along it, see beam_curved_pressure.
    pure subroutine beam_part_load(x, section, axisym, thickness, q, a0, a1, p3, fe)
       real(wp), intent(in) :: x(:, :), q(2), a0, a1, p3(3)
       type(plate_section_t), intent(in) :: section
@@ -329,6 +330,52 @@ contains
          end do
       end if
    end subroutine beam_part_load
+
+   !> Whether the element with nodes x(2, nen) is its chord with a uniform map: 2 nodes, or
+   !> a mid node exactly at the middle of the ends (then p and r are linear along it and its
+   !> normal is the chord's, so beam_line_load's 3-point rule is exact for a pressure).
+   pure logical function beam_on_chord(x) result(chord)
+      real(wp), intent(in) :: x(:, :)
+      chord = size(x, 2) == 2
+      if (.not. chord) chord = all(x(:, 3) == 0.5_wp*(x(:, 1) + x(:, 2)))
+   end function beam_on_chord
+
+   !> Consistent nodal vector fe(9) of a pressure p(a) normal to the 3-node element's own
+   !> (isoparametric, parabolic) geometry on its part a0 <= a <= a1 (a as in beam_part_load,
+   !> p the polynomial of degree <= 2 with the values p3 at a0, (a0 + a1)/2 and a1), pushing
+   !> from its left (side = +1: towards -n, n = (-t_y, t_x) the local normal) or right (-1):
+   !> f_k = int N_k p side (dy/da, -dx/da) da times the thickness or 2 pi r. The normal times
+   !> the length element, (dy/da, -dx/da) da, is a polynomial (linear) in a, so the integrand
+   !> is one of degree 2 + 2 + 1 (+ 2 for r in axisymmetry) = 7: the 4-point Gauss rule on
+   !> the part is exact, on a curved element as on a straight one. No nodal moments (the
+   !> element interpolates theta apart from u).
+   pure subroutine beam_curved_pressure(x, axisym, thickness, side, a0, a1, p3, fe)
+      real(wp), intent(in) :: x(:, :), a0, a1, p3(3), thickness
+      logical, intent(in) :: axisym
+      integer, intent(in) :: side
+      real(wp), intent(out) :: fe(:)
+      real(wp), parameter :: X4A = sqrt(3.0_wp/7.0_wp - 2.0_wp/7.0_wp*sqrt(1.2_wp)), &
+         X4B = sqrt(3.0_wp/7.0_wp + 2.0_wp/7.0_wp*sqrt(1.2_wp)), &
+         X4(4) = [-X4B, -X4A, X4A, X4B], &
+         W4(4) = [18.0_wp - sqrt(30.0_wp), 18.0_wp + sqrt(30.0_wp), &
+         18.0_wp + sqrt(30.0_wp), 18.0_wp - sqrt(30.0_wp)]/36.0_wp
+      real(wp) :: nf(3), dn(3), dxd(2), r, f, load(2), tl, a
+      integer :: i, k
+      fe = 0.0_wp
+      do i = 1, 4
+         tl = 0.5_wp*(X4(i) + 1.0_wp)
+         a = a0 + tl*(a1 - a0)
+         call quadratic(2.0_wp*a - 1.0_wp, nf, dn)
+         dxd = matmul(x(:, 1:3), dn)
+         r = dot_product(nf, x(1, 1:3))
+         ! d xi = 2 da and the rule on [a0, a1] weighs (a1 - a0) / 2: dx/da da -> dxd W4 (a1 - a0)
+         f = W4(i)*(a1 - a0)*merge(2.0_wp*PI*r, thickness, axisym)*part_value(p3, tl)
+         load = real(side, wp)*f*[dxd(2), -dxd(1)]
+         do k = 1, 3
+            fe(3*k - 2:3*k - 1) = fe(3*k - 2:3*k - 1) + nf(k)*load
+         end do
+      end do
+   end subroutine beam_curved_pressure
 
    !> The polynomial of degree <= 2 with the values p3 at t = 0, 1/2, 1, at t.
    pure real(wp) function part_value(p3, t) result(v)

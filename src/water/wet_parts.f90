@@ -15,7 +15,7 @@ module pecplas_water_wet_parts
    implicit none (type, external)
    private
 
-   public :: wet_parts, line_point
+   public :: wet_parts, line_point, line_lowest
 
 contains
 
@@ -79,6 +79,24 @@ contains
             4.0_wp*a*(1.0_wp - a)*x(c, 3)
       end if
    end function line_point
+
+   !> The lowest y of the line with nodes x(2, nen) over 0 <= a <= 1: at a node, or where
+   !> the parabola y(a) of a curved 3-node line has its minimum inside (below its nodes).
+   pure real(wp) function line_lowest(x) result(v)
+      real(wp), intent(in) :: x(:, :)
+      real(wp) :: c1, c2, a
+      v = min(x(2, 1), x(2, 2))
+      if (size(x, 2) < 3) return
+      ! the mid node lies on the line too (so a side with a node below a level is never
+      ! found dry by the rounding of the minimum)
+      v = min(v, x(2, 3))
+      ! y(a) = y1 + c1 a + c2 a^2
+      c2 = 2.0_wp*(x(2, 1) + x(2, 2)) - 4.0_wp*x(2, 3)
+      c1 = 4.0_wp*x(2, 3) - 3.0_wp*x(2, 1) - x(2, 2)
+      if (.not. c2 > 0.0_wp) return
+      a = -0.5_wp*c1/c2
+      if (a > 0.0_wp .and. a < 1.0_wp) v = min(v, line_point(x, a, 2))
+   end function line_lowest
 
    !> p_u = gamma_w (h(x) - y) at a on the line (no floor).
    pure real(wp) function unfloored(level, x, a) result(pu)
