@@ -54,6 +54,9 @@ module pecplas_solve_arc_path
    !> norm (beyond MAX_LENGTH times the first length), so that the displacement can double
    !> within the increments of the step or probe.
    real(wp), parameter :: PLATEAU_STRIDE = 0.5_wp
+   !> ... and grows by at least this factor from one increment to the next (an arc too
+   !> long for the path costs two halvings to come back).
+   real(wp), parameter :: PLATEAU_GROWTH = 4.0_wp
    !> A maximum counts once the load has fallen in this many increments after it, each
    !> below the peak by more than the load noise of the convergence test (load_noise).
    integer, parameter :: BEYOND_PEAK = 2
@@ -90,7 +93,7 @@ contains
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
-      real(wp) :: tau, k_inc, time, s, noise, tau_before, s_before, dl_need
+      real(wp) :: tau, k_inc, time, s, noise, tau_before
       integer :: method, wanted
       logical :: landed
 
@@ -217,7 +220,10 @@ contains
                end if
                level = level + 1
                problem%stats%cuts = problem%stats%cuts + 1
+               ! (an arc grown beyond MAX_LENGTH on a plateau window goes back to that length:
+               ! halving from far may never reach an arc the path follows)
                dl = 0.5_wp*dl
+               if (nflat >= FLAT_COUNT) dl = min(dl, step%max_length*dl0)
                if (.not. run%quiet) write (*, '(a,es9.2)') '   no convergence: arc length cut to ', dl
                cycle
             end if
@@ -248,7 +254,6 @@ contains
                ! a stiff penalty joint whose states each converge just under the tolerance)
                res%beyond = res%beyond + 1
             end if
-            s_before = res%s_now
             res%s_now = s - req%s_step0
             ! the plateau window: opened by a flat increment (a small stiffness parameter, or
             ! a change of load the convergence test does not resolve: tiny arcs near a
@@ -259,15 +264,12 @@ contains
             ! the next increment's length, should the path go on (on a plateau window not yet
             ! established, up to PLATEAU_STRIDE of the displacements, so that they can double)
             if (nflat >= FLAT_COUNT .and. .not. res%flat) then
-               ! (doubled at least, or half the length that doubles the displacement at the
-               ! rate of this increment: a plateau traced in increments of a fixed length, e.g.
-               ! a rigid-plastic interface that converges each just under the tolerance, or
-               ! arcs cut short where the tangent failed, would take thousands of them)
-               dl_need = 0.0_wp
-               if (res%s_now > s_before) dl_need = norm2(out%du)/(res%s_now - s_before)* &
-                  (2.0_wp*res%s_flat - res%s_now)
+               ! (PLATEAU_GROWTH times longer at least: a plateau traced in increments of a
+               ! fixed length, e.g. a rigid-plastic interface that converges each just under
+               ! the tolerance, or arcs cut short where the tangent failed, would take
+               ! thousands of them; an arc that grew too long is cut back as any, by halving)
                dl = min(max(adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
-                  huge(1.0_wp)), 2.0_wp*dl, 0.5_wp*dl_need), max(step%max_length*dl0, &
+                  huge(1.0_wp)), PLATEAU_GROWTH*dl), max(step%max_length*dl0, &
                   PLATEAU_STRIDE*norm2(free_part(problem, u))))
             else
                dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &

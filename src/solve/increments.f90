@@ -654,9 +654,27 @@ contains
       case (END_NODE)
          text = 'reached the step''s target displacement'
       case default
-         text = 'failed after '//itoa(res%increments)//' increments: '//res%reason
+         text = 'failed after '//itoa(res%increments)//' increments: '//res%reason// &
+            window_note(res)
       end select
    end function probe_failure
+
+   !> What an open plateau window had shown when a path failed: the load's change and the
+   !> displacement's growth in it ('' for none).
+   function window_note(res) result(text)
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable :: text
+      real(wp) :: top
+      text = ''
+      if (res%flat_increment <= 0 .or. .not. (res%s_flat > 0.0_wp)) return
+      top = res%tau
+      if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
+      text = ' (the path was nearly flat from step fraction '//g6(res%tau_flat)// &
+         ' (increment '//itoa(res%flat_increment)//'): the load changed by '// &
+         pct((top - res%tau_flat)/max(abs(top), tiny(1.0_wp)))//' while the displacement '// &
+         'conjugate to it grew '//g6(growth(res))//' times, short of the doubling that '// &
+         'establishes a plateau: no limit load is claimed)'
+   end function window_note
 
    !> What a path that used its increments says of a maximum: none when it still rises;
    !> otherwise its largest load and how many falls beyond the noise followed it (a maximum
