@@ -97,7 +97,7 @@ contains
          ! a known name (letter case aside): nothing to suggest (MOHR-COULOMB for MOHR_COULOMB
          ! is not the name itself, and gets one)
          if (upper(names(i)) == upper(word)) return
-         d(i) = name_distance(w, key(names(i)))
+         d(i) = distance_within(w, key(names(i)), 2)
       end do
       limit = 1
       if (len(w) > 4) limit = 2
@@ -153,6 +153,23 @@ contains
       end do
       dist = v(len(a), len(b))
    end function name_distance
+
+   !> name_distance(a, b) when the lengths of a and b differ by at most `bound`; otherwise
+   !> that difference, a lower bound of the alignment distance (each insertion or deletion
+   !> changes the length by 1), or 1 when one name begins or ends the other, as name_distance
+   !> says. Which names did_you_mean suggests is the same (its limit is at most `bound`),
+   !> without the table of len(a) x len(b) entries: a word of megabytes in a bad deck took
+   !> seconds and a gigabyte of memory per known name.
+   pure integer function distance_within(a, b, bound) result(dist)
+      character(len=*), intent(in) :: a, b
+      integer, intent(in) :: bound
+      dist = abs(len(a) - len(b))
+      if (dist <= bound) then
+         dist = name_distance(a, b)
+      else if (min(len(a), len(b)) >= 3) then
+         if (ends_with(b, a) .or. ends_with(a, b)) dist = 1
+      end if
+   end function distance_within
 
    !> True when `part` is the beginning or the end of `whole` (and shorter).
    pure logical function ends_with(whole, part)

@@ -354,7 +354,7 @@ contains
       type(problem_t), intent(inout) :: problem
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: jkeep(:), all_on(:)
-      real(wp), allocatable :: f(:, :)
+      real(wp), allocatable :: f(:, :), u(:, :)
       integer :: j
       allocate (jkeep(0))
       if (allocated(problem%state%joints%sets)) jkeep = problem%state%joints%sets%active
@@ -363,8 +363,14 @@ contains
       call forces_at_start(model, problem, all_on, .true., f, error)
       if (allocated(error)) return
       if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, f)
+      ! (at the initial displacements, zero, as forces_at_start: a restart replays this with
+      ! its restored displacements in place, and the forces of the pore pressures held under
+      ! gravity loading are computed from a state at them, to roundoff)
+      u = problem%state%u
+      problem%state%u = 0.0_wp
       call held_load(model, problem, all_on, model%water%level_at(1), 0, error, &
          all_joints=.true.)
+      problem%state%u = u
       if (allocated(error)) return
       ! on the free equations: at a support it is the support's reaction to the K0 state
       problem%phase%unbalanced = f - problem%system%initial_force

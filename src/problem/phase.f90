@@ -13,7 +13,7 @@ module pecplas_problem_phase
    !> weight of the active sets the load), gravity loading (a GRAVITY pattern applied by
    !> the steps, no *INITIAL_STRESS).
    integer, parameter :: PROCEDURE_NONE = 0, PROCEDURE_K0 = 1, PROCEDURE_GRAVITY = 2
-   character(len=*), parameter :: PROCEDURE_NAMES(0:2) = [character(len=14) :: 'none', &
+   character(len=*), parameter :: PROCEDURE_NAMES(0:2) = [character(len=15) :: 'none', &
       'K0 procedure', 'gravity loading']
 
    !> phase_state_t%hold values (a positive value indexes phase_state_t%homogeneous).

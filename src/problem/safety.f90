@@ -6,7 +6,8 @@ module pecplas_problem_safety
    implicit none (type, external)
    private
 
-   public :: safety_result_t, SAFETY_NONE, SAFETY_FACTOR, SAFETY_LOWER_BOUND, SAFETY_UNSTABLE, &
+   public :: safety_result_t, safety_walk_t
+   public :: SAFETY_NONE, SAFETY_FACTOR, SAFETY_LOWER_BOUND, SAFETY_UNSTABLE, &
       SAFETY_KIND_NAMES
 
    !> How the safety step ended: not run; the factor found (no equilibrium at Msf +
@@ -16,6 +17,25 @@ module pecplas_problem_safety
       SAFETY_UNSTABLE = 3
    character(len=*), parameter :: SAFETY_KIND_NAMES(0:3) = [character(len=24) :: 'none', &
       'factor', 'lower bound', 'unstable before reduction']
+
+   !> Where the reduction stands after its last converged increment (pecplas_solve_safety):
+   !> what the next trial is sized from, kept in the restart data so that a run stopped
+   !> inside the safety step goes on with the same trials.
+   type :: safety_walk_t
+      !> True once the step has converged an increment (the state below is that of it).
+      logical :: on = .false.
+      !> Increments converged in the step.
+      integer :: inc = 0
+      !> The Msf reached, the next Msf step, the displacement rate of the last increment
+      !> (|du| / dM, -1 before one was measured), the smallest step allowed (RESOLUTION, or
+      !> RESOLUTION/SUBSTEPS while a failed trial is sought again) and the Msf sought
+      !> again (-1: none), the wall time spent in the step before [s].
+      real(wp) :: msf = 1.0_wp, dm = 0.0_wp, rate_prev = -1.0_wp, smallest = 0.0_wp, &
+         confirm_until = -1.0_wp, wall = 0.0_wp
+      !> The displacements at the step's start and after each of the last increments (the
+      !> mechanism: 2, columns, 0:MECHANISM_INCREMENTS).
+      real(wp), allocatable :: u0(:, :), ulast(:, :, :)
+   end type safety_walk_t
 
    type :: safety_result_t
       integer :: kind = SAFETY_NONE
@@ -34,6 +54,8 @@ module pecplas_problem_safety
       !> Increments converged and wall time of the step [s].
       integer :: increments = 0
       real(wp) :: wall = 0.0_wp
+      !> The step under way (restart data).
+      type(safety_walk_t) :: walk
    end type safety_result_t
 
 end module pecplas_problem_safety

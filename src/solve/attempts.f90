@@ -72,6 +72,8 @@ module pecplas_solve_attempts
       !> The progress line's clock and estimate (pecplas_solve_progress), printed every few
       !> seconds of a long run (not with --quiet).
       type(progress_eta_t) :: eta
+      !> A restarted run: its increments in all when it resumed (-1: not restarted).
+      integer :: resumed_at = -1
    end type run_t
 
 contains

@@ -43,6 +43,7 @@ module pecplas_solve_increments
    use pecplas_solve_output, only: stop_pending
    use pecplas_solve_progress, only: pattern_value, step_end_text
    use pecplas_phases_start, only: start_phase, LINE_LEN
+   use pecplas_problem_phase, only: PROCEDURE_NAMES
    use pecplas_solve_stiffness, only: factorise_stiffness
    use pecplas_io_results_phases, only: write_phase
    use pecplas_solve_safety, only: safety_step, safety_not_started
@@ -88,9 +89,11 @@ contains
          run%fint_conv = problem%position%fint_conv
          istep0 = problem%position%istep
          if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
-         ! a phased run goes on in the phase in force: the new file records it
-         if (problem%phase%phased) then
-            call record_phase(model, problem, results, istep0, [character(len=LINE_LEN) :: &
+         run%resumed_at = problem%stats%increments
+         ! a phased run goes on in the phase in force: the new file records it (a safety
+         ! step records its own below)
+         if (problem%phase%phased .and. .not. model%steps(istep0)%safety%on) then
+            call record_phase(model, problem, results, run, istep0, [character(len=LINE_LEN) :: &
                'resumed by a restart (the changes of this phase were made by the run before)'], &
                error)
             if (allocated(error)) return
@@ -101,11 +104,15 @@ contains
          ! left (pecplas_solve_safety)
          if (model%steps(istep)%safety%on) then
             if (problem%phase%phased) then
-               call record_phase(model, problem, results, istep, [character(len=LINE_LEN) :: &
+               call record_phase(model, problem, results, run, istep, &
+                  [character(len=LINE_LEN) :: &
                   'safety: strengths divided by Msf until no equilibrium exists'], error)
                if (allocated(error)) return
             end if
             call safety_step(model, problem, results, run, istep, status, message, error)
+            ! stopped after an increment of it (a signal, --stop-after-increments)
+            if (.not. allocated(error) .and. status == RUN_INTERRUPTED) &
+               call interrupted_status(problem, status, message)
             exit
          end if
          ! a phased run: the step's changes at its start (a resumed step has them already)
@@ -163,7 +170,7 @@ contains
          call factorise_stiffness(model, problem, .false., error)
          if (allocated(error)) return
       end if
-      call record_phase(model, problem, results, istep, lines, error)
+      call record_phase(model, problem, results, run, istep, lines, error)
       if (allocated(error)) return
       if (.not. run%quiet .and. size(lines) > 0) then
          write (*, '(a)') ' phase '//itoa(istep)//' ('//model%steps(istep)%name//'):'
@@ -177,18 +184,35 @@ contains
    end subroutine begin_phase
 
    !> The phase of step istep in the results file (/phases), with the sets active in it.
-   subroutine record_phase(model, problem, results, istep, lines, error)
+   !> The first phase a restarted run writes (the records before its first increment replace
+   !> each other) also says how the initial state came about, as phase 1 of the run did (the
+   !> file's attribute initial_procedure).
+   subroutine record_phase(model, problem, results, run, istep, lines, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(in) :: problem
       type(results_file_t), intent(inout) :: results
+      type(run_t), intent(in) :: run
       integer, intent(in) :: istep
       character(len=*), intent(in) :: lines(:)
       type(error_t), allocatable, intent(out) :: error
+      character(len=*), parameter :: KEY = 'initial procedure: '
       logical, allocatable :: eactive(:), jactive(:)
+      character(len=LINE_LEN), allocatable :: told(:)
+      integer :: i
       eactive = problem%state%sets%active
       allocate (jactive(0))
       if (allocated(problem%state%joints%sets)) jactive = problem%state%joints%sets%active
-      call write_phase(results, istep, model%steps(istep)%name, lines, eactive, jactive, error)
+      if (run%resumed_at >= 0 .and. problem%stats%increments == run%resumed_at .and. &
+          .not. any(index(lines, KEY) == 1)) then
+         allocate (told(size(lines) + 1))
+         told(1) = KEY//trim(PROCEDURE_NAMES(problem%phase%procedure))
+         do i = 1, size(lines)
+            told(i + 1) = lines(i)
+         end do
+         call write_phase(results, istep, model%steps(istep)%name, told, eactive, jactive, error)
+      else
+         call write_phase(results, istep, model%steps(istep)%name, lines, eactive, jactive, error)
+      end if
    end subroutine record_phase
 
    !> A load-controlled step: fractions 1/INCREMENTS of the step, halved on failure and

@@ -16,6 +16,8 @@ module pecplas_solve_output
    use pecplas_fe_plate_output, only: plate_results
    use pecplas_model_columns, only: rotation_column
    use pecplas_model_plate_water_sides, only: plate_water_sides
+   use pecplas_model_phases, only: TARGET_PATTERNS
+   use pecplas_model_phase_plan, only: target_activity
    implicit none (type, external)
    private
 
@@ -94,16 +96,18 @@ contains
       type(plate_fields_t) :: before
       integer :: s, k, step
       real(wp) :: tau, wf
+      real(wp), allocatable :: factors(:)
       if (.not. allocated(model%plates)) return
       if (size(model%plates) == 0) return
       allocate (r%plate_fields(size(model%plates)))
       step = max(problem%phase%index, 1)
       tau = problem%position%tau
+      factors = plate_load_factors(model, problem, step, tau)
       do s = 1, size(model%plates)
          if (model%water%used()) then
             ! the water's pressure on the plate is one of its own loads (groundwater)
             call plate_results(model, problem%state%u, problem%state%plates, &
-               problem%state%factors, s, r%plate_fields(s), error, &
+               factors, s, r%plate_fields(s), error, &
                model%water%level_at(step), step=step)
             if (allocated(error)) return
             ! a change of that water at the step's start is applied along the step (the
@@ -111,7 +115,7 @@ contains
             ! water plus the fraction tau of the change, and its forces are linear in it
             if (tau < 1.0_wp .and. water_changed(model, s, step)) then
                call plate_results(model, problem%state%u, problem%state%plates, &
-                  problem%state%factors, s, before, error, &
+                  factors, s, before, error, &
                   model%water%level_at(step - 1), step=step - 1)
                if (allocated(error)) return
                associate (f => r%plate_fields(s))
@@ -124,7 +128,7 @@ contains
             wf = water_factor(problem)
             if (wf /= 1.0_wp) then
                call plate_results(model, problem%state%u, problem%state%plates, &
-                  problem%state%factors, s, before, error)
+                  factors, s, before, error)
                if (allocated(error)) return
                associate (f => r%plate_fields(s))
                   f%end_forces = wf*f%end_forces + (1.0_wp - wf)*before%end_forces
@@ -133,7 +137,7 @@ contains
             end if
          else
             call plate_results(model, problem%state%u, problem%state%plates, &
-               problem%state%factors, s, r%plate_fields(s), error)
+               factors, s, r%plate_fields(s), error)
          end if
          if (allocated(error)) return
          associate (f => r%plate_fields(s))
@@ -144,6 +148,33 @@ contains
          end associate
       end do
    end subroutine plate_fields
+
+   !> The factors at which the load patterns load the plates in the converged state: their
+   !> factors where they are active, none where they are not (a deactivated pattern keeps
+   !> its factor but loads nothing), and inside a step that switches a pattern the fraction
+   !> of the switch applied so far (the phase's carried out-of-balance takes the pattern's
+   !> load at the step's start to zero, or brings it in, linearly in tau: doc/theory.md §10).
+   function plate_load_factors(model, problem, step, tau) result(f)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: step
+      real(wp), intent(in) :: tau
+      real(wp), allocatable :: f(:)
+      logical, allocatable :: before(:)
+      integer :: p
+      f = problem%state%factors
+      if (.not. allocated(problem%phase%patterns_on)) return
+      if (size(problem%phase%patterns_on) /= size(f)) return
+      before = target_activity(model, TARGET_PATTERNS, step - 1)
+      do p = 1, size(f)
+         if (.not. problem%phase%patterns_on(p)) f(p) = 0.0_wp
+         if (tau >= 1.0_wp .or. (problem%phase%patterns_on(p) .eqv. before(p))) cycle
+         if (.not. allocated(problem%position%f0)) cycle
+         ! switched on: f(tau) - (1 - tau) f0; switched off: (1 - tau) f0
+         f(p) = f(p) + merge(-1.0_wp, 1.0_wp, problem%phase%patterns_on(p))* &
+            (1.0_wp - tau)*problem%position%f0(p)
+      end do
+   end function plate_load_factors
 
    !> Whether the water on plate set s (the faces it stands on, element by element, or the
    !> level in force) changes at the start of step `step`.

@@ -4,8 +4,9 @@
 !> Packed: the position in the step loop (pecplas_problem_position) and the run counters,
 !> displacements, pattern factors, converged internal forces, the massif's stresses,
 !> strains and histories, the joints' law strains, stresses, histories and modes, and the
-!> Katona doublets' states and multipliers, and the matrices factorised during the run that
-!> its next iterations solve with (item `operators`: see pack_restart).
+!> Katona doublets' states and multipliers, the walk of a safety step under way (pack_safety),
+!> and the matrices factorised during the run that its next iterations solve with (item
+!> `operators`: see pack_restart).
 module pecplas_solve_restart
    use pecplas_base_kinds, only: wp
    use pecplas_model_loads, only: LOAD_DISPLACEMENT
@@ -87,6 +88,15 @@ contains
             call data%add('phase', [real(problem%phase%index, wp)])
             if (allocated(problem%phase%carried)) call data%add('phase_carried', &
                reshape(problem%phase%carried, [size(problem%phase%carried)]))
+            ! gravity loading with water: the held forces of the steady pore pressures and
+            ! the water coming in with the gravity pattern, computed at the phase's start from
+            ! the state of then (replayed from another state, they would differ by roundoff)
+            if (problem%phase%water_pattern > 0) then
+               call data%add('phase_held', reshape(problem%system%initial_force, &
+                  [size(problem%system%initial_force)]))
+               call data%add('phase_water', reshape(problem%system%pattern_force(:, :, &
+                  problem%phase%water_pattern), [size(problem%system%initial_force)]))
+            end if
          end if
          tangents = tangents_carried(model, problem)
          do s = 1, size(st%sets)
@@ -152,6 +162,8 @@ contains
             ! phases: a reactivated doublet measures its gap from its reactivation
             if (problem%phase%phased) call data%add('katona_gap0', kt%gap0)
          end if
+         ! a deck with a safety step: the walk of that step, once under way (pack_safety)
+         if (model%steps(size(model%steps))%safety%on) call pack_safety(problem, data)
          ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
          if (p%exact .and. .not. partitioned(model)) then
             if (problem%linear%solver_moved .and. problem%linear%k_owner == K_SOLVER) then
@@ -216,6 +228,14 @@ contains
          call input_error(error, 'cannot restart from '//path//': it was written by another '// &
             'deck (its deck text differs from '//model%deck_file//'); restart with the deck '// &
             'that wrote it')
+         return
+      end if
+      if (safety_unknown(data, model)) then
+         call input_error(error, 'cannot restart from '//path//': its restart data were '// &
+            'written by an earlier version, which did not keep the state of a safety step, '// &
+            "and they may be of an increment of step '"//model%steps(size(model%steps))%name// &
+            "' (its strength reduction) as well as of the end of the step before; run the "// &
+            'deck again')
          return
       end if
       call unpack_data(data, model, problem, error)
@@ -300,6 +320,19 @@ contains
                if (allocated(error)) return
                problem%phase%carried = reshape(v, shape(st%u))
             end if
+            ! (restart data of an earlier version: the replayed ones)
+            if (problem%phase%water_pattern > 0 .and. data%has('phase_held') .and. &
+                data%has('phase_water')) then
+               associate (sys => problem%system)
+                  call data%get('phase_held', size(sys%initial_force), v, error)
+                  if (allocated(error)) return
+                  sys%initial_force = reshape(v, shape(sys%initial_force))
+                  call data%get('phase_water', size(sys%initial_force), v, error)
+                  if (allocated(error)) return
+                  sys%pattern_force(:, :, problem%phase%water_pattern) = &
+                     reshape(v, shape(sys%initial_force))
+               end associate
+            end if
             call data%get('u', size(st%u), v, error)
             if (allocated(error)) return
             st%u = reshape(v, shape(st%u))
@@ -367,6 +400,10 @@ contains
                   a%e0 = v(4 + 2*size(a%force):)
                end associate
             end do
+         end if
+         if (model%steps(size(model%steps))%safety%on) then
+            call unpack_safety(data, model, problem, error)
+            if (allocated(error)) return
          end if
          if (kt%active) then
             call data%get('katona_mode', kt%nd, v, error)
@@ -534,6 +571,87 @@ contains
       end if
    end subroutine get_operator
 
+   !> The walk of the safety step (pecplas_problem_safety, safety_walk_t) once it has
+   !> converged an increment: item `safety` (1, increments, Msf reached, next Msf step, last
+   !> displacement rate, smallest step, Msf sought again, wall time, curve points), the curve
+   !> `safety_curve` (its Msf, then its displacements), the displacements at the step's start
+   !> `safety_u0` and those of the last increments `safety_ulast`; before: `safety` = (0).
+   subroutine pack_safety(problem, data)
+      type(problem_t), intent(in) :: problem
+      type(restart_data_t), intent(inout) :: data
+      associate (w => problem%safety%walk, res => problem%safety)
+         if (.not. w%on) then
+            call data%add('safety', [0.0_wp])
+            return
+         end if
+         call data%add('safety', [1.0_wp, real(w%inc, wp), w%msf, w%dm, w%rate_prev, &
+            w%smallest, w%confirm_until, w%wall, real(size(res%msf), wp)])
+         call data%add('safety_curve', [res%msf, res%displacement])
+         call data%add('safety_u0', reshape(w%u0, [size(w%u0)]))
+         call data%add('safety_ulast', reshape(w%ulast, [size(w%ulast)]))
+      end associate
+   end subroutine pack_safety
+
+   !> The walk of the safety step from the restart data (pack_safety), when under way; it
+   !> must then be the step of the position.
+   subroutine unpack_safety(data, model, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:), curve(:)
+      integer :: n, nu
+      if (.not. data%has('safety')) return
+      call data%get('safety', data%length('safety'), v, error)
+      if (allocated(error)) return
+      if (v(1) == 0.0_wp) return
+      if (size(v) /= 9 .or. problem%position%istep /= size(model%steps)) then
+         call fatal_error(error, 'restart item safety does not fit the safety step')
+         return
+      end if
+      associate (w => problem%safety%walk, res => problem%safety)
+         w%on = .true.
+         w%inc = nint(v(2)); w%msf = v(3); w%dm = v(4); w%rate_prev = v(5)
+         w%smallest = v(6); w%confirm_until = v(7); w%wall = v(8)
+         n = nint(v(9))
+         call data%get('safety_curve', 2*n, curve, error)
+         if (allocated(error)) return
+         res%msf = curve(1:n)
+         res%displacement = curve(n + 1:)
+         nu = size(problem%state%u)
+         call data%get('safety_u0', nu, v, error)
+         if (allocated(error)) return
+         w%u0 = reshape(v, shape(problem%state%u))
+         n = data%length('safety_ulast')
+         if (n < nu .or. mod(n, nu) /= 0) then
+            call fatal_error(error, 'restart item safety_ulast does not fit the displacements')
+            return
+         end if
+         call data%get('safety_ulast', n, v, error)
+         if (allocated(error)) return
+         allocate (w%ulast(size(problem%state%u, 1), size(problem%state%u, 2), 0:n/nu - 1))
+         w%ulast = reshape(v, shape(w%ulast))
+      end associate
+   end subroutine unpack_safety
+
+   !> Restart data of a deck with a safety step written by a version that kept no state of
+   !> it (no item `safety`) at the end of the step before it: the run may as well have been
+   !> killed inside the safety step (its increments wrote their state there, with the
+   !> position of the step before), so where it stands is unknown.
+   logical function safety_unknown(data, model) result(unknown)
+      type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: v(:)
+      integer :: n
+      unknown = .false.
+      n = size(model%steps)
+      if (.not. model%steps(n)%safety%on .or. data%has('safety')) return
+      call data%get('position', NPOS, v, error)
+      if (allocated(error)) return
+      unknown = nint(v(2)) >= n - 1 .and. v(5) >= 1.0_wp - 1.0e-12_wp
+   end function safety_unknown
+
    !> Names of the datasets a problem with `nsets` element sets and `njoint` joint sets reads.
    pure function restart_names(nsets, njoint, nplate) result(names)
       integer, intent(in) :: nsets, njoint, nplate
@@ -544,7 +662,8 @@ contains
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
          'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'dtau_prev', 'phase', &
-         'phase_carried']
+         'phase_carried', 'phase_held', 'phase_water', 'safety', 'safety_curve', 'safety_u0', &
+         'safety_ulast']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]

@@ -19,10 +19,14 @@
 !> reached: that Msf is the factor, the failed step (at most RESOLUTION/SUBSTEPS) its
 !> resolution. Past the Msf sought again the smallest step is RESOLUTION again.
 !> MAX_INCREMENTS used before makes the Msf reached a lower bound (status stopped).
+!> The walk (Msf reached, next step, rates, the sub-step stage, the curve and the mechanism's
+!> displacements) is kept after every converged increment in problem%safety%walk and the
+!> restart data: a run stopped inside the step (signal, --stop-after-increments) and
+!> restarted makes the same trials as the uninterrupted one.
 module pecplas_solve_safety
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error, ERR_RUN, ERR_SINGULAR
-   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_STOPPED
+   use pecplas_base_run_status, only: RUN_COMPLETED, RUN_STOPPED, RUN_INTERRUPTED
    use pecplas_base_strings, only: itoa, g6
    use pecplas_base_timers, only: wall_time
    use pecplas_model_type, only: model_t
@@ -30,11 +34,13 @@ module pecplas_solve_safety
    use pecplas_massif_materials_type, only: material_t
    use pecplas_joints_laws_type, only: interface_law_t
    use pecplas_problem_type, only: problem_t
-   use pecplas_problem_safety, only: safety_result_t, SAFETY_FACTOR, SAFETY_LOWER_BOUND, &
+   use pecplas_problem_safety, only: safety_result_t, safety_walk_t, SAFETY_FACTOR, &
+      SAFETY_LOWER_BOUND, &
       SAFETY_UNSTABLE, SAFETY_KIND_NAMES
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_residual, only: internal_forces_at
+   use pecplas_solve_output, only: stop_pending
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_safety, only: safety_record_t
    implicit none (type, external)
@@ -55,8 +61,10 @@ module pecplas_solve_safety
 
 contains
 
-   !> Runs safety step `istep` (module header); `status` RUN_COMPLETED (factor found) or
-   !> RUN_STOPPED (budget used: lower bound), `message` says which and the factor.
+   !> Runs safety step `istep` (module header); `status` RUN_COMPLETED (factor found),
+   !> RUN_STOPPED (budget used: lower bound), `message` says which and the factor, or
+   !> RUN_INTERRUPTED (a termination signal or --stop-after-increments after an increment: the
+   !> walk is in problem%safety%walk and the restart data, and a restarted run resumes it).
    subroutine safety_step(model, problem, results, run, istep, status, message, error)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
@@ -77,38 +85,50 @@ contains
       character(len=:), allocatable :: why
 
       t0 = wall_time()
-      if (problem%position%resume) then
-         call fatal_error(error, "step '"//model%steps(istep)%name//"' is a safety step: a "// &
-            'run stopped inside it cannot be continued with --restart; run the deck again '// &
-            '(or restart from a results file of a step before it)')
-         return
-      end if
       associate (plan => model%steps(istep)%safety, res => problem%safety)
          work = model
          att%f0 = problem%state%factors
          att%ftarget = problem%state%factors
          att%tau0 = 1.0_wp
          att%tau1 = 1.0_wp
-         u0 = problem%state%u
          ! the nodes' columns of the nodal arrays (plate rotations follow them)
          nnode = model%mesh%nnode()
-         allocate (ulast(2, size(u0, 2), 0:MECHANISM_INCREMENTS))
-         do k = 0, MECHANISM_INCREMENTS
-            ulast(:, :, k) = u0
-         end do
-         res%msf = [1.0_wp]
-         res%displacement = [0.0_wp]
          res%displacement_of = curve_name(model, plan)
-         msf = 1.0_wp
-         dm = plan%msf_step
-         rate_prev = -1.0_wp
-         smallest = plan%resolution
-         confirm_until = -1.0_wp
-         inc = 0
+         if (problem%position%resume) then
+            ! a restarted run stopped inside this step: its walk goes on where it stopped
+            ! (the restart data carry it: pecplas_solve_restart)
+            problem%position%resume = .false.
+            if (.not. res%walk%on) then
+               call fatal_error(error, "step '"//model%steps(istep)%name//"' is a safety "// &
+                  'step and the restart data hold no state of it')
+               return
+            end if
+            associate (w => res%walk)
+               inc = w%inc; msf = w%msf; dm = w%dm; rate_prev = w%rate_prev
+               smallest = w%smallest; confirm_until = w%confirm_until
+               u0 = w%u0
+               ulast = w%ulast
+               t0 = t0 - w%wall
+            end associate
+         else
+            u0 = problem%state%u
+            allocate (ulast(2, size(u0, 2), 0:MECHANISM_INCREMENTS))
+            do k = 0, MECHANISM_INCREMENTS
+               ulast(:, :, k) = u0
+            end do
+            res%msf = [1.0_wp]
+            res%displacement = [0.0_wp]
+            msf = 1.0_wp
+            dm = plan%msf_step
+            rate_prev = -1.0_wp
+            smallest = plan%resolution
+            confirm_until = -1.0_wp
+            inc = 0
+         end if
          call plan_names(model, plan, res%reduced, res%kept)
          if (.not. run%quiet) write (*, '(a)') ' safety step '//itoa(istep)//' ('// &
-            model%steps(istep)%name//'): strength reduction from Msf = 1 of '//res%reduced// &
-            '; kept: '//res%kept
+            model%steps(istep)%name//'): strength reduction from Msf = '//g6(msf)//' of '// &
+            res%reduced//'; kept: '//res%kept
          do
             if (inc >= plan%max_increments) then
                res%kind = SAFETY_LOWER_BOUND
@@ -161,10 +181,6 @@ contains
                cycle
             end if
             inc = inc + 1
-            call accept_increment(work, problem, results, run, att, out, method, u, fint, &
-               reaction, istep, inc, real(istep - 1, wp) + (1.0_wp - 1.0_wp/trial), .true., &
-               0, error)
-            if (allocated(error)) return
             rate = max_move(u(:, 1:nnode), ulast(:, 1:nnode, MECHANISM_INCREMENTS))/dm
             ulast = cshift(ulast, 1, dim=3)
             ulast(:, :, MECHANISM_INCREMENTS) = u
@@ -172,8 +188,6 @@ contains
             res%msf = [res%msf, msf]
             res%displacement = [res%displacement, curve_value(plan, u(:, 1:nnode), &
                u0(:, 1:nnode))]
-            if (.not. run%quiet) write (*, '(a)') '   Msf = '//g6(msf)//'  '// &
-               res%displacement_of//' = '//g6(res%displacement(size(res%displacement)))
             ! the next size from the displacement rates (module header)
             grow = GROW_MOST
             if (out%iterations > EASY_ITERATIONS) grow = 1.0_wp
@@ -186,6 +200,24 @@ contains
             if (msf >= confirm_until*(1.0_wp - 1.0e-12_wp)) smallest = plan%resolution
             dm = min(plan%msf_step, max(dm, smallest))
             if (rate > 0.0_wp) rate_prev = rate
+            ! the walk after this increment, written with it for a restart
+            res%walk = safety_walk_t(on=.true., inc=inc, msf=msf, dm=dm, rate_prev=rate_prev, &
+               smallest=smallest, confirm_until=confirm_until, wall=wall_time() - t0, u0=u0, &
+               ulast=ulast)
+            call problem%position%record(istep, inc, problem%position%tau, 0.0_wp, 0, 0.0_wp, &
+               0.0_wp, att%f0, fint, out%du)
+            call accept_increment(work, problem, results, run, att, out, method, u, fint, &
+               reaction, istep, inc, real(istep - 1, wp) + (1.0_wp - 1.0_wp/trial), .true., &
+               0, error)
+            if (allocated(error)) return
+            if (.not. run%quiet) write (*, '(a)') '   Msf = '//g6(msf)//'  '// &
+               res%displacement_of//' = '//g6(res%displacement(size(res%displacement)))
+            ! a termination signal or --stop-after-increments: the run stops after this
+            ! increment (the caller says so), to go on with --restart
+            if (stop_pending(model, problem, inc >= plan%max_increments)) then
+               status = RUN_INTERRUPTED
+               return
+            end if
          end do
          res%increments = inc
          res%mechanism = ulast(:, 1:nnode, MECHANISM_INCREMENTS) - ulast(:, 1:nnode, 0)

@@ -68,9 +68,18 @@ contains
       if (size(this%levels) == 0) return
       k = 1
       if (.not. allocated(this%step_level)) return
-      do i = 1, min(istep, size(this%step_level))
-         if (this%step_level(i) == LEVEL_NONE) k = 0
-         if (this%step_level(i) > 0) k = this%step_level(i)
+      ! the last step up to istep that changes the level decides: searched backwards with an
+      ! early exit (a forward loop with two conditional assignments to k was vectorised wrongly
+      ! by gfortran 12 at -O3: from step 4 on it returned the first level again)
+      do i = min(istep, size(this%step_level)), 1, -1
+         if (this%step_level(i) == LEVEL_NONE) then
+            k = 0
+            return
+         end if
+         if (this%step_level(i) > 0) then
+            k = this%step_level(i)
+            return
+         end if
       end do
    end function water_level_at
 
@@ -86,8 +95,11 @@ contains
       if (s < 1 .or. s > size(this%plate_side)) return
       side = this%plate_side(s)
       if (.not. allocated(this%step_plate)) return
-      do i = 1, min(istep, size(this%step_plate, 2))
-         if (this%step_plate(s, i) /= PLATE_KEEP) side = this%step_plate(s, i)
+      do i = min(istep, size(this%step_plate, 2)), 1, -1
+         if (this%step_plate(s, i) /= PLATE_KEEP) then
+            side = this%step_plate(s, i)
+            return
+         end if
       end do
    end function water_plate_side_at
 
