@@ -14,22 +14,19 @@ module pecplas_cmd_args
    use pecplas_base_error, only: error_t, input_error, EXIT_OK, EXIT_INPUT
    use pecplas_io_text_parse, only: parse_real, parse_int
    use pecplas_cmd_command, only: command_error
+   use pecplas_cmd_words, only: word_t, split, wrapped, wrapped_form
+   use pecplas_cmd_option, only: option_t, option_label, find_option, valid, expected, &
+      VALUE_NONE, VALUE_WORD, VALUE_POSITIVE_INTEGER, VALUE_REAL, VALUE_POSITIVE_REAL
    implicit none (type, external)
    private
 
    public :: arg_parser_t, lines_function
    public :: VALUE_WORD, VALUE_POSITIVE_INTEGER, VALUE_REAL, VALUE_POSITIVE_REAL
 
-   !> The value an option takes, checked by `read`: any word, an integer > 0, a number
-   !> (strict Fortran form, pecplas_io_text_parse), a number > 0.
-   integer, parameter :: VALUE_WORD = 1, VALUE_POSITIVE_INTEGER = 2, VALUE_REAL = 3, &
-      VALUE_POSITIVE_REAL = 4
-   !> A flag takes no value.
-   integer, parameter :: VALUE_NONE = 0
    !> What the words asked for besides a run.
    integer, parameter :: ASKED_RUN = 0, ASKED_HELP = 1, ASKED_VERSION = 2
-   !> Width of the --help text and the widest option label kept beside its help.
-   integer, parameter :: HELP_WIDTH = 80, LABEL_WIDTH = 24
+   !> The widest option label kept beside its help in --help.
+   integer, parameter :: LABEL_WIDTH = 24
 
    abstract interface
       !> Gives the lines --version prints (called only when asked: it may query libraries).
@@ -37,26 +34,6 @@ module pecplas_cmd_args
          character(len=:), allocatable, intent(out) :: lines(:)
       end subroutine lines_function
    end interface
-
-   !> A word of its own length.
-   type :: word_t
-      character(len=:), allocatable :: s
-   end type word_t
-
-   !> One declared option and the values the command line gave it.
-   type :: option_t
-      !> Its names, the first one shown in the usage line ('-o', '--output').
-      type(word_t), allocatable :: names(:)
-      !> The value's name in the usage and help texts ('' for a flag).
-      character(len=:), allocatable :: metavar
-      character(len=:), allocatable :: help
-      integer :: kind = VALUE_NONE
-      logical :: repeatable = .false.
-      !> Left out of the usage line and --help (test hooks).
-      logical :: hidden = .false.
-      !> One entry per occurrence ('' for a flag); a non-repeatable option keeps the last.
-      type(word_t), allocatable :: values(:)
-   end type option_t
 
    !> A program's command line: its declarations, then what `read` found.
    type :: arg_parser_t
@@ -213,7 +190,7 @@ contains
             this%asked = ASKED_VERSION
             return
          end if
-         k = find(this, word)
+         k = find_option(this%options, word)
          if (k == 0) then
             if (word(1:min(1, len(word))) == '-') then
                call input_error(error, this%usage_error_text('unknown option '//word))
@@ -311,7 +288,7 @@ contains
       character(len=*), intent(in) :: name
       integer :: k
       parser_count = 0
-      k = find(this, name)
+      k = find_option(this%options, name)
       if (k > 0) parser_count = size(this%options(k)%values)
    end function parser_count
 
@@ -324,7 +301,7 @@ contains
       integer :: k
       value = ''
       if (present(default)) value = default
-      k = find(this, name)
+      k = find_option(this%options, name)
       if (k == 0) return
       associate (v => this%options(k)%values)
          if (size(v) > 0) value = v(size(v))%s
@@ -337,7 +314,7 @@ contains
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: values(:)
       integer :: k, i, n
-      k = find(this, name)
+      k = find_option(this%options, name)
       if (k == 0) then
          allocate (character(len=1) :: values(0))
          return
@@ -509,167 +486,5 @@ contains
          end if
       end associate
    end function positional_form
-
-   !> "-o, --output FILE.h5": short names first, then the value.
-   function option_label(opt) result(label)
-      type(option_t), intent(in) :: opt
-      character(len=:), allocatable :: label
-      integer :: i, pass
-      label = ''
-      do pass = 1, 2
-         do i = 1, size(opt%names)
-            associate (name => opt%names(i)%s)
-               if ((pass == 1) .neqv. (name(1:min(2, len(name))) /= '--')) cycle
-               if (len(label) > 0) label = label//', '
-               label = label//name
-            end associate
-         end do
-      end do
-      if (opt%kind /= VALUE_NONE) label = label//' '//opt%metavar
-   end function option_label
-
-   !> `text` wrapped to HELP_WIDTH columns, the lines after the first indented by `indent`;
-   !> `label` starts the first line and the text column indent + 1 (the next line when the
-   !> label leaves less than two blanks before that column).
-   function wrapped(text, label, indent) result(out)
-      character(len=*), intent(in) :: text, label
-      integer, intent(in) :: indent
-      character(len=:), allocatable :: out, line
-      type(word_t), allocatable :: words(:)
-      character(len=1), parameter :: NL = new_line('a')
-      logical :: started
-      integer :: i
-      words = split(text)
-      out = ''
-      line = ''
-      if (len(label) > 0) then
-         if (len(label) + 2 > indent) then
-            out = label//NL
-            line = repeat(' ', indent)
-         else
-            line = label//repeat(' ', indent - len(label))
-         end if
-      end if
-      started = .false.
-      do i = 1, size(words)
-         if (started .and. len(line) + 1 + len(words(i)%s) > HELP_WIDTH) then
-            out = out//line//NL
-            line = repeat(' ', indent)
-            started = .false.
-         end if
-         if (started) then
-            line = line//' '//words(i)%s
-         else
-            line = line//words(i)%s
-            started = .true.
-         end if
-      end do
-      out = out//trim(line)
-   end function wrapped
-
-   !> A usage form after `prefix`, wrapped to HELP_WIDTH columns between bracketed groups,
-   !> the lines after the first aligned after the program name.
-   function wrapped_form(prefix, form) result(out)
-      character(len=*), intent(in) :: prefix, form
-      character(len=:), allocatable :: out, line
-      character(len=1), parameter :: NL = new_line('a')
-      integer :: i, depth, start, indent
-      out = ''
-      line = prefix
-      indent = -1
-      depth = 0
-      start = 1
-      do i = 1, len(form) + 1
-         if (i <= len(form)) then
-            if (form(i:i) == '[') depth = depth + 1
-            if (form(i:i) == ']') depth = depth - 1
-            if (form(i:i) /= ' ' .or. depth > 0) cycle
-         end if
-         ! form(start:i - 1): a group (a word outside brackets, or a bracketed group)
-         if (i > start) then
-            if (indent < 0) then
-               line = line//form(start:i - 1)
-               indent = len(line) + 1
-            else if (len(line) + 1 + i - start > HELP_WIDTH .and. len(line) > indent) then
-               out = out//line//NL
-               line = repeat(' ', indent)//form(start:i - 1)
-            else
-               line = line//' '//form(start:i - 1)
-            end if
-         end if
-         start = i + 1
-      end do
-      out = out//line
-   end function wrapped_form
-
-   !> The blank-separated words of `text`.
-   function split(text) result(words)
-      character(len=*), intent(in) :: text
-      type(word_t), allocatable :: words(:)
-      integer :: i, j
-      allocate (words(0))
-      i = 1
-      do while (i <= len(text))
-         if (text(i:i) == ' ') then
-            i = i + 1
-            cycle
-         end if
-         j = index(text(i:), ' ')
-         if (j == 0) then
-            j = len(text) + 1
-         else
-            j = i + j - 1
-         end if
-         words = [words, word_t(text(i:j - 1))]
-         i = j
-      end do
-   end function split
-
-   !> The declared option one of whose names is `word` (0: none).
-   integer function find(this, word) result(k)
-      type(arg_parser_t), intent(in) :: this
-      character(len=*), intent(in) :: word
-      integer :: i
-      do k = 1, size(this%options)
-         do i = 1, size(this%options(k)%names)
-            if (this%options(k)%names(i)%s == word) return
-         end do
-      end do
-      k = 0
-   end function find
-
-   logical function valid(kind, value)
-      integer, intent(in) :: kind
-      character(len=*), intent(in) :: value
-      integer :: n
-      real(wp) :: x
-      select case (kind)
-      case (VALUE_POSITIVE_INTEGER)
-         call parse_int(value, n, valid)
-         valid = valid .and. n > 0
-      case (VALUE_REAL)
-         call parse_real(value, x, valid)
-      case (VALUE_POSITIVE_REAL)
-         call parse_real(value, x, valid)
-         valid = valid .and. x > 0.0_wp
-      case default
-         valid = .true.
-      end select
-   end function valid
-
-   function expected(kind) result(text)
-      integer, intent(in) :: kind
-      character(len=:), allocatable :: text
-      select case (kind)
-      case (VALUE_POSITIVE_INTEGER)
-         text = 'an integer > 0'
-      case (VALUE_REAL)
-         text = 'a number'
-      case (VALUE_POSITIVE_REAL)
-         text = 'a number > 0'
-      case default
-         text = 'a value'
-      end select
-   end function expected
 
 end module pecplas_cmd_args

@@ -8,7 +8,7 @@ module pecplas_fe_loads
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: load_pattern_t
-   use pecplas_fe_element_context, only: element_context
+   use pecplas_fe_element_context, only: element_context, edge_context
    use pecplas_massif_kinematics, only: massif_rule_t, massif_point_t, massif_gauss_point
    use pecplas_massif_element_matrices, only: massif_body_force
    use pecplas_massif_edge_load, only: edge_pressure_forces, edge_linear_pressure_forces
@@ -59,7 +59,10 @@ contains
                   nen = merge(3, 2, pat%edge(3, k) > 0)
                   call pressure_forces(model, pat, k, model%mesh%x(:, pat%edge(1:nen, k)), &
                      fe(1:2*nen), error)
-                  if (allocated(error)) return
+                  if (allocated(error)) then
+                     call edge_context(error, model, pat%name, pat%edge(1:nen, k))
+                     return
+                  end if
                   force(:, pat%edge(1:nen, k), p) = force(:, pat%edge(1:nen, k), p) + &
                      reshape(fe(1:2*nen), [2, nen])
                end do

@@ -6,6 +6,7 @@ module pecplas_joints_points
    use pecplas_base_error, only: error_t
    use pecplas_model_type, only: model_t
    use pecplas_model_joints, only: joint_set_t
+   use pecplas_model_provenance, only: place_t
    use pecplas_joints_elements_type, only: joint_element_t, joint_point_t
    use pecplas_joints_elements_factory, only: new_joint_element
    implicit none (type, external)
@@ -42,8 +43,30 @@ contains
          call elem%points(model%mesh%x(:, set%conn(:, e)), model%analysis%kind, &
             model%analysis%thickness, pts, error)
       end if
-      if (allocated(error)) call element_context(error, set, e)
+      if (allocated(error)) then
+         call element_context(error, set, e)
+         call locate_joint(model, set, e, error)
+      end if
    end subroutine joint_element_points
+
+   !> Gives a geometry error of joint e of `set` the deck line and keyword of the joint (its
+   !> line of *JOINTS, or the *JOINTS line that generated it): the message names file:line.
+   subroutine locate_joint(model, set, e, error)
+      type(model_t), intent(in) :: model
+      type(joint_set_t), intent(in) :: set
+      integer, intent(in) :: e
+      type(error_t), intent(inout) :: error
+      type(place_t) :: p
+      character(len=:), allocatable :: keyword
+      integer :: s
+      if (.not. allocated(model%joint_sets)) return
+      do s = 1, size(model%joint_sets)
+         if (model%joint_sets(s)%name /= set%name) cycle
+         call model%provenance%joint(s, e, p, keyword)
+         call model%provenance%locate(error, p, keyword)
+         return
+      end do
+   end subroutine locate_joint
 
    !> Coordinates xy(2, np, nel) and unit tangents t(2, np, nel) of the points of set s.
    subroutine joint_point_geometry(model, s, xy, t, error)

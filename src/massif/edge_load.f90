@@ -211,13 +211,16 @@ contains
          len_t = norm2(tang)
          if (.not. (len_t > 0.0_wp)) then
             write (buf, '(a,2es11.3,a)') ' near (', x, ')'
-            call input_error(error, 'loaded edge has zero length'//trim(buf))
+            call input_error(error, 'loaded edge has zero length'//trim(buf)// &
+               ': expected distinct nodes along the edge')
             return
          end if
          if (analysis_kind == AXISYMMETRIC) then
             if (x(1) < 0.0_wp) then
                write (buf, '(a,2es11.3,a)') ' at (', x, ')'
-               call input_error(error, 'axisymmetric edge load at r < 0'//trim(buf))
+               call input_error(error, 'axisymmetric edge load at r < 0'//trim(buf)// &
+                  ': expected r >= 0 along the edge (is a midside node off the middle of '// &
+                  'its side?)')
                return
             end if
             weight = w(ig)*TWO_PI*x(1)

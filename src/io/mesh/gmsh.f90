@@ -34,17 +34,19 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(scanner_t) :: sc
       type(gmsh_data_t) :: g
-      character(len=:), allocatable :: section
+      character(len=:), allocatable :: section, previous
       logical :: got_format, got_nodes
 
       call sc%open(path, error)
       if (allocated(error)) return
       g%path = path
       got_format = .false.; got_nodes = .false.
+      previous = '$MeshFormat'
       do while (sc%next())
          section = sc%token()
          if (.not. got_format .and. section /= '$MeshFormat') then
-            call sc%fail(error, section, 'not a Gmsh file: $MeshFormat expected first')
+            call sc%fail(error, '$MeshFormat', &
+               'not a Gmsh file: $MeshFormat expected first, got '''//section//'''')
             return
          end if
          select case (section)
@@ -66,15 +68,18 @@ contains
             call read_elements(sc, g, error)
          case default
             if (section(1:1) /= '$') then
-               call sc%fail(error, '', 'expected a section name ($Name), got '''//section//'''')
+               ! named by the section it follows (the counts of that one are likely off)
+               call sc%fail(error, previous, 'expected a section name ($Name) after $End'// &
+                  previous(2:)//', got '''//section//''' (counts do not match the data?)')
                return
             end if
             call skip_section(sc, section, error)
          end select
          if (allocated(error)) return
+         previous = section
       end do
       if (.not. got_format) then
-         call sc%fail(error, '', 'empty file, not a Gmsh mesh')
+         call sc%fail(error, '$MeshFormat', 'empty file, not a Gmsh mesh')
          return
       end if
       if (.not. got_nodes) then

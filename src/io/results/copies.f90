@@ -16,9 +16,11 @@
 !> The file's first contents (provenance, mesh) are written once: `clone` gives the other
 !> copy the same bytes by a kernel file copy (falling back to writing them again).
 module pecplas_io_results_copies
+   use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fopen_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F
    use pecplas_base_error, only: error_t, fatal_error
-   use pecplas_base_files, only: rename_file, remove_file, link_file, symlink_file
+   use pecplas_base_strings, only: itoa
+   use pecplas_base_files, only: rename_file, remove_file, link_file, symlink_file, free_bytes
    use pecplas_io_results_kernel_copy, only: kernel_copy
    implicit none (type, external)
    private
@@ -37,6 +39,8 @@ module pecplas_io_results_copies
       logical :: hard = .true.
       !> False: `clone` never asks the kernel (tests of the fallback).
       logical :: kernel = .true.
+      !> Size of a copy after the last increment and what that increment added.
+      integer(int64) :: bytes = 0, growth = 0
    contains
       procedure :: init => copies_init
       procedure :: create => copies_create
@@ -47,6 +51,8 @@ module pecplas_io_results_copies
       procedure :: publish => copies_publish
       procedure :: close => copies_close
       procedure :: remove => copies_remove
+      procedure :: check_space => copies_check_space
+      procedure :: note_size => copies_note_size
    end type copies_t
 
 contains
@@ -64,6 +70,8 @@ contains
       this%ids = -1
       this%next = 1
       this%hard = .true.
+      this%bytes = 0
+      this%growth = 0
    end subroutine copies_init
 
    !> Creates (truncates) copy `i`. A file left under its name by an earlier process of the
@@ -215,5 +223,30 @@ contains
       call remove_file(this%staging)
       if (link) call remove_file(this%link)
    end subroutine copies_remove
+
+   !> Refuses to start an increment that may not fit on the disk (twice what the last one
+   !> took in both copies, plus 64 KiB): HDF5 cut short by a full disk leaves a damaged
+   !> last increment (in the copy being written; the published one stays whole).
+   subroutine copies_check_space(this, error)
+      class(copies_t), intent(in) :: this
+      type(error_t), allocatable, intent(out) :: error
+      integer(int64) :: free, need
+      free = free_bytes(this%link)
+      need = 4*this%growth + 65536_int64
+      if (free >= 0 .and. free < need) call fatal_error(error, 'disk full: '// &
+         itoa(int(free/1024))//' KiB left for '//this%link//', an increment needs about '// &
+         itoa(int(need/1024))//' KiB')
+   end subroutine copies_check_space
+
+   !> After an increment: the size of the copy written next and what the increment added.
+   subroutine copies_note_size(this)
+      class(copies_t), intent(inout) :: this
+      integer(int64) :: nbytes
+      inquire (file=this%name('next'), size=nbytes)
+      if (nbytes > 0) then
+         this%growth = max(0_int64, nbytes - this%bytes)
+         this%bytes = nbytes
+      end if
+   end subroutine copies_note_size
 
 end module pecplas_io_results_copies

@@ -16,7 +16,7 @@ module pecplas_io_text_lines
 
    character(len=*), parameter :: NL = new_line('a')
    character(len=*), parameter :: BOM = achar(239)//achar(187)//achar(191)
-   integer, parameter :: TAB = 9, CR = 13
+   integer, parameter :: TAB = 9, CR = 13, LF = 10
 
 contains
 
@@ -73,7 +73,7 @@ contains
       type(deck_line_t) :: here
       type(keyword_line_t) :: kw
       integer :: lineno, i1, i2, nt, pos, base, file_id, ahead(4), head
-      logical :: found
+      logical :: found, cr_only
 
       ! the file's text after its `** ---- file:` line, read in place behind it
       call read_text_file(path, text, found, '** ---- file: '//path//NL)
@@ -91,6 +91,11 @@ contains
       if (len(text) >= head + 3) then
          if (text(head + 1:head + 3) == BOM) text = text(1:head)//text(head + 4:)
       end if
+      ! lines ended by a carriage return alone (classic Mac OS editors): those are the line
+      ! ends of the file (else each became a blank and the deck one line, "empty")
+      cr_only = .false.
+      if (len(text) > head) cr_only = find_byte(text, head + 1, LF) > len(text) .and. &
+                                      find_byte(text, head + 1, CR) <= len(text)
       if (len(text) > head) then
          if (text(len(text):len(text)) /= NL) text = text//NL
       end if
@@ -104,6 +109,11 @@ contains
          store%raw_in_buf = .false.
       end if
       if (.not. store%raw_in_buf) raw = raw//text
+      if (cr_only) then  ! the raw text keeps them
+         do i1 = head + 1, len(text)
+            if (iachar(text(i1:i1)) == CR) text(i1:i1) = NL
+         end do
+      end if
 
       ! the text joins the buffer whole: lines are offsets into it, found in one sweep
       ! that also turns tabs and carriage returns into blanks (the raw text keeps them)

@@ -75,6 +75,14 @@ contains
          c = iachar(this%buf(p:p))
          if (c > 32) exit
          if (c == 10) this%line = this%line + 1
+         ! a carriage return alone ends a line too (files of classic Mac OS editors)
+         if (c == 13) then
+            if (p == n) then
+               this%line = this%line + 1
+            else if (iachar(this%buf(p + 1:p + 1)) /= 10) then
+               this%line = this%line + 1
+            end if
+         end if
          p = p + 1
       end do
       ok = p <= n

@@ -107,7 +107,8 @@ contains
          pts(ip)%x = matmul(xf(:, 1:n), sh(1:n))
          if (.not. (jac > 0.0_wp)) then
             write (buf, '(a,2es11.3,a)') 'zero length near (', pts(ip)%x, ')'
-            call input_error(error, 'degenerate joint element: '//trim(buf))
+            call input_error(error, 'degenerate joint element: '//trim(buf)// &
+               ': expected distinct nodes along its face')
             return
          end if
          c = dx(1)/jac
@@ -132,8 +133,9 @@ contains
             ! r = 0 (a point on the axis) is allowed: its ring has no area
             if (pts(ip)%x(1) < -1.0e-12_wp*maxval(abs(xe))) then
                write (buf, '(a,es11.3)') 'r = ', pts(ip)%x(1)
-               call input_error(error, 'axisymmetric joint element with a negative radius: ' &
-                  //trim(buf))
+               call input_error(error, 'axisymmetric joint element with a negative radius '// &
+                  'at an integration point, '//trim(buf)//': expected r >= 0 along the '// &
+                  'element (is a midside node off the middle of its side?)')
                return
             end if
             pts(ip)%da = w(ip)*jac*TWO_PI*max(pts(ip)%x(1), 0.0_wp)

@@ -41,7 +41,7 @@ contains
          call deck_error(error, params%file, params%line, params%keyword, &
             'Young modulus E must be positive, got '//trim(adjustl(buf)))
       else if (.not. (mat%poisson > -1.0_wp .and. mat%poisson < 0.5_wp)) then
-         write (buf, '(f10.4)') mat%poisson
+         write (buf, '(g12.5)') mat%poisson  ! (f10.4 printed stars for |NU| >= 1e5)
          call deck_error(error, params%file, params%line, params%keyword, &
             'Poisson ratio NU must satisfy -1 < NU < 0.5, got '//trim(adjustl(buf)))
       else if (mat%unit_weight < 0.0_wp) then
