@@ -674,7 +674,7 @@ contains
       select case (res%kind)
       case (END_MAX)
          text = 'traced '//itoa(res%increments)//' increments to fraction '//g6(res%tau)// &
-            ' without passing the failed load ('//peak_note(res)//')'
+            ' without passing the failed load ('//peak_note(res)//')'//window_note(res)
       case (END_NODE)
          text = 'reached the step''s target displacement'
       case default
