@@ -227,6 +227,8 @@ contains
          status = RUN_FAILED
          message = error%text()
          plateau = ''
+         ! the run's error is its status: the file keeps what converged and says why it ended
+         deallocate (error)
       end if
       ! a warning keeps the status and exit code; it goes to stderr, the message and the file
       ! (a step that ended on a plateau of its load-displacement path, a large displacement)

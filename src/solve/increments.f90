@@ -25,7 +25,7 @@ module pecplas_solve_increments
    use pecplas_base_kinds, only: wp
    use pecplas_base_run_status, only: RUN_COMPLETED, RUN_LIMIT_LOAD, RUN_DIVERGED, RUN_STOPPED, &
       RUN_INTERRUPTED
-   use pecplas_base_error, only: error_t
+   use pecplas_base_error, only: error_t, ERR_SINGULAR
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t, LOAD_DISPLACEMENT
    use pecplas_problem_type, only: problem_t
@@ -118,7 +118,13 @@ contains
          ! a phased run: the step's changes at its start (a resumed step has them already)
          if (problem%phase%phased .and. .not. problem%position%resume) then
             call begin_phase(model, problem, results, run, istep, error)
-            if (allocated(error)) return
+            if (allocated(error)) then
+               ! the phase's changes leave a mechanism: no equilibrium, the run stops here
+               if (error%kind /= ERR_SINGULAR) return
+               call phase_mechanism(model, problem, istep, error, status, message)
+               deallocate (error)
+               exit
+            end if
          end if
          f0 = problem%state%factors
          if (problem%position%resume) f0 = problem%position%f0
@@ -621,6 +627,29 @@ contains
       mechanism = res%kind == END_FAILED .and. res%increments > 0 .and. res%beyond == 0 .and. &
          res%mechanism
    end function mechanism
+
+   !> Status RUN_DIVERGED for a stiffness that is singular after the changes at the start of
+   !> phase istep (a support or the elements holding a part removed): the structure is a
+   !> mechanism and no equilibrium exists; `error` names the free node and direction. The
+   !> increments converged before stay in the results file.
+   subroutine phase_mechanism(model, problem, istep, error, status, message)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: istep
+      type(error_t), intent(in) :: error
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
+      status = RUN_DIVERGED
+      message = 'step '//itoa(istep)//' ('//model%steps(istep)%name//'): no equilibrium: '// &
+         'the changes at the start of the phase leave a mechanism (singular stiffness): '// &
+         error%text()//'; last converged state: '
+      if (problem%stats%increments > 0) then
+         message = message//'increment '//itoa(problem%stats%increments)
+      else
+         message = message//'the initial state'
+      end if
+      message = message//', kept in the results file'
+   end subroutine phase_mechanism
 
    !> Status RUN_DIVERGED: where and why, and the last converged state (its increment and
    !> load factors), kept in the results file.

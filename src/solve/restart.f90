@@ -149,6 +149,8 @@ contains
                   call data%add('anchor_'//itoa(s), [merge(1.0_wp, 0.0_wp, a%active), &
                      merge(1.0_wp, 0.0_wp, a%prestressing), a%prestress, a%force, a%plastic, &
                      a%e0])
+                  ! the forces a prestress phase started from (optional on reading)
+                  call data%add('anchor_start_'//itoa(s), a%force_start)
                end associate
             end do
          end if
@@ -200,10 +202,14 @@ contains
       names = restart_names(size(problem%state%sets), nj, np)
       ! anchors (each set's activity, prestress, forces, elongations)
       if (allocated(problem%state%anchors%sets)) then
-         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         allocate (anames(size(names) + 2*size(problem%state%anchors%sets)))
          anames(1:size(names)) = names
          do np = 1, size(problem%state%anchors%sets)
             anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         ! and the forces a prestress phase started from (optional)
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + size(problem%state%anchors%sets) + np) = 'anchor_start_'//itoa(np)
          end do
          deallocate (names)
          allocate (character(len=64) :: names(size(anames)))
@@ -398,6 +404,12 @@ contains
                   a%force = v(4:3 + size(a%force))
                   a%plastic = v(4 + size(a%force):3 + 2*size(a%force))
                   a%e0 = v(4 + 2*size(a%force):)
+                  a%force_start = a%force
+                  if (data%has('anchor_start_'//itoa(s))) then
+                     call data%get('anchor_start_'//itoa(s), size(a%force), v, error)
+                     if (allocated(error)) return
+                     a%force_start = v
+                  end if
                end associate
             end do
          end if
