@@ -16,7 +16,7 @@ module pecplas_solve_restart
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
-      ARC_VECTOR_V1
+      ARC_VECTOR_V1, ARC_VECTOR_V2
    use pecplas_solve_stiffness, only: factorise_values, partitioned, factorise_stiffness
    use pecplas_phases_start, only: replay_phases
    use pecplas_linalg_sparse, only: csc_t
@@ -67,6 +67,7 @@ contains
          if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
          call data%add('lead', [real(p%lead, wp)])
          call data%add('dtau_prev', [p%dtau_prev])
+         call data%add('s_step0', [p%s_step0])
          call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
          if (p%path /= PATH_NONE) then
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
@@ -474,6 +475,13 @@ contains
             if (allocated(error)) return
             p%dtau_prev = v(1)
          end if
+         ! q.u at the start of the step (older restart data: none, measured from u = 0)
+         p%s_step0 = 0.0_wp
+         if (data%has('s_step0')) then
+            call data%get('s_step0', 1, v, error)
+            if (allocated(error)) return
+            p%s_step0 = v(1)
+         end if
          ! the method the chain starts with (older restart data: the run's own)
          p%lead = 0
          if (data%has('lead')) then
@@ -483,9 +491,11 @@ contains
          end if
          p%path = PATH_NONE
          if (.not. data%has('arc')) return
-         ! (restart data of an older version: ARC_VECTOR_V1 numbers)
+         ! (restart data of an older version: ARC_VECTOR_V1 or ARC_VECTOR_V2 numbers)
          if (data%length('arc') == 1 + ARC_VECTOR_V1) then
             call data%get('arc', 1 + ARC_VECTOR_V1, v, error)
+         else if (data%length('arc') == 1 + ARC_VECTOR_V2) then
+            call data%get('arc', 1 + ARC_VECTOR_V2, v, error)
          else
             call data%get('arc', 1 + ARC_VECTOR, v, error)
          end if
