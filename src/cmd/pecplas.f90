@@ -138,7 +138,7 @@ contains
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
       type(thread_setting_t) :: threads
-      character(len=:), allocatable :: message, outfile, warning, input, failure
+      character(len=:), allocatable :: message, outfile, warning, plateau, input, failure
       integer :: status
       real(wp) :: t0, t1, w0
       integer :: nflipped
@@ -221,13 +221,26 @@ contains
       ! from here a termination signal ends the run between increments, as RUN_INTERRUPTED
       if (.not. install_signal_handlers() .and. .not. quiet) write (*, '(a)') &
          ' note: no handler for SIGTERM/SIGINT/SIGHUP; a signal ends the run at once'
-      call run_increments(model, problem, results, quiet, status, message, error)
+      call run_increments(model, problem, results, quiet, status, message, error, &
+         warning=plateau)
       if (allocated(error)) then
          status = RUN_FAILED
          message = error%text()
+         plateau = ''
+         ! the run's error is its status: the file keeps what converged and says why it ended
+         deallocate (error)
       end if
       ! a warning keeps the status and exit code; it goes to stderr, the message and the file
+      ! (a step that ended on a plateau of its load-displacement path, a large displacement)
+      if (len(plateau) > 0) then
+         write (0, '(a)') COMMAND//': warning: '//plateau
+         if (len(message) > 0) message = message//'; '
+         message = message//'warning: '//plateau
+         call model%warnings%add(plateau)
+      end if
       warning = large_displacement_warning(model%mesh%x, problem%state%u)
+      if (len(plateau) > 0 .and. len(warning) == 0) &
+         call results%warnings(model%warnings%lines(), error)
       if (len(warning) > 0) then
          write (0, '(a)') COMMAND//': warning: '//warning
          if (len(message) > 0) message = message//'; '

@@ -36,7 +36,7 @@ contains
          associate (st => astate%sets(s))
             st%active = active(s)
             allocate (st%force(n), st%force_trial(n), st%plastic(n), st%plastic_trial(n), &
-               st%e0(n), source=0.0_wp)
+               st%e0(n), st%force_start(n), source=0.0_wp)
             allocate (st%tangent(n))
             st%tangent = model%anchors(s)%ea/model%anchors(s)%length
          end associate

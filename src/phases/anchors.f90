@@ -67,6 +67,8 @@ contains
                   a%force = 0.0_wp
                   call push(lines, 'deactivate anchor '//set%name)
                case (CHANGE_PRESTRESS)
+                  ! the force it starts from: reached is N0 + tau (P - N0) at fraction tau
+                  if (.not. a%prestressing) a%force_start = a%force
                   a%prestressing = .true.
                   a%prestress = ch%value
                   write (buf, '(g0.6)') ch%value

@@ -83,9 +83,16 @@ contains
       type(mesh_index_t) :: index
       integer :: c, j, p
       logical :: indexed, anchors_changed
+      real(wp), allocatable :: reaction0(:, :)
 
       allocate (lines(0))
       refactorise = .false.
+      ! the reactions the step starts from (after the first phase): the changes' share on the
+      ! supported dofs is carried too, so that the reactions go from these linearly
+      if (problem%phase%index > 0) then
+         call phase_reactions(model, problem, reaction0, error)
+         if (allocated(error)) return
+      end if
       if (problem%phase%index == 0) then
          call first_phase(model, problem, error)
          if (allocated(error)) return
@@ -264,13 +271,43 @@ contains
             problem%phase%carried = problem%phase%carried - &
                st%factors(p)*problem%system%pattern_force(:, :, p)
          end do
-         where (problem%system%dofs%eq == 0) problem%phase%carried = 0.0_wp
+         ! on a supported dof the reaction is balanced (no out-of-balance there) but leaves
+         ! its value at the step start over the step: what changed there is carried
+         if (allocated(reaction0)) then
+            where (problem%system%dofs%eq == 0) problem%phase%carried = &
+               problem%phase%carried - reaction0
+         else
+            where (problem%system%dofs%eq == 0) problem%phase%carried = 0.0_wp
+         end if
          do p = 1, size(held)
             if (.not. held(p)) problem%phase%carried(:, p) = 0.0_wp
          end do
       end associate
       problem%phase%index = istep
    end subroutine start_phase
+
+   !> The reactions of the converged state before a phase's changes, F_int - F_ext on the
+   !> supported dofs (zero on the free ones), F_ext the held load and the patterns at their
+   !> factors (the carried out-of-balance of the step before is released at its end).
+   subroutine phase_reactions(model, problem, reaction, error)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(inout) :: problem
+      real(wp), allocatable, intent(out) :: reaction(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p
+      allocate (reaction, mold=problem%system%initial_force)
+      call internal_forces(model, problem%system%rules, problem%state%u, problem%state, &
+         reaction, error)
+      if (allocated(error)) return
+      call problem%state%rollback()
+      reaction = reaction - problem%system%initial_force
+      if (problem%katona%active) call add_contact_forces(problem%katona, problem%katona%f, &
+         reaction)
+      do p = 1, size(problem%state%factors)
+         reaction = reaction - problem%state%factors(p)*problem%system%pattern_force(:, :, p)
+      end do
+      where (problem%system%dofs%eq > 0) reaction = 0.0_wp
+   end subroutine phase_reactions
 
    !> The phases of steps 1 to k applied again to a problem just set up (a restart: its
    !> state is then read over the one they leave).

@@ -17,8 +17,9 @@ module pecplas_problem_arc_trace
    !> What a path is: none under way, a *STEP, CONTROL=ARC_LENGTH, or the probe of a
    !> load-controlled step that could not be converged at any cut.
    integer, parameter :: PATH_NONE = 0, PATH_STEP = 1, PATH_PROBE = 2
-   !> Length of the packed vector (ARC_VECTOR_V1: restart data written before s_peak).
-   integer, parameter, public :: ARC_VECTOR = 27, ARC_VECTOR_V1 = 26
+   !> Length of the packed vector (ARC_VECTOR_V1: restart data written before s_peak;
+   !> ARC_VECTOR_V2: before the plateau's displacements s_step0, s_flat, s_now, rise).
+   integer, parameter, public :: ARC_VECTOR = 31, ARC_VECTOR_V2 = 27, ARC_VECTOR_V1 = 26
 
    type :: arc_request_t
       integer :: origin = PATH_STEP
@@ -34,6 +35,9 @@ module pecplas_problem_arc_trace
       real(wp) :: time0 = 0.0_wp, time_span = 1.0_wp
       !> The probe: cuts of the load-controlled increment that failed, and why it failed.
       integer :: cuts = 0
+      !> Displacement conjugate to the step's load, q.u, at the start of the step: the
+      !> origin of the displacement whose doubling a plateau is measured over.
+      real(wp) :: s_step0 = 0.0_wp
       character(len=:), allocatable :: why
    end type arc_request_t
 
@@ -54,14 +58,17 @@ module pecplas_problem_arc_trace
       logical :: flat = .false.
       !> The arc iteration met singular states and no equilibrium exists a little further.
       logical :: mechanism = .false.
-      !> Plateau: first increment of the flat run and its step fraction.
+      !> Plateau: first increment of the open window, its step fraction and q.u there, q.u
+      !> of the last converged state (both from the step's start, s_step0), and the load's
+      !> rise (relative to the load) over the plateau, or over the last window that closed
+      !> (< 0 while there is neither).
       integer :: flat_increment = 0
-      real(wp) :: tau_flat = 0.0_wp
+      real(wp) :: tau_flat = 0.0_wp, s_flat = 0.0_wp, s_now = 0.0_wp, rise = -1.0_wp
       character(len=:), allocatable :: reason
    end type arc_end_t
 
    !> A path: the request, the path so far (res), and the next increment's length dl (dl0
-   !> the first), cut level, count of flat increments in a row, and whether it goes on by
+   !> the first), cut level, increments in the open plateau window, and whether it goes on by
    !> load control (lc_mode). `started`: set up (a first length chosen), to be continued.
    type :: arc_trace_t
       type(arc_request_t) :: req
@@ -87,12 +94,14 @@ contains
             real(q%cuts, wp), this%dl, this%dl0, real(this%level, wp), real(this%nflat, wp), &
             flag(this%lc_mode), flag(this%started), r%tau, real(r%increments, wp), &
             r%tau_peak, r%sp, real(r%peak_increment, wp), real(r%beyond, wp), flag(r%flat), &
-            flag(r%mechanism), real(r%flat_increment, wp), r%tau_flat, r%s_peak]
+            flag(r%mechanism), real(r%flat_increment, wp), r%tau_flat, r%s_peak, q%s_step0, &
+            r%s_flat, r%s_now, r%rise]
       end associate
    end function trace_to_vector
 
-   !> The trace of `v` (from to_vector, ARC_VECTOR or ARC_VECTOR_V1 long: then no s_peak, so
-   !> every increment below the peak counts as beyond it, as then), with its peak factors
+   !> The trace of `v` (from to_vector, ARC_VECTOR, ARC_VECTOR_V2 or ARC_VECTOR_V1 long: V1
+   !> has no s_peak, so every increment below the peak counts as beyond it, as then; V1 and
+   !> V2 no plateau displacements, so a plateau window begins afresh), with its peak factors
    !> and the probe's reason.
    subroutine trace_from_vector(this, v, peak_factors, why)
       class(arc_trace_t), intent(out) :: this
@@ -107,7 +116,12 @@ contains
          r%tau = v(17); r%increments = nint(v(18)); r%tau_peak = v(19); r%sp = v(20)
          r%peak_increment = nint(v(21)); r%beyond = nint(v(22)); r%flat = v(23) /= 0.0_wp
          r%mechanism = v(24) /= 0.0_wp; r%flat_increment = nint(v(25)); r%tau_flat = v(26)
-         if (size(v) >= ARC_VECTOR) r%s_peak = v(27)
+         if (size(v) >= ARC_VECTOR_V2) r%s_peak = v(27)
+         if (size(v) >= ARC_VECTOR) then
+            q%s_step0 = v(28); r%s_flat = v(29); r%s_now = v(30); r%rise = v(31)
+         else
+            this%nflat = 0
+         end if
          r%peak_factors = peak_factors
          r%reason = ''
       end associate

@@ -25,6 +25,9 @@ module pecplas_problem_position
       !> Step fraction that increment spanned when it was load controlled (the scale of the
       !> next increment's extrapolated start); 0 after an arc-length increment.
       real(wp) :: dtau_prev = 0.0_wp
+      !> Displacement conjugate to the step's load, q.u, at the start of the step (the
+      !> origin of a plateau's doubling, pecplas_solve_arc_path).
+      real(wp) :: s_step0 = 0.0_wp
       !> The arc-length path under way (PATH_STEP, PATH_PROBE: pecplas_problem_arc_trace), or
       !> PATH_NONE, and its state.
       integer :: path = PATH_NONE

@@ -35,13 +35,28 @@ module pecplas_solve_arc_path
    implicit none (type, external)
    private
 
-   public :: trace_arc, BEYOND_PEAK
+   public :: trace_arc, BEYOND_PEAK, conjugate_displacement
 
-   !> The path has become flat when |current stiffness parameter| stays below this for
-   !> FLAT_COUNT increments (the load no longer grows with the displacement: a plateau); the
-   !> limit is where the plateau began, traced FLAT_COUNT - 1 increments beyond.
-   real(wp), parameter :: SP_FLAT = 2.0e-3_wp
+   !> A plateau window opens where |current stiffness parameter| falls below SP_FLAT and
+   !> counts once it has stayed there FLAT_COUNT increments.
+   real(wp), parameter, public :: SP_FLAT = 2.0e-3_wp
    integer, parameter :: FLAT_COUNT = 3
+   !> The window is a plateau (a limit load to this tolerance) when the displacement
+   !> conjugate to the step's load, measured from the step's start, has doubled in it while
+   !> the load rose by at most this share of itself; a window whose load rose more is closed
+   !> and the next one opens there. Over a doubling of the displacement a load approaching
+   !> its limit as 1/u rises by half its remaining distance to it, so the limit is then at
+   !> most 2 PLATEAU_RISE above the load traced; a locking mesh climbs on by about the same
+   !> share per doubling (doc/theory.md section 4, "Convergence, increment cutting and
+   !> statuses").
+   real(wp), parameter, public :: PLATEAU_RISE = 1.0e-3_wp
+   !> On a plateau window the length may grow to this share of the free displacements'
+   !> norm (beyond MAX_LENGTH times the first length), so that the displacement can double
+   !> within the increments of the step or probe.
+   real(wp), parameter :: PLATEAU_STRIDE = 0.5_wp
+   !> ... and grows by at least this factor from one increment to the next (an arc too
+   !> long for the path costs two halvings to come back).
+   real(wp), parameter :: PLATEAU_GROWTH = 4.0_wp
    !> A maximum counts once the load has fallen in this many increments after it, each
    !> below the peak by more than the load noise of the convergence test (load_noise).
    integer, parameter :: BEYOND_PEAK = 2
@@ -78,7 +93,7 @@ contains
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
-      real(wp) :: tau, k_inc, time, s, noise
+      real(wp) :: tau, k_inc, time, s, noise, tau_before
       integer :: method, wanted
       logical :: landed
 
@@ -111,6 +126,8 @@ contains
             res%peak_increment = problem%stats%increments
             res%peak_factors = att%factors(tau)
             res%s_peak = sum(fq*problem%state%u)
+            res%s_now = res%s_peak - req%s_step0
+            res%rise = -1.0_wp
             res%beyond = 0
             tr%started = .true.
          end if
@@ -203,11 +220,15 @@ contains
                end if
                level = level + 1
                problem%stats%cuts = problem%stats%cuts + 1
+               ! (an arc grown beyond MAX_LENGTH on a plateau window goes back to that length:
+               ! halving from far may never reach an arc the path follows)
                dl = 0.5_wp*dl
+               if (nflat >= FLAT_COUNT) dl = min(dl, step%max_length*dl0)
                if (.not. run%quiet) write (*, '(a,es9.2)') '   no convergence: arc length cut to ', dl
                cycle
             end if
             res%mechanism = .false.
+            tau_before = tau
             k_inc = (out%tau - tau)/max(norm2(out%du), tiny(1.0_wp))
             if (run%k_first == 0.0_wp) run%k_first = k_inc
             res%sp = k_inc/run%k_first
@@ -233,15 +254,27 @@ contains
                ! a stiff penalty joint whose states each converge just under the tolerance)
                res%beyond = res%beyond + 1
             end if
-            nflat = merge(nflat + 1, 0, abs(res%sp) < SP_FLAT)
-            if (nflat == 1) then
-               res%flat_increment = problem%stats%increments + 1
-               res%tau_flat = tau
+            res%s_now = s - req%s_step0
+            ! the plateau window: opened by a flat increment (a small stiffness parameter, or
+            ! a change of load the convergence test does not resolve: tiny arcs near a
+            ! mechanism, whose stiffness is noise), kept while the load stays within
+            ! PLATEAU_RISE of where it opened (plateau_test)
+            call plateau_test(res, nflat, problem%stats%increments + 1, tau, &
+               abs(res%sp) < SP_FLAT .or. abs(tau - tau_before) <= noise)
+            ! the next increment's length, should the path go on (on a plateau window not yet
+            ! established, up to PLATEAU_STRIDE of the displacements, so that they can double)
+            if (nflat >= FLAT_COUNT .and. .not. res%flat) then
+               ! (PLATEAU_GROWTH times longer at least: a plateau traced in increments of a
+               ! fixed length, e.g. a rigid-plastic interface that converges each just under
+               ! the tolerance, or arcs cut short where the tangent failed, would take
+               ! thousands of them; an arc that grew too long is cut back as any, by halving)
+               dl = min(max(adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+                  huge(1.0_wp)), PLATEAU_GROWTH*dl), max(step%max_length*dl0, &
+                  PLATEAU_STRIDE*norm2(free_part(problem, u))))
+            else
+               dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
+                  step%max_length*dl0)
             end if
-            res%flat = nflat >= FLAT_COUNT
-            ! the next increment's length, should the path go on
-            dl = adapt_length(dl, out%iterations, wanted, step%min_length*dl0, &
-               step%max_length*dl0)
             level = 0
             ! (an increment that lands on the target ends the path: none goes on)
             if (landed) then
@@ -316,6 +349,72 @@ contains
          end if
       end do
    end subroutine land_on_node
+
+   !> A plateau window opens at global increment `inc`, step fraction tau, at the last
+   !> converged state (res%s_now).
+   pure subroutine open_window(res, inc, tau)
+      type(arc_end_t), intent(inout) :: res
+      integer, intent(in) :: inc
+      real(wp), intent(in) :: tau
+      res%flat_increment = inc
+      res%tau_flat = tau
+      res%s_flat = res%s_now
+   end subroutine open_window
+
+   !> Whether the path is on a plateau (res%flat), after a converged increment (global
+   !> number `inc`, step fraction tau, res%s_now; `flat`: its stiffness parameter is small or
+   !> its change of load unresolved). A flat increment opens a window when none is open;
+   !> `nflat` counts the increments of the open window (0: none). The window closes when the
+   !> load has risen above where it opened by more than PLATEAU_RISE of itself (this
+   !> increment, if flat, opens the next one), and is a plateau once it holds FLAT_COUNT
+   !> increments and the displacement conjugate to the load, from the step's start
+   !> (res%s_flat, res%s_now), has doubled in it (res%rise: the window's rise then).
+   pure subroutine plateau_test(res, nflat, inc, tau, flat)
+      type(arc_end_t), intent(inout) :: res
+      integer, intent(inout) :: nflat
+      integer, intent(in) :: inc
+      real(wp), intent(in) :: tau
+      logical, intent(in) :: flat
+      real(wp) :: top, rise
+      res%flat = .false.
+      if (nflat > 0) then
+         ! the largest load in the window: the path's peak when it lies in the window
+         top = tau
+         if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
+         rise = (top - res%tau_flat)/max(abs(top), tiny(1.0_wp))
+         if (rise > PLATEAU_RISE) then
+            ! risen beyond the tolerance: no plateau here (the rise is kept for the message
+            ! of a path that ends still rising)
+            res%rise = rise
+            nflat = 0
+         else
+            nflat = nflat + 1
+         end if
+      end if
+      if (nflat == 0) then
+         if (.not. flat) return
+         call open_window(res, inc, tau)
+         nflat = 1
+      end if
+      ! no displacement along the load yet (or against it): no doubling to measure
+      if (nflat < FLAT_COUNT .or. .not. (res%s_flat > 0.0_wp)) return
+      if (res%s_now < 2.0_wp*res%s_flat) return
+      top = tau
+      if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
+      res%rise = (top - res%tau_flat)/max(abs(top), tiny(1.0_wp))
+      res%flat = .true.
+   end subroutine plateau_test
+
+   !> The displacement conjugate to the step's load (factors f0 -> ftarget), q.u, of the
+   !> current state: the origin of the plateau's doubling when taken at the step's start.
+   function conjugate_displacement(problem, f0, ftarget) result(s)
+      type(problem_t), intent(in) :: problem
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      real(wp) :: s
+      real(wp), allocatable :: fq(:, :)
+      call step_load(problem, f0, ftarget, fq)
+      s = sum(fq*problem%state%u)
+   end function conjugate_displacement
 
    !> How the path ends after a converged, written increment that did not land on the
    !> target (0: it goes on), from the path so far and the displacements `u`.

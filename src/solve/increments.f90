@@ -8,7 +8,9 @@
 !>   limit load  the load-displacement path has a maximum: the arc-length path passed it (the
 !>               load fell in two increments after it, each below the peak by more than the
 !>               convergence test's load noise, while the loaded points moved on) or
-!>               became flat (current stiffness parameter ~ 0); under load control a step
+!>               has a plateau (the load rose by at most PLATEAU_RISE = 0.1 % while the
+!>               displacement conjugate to it doubled: pecplas_solve_arc_path); a step that
+!>               completes on a plateau says so in a warning; under load control a step
 !>               that cannot be converged is probed by arc-length from the last converged
 !>               state, which either passes the failed load (the run goes on) or establishes
 !>               the maximum; /limit stores the largest converged load of the path (the
@@ -23,13 +25,14 @@ module pecplas_solve_increments
    use pecplas_base_kinds, only: wp
    use pecplas_base_run_status, only: RUN_COMPLETED, RUN_LIMIT_LOAD, RUN_DIVERGED, RUN_STOPPED, &
       RUN_INTERRUPTED
-   use pecplas_base_error, only: error_t
+   use pecplas_base_error, only: error_t, ERR_SINGULAR
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t, LOAD_DISPLACEMENT
    use pecplas_problem_type, only: problem_t
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
-   use pecplas_solve_arc_path, only: trace_arc, BEYOND_PEAK
+   use pecplas_solve_arc_path, only: trace_arc, BEYOND_PEAK, conjugate_displacement, SP_FLAT, &
+      PLATEAU_RISE
    use pecplas_problem_arc_trace, only: arc_trace_t, arc_end_t, END_TARGET, END_PASSED, END_NODE, &
       END_LIMIT, END_MAX, END_FAILED, END_UNLOADED, END_INTERRUPTED, PATH_STEP, PATH_PROBE
    use pecplas_io_results_file, only: results_file_t
@@ -55,7 +58,10 @@ contains
    !> RUN_INTERRUPTED (a termination signal, or the --stop-after-increments test hook);
    !> `message` says why a run stopped. Converged increments are written as they come.
    !> `limit`: where the limit is, when the status is RUN_LIMIT_LOAD (as written to /limit).
-   subroutine run_increments(model, problem, results, quiet, status, message, error, limit)
+   !> `warning`: the steps that ended on a plateau of their load-displacement path, where
+   !> the displacement reached is set by how slowly the load still rises ('' for none).
+   subroutine run_increments(model, problem, results, quiet, status, message, error, limit, &
+         warning)
       type(model_t), intent(in) :: model
       type(problem_t), intent(inout) :: problem
       type(results_file_t), intent(inout) :: results
@@ -64,12 +70,14 @@ contains
       character(len=:), allocatable, intent(out) :: message
       type(error_t), allocatable, intent(out) :: error
       type(limit_point_t), intent(out), optional :: limit
+      character(len=:), allocatable, intent(out), optional :: warning
       type(run_t) :: run
       real(wp), allocatable :: f0(:), ftarget(:)
       integer :: istep, istep0
 
       call cpu_time(run%cpu_start)
       run%quiet = quiet
+      run%plateau_warning = ''
       call run%eta%start(wall_time(), sum(model%steps%increments), 10.0_wp)
       status = RUN_COMPLETED
       message = 'all steps completed'
@@ -110,7 +118,13 @@ contains
          ! a phased run: the step's changes at its start (a resumed step has them already)
          if (problem%phase%phased .and. .not. problem%position%resume) then
             call begin_phase(model, problem, results, run, istep, error)
-            if (allocated(error)) return
+            if (allocated(error)) then
+               ! the phase's changes leave a mechanism: no equilibrium, the run stops here
+               if (error%kind /= ERR_SINGULAR) return
+               call phase_mechanism(model, problem, istep, error, status, message)
+               deallocate (error)
+               exit
+            end if
          end if
          f0 = problem%state%factors
          if (problem%position%resume) f0 = problem%position%f0
@@ -118,6 +132,10 @@ contains
          ftarget(model%steps(istep)%pattern) = model%steps(istep)%target
          run%k_first = 0.0_wp
          if (problem%position%resume) run%k_first = problem%position%k_first
+         ! the origin of a plateau's doubling (kept in the position for a restart)
+         if (.not. problem%position%resume) problem%position%s_step0 = &
+            conjugate_displacement(problem, f0, ftarget)
+         run%s_step0 = problem%position%s_step0
          if (model%steps(istep)%arc_length) then
             call arc_step(model, problem, results, run, istep, f0, ftarget, status, message, &
                error)
@@ -136,6 +154,7 @@ contains
       end if
       if (status == RUN_LIMIT_LOAD) call results%write_limit(run%limit, error)
       if (present(limit) .and. status == RUN_LIMIT_LOAD) limit = run%limit
+      if (present(warning)) warning = run%plateau_warning
    end subroutine run_increments
 
    !> The start of step istep of a phased run (pecplas_phases_start): its changes applied,
@@ -219,7 +238,7 @@ contains
       type(outcome_t) :: out
       type(arc_trace_t) :: probe
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :)
-      real(wp) :: tau, dt, dt0
+      real(wp) :: tau, dt, dt0, sp_last
       integer :: level, inc, method
       logical :: probing
 
@@ -232,6 +251,7 @@ contains
          level = 0
          inc = 0
          probing = .false.
+         sp_last = 1.0_wp
          if (problem%position%resume) then
             associate (pos => problem%position)
                dt = pos%dt; tau = pos%tau; level = pos%level; inc = pos%inc_in_step
@@ -275,7 +295,7 @@ contains
                   if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
                      'probing the path by arc-length from the last converged state'
                   call probe_request(model, istep, tau, dt, level, out%reason, run%k_first, &
-                     probe)
+                     run%s_step0, probe)
                end if
                probing = .false.
                call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, probe, &
@@ -289,6 +309,7 @@ contains
                      ! a convergence failure, not a limit: load control goes on from here
                      ! (a probe that landed on the target: the run may have to stop there)
                      if (res%kind == END_TARGET) then
+                        sp_last = res%sp
                         if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
                      end if
                      tau = res%tau
@@ -317,6 +338,10 @@ contains
             inc = inc + 1
             if (run%k_first == 0.0_wp .and. allocated(out%du)) &
                run%k_first = dt/max(norm2(out%du), tiny(1.0_wp))
+            ! the current stiffness parameter of this increment (the step's end on a plateau)
+            sp_last = 1.0_wp
+            if (run%k_first > 0.0_wp .and. allocated(out%du)) &
+               sp_last = dt/max(norm2(out%du), tiny(1.0_wp))/run%k_first
             ! the loop's position after this increment (the size grows back below), for the
             ! restart data written with the increment
             call problem%position%record(istep, inc, tau, merge(min(dt0, 2.0_wp*dt), dt, &
@@ -333,8 +358,30 @@ contains
                dt = min(dt0, 2.0_wp*dt)
             end if
          end do
+         ! reached its end on a plateau: say so (the displacement is not the soil's answer)
+         if (abs(sp_last) < SP_FLAT .and. force_driven(model, f0, ftarget)) &
+            call plateau_end(model, istep, sp_last, run)
       end associate
    end subroutine load_step
+
+   !> Step istep reached its target with its last increment on a plateau of the
+   !> load-displacement path (current stiffness parameter sp, |sp| < SP_FLAT): the run's
+   !> warning says that the displacement reached is set by how slowly the load still rises
+   !> there and is unbounded in small-strain terms.
+   subroutine plateau_end(model, istep, sp, run)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: istep
+      real(wp), intent(in) :: sp
+      type(run_t), intent(inout) :: run
+      if (len(run%plateau_warning) > 0) run%plateau_warning = run%plateau_warning//'; '
+      run%plateau_warning = run%plateau_warning//'step '//itoa(istep)//' ('// &
+         model%steps(istep)%name//') reached its load on a plateau of the load-displacement '// &
+         'path (its last increment''s stiffness is '//g6(sp)//' times its first, below '// &
+         g6(SP_FLAT)//'): the load is at or near the limit of this model, and the '// &
+         'displacement reached is set by how slowly the load still rises there (unbounded in '// &
+         'small-strain terms, not a settlement of the soil); an arc-length step shows whether '// &
+         'the path still rises (doc/theory.md section 4)'
+   end subroutine plateau_end
 
    !> The extrapolated start of a load-controlled increment of size `dt` (att%du_start): the
    !> previous converged increment of the same step (`inc` > 0 of them converged), when it
@@ -387,12 +434,15 @@ contains
             path%req%dtau_first = 1.0_wp/step%increments
             path%req%max_increments = step%max_increments
             path%req%time0 = real(istep - 1, wp)
+            path%req%s_step0 = run%s_step0
          end if
          call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, path, error)
          if (allocated(error)) return
          select case (res%kind)
          case (END_TARGET)
-            ! the step ends on its target: the run may have to stop after that increment
+            ! the step ends on its target (on a plateau: say so); the run may have to stop
+            ! after that increment
+            if (abs(res%sp) < SP_FLAT) call plateau_end(model, istep, res%sp, run)
             if (interrupted(model, problem, istep, 1.0_wp, status, message)) return
          case (END_INTERRUPTED)
             call interrupted_status(problem, status, message)
@@ -435,10 +485,10 @@ contains
    !> increment: near a limit that increment may have run far along the plateau, and an arc
    !> that long from a state where the tangent fails converges, if at all, on an unloading
    !> branch.
-   subroutine probe_request(model, istep, tau, dt, cuts, why, k_first, probe)
+   subroutine probe_request(model, istep, tau, dt, cuts, why, k_first, s_step0, probe)
       type(model_t), intent(in) :: model
       integer, intent(in) :: istep, cuts
-      real(wp), intent(in) :: tau, dt, k_first
+      real(wp), intent(in) :: tau, dt, k_first, s_step0
       character(len=*), intent(in) :: why
       type(arc_trace_t), intent(out) :: probe
       associate (req => probe%req)
@@ -450,6 +500,7 @@ contains
          req%dtau_first = dt
          req%max_increments = model%solver%limit_probe
          req%stop_at_limit = .true.
+         req%s_step0 = s_step0
          req%time0 = real(istep - 1, wp) + tau
          req%time_span = 0.5_wp*dt
          req%cuts = cuts
@@ -462,9 +513,16 @@ contains
    logical function probe_allowed(model, f0, ftarget) result(ok)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: f0(:), ftarget(:)
-      integer :: p
       ok = model%solver%limit_probe > 0
-      if (.not. ok) return
+      if (ok) ok = force_driven(model, f0, ftarget)
+   end function probe_allowed
+
+   !> The step (factors f0 -> ftarget) raises a force and changes no imposed displacement:
+   !> its load-displacement path can have a limit.
+   logical function force_driven(model, f0, ftarget) result(ok)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: f0(:), ftarget(:)
+      integer :: p
       ok = .false.
       do p = 1, size(f0)
          if (model%patterns(p)%kind == LOAD_DISPLACEMENT) then
@@ -476,7 +534,7 @@ contains
             ok = .true.
          end if
       end do
-   end function probe_allowed
+   end function force_driven
 
    subroutine limit_reached(model, problem, run, step, istep, res, status, message)
       type(model_t), intent(in) :: model
@@ -511,11 +569,16 @@ contains
          ! the plateau: where it began, and the largest load traced on it
          run%limit%kind = 'flat'
          run%limit%global_increment = res%flat_increment ! where the plateau began
-         message = message//'the load-displacement path is flat (current stiffness '// &
-            'parameter '//g6(res%sp)//') from step fraction '//g6(res%tau_flat)// &
-            ' (increment '//itoa(res%flat_increment)//'), traced '// &
-            itoa(problem%stats%increments - res%flat_increment)//' increments along it, its '// &
-            'largest load at step fraction '//g6(res%tau_peak)
+         message = message//'the load-displacement path has a plateau, no maximum: from '// &
+            'step fraction '//g6(res%tau_flat)//' (increment '//itoa(res%flat_increment)// &
+            ') the load '//merge('rose by', 'fell by', res%rise >= 0.0_wp)//' '// &
+            pct(abs(res%rise))//' (a plateau: a rise of at most '//pct(PLATEAU_RISE)// &
+            ') while the displacement conjugate to it grew '//g6(growth(res))//' times '// &
+            '(from the step''s start; current stiffness parameter '//g6(res%sp)//'), traced '// &
+            itoa(problem%stats%increments - res%flat_increment)//' increments along it; its '// &
+            'largest load, at step fraction '//g6(res%tau_peak)//', is the limit to that '// &
+            'tolerance (a path approaching its limit as 1/u has it at most twice that rise '// &
+            'above; a larger load may still be carried at a larger displacement)'
       end if
       message = message//'; load factors at the peak:'//factors_text(model, step, &
          run%limit%pattern_factors)
@@ -564,6 +627,29 @@ contains
       mechanism = res%kind == END_FAILED .and. res%increments > 0 .and. res%beyond == 0 .and. &
          res%mechanism
    end function mechanism
+
+   !> Status RUN_DIVERGED for a stiffness that is singular after the changes at the start of
+   !> phase istep (a support or the elements holding a part removed): the structure is a
+   !> mechanism and no equilibrium exists; `error` names the free node and direction. The
+   !> increments converged before stay in the results file.
+   subroutine phase_mechanism(model, problem, istep, error, status, message)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: istep
+      type(error_t), intent(in) :: error
+      integer, intent(inout) :: status
+      character(len=:), allocatable, intent(inout) :: message
+      status = RUN_DIVERGED
+      message = 'step '//itoa(istep)//' ('//model%steps(istep)%name//'): no equilibrium: '// &
+         'the changes at the start of the phase leave a mechanism (singular stiffness): '// &
+         error%text()//'; last converged state: '
+      if (problem%stats%increments > 0) then
+         message = message//'increment '//itoa(problem%stats%increments)
+      else
+         message = message//'the initial state'
+      end if
+      message = message//', kept in the results file'
+   end subroutine phase_mechanism
 
    !> Status RUN_DIVERGED: where and why, and the last converged state (its increment and
    !> load factors), kept in the results file.
@@ -617,13 +703,31 @@ contains
       select case (res%kind)
       case (END_MAX)
          text = 'traced '//itoa(res%increments)//' increments to fraction '//g6(res%tau)// &
-            ' without passing the failed load ('//peak_note(res)//')'
+            ' without passing the failed load ('//peak_note(res)//')'//window_note(res)
       case (END_NODE)
          text = 'reached the step''s target displacement'
       case default
-         text = 'failed after '//itoa(res%increments)//' increments: '//res%reason
+         text = 'failed after '//itoa(res%increments)//' increments: '//res%reason// &
+            window_note(res)
       end select
    end function probe_failure
+
+   !> What an open plateau window had shown when a path failed: the load's change and the
+   !> displacement's growth in it ('' for none).
+   function window_note(res) result(text)
+      type(arc_end_t), intent(in) :: res
+      character(len=:), allocatable :: text
+      real(wp) :: top
+      text = ''
+      if (res%flat_increment <= 0 .or. .not. (res%s_flat > 0.0_wp)) return
+      top = res%tau
+      if (res%peak_increment >= res%flat_increment) top = max(top, res%tau_peak)
+      text = ' (the path was nearly flat from step fraction '//g6(res%tau_flat)// &
+         ' (increment '//itoa(res%flat_increment)//'): the load changed by '// &
+         pct((top - res%tau_flat)/max(abs(top), tiny(1.0_wp)))//' while the displacement '// &
+         'conjugate to it grew '//g6(growth(res))//' times, short of the doubling that '// &
+         'establishes a plateau: no limit load is claimed)'
+   end function window_note
 
    !> What a path that used its increments says of a maximum: none when it still rises;
    !> otherwise its largest load and how many falls beyond the noise followed it (a maximum
@@ -634,6 +738,10 @@ contains
       character(len=:), allocatable :: text
       if (.not. (res%tau < res%tau_peak)) then
          text = 'no maximum of the load on the way'
+         if (res%rise >= 0.0_wp) text = text//'; the path is nearly flat but still rises: '// &
+            'its last plateau window closed when the load had risen by '//pct(res%rise)// &
+            ', more than the '//pct(PLATEAU_RISE)//' a plateau allows while the displacement '// &
+            'conjugate to it doubles'
          return
       end if
       text = 'no maximum established: the largest load, at step fraction '// &
@@ -641,5 +749,26 @@ contains
          itoa(res%beyond)//' fall(s) beyond the convergence noise and 0.1 % of it, of the '// &
          itoa(BEYOND_PEAK)//' that establish a maximum'
    end function peak_note
+
+   !> A share as a percentage, e.g. '0.140 %' or '7.14E-03 %'.
+   function pct(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=16) :: b
+      if (abs(x) >= 1.0e-3_wp) then
+         write (b, '(f10.3)') 100.0_wp*x
+      else
+         write (b, '(es9.2)') 100.0_wp*x
+      end if
+      text = trim(adjustl(b))//' %'
+   end function pct
+
+   !> How many times the displacement conjugate to the step's load, from the step's start,
+   !> grew over the plateau window.
+   real(wp) function growth(res)
+      type(arc_end_t), intent(in) :: res
+      growth = 0.0_wp
+      if (res%s_flat > 0.0_wp) growth = res%s_now/res%s_flat
+   end function growth
 
 end module pecplas_solve_increments

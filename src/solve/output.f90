@@ -310,7 +310,11 @@ contains
             f%name = model%anchors(s)%name
             f%active = st%active
             f%force = st%force
-            f%force_per_width = st%force/model%anchors(s)%spacing
+            ! a prestress step: the force acting on the wall at the fraction tau applied so
+            ! far, N0 + tau (P - N0) (the rest is still the carried out-of-balance)
+            if (st%prestressing .and. problem%position%tau < 1.0_wp) f%force = &
+               st%force_start + problem%position%tau*(st%force - st%force_start)
+            f%force_per_width = f%force/model%anchors(s)%spacing
          end associate
       end do
    end subroutine anchor_fields

@@ -16,7 +16,7 @@ module pecplas_solve_restart
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
-      ARC_VECTOR_V1
+      ARC_VECTOR_V1, ARC_VECTOR_V2
    use pecplas_solve_stiffness, only: factorise_values, partitioned, factorise_stiffness
    use pecplas_phases_start, only: replay_phases
    use pecplas_linalg_sparse, only: csc_t
@@ -67,6 +67,7 @@ contains
          if (allocated(p%du_prev)) call data%add('du_prev', p%du_prev)
          call data%add('lead', [real(p%lead, wp)])
          call data%add('dtau_prev', [p%dtau_prev])
+         call data%add('s_step0', [p%s_step0])
          call data%add('arc', [real(p%path, wp), p%arc%to_vector()])
          if (p%path /= PATH_NONE) then
             call data%add('arc_peak_factors', p%arc%res%peak_factors)
@@ -148,6 +149,8 @@ contains
                   call data%add('anchor_'//itoa(s), [merge(1.0_wp, 0.0_wp, a%active), &
                      merge(1.0_wp, 0.0_wp, a%prestressing), a%prestress, a%force, a%plastic, &
                      a%e0])
+                  ! the forces a prestress phase started from (optional on reading)
+                  call data%add('anchor_start_'//itoa(s), a%force_start)
                end associate
             end do
          end if
@@ -199,10 +202,14 @@ contains
       names = restart_names(size(problem%state%sets), nj, np)
       ! anchors (each set's activity, prestress, forces, elongations)
       if (allocated(problem%state%anchors%sets)) then
-         allocate (anames(size(names) + size(problem%state%anchors%sets)))
+         allocate (anames(size(names) + 2*size(problem%state%anchors%sets)))
          anames(1:size(names)) = names
          do np = 1, size(problem%state%anchors%sets)
             anames(size(names) + np) = 'anchor_'//itoa(np)
+         end do
+         ! and the forces a prestress phase started from (optional)
+         do np = 1, size(problem%state%anchors%sets)
+            anames(size(names) + size(problem%state%anchors%sets) + np) = 'anchor_start_'//itoa(np)
          end do
          deallocate (names)
          allocate (character(len=64) :: names(size(anames)))
@@ -397,6 +404,12 @@ contains
                   a%force = v(4:3 + size(a%force))
                   a%plastic = v(4 + size(a%force):3 + 2*size(a%force))
                   a%e0 = v(4 + 2*size(a%force):)
+                  a%force_start = a%force
+                  if (data%has('anchor_start_'//itoa(s))) then
+                     call data%get('anchor_start_'//itoa(s), size(a%force), v, error)
+                     if (allocated(error)) return
+                     a%force_start = v
+                  end if
                end associate
             end do
          end if
@@ -462,6 +475,13 @@ contains
             if (allocated(error)) return
             p%dtau_prev = v(1)
          end if
+         ! q.u at the start of the step (older restart data: none, measured from u = 0)
+         p%s_step0 = 0.0_wp
+         if (data%has('s_step0')) then
+            call data%get('s_step0', 1, v, error)
+            if (allocated(error)) return
+            p%s_step0 = v(1)
+         end if
          ! the method the chain starts with (older restart data: the run's own)
          p%lead = 0
          if (data%has('lead')) then
@@ -471,9 +491,11 @@ contains
          end if
          p%path = PATH_NONE
          if (.not. data%has('arc')) return
-         ! (restart data of an older version: ARC_VECTOR_V1 numbers)
+         ! (restart data of an older version: ARC_VECTOR_V1 or ARC_VECTOR_V2 numbers)
          if (data%length('arc') == 1 + ARC_VECTOR_V1) then
             call data%get('arc', 1 + ARC_VECTOR_V1, v, error)
+         else if (data%length('arc') == 1 + ARC_VECTOR_V2) then
+            call data%get('arc', 1 + ARC_VECTOR_V2, v, error)
          else
             call data%get('arc', 1 + ARC_VECTOR, v, error)
          end if

@@ -19,6 +19,10 @@ module pecplas_structures_anchor_state
       !> elongation e0, and the tangent dN/de of the last trial update.
       real(wp), allocatable :: force(:), force_trial(:), plastic(:), plastic_trial(:), &
          e0(:), tangent(:)
+      !> During a prestress phase: the force N0 of each bar at the phase's start. The wall
+      !> receives N0 + tau (P - N0) at step fraction tau (the rest is the phase's carried
+      !> out-of-balance), which is the force the results report.
+      real(wp), allocatable :: force_start(:)
    end type anchor_set_state_t
 
    type :: anchor_state_t

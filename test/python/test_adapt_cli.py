@@ -132,3 +132,24 @@ def test_adaptive_run_prints_warnings_and_strict_refuses(pecplas, tmp_path, how)
     r = run(pecplas, deck, *args, "-o", out)
     assert r.returncode == 0, r.stderr
     assert "warning:" in r.stderr and "spare_set" in r.stderr and out.exists()
+
+
+@pytest.mark.parametrize("source, extra, expected", [
+    ("test/data/plates/cantilever_tip.inp", "", "not available for a deck with plates (*PLATE)"),
+    ("test/data/cli/oedometer.inp",
+     "*ANCHOR, NAME=prop, TYPE=FIXED_END, EA=2e6, LENGTH=5, ANGLE=90, SPACING=2\n3\n",
+     "not available for a deck with anchors (*ANCHOR)"),
+])
+def test_adapt_keyword_with_structures_names_the_line(pecplas, tmp_path, source, extra,
+                                                       expected):
+    # a plate or an anchor cannot follow the refinement: *ADAPT is refused at its own line
+    text = (ROOT / source).read_text()
+    text = text.replace("*BOUNDARY", extra + "*BOUNDARY", 1) + "*ADAPT, TARGET=5%\n"
+    deck = tmp_path / "bad.inp"
+    deck.write_text(text)
+    out = tmp_path / "bad.h5"
+    r = run(pecplas, deck, "-o", out)
+    nline = len(text.splitlines())
+    assert r.returncode == 2 and expected in r.stderr, r.stderr
+    assert f"bad.inp:{nline}: [*ADAPT]" in r.stderr, r.stderr
+    assert not out.exists()

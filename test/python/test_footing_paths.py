@@ -19,10 +19,12 @@ arc-length (doc/theory.md §4).
 - The c-phi footing (phi = psi = 30 deg, c = 10 kPa, weightless: Prandtl c N_c = 301.4 kPa)
   under a pressure raised to 1.2 N_c c by load control, NEWTON, with 12, 24 and 48 increments
   (T6, nf = 1) and 12 (nf = 3): the run says either 'limit load' within 2 % of the arc-length
-  limit of the same mesh, the stored limit being the largest load of the path, or 'diverged'
+  limit of the same mesh (a plateau to 0.1 %), the stored limit being the largest load of the path, or 'diverged'
   naming a last converged load within 2 % below that limit; never a limit more than 2 % below.
-  (Measured: every run 'limit load', +0.15 to +0.40 % of the arc-length limits 315.92 and
-  307.54 kPa after 60 and 40 increments, which still creep up along the plateau; before the
+  (Measured: every run 'limit load', -0.06 to +0.07 % of the arc-length limits 317.05 and
+  308.80 kPa after 60 and 80 increments, plateaus to 0.1 % per doubling of the displacement
+  (doc/theory.md §4; before that rule the arc-length steps said 315.92 and 307.54 kPa after
+  60 and 40 increments, still creeping up; 40 increments now end 'stopped' on nf = 3); before the
   probe started at its first state and went forward, 24 and 48 increments said 'diverged' at
   the limit without naming a load, and nf = 3 with 12 increments reported a limit of
   86.0 kPa, a load the probe had stepped down to.)
@@ -100,7 +102,7 @@ def test_limit_probe_under_load_control(tmp_path):
     nc = (nq - 1.0) / math.tan(math.radians(30.0))
     pressure = round(1.2 * nc * 10.0, 3)
     solver = "*SOLVER, METHOD=NEWTON"
-    for nf, cases, arc_increments in ((1, (12, 24, 48), 60), (3, (12,), 40)):
+    for nf, cases, arc_increments in ((1, (12, 24, 48), 60), (3, (12,), 80)):
         arc = deck(nf=nf, c=10.0, phi=30.0, psi=30.0, drive="pressure", pressure=pressure,
                    increments=24, solver=solver,
                    step_options=f", CONTROL=ARC_LENGTH, MAX_INCREMENTS={arc_increments}")

@@ -10,8 +10,8 @@ statics of the free body give the section forces exactly: at the free tip M = 0 
 at the clamped root M = -F L, with the root's vertical reaction F (F > 0: the prop pulls). Half-way through
 the deactivation the carried out-of-balance still holds half the pattern's load, so the
 plate's own load is q/2: Q(root) - Q(tip) = q L / 2 and the tip moment is 0 (the reactions
-are checked at the ends of the steps only: the carried out-of-balance acts on the free
-equations, so the pattern's share on the clamped node leaves the reaction at the step's start).
+are checked at the ends of the steps here; test_reaction_pattern_switch.py checks them at
+every increment).
 The plate's forces are its nodal forces less its own load: the 2-node linked element's
 consistent load vector is exact (Tong), so these hold to the solver tolerance (1e-10 here,
 1e-6 of the forces of about 100 is a bound far above it). Before, the pattern's load was

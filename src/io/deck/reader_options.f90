@@ -243,6 +243,24 @@ contains
             'mesh by hand) or one without phases', error)
          return
       end if
+      if (allocated(model%plates)) then
+         if (size(model%plates) > 0) then
+            call line_error(state, model%adapt%at, 'adaptive refinement is not available '// &
+               'for a deck with plates (*PLATE): the refinement does not carry plates along; '// &
+               'expected a deck without *ADAPT (refine the mesh by hand) or one without '// &
+               'plates', error)
+            return
+         end if
+      end if
+      if (allocated(model%anchors)) then
+         if (size(model%anchors) > 0) then
+            call line_error(state, model%adapt%at, 'adaptive refinement is not available '// &
+               'for a deck with anchors (*ANCHOR): the refinement does not carry anchors '// &
+               'along; expected a deck without *ADAPT (refine the mesh by hand) or one '// &
+               'without anchors', error)
+            return
+         end if
+      end if
       call parse_goal_spec(model%adapt%goal, goal, msg)
       select case (goal%kind)
       case (GOAL_NODE)

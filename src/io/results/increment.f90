@@ -105,7 +105,8 @@ module pecplas_io_results_increment
    !> The largest load of a path that has a maximum: step, global increment and step
    !> fraction where it was reached, the pattern factors there, and how the maximum showed
    !> ('passed': the load fell after it; 'mechanism': the tangent of the next states is
-   !> singular (a rigid-plastic interface in full slip); 'flat': the current stiffness parameter ~ 0 — then
+   !> singular (a rigid-plastic interface in full slip); 'flat': a plateau, the load rose by at
+   !> most 0.1 % while the displacement conjugate to it doubled (pecplas_solve_arc_path) — then
    !> the increment is where the plateau began and the fraction and factors are the largest
    !> load traced on it).
    type :: limit_point_t
