@@ -7,7 +7,7 @@ module pecplas_cmd_adapt
    use pecplas_base_error, only: error_t, EXIT_OK, EXIT_INPUT, EXIT_STOPPED
    use pecplas_model_type, only: model_t
    use pecplas_io_deck_reader, only: read_deck
-   use pecplas_model_phase_plan, only: is_phased
+   use pecplas_model_adapt_scope, only: adapt_refusal
    use pecplas_model_geometry, only: check_geometry
    use pecplas_model_mesh_tools, only: check_elements
    use pecplas_problem_type, only: problem_t
@@ -54,28 +54,10 @@ contains
          code = command_error('pecplas', error%exit_code(), error%text())
          return
       end if
-      if (is_phased(model)) then
-         code = command_error('pecplas', EXIT_INPUT, deck//': adaptive refinement '// &
-            '(--target-error, *ADAPT) is not available for a phased deck (doc/deck.md, Phases): '// &
-            'the sets a phase activates or removes would have to be refined with it; refine '// &
-            'the mesh of the deck by hand')
+      if (len(adapt_refusal(model)) > 0) then
+         code = command_error('pecplas', EXIT_INPUT, deck//': '//adapt_refusal(model)// &
+            ' (--target-error, *ADAPT)')
          return
-      end if
-      if (allocated(model%plates)) then
-         if (size(model%plates) > 0) then
-            code = command_error('pecplas', EXIT_INPUT, deck//': adaptive refinement '// &
-               '(--target-error, *ADAPT) is not available for a deck with plates (*PLATE): '// &
-               'the refinement does not carry plates along; refine the mesh of the deck by hand')
-            return
-         end if
-      end if
-      if (allocated(model%anchors)) then
-         if (size(model%anchors) > 0) then
-            code = command_error('pecplas', EXIT_INPUT, deck//': adaptive refinement '// &
-               '(--target-error, *ADAPT) is not available for a deck with anchors (*ANCHOR): '// &
-               'the refinement does not carry anchors along; refine the mesh of the deck by hand')
-            return
-         end if
       end if
       ! the deck's warnings (reading, element shapes, joints) once, before the first level, as
       ! for one run; the refined levels' meshes are the program's own

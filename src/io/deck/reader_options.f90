@@ -10,7 +10,7 @@ module pecplas_io_deck_reader_options
    use pecplas_io_deck_state, only: deck_state_t, deck_block_t, raw_item_t, raw_step_t, &
       line_error, where_text, push_item
    use pecplas_model_type, only: model_t
-   use pecplas_model_phase_plan, only: is_phased
+   use pecplas_model_adapt_scope, only: adapt_refusal
    use pecplas_base_units, only: parse_units
    use pecplas_base_parallel, only: parallel_built
    use pecplas_model_adapt_request, only: parse_target, parse_goal_spec, goal_spec_t, &
@@ -235,31 +235,11 @@ contains
       character(len=:), allocatable :: msg
       integer :: inode
       if (.not. model%adapt%given) return
-      ! what the adaptive loop refuses (pecplas_cmd_adapt), named at the *ADAPT line
-      if (is_phased(model)) then
-         call line_error(state, model%adapt%at, 'adaptive refinement is not available for '// &
-            'a phased deck (doc/deck.md, Phases): the sets a phase activates or removes '// &
-            'would have to be refined with it; expected a deck without *ADAPT (refine the '// &
-            'mesh by hand) or one without phases', error)
+      ! what the adaptive loop refuses (pecplas_model_adapt_scope), named at the *ADAPT line
+      msg = adapt_refusal(model)
+      if (len(msg) > 0) then
+         call line_error(state, model%adapt%at, msg//'; expected a deck without *ADAPT', error)
          return
-      end if
-      if (allocated(model%plates)) then
-         if (size(model%plates) > 0) then
-            call line_error(state, model%adapt%at, 'adaptive refinement is not available '// &
-               'for a deck with plates (*PLATE): the refinement does not carry plates along; '// &
-               'expected a deck without *ADAPT (refine the mesh by hand) or one without '// &
-               'plates', error)
-            return
-         end if
-      end if
-      if (allocated(model%anchors)) then
-         if (size(model%anchors) > 0) then
-            call line_error(state, model%adapt%at, 'adaptive refinement is not available '// &
-               'for a deck with anchors (*ANCHOR): the refinement does not carry anchors '// &
-               'along; expected a deck without *ADAPT (refine the mesh by hand) or one '// &
-               'without anchors', error)
-            return
-         end if
       end if
       call parse_goal_spec(model%adapt%goal, goal, msg)
       select case (goal%kind)
