@@ -43,16 +43,13 @@ def test_plate_forces_follow_pattern_switch(tmp_path):
     _, out = run_text(deck(), tmp_path, "pattern_switch")
     with Results(out) as r:
         assert r.status == "completed"
-        by_step = {}
-        for k in r.keys:
-            by_step.setdefault(r.step_of(k), []).append(k)
         for step in (3, 4):
-            for i, k in enumerate(by_step[step]):
+            for i, k in enumerate(r.keys_of(step)):
                 g = r.increment(k)
                 ef = g["plates/beam/end_forces"][()]        # (nel, 2 ends, N Q M)
                 root, tip = ef[0, 0], ef[-1, 1]
                 f = g["anchors/prop/force_per_width"][()][0]
-                tau = (i + 1) / len(by_step[step])
+                tau = (i + 1) / len(r.keys_of(step))
                 on = tau if step == 4 else 1.0 - tau      # fraction of q acting
                 assert abs(tip[2]) <= TOL, (step, i, tip)
                 assert abs((root[1] - tip[1]) - (-on * Q * L)) <= TOL, (step, i, root, tip)

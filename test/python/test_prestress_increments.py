@@ -33,14 +33,11 @@ def test_prestress_force_is_the_acting_one_at_every_increment(tmp_path):
     p, out = run_text(deck(), tmp_path, "prestress")
     with Results(out) as r:
         assert r.status == "completed", p.stderr
-        by_step = {}
-        for k in r.keys:
-            by_step.setdefault(r.step_of(k), []).append(k)
-        assert [len(by_step[s]) for s in (1, 2, 3)] == [1, 4, 2]
+        assert [len(r.keys_of(s)) for s in (1, 2, 3)] == [1, 4, 2]
         for step, n0, target in ((2, 0.0, P), (3, P, P2)):
-            for i, k in enumerate(by_step[step]):
+            for i, k in enumerate(r.keys_of(step)):
                 g = r.increment(k)
-                tau = (i + 1) / len(by_step[step])
+                tau = (i + 1) / len(r.keys_of(step))
                 n = g["anchors/prop/force"][()][0]
                 f = g["anchors/prop/force_per_width"][()][0]
                 ry = g["reaction"][()][:, 1].sum()

@@ -22,14 +22,11 @@ def test_reactions_follow_the_pattern_at_every_increment(tmp_path):
     p, out = run_text(deck(), tmp_path, "reaction_switch")
     with Results(out) as r:
         assert r.status == "completed", p.stderr
-        by_step = {}
-        for k in r.keys:
-            by_step.setdefault(r.step_of(k), []).append(k)
-        assert [len(by_step[s]) for s in (3, 4)] == [2, 2]
+        assert [len(r.keys_of(s)) for s in (3, 4)] == [2, 2]
         for step in (3, 4):
-            for i, k in enumerate(by_step[step]):
+            for i, k in enumerate(r.keys_of(step)):
                 g = r.increment(k)
-                tau = (i + 1) / len(by_step[step])
+                tau = (i + 1) / len(r.keys_of(step))
                 on = tau if step == 4 else 1.0 - tau
                 f = g["anchors/prop/force_per_width"][()][0]
                 ry = g["reaction"][()][:, 1].sum()

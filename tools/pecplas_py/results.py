@@ -129,9 +129,13 @@ class Results:
     def step_of(self, key):
         return int(self.increment(key).attrs["step"])
 
+    def keys_of(self, step):
+        """Keys of the written increments of step `step`, in order."""
+        return [k for k in self.keys if self.step_of(k) == step]
+
     def last_key(self, step=None):
         """The last written increment, of step `step` when given."""
-        keys = self.keys if step is None else [k for k in self.keys if self.step_of(k) == step]
+        keys = self.keys if step is None else self.keys_of(step)
         return keys[-1]
 
     def field(self, key, name):
