@@ -61,9 +61,6 @@ module pecplas_solve_attempts
       !> Step fraction / |Δu| of the step's first increment (the reference of the current
       !> stiffness parameter); 0 until known.
       real(wp) :: k_first = 0.0_wp
-      !> Displacement conjugate to the step's load, q.u, at the step's start (the origin of
-      !> a plateau's doubling, pecplas_solve_arc_path).
-      real(wp) :: s_step0 = 0.0_wp
       !> Steps that ended on a plateau of their load-displacement path ('' for none): the
       !> run's warning (pecplas_solve_increments).
       character(len=:), allocatable :: plateau_warning

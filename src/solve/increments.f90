@@ -135,7 +135,6 @@ contains
          ! the origin of a plateau's doubling (kept in the position for a restart)
          if (.not. problem%position%resume) problem%position%s_step0 = &
             conjugate_displacement(problem, f0, ftarget)
-         run%s_step0 = problem%position%s_step0
          if (model%steps(istep)%arc_length) then
             call arc_step(model, problem, results, run, istep, f0, ftarget, status, message, &
                error)
@@ -295,7 +294,7 @@ contains
                   if (.not. run%quiet) write (*, '(a)') '   no convergence at any cut: '// &
                      'probing the path by arc-length from the last converged state'
                   call probe_request(model, istep, tau, dt, level, out%reason, run%k_first, &
-                     run%s_step0, probe)
+                     problem%position%s_step0, probe)
                end if
                probing = .false.
                call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, probe, &
@@ -434,7 +433,7 @@ contains
             path%req%dtau_first = 1.0_wp/step%increments
             path%req%max_increments = step%max_increments
             path%req%time0 = real(istep - 1, wp)
-            path%req%s_step0 = run%s_step0
+            path%req%s_step0 = problem%position%s_step0
          end if
          call trace_arc(model, problem, results, run, istep, f0, ftarget, inc, path, error)
          if (allocated(error)) return
