@@ -18,7 +18,8 @@ module pecplas_io_results_restart
    use hdf5, only: hid_t, hsize_t, h5lexists_f, h5ldelete_f, h5lmove_f, h5gopen_f, h5dopen_f, &
       h5dclose_f, h5dget_space_f, h5sclose_f, h5sget_simple_extent_dims_f, h5dwrite_f, &
       h5lcreate_hard_f, h5oget_info_f, h5o_info_t, h5oopen_f, h5oclose_f, &
-      h5sget_simple_extent_ndims_f, H5T_NATIVE_DOUBLE, H5O_TYPE_DATASET_F
+      h5sget_simple_extent_ndims_f, H5T_NATIVE_DOUBLE, H5O_TYPE_DATASET_F, h5aopen_f, h5awrite_f, &
+      h5aclose_f
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_io_results_h5, only: h5_group, h5_close_group, h5_write, h5_attr
@@ -275,34 +276,60 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: dset, space
       integer(hsize_t) :: dims(1), maxdims(1)
+      type(h5o_info_t) :: info
       logical :: found
       integer :: err, e2, rank
       done = .false.
+      dims = 0
       call h5lexists_f(g, name, found, err)
       if (.not. found) return
-      if (own_dataset(g, name)) then
-         call h5dopen_f(g, name, dset, err)
-         rank = -1
+      ! one open for the reference count, the extent, the values and the checksum
+      call h5dopen_f(g, name, dset, err)
+      if (err /= 0) then
+         call h5ldelete_f(g, name, err)
+         return
+      end if
+      call h5oget_info_f(dset, info, err)
+      rank = -1
+      if (err == 0 .and. info%rc == 1) then
          call h5dget_space_f(dset, space, err)
          if (err == 0) call h5sget_simple_extent_ndims_f(space, rank, err)
          ! the rank first: the dimensions are written for every axis
          if (err == 0 .and. rank == 1) call h5sget_simple_extent_dims_f(space, dims, maxdims, &
             e2)
          if (err == 0) call h5sclose_f(space, e2)
-         if (err == 0 .and. rank == 1 .and. dims(1) == int(n, hsize_t)) then
-            if (n > 0) call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, c_loc(v), err)
-            ! the checksum of the new values (h5_write keeps one with every real dataset)
-            if (err == 0) call h5_attr(dset, CHECKSUM_ATTR, values_checksum(v, n), error)
-            call h5dclose_f(dset, e2)
-            if (err /= 0 .and. .not. allocated(error)) call fatal_error(error, &
-               'HDF5: cannot write restart dataset '//name)
-            done = .true.
-            return
-         end if
-         call h5dclose_f(dset, e2)
       end if
+      if (err == 0 .and. rank == 1 .and. dims(1) == int(n, hsize_t)) then
+         if (n > 0) call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, c_loc(v), err)
+         ! the checksum of the new values (h5_write keeps one with every real dataset)
+         if (err == 0) call put_checksum(dset, values_checksum(v, n), error)
+         call h5dclose_f(dset, e2)
+         if (err /= 0 .and. .not. allocated(error)) call fatal_error(error, &
+            'HDF5: cannot write restart dataset '//name)
+         done = .true.
+         return
+      end if
+      call h5dclose_f(dset, e2)
       call h5ldelete_f(g, name, err)
    end subroutine write_in_place
+
+   !> The checksum attribute of the open dataset `dset`, its value written over the one there
+   !> (a real scalar, as h5_write makes it), or made by h5_attr when there is none.
+   subroutine put_checksum(dset, sum, error)
+      integer(hid_t), intent(in) :: dset
+      real(wp), intent(in) :: sum
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), target :: buf
+      integer(hid_t) :: attr
+      integer :: err, e2
+      buf = sum
+      call h5aopen_f(dset, CHECKSUM_ATTR, attr, err)
+      if (err == 0) then
+         call h5awrite_f(attr, H5T_NATIVE_DOUBLE, c_loc(buf), err)
+         call h5aclose_f(attr, e2)
+      end if
+      if (err /= 0) call h5_attr(dset, CHECKSUM_ATTR, sum, error)
+   end subroutine put_checksum
 
    !> True when the object `name` of g is a dataset with no other name (reference count 1).
    logical function own_dataset(g, name) result(own)
