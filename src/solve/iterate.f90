@@ -114,6 +114,10 @@ contains
       out%tau = tau
       ! full Newton under load control: start from the extrapolated increment
       extrapolated = .false.
+      ! (apply_operator reads it at the arc predictor, before the iterations set it: left
+      ! undefined, a full-Newton arc of a run with a separate tangent solver, the fallback of
+      ! modified and quasi-Newton, took the elastic or the tangent factor by chance, and the
+      ! release build, the debug build and --quiet ended the same probe differently)
       elastic_now = .false.
       if (imposed .and. att%method == METHOD_NEWTON .and. allocated(att%du_start)) then
          if (size(att%du_start) == neq) then
