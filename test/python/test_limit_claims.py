@@ -131,11 +131,12 @@ def test_force_control_plateau_single_factorisation(tmp_path, method):
     methods: the limit probe must prove the plateau on the run's own history (doc/theory.md
     section 4, "Plateau"). Its window opens at a settlement of about 0.7 m (the load-controlled
     increments ran far along the plateau before the probe), so the settlement must reach
-    1.4 m within LIMIT_PROBE = 30 arcs. (Before: arcs grown on the window that failed went back
-    to MAX_LENGTH times the probe's first length, about 6e-5, and the predictor of these
-    methods, the elastic stiffness's response to the load, put an arc of 0.35 at 6.5 times the
-    step's load: both runs ended 'diverged' at 68.33-68.34 kPa, the settlement grown 1.02
-    times in the window. Now 'limit load' 68.3457 kPa, as under NEWTON.)"""
+    1.4 m within LIMIT_PROBE = 30 arcs. (Before: the full-Newton arcs of these runs, which
+    keep the tangent in a solver of its own, read an undefined flag to choose between the
+    elastic and the tangent factor for the predictor, so the probe's path depended on the
+    build and on --quiet; in the release build both runs ended 'diverged' at 68.33-68.34 kPa,
+    the settlement grown 1.02 times in the window. Now 'limit load' 68.3457 kPa, as under
+    NEWTON.)"""
     text = footing("T6", solver=SOLVER.replace("NEWTON", method, 1))
     p, out = run_text(text, tmp_path, f"force_T6_{method}")
     status, message = check_claim(p, out, text)
