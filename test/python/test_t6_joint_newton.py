@@ -28,7 +28,7 @@ neighbours (the soil-side node at the wall's top a corner of a single triangle: 
 mesh). Full Newton's re-closure limit (pecplas_solve_reclosure, doc/theory.md §4) shortens
 the steps that re-close the top joint's open points deep into the penalty; with it the run
 takes the same bound as the well-split mesh: 12 increments, no cut, no singular tangent,
-at most 5 iterations per increment (measured 44 iterations, 2 steps limited). Without the
+at most 5 iterations per increment (measured 44 iterations, 3 steps limited). Without the
 limit it took 17 increments, 367 iterations, 6 cuts and 228 singular tangents.
 """
 import re
