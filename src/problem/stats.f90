@@ -1,6 +1,6 @@
 !> What a run counts and times for its summary and its results file: increments, iterations,
-!> cuts, factorisations, solves, line searches, singular tangents, increments converged by
-!> each method, and the phase timers.
+!> cuts, factorisations, solves, line searches, singular tangents, re-closure limits of full
+!> Newton, increments converged by each method, and the phase timers.
 module pecplas_problem_stats
    use pecplas_base_timers, only: timers_t
    implicit none (type, external)

@@ -12,7 +12,9 @@
 !> Full Newton with a previous increment of the same step (att%du_start) starts instead
 !> from the linear extrapolation u_n + (dtau/dtau_prev) du_prev of the free DOFs, the
 !> imposed ones at their new values, and iterates from there with the tangent of that
-!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4).
+!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4). A full Newton
+!> step that re-closes joint points open at the iterate deep into their penalty is shortened
+!> (pecplas_solve_reclosure).
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
