@@ -12,6 +12,12 @@
 !> load and the failed probe. (Before: 'limit load' at 54.38 kN/m under 10 arc increments,
 !> declared a mechanism when the probe step failed because one doublet's contact states did
 !> not settle, not because the system was singular; load control carries 60.6 kN/m.)
+!>
+!> A joint opened, slid and closed back (test/data/joints/close_back.inp) ends in the initial
+!> state moved along the joint: loads and reactions nil, the joint at sigma_n = 100 kPa,
+!> tau = 0. The run must complete there (before: 'diverged' after 27 cuts of the closing
+!> step, each remaining increment failing against a reference of loads and reactions at
+!> roundoff, 1e-12 kN/m, while the residual was 1e-13).
 module test_pecjoin_claims
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t
@@ -35,7 +41,8 @@ contains
    subroutine collect_pecjoin_claims(tests)
       type(unittest_t), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('katona_push_arc10_claim', test_push_arc10), &
-               new_unittest('katona_push_arc40_limit', test_push_arc40)]
+               new_unittest('katona_push_arc40_limit', test_push_arc40), &
+               new_unittest('joint_closed_back_completes', test_close_back)]
    end subroutine collect_pecjoin_claims
 
    !> 10 arc increments: whatever the status, a limit load is within the statics bounds.
@@ -50,6 +57,30 @@ contains
       type(error_t), allocatable, intent(out) :: error
       call push(40, .true., error)
    end subroutine test_push_arc40
+
+   !> Completes, in one increment per step; sigma_n = 100 kPa and tau = 0 at every point within
+   !> the convergence test's bound (TOLERANCE 1e-4 of the held load, 100 kPa: 1e-2 kPa).
+   subroutine test_close_back(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t) :: model
+      type(problem_t) :: problem
+      character(len=200) :: buf
+      integer :: code
+      call make_directories(DIR)
+      code = run_deck('test/data/joints/close_back.inp', DIR//'/close_back.h5', .true., model, &
+         problem)
+      write (buf, '(a,i0,a,i0,a)') ' (exit ', code, ', ', problem%stats%increments, ' increments)'
+      call check(error, code == 0 .and. problem%stats%increments == 3, &
+         'the joint closed back onto its initial state completes'//trim(buf))
+      if (allocated(error)) return
+      associate (st => problem%state%joints%sets(1))
+         write (buf, '(a,2es12.4)') ' sigma_n - 100, |tau|: ', maxval(abs(st%sigma(1, :, :) - &
+            100.0_wp)), maxval(abs(st%sigma(2, :, :)))
+         call check(error, maxval(abs(st%sigma(1, :, :) - 100.0_wp)) <= 1.0e-2_wp .and. &
+            maxval(abs(st%sigma(2, :, :))) <= 1.0e-2_wp, &
+            'the joint is back at sigma_n = 100 kPa, tau = 0'//trim(buf))
+      end associate
+   end subroutine test_close_back
 
    subroutine push(increments, must_claim, error)
       integer, intent(in) :: increments
