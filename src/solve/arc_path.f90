@@ -185,11 +185,19 @@ contains
                   if (out%converged) then
                      level = 0
                      lc_mode = .true.
-                  else
+                  else if (out%singular) then
+                     ! singular again: no equilibrium under any states the iteration finds
                      res%mechanism = .true.
                      out%reason = 'the tangent with the next slip/contact states is singular and '// &
                         'no equilibrium exists a little further (step fraction '// &
                         g6(att%tau1)//'): '//out%reason
+                  else
+                     ! the step failed otherwise (contact states that do not settle, a law
+                     ! that cannot return): that proves no mechanism, the load may go on
+                     res%mechanism = .false.
+                     out%reason = 'the load-controlled step to step fraction '//g6(att%tau1)// &
+                        ' that tests the singular tangent for a mechanism failed without a '// &
+                        'singular system (no mechanism established): '//out%reason
                   end if
                end if
                ! past the step's target displacement of a node: shortened so that it ends
