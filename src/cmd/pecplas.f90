@@ -393,11 +393,12 @@ contains
          ' increments, ', problem%stats%iterations, ' iterations, ', problem%stats%cuts, ' cuts, ', &
          problem%stats%factorisations, ' factorisations, ', problem%stats%solves, ' solves, ', sec(cpu), ' s CPU'
       ! which method converged the increments (doc/theory.md §4, the chain)
-      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
+      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a,i0)') ' methods: increments by modified Newton ', &
          problem%stats%by_method(1), ', quasi-Newton ', problem%stats%by_method(2), ', Newton ', &
          problem%stats%by_method(3), '; under arc-length ', problem%stats%arc_increments, &
          '; line-search residuals ', problem%stats%line_searches, '; singular tangents ', &
-         problem%stats%singular_tangents, ' (elastic stiffness used)'
+         problem%stats%singular_tangents, ' (elastic stiffness used); re-closure limits ', &
+         problem%stats%reclosure_limits
       associate (t => problem%stats%time)
          write (*, '(a,8(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
             sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &

@@ -12,7 +12,9 @@
 !> Full Newton with a previous increment of the same step (att%du_start) starts instead
 !> from the linear extrapolation u_n + (dtau/dtau_prev) du_prev of the free DOFs, the
 !> imposed ones at their new values, and iterates from there with the tangent of that
-!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4).
+!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4). A full Newton
+!> step that re-closes joint points open at the iterate deep into their penalty is shortened
+!> (pecplas_solve_reclosure).
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
@@ -32,6 +34,8 @@ module pecplas_solve_iterate
       joint_signature, internal_forces_at
    use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
    use pecplas_fe_imposed, only: imposed_forces
+   use pecplas_solve_reclosure, only: joint_snapshot_t, take_snapshot, reclosure_limit, &
+      RESIDUAL_GROWTH
    implicit none (type, external)
    private
 
@@ -83,9 +87,10 @@ contains
       integer, allocatable :: states(:)
       type(bfgs_t) :: bfgs
       type(line_search_t) :: ls
-      real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
+      type(joint_snapshot_t) :: snap
+      real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1, rfull
       integer :: neq, it
-      logical :: moved, ok, elastic_now, imposed, extrapolated
+      logical :: moved, ok, elastic_now, imposed, extrapolated, reclose
 
       neq = problem%system%dofs%neq
       out%reason = ''
@@ -114,6 +119,11 @@ contains
       out%tau = tau
       ! full Newton under load control: start from the extrapolated increment
       extrapolated = .false.
+      ! (apply_operator reads it at the arc predictor, before the iterations set it: left
+      ! undefined, a full-Newton arc of a run with a separate tangent solver, the fallback of
+      ! modified and quasi-Newton, took the elastic or the tangent factor by chance, and the
+      ! release build, the debug build and --quiet ended the same probe differently)
+      elastic_now = .false.
       if (imposed .and. att%method == METHOD_NEWTON .and. allocated(att%du_start)) then
          if (size(att%du_start) == neq) then
             extrapolated = .true.
@@ -151,8 +161,14 @@ contains
             out%reason = 'the step load does not move the free nodes (no arc-length direction)'
             return
          end if
-         dtau = arc_predictor_sign(att%du_prev, vq)*att%dl/norm2(vq)
-         dtot = dtau*vq
+         if (secant_predictor()) then
+            ! on a plateau: along the last converged increment, the load unchanged
+            dtau = 0.0_wp
+            dtot = (att%dl/norm2(att%du_prev))*att%du_prev
+         else
+            dtau = arc_predictor_sign(att%du_prev, vq)*att%dl/norm2(vq)
+            dtot = dtau*vq
+         end if
          tau = tau + dtau
          fext = fbase + tau*fq
          u_iter = u
@@ -232,9 +248,29 @@ contains
          end if
          u_iter = u
          gold = free_part(problem, fint)
+         ! full Newton: the re-closure limit (pecplas_solve_reclosure) needs the joint
+         ! points' states at the iterate the step starts from (not at the first step of an
+         ! imposed increment, whose trial state is still the converged one)
+         reclose = att%method == METHOD_NEWTON .and. .not. att%arc .and. &
+            .not. (it == 0 .and. imposed)
+         if (reclose) call take_snapshot(model, problem%state%joints, snap)
          call add_free(problem, du, u)
          call forces(u, error)
          if (allocated(error)) return
+         if (reclose) then
+            eta = reclosure_limit(model, problem%state%joints, snap)
+            if (eta < 1.0_wp) then
+               call free_residual(problem, fext, fint, gfree, reaction, rfull, ref)
+               if (rfull > RESIDUAL_GROWTH*rnorm) then
+                  du = eta*du
+                  u = u_iter
+                  call add_free(problem, du, u)
+                  call forces(u, error)
+                  if (allocated(error)) return
+                  problem%stats%reclosure_limits = problem%stats%reclosure_limits + 1
+               end if
+            end if
+         end if
          eta = 1.0_wp
          ! (not along the first step of an imposed increment: its residual at eta = 0 is
          ! that of the linear response, not of a state the search could return to)
@@ -294,6 +330,19 @@ contains
          r = r - free_part(problem, fimp)
          if (ref > 0.0_wp) hist(0) = norm2(r)/ref
       end subroutine subtract_imposed
+
+      !> The arc predictor along the previous increment (att%secant): asked for, that
+      !> increment at hand, and the predictor's operator not the consistent tangent (the
+      !> elastic stiffness's response to the load on a plateau is a load many times the
+      !> limit: step fraction 6.5 for an arc of 0.35 on the T6 footing of theory.md).
+      logical function secant_predictor() result(yes)
+         yes = .false.
+         if (.not. att%secant .or. .not. allocated(att%du_prev)) return
+         if (size(att%du_prev) /= neq) return
+         ! (one that moved the loaded points back unloads: the load's response then)
+         if (.not. (dot_product(att%du_prev, q) > 0.0_wp)) return
+         yes = att%method /= METHOD_NEWTON .or. elastic_now
+      end function secant_predictor
 
       !> Internal forces at u (a failed material return is a run error: the increment fails).
       subroutine forces(uu, err)
