@@ -15,12 +15,6 @@
 !> a run's final one, written into the copy not published only (pecplas_io_results_file).
 !> The file's first contents (provenance, mesh) are written once: `clone` gives the other
 !> copy the same bytes by a kernel file copy (falling back to writing them again).
-!> An increment is written once too while that is cheaper (`pass`): the copy written is
-!> committed and published, and the other copy becomes a kernel copy of it, made under a
-!> third name (`.NAME.h5.<pid>.c`) and renamed onto the other copy's name once whole. A
-!> copy costs time in proportion to the file's size, writing an increment in proportion to
-!> its datasets: `worth_passing` compares the time of the last kernel copy, scaled to the
-!> file's present size, with the time HDF5 took to write the increment.
 module pecplas_io_results_copies
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t, h5fcreate_f, h5fclose_f, h5fopen_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F
@@ -37,9 +31,8 @@ module pecplas_io_results_copies
       !> HDF5 ids of the copies (-1: closed) and their file names.
       integer(hid_t) :: ids(2) = -1
       character(len=:), allocatable :: names(:)
-      !> The published name (.tmp), the name the link is made under (.new) and the one a
-      !> kernel copy of an increment is made under (.c).
-      character(len=:), allocatable :: link, staging, spare
+      !> The published name (.tmp) and the name the link is made under (.new).
+      character(len=:), allocatable :: link, staging
       !> The copy written next (1 or 2); the other one is published once `publish` ran.
       integer :: next = 1
       !> False once a publication had to use a symbolic link (no hard links here).
@@ -48,8 +41,6 @@ module pecplas_io_results_copies
       logical :: kernel = .true.
       !> Size of a copy after the last increment and what that increment added.
       integer(int64) :: bytes = 0, growth = 0
-      !> Seconds per byte of the last kernel copy made by `pass` (< 0: none made yet).
-      real :: copy_rate = -1.0
    contains
       procedure :: init => copies_init
       procedure :: create => copies_create
@@ -58,9 +49,6 @@ module pecplas_io_results_copies
       procedure :: flush => copies_flush
       procedure :: clone => copies_clone
       procedure :: publish => copies_publish
-      procedure :: worth_passing => copies_worth_passing
-      procedure :: pass => copies_pass
-      procedure :: open_next => copies_open_next
       procedure :: close => copies_close
       procedure :: remove => copies_remove
       procedure :: check_space => copies_check_space
@@ -78,14 +66,12 @@ contains
       stem = link(1:len(link) - 4)
       this%link = link
       this%staging = stem//'.new'
-      this%spare = stem//'.c'
       this%names = [character(len=len(stem) + 2) :: stem//'.a', stem//'.b']
       this%ids = -1
       this%next = 1
       this%hard = .true.
       this%bytes = 0
       this%growth = 0
-      this%copy_rate = -1.0
    end subroutine copies_init
 
    !> Creates (truncates) copy `i`. A file left under its name by an earlier process of the
@@ -208,81 +194,6 @@ contains
       this%next = 3 - this%next
    end subroutine copies_publish
 
-   !> True when a kernel copy of the file (its size after the last increment plus that
-   !> increment's growth, at the rate of the last copy made by `pass`) should take less
-   !> than `write_seconds`, the time HDF5 took to write the increment into one copy; true
-   !> before any such copy was made (the first one measures the rate).
-   logical function copies_worth_passing(this, write_seconds) result(worth)
-      class(copies_t), intent(in) :: this
-      real, intent(in) :: write_seconds
-      worth = this%kernel
-      if (worth .and. this%copy_rate >= 0.0) &
-         worth = this%copy_rate*real(this%bytes + this%growth) < write_seconds
-   end function copies_worth_passing
-
-   !> After an increment written into the copy written next only: that copy is committed
-   !> (closed) and published, and the other copy becomes a kernel copy of it (made under
-   !> `spare`, renamed onto its name once whole, opened) and the copy written next.
-   !> `passed` false when the kernel refuses the copy: the other copy is then as it was,
-   !> open and the copy written next, and the caller writes the increment into it. The
-   !> published copy stays closed (open_next opens it again before it is written).
-   subroutine copies_pass(this, passed, error)
-      class(copies_t), intent(inout) :: this
-      logical, intent(out) :: passed
-      type(error_t), allocatable, intent(out) :: error
-      integer(int64) :: t0, t1, rate, nbytes
-      integer :: err, i, j
-      passed = .false.
-      i = this%next
-      j = 3 - i
-      call h5fclose_f(this%ids(i), err)
-      this%ids(i) = -1
-      if (err /= 0) then
-         call fatal_error(error, 'HDF5: cannot write results file '//this%names(i)// &
-            ' (disk full?)')
-         return
-      end if
-      call this%publish(error)
-      if (allocated(error)) return
-      call system_clock(t0, rate)
-      call remove_file(this%spare)
-      passed = kernel_copy(this%names(i), this%spare)
-      if (passed) then
-         if (this%ids(j) > 0) call h5fclose_f(this%ids(j), err)
-         this%ids(j) = -1
-         passed = rename_file(this%spare, this%names(j))
-      end if
-      if (.not. passed) then
-         ! the kernel refused: the other copy, whole at the increment before, is written
-         call remove_file(this%spare)
-         this%copy_rate = -1.0
-         this%kernel = .false.
-         call this%open_next(error)
-         return
-      end if
-      call system_clock(t1)
-      inquire (file=this%names(j), size=nbytes)
-      if (nbytes > 0) this%copy_rate = real(t1 - t0)/real(rate)/real(nbytes)
-      call h5fopen_f(this%names(j), H5F_ACC_RDWR_F, this%ids(j), err)
-      if (err /= 0) then
-         this%ids(j) = -1
-         call fatal_error(error, 'HDF5: cannot open results file '//this%names(j))
-      end if
-   end subroutine copies_pass
-
-   !> Opens the copy written next again when `pass` left it closed.
-   subroutine copies_open_next(this, error)
-      class(copies_t), intent(inout) :: this
-      type(error_t), allocatable, intent(out) :: error
-      integer :: err
-      if (this%ids(this%next) > 0) return
-      call h5fopen_f(this%names(this%next), H5F_ACC_RDWR_F, this%ids(this%next), err)
-      if (err /= 0) then
-         this%ids(this%next) = -1
-         call fatal_error(error, 'HDF5: cannot open results file '//this%names(this%next))
-      end if
-   end subroutine copies_open_next
-
    !> Closes copy `which` ('next', 'shown' or 'both'); errors ignored, err of the last
    !> close returned.
    subroutine copies_close(this, which, err)
@@ -310,7 +221,6 @@ contains
          if (link .or. this%hard .or. i == this%next) call remove_file(this%names(i))
       end do
       call remove_file(this%staging)
-      if (allocated(this%spare)) call remove_file(this%spare)
       if (link) call remove_file(this%link)
    end subroutine copies_remove
 

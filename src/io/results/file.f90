@@ -17,7 +17,6 @@
 !> The sidecar: pecplas_io_results_sidecar; the test hooks that make writes fail:
 !> pecplas_io_results_write_hooks.
 module pecplas_io_results_file
-   use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_base_run_status, only: RUN_COMPLETED, is_run_status, status_name
@@ -235,9 +234,7 @@ contains
    !> The writing part of write_increment: the copy written next gets the increment and is
    !> flushed and published, then the other one (no longer published) gets it too. A copy
    !> is written only while the other one is published, so the published copy is always
-   !> one flushed after a whole increment. While a kernel copy of the file is cheaper than
-   !> writing the increment again (copies_t%worth_passing), the other copy is made that way
-   !> (copies_t%pass) instead of written. `final`: the copy written next only, flushed and
+   !> one flushed after a whole increment. `final`: the copy written next only, flushed and
    !> not published (`finish` renames it, `free` publishes it); the running sidecar, which
    !> names the published copy, is left without the increment.
    subroutine write_checked(this, inc, final, error, restart)
@@ -246,24 +243,9 @@ contains
       logical, intent(in) :: final
       type(error_t), allocatable, intent(out) :: error
       type(restart_data_t), intent(in), optional :: restart
-      integer(int64) :: t0, t1, rate
       integer :: i
-      logical :: passed
       do i = 1, 2
-         call this%copies%open_next(error)
-         if (allocated(error)) exit
-         call system_clock(t0, rate)
          call this%content%write_copy(this%copies%id('next'), inc, error, restart)
-         call system_clock(t1)
-         if (.not. allocated(error) .and. i == 1 .and. .not. final) then
-            if (this%copies%worth_passing(real(t1 - t0)/real(rate))) then
-               ! published, and the other copy a kernel copy of it: the increment is in both
-               call this%copies%pass(passed, error)
-               if (allocated(error)) return
-               if (passed) exit
-               cycle
-            end if
-         end if
          if (.not. allocated(error)) call this%copies%flush(error)
          if (allocated(error) .or. final) exit
          if (i == 1) call this%copies%publish(error)
