@@ -14,6 +14,8 @@ module pecplas_solve_restart
    use pecplas_base_strings, only: itoa
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
+   use pecplas_problem_counts, only: NCOUNT, whole_counts
+   use pecplas_solve_katona_increment, only: update_flexibility
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
       ARC_VECTOR_V1, ARC_VECTOR_V2
@@ -60,6 +62,13 @@ contains
             real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%stats%increments, wp), &
             real(problem%stats%iterations, wp), real(problem%stats%cuts, wp), kt%force_scale, &
             kt%max_penetration])
+         ! the whole run's other counts, for the summary of a run restarted from here
+         call data%add('counters', real(whole_counts(problem), wp))
+         ! Katona contact: whether the flexibility G belongs to the last factorisation (the
+         ! next increment uses it as it is; a restarted run builds it again before resuming,
+         ! outside the whole run's counts)
+         if (kt%active) call data%add('katona_flexibility', &
+            [merge(1.0_wp, 0.0_wp, kt%g_stamp == problem%stats%factorisations)])
          call data%add('f0', p%f0)
          call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
          ! the arc-length path under way, and the last increment's displacement increment
@@ -251,12 +260,29 @@ contains
          problem%state%converged_tangents = tangents_carried(model, problem)
       end if
       if (.not. allocated(error)) call restore_operators(data, model, problem, error)
+      if (.not. allocated(error)) call restore_flexibility(data, problem, error)
       if (allocated(error)) then
          msg = error%text()
          call input_error(error, 'cannot restart from '//path// &
             ': its restart data does not fit this deck ('//msg//')')
       end if
    end subroutine restore_restart
+
+   !> Katona contact: builds the flexibility G again from the restored factorisation when
+   !> the interrupted run's G belonged to it (item `katona_flexibility`), as a part of the
+   !> restore: its build and solves are the restart's, not the run's (the restarted run's
+   !> summary counts the whole run's, pecplas_problem_counts), and the run goes on with the
+   !> same G as the uninterrupted one, built from the same factorisation.
+   subroutine restore_flexibility(data, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      if (.not. problem%katona%active .or. .not. data%has('katona_flexibility')) return
+      call data%get('katona_flexibility', 1, v, error)
+      if (allocated(error)) return
+      if (v(1) /= 0.0_wp) call update_flexibility(problem, error)
+   end subroutine restore_flexibility
 
    !> Puts the restart data into `problem` and marks its position to be resumed.
    subroutine unpack_data(data, model, problem, error)
@@ -280,6 +306,15 @@ contains
          p%tau = v(5); p%dt = v(6); p%k_first = v(7); p%k_conv = v(8)
          problem%stats%increments = nint(v(9)); problem%stats%iterations = nint(v(10))
          problem%stats%cuts = nint(v(11)); kt%force_scale = v(12); kt%max_penetration = v(13)
+         problem%stats%restarted = .true.
+         problem%stats%resumed_after = problem%stats%increments
+         ! the run's other counts (data of an earlier version hold none: the summary then
+         ! says which of its numbers are this process's)
+         if (data%has('counters')) then
+            call data%get('counters', NCOUNT, v, error)
+            if (allocated(error)) return
+            problem%stats%earlier = nint(v)
+         end if
          if (p%istep < 1 .or. p%istep > size(model%steps)) then
             call fatal_error(error, 'restart step '//itoa(p%istep)//' is not a step of the deck')
             return
@@ -675,7 +710,7 @@ contains
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
          'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'dtau_prev', 'phase', &
          'phase_carried', 'phase_held', 'phase_water', 'safety', 'safety_curve', 'safety_u0', &
-         'safety_ulast']
+         'safety_ulast', 'counters', 'katona_flexibility']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]
