@@ -22,6 +22,7 @@ module test_plates
    use pecplas_structures_hinge, only: hinge_stiffness, hinge_update
    use pecplas_structures_section, only: NHIST, section_update
    use pecplas_structures_beam, only: NGEN
+   use test_plates_arc, only: test_arc_symmetric, test_arc_length
    implicit none (type, external)
    private
    public :: collect_plates
@@ -44,6 +45,8 @@ contains
                new_unittest('cantilever_uniform_2node', test_uniform2), &
                new_unittest('cantilever_tip_3node', test_tip3), &
                new_unittest('cantilever_uniform_3node', test_uniform3), &
+               new_unittest('uniform_load_on_a_curved_element', test_arc_symmetric), &
+               new_unittest('uniform_load_arc_length', test_arc_length), &
                new_unittest('thin_beam_no_locking', test_thin), &
                new_unittest('axisymmetric_cylinder', test_cylinder), &
                new_unittest('hetenyi_winkler_beam', test_hetenyi), &

@@ -17,7 +17,7 @@ module pecplas_cmd_pecplas
    use pecplas_problem_type, only: problem_t
    use pecplas_problem_counts, only: NCOUNT, whole_counts, whole_known, C_FACTORISATIONS, &
       C_SOLVES, C_LINE_SEARCHES, C_SINGULAR, C_ARC, C_METHOD, C_STATE_ITERATIONS, &
-      C_MAX_STATE_ITERATIONS, C_G_BUILDS, C_FROZEN
+      C_MAX_STATE_ITERATIONS, C_G_BUILDS, C_FROZEN, C_RECLOSURE
    use pecplas_solve_prepare, only: prepare_run
    use pecplas_solve_stiffness, only: linear_solver_name
    use pecplas_solve_increments, only: run_increments
@@ -417,11 +417,11 @@ contains
          c(C_FACTORISATIONS), ' factorisations, ', c(C_SOLVES), ' solves'//counted//', ', &
          sec(cpu), ' s CPU', own
       ! which method converged the increments (doc/theory.md §4, the chain)
-      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
+      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
          c(C_METHOD), ', quasi-Newton ', c(C_METHOD + 1), ', Newton ', &
          c(C_METHOD + 2), '; under arc-length ', c(C_ARC), &
          '; line-search residuals ', c(C_LINE_SEARCHES), '; singular tangents ', &
-         c(C_SINGULAR), ' (elastic stiffness used)'//partial
+         c(C_SINGULAR), ' (elastic stiffness used); re-closure limits ', c(C_RECLOSURE), partial
       associate (t => problem%stats%time)
          write (*, '(a,8(a,a))') ' wall time [s]'//own//':', ' read+setup ', sec(t%setup), &
             '  assembly ', sec(t%assembly), '  factorisation ', sec(t%factorisation), &

@@ -1,6 +1,6 @@
 !> What a run counts and times for its summary and its results file: increments, iterations,
-!> cuts, factorisations, solves, line searches, singular tangents, increments converged by
-!> each method, and the phase timers.
+!> cuts, factorisations, solves, line searches, singular tangents, re-closure limits of full
+!> Newton, increments converged by each method, and the phase timers.
 module pecplas_problem_stats
    use pecplas_base_timers, only: timers_t
    implicit none (type, external)
@@ -14,6 +14,8 @@ module pecplas_problem_stats
       !> increments converged by each method (modified, quasi-, full Newton) and under
       !> arc-length control.
       integer :: line_searches = 0, singular_tangents = 0, arc_increments = 0
+      !> Full Newton steps shortened by the re-closure limit (pecplas_solve_reclosure).
+      integer :: reclosure_limits = 0
       integer :: by_method(3) = 0
       type(timers_t) :: time
       !> A restarted run (pecplas_solve_restart): the increment it resumed after, the counts

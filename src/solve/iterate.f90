@@ -12,7 +12,9 @@
 !> Full Newton with a previous increment of the same step (att%du_start) starts instead
 !> from the linear extrapolation u_n + (dtau/dtau_prev) du_prev of the free DOFs, the
 !> imposed ones at their new values, and iterates from there with the tangent of that
-!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4).
+!> state (Abaqus's default extrapolation of a static step; doc/theory.md §4). A full Newton
+!> step that re-closes joint points open at the iterate deep into their penalty is shortened
+!> (pecplas_solve_reclosure).
 !> The increment ends converged (||r|| <= tol ||F||), or failed with a reason: the
 !> iteration cap, a stagnating residual, cycling joint states, a residual that blew up, a
 !> singular tangent, a material that could not return, no real arc-length root.
@@ -32,6 +34,8 @@ module pecplas_solve_iterate
       joint_signature, internal_forces_at
    use pecplas_solve_method, only: attempt_t, outcome_t, increment_method_t
    use pecplas_fe_imposed, only: imposed_forces
+   use pecplas_solve_reclosure, only: joint_snapshot_t, take_snapshot, reclosure_limit, &
+      RESIDUAL_GROWTH
    implicit none (type, external)
    private
 
@@ -83,9 +87,10 @@ contains
       integer, allocatable :: states(:)
       type(bfgs_t) :: bfgs
       type(line_search_t) :: ls
-      real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1
+      type(joint_snapshot_t) :: snap
+      real(wp) :: rnorm, ref, tau, dtau, eta, g0, g1, rfull
       integer :: neq, it
-      logical :: moved, ok, elastic_now, imposed, extrapolated
+      logical :: moved, ok, elastic_now, imposed, extrapolated, reclose
 
       neq = problem%system%dofs%neq
       out%reason = ''
@@ -232,9 +237,29 @@ contains
          end if
          u_iter = u
          gold = free_part(problem, fint)
+         ! full Newton: the re-closure limit (pecplas_solve_reclosure) needs the joint
+         ! points' states at the iterate the step starts from (not at the first step of an
+         ! imposed increment, whose trial state is still the converged one)
+         reclose = att%method == METHOD_NEWTON .and. .not. att%arc .and. &
+            .not. (it == 0 .and. imposed)
+         if (reclose) call take_snapshot(model, problem%state%joints, snap)
          call add_free(problem, du, u)
          call forces(u, error)
          if (allocated(error)) return
+         if (reclose) then
+            eta = reclosure_limit(model, problem%state%joints, snap)
+            if (eta < 1.0_wp) then
+               call free_residual(problem, fext, fint, gfree, reaction, rfull, ref)
+               if (rfull > RESIDUAL_GROWTH*rnorm) then
+                  du = eta*du
+                  u = u_iter
+                  call add_free(problem, du, u)
+                  call forces(u, error)
+                  if (allocated(error)) return
+                  problem%stats%reclosure_limits = problem%stats%reclosure_limits + 1
+               end if
+            end if
+         end if
          eta = 1.0_wp
          ! (not along the first step of an imposed increment: its residual at eta = 0 is
          ! that of the linear response, not of a state the search could return to)

@@ -18,6 +18,7 @@ module pecplas_structures_beam
    use pecplas_base_kinds, only: wp
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_plates, only: plate_section_t
+   use pecplas_structures_beam_arc, only: arc_three_points_exact, arc_line_load
    implicit none (type, external)
    private
 
@@ -224,8 +225,9 @@ contains
    !> per unit length of plate along x, y; per unit area of the shell in axisymmetry),
    !> integrated with the element's own displacement interpolation (for the 2-node element
    !> the linked one: its end moments are those of a built-in beam, q h^2 / 12 for a straight
-   !> element without shear flexibility). 3-point Gauss. `scale` (optional, one value per
-   !> node): the load is q times their interpolation (linear between the ends of a 2-node
+   !> element without shear flexibility). 3-point Gauss, or on a curved 3-node element whose
+   !> bound says it is not exact the rule of pecplas_structures_beam_arc. `scale`
+   !> (optional, one value per node): the load is q times their interpolation (linear between the ends of a 2-node
    !> element, quadratic on a 3-node one), e.g. a hydrostatic water pressure.
    pure subroutine beam_line_load(x, section, axisym, thickness, q, fe, scale)
       real(wp), intent(in) :: x(:, :), q(2)
@@ -255,6 +257,9 @@ contains
             fe(4:5) = fe(4:5) + f*dot_product(q, t)*xi*t
             fe(1:6) = fe(1:6) + f*dot_product(q, n)*wrow
          end do
+      else if (.not. arc_three_points_exact(x, axisym, scale)) then
+         ! a curved element: |dx/dxi| is no polynomial (pecplas_structures_beam_arc)
+         call arc_line_load(x, axisym, thickness, q, fe, scale)
       else
          do p = 1, 3
             call quadratic(XG(p), nf, dn)

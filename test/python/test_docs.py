@@ -12,6 +12,7 @@ import filecmp
 import json
 import re
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -97,21 +98,42 @@ def test_committed_decks_equal_generators(tmp_path, cmd, committed):
                         + ", ".join(differ))
 
 
+# Runs each module given on the command line as `python3 -m MODULE --help` would (runpy, as
+# __main__, sys.argv set), all in this one interpreter; prints one JSON line per module:
+# [module, exit code, stdout and stderr].
+_HELP_DRIVER = """
+import contextlib, io, json, runpy, sys, traceback
+for name in sys.argv[1:]:
+    sys.argv = [name, "--help"]
+    out = io.StringIO()
+    code = 0
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        try:
+            runpy.run_module(name, run_name="__main__", alter_sys=True)
+        except SystemExit as e:
+            code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
+        except BaseException:
+            traceback.print_exc()
+            code = 1
+    print(json.dumps([name, code, out.getvalue()]))
+"""
+
+
 def test_plot_scripts_help():
     """--help of every plot script (scenes/plot_s*.py, plots/plot_*.py) prints the usage and
-    exits 0 (no figure, no crash); started together, as each spends its time importing
-    matplotlib."""
+    exits 0 (no figure, no crash). Each script is run as `python3 -m` runs it (runpy, as
+    __main__), one after the other in one new interpreter, which imports matplotlib once: a
+    new interpreter for each cost 1 s of CPU, nearly all of it that import."""
     scripts = sorted(PACKAGE.glob("scenes/plot_*.py")) + sorted(PACKAGE.glob("plots/plot_*.py"))
-    procs = {p.name: subprocess.Popen([*script_cmd(f"{p.parent.name}.{p.stem}"), "--help"],
-                                      cwd=ROOT, stdout=subprocess.PIPE,
-                                      stderr=subprocess.STDOUT, text=True)
-             for p in scripts}
-    assert len(procs) >= 6, "the plot scripts scenes/plot_s*.py, plots/plot_*.py are missing"
-    bad = []
-    for name, proc in procs.items():
-        out, _ = proc.communicate(timeout=120)
-        if proc.returncode != 0 or "usage:" not in out:
-            bad.append(f"{name}: exit {proc.returncode}\n{out}")
+    assert len(scripts) >= 6, "the plot scripts scenes/plot_s*.py, plots/plot_*.py are missing"
+    modules = [f"pecplas_py.{p.parent.name}.{p.stem}" for p in scripts]
+    r = subprocess.run([sys.executable, "-c", _HELP_DRIVER, *modules], cwd=ROOT,
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stdout + r.stderr
+    results = {m: (code, out) for m, code, out in map(json.loads, r.stdout.splitlines())}
+    assert sorted(results) == sorted(modules), r.stdout + r.stderr
+    bad = [f"{name}: exit {code}\n{out}" for name, (code, out) in results.items()
+           if code != 0 or "usage:" not in out]
     assert not bad, "\n".join(bad)
 
 
