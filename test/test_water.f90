@@ -18,6 +18,7 @@ module test_water
    use test_water_free, only: test_free_stages, test_free_equals_split, test_free_quay, &
       test_free_raft, test_free_bad_mode
    use test_water_joint_level, only: test_joint_level_bound
+   use test_joint_k0_lobatto, only: test_k0_lobatto_at_rest
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
    use test_water_held, only: test_held_plate_water
    use test_held_warning, only: test_held_warning_without_nil, test_no_held_warning_with_nil
@@ -69,6 +70,7 @@ contains
                new_unittest('water_in_a_curved_shell', test_curved_shell), &
                new_unittest('water_on_a_curved_soil_face', test_curved_face), &
                new_unittest('water_level_inside_a_joint_element', test_joint_level_bound), &
+               new_unittest('k0_state_with_lobatto_joints_at_rest', test_k0_lobatto_at_rest), &
                new_unittest('water_on_free_plate_faces', test_free_stages), &
                new_unittest('water_free_faces_equal_split_sets', test_free_equals_split), &
                new_unittest('water_free_faces_quay_wall', test_free_quay), &
