@@ -122,7 +122,11 @@ contains
       wnorm = force_norm(model, initial_plate_water(model))
       if (wnorm > 0.0_wp) text = text//', the water standing on plates alone '//num(wnorm)// &
          funit(model)
-      text = text//'; '//ADVICE
+      if (k > 0) then
+         text = text//'; continue the run (--restart) to release it, or '//ADVICE
+      else
+         text = text//'; '//ADVICE
+      end if
    end function held_end_warning
 
    !> Under gravity loading with groundwater the water comes with the first GRAVITY pattern
