@@ -5,6 +5,7 @@ module pecplas_solve_output
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
+   use pecplas_problem_counts, only: NCOUNT, whole_counts, C_FACTORISATIONS
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: increment_result_t, plate_fields_t
    use pecplas_joints_laws_coulomb, only: plastic_slip
@@ -430,8 +431,9 @@ contains
       real(wp), intent(in) :: tau, residual
       character(len=*), intent(in) :: how_text
       character(len=120) :: joints
-      integer :: nslip, nopen
+      integer :: nslip, nopen, counts(NCOUNT)
       joints = ''
+      counts = whole_counts(problem)
       if (allocated(model%joint_sets)) then
          if (size(model%joint_sets) > 0) then
             call problem%state%joints%count_modes(nslip, nopen)
@@ -440,7 +442,7 @@ contains
       end if
       ! Katona contact: state iterations of the increment, numeric factorisations so far
       if (problem%katona%active) write (joints, '(a,a,i0,a,i0)') trim(joints), '  states ', &
-         problem%katona%last_state_iterations, ' factorisations ', problem%stats%factorisations
+         problem%katona%last_state_iterations, ' factorisations ', counts(C_FACTORISATIONS)
       write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
          '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)// &
