@@ -12,7 +12,7 @@ Structures):
 - excavation_strutted_strip.inp: the same wall as a continuum strip (four Q4 across its
   thickness, E = 3e7 kPa), joints on its back face, on its front face stage by stage and
   under its base (SIDE=wall: the interface goes round the toe corners, whose doublets the
-  three sets share), for the comparison of the plate with the continuum (doc/validation.md).
+  three sets share; the base joints rough and stiff, as good as bonded), for the comparison of the plate with the continuum (doc/validation.md).
 - excavation_wet.inp: excavation_strutted.inp with groundwater: the water table 2 m below the
   surface (GAMMA_SAT = 20 below it), the pit kept flooded to it as it is dug: the water stands
   on the pit floor (free faces under the level) and on the wall's pit face where its soil is
@@ -160,7 +160,12 @@ def excavation(strip, wet=False):
                       f"EDGES=front_{k + 1}, SIDE=wall"]
         lines += ["*JOINTS, TYPE=GOODMAN4, SET=j_front_deep, LAW=wall_friction, "
                   "EDGES=front_deep, SIDE=wall"]
-        lines += ["*JOINTS, TYPE=GOODMAN4, SET=j_base, LAW=wall_friction, EDGES=base_face, "
+        # the base cast on the sand: rough (the sand's own strength) and stiff (KN = KT =
+        # 1e6 kPa/m, some ten times the sand's E / h under it): as good as bonded until it
+        # slips, and the face joints' law can be changed without changing the toe
+        lines += ["*INTERFACE_LAW, NAME=wall_base, TYPE=MOHR_COULOMB",
+                  "KN = 1e6, KT = 1e6, PHI = 30, PSI = 0, C = 1",
+                  "*JOINTS, TYPE=GOODMAN4, SET=j_base, LAW=wall_base, EDGES=base_face, "
                   "SIDE=wall"]
         strut_node = nid(xs.index(FRONT + 0.4), jy(STRUT_Y))
     else:
