@@ -172,6 +172,7 @@ test-mpi: build-mpi
 	cmake --build $(CMAKE_DIR) -j$(JOBS) --target pecplas_tests_mpi
 	$(PYTHON) -m pecplas_py.checks.mpi_check $(MPI_DIR)/pecplas $(MPI_DECKS) --np 1 2 \
 	  --singular test/data/cli/roller_only.inp --restart test/data/plasticity/footing_t6.inp 13 \
+	  --restart-exact input/default.inp 15 --restart-exact input/examples/excavation_cantilever.inp 7 \
 	  --signal test/data/plasticity/footing_t6.inp --write-failure test/data/plasticity/footing_t6.inp \
 	  --unit $(MPI_DIR)/pecplas_tests linalg_mumps
 

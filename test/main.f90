@@ -65,6 +65,7 @@ program tester
    use test_adapt, only: collect_adapt
    use test_pecjoin_katona, only: collect_pecjoin_katona
    use test_pecjoin_katona_friction, only: collect_pecjoin_katona_friction
+   use test_pecjoin_claims, only: collect_pecjoin_claims
    use test_pecjoin_identify, only: collect_pecjoin_identify
    use test_pecjoin_sensitivity, only: collect_pecjoin_sensitivity
    use test_pecjoin_identify_roundtrip, only: collect_pecjoin_identify_roundtrip
@@ -143,6 +144,7 @@ program tester
    suites = [suites, new_testsuite('refine', collect_refine)]
    suites = [suites, new_testsuite('pecjoin_katona', collect_pecjoin_katona)]
    suites = [suites, new_testsuite('pecjoin_katona_friction', collect_pecjoin_katona_friction)]
+   suites = [suites, new_testsuite('pecjoin_claims', collect_pecjoin_claims)]
    suites = [suites, new_testsuite('pecjoin_identify', collect_pecjoin_identify)]
    suites = [suites, new_testsuite('pecjoin_sensitivity', collect_pecjoin_sensitivity)]
    suites = [suites, new_testsuite('pecjoin_identify_roundtrip', collect_pecjoin_identify_roundtrip)]

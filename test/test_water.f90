@@ -18,7 +18,9 @@ module test_water
    use test_water_free, only: test_free_stages, test_free_equals_split, test_free_quay, &
       test_free_raft, test_free_bad_mode
    use test_water_joint_level, only: test_joint_level_bound
+   use test_joint_k0_lobatto, only: test_k0_lobatto_at_rest
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
+   use test_water_held, only: test_held_plate_water
    use test_water_level, only: test_wall_level_inside, test_plate_polyline, test_face_polyline, &
       test_plate_cone
    use test_water_curve, only: test_curved_wall, test_curved_wall_run, test_curved_trough, &
@@ -54,6 +56,7 @@ contains
                new_unittest('water_on_a_wall', test_wall), &
                new_unittest('water_on_a_wall_phased', test_wall_phased), &
                new_unittest('water_on_a_wall_gravity_loading', test_wall_gravity), &
+               new_unittest('water_on_a_wall_held_by_k0', test_held_plate_water), &
                new_unittest('water_level_inside_a_wall_element', test_wall_level_inside), &
                new_unittest('water_polyline_level_on_a_plate', test_plate_polyline), &
                new_unittest('water_polyline_level_on_a_face', test_face_polyline), &
@@ -64,6 +67,7 @@ contains
                new_unittest('water_in_a_curved_shell', test_curved_shell), &
                new_unittest('water_on_a_curved_soil_face', test_curved_face), &
                new_unittest('water_level_inside_a_joint_element', test_joint_level_bound), &
+               new_unittest('k0_state_with_lobatto_joints_at_rest', test_k0_lobatto_at_rest), &
                new_unittest('water_on_free_plate_faces', test_free_stages), &
                new_unittest('water_free_faces_equal_split_sets', test_free_equals_split), &
                new_unittest('water_free_faces_quay_wall', test_free_quay), &

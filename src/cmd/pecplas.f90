@@ -15,6 +15,9 @@ module pecplas_cmd_pecplas
    use pecplas_base_strings, only: decimal_text, itoa
    use pecplas_io_deck_reader, only: read_deck
    use pecplas_problem_type, only: problem_t
+   use pecplas_problem_counts, only: NCOUNT, whole_counts, whole_known, C_FACTORISATIONS, &
+      C_SOLVES, C_LINE_SEARCHES, C_SINGULAR, C_ARC, C_METHOD, C_STATE_ITERATIONS, &
+      C_MAX_STATE_ITERATIONS, C_G_BUILDS, C_FROZEN, C_RECLOSURE
    use pecplas_solve_prepare, only: prepare_run
    use pecplas_solve_stiffness, only: linear_solver_name
    use pecplas_solve_increments, only: run_increments
@@ -385,43 +388,65 @@ contains
       character(len=*), intent(in) :: message, outfile
       real(wp), intent(in) :: cpu, wall
       logical, intent(in) :: quiet
+      integer :: c(NCOUNT)
+      character(len=:), allocatable :: own, mine, counted, partial
       if (status /= RUN_COMPLETED) write (0, '(a)') 'pecplas: run stopped ('// &
          status_name(status)//'): '//message
       flush (0)
       if (quiet) return
-      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a)') ' summary: ', problem%stats%increments, &
+      ! the counts are the whole run's, a restarted one's too (its restart data carry those of
+      ! the run before it); times and the solver's own statistics are this process's, and
+      ! say so when the run was restarted
+      c = whole_counts(problem)
+      own = ''
+      mine = ''
+      counted = ''
+      partial = ''
+      if (problem%stats%restarted) then
+         own = ' of this process (restarted after increment '// &
+            itoa(problem%stats%resumed_after)//')'
+         mine = ' (this process)'
+         ! restart data of an earlier version hold no counts but increments, iterations, cuts
+         if (.not. whole_known(problem)) then
+            counted = ' (factorisations and solves: this process)'
+            partial = mine
+         end if
+      end if
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') ' summary: ', problem%stats%increments, &
          ' increments, ', problem%stats%iterations, ' iterations, ', problem%stats%cuts, ' cuts, ', &
-         problem%stats%factorisations, ' factorisations, ', problem%stats%solves, ' solves, ', sec(cpu), ' s CPU'
+         c(C_FACTORISATIONS), ' factorisations, ', c(C_SOLVES), ' solves'//counted//', ', &
+         sec(cpu), ' s CPU', own
       ! which method converged the increments (doc/theory.md §4, the chain)
-      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a,i0)') ' methods: increments by modified Newton ', &
-         problem%stats%by_method(1), ', quasi-Newton ', problem%stats%by_method(2), ', Newton ', &
-         problem%stats%by_method(3), '; under arc-length ', problem%stats%arc_increments, &
-         '; line-search residuals ', problem%stats%line_searches, '; singular tangents ', &
-         problem%stats%singular_tangents, ' (elastic stiffness used); re-closure limits ', &
-         problem%stats%reclosure_limits
+      write (*, '(a,3(i0,a),i0,a,i0,a,i0,a,i0,a)') ' methods: increments by modified Newton ', &
+         c(C_METHOD), ', quasi-Newton ', c(C_METHOD + 1), ', Newton ', &
+         c(C_METHOD + 2), '; under arc-length ', c(C_ARC), &
+         '; line-search residuals ', c(C_LINE_SEARCHES), '; singular tangents ', &
+         c(C_SINGULAR), ' (elastic stiffness used); re-closure limits ', c(C_RECLOSURE), partial
       associate (t => problem%stats%time)
-         write (*, '(a,8(a,a))') ' wall time [s]:', ' read+setup ', sec(t%setup), '  assembly ', &
-            sec(t%assembly), '  factorisation ', sec(t%factorisation), '  solve ', sec(t%solve), &
-            '  residual ', sec(t%residual), ' (laws ', sec(t%laws)//')', '  output ', &
-            sec(t%output), '  total ', sec(wall)
+         write (*, '(a,8(a,a))') ' wall time [s]'//own//':', ' read+setup ', sec(t%setup), &
+            '  assembly ', sec(t%assembly), '  factorisation ', sec(t%factorisation), &
+            '  solve ', sec(t%solve), '  residual ', sec(t%residual), ' (laws ', &
+            sec(t%laws)//')', '  output ', sec(t%output), '  total ', sec(wall)
       end associate
       associate (t => problem%stats%time)
          if (t%rank_wall_max > 0.0_wp) write (*, '(a,i0,a)') ' ranks: ', parallel_size(), &
             ', each assembles the stiffness of its own elements: wall '// &
             sec(t%rank_wall_min)//' to '//sec(t%rank_wall_max)//' s, CPU '// &
-            sec(t%rank_cpu_min)//' to '//sec(t%rank_cpu_max)//' s'
+            sec(t%rank_cpu_min)//' to '//sec(t%rank_cpu_max)//' s'//mine
       end associate
       write (*, '(a,i0,a)') ' threads: ', threads%n, ' ('//threads%source//'; OpenMP '// &
          trim(merge('on ', 'off', threads%openmp))//'; '//parts_text(threads)//')'
-      if (allocated(problem%linear%solver)) write (*, '(a)') ' linear solver: '//problem%linear%solver%report()
+      if (allocated(problem%linear%solver)) write (*, '(a)') ' linear solver'//mine//': '// &
+         problem%linear%solver%report()
       if (problem%katona%active) then
          associate (k => problem%katona)
             write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,a,a,a)') ' katona: ', k%nd, &
-               ' doublets, ', k%state_iterations, ' state iterations (max ', &
-               k%max_state_iterations, ' per increment), ', k%g_builds, ' flexibility builds, ', &
-               k%frozen, ' frozen doublets, max penetration ', k%max_penetration, &
-               ', augmentation ', k%alpha, ', time flexibility ', sec(k%time_flexibility), &
-               ' s, states ', sec(k%time_states)//' s'
+               ' doublets, ', c(C_STATE_ITERATIONS), ' state iterations (max ', &
+               c(C_MAX_STATE_ITERATIONS), ' per increment), ', c(C_G_BUILDS), &
+               ' flexibility builds, ', c(C_FROZEN), ' frozen doublets'// &
+               partial//', max penetration ', &
+               k%max_penetration, ', augmentation ', k%alpha, ', time'//mine//' flexibility ', &
+               sec(k%time_flexibility), ' s, states ', sec(k%time_states)//' s'
          end associate
       end if
       write (*, '(a)') ' status: '//status_name(status)//'  results: '//outfile

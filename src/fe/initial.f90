@@ -13,7 +13,9 @@ module pecplas_fe_initial
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_fe_joint_initial, only: joint_stress_from_massif, set_joint_stress
-   use pecplas_joints_points, only: joint_point_geometry
+   use pecplas_joints_points, only: joint_point_geometry, joint_set_element, joint_element_points
+   use pecplas_joints_elements_type, only: joint_element_t, joint_point_t
+   use pecplas_joints_consistent, only: lobatto_twin, fix_forces
    use pecplas_fe_joint_side, only: mesh_index_t, beside_sets
    implicit none (type, external)
    private
@@ -90,7 +92,50 @@ contains
          end do
       end do
       call set_joint_stress(model, state%joints, js, sigma0, error)
+      if (allocated(error)) return
+      call lobatto_initial_fix(model, index, state, js, sigma0, error)
    end subroutine initial_joint_set_stress
+
+   !> A Lobatto joint set: the consistent less the lumped nodal forces of its initial
+   !> stresses (sigma0 at its points; the same field at the points of its Gauss twin), so
+   !> that it carries the initial field as the massif beside it does (pecplas_joints_consistent).
+   subroutine lobatto_initial_fix(model, index, state, js, sigma0, error)
+      type(model_t), intent(in) :: model
+      type(mesh_index_t), intent(in) :: index
+      type(fe_state_t), intent(inout) :: state
+      integer, intent(in) :: js
+      real(wp), intent(in) :: sigma0(:, :, :)
+      type(error_t), allocatable, intent(out) :: error
+      class(joint_element_t), allocatable :: elem, twin
+      type(joint_point_t), allocatable :: pts(:), pg(:)
+      real(wp), allocatable :: sg(:, :), fix(:, :)
+      real(wp) :: stress(4)
+      integer, allocatable :: sets(:)
+      integer :: e, g
+      logical :: found, hit
+      associate (set => model%joint_sets(js))
+         call lobatto_twin(set, twin, found, error)
+         if (allocated(error) .or. .not. found) return
+         call joint_set_element(set, elem, error)
+         if (allocated(error)) return
+         allocate (pts(elem%npoint()), pg(twin%npoint()), sg(2, twin%npoint()))
+         allocate (fix(2*elem%nnode(), size(set%conn, 2)))
+         do e = 1, size(set%conn, 2)
+            call joint_element_points(model, set, elem, e, pts, error)
+            if (allocated(error)) return
+            call joint_element_points(model, set, twin, e, pg, error)
+            if (allocated(error)) return
+            call beside_sets(model, index, set, e, sets)
+            sg = 0.0_wp
+            do g = 1, size(pg)
+               call mean_stress_at(model, sets, pg(g)%x, stress, hit)
+               if (hit) sg(:, g) = joint_stress_from_massif(stress, pg(g)%t)
+            end do
+            call fix_forces(pg, sg, pts, sigma0(:, :, e), fix(:, e))
+         end do
+         state%joints%sets(js)%sigma0_fix = fix
+      end associate
+   end subroutine lobatto_initial_fix
 
    !> Stress of element set `s` at point x from the *INITIAL_STRESS entries (later entries
    !> win); `stress` is left unchanged and hit = .false. when no entry covers the set.

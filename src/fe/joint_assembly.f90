@@ -304,6 +304,10 @@ contains
             call joint_force(pts(ip), st%sigma_trial(:, ip, e), fe)
          end if
       end do
+      ! Lobatto joints: the prescribed fields (initial stresses, steady pore pressures)
+      ! with their consistent nodal forces (pecplas_joints_consistent)
+      if (allocated(st%sigma0_fix)) fe = fe + st%sigma0_fix(:, e)
+      if (allocated(st%pore) .and. allocated(st%pore_fix)) fe = fe + st%pore_fix(:, e)
    end subroutine joint_element_forces
 
 end module pecplas_fe_joint_assembly

@@ -48,8 +48,9 @@ contains
    !> Fields of plate set s at the converged state (u, pstate, pattern factors); `level`:
    !> the phreatic level in force (groundwater: the water's pressure on the plate's faces
    !> by its *PLATE_WATER mode is one of its own loads; default none); `step`: the step whose
-   !> *PLATE_WATER sides are in force (default the last).
-   subroutine plate_results(model, u, pstate, factors, s, f, error, level, step)
+   !> *PLATE_WATER sides are in force (default the last); `sides`: the face the water stands
+   !> on, element by element (+1 left, -1 right, 0 none), instead of those of `step`.
+   subroutine plate_results(model, u, pstate, factors, s, f, error, level, step, sides)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: u(:, :), factors(:)
       type(plate_state_t), intent(in) :: pstate
@@ -57,6 +58,7 @@ contains
       type(plate_fields_t), intent(out) :: f
       type(error_t), allocatable, intent(out) :: error
       integer, intent(in), optional :: level, step
+      integer, intent(in), optional :: sides(:)
       type(beam_point_t) :: pts(3)
       logical :: wet
       real(wp) :: fe(MAX_BEAM_DOFS), fl(MAX_BEAM_DOFS), x(2, 3), t(2), n(2), scale, q(2)
@@ -84,7 +86,9 @@ contains
          if (.not. st%active) return
          if (present(level)) then
             ! the faces the water stands on in that step (the phase plan's activity)
-            if (present(step)) then
+            if (present(sides)) then
+               wside = sides
+            else if (present(step)) then
                wside = plate_water_sides(model, s, step)
             else
                wside = plate_water_sides(model, s, size(model%steps))

@@ -8,7 +8,9 @@ module pecplas_fe_pore
    use pecplas_massif_kinematics, only: massif_rule_t
    use pecplas_massif_element_matrices, only: massif_gauss_coordinates
    use pecplas_base_error, only: error_t
-   use pecplas_joints_points, only: joint_point_geometry
+   use pecplas_joints_points, only: joint_point_geometry, joint_set_element, joint_element_points
+   use pecplas_joints_elements_type, only: joint_element_t, joint_point_t
+   use pecplas_joints_consistent, only: lobatto_twin, fix_forces
    use pecplas_fe_joint_side, only: mesh_index_t
    implicit none (type, external)
    private
@@ -73,6 +75,7 @@ contains
          associate (js => state%joints%sets(s))
             if (.not. allocated(js%pore)) cycle
             js%pore = 0.0_wp
+            if (allocated(js%pore_fix)) js%pore_fix = 0.0_wp
             if (k <= 0) cycle
             call joint_point_geometry(model, s, xy, t, error)
             if (allocated(error)) return
@@ -83,8 +86,50 @@ contains
                end do
             end do
          end associate
+         call lobatto_pore_fix(model, state, index, s, k, error)
+         if (allocated(error)) return
       end do
    end subroutine set_steady_pressures
+
+   !> A Lobatto joint set: the consistent less the lumped nodal forces of its steady pore
+   !> pressures under level k (pecplas_joints_consistent); zero where the joint is dry.
+   subroutine lobatto_pore_fix(model, state, index, s, k, error)
+      type(model_t), intent(in) :: model
+      type(fe_state_t), intent(inout) :: state
+      type(mesh_index_t), intent(in) :: index
+      integer, intent(in) :: s, k
+      type(error_t), allocatable, intent(out) :: error
+      class(joint_element_t), allocatable :: elem, twin
+      type(joint_point_t), allocatable :: pts(:), pg(:)
+      real(wp), allocatable :: sg(:, :), sp(:, :), fix(:, :)
+      integer :: e, g
+      logical :: found
+      associate (set => model%joint_sets(s), js => state%joints%sets(s))
+         call lobatto_twin(set, twin, found, error)
+         if (allocated(error) .or. .not. found) return
+         call joint_set_element(set, elem, error)
+         if (allocated(error)) return
+         allocate (pts(elem%npoint()), pg(twin%npoint()), sg(2, twin%npoint()), &
+            sp(2, elem%npoint()))
+         allocate (fix(2*elem%nnode(), size(set%conn, 2)), source=0.0_wp)
+         do e = 1, size(set%conn, 2)
+            if (k <= 0) exit
+            if (.not. joint_wet(model, state, index, set%conn(:, e))) cycle
+            call joint_element_points(model, set, elem, e, pts, error)
+            if (allocated(error)) return
+            call joint_element_points(model, set, twin, e, pg, error)
+            if (allocated(error)) return
+            sg = 0.0_wp
+            do g = 1, size(pg)
+               sg(1, g) = model%water%levels(k)%pressure(pg(g)%x)
+            end do
+            sp = 0.0_wp
+            sp(1, :) = js%pore(:, e)
+            call fix_forces(pg, sg, pts, sp, fix(:, e))
+         end do
+         js%pore_fix = fix
+      end associate
+   end subroutine lobatto_pore_fix
 
    !> The rule for a joint element with nodes `conn`: it takes the steady pore pressure of
    !> its position when the massif on either side is wet (a porous material, not *DRY):

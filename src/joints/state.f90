@@ -30,6 +30,10 @@ module pecplas_joints_state
       !> the law works on the effective normal stress, the element's forces take
       !> sigma_n + p (pecplas_fe_pore). Unallocated in a model without water.
       real(wp), allocatable :: pore(:, :)
+      !> Lobatto line joints (pecplas_joints_consistent): the consistent less the lumped
+      !> nodal forces (2 nnode, nel) of the initial stresses (sigma0_fix) and of the steady
+      !> pore pressures (pore_fix), added to the element's forces; unallocated otherwise.
+      real(wp), allocatable :: sigma0_fix(:, :), pore_fix(:, :)
    end type joint_set_state_t
 
    type :: joint_state_t

@@ -551,7 +551,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: ekeep(:), jkeep(:)
       real(wp), allocatable :: f0(:, :)
-      type(steady_copy_t), allocatable :: keep(:), jpore(:)
+      type(steady_copy_t), allocatable :: keep(:), jpore(:), jfix(:)
       integer :: s
       ekeep = problem%state%sets%active
       allocate (jkeep(0))
@@ -567,7 +567,7 @@ contains
       if (allocated(error)) return
       call problem%state%rollback()
       ! the same without the steady pore pressures
-      allocate (keep(size(problem%state%sets)), jpore(size(jkeep)))
+      allocate (keep(size(problem%state%sets)), jpore(size(jkeep)), jfix(size(jkeep)))
       do s = 1, size(problem%state%sets)
          if (.not. problem%state%sets(s)%pore%on()) cycle
          keep(s)%v = problem%state%sets(s)%pore%steady
@@ -577,6 +577,9 @@ contains
          if (.not. allocated(problem%state%joints%sets(s)%pore)) cycle
          jpore(s)%v = problem%state%joints%sets(s)%pore
          problem%state%joints%sets(s)%pore = 0.0_wp
+         if (.not. allocated(problem%state%joints%sets(s)%pore_fix)) cycle
+         jfix(s)%v = problem%state%joints%sets(s)%pore_fix
+         problem%state%joints%sets(s)%pore_fix = 0.0_wp
       end do
       allocate (f0, mold=f)
       call internal_forces(model, problem%system%rules, problem%state%u, problem%state, f0, &
@@ -586,6 +589,7 @@ contains
       end do
       do s = 1, size(jkeep)
          if (allocated(jpore(s)%v)) problem%state%joints%sets(s)%pore = jpore(s)%v
+         if (allocated(jfix(s)%v)) problem%state%joints%sets(s)%pore_fix = jfix(s)%v
       end do
       problem%state%sets%active = ekeep
       if (size(jkeep) > 0) problem%state%joints%sets%active = jkeep

@@ -18,6 +18,14 @@ module pecplas_problem_stats
       integer :: reclosure_limits = 0
       integer :: by_method(3) = 0
       type(timers_t) :: time
+      !> A restarted run (pecplas_solve_restart): the increment it resumed after, the counts
+      !> of pecplas_problem_counts of the run before it, read from the restart data
+      !> (unallocated in data of an earlier version, which hold none), and this process's
+      !> own counts when the step loop resumed (its set-up and the refactorisations of the
+      !> restore are no part of the uninterrupted run).
+      logical :: restarted = .false.
+      integer :: resumed_after = 0
+      integer, allocatable :: earlier(:), at_resume(:)
    end type run_stats_t
 
 end module pecplas_problem_stats

@@ -93,7 +93,7 @@ contains
       type(attempt_t) :: att
       type(outcome_t) :: out
       real(wp), allocatable :: u(:, :), fint(:, :), reaction(:, :), fq(:, :)
-      real(wp) :: tau, k_inc, time, s, noise, tau_before
+      real(wp) :: tau, k_inc, time, s, noise, tau_before, dl_ok
       integer :: method, wanted
       logical :: landed
 
@@ -157,6 +157,8 @@ contains
                ! directs the predictor), the next ones follow the previous increment
                if (allocated(att%du_prev)) deallocate (att%du_prev)
                if (allocated(run%du_prev) .and. res%increments > 0) att%du_prev = run%du_prev
+               ! on a plateau window: a secant predictor where the tangent is not at hand
+               att%secant = nflat >= FLAT_COUNT .and. res%increments > 0
                call try_chain(model, problem, run, att, u, fint, reaction, out, method, error)
                if (allocated(error)) return
                landed = .false.
@@ -183,11 +185,19 @@ contains
                   if (out%converged) then
                      level = 0
                      lc_mode = .true.
-                  else
+                  else if (out%singular) then
+                     ! singular again: no equilibrium under any states the iteration finds
                      res%mechanism = .true.
                      out%reason = 'the tangent with the next slip/contact states is singular and '// &
                         'no equilibrium exists a little further (step fraction '// &
                         g6(att%tau1)//'): '//out%reason
+                  else
+                     ! the step failed otherwise (contact states that do not settle, a law
+                     ! that cannot return): that proves no mechanism, the load may go on
+                     res%mechanism = .false.
+                     out%reason = 'the load-controlled step to step fraction '//g6(att%tau1)// &
+                        ' that tests the singular tangent for a mechanism failed without a '// &
+                        'singular system (no mechanism established): '//out%reason
                   end if
                end if
                ! past the step's target displacement of a node: shortened so that it ends
@@ -220,10 +230,16 @@ contains
                end if
                level = level + 1
                problem%stats%cuts = problem%stats%cuts + 1
-               ! (an arc grown beyond MAX_LENGTH on a plateau window goes back to that length:
-               ! halving from far may never reach an arc the path follows)
-               dl = 0.5_wp*dl
-               if (nflat >= FLAT_COUNT) dl = min(dl, step%max_length*dl0)
+               ! (an arc grown on a plateau window is halved but not below the last
+               ! converged arc, which the path followed: once that fails too, halving goes on)
+               dl_ok = 0.0_wp
+               if (nflat >= FLAT_COUNT .and. res%increments > 0 .and. allocated(run%du_prev)) &
+                  dl_ok = norm2(run%du_prev)
+               if (dl > dl_ok) then
+                  dl = max(0.5_wp*dl, dl_ok)
+               else
+                  dl = 0.5_wp*dl
+               end if
                if (.not. run%quiet) write (*, '(a,es9.2)') '   no convergence: arc length cut to ', dl
                cycle
             end if

@@ -29,6 +29,7 @@ module pecplas_solve_increments
    use pecplas_model_type, only: model_t
    use pecplas_model_loads, only: step_t, LOAD_DISPLACEMENT
    use pecplas_problem_type, only: problem_t
+   use pecplas_problem_counts, only: mark_resume
    use pecplas_solve_method, only: attempt_t, outcome_t
    use pecplas_solve_attempts, only: run_t, try_chain, accept_increment
    use pecplas_solve_arc_path, only: trace_arc, BEYOND_PEAK, conjugate_displacement, SP_FLAT, &
@@ -90,6 +91,8 @@ contains
          istep0 = problem%position%istep
          if (allocated(problem%position%du_prev)) run%du_prev = problem%position%du_prev
          run%resumed_at = problem%stats%increments
+         ! the set-up and restore of this process are no part of the whole run's counts
+         call mark_resume(problem)
          ! a phased run goes on in the phase in force: the new file records it (a safety
          ! step records its own below)
          if (problem%phase%phased .and. .not. model%steps(istep0)%safety%on) then

@@ -35,7 +35,7 @@ module pecplas_solve_katona_increment
    implicit none (type, external)
    private
 
-   public :: katona_method_t
+   public :: katona_method_t, update_flexibility
 
    !> Katona contact iterated inside modified Newton (the run's factorisation) or full Newton
    !> (att%method == METHOD_NEWTON: the consistent tangent every outer iteration); no
@@ -187,15 +187,8 @@ contains
                   if (allocated(error)) return
                end if
             end if
-            if (kt%g_stamp /= problem%stats%factorisations) then
-               t0 = wall_time()
-               call build_flexibility(kt, dofs, problem%linear%solver, kt%g, error)
-               if (allocated(error)) return
-               kt%g_stamp = problem%stats%factorisations
-               kt%g_builds = kt%g_builds + 1
-               kt%time_flexibility = kt%time_flexibility + (wall_time() - t0)
-               problem%stats%solves = problem%stats%solves + n2
-            end if
+            call update_flexibility(problem, error)
+            if (allocated(error)) return
             t0 = wall_time()
             call problem%linear%solver%solve(rhs, v, error)
             if (allocated(error)) return
@@ -361,5 +354,23 @@ contains
       end subroutine phi_at
 
    end subroutine katona_solve_increment
+
+   !> Builds the flexibility G = D R_a^-1 D^T of the Katona doublets from the factorisation
+   !> in hand, unless G already belongs to it (counted: builds, solves, time).
+   subroutine update_flexibility(problem, error)
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      associate (kt => problem%katona)
+         if (kt%g_stamp == problem%stats%factorisations) return
+         t0 = wall_time()
+         call build_flexibility(kt, problem%system%dofs, problem%linear%solver, kt%g, error)
+         if (allocated(error)) return
+         kt%g_stamp = problem%stats%factorisations
+         kt%g_builds = kt%g_builds + 1
+         kt%time_flexibility = kt%time_flexibility + (wall_time() - t0)
+         problem%stats%solves = problem%stats%solves + 2*kt%nd
+      end associate
+   end subroutine update_flexibility
 
 end module pecplas_solve_katona_increment

@@ -46,6 +46,11 @@ module pecplas_solve_method
       real(wp) :: dl = 0.0_wp
       !> Previous converged free increment (the arc predictor's sign); may be empty.
       real(wp), allocatable :: du_prev(:)
+      !> Arc-length on a plateau window: where the predictor's operator is not the consistent
+      !> tangent (single-factorisation methods, a singular tangent replaced by the elastic
+      !> stiffness), the predictor is du_prev scaled to dl at the same load (secant) instead
+      !> of that operator's response to the load (doc/theory.md section 4, "Plateau").
+      logical :: secant = .false.
       !> Load control: the previous converged free increment of the step scaled to this
       !> one's size, the start of a full-Newton increment whose imposed displacements move
       !> (linear extrapolation, pecplas_solve_iterate); empty: the tangent predictor.

@@ -5,6 +5,7 @@ module pecplas_solve_output
    use pecplas_base_error, only: error_t, fatal_error
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
+   use pecplas_problem_counts, only: NCOUNT, whole_counts, C_FACTORISATIONS
    use pecplas_io_results_file, only: results_file_t
    use pecplas_io_results_increment, only: increment_result_t, plate_fields_t
    use pecplas_joints_laws_coulomb, only: plastic_slip
@@ -15,8 +16,8 @@ module pecplas_solve_output
    use pecplas_estimate_estimator, only: error_estimate_t, estimate_error
    use pecplas_fe_plate_output, only: plate_results
    use pecplas_model_columns, only: rotation_column
-   use pecplas_model_plate_water_sides, only: plate_water_sides
-   use pecplas_model_phases, only: TARGET_PATTERNS
+   use pecplas_model_plate_water_sides, only: plate_water_sides, planned_activity
+   use pecplas_model_phases, only: TARGET_PATTERNS, TARGET_PLATES
    use pecplas_model_phase_plan, only: target_activity
    implicit none (type, external)
    private
@@ -93,9 +94,10 @@ contains
       real(wp), intent(in) :: reaction(:, :)
       type(increment_result_t), intent(inout) :: r
       type(error_t), allocatable, intent(out) :: error
-      type(plate_fields_t) :: before
+      type(plate_fields_t) :: before, held
       integer :: s, k, step
-      real(wp) :: tau, wf
+      integer, allocatable :: sides0(:)
+      real(wp) :: tau, wf, h
       real(wp), allocatable :: factors(:)
       if (.not. allocated(model%plates)) return
       if (size(model%plates) == 0) return
@@ -134,6 +136,25 @@ contains
                   f%end_forces = wf*f%end_forces + (1.0_wp - wf)*before%end_forces
                   f%node_forces = wf*f%node_forces + (1.0_wp - wf)*before%node_forces
                end associate
+            end if
+            ! the water on the plate before the first step is in the K0 state's out-of-balance,
+            ! held (it does not load the plate) until the first nil step releases it: the
+            ! plate's own load is less the share h of it still held (linear in it)
+            h = held_k0_share(model, problem, step, tau)
+            if (h > 0.0_wp .and. model%water%level_at(1) > 0) then
+               sides0 = initial_water_sides(model, s)
+               if (any(sides0 /= 0)) then
+                  call plate_results(model, problem%state%u, problem%state%plates, &
+                     factors, s, held, error, model%water%level_at(1), sides=sides0)
+                  if (allocated(error)) return
+                  call plate_results(model, problem%state%u, problem%state%plates, &
+                     factors, s, before, error)
+                  if (allocated(error)) return
+                  associate (f => r%plate_fields(s))
+                     f%end_forces = f%end_forces + h*(before%end_forces - held%end_forces)
+                     f%node_forces = f%node_forces + h*(before%node_forces - held%node_forces)
+                  end associate
+               end if
             end if
          else
             call plate_results(model, problem%state%u, problem%state%plates, &
@@ -175,6 +196,57 @@ contains
             (1.0_wp - tau)*problem%position%f0(p)
       end do
    end function plate_load_factors
+
+   !> The share of the K0 state's out-of-balance still held in the converged state of step
+   !> `step` at fraction tau (doc/theory.md §10): 1 before the first nil step (no pattern
+   !> line, no change; a safety step releases nothing), 1 - tau inside it (it carries the
+   !> out-of-balance to zero along its path), 0 after it; 0 without phases and under gravity
+   !> loading with water (whose held load holds no water on the plates).
+   real(wp) function held_k0_share(model, problem, step, tau) result(h)
+      type(model_t), intent(in) :: model
+      type(problem_t), intent(in) :: problem
+      integer, intent(in) :: step
+      real(wp), intent(in) :: tau
+      integer :: i, first
+      h = 0.0_wp
+      if (.not. problem%phase%phased .or. problem%phase%water_pattern > 0) return
+      if (.not. allocated(model%steps)) return
+      first = 0
+      do i = 1, size(model%steps)
+         if (model%steps(i)%safety%on) exit
+         if (allocated(model%steps(i)%pattern)) then
+            if (size(model%steps(i)%pattern) > 0) cycle
+         end if
+         if (allocated(model%steps(i)%changes)) then
+            if (size(model%steps(i)%changes) > 0) cycle
+         end if
+         first = i
+         exit
+      end do
+      if (first == 0 .or. step < first) then
+         h = 1.0_wp
+      else if (step == first) then
+         h = max(1.0_wp - tau, 0.0_wp)
+      end if
+   end function held_k0_share
+
+   !> The faces of plate set s the water stood on in the K0 state's out-of-balance
+   !> (pecplas_phases_start's k0_unbalance: the *PLATE_WATER modes before the first step,
+   !> every element set active, the joint sets active at the start): none for a plate set
+   !> not active at the start.
+   function initial_water_sides(model, s) result(sides)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: s
+      integer, allocatable :: sides(:)
+      logical, allocatable :: pon(:), eon(:), jon(:)
+      allocate (sides(size(model%plates(s)%conn, 2)), source=0)
+      pon = target_activity(model, TARGET_PLATES, 0)
+      if (s > size(pon)) return
+      if (.not. pon(s)) return
+      call planned_activity(model, 0, eon, jon)
+      eon = .true.
+      sides = plate_water_sides(model, s, 0, eon, jon)
+   end function initial_water_sides
 
    !> Whether the water on plate set s (the faces it stands on, element by element, or the
    !> level in force) changes at the start of step `step`.
@@ -359,8 +431,9 @@ contains
       real(wp), intent(in) :: tau, residual
       character(len=*), intent(in) :: how_text
       character(len=120) :: joints
-      integer :: nslip, nopen
+      integer :: nslip, nopen, counts(NCOUNT)
       joints = ''
+      counts = whole_counts(problem)
       if (allocated(model%joint_sets)) then
          if (size(model%joint_sets) > 0) then
             call problem%state%joints%count_modes(nslip, nopen)
@@ -369,7 +442,7 @@ contains
       end if
       ! Katona contact: state iterations of the increment, numeric factorisations so far
       if (problem%katona%active) write (joints, '(a,a,i0,a,i0)') trim(joints), '  states ', &
-         problem%katona%last_state_iterations, ' factorisations ', problem%stats%factorisations
+         problem%katona%last_state_iterations, ' factorisations ', counts(C_FACTORISATIONS)
       write (*, '(a,i3,1x,a12,a,i5,a,f7.4,a,i3,a,es9.2,a,es10.3,a)') ' step', istep, &
          adjustl(model%steps(istep)%name), ' inc', inc, '  fraction ', tau, '  iter ', iters, &
          '  residual ', residual, '  max|u| ', maxval(abs(problem%state%u)), trim(joints)// &

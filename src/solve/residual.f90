@@ -13,7 +13,7 @@ module pecplas_solve_residual
    implicit none (type, external)
    private
 
-   !> Loads and reactions below this fraction of the held load of a phased run are roundoff.
+   !> Loads and reactions below this fraction of the held load are roundoff.
    real(wp), parameter :: HELD_ROUNDOFF = 1.0e-10_wp
 
    public :: path_factor, load_vectors, internal_forces_at, free_residual, free_part, add_free, &
@@ -104,6 +104,9 @@ contains
          if (ref <= HELD_ROUNDOFF*free_norm(problem, problem%system%initial_force)) ref = 0.0_wp
       else
          ref = max(free_norm(problem, fext, problem%system%initial_force), norm2(reaction))
+         ! likewise (e.g. joints closed back onto the initial state by imposed displacements:
+         ! loads and reactions nil, the residual roundoff of the held load)
+         if (ref <= HELD_ROUNDOFF*free_norm(problem, problem%system%initial_force)) ref = 0.0_wp
       end if
       if (ref == 0.0_wp) ref = free_norm(problem, problem%system%initial_force)
    end subroutine free_residual

@@ -14,6 +14,9 @@ module pecplas_solve_restart
    use pecplas_base_strings, only: itoa
    use pecplas_model_type, only: model_t
    use pecplas_problem_type, only: problem_t
+   use pecplas_problem_counts, only: NCOUNT, whole_counts
+   use pecplas_solve_katona_increment, only: update_flexibility
+   use pecplas_base_parallel, only: parallel_rank, parallel_size, parallel_sum
    use pecplas_problem_linear, only: K_SOLVER, K_TSOLVER
    use pecplas_problem_arc_trace, only: PATH_NONE, PATH_STEP, PATH_PROBE, ARC_VECTOR, &
       ARC_VECTOR_V1, ARC_VECTOR_V2
@@ -60,6 +63,13 @@ contains
             real(p%level, wp), p%tau, p%dt, p%k_first, p%k_conv, real(problem%stats%increments, wp), &
             real(problem%stats%iterations, wp), real(problem%stats%cuts, wp), kt%force_scale, &
             kt%max_penetration])
+         ! the whole run's other counts, for the summary of a run restarted from here
+         call data%add('counters', real(whole_counts(problem), wp))
+         ! Katona contact: whether the flexibility G belongs to the last factorisation (the
+         ! next increment uses it as it is; a restarted run builds it again before resuming,
+         ! outside the whole run's counts)
+         if (kt%active) call data%add('katona_flexibility', &
+            [merge(1.0_wp, 0.0_wp, kt%g_stamp == problem%stats%factorisations)])
          call data%add('f0', p%f0)
          call data%add('fint_conv', reshape(p%fint_conv, [size(p%fint_conv)]))
          ! the arc-length path under way, and the last increment's displacement increment
@@ -167,12 +177,12 @@ contains
          ! a deck with a safety step: the walk of that step, once under way (pack_safety)
          if (model%steps(size(model%steps))%safety%on) call pack_safety(problem, data)
          ops = [0.0_wp, 0.0_wp, kt%alpha, merge(1.0_wp, 0.0_wp, p%exact)]
-         if (p%exact .and. .not. partitioned(model)) then
+         if (p%exact) then
             if (problem%linear%solver_moved .and. problem%linear%k_owner == K_SOLVER) then
-               call data%add('operator', problem%linear%k%values)
+               call add_operator(model, data, 'operator', problem%linear%k%values)
                ops(1) = 1.0_wp
             else if (problem%linear%tangent_factorised .and. problem%linear%k_owner == K_TSOLVER) then
-               call data%add('tangent_operator', problem%linear%k%values)
+               call add_operator(model, data, 'tangent_operator', problem%linear%k%values)
                ops(2) = 1.0_wp
             end if
          end if
@@ -251,12 +261,29 @@ contains
          problem%state%converged_tangents = tangents_carried(model, problem)
       end if
       if (.not. allocated(error)) call restore_operators(data, model, problem, error)
+      if (.not. allocated(error)) call restore_flexibility(data, problem, error)
       if (allocated(error)) then
          msg = error%text()
          call input_error(error, 'cannot restart from '//path// &
             ': its restart data does not fit this deck ('//msg//')')
       end if
    end subroutine restore_restart
+
+   !> Katona contact: builds the flexibility G again from the restored factorisation when
+   !> the interrupted run's G belonged to it (item `katona_flexibility`), as a part of the
+   !> restore: its build and solves are the restart's, not the run's (the restarted run's
+   !> summary counts the whole run's, pecplas_problem_counts), and the run goes on with the
+   !> same G as the uninterrupted one, built from the same factorisation.
+   subroutine restore_flexibility(data, problem, error)
+      type(restart_data_t), intent(in) :: data
+      type(problem_t), intent(inout) :: problem
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: v(:)
+      if (.not. problem%katona%active .or. .not. data%has('katona_flexibility')) return
+      call data%get('katona_flexibility', 1, v, error)
+      if (allocated(error)) return
+      if (v(1) /= 0.0_wp) call update_flexibility(problem, error)
+   end subroutine restore_flexibility
 
    !> Puts the restart data into `problem` and marks its position to be resumed.
    subroutine unpack_data(data, model, problem, error)
@@ -280,6 +307,15 @@ contains
          p%tau = v(5); p%dt = v(6); p%k_first = v(7); p%k_conv = v(8)
          problem%stats%increments = nint(v(9)); problem%stats%iterations = nint(v(10))
          problem%stats%cuts = nint(v(11)); kt%force_scale = v(12); kt%max_penetration = v(13)
+         problem%stats%restarted = .true.
+         problem%stats%resumed_after = problem%stats%increments
+         ! the run's other counts (data of an earlier version hold none: the summary then
+         ! says which of its numbers are this process's)
+         if (data%has('counters')) then
+            call data%get('counters', NCOUNT, v, error)
+            if (allocated(error)) return
+            problem%stats%earlier = nint(v)
+         end if
          if (p%istep < 1 .or. p%istep > size(model%steps)) then
             call fatal_error(error, 'restart step '//itoa(p%istep)//' is not a step of the deck')
             return
@@ -538,9 +574,10 @@ contains
    end function codes_text
 
    !> Factorises the matrices the interrupted run had factorised (see pack_restart); data
-   !> without the item `operators` (written before it existed), and a run whose ranks each
-   !> hold a part of the matrix (whatever ranks wrote the data), restart from the set-up
-   !> factorisation.
+   !> without the item `operators` (written before it existed) restart from the set-up
+   !> factorisation, and so does a run whose ranks each hold a part of the matrix (MUMPS
+   !> on several ranks) unless the data were written by as many ranks (add_operator): each
+   !> rank's part is on a pattern of its own, which no other number of ranks has.
    subroutine restore_operators(data, model, problem, error)
       type(restart_data_t), intent(in) :: data
       type(model_t), intent(in) :: model
@@ -550,38 +587,106 @@ contains
       if (.not. data%has('operators')) return
       call data%get('operators', 4, ops, error)
       if (allocated(error)) return
-      if (partitioned(model)) return
+      ! each rank its own part, from data written on as many ranks (else the set-up's); the
+      ! parts of several ranks make no matrix of one
+      if (partitioned(model)) then
+         if (.not. own_parts(data)) return
+      else if (data%has('operator_parts') .or. data%has('tangent_operator_parts')) then
+         return
+      end if
       if (ops(1) /= 0.0_wp) then
-         call get_operator(data, 'operator', problem%linear%k, v, error)
+         call get_operator(data, model, 'operator', problem%linear%k, v, error)
          if (allocated(error)) return
          ! the matrix is augmented when the run's was (a Katona body held by its contacts)
          if (ops(3) > 0.0_wp) problem%katona%alpha = ops(3)
          call factorise_values(model, problem, v, .false., error)
       else if (ops(2) /= 0.0_wp) then
-         call get_operator(data, 'tangent_operator', problem%linear%k, v, error)
+         call get_operator(data, model, 'tangent_operator', problem%linear%k, v, error)
          if (.not. allocated(error)) call factorise_values(model, problem, v, .true., error)
       end if
    end subroutine restore_operators
 
    !> The packed matrix `name` on the run's stiffness pattern k. Where this run stores the
    !> upper triangle (pecplas_solve_stiffness, upper_storage) and the data hold the whole
-   !> matrix (written by a version that stored it whole), its upper triangle is taken.
-   subroutine get_operator(data, name, k, v, error)
+   !> matrix (written by a version that stored it whole), its upper triangle is taken. A run
+   !> whose ranks each hold a part takes this rank's (add_operator).
+   subroutine get_operator(data, model, name, k, v, error)
       type(restart_data_t), intent(in) :: data
+      type(model_t), intent(in) :: model
       character(len=*), intent(in) :: name
       type(csc_t), intent(in) :: k
       real(wp), allocatable, intent(out) :: v(:)
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: whole(:)
-      integer :: nw
+      integer :: nw, r, first
       nw = k%whole_nnz()
-      if (k%upper .and. data%length(name) == nw .and. nw /= k%nnz()) then
+      if (partitioned(model)) then
+         ! this rank's part (own_parts: written by as many ranks)
+         call data%get(name//'_parts', data%length(name//'_parts'), whole, error)
+         if (allocated(error)) return
+         r = parallel_rank() + 1
+         first = parallel_size() + nint(sum(whole(1:r - 1)))
+         if (nint(whole(r)) /= k%nnz()) then
+            call fatal_error(error, 'restart data '//name//'_parts: rank '//itoa(r - 1)// &
+               ' holds '//itoa(nint(whole(r)))//' values where its part of this deck''s '// &
+               'matrix has '//itoa(k%nnz()))
+            return
+         end if
+         v = whole(first + 1:first + k%nnz())
+      else if (k%upper .and. data%length(name) == nw .and. nw /= k%nnz()) then
          call data%get(name, nw, whole, error)
          if (.not. allocated(error)) call k%upper_of_whole(whole, v)
       else
          call data%get(name, k%nnz(), v, error)
       end if
    end subroutine get_operator
+
+   !> Adds the factorised matrix `name` of this run: its values; in a run whose ranks each
+   !> assemble a part of it (MUMPS on several ranks, each part on a pattern of its own),
+   !> `name`_parts instead: the number of values of each rank's part, then the parts in
+   !> rank order, gathered on every rank (each a sum of one part and zeros: exact), so that
+   !> a run restarted on as many ranks gives MUMPS the same parts. Collective there.
+   subroutine add_operator(model, data, name, values)
+      type(model_t), intent(in) :: model
+      type(restart_data_t), intent(inout) :: data
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: values(:)
+      real(wp), allocatable :: counts(:), parts(:)
+      integer :: first
+      if (.not. partitioned(model)) then
+         call data%add(name, values)
+         return
+      end if
+      allocate (counts(parallel_size()), source=0.0_wp)
+      counts(parallel_rank() + 1) = real(size(values), wp)
+      call parallel_sum(counts)
+      first = nint(sum(counts(1:parallel_rank())))
+      allocate (parts(nint(sum(counts))), source=0.0_wp)
+      parts(first + 1:first + size(values)) = values
+      call parallel_sum(parts)
+      call data%add(name//'_parts', [counts, parts])
+   end subroutine add_operator
+
+   !> Whether the data hold the matrices of a run on as many ranks as this one, each rank's
+   !> part (add_operator).
+   logical function own_parts(data)
+      type(restart_data_t), intent(in) :: data
+      real(wp), allocatable :: v(:)
+      type(error_t), allocatable :: error
+      character(len=*), parameter :: NAMES(2) = [character(len=21) :: 'operator_parts', &
+         'tangent_operator_parts']
+      integer :: i
+      own_parts = .false.
+      do i = 1, 2
+         if (data%length(trim(NAMES(i))) < parallel_size()) cycle
+         call data%get(trim(NAMES(i)), data%length(trim(NAMES(i))), v, error)
+         if (allocated(error)) return
+         ! (the counts of as many ranks, then as many values as they say)
+         if (size(v) /= parallel_size() + nint(sum(v(1:parallel_size())))) return
+         own_parts = .true.
+         return
+      end do
+   end function own_parts
 
    !> The walk of the safety step (pecplas_problem_safety, safety_walk_t) once it has
    !> converged an increment: item `safety` (1, increments, Msf reached, next Msf step, last
@@ -673,9 +778,10 @@ contains
       list = [character(len=32) :: 'position', 'f0', 'fint_conv', 'u', 'factors', &
          'katona_mode', 'katona_sign', 'katona_broken', 'katona_force', 'katona_z', &
          'katona_anchor', 'katona_gap0', 'operators', 'operator', 'tangent_operator', &
+         'operator_parts', 'tangent_operator_parts', &
          'du_prev', 'arc', 'arc_peak_factors', 'arc_why', 'lead', 'dtau_prev', 'phase', &
          'phase_carried', 'phase_held', 'phase_water', 'safety', 'safety_curve', 'safety_u0', &
-         'safety_ulast']
+         'safety_ulast', 'counters', 'katona_flexibility']
       do s = 1, nsets
          list = [character(len=32) :: list, 'stress_'//itoa(s), 'strain_'//itoa(s), &
             'hist_'//itoa(s), 'tangent_'//itoa(s), 'pore_excess_'//itoa(s)]

@@ -237,3 +237,37 @@ def test_large_displacement_warning_joins_the_list(tmp_path):
         message = res.attr("status_message")
     assert any("small-strain theory no longer holds" in s for s in stored), stored
     assert "small-strain theory no longer holds" in message
+
+
+def test_unit_slips_warned(tmp_path):
+    """Under *UNITS kN, m, kPa: the sand's E = 30 (typed in MPa) and GAMMA = 2000 (a density
+    in kg/m3) each get a warning at their line naming the value, the range in the deck's units
+    and the likely slip; the concrete's plausible values get none; the run completes and the
+    file keeps what was printed. (doc/deck.md, UNITS, Plausibility)"""
+    out = tmp_path / "u.h5"
+    r = run(TRUST / "warn_units.inp", out=out)
+    assert r.returncode == 0, r.stderr
+    lines = [s for s in r.stderr.splitlines() if ": warning: " in s]
+    assert len(lines) == 2, r.stderr
+    assert "warn_units.inp:20: warning: [*MATERIAL] material 'sand': E = 30 kPa is softer " \
+           "than any soil (peat 100-500 kPa" in lines[0]
+    assert lines[0].endswith("typed in MPa? (30 MPa is 30000 kPa)")
+    assert "warn_units.inp:21: warning: [*MATERIAL] material 'sand': GAMMA = 2000 kN/m3 is " \
+           "heavier than any material" in lines[1]
+    assert "a density in kg/m3" in lines[1]
+    with Results(out) as f:
+        assert list(f.attr("warnings")) == lines
+        assert f.status == "completed"
+
+
+def test_plausible_units_not_warned(tmp_path):
+    """The same deck with the values in kPa and kN/m3: no warning. (Every deck of input/ and
+    test/data/ was run once to see that none is warned: E from 5 MPa to 210 GPa, unit weights
+    16-25 kN/m3, a factor 100 or more inside the bounds.)"""
+    deck = tmp_path / "plausible.inp"
+    deck.write_text((TRUST / "warn_units.inp").read_text()
+                    .replace("E = 30, NU = 0.3", "E = 30000, NU = 0.3")
+                    .replace("GAMMA = 2000", "GAMMA = 19.6"))
+    r = run(deck, out=tmp_path / "p.h5")
+    assert r.returncode == 0, r.stderr
+    assert ": warning: " not in r.stderr, r.stderr

@@ -65,3 +65,42 @@ def test_unit_runs_pass_only_when_every_rank_passed():
     assert not mpi_check.unit_passed(0, "6 passed, 0 failed\n5 passed, 1 failed\n", 2)
     assert not mpi_check.unit_passed(1, both, 2)  # mpirun's exit status counts
     assert not mpi_check.unit_passed(0, "0 passed, 0 failed\n", 1)  # nothing ran
+
+
+def _results(path, rows, status, fields):
+    """A minimal results file: history rows (iterations, residual) and increment groups
+    {global increment: (displacement, joint relative displacement)} in metres."""
+    import h5py
+    with h5py.File(path, "w") as f:
+        f.attrs["status"] = status
+        f.attrs["created"] = str(path)  # a time stamp: not compared
+        f["history/step"] = np.ones(len(rows), dtype=np.int32)
+        f["history/iterations"] = np.array([r[0] for r in rows], dtype=np.int32)
+        f["history/residual"] = np.array([r[1] for r in rows])
+        f["history/cpu_time"] = np.random.default_rng().random(len(rows))
+        for g, (u, z) in fields.items():
+            grp = f.create_group(f"increments/{g:06d}")
+            grp.attrs["global_increment"] = g
+            for name, v in (("displacement", u), ("joints/tip/relative_displacement", z)):
+                grp[name] = np.asarray(v, dtype=float)
+                grp[name].attrs["units"] = "m"
+
+
+def test_restart_differences_within_the_scatter_of_several_ranks(tmp_path):
+    """A restarted run on several ranks equals the uninterrupted one when its iteration
+    counts are the same and every dataset lies within EXACT_TOL of the largest value of its
+    units in the increment: a closed joint's relative displacements (1e-19, noise around
+    zero) are measured against the displacements, not against themselves; another iteration
+    count or a difference above the tolerance is reported."""
+    full, part, rest = (tmp_path / f"{k}.h5" for k in ("full", "part", "rest"))
+    u = np.array([1.0e-2, -3.0e-3])
+    _results(full, [(2, 1e-5), (3, 2e-6), (2, 7e-13)], "completed",
+             {2: (u, [1e-19]), 3: (2 * u, [4e-19])})
+    _results(part, [(2, 1e-5)], "interrupted", {1: (u / 2, [0.0])})
+    _results(rest, [(3, 2e-6), (2, 4e-13)], "completed",
+             {2: (u * (1 + 1e-14), [-3e-19]), 3: (2 * u, [1e-18])})
+    assert mpi_check.restart_differences(full, part, rest, 1) == []
+    _results(rest, [(2, 2e-6), (2, 4e-13)], "completed",
+             {2: (u + [0.0, 1e-8], [0.0]), 3: (2 * u, [0.0])})
+    assert mpi_check.restart_differences(full, part, rest, 1) == [
+        "history/iterations", "increment 2: displacement"]

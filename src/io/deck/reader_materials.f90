@@ -14,6 +14,7 @@ module pecplas_io_deck_reader_materials
    use pecplas_io_deck_set_names, only: eset_names
    use pecplas_base_params, only: params_t
    use pecplas_base_warnings, only: warnings_t
+   use pecplas_io_deck_plausible, only: check_plausible
    use pecplas_base_strings, only: decimal_text
    use pecplas_massif_materials_type, only: material_t, material_box_t
    use pecplas_io_deck_reader_water, only: material_water, finish_material_water
@@ -40,7 +41,7 @@ contains
       type(water_material_t) :: wmat
       character(len=:), allocatable :: drainage
       logical :: found
-      integer :: i, n, at
+      integer :: i, n, at, k, k0
       kwline = state%lines%get(block%at)
       call block%kw%check_keys(kwline, [character(len=8) :: 'NAME', 'TYPE', 'DRAINAGE'], error)
       if (allocated(error)) return
@@ -72,8 +73,14 @@ contains
       params%keyword = '*MATERIAL'
       allocate (params%keys(0), params%values(0))
       do i = block%first, block%last
+         k0 = size(params%keys)
          call read_pairs(state, i, params, error, model%warnings)
          if (allocated(error)) return
+         ! a value far outside its range in the deck's units (typed in another unit?)
+         do k = k0 + 1, size(params%keys)
+            call check_plausible(model%unit_system, name, upper(trim(params%keys(k))), &
+               params%values(k), state%lines%file(i), state%lines%line(i), model%warnings)
+         end do
       end do
       ! the water's part (doc/deck.md, Groundwater) is taken out before the soil model
       call block%kw%get('DRAINAGE', drainage, found)
