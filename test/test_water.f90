@@ -21,6 +21,7 @@ module test_water
    use test_joint_k0_lobatto, only: test_k0_lobatto_at_rest
    use test_water_stiffness, only: test_undrained_penalty, test_undrained_estimator
    use test_water_held, only: test_held_plate_water
+   use test_held_warning, only: test_held_warning_without_nil, test_no_held_warning_with_nil
    use test_water_level, only: test_wall_level_inside, test_plate_polyline, test_face_polyline, &
       test_plate_cone
    use test_water_curve, only: test_curved_wall, test_curved_wall_run, test_curved_trough, &
@@ -57,6 +58,8 @@ contains
                new_unittest('water_on_a_wall_phased', test_wall_phased), &
                new_unittest('water_on_a_wall_gravity_loading', test_wall_gravity), &
                new_unittest('water_on_a_wall_held_by_k0', test_held_plate_water), &
+               new_unittest('held_water_warns_without_nil_step', test_held_warning_without_nil), &
+               new_unittest('no_held_warning_after_nil_step', test_no_held_warning_with_nil), &
                new_unittest('water_level_inside_a_wall_element', test_wall_level_inside), &
                new_unittest('water_polyline_level_on_a_plate', test_plate_polyline), &
                new_unittest('water_polyline_level_on_a_face', test_face_polyline), &

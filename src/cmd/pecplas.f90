@@ -24,6 +24,7 @@ module pecplas_cmd_pecplas
    use pecplas_solve_progress, only: force_unit
    use pecplas_solve_gauss, only: gauss_coordinates
    use pecplas_solve_sanity, only: large_displacement_warning
+   use pecplas_solve_held_warning, only: held_start_warning, held_end_warning
    use pecplas_io_results_increment, only: joint_points_t
    use pecplas_cmd_advise, only: advise_main
    use pecplas_cmd_adapt, only: adapt_main
@@ -141,7 +142,7 @@ contains
       type(joint_points_t), allocatable :: jpoints(:)
       type(error_t), allocatable :: error
       type(thread_setting_t) :: threads
-      character(len=:), allocatable :: message, outfile, warning, plateau, input, failure
+      character(len=:), allocatable :: message, outfile, warning, plateau, input, failure, held
       integer :: status
       real(wp) :: t0, t1, w0
       integer :: nflipped
@@ -170,6 +171,11 @@ contains
          model%solver%threads_used = threads
       end if
       if (.not. allocated(error)) call prepare_run(model, problem, nflipped, jpoints, error)
+      if (.not. allocated(error)) then
+         ! plate water held with the initial out-of-balance by a deck without a nil step
+         warning = held_start_warning(model, problem)
+         if (len(warning) > 0) call model%warnings%add(warning)
+      end if
       if (.not. allocated(error)) call model%warnings%print(0)
       if (.not. allocated(error) .and. is_strict) call model%warnings%as_error(error)
       if (.not. allocated(error) .and. present(restart)) then
@@ -242,15 +248,20 @@ contains
          call model%warnings%add(plateau)
       end if
       warning = large_displacement_warning(model%mesh%x, problem%state%u)
-      if (len(plateau) > 0 .and. len(warning) == 0) &
-         call results%warnings(model%warnings%lines(), error)
       if (len(warning) > 0) then
          write (0, '(a)') COMMAND//': warning: '//warning
          if (len(message) > 0) message = message//'; '
          message = message//'warning: '//warning
          call model%warnings%add(warning)
-         call results%warnings(model%warnings%lines(), error)
       end if
+      ! the initial state's out-of-balance held to the end (no nil step released it)
+      held = held_end_warning(model, problem)
+      if (len(held) > 0) then
+         write (0, '(a)') COMMAND//': warning: '//held
+         call model%warnings%add(held)
+      end if
+      if (len(plateau) > 0 .or. len(warning) > 0 .or. len(held) > 0) &
+         call results%warnings(model%warnings%lines(), error)
       failure = results%write_failure()
       if (.not. allocated(error)) then
          if (len(failure) > 0) message = 'cannot write results: '//failure

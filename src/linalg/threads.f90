@@ -123,7 +123,9 @@ contains
       call get_environment_variable('PECPLAS_THREAD_PARTS', text, length, status)
       if (status /= 0 .or. length == 0) return
       read (text, *, iostat=ios) r, b, w
-      if (ios /= 0 .or. r < 1 .or. b < 1 .or. w < 0.0) return
+      ! a failed read leaves r, b, w undefined: tested apart, not in one expression with them
+      if (ios /= 0) return
+      if (r < 1 .or. b < 1 .or. w < 0.0) return
       setting%regions = r
       setting%blas_threads = b
       setting%blas_work = w

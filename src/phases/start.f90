@@ -415,6 +415,11 @@ contains
       if (problem%katona%active) problem%phase%katona_f0 = problem%katona%f
       where (problem%system%dofs%eq == 0) problem%phase%unbalanced = 0.0_wp
       where (problem%system%dofs%eq > 0) problem%phase%base_reaction = 0.0_wp
+      ! the scale of the out-of-balance (pecplas_solve_held_warning): the held load's forces
+      associate (n => model%mesh%nnode())
+         problem%phase%held0_norm = norm2(pack(problem%system%initial_force(:, 1:n), &
+            problem%system%dofs%eq(:, 1:n) > 0))
+      end associate
       do j = 1, size(jkeep)
          if (.not. jkeep(j)) call katona_off(problem, j)
       end do

@@ -36,6 +36,10 @@ module pecplas_problem_phase
       !> no change) releases it (`released`).
       real(wp), allocatable :: unbalanced(:, :)
       logical :: released = .false.
+      !> The norm of the force entries of the held load of the initial state on the free
+      !> equations (its weight, the water on its faces and plates): the scale the held
+      !> out-of-balance is measured against (pecplas_solve_held_warning).
+      real(wp) :: held0_norm = 0.0_wp
       !> The reactions of the K0 state (2, nnode; zero on the free equations): the reference of
       !> the convergence test measures the reactions from them, as a deck without phases does
       !> (pecplas_solve_residual's free_residual), so that the weight does not loosen it.

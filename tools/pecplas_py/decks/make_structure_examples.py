@@ -10,8 +10,9 @@ Structures):
   strut at 1 m depth (a FIXED_END anchor to the symmetry line, EA = 2e6 kN per strut, one
   strut every 5 m) props the wall.
 - excavation_strutted_strip.inp: the same wall as a continuum strip (four Q4 across its
-  thickness, E = 3e7 kPa), joints on its back face and on its front face stage by stage
-  (SIDE=wall), for the comparison of the plate with the continuum (doc/validation.md).
+  thickness, E = 3e7 kPa), joints on its back face, on its front face stage by stage and
+  under its base (SIDE=wall: the interface goes round the toe corners, whose doublets the
+  three sets share; the base joints rough and stiff, as good as bonded), for the comparison of the plate with the continuum (doc/validation.md).
 - excavation_wet.inp: excavation_strutted.inp with groundwater: the water table 2 m below the
   surface (GAMMA_SAT = 20 below it), the pit kept flooded to it as it is dug: the water stands
   on the pit floor (free faces under the level) and on the wall's pit face where its soil is
@@ -145,12 +146,27 @@ def excavation(strip, wet=False):
             j0, j1 = jy(-depths[k]), jy(-depths[k + 1])
             lines += [f"*EDGES, NAME={name}"] + [f"{nid(iw, j - 1)}, {nid(iw, j)}"
                                                   for j in range(j0, j1, -1)]
+        # the wall's base: joints along its bottom face too, so that the interface goes on
+        # round the toe corners. Where an interface ends inside the mesh, the wall's element
+        # keeps the corner's duplicate and the soil below the original (doc/deck.md,
+        # Generated joints): without the base joints the wall's bottom corners rest on
+        # nothing but the face joints, which carry no K0 shear, and the bottom face's
+        # sigma_v (216 kPa x 0.1 m per corner) was held out of balance there.
+        lines += ["*EDGES, NAME=base_face"] + [f"{nid(i, bottom)}, {nid(i + 1, bottom)}"
+                                               for i in range(iw, ib)]
         lines += ["*JOINTS, TYPE=GOODMAN4, SET=j_back, LAW=wall_friction, EDGES=back_face, SIDE=wall"]
         for k in range(len(STAGES)):
             lines += [f"*JOINTS, TYPE=GOODMAN4, SET=j_front_{k + 1}, LAW=wall_friction, "
                       f"EDGES=front_{k + 1}, SIDE=wall"]
         lines += ["*JOINTS, TYPE=GOODMAN4, SET=j_front_deep, LAW=wall_friction, "
                   "EDGES=front_deep, SIDE=wall"]
+        # the base cast on the sand: rough (the sand's own strength) and stiff (KN = KT =
+        # 1e6 kPa/m, some ten times the sand's E / h under it): as good as bonded until it
+        # slips, and the face joints' law can be changed without changing the toe
+        lines += ["*INTERFACE_LAW, NAME=wall_base, TYPE=MOHR_COULOMB",
+                  "KN = 1e6, KT = 1e6, PHI = 30, PSI = 0, C = 1",
+                  "*JOINTS, TYPE=GOODMAN4, SET=j_base, LAW=wall_base, EDGES=base_face, "
+                  "SIDE=wall"]
         strut_node = nid(xs.index(FRONT + 0.4), jy(STRUT_Y))
     else:
         line_nodes = [nid(iw, j) for j in range(top, bottom - 1, -1)]
