@@ -19,6 +19,7 @@ module pecplas_solve_output
    use pecplas_model_plate_water_sides, only: plate_water_sides, planned_activity
    use pecplas_model_phases, only: TARGET_PATTERNS, TARGET_PLATES
    use pecplas_model_phase_plan, only: target_activity
+   use pecplas_solve_held_warning, only: first_nil_step
    implicit none (type, external)
    private
 
@@ -207,22 +208,10 @@ contains
       type(problem_t), intent(in) :: problem
       integer, intent(in) :: step
       real(wp), intent(in) :: tau
-      integer :: i, first
+      integer :: first
       h = 0.0_wp
       if (.not. problem%phase%phased .or. problem%phase%water_pattern > 0) return
-      if (.not. allocated(model%steps)) return
-      first = 0
-      do i = 1, size(model%steps)
-         if (model%steps(i)%safety%on) exit
-         if (allocated(model%steps(i)%pattern)) then
-            if (size(model%steps(i)%pattern) > 0) cycle
-         end if
-         if (allocated(model%steps(i)%changes)) then
-            if (size(model%steps(i)%changes) > 0) cycle
-         end if
-         first = i
-         exit
-      end do
+      first = first_nil_step(model)
       if (first == 0 .or. step < first) then
          h = 1.0_wp
       else if (step == first) then
