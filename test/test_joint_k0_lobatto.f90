@@ -12,6 +12,7 @@ module test_joint_k0_lobatto
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: check
    use fixtures_runs, only: run_completes
+   use fixtures_held_wall, only: write_held_wall
    implicit none (type, external)
    private
    public :: test_k0_lobatto_at_rest
@@ -50,42 +51,17 @@ contains
       character(len=:), allocatable :: deck, name
       character(len=80) :: msg
       real(wp) :: y, sv, worst, l
-      integer :: u, r, e, ip
+      integer :: e, ip
       call make_directories(OUT)
       name = 'k0_lobatto_dry'
       if (water) name = 'k0_lobatto_wet'
       deck = OUT//name//'.inp'
       l = H/NE
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'K0 with Lobatto joints', '*UNITS', 'kN, m, kPa', '*NODES'
-      do r = 0, NE
-         ! soil nodes 2 r + 1 (x = 0) and 2 r + 2 (x = 2); wall nodes 100 + r
-         write (u, '(i0,a,g0)') 2*r + 1, ', 0, ', l*r
-         write (u, '(i0,a,g0)') 2*r + 2, ', 2, ', l*r
-         write (u, '(i0,a,g0)') 100 + r, ', 0, ', l*r
-      end do
-      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=soil'
-      do r = 0, NE - 1
-         write (u, '(i0,4(a,i0))') r + 1, ', ', 2*r + 1, ', ', 2*r + 2, ', ', 2*r + 4, ', ', &
-            2*r + 3
-      end do
-      write (u, '(a)') '*MATERIAL, NAME=sand', 'E = 3e4, NU = 0.3, GAMMA_UNSAT = 18, '// &
-         'GAMMA_SAT = 20', '*SECTION, SET=soil, MATERIAL=sand', '*NSET, NAME=wall, GENERATE', &
-         '100, 105, 1', '*NSET, NAME=base', '1, 2', '*NSET, NAME=right, GENERATE', &
-         '4, 12, 2', '*BOUNDARY', 'base, XY', 'right, X', 'wall, ALL', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', &
-         '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e-6', &
-         '*JOINTS, TYPE=GOODMAN4, SET=wif, LAW=smooth, INTEGRATION=LOBATTO'
-      do r = 0, NE - 1
-         ! face 1: the wall walked downwards (normal +x, into the soil); face 2: the soil
-         write (u, '(i0,4(a,i0))') 1000 + r, ', ', 101 + r, ', ', 100 + r, ', ', 2*r + 1, &
-            ', ', 2*r + 3
-      end do
-      if (water) write (u, '(a)') '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=6', '*PLATE_WATER', &
-         'wall, NONE'
-      write (u, '(a)') '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10, 0.5', &
-         '*STEP, NAME=nil, INCREMENTS=1', '*END STEP'
-      close (u)
+      if (water) then
+         call write_held_wall(deck, NE, l, 2.0_wp, GS, K0, 'LOBATTO', LEVEL)
+      else
+         call write_held_wall(deck, NE, l, 2.0_wp, GS, K0, 'LOBATTO')
+      end if
       call run_completes(error, deck, OUT//name//'.h5', model, problem, 'K0, Lobatto joints')
       if (allocated(error)) return
       call check(error, maxval(abs(problem%state%u)) < 1.0e-12_wp, &

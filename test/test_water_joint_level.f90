@@ -12,6 +12,7 @@ module test_water_joint_level
    use pecplas_io_results_reader, only: results_reader_t
    use pecplas_testing, only: check, check_close
    use fixtures_runs, only: run_completes
+   use fixtures_held_wall, only: write_held_wall
    implicit none (type, external)
    private
    public :: test_joint_level_bound
@@ -52,39 +53,10 @@ contains
       integer, allocatable :: ids(:)
       character(len=*), parameter :: deck = OUT//'joint_level.inp'
       real(wp) :: f, m, fexact, mexact, d, dfmax, hw
-      integer :: u, r, k
+      integer :: k
       call make_directories(OUT)
       hw = LEVEL
-      open (newunit=u, file=deck, status='replace', action='write')
-      write (u, '(a)') '*TITLE', 'joints crossed by the level', '*UNITS', 'kN, m, kPa', &
-         '*NODES'
-      do r = 0, NE
-         ! soil nodes 2 r + 1 (x = 0) and 2 r + 2 (x = 1); wall nodes 100 + r
-         write (u, '(i0,a,i0)') 2*r + 1, ', 0, ', r
-         write (u, '(i0,a,i0)') 2*r + 2, ', 1, ', r
-         write (u, '(i0,a,i0)') 100 + r, ', 0, ', r
-      end do
-      write (u, '(a)') '*ELEMENTS, TYPE=Q4, SET=soil'
-      do r = 0, NE - 1
-         write (u, '(i0,4(a,i0))') r + 1, ', ', 2*r + 1, ', ', 2*r + 2, ', ', 2*r + 4, ', ', &
-            2*r + 3
-      end do
-      write (u, '(a)') '*MATERIAL, NAME=sand', 'E = 3e4, NU = 0.3, GAMMA_UNSAT = 18, '// &
-         'GAMMA_SAT = 18', '*SECTION, SET=soil, MATERIAL=sand', '*NSET, NAME=wall, GENERATE', &
-         '100, 110, 1', '*NSET, NAME=base', '1, 2', '*NSET, NAME=right, GENERATE', &
-         '4, 22, 2', '*BOUNDARY', 'base, XY', 'right, X', 'wall, ALL', &
-         '*PLATE, SET=wall, NODES=wall, EA=1e7, EI=1e5', &
-         '*INTERFACE_LAW, NAME=smooth, TYPE=ELASTIC', 'KN = 1e6, KT = 1e-6', &
-         '*JOINTS, TYPE=GOODMAN4, SET=wif, LAW=smooth'
-      do r = 0, NE - 1
-         ! face 1: the wall walked downwards (normal +x, into the soil); face 2: the soil
-         write (u, '(i0,4(a,i0))') 1000 + r, ', ', 101 + r, ', ', 100 + r, ', ', 2*r + 1, &
-            ', ', 2*r + 3
-      end do
-      write (u, '(a)') '*WATER, NAME=gwt, GAMMA_W=10, LEVEL=4.2', '*PLATE_WATER', &
-         'wall, NONE', '*INITIAL_STRESS, TYPE=GEOSTATIC', 'ALL, 10, 0', &
-         '*STEP, NAME=nil, INCREMENTS=1', '*END STEP'
-      close (u)
+      call write_held_wall(deck, NE, 1.0_wp, 1.0_wp, GAMMA, 0.0_wp, '', LEVEL)
       call run_completes(error, deck, OUT//'joint_level.h5', model, problem, &
          'wall with joints crossed by the level')
       if (allocated(error)) return
