@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 
 from pecplas_exe import pecplas_cmd
+from pecplas_py.results import flat_items
 
 ROOT = Path(__file__).resolve().parents[2]
 BLOCK = ROOT / "test/data/safety/block.inp"
@@ -37,19 +38,7 @@ def run(deck, out, *extra):
 
 def items(group):
     """Every dataset value and attribute under `group` (path -> value)."""
-    out = {}
-
-    def visit(name, obj):
-        if isinstance(obj, h5py.Dataset):
-            out[name] = obj[()]
-        for a, v in obj.attrs.items():
-            if a not in SKIP_ATTRS:
-                out[name + "@" + a] = v
-    group.visititems(visit)
-    for a, v in group.attrs.items():
-        if a not in SKIP_ATTRS:
-            out["@" + a] = v
-    return out
+    return flat_items(group, SKIP_ATTRS)
 
 
 def equal(a, b):

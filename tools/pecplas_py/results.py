@@ -19,6 +19,24 @@ import h5py
 import numpy as np
 
 
+def flat_items(group, skip=()):
+    """Every dataset value and attribute under the h5py `group`, flattened: path -> value,
+    attributes as path@name (the group's own as @name), those named in `skip` left out."""
+    out = {}
+
+    def visit(name, obj):
+        if isinstance(obj, h5py.Dataset):
+            out[name] = obj[()]
+        for a, v in obj.attrs.items():
+            if a not in skip:
+                out[name + "@" + a] = v
+    group.visititems(visit)
+    for a, v in group.attrs.items():
+        if a not in skip:
+            out["@" + a] = v
+    return out
+
+
 def text(value):
     """An attribute as str when it is text (bytes, NumPy bytes or str), a list of str when it
     is a list of texts (e.g. `warnings`, `patterns`), else unchanged."""

@@ -51,6 +51,8 @@ import time
 import h5py
 import numpy as np
 
+from pecplas_py.results import flat_items
+
 TOL = 1.0e-8
 RESTART_TOL = 1.0e-5
 # A run restarted on the rank count that wrote its data repeats the uninterrupted run's
@@ -327,19 +329,7 @@ def check_restart(binary, deck, n_stop, nps, work, env):
 
 def _items(group):
     """Every dataset value and attribute under `group` (path -> value), results only."""
-    out = {}
-
-    def visit(name, obj):
-        if isinstance(obj, h5py.Dataset):
-            out[name] = obj[()]
-        for a, v in obj.attrs.items():
-            if a not in SKIP_ATTRS:
-                out[name + "@" + a] = v
-    group.visititems(visit)
-    for a, v in group.attrs.items():
-        if a not in SKIP_ATTRS:
-            out["@" + a] = v
-    return out
+    return flat_items(group, SKIP_ATTRS)
 
 
 def _differ(a, b, tol, scale=None):
