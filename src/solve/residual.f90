@@ -83,6 +83,7 @@ contains
       type(problem_t), intent(in) :: problem
       real(wp), intent(in) :: fext(:, :), fint(:, :)
       real(wp), intent(out) :: r(:), reaction(:, :), rnorm, ref
+      real(wp) :: held
       integer :: i, d, k
       reaction = fint - fext
       do i = 1, size(fint, 2)
@@ -99,16 +100,14 @@ contains
          ! a phased run: the reactions from those of the K0 state (its weight's)
          ref = max(free_norm(problem, fext, problem%system%initial_force), &
             norm2(reaction - problem%phase%base_reaction))
-         ! nothing acts beyond the held load but roundoff (a nil step on a balanced state):
-         ! measured against the held load, as the initial-stress forces below
-         if (ref <= HELD_ROUNDOFF*free_norm(problem, problem%system%initial_force)) ref = 0.0_wp
       else
          ref = max(free_norm(problem, fext, problem%system%initial_force), norm2(reaction))
-         ! likewise (e.g. joints closed back onto the initial state by imposed displacements:
-         ! loads and reactions nil, the residual roundoff of the held load)
-         if (ref <= HELD_ROUNDOFF*free_norm(problem, problem%system%initial_force)) ref = 0.0_wp
       end if
-      if (ref == 0.0_wp) ref = free_norm(problem, problem%system%initial_force)
+      ! nothing acts beyond the held load but roundoff (a nil step on a balanced state, joints
+      ! closed back onto the initial state by imposed displacements: loads and reactions nil):
+      ! measured against the held load, the initial-stress forces
+      held = free_norm(problem, problem%system%initial_force)
+      if (ref <= HELD_ROUNDOFF*held) ref = held
    end subroutine free_residual
 
    !> norm2(pack(a - b, eq > 0)) (b absent: of a), the free equations' entries in array
